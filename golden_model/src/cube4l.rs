@@ -1,0 +1,157 @@
+//! The Cube-4L golden model: ray-slice-sweeping (§2) through the whole
+//! pipeline CFB -> ABC gradient -> shader/classifier -> bilinear unit ->
+//! compositor, one slice at a time, producing the base-plane image of each
+//! sweep. The slice is processed in raster order; the hardware's skewed
+//! order (`cfb::CfbStream`) visits the same voxels with the same control, and
+//! the result of a slice does not depend on the order within it.
+//!
+//! Software shortcuts that cannot change a bit of the result: a voxel whose
+//! opacity row is zero skips gradient and shading (its composite is the
+//! identity), and front to back a cell whose gathered opacity is already
+//! full skips the voxel (`mul(0, x) = 0`).
+
+use crate::compositor::{composite, gather, reset_value};
+use crate::gradient::central_difference;
+use crate::plan::{Face, Order, Plan, Sweep};
+use crate::scene::{Camera, Mode, Scene};
+use crate::shader::Shader;
+use crate::volume::Volume;
+use rayon::prelude::*;
+
+/// The base-plane image of one sweep: pixels output on ER at their base-plane
+/// addresses, with the face each came out of (`Face::None` where none did).
+#[derive(Debug, Clone)]
+pub struct BasePlane {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<[u32; 4]>,
+    pub faces: Vec<Face>,
+}
+
+/// Work counters of a sweep.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub voxels: u64,
+    /// Voxels that went through gradient and shading.
+    pub shaded: u64,
+    /// Front-to-back cells already opaque: voxel skipped.
+    pub terminated: u64,
+    /// Compositing results clipped by saturation.
+    pub saturations: u64,
+    pub pixels_out: u64,
+}
+
+impl std::ops::Add for Stats {
+    type Output = Stats;
+    fn add(self, o: Stats) -> Stats {
+        Stats {
+            voxels: self.voxels + o.voxels,
+            shaded: self.shaded + o.shaded,
+            terminated: self.terminated + o.terminated,
+            saturations: self.saturations + o.saturations,
+            pixels_out: self.pixels_out + o.pixels_out,
+        }
+    }
+}
+
+/// Render one sweep to its base plane.
+pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
+    let [nx, ny, _] = sweep.dims;
+    let frac = sweep.frac;
+    let strides = {
+        let ds = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
+        [ds[sweep.perm[0]], ds[sweep.perm[1]], ds[sweep.perm[2]]]
+    };
+    let reset = reset_value(shader.mode, shader.voxel_bits);
+    let [bw, bh] = sweep.base_dims();
+    let mut base = BasePlane {
+        width: bw,
+        height: bh,
+        pixels: vec![[0; 4]; bw * bh],
+        faces: vec![Face::None; bw * bh],
+    };
+    let mut prev = vec![reset; nx * ny];
+    let mut next = vec![reset; nx * ny];
+    let mut stats = Stats::default();
+    for z in sweep.z0..=sweep.z1 {
+        let first = z == sweep.z0;
+        let outputs: Vec<(Vec<([usize; 2], [u32; 4], Face)>, Stats)> = next
+            .par_chunks_mut(nx)
+            .enumerate()
+            .map(|(y, row)| {
+                let mut out = Vec::new();
+                let mut st = Stats::default();
+                for (x, cell) in row.iter_mut().enumerate() {
+                    let c = sweep.control(x, y, z);
+                    let acc = if c.sr || first {
+                        reset
+                    } else {
+                        gather(&prev, nx, ny, x, y, c.dx, c.dy, frac, reset)
+                    };
+                    st.voxels += 1;
+                    let at = x * strides[0] + y * strides[1] + z * strides[2];
+                    let v = vol.data[at] as u32;
+                    let opaque_front = sweep.order == Order::FrontToBack
+                        && matches!(shader.mode, Mode::Composite | Mode::FirstOpaque)
+                        && acc[3] == crate::fixed::max_of(shader.rgba_bits);
+                    *cell = if opaque_front {
+                        st.terminated += 1;
+                        acc
+                    } else {
+                        if shader.mode.uses_colour() && !shader.transparent(v, &c) {
+                            st.shaded += 1;
+                        }
+                        let sample = shader.sample(v, &c, || {
+                            central_difference(|ox, oy, oz| {
+                                let i = at as isize
+                                    + ox * strides[0] as isize
+                                    + oy * strides[1] as isize
+                                    + oz * strides[2] as isize;
+                                vol.data[i as usize]
+                            })
+                        });
+                        let (r, clipped) = composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
+                        st.saturations += clipped as u64;
+                        r
+                    };
+                    if c.er {
+                        let addr = sweep.base_address(x, y, z, c.face).expect("ER cells have a face");
+                        out.push((addr, *cell, c.face));
+                    }
+                }
+                st.pixels_out += out.len() as u64;
+                (out, st)
+            })
+            .collect();
+        for (out, st) in outputs {
+            stats = stats + st;
+            for ([bx, by], px, face) in out {
+                base.pixels[bx + bw * by] = px;
+                base.faces[bx + bw * by] = face;
+            }
+        }
+        std::mem::swap(&mut prev, &mut next);
+    }
+    (base, stats)
+}
+
+/// A whole Cube-4L frame: the plan, and one base plane per sweep.
+#[derive(Debug, Clone)]
+pub struct Frame {
+    pub plan: Plan,
+    pub bases: Vec<BasePlane>,
+    pub stats: Stats,
+}
+
+pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> crate::error::Result<Frame> {
+    let plan = Plan::new(scene, camera)?;
+    let mut bases = Vec::new();
+    let mut stats = Stats::default();
+    for sweep in &plan.sweeps {
+        let shader = Shader::new(scene, camera, sweep);
+        let (b, s) = render_sweep(vol, sweep, &shader);
+        bases.push(b);
+        stats = stats + s;
+    }
+    Ok(Frame { plan, bases, stats })
+}

@@ -1,0 +1,579 @@
+//! The JSON scene: volume, view, projection mode, transfer function, shading,
+//! image size and hardware precision. Parsing rejects unknown keys and every
+//! value the renderers cannot honour, with a one-line message.
+
+use crate::error::{CubeError, Result};
+use glam::{DMat3, DVec3};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// Largest accepted volume side; larger sides are treated as absurd input.
+pub const MAX_DIM: usize = 4096;
+/// Largest accepted voxel count (2 G voxels).
+pub const MAX_VOXELS: usize = 1 << 31;
+/// Largest accepted image side.
+pub const MAX_IMAGE: u32 = 8192;
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    pub volume: VolumeSpec,
+    pub view: ViewSpec,
+    #[serde(default)]
+    pub mode: Mode,
+    #[serde(default)]
+    pub transfer: Transfer,
+    #[serde(default)]
+    pub shading: Shading,
+    #[serde(default = "default_image")]
+    pub image: [u32; 2],
+    #[serde(default)]
+    pub hardware: Hardware,
+}
+
+fn default_image() -> [u32; 2] {
+    [256, 256]
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VolumeSpec {
+    pub builtin: Option<String>,
+    pub raw: Option<PathBuf>,
+    pub dims: [usize; 3],
+    #[serde(rename = "type")]
+    pub kind: Option<RawType>,
+    pub window: Option<[f64; 2]>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum RawType {
+    U8,
+    U16,
+    I16,
+}
+
+impl RawType {
+    pub fn bytes(self) -> usize {
+        match self {
+            RawType::U8 => 1,
+            RawType::U16 | RawType::I16 => 2,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum Projection {
+    Parallel,
+    Perspective,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ViewSpec {
+    pub projection: Projection,
+    /// Parallel only: rotations of the volume about the world x, y and z axes,
+    /// applied in that order (x first).
+    pub rotate_deg: Option<[f64; 3]>,
+    /// Perspective only, all in voxel coordinates of the dataset.
+    pub eye: Option<[f64; 3]>,
+    pub target: Option<[f64; 3]>,
+    pub up: Option<[f64; 3]>,
+    pub fov_deg: Option<f64>,
+    /// Parallel only: magnification; 1 fits the volume's diagonal to the image.
+    pub zoom: Option<f64>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Mode {
+    #[default]
+    Composite,
+    Mip,
+    Minip,
+    Xray,
+    FirstOpaque,
+}
+
+impl Mode {
+    /// Modes that shade, and so need gradients and the reflectance map.
+    pub fn uses_colour(self) -> bool {
+        matches!(self, Mode::Composite | Mode::FirstOpaque)
+    }
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Transfer {
+    /// `[intensity, opacity per voxel length]`, intensities in voxel units.
+    pub opacity: Vec<[f64; 2]>,
+    /// `[intensity, r, g, b]`, colours in [0, 1].
+    pub color: Vec<[f64; 4]>,
+    /// Optional `[gradient magnitude (voxel units per voxel), factor]`; when
+    /// present the opacity LUT gains a gradient-magnitude index.
+    pub gradient_opacity: Option<Vec<[f64; 2]>>,
+    /// First-opaque mode: opacity at which a voxel counts as opaque.
+    #[serde(default = "default_threshold")]
+    pub opaque_threshold: f64,
+}
+
+fn default_threshold() -> f64 {
+    0.5
+}
+
+impl Default for Transfer {
+    fn default() -> Self {
+        Transfer {
+            opacity: vec![[0.0, 0.0], [80.0, 0.0], [100.0, 0.75], [255.0, 0.75]],
+            color: vec![[0.0, 1.0, 1.0, 1.0], [255.0, 1.0, 1.0, 1.0]],
+            gradient_opacity: None,
+            opaque_threshold: 0.5,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Shading {
+    pub enabled: bool,
+    /// Direction towards the light in camera space (x right, y up, z towards
+    /// the viewer).
+    #[serde(default = "default_light")]
+    pub light_dir: [f64; 3],
+    #[serde(default = "default_ambient")]
+    pub ambient: f64,
+    #[serde(default = "default_diffuse")]
+    pub diffuse: f64,
+    #[serde(default = "default_specular")]
+    pub specular: f64,
+    #[serde(default = "default_shininess")]
+    pub shininess: f64,
+}
+
+fn default_light() -> [f64; 3] {
+    [0.3, 0.3, 1.0]
+}
+fn default_ambient() -> f64 {
+    0.2
+}
+fn default_diffuse() -> f64 {
+    0.6
+}
+fn default_specular() -> f64 {
+    0.3
+}
+fn default_shininess() -> f64 {
+    10.0
+}
+
+impl Default for Shading {
+    fn default() -> Self {
+        Shading {
+            enabled: true,
+            light_dir: default_light(),
+            ambient: default_ambient(),
+            diffuse: default_diffuse(),
+            specular: default_specular(),
+            shininess: default_shininess(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Hardware {
+    #[serde(default = "default_pipelines")]
+    pub pipelines: usize,
+    #[serde(default = "default_voxel_bits")]
+    pub voxel_bits: u32,
+    #[serde(default = "default_frac_bits")]
+    pub frac_bits: u32,
+    #[serde(default = "default_rgba_bits")]
+    pub rgba_bits: u32,
+}
+
+fn default_pipelines() -> usize {
+    4
+}
+fn default_voxel_bits() -> u32 {
+    8
+}
+fn default_frac_bits() -> u32 {
+    8
+}
+fn default_rgba_bits() -> u32 {
+    8
+}
+
+impl Default for Hardware {
+    fn default() -> Self {
+        Hardware {
+            pipelines: 4,
+            voxel_bits: 8,
+            frac_bits: 8,
+            rgba_bits: 8,
+        }
+    }
+}
+
+fn scene_err(msg: impl Into<String>) -> CubeError {
+    CubeError::Scene(msg.into())
+}
+
+fn check_vec(name: &str, v: [f64; 3]) -> Result<DVec3> {
+    let d = DVec3::from_array(v);
+    if !d.is_finite() {
+        return Err(CubeError::View(format!("{name} {v:?} is not finite")));
+    }
+    Ok(d)
+}
+
+fn check_dir(name: &str, v: [f64; 3]) -> Result<DVec3> {
+    let d = check_vec(name, v)?;
+    if d.length() < 1e-9 {
+        return Err(CubeError::View(format!("{name} {v:?} has zero length")));
+    }
+    Ok(d.normalize())
+}
+
+impl Scene {
+    /// Parse and validate a scene. Relative raw paths are resolved against
+    /// `base` (the scene file's folder).
+    pub fn from_json(text: &str, base: Option<&Path>) -> Result<Scene> {
+        let mut s: Scene = serde_json::from_str(text).map_err(|e| scene_err(e.to_string()))?;
+        if let (Some(raw), Some(base)) = (&s.volume.raw, base) {
+            if raw.is_relative() {
+                s.volume.raw = Some(base.join(raw));
+            }
+        }
+        s.validate()?;
+        Ok(s)
+    }
+
+    pub fn load(path: &Path) -> Result<Scene> {
+        let text = std::fs::read_to_string(path).map_err(|source| CubeError::Io {
+            path: path.display().to_string(),
+            source,
+        })?;
+        Scene::from_json(&text, path.parent())
+    }
+
+    pub fn validate(&self) -> Result<()> {
+        let hw = &self.hardware;
+        if ![8, 12, 16].contains(&hw.voxel_bits) {
+            return Err(CubeError::Hardware(format!(
+                "voxel_bits {} unsupported (8, 12 or 16)",
+                hw.voxel_bits
+            )));
+        }
+        // The 16x16 multiplier bounds the operands: a lerp multiplies a signed
+        // (rgba_bits+1)-bit difference by a (frac_bits+1)-bit weight.
+        if !(4..=15).contains(&hw.rgba_bits) {
+            return Err(CubeError::Hardware(format!(
+                "rgba_bits {} unsupported (4..=15: the lerp's signed difference must fit a 16-bit multiplier)",
+                hw.rgba_bits
+            )));
+        }
+        if !(2..=15).contains(&hw.frac_bits) {
+            return Err(CubeError::Hardware(format!(
+                "frac_bits {} unsupported (2..=15: the weight 1.0 = 2^frac_bits must fit a 16-bit multiplier)",
+                hw.frac_bits
+            )));
+        }
+        if !hw.pipelines.is_power_of_two() || hw.pipelines > 16 {
+            return Err(CubeError::Hardware(format!(
+                "pipelines {} unsupported (1, 2, 4, 8 or 16)",
+                hw.pipelines
+            )));
+        }
+        let d = self.volume.dims;
+        if d.iter().any(|&n| n < 2 || n > MAX_DIM) {
+            return Err(CubeError::Volume(format!(
+                "dims {d:?} out of range (each side 2..={MAX_DIM})"
+            )));
+        }
+        if d.iter().product::<usize>() > MAX_VOXELS {
+            return Err(CubeError::Volume(format!("dims {d:?} exceed {MAX_VOXELS} voxels")));
+        }
+        match (&self.volume.builtin, &self.volume.raw) {
+            (Some(_), Some(_)) => return Err(scene_err("volume has both 'builtin' and 'raw'")),
+            (None, None) => return Err(scene_err("volume needs 'builtin' or 'raw'")),
+            (Some(b), None) => {
+                if !crate::volume::BUILTINS.iter().any(|(n, _)| n == b) {
+                    return Err(scene_err(format!("unknown builtin volume '{b}' (see `cube scenes`)")));
+                }
+                if self.volume.kind.is_some() || self.volume.window.is_some() {
+                    return Err(scene_err("'type' and 'window' apply only to raw volumes"));
+                }
+            }
+            (None, Some(_)) => {
+                if self.volume.kind.is_none() {
+                    return Err(scene_err("raw volume needs 'type' (u8, u16 or i16)"));
+                }
+            }
+        }
+        if let Some([lo, hi]) = self.volume.window {
+            if !lo.is_finite() || !hi.is_finite() || hi <= lo {
+                return Err(scene_err(format!("window [{lo}, {hi}] must be finite with hi > lo")));
+            }
+        }
+        let [w, h] = self.image;
+        if w == 0 || h == 0 || w > MAX_IMAGE || h > MAX_IMAGE {
+            return Err(scene_err(format!("image [{w}, {h}] out of range (1..={MAX_IMAGE})")));
+        }
+        self.validate_transfer()?;
+        self.camera().map(|_| ())
+    }
+
+    fn validate_transfer(&self) -> Result<()> {
+        let t = &self.transfer;
+        let vmax = crate::fixed::max_of(self.hardware.voxel_bits) as f64;
+        let check_points = |name: &str, xs: Vec<f64>, ys: Vec<f64>, ymax: f64| -> Result<()> {
+            if xs.is_empty() {
+                return Err(scene_err(format!("transfer.{name} needs at least one point")));
+            }
+            for w in xs.windows(2) {
+                if w[1] < w[0] {
+                    return Err(scene_err(format!("transfer.{name} points must be sorted by their first value")));
+                }
+            }
+            if xs.iter().chain(ys.iter()).any(|v| !v.is_finite()) {
+                return Err(scene_err(format!("transfer.{name} has a non-finite value")));
+            }
+            if ys.iter().any(|&y| !(0.0..=ymax).contains(&y)) {
+                return Err(scene_err(format!("transfer.{name} values must lie in [0, {ymax}]")));
+            }
+            Ok(())
+        };
+        check_points(
+            "opacity",
+            t.opacity.iter().map(|p| p[0]).collect(),
+            t.opacity.iter().map(|p| p[1]).collect(),
+            1.0,
+        )?;
+        check_points(
+            "color",
+            t.color.iter().map(|p| p[0]).collect(),
+            t.color.iter().flat_map(|p| [p[1], p[2], p[3]]).collect(),
+            1.0,
+        )?;
+        if let Some(g) = &t.gradient_opacity {
+            check_points(
+                "gradient_opacity",
+                g.iter().map(|p| p[0]).collect(),
+                g.iter().map(|p| p[1]).collect(),
+                1.0,
+            )?;
+            if g.iter().any(|p| p[0] < 0.0) {
+                return Err(scene_err("transfer.gradient_opacity magnitudes must be >= 0"));
+            }
+        }
+        if t.opacity.iter().any(|p| p[0] < 0.0 || p[0] > vmax) {
+            return Err(scene_err(format!(
+                "transfer.opacity intensities must lie in [0, {vmax}] for voxel_bits {}",
+                self.hardware.voxel_bits
+            )));
+        }
+        if !(t.opaque_threshold > 0.0 && t.opaque_threshold <= 1.0) {
+            return Err(scene_err("transfer.opaque_threshold must lie in (0, 1]"));
+        }
+        let s = &self.shading;
+        for (n, v) in [("ambient", s.ambient), ("diffuse", s.diffuse), ("specular", s.specular)] {
+            if !(0.0..=1.0).contains(&v) {
+                return Err(scene_err(format!("shading.{n} {v} must lie in [0, 1]")));
+            }
+        }
+        if !(s.shininess.is_finite() && s.shininess >= 0.0 && s.shininess <= 1000.0) {
+            return Err(scene_err("shading.shininess must lie in [0, 1000]"));
+        }
+        if s.enabled {
+            check_dir("shading.light_dir", s.light_dir)?;
+        }
+        Ok(())
+    }
+
+    /// The camera this scene's view defines, in dataset voxel coordinates.
+    pub fn camera(&self) -> Result<Camera> {
+        Camera::new(&self.view, self.volume.dims, self.image)
+    }
+}
+
+/// How the final image's pixels map to rays in dataset voxel coordinates
+/// (voxel `(u, v, w)` sits at `(u, v, w)`). Both renderers take their rays from
+/// here, so their images cover the same region.
+#[derive(Debug, Clone)]
+pub struct Camera {
+    pub projection: Projection,
+    /// Camera axes in dataset coordinates: right, up, and forward (into the scene).
+    pub right: DVec3,
+    pub up: DVec3,
+    pub forward: DVec3,
+    /// Parallel: image centre. Perspective: eye.
+    pub origin: DVec3,
+    /// Parallel: voxel units per pixel. Perspective: tan(fov/2) / (height/2).
+    pub scale: f64,
+    pub width: u32,
+    pub height: u32,
+    /// Distance from the image centre back to where parallel rays start.
+    pub back: f64,
+}
+
+impl Camera {
+    pub fn new(view: &ViewSpec, dims: [usize; 3], image: [u32; 2]) -> Result<Camera> {
+        let centre = DVec3::new(
+            (dims[0] - 1) as f64 / 2.0,
+            (dims[1] - 1) as f64 / 2.0,
+            (dims[2] - 1) as f64 / 2.0,
+        );
+        let diag = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64).length();
+        let [w, h] = image;
+        match view.projection {
+            Projection::Parallel => {
+                if view.eye.is_some() || view.target.is_some() || view.up.is_some() || view.fov_deg.is_some() {
+                    return Err(CubeError::View(
+                        "parallel views take rotate_deg and zoom, not eye/target/up/fov_deg".into(),
+                    ));
+                }
+                let r = view.rotate_deg.unwrap_or([0.0; 3]);
+                let rv = check_vec("rotate_deg", r)?;
+                let zoom = view.zoom.unwrap_or(1.0);
+                if !(zoom.is_finite() && zoom > 0.0 && zoom <= 1000.0) {
+                    return Err(CubeError::View(format!("zoom {zoom} must lie in (0, 1000]")));
+                }
+                // World = Rz * Ry * Rx * dataset; the camera looks down world -z.
+                let rot = DMat3::from_rotation_z(rv.z.to_radians())
+                    * DMat3::from_rotation_y(rv.y.to_radians())
+                    * DMat3::from_rotation_x(rv.x.to_radians());
+                let inv = rot.transpose();
+                Ok(Camera {
+                    projection: Projection::Parallel,
+                    right: inv * DVec3::X,
+                    up: inv * DVec3::Y,
+                    forward: inv * DVec3::NEG_Z,
+                    origin: centre,
+                    scale: diag / (w.min(h) as f64 * zoom),
+                    width: w,
+                    height: h,
+                    back: diag,
+                })
+            }
+            Projection::Perspective => {
+                if view.rotate_deg.is_some() || view.zoom.is_some() {
+                    return Err(CubeError::View(
+                        "perspective views take eye/target/up/fov_deg, not rotate_deg or zoom".into(),
+                    ));
+                }
+                let eye = check_vec("eye", view.eye.ok_or_else(|| CubeError::View("perspective view needs 'eye'".into()))?)?;
+                let target = check_vec("target", view.target.unwrap_or(centre.to_array()))?;
+                let up = check_dir("up", view.up.unwrap_or([0.0, 1.0, 0.0]))?;
+                let fov = view.fov_deg.unwrap_or(40.0);
+                if !(fov.is_finite() && fov > 0.5 && fov < 170.0) {
+                    return Err(CubeError::View(format!("fov_deg {fov} must lie in (0.5, 170)")));
+                }
+                let fwd = target - eye;
+                if !(fwd.length() > 1e-9) {
+                    return Err(CubeError::View("eye and target coincide".into()));
+                }
+                let forward = fwd.normalize();
+                let right = forward.cross(up);
+                if right.length() < 1e-9 {
+                    return Err(CubeError::View("up is parallel to the viewing direction".into()));
+                }
+                let right = right.normalize();
+                let up = right.cross(forward);
+                Ok(Camera {
+                    projection: Projection::Perspective,
+                    right,
+                    up,
+                    forward,
+                    origin: eye,
+                    scale: (fov.to_radians() / 2.0).tan() / (h as f64 / 2.0),
+                    width: w,
+                    height: h,
+                    back: 0.0,
+                })
+            }
+        }
+    }
+
+    /// The ray through the centre of pixel `(i, j)` (row 0 at the top):
+    /// origin and unit direction, in dataset coordinates.
+    pub fn ray(&self, i: u32, j: u32) -> (DVec3, DVec3) {
+        let sx = i as f64 + 0.5 - self.width as f64 / 2.0;
+        let sy = self.height as f64 / 2.0 - (j as f64 + 0.5);
+        match self.projection {
+            Projection::Parallel => {
+                let o = self.origin + self.right * (sx * self.scale) + self.up * (sy * self.scale)
+                    - self.forward * self.back;
+                (o, self.forward)
+            }
+            Projection::Perspective => {
+                let d = self.forward + self.right * (sx * self.scale) + self.up * (sy * self.scale);
+                (self.origin, d.normalize())
+            }
+        }
+    }
+
+    /// Direction from a point towards the viewer (for specular highlights).
+    pub fn to_viewer(&self, p: DVec3) -> DVec3 {
+        match self.projection {
+            Projection::Parallel => -self.forward,
+            Projection::Perspective => (self.origin - p).normalize_or_zero(),
+        }
+    }
+
+    /// A camera-space vector (x right, y up, z towards the viewer) in dataset coordinates.
+    pub fn camera_to_dataset(&self, v: DVec3) -> DVec3 {
+        self.right * v.x + self.up * v.y - self.forward * v.z
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MIN: &str = r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel"}}"#;
+
+    #[test]
+    fn minimal_scene_parses_with_defaults() {
+        let s = Scene::from_json(MIN, None).unwrap();
+        assert_eq!(s.hardware.pipelines, 4);
+        assert_eq!(s.mode, Mode::Composite);
+        assert_eq!(s.image, [256, 256]);
+    }
+
+    fn err_of(text: &str) -> String {
+        Scene::from_json(text, None).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn bad_scenes_give_clear_errors() {
+        assert!(err_of(&MIN.replace("\"view\"", "\"bogus\": 1, \"view\"")).contains("unknown field"));
+        assert!(err_of(&MIN.replace("[16,16,16]", "[0,16,16]")).contains("out of range"));
+        assert!(err_of(&MIN.replace("[16,16,16]", "[100000,16,16]")).contains("out of range"));
+        assert!(err_of(&MIN.replace("sphere", "teapot")).contains("unknown builtin"));
+        assert!(err_of(&MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [1e999, 0, 0]")).contains("scene"));
+        assert!(err_of(&MIN.replace("}}", "}, \"mode\": \"bogus\"}")).contains("unknown variant"));
+        let persp = MIN.replace(
+            "\"projection\": \"parallel\"",
+            "\"projection\": \"perspective\", \"eye\": [8,8,-20], \"up\": [0,0,0]",
+        );
+        assert!(err_of(&persp).contains("zero length"));
+        let hw = MIN.replace("}}", "}, \"hardware\": {\"voxel_bits\": 10}}");
+        assert!(err_of(&hw).contains("voxel_bits"));
+        let hw = MIN.replace("}}", "}, \"hardware\": {\"rgba_bits\": 16}}");
+        assert!(err_of(&hw).contains("rgba_bits"));
+        let hw = MIN.replace("}}", "}, \"hardware\": {\"pipelines\": 3}}");
+        assert!(err_of(&hw).contains("pipelines"));
+    }
+
+    #[test]
+    fn parallel_rays_are_orthonormal() {
+        let s = Scene::from_json(&MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [70, 30, 0]"), None).unwrap();
+        let c = s.camera().unwrap();
+        assert!((c.right.dot(c.up)).abs() < 1e-12);
+        assert!((c.right.cross(c.up) - (-c.forward)).length() < 1e-12);
+    }
+}

@@ -1,0 +1,128 @@
+//! Shading and classification (Cube-4L §3.3-3.4): colour LUT by intensity,
+//! reflectance map by quantized gradient, opacity LUT by intensity and
+//! gradient magnitude, and opacity weighting of the colour.
+//!
+//! Fixed-point steps, in order, all unorm of `rgba_bits` (M = 2^rgba_bits - 1):
+//! 1. `alpha = opacity_lut[v >> shift][gm >> gm_shift]` (0 on invalid voxels);
+//!    first-opaque: `alpha = alpha >= threshold ? M : 0`.
+//! 2. `c = colour_lut[v >> shift]`, `[d, s] = reflectance[quantize_normal(g)]`.
+//! 3. `shaded = sat(mul(c, d) + s)` per RGB channel (`sat`: clamp to M).
+//! 4. `weighted = mul(shaded, alpha)`, emitted as `[r, g, b, alpha]`.
+
+use crate::fixed::{max_of, mul_unorm, quantize_unorm, sat_u};
+use crate::gradient::{magnitude, quantize_normal};
+use crate::plan::{Control, Sweep};
+use crate::scene::{Camera, Mode, Scene};
+use crate::transfer::{unlit, ColourLut, OpacityLut, ReflectanceMap, TransferFn};
+
+/// The classification and shading tables of one sweep, and which units the
+/// scene needs.
+#[derive(Debug, Clone)]
+pub struct Shader {
+    pub mode: Mode,
+    pub rgba_bits: u32,
+    pub voxel_bits: u32,
+    pub colour: Option<ColourLut>,
+    pub opacity: Option<OpacityLut>,
+    /// `None` when shading is off: the reflectance unit is left out.
+    pub reflectance: Option<ReflectanceMap>,
+    /// Gradients are computed only when shading or gradient-opacity needs them.
+    pub needs_gradient: bool,
+    /// First-opaque threshold, unorm.
+    pub threshold: u32,
+}
+
+/// A classified and shaded voxel, ready for the compositor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Sample {
+    /// Composite and first-opaque: opacity-weighted `[r, g, b, a]`.
+    /// MIP/MinIP: `[intensity, 0, 0, 0]`. X-ray: `[alpha, 0, 0, 0]`.
+    pub value: [u32; 4],
+    /// MIP/MinIP: whether the voxel takes part.
+    pub valid: bool,
+}
+
+impl Shader {
+    pub fn new(scene: &Scene, camera: &Camera, sweep: &Sweep) -> Shader {
+        let hw = scene.hardware;
+        let tf = TransferFn::new(scene);
+        let mode = scene.mode;
+        let shading = mode.uses_colour() && scene.shading.enabled;
+        let grad_opacity = mode.uses_colour() && tf.has_gradient_opacity();
+        let spacing = if mode == Mode::Composite { sweep.spacing } else { 1.0 };
+        let opacity = matches!(mode, Mode::Composite | Mode::FirstOpaque | Mode::Xray)
+            .then(|| OpacityLut::new(&tf, hw.voxel_bits, hw.rgba_bits, spacing, grad_opacity));
+        let colour = mode.uses_colour().then(|| ColourLut::new(&tf, hw.voxel_bits, hw.rgba_bits));
+        let reflectance = shading.then(|| {
+            let to_dataset = sweep.to_dataset();
+            let light = camera.camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir)).normalize();
+            ReflectanceMap::new(&scene.shading, |g| to_dataset * g, light, -sweep.view_dir, hw.rgba_bits)
+        });
+        Shader {
+            mode,
+            rgba_bits: hw.rgba_bits,
+            voxel_bits: hw.voxel_bits,
+            colour,
+            opacity,
+            reflectance,
+            needs_gradient: shading || grad_opacity,
+            threshold: quantize_unorm(scene.transfer.opaque_threshold, hw.rgba_bits),
+        }
+    }
+
+    /// Whether the voxel is certainly transparent before any gradient is
+    /// computed: the empty-space skip of the software path.
+    pub fn transparent(&self, v: u32, c: &Control) -> bool {
+        match (&self.opacity, self.mode) {
+            (_, Mode::Mip | Mode::Minip) => false,
+            (Some(o), _) => c.invalid || (self.needs_gradient && c.edge) || o.row_max[o.row(v)] == 0,
+            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        }
+    }
+
+    /// Classify and shade voxel `v` with control `c`; `gradient` is called only
+    /// when the scene needs one and the voxel is not transparent.
+    pub fn sample(&self, v: u32, c: &Control, gradient: impl FnOnce() -> [i32; 3]) -> Sample {
+        let m = max_of(self.rgba_bits);
+        match self.mode {
+            Mode::Mip | Mode::Minip => Sample {
+                value: [v, 0, 0, 0],
+                valid: !c.invalid,
+            },
+            _ if self.transparent(v, c) => Sample {
+                value: [0; 4],
+                valid: true,
+            },
+            Mode::Xray => Sample {
+                value: [self.opacity.as_ref().unwrap().lookup(v, 0), 0, 0, 0],
+                valid: true,
+            },
+            Mode::Composite | Mode::FirstOpaque => {
+                let g = if self.needs_gradient { gradient() } else { [0; 3] };
+                let op = self.opacity.as_ref().unwrap();
+                let gm = if op.gm_shift.is_some() { magnitude(g) } else { 0 };
+                let mut alpha = op.lookup(v, gm);
+                if self.mode == Mode::FirstOpaque {
+                    alpha = if alpha >= self.threshold { m } else { 0 };
+                }
+                if alpha == 0 {
+                    return Sample { value: [0; 4], valid: true };
+                }
+                let rgb = self.colour.as_ref().unwrap().lookup(v);
+                let [d, s] = match &self.reflectance {
+                    Some(r) => {
+                        let [qx, qy, qz] = quantize_normal(g);
+                        r.table[ReflectanceMap::index(qx, qy, qz)]
+                    }
+                    None => unlit(self.rgba_bits),
+                };
+                let shade = |c: u32| sat_u(mul_unorm(c, d, self.rgba_bits) as u64 + s as u64, m);
+                let w = |c: u32| mul_unorm(shade(c), alpha, self.rgba_bits);
+                Sample {
+                    value: [w(rgb[0]), w(rgb[1]), w(rgb[2]), alpha],
+                    valid: true,
+                }
+            }
+        }
+    }
+}

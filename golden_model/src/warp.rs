@@ -1,0 +1,171 @@
+//! The 2-D warp (Cube-4L §2, "warped onto the image plane"): each final-image
+//! pixel's ray is followed to the face of the swept box through which it left
+//! the compositing buffer, and the base plane is resampled there bilinearly,
+//! using only pixels that came out of the same face. Parallel and
+//! perspective views take the same path; a multi-sweep perspective frame takes
+//! each pixel from the sweep of its ray's major axis and direction.
+
+use crate::cube4l::{BasePlane, Frame};
+use crate::fixed::max_of;
+use crate::plan::{slab, Face, Sweep};
+use crate::scene::{Camera, Mode};
+use glam::{DAffine2, DVec2, DVec3};
+
+/// The final image: linear RGB in [0, 1], row 0 at the top.
+#[derive(Debug, Clone)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub rgb: Vec<[f64; 3]>,
+}
+
+impl Image {
+    pub fn black(width: u32, height: u32) -> Image {
+        Image {
+            width,
+            height,
+            rgb: vec![[0.0; 3]; (width * height) as usize],
+        }
+    }
+
+    /// 8-bit RGB bytes, rounded.
+    pub fn to_rgb8(&self) -> Vec<u8> {
+        self.rgb
+            .iter()
+            .flat_map(|p| p.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8))
+            .collect()
+    }
+}
+
+/// Map from a point on `face` (its two in-plane pipeline coordinates, plus
+/// the slice for side faces) to continuous base-plane coordinates.
+fn face_to_base(sweep: &Sweep, face: Face) -> DAffine2 {
+    let b = sweep.border() as f64;
+    let z1 = sweep.z1 as f64;
+    let [nx, ny, _] = sweep.dims.map(|n| n as f64);
+    // Inputs: Last (x, y); X faces (y, z); Y faces (x, z).
+    let m = |cols: [f64; 6]| DAffine2::from_cols_array(&cols);
+    match face {
+        Face::Last | Face::None => m([1.0, 0.0, 0.0, 1.0, b, b]),
+        Face::XPos => m([0.0, 1.0, -1.0, 0.0, b + nx - 1.0 + z1, b]),
+        Face::XNeg => m([0.0, 1.0, 1.0, 0.0, b - z1, b]),
+        Face::YPos => m([1.0, 0.0, 0.0, -1.0, b, b + ny - 1.0 + z1]),
+        Face::YNeg => m([1.0, 0.0, 0.0, 1.0, b, b - z1]),
+    }
+}
+
+/// Bilinear sample of the base plane at `p`, over the pixels of `face` only
+/// (weights renormalised); `None` if no such pixel is among the four.
+fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
+    let (x0, y0) = (p.x.floor(), p.y.floor());
+    let (fx, fy) = (p.x - x0, p.y - y0);
+    let mut acc = [0.0; 4];
+    let mut wsum = 0.0;
+    for (ox, oy, w) in [(0, 0, (1.0 - fx) * (1.0 - fy)), (1, 0, fx * (1.0 - fy)), (0, 1, (1.0 - fx) * fy), (1, 1, fx * fy)] {
+        let (cx, cy) = (x0 as i64 + ox, y0 as i64 + oy);
+        if w <= 0.0 || cx < 0 || cy < 0 || cx >= base.width as i64 || cy >= base.height as i64 {
+            continue;
+        }
+        let i = cx as usize + base.width * cy as usize;
+        if base.faces[i] != face {
+            continue;
+        }
+        for (a, v) in acc.iter_mut().zip(base.pixels[i]) {
+            *a += w * v as f64;
+        }
+        wsum += w;
+    }
+    (wsum > 1e-9).then(|| acc.map(|a| a / wsum))
+}
+
+/// Convert a base-plane pixel value to display RGB for `mode`.
+fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: usize) -> [f64; 3] {
+    let m = max_of(rgba_bits) as f64;
+    match mode {
+        Mode::Composite | Mode::FirstOpaque => [v[0] / m, v[1] / m, v[2] / m],
+        Mode::Mip | Mode::Minip => [v[0] / max_of(voxel_bits) as f64; 3],
+        Mode::Xray => [v[0] / (m * depth as f64); 3],
+    }
+}
+
+/// Warp a frame's base planes to the final image.
+pub fn warp(frame: &Frame, camera: &Camera, mode: Mode, rgba_bits: u32, voxel_bits: u32) -> Image {
+    use rayon::prelude::*;
+    let mut img = Image::black(camera.width, camera.height);
+    img.rgb
+        .par_chunks_mut(camera.width as usize)
+        .enumerate()
+        .for_each(|(j, row)| {
+            for (i, px) in row.iter_mut().enumerate() {
+                let (o, d) = camera.ray(i as u32, j as u32);
+                let Some(si) = frame.plan.sweep_for(d) else { continue };
+                let sweep = &frame.plan.sweeps[si];
+                let m = sweep.to_pipeline();
+                let (po, pd) = (m * o, m * d);
+                let [nx, ny, _] = sweep.dims;
+                let lo = DVec3::new(0.0, 0.0, sweep.z0 as f64);
+                let hi = DVec3::new((nx - 1) as f64, (ny - 1) as f64, sweep.z1 as f64);
+                let Some((t0, t1, a0, a1)) = slab(po, pd, lo, hi) else { continue };
+                // The pixel left the buffer where the ray is highest in z.
+                let (t, axis) = if pd.z > 0.0 { (t1, a1) } else { (t0, a0) };
+                let q = po + pd * t;
+                let near_hi = |lo: f64, hi: f64, v: f64| (v - lo).abs() >= (v - hi).abs();
+                let (face, uv) = match axis {
+                    2 => (Face::Last, DVec2::new(q.x, q.y)),
+                    0 => (if near_hi(lo.x, hi.x, q.x) { Face::XPos } else { Face::XNeg }, DVec2::new(q.y, q.z)),
+                    _ => (if near_hi(lo.y, hi.y, q.y) { Face::YPos } else { Face::YNeg }, DVec2::new(q.x, q.z)),
+                };
+                let p = face_to_base(sweep, face).transform_point2(uv);
+                if let Some(v) = sample_face(&frame.bases[si], p, face) {
+                    *px = to_rgb(mode, v, rgba_bits, voxel_bits, sweep.dims[2]);
+                }
+            }
+        });
+    img
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::Sweep;
+
+    #[test]
+    fn face_maps_agree_with_base_addresses() {
+        let plan_scene = crate::scene::Scene::from_json(
+            r#"{"volume": {"builtin": "sphere", "dims": [6,5,4]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]}, "image": [8, 8]}"#,
+            None,
+        )
+        .unwrap();
+        let cam = plan_scene.camera().unwrap();
+        let plan = crate::plan::Plan::new(&plan_scene, &cam).unwrap();
+        let s: &Sweep = &plan.sweeps[0];
+        let [nx, ny, _] = s.dims;
+        for z in s.z0..=s.z1 {
+            for y in 0..ny {
+                for x in 0..nx {
+                    for (face, uv) in [
+                        (Face::Last, DVec2::new(x as f64, y as f64)),
+                        (Face::XPos, DVec2::new(y as f64, z as f64)),
+                        (Face::XNeg, DVec2::new(y as f64, z as f64)),
+                        (Face::YPos, DVec2::new(x as f64, z as f64)),
+                        (Face::YNeg, DVec2::new(x as f64, z as f64)),
+                    ] {
+                        let on_face = match face {
+                            Face::Last => z == s.z1,
+                            Face::XPos => x == nx - 1,
+                            Face::XNeg => x == 0,
+                            Face::YPos => y == ny - 1,
+                            _ => y == 0,
+                        };
+                        if !on_face {
+                            continue;
+                        }
+                        let a = s.base_address(x, y, z, face).unwrap();
+                        let p = face_to_base(s, face).transform_point2(uv);
+                        assert_eq!([p.x as usize, p.y as usize], a, "{face:?} {x} {y} {z}");
+                    }
+                }
+            }
+        }
+    }
+}
