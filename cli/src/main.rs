@@ -1,1 +1,303 @@
-fn main(){}
+//! `cube`: render scenes with the Cube-4L golden model and the float
+//! reference, and report run time and error.
+
+mod output;
+
+use anyhow::{bail, Context, Result};
+use clap::{Parser, Subcommand, ValueEnum};
+use golden_model::scene::Scene;
+use golden_model::volume::{Volume, BUILTINS};
+use golden_model::warp::Image;
+use output::{write_json, write_png};
+use reference::metrics::{compare, difference, ErrorMetrics};
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The built-in default scene: a head-like phantom, parallel view, composite.
+const DEFAULT_SCENE: &str = include_str!("../../scenes/default.json");
+
+#[derive(Parser)]
+#[command(name = "cube", version, about = "Cube-4L volume-rendering kit: golden model, float reference, error and run time")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Arch {
+    Cube4l,
+    Reference,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a scene.
+    Render {
+        #[arg(long)]
+        scene: PathBuf,
+        #[arg(long, value_enum, default_value = "cube4l")]
+        arch: Arch,
+        /// Final image (PNG).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Run time, image size and (with a reference) error as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Also render the float reference and report the error against it.
+        #[arg(long)]
+        compare_reference: bool,
+        /// Difference image against the reference (implies --compare-reference).
+        #[arg(long)]
+        diff: Option<PathBuf>,
+        /// Reference sample step along the ray, in voxel lengths.
+        #[arg(long, default_value_t = reference::DEFAULT_STEP)]
+        ref_step: f64,
+        /// Cube-4L only: write the base plane of the first sweep (PNG).
+        #[arg(long)]
+        base_plane: Option<PathBuf>,
+    },
+    /// Error and run time of the golden model against the reference while the
+    /// view turns about the vertical axis (the Cube-3 §6 experiment).
+    Angles {
+        #[arg(long)]
+        scene: PathBuf,
+        /// First, last and step angle in degrees (rotate_deg[1]).
+        #[arg(long, num_args = 3, default_values_t = [0.0, 90.0, 5.0])]
+        range: Vec<f64>,
+        #[arg(long, default_value_t = reference::DEFAULT_STEP)]
+        ref_step: f64,
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+    /// List the built-in volumes.
+    Scenes,
+}
+
+fn main() {
+    let cli = Cli::parse();
+    let r = match cli.command {
+        None => default_run(),
+        Some(Command::Scenes) => {
+            for (name, what) in BUILTINS {
+                println!("{name:<13} {what}");
+            }
+            Ok(())
+        }
+        Some(Command::Render {
+            scene,
+            arch,
+            out,
+            json,
+            compare_reference,
+            diff,
+            ref_step,
+            base_plane,
+        }) => render_cmd(&scene, arch, out, json, compare_reference || diff.is_some(), diff, ref_step, base_plane),
+        Some(Command::Angles {
+            scene,
+            range,
+            ref_step,
+            json,
+        }) => angles_cmd(&scene, &range, ref_step, json),
+    };
+    if let Err(e) = r {
+        eprintln!("cube: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+fn check_step(step: f64) -> Result<()> {
+    if !(step.is_finite() && step >= 0.01 && step <= 4.0) {
+        bail!("--ref-step {step} must lie in [0.01, 4]");
+    }
+    Ok(())
+}
+
+fn load(scene_path: &Path) -> Result<(Scene, Volume)> {
+    let scene = Scene::load(scene_path)?;
+    let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;
+    Ok((scene, vol))
+}
+
+struct Rendered {
+    image: Image,
+    seconds: f64,
+    extra: Value,
+}
+
+fn render_arch(scene: &Scene, vol: &Volume, arch: Arch, ref_step: f64) -> Result<Rendered> {
+    let t = Instant::now();
+    match arch {
+        Arch::Cube4l => {
+            let (image, frame) = golden_model::cube4l::render_image(scene, vol)?;
+            let seconds = t.elapsed().as_secs_f64();
+            let s = frame.stats;
+            Ok(Rendered {
+                image,
+                seconds,
+                extra: json!({
+                    "sweeps": frame.plan.sweeps.len(),
+                    "voxels": s.voxels,
+                    "voxels_shaded": s.shaded,
+                    "voxels_terminated": s.terminated,
+                    "saturations": s.saturations,
+                    "voxels_per_second": s.voxels as f64 / seconds,
+                }),
+            })
+        }
+        Arch::Reference => {
+            let cam = scene.camera()?;
+            let image = reference::render(scene, &cam, vol, ref_step);
+            Ok(Rendered {
+                image,
+                seconds: t.elapsed().as_secs_f64(),
+                extra: json!({ "step": ref_step }),
+            })
+        }
+    }
+}
+
+fn error_json(m: &ErrorMetrics) -> Value {
+    json!({
+        "rel_euclid_pct": m.rel_euclid_pct,
+        "rmse": m.rmse,
+        "psnr_db": if m.psnr_db.is_finite() { json!(m.psnr_db) } else { json!(null) },
+        "max_abs": m.max_abs,
+        "foreground_pixels": m.foreground_pixels,
+    })
+}
+
+fn arch_name(a: Arch) -> &'static str {
+    match a {
+        Arch::Cube4l => "cube4l",
+        Arch::Reference => "reference",
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn render_cmd(
+    scene_path: &Path,
+    arch: Arch,
+    out: Option<PathBuf>,
+    json_path: Option<PathBuf>,
+    with_ref: bool,
+    diff: Option<PathBuf>,
+    ref_step: f64,
+    base_plane: Option<PathBuf>,
+) -> Result<()> {
+    check_step(ref_step)?;
+    if base_plane.is_some() && arch != Arch::Cube4l {
+        bail!("--base-plane needs --arch cube4l");
+    }
+    let (scene, vol) = load(scene_path)?;
+    let r = render_arch(&scene, &vol, arch, ref_step)?;
+    println!("{}: {:.3} s", arch_name(arch), r.seconds);
+    let mut report = json!({
+        "arch": arch_name(arch),
+        "scene": scene_path.display().to_string(),
+        "seconds": r.seconds,
+        "image": [r.image.width, r.image.height],
+        "details": r.extra,
+    });
+    if with_ref {
+        let rr = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
+        let m = compare(&r.image, &rr.image);
+        println!(
+            "reference: {:.3} s; error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+            rr.seconds, m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
+        );
+        report["error"] = error_json(&m);
+        report["reference_seconds"] = json!(rr.seconds);
+        if let Some(d) = diff {
+            write_png(&d, &difference(&r.image, &rr.image, 8.0))?;
+        }
+    }
+    if let Some(p) = base_plane {
+        let (frame_img, _) = base_plane_image(&scene, &vol)?;
+        write_png(&p, &frame_img)?;
+    }
+    if let Some(o) = out {
+        write_png(&o, &r.image)?;
+    }
+    if let Some(j) = json_path {
+        write_json(&j, &report)?;
+    }
+    Ok(())
+}
+
+/// The first sweep's base plane as an image (scaled to the display range).
+fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
+    let cam = scene.camera()?;
+    let frame = golden_model::cube4l::render(scene, &cam, vol)?;
+    let b = &frame.bases[0];
+    let m = golden_model::fixed::max_of(scene.hardware.rgba_bits) as f64;
+    let vm = golden_model::fixed::max_of(scene.hardware.voxel_bits) as f64;
+    let depth = frame.plan.sweeps[0].dims[2] as f64;
+    let mut img = Image::black(b.width as u32, b.height as u32);
+    for (o, p) in img.rgb.iter_mut().zip(&b.pixels) {
+        let p = p.map(|c| c as f64);
+        *o = match scene.mode {
+            golden_model::scene::Mode::Mip | golden_model::scene::Mode::Minip => [p[0] / vm; 3],
+            golden_model::scene::Mode::Xray => [p[0] / (m * depth); 3],
+            _ => [p[0] / m, p[1] / m, p[2] / m],
+        };
+    }
+    Ok((img, frame.bases.len()))
+}
+
+fn default_run() -> Result<()> {
+    let scene = Scene::from_json(DEFAULT_SCENE, None).context("built-in default scene")?;
+    let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;
+    let g = render_arch(&scene, &vol, Arch::Cube4l, reference::DEFAULT_STEP)?;
+    let r = render_arch(&scene, &vol, Arch::Reference, reference::DEFAULT_STEP)?;
+    let m = compare(&g.image, &r.image);
+    let out = Path::new("out");
+    write_png(&out.join("default_cube4l.png"), &g.image)?;
+    write_png(&out.join("default_reference.png"), &r.image)?;
+    write_png(&out.join("default_diff.png"), &difference(&g.image, &r.image, 8.0))?;
+    let d = scene.volume.dims;
+    println!("scene: built-in default ({} {}x{}x{}, {:?})", scene.volume.builtin.as_deref().unwrap_or("?"), d[0], d[1], d[2], scene.mode);
+    println!("cube4l golden model: {:.3} s ({:.1} M voxels/s)", g.seconds, g.extra["voxels_per_second"].as_f64().unwrap_or(0.0) / 1e6);
+    println!("float reference:     {:.3} s (step {} voxel)", r.seconds, reference::DEFAULT_STEP);
+    println!(
+        "error vs reference:  rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+        m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
+    );
+    println!("wrote out/default_cube4l.png, out/default_reference.png, out/default_diff.png (difference x8)");
+    Ok(())
+}
+
+fn angles_cmd(scene_path: &Path, range: &[f64], ref_step: f64, json_path: Option<PathBuf>) -> Result<()> {
+    check_step(ref_step)?;
+    let [from, to, step] = [range[0], range[1], range[2]];
+    if !(from.is_finite() && to.is_finite() && step.is_finite() && step > 0.0 && to >= from && (to - from) / step <= 3600.0) {
+        bail!("--range FROM TO STEP needs finite values, STEP > 0, TO >= FROM and at most 3600 steps");
+    }
+    let (mut scene, vol) = load(scene_path)?;
+    let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
+    if scene.view.projection != golden_model::scene::Projection::Parallel {
+        bail!("angles turns a parallel view; the scene is perspective");
+    }
+    let mut rows = Vec::new();
+    println!("{:>7} {:>10} {:>10} {:>10} {:>9} {:>7}", "angle", "cube4l s", "ref s", "rel.eucl%", "PSNR dB", "sweep");
+    let mut a = from;
+    while a <= to + 1e-9 {
+        scene.view.rotate_deg = Some([base[0], a, base[2]]);
+        let g = render_arch(&scene, &vol, Arch::Cube4l, ref_step)?;
+        let r = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
+        let m = compare(&g.image, &r.image);
+        let cam = scene.camera()?;
+        let plan = golden_model::plan::Plan::new(&scene, &cam)?;
+        let axis = ["u", "v", "w"][plan.sweeps[0].axis()];
+        println!("{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7}", g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis);
+        rows.push(json!({"angle": a, "cube4l_seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m)}));
+        a += step;
+    }
+    let worst = rows.iter().map(|r| r["error"]["rel_euclid_pct"].as_f64().unwrap()).fold(0.0, f64::max);
+    println!("largest rel. Euclidean error: {worst:.3} %");
+    if let Some(j) = json_path {
+        write_json(&j, &json!({"scene": scene_path.display().to_string(), "rows": rows, "max_rel_euclid_pct": worst}))?;
+    }
+    Ok(())
+}

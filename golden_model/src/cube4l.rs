@@ -155,3 +155,12 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> crate::error::Res
     }
     Ok(Frame { plan, bases, stats })
 }
+
+/// Render a scene with the golden model all the way to the final image.
+pub fn render_image(scene: &Scene, vol: &Volume) -> crate::error::Result<(crate::warp::Image, Frame)> {
+    let camera = scene.camera()?;
+    let frame = render(scene, &camera, vol)?;
+    let hw = scene.hardware;
+    let img = crate::warp::warp(&frame, &camera, scene.mode, hw.rgba_bits, hw.voxel_bits);
+    Ok((img, frame))
+}

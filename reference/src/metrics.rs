@@ -1,0 +1,78 @@
+//! Error metrics between a rendered image and the reference.
+
+use golden_model::warp::Image;
+/// Error of an image against the reference (colours in [0, 1]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorMetrics {
+    /// Cube-3 §6: average Euclidean RGB distance over the foreground pixels
+    /// (non-black in either image), relative to the largest possible
+    /// distance sqrt(3), in percent.
+    pub rel_euclid_pct: f64,
+    /// Root mean square error over all pixels and channels.
+    pub rmse: f64,
+    /// `20 log10(1 / rmse)`; infinite for identical images.
+    pub psnr_db: f64,
+    /// Largest absolute channel difference.
+    pub max_abs: f64,
+    pub foreground_pixels: usize,
+}
+
+/// Compare `img` against `reference`. Panics if the sizes differ (a caller bug).
+pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
+    assert_eq!((img.width, img.height), (reference.width, reference.height), "image sizes differ");
+    let fg_level = 0.5 / 255.0;
+    let (mut euclid, mut fg, mut sq, mut max_abs) = (0.0, 0usize, 0.0, 0.0f64);
+    for (a, b) in img.rgb.iter().zip(&reference.rgb) {
+        let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        let e = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        sq += d.iter().map(|x| x * x).sum::<f64>();
+        max_abs = d.iter().fold(max_abs, |m, x| m.max(x.abs()));
+        if a.iter().chain(b.iter()).any(|&c| c > fg_level) {
+            fg += 1;
+            euclid += e;
+        }
+    }
+    let rmse = (sq / (3 * img.rgb.len()) as f64).sqrt();
+    ErrorMetrics {
+        rel_euclid_pct: if fg == 0 { 0.0 } else { 100.0 * euclid / (fg as f64 * 3f64.sqrt()) },
+        rmse,
+        psnr_db: if rmse == 0.0 { f64::INFINITY } else { 20.0 * (1.0 / rmse).log10() },
+        max_abs,
+        foreground_pixels: fg,
+    }
+}
+
+/// Difference image: per-channel absolute difference times `gain`.
+pub fn difference(img: &Image, reference: &Image, gain: f64) -> Image {
+    let mut out = Image::black(img.width, img.height);
+    for ((o, a), b) in out.rgb.iter_mut().zip(&img.rgb).zip(&reference.rgb) {
+        *o = std::array::from_fn(|i| ((a[i] - b[i]).abs() * gain).min(1.0));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn identical_images_have_zero_error() {
+        let mut a = Image::black(4, 4);
+        a.rgb[3] = [0.5, 0.2, 0.1];
+        let m = compare(&a, &a);
+        assert_eq!(m.rel_euclid_pct, 0.0);
+        assert_eq!(m.foreground_pixels, 1);
+        assert!(m.psnr_db.is_infinite());
+    }
+
+    #[test]
+    fn known_difference() {
+        let mut a = Image::black(2, 1);
+        let b = Image::black(2, 1);
+        a.rgb[0] = [1.0, 1.0, 1.0];
+        let m = compare(&a, &b);
+        assert!((m.rel_euclid_pct - 100.0).abs() < 1e-12);
+        assert!((m.rmse - (0.5f64).sqrt()).abs() < 1e-12);
+        assert_eq!(m.max_abs, 1.0);
+    }
+}
