@@ -81,11 +81,13 @@ fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
 /// Convert a base-plane pixel value to display RGB for `mode`.
 fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: usize) -> [f64; 3] {
     let m = max_of(rgba_bits) as f64;
-    match mode {
+    let rgb = match mode {
         Mode::Composite | Mode::FirstOpaque => [v[0] / m, v[1] / m, v[2] / m],
         Mode::Mip | Mode::Minip => [v[0] / max_of(voxel_bits) as f64; 3],
         Mode::Xray => [v[0] / (m * depth as f64); 3],
-    }
+    };
+    // The renormalised bilinear weights can overshoot by an ulp.
+    rgb.map(|c| c.clamp(0.0, 1.0))
 }
 
 /// Warp a frame's base planes to the final image.

@@ -1,1 +1,90 @@
+//! Testbench helpers: build scenes and volumes in code, render them with the
+//! golden model and the reference, and drive the golden stages from the
+//! CFB's skewed voxel stream exactly as the hardware will receive it.
 
+use golden_model::cfb::{CfbStream, SkewedMemory};
+use golden_model::compositor::{composite, gather, reset_value};
+use golden_model::cube4l::BasePlane;
+use golden_model::gradient::central_difference;
+use golden_model::plan::{Face, Sweep};
+use golden_model::scene::Scene;
+use golden_model::shader::Shader;
+use golden_model::volume::Volume;
+use golden_model::warp::Image;
+use reference::metrics::{compare, ErrorMetrics};
+
+/// Parse a scene from JSON text; panics with the parse error (test helper).
+pub fn scene(json: &str) -> Scene {
+    Scene::from_json(json, None).unwrap_or_else(|e| panic!("test scene: {e}\n{json}"))
+}
+
+/// A golden render, the reference render and the error between them.
+pub struct Comparison {
+    pub golden: Image,
+    pub reference: Image,
+    pub error: ErrorMetrics,
+    pub stats: golden_model::cube4l::Stats,
+    pub sweeps: usize,
+}
+
+pub fn compare_with_reference(scene: &Scene, vol: &Volume) -> Comparison {
+    let (golden, frame) = golden_model::cube4l::render_image(scene, vol).expect("golden render");
+    let cam = scene.camera().unwrap();
+    let reference = reference::render(scene, &cam, vol, reference::DEFAULT_STEP);
+    let error = compare(&golden, &reference);
+    Comparison {
+        golden,
+        reference,
+        error,
+        stats: frame.stats,
+        sweeps: frame.plan.sweeps.len(),
+    }
+}
+
+/// Run one sweep through the golden stages in the CFB's skewed stream order,
+/// beat by beat, as the hardware pipelines will: each lane gathers from the
+/// previous slice's compositing buffer, classifies, shades and composites,
+/// and pixels go out on ER at the address the CFB attached. Returns the base
+/// plane and the number of clock cycles.
+pub fn render_from_stream(vol: &Volume, sweep: &Sweep, shader: &Shader, p: usize) -> (BasePlane, u64) {
+    let mem = SkewedMemory::new(vol, p);
+    let [nx, ny, _] = sweep.dims;
+    let reset = reset_value(shader.mode, shader.voxel_bits);
+    let [bw, bh] = sweep.base_dims();
+    let mut base = BasePlane {
+        width: bw,
+        height: bh,
+        pixels: vec![[0; 4]; bw * bh],
+        faces: vec![Face::None; bw * bh],
+    };
+    let mut prev = vec![reset; nx * ny];
+    let mut cur = vec![reset; nx * ny];
+    let mut slice = sweep.z0;
+    let mut cycles = 0;
+    for beat in CfbStream::new(&mem, vol.dims, sweep) {
+        cycles += 1;
+        if beat.n_s != slice {
+            std::mem::swap(&mut prev, &mut cur);
+            slice = beat.n_s;
+        }
+        for lane in beat.lanes.iter().filter(|l| !l.pad) {
+            let [x, y, z] = lane.pos;
+            let c = lane.control;
+            let acc = if c.sr { reset } else { gather(&prev, nx, ny, x, y, c.dx, c.dy, sweep.frac, reset) };
+            let sample = shader.sample(lane.value as u32, &c, || {
+                central_difference(|ox, oy, oz| {
+                    let at = |p: usize, o: isize| (p as isize + o) as usize;
+                    let [u, v, w] = sweep.dataset(at(x, ox), at(y, oy), at(z, oz));
+                    vol.get(u, v, w)
+                })
+            });
+            let (value, _) = composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
+            cur[x + nx * y] = value;
+            if let Some([bx, by]) = lane.pixel {
+                base.pixels[bx + bw * by] = value;
+                base.faces[bx + bw * by] = c.face;
+            }
+        }
+    }
+    (base, cycles)
+}
