@@ -18,7 +18,11 @@ use std::time::Instant;
 const DEFAULT_SCENE: &str = include_str!("../../scenes/default.json");
 
 #[derive(Parser)]
-#[command(name = "cube", version, about = "Cube-4L volume-rendering kit: golden model, float reference, error and run time")]
+#[command(
+    name = "cube",
+    version,
+    about = "Cube-4L volume-rendering kit: golden model, float reference, error and run time"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -93,7 +97,16 @@ fn main() {
             diff,
             ref_step,
             base_plane,
-        }) => render_cmd(&scene, arch, out, json, compare_reference || diff.is_some(), diff, ref_step, base_plane),
+        }) => render_cmd(
+            &scene,
+            arch,
+            out,
+            json,
+            compare_reference || diff.is_some(),
+            diff,
+            ref_step,
+            base_plane,
+        ),
         Some(Command::Angles {
             scene,
             range,
@@ -108,7 +121,7 @@ fn main() {
 }
 
 fn check_step(step: f64) -> Result<()> {
-    if !(step.is_finite() && step >= 0.01 && step <= 4.0) {
+    if !(0.01..=4.0).contains(&step) {
         bail!("--ref-step {step} must lie in [0.01, 4]");
     }
     Ok(())
@@ -255,11 +268,29 @@ fn default_run() -> Result<()> {
     let out = Path::new("out");
     write_png(&out.join("default_cube4l.png"), &g.image)?;
     write_png(&out.join("default_reference.png"), &r.image)?;
-    write_png(&out.join("default_diff.png"), &difference(&g.image, &r.image, 8.0))?;
+    write_png(
+        &out.join("default_diff.png"),
+        &difference(&g.image, &r.image, 8.0),
+    )?;
     let d = scene.volume.dims;
-    println!("scene: built-in default ({} {}x{}x{}, {:?})", scene.volume.builtin.as_deref().unwrap_or("?"), d[0], d[1], d[2], scene.mode);
-    println!("cube4l golden model: {:.3} s ({:.1} M voxels/s)", g.seconds, g.extra["voxels_per_second"].as_f64().unwrap_or(0.0) / 1e6);
-    println!("float reference:     {:.3} s (step {} voxel)", r.seconds, reference::DEFAULT_STEP);
+    println!(
+        "scene: built-in default ({} {}x{}x{}, {:?})",
+        scene.volume.builtin.as_deref().unwrap_or("?"),
+        d[0],
+        d[1],
+        d[2],
+        scene.mode
+    );
+    println!(
+        "cube4l golden model: {:.3} s ({:.1} M voxels/s)",
+        g.seconds,
+        g.extra["voxels_per_second"].as_f64().unwrap_or(0.0) / 1e6
+    );
+    println!(
+        "float reference:     {:.3} s (step {} voxel)",
+        r.seconds,
+        reference::DEFAULT_STEP
+    );
     println!(
         "error vs reference:  rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
         m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
@@ -268,11 +299,24 @@ fn default_run() -> Result<()> {
     Ok(())
 }
 
-fn angles_cmd(scene_path: &Path, range: &[f64], ref_step: f64, json_path: Option<PathBuf>) -> Result<()> {
+fn angles_cmd(
+    scene_path: &Path,
+    range: &[f64],
+    ref_step: f64,
+    json_path: Option<PathBuf>,
+) -> Result<()> {
     check_step(ref_step)?;
     let [from, to, step] = [range[0], range[1], range[2]];
-    if !(from.is_finite() && to.is_finite() && step.is_finite() && step > 0.0 && to >= from && (to - from) / step <= 3600.0) {
-        bail!("--range FROM TO STEP needs finite values, STEP > 0, TO >= FROM and at most 3600 steps");
+    if !(from.is_finite()
+        && to.is_finite()
+        && step.is_finite()
+        && step > 0.0
+        && to >= from
+        && (to - from) / step <= 3600.0)
+    {
+        bail!(
+            "--range FROM TO STEP needs finite values, STEP > 0, TO >= FROM and at most 3600 steps"
+        );
     }
     let (mut scene, vol) = load(scene_path)?;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
@@ -280,7 +324,10 @@ fn angles_cmd(scene_path: &Path, range: &[f64], ref_step: f64, json_path: Option
         bail!("angles turns a parallel view; the scene is perspective");
     }
     let mut rows = Vec::new();
-    println!("{:>7} {:>10} {:>10} {:>10} {:>9} {:>7}", "angle", "cube4l s", "ref s", "rel.eucl%", "PSNR dB", "sweep");
+    println!(
+        "{:>7} {:>10} {:>10} {:>10} {:>9} {:>7}",
+        "angle", "cube4l s", "ref s", "rel.eucl%", "PSNR dB", "sweep"
+    );
     let mut a = from;
     while a <= to + 1e-9 {
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
@@ -290,14 +337,23 @@ fn angles_cmd(scene_path: &Path, range: &[f64], ref_step: f64, json_path: Option
         let cam = scene.camera()?;
         let plan = golden_model::plan::Plan::new(&scene, &cam)?;
         let axis = ["u", "v", "w"][plan.sweeps[0].axis()];
-        println!("{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7}", g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis);
+        println!(
+            "{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7}",
+            g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis
+        );
         rows.push(json!({"angle": a, "cube4l_seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m)}));
         a += step;
     }
-    let worst = rows.iter().map(|r| r["error"]["rel_euclid_pct"].as_f64().unwrap()).fold(0.0, f64::max);
+    let worst = rows
+        .iter()
+        .map(|r| r["error"]["rel_euclid_pct"].as_f64().unwrap())
+        .fold(0.0, f64::max);
     println!("largest rel. Euclidean error: {worst:.3} %");
     if let Some(j) = json_path {
-        write_json(&j, &json!({"scene": scene_path.display().to_string(), "rows": rows, "max_rel_euclid_pct": worst}))?;
+        write_json(
+            &j,
+            &json!({"scene": scene_path.display().to_string(), "rows": rows, "max_rel_euclid_pct": worst}),
+        )?;
     }
     Ok(())
 }

@@ -15,9 +15,14 @@ fn atomic_write(path: &Path, write: impl FnOnce(&mut std::fs::File) -> Result<()
     let name = path
         .file_name()
         .with_context(|| format!("{} is not a file path", path.display()))?;
-    let tmp = dir.join(format!(".{}.tmp{}", name.to_string_lossy(), std::process::id()));
+    let tmp = dir.join(format!(
+        ".{}.tmp{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
     let result = (|| {
-        let mut f = std::fs::File::create(&tmp).with_context(|| format!("creating {}", tmp.display()))?;
+        let mut f =
+            std::fs::File::create(&tmp).with_context(|| format!("creating {}", tmp.display()))?;
         write(&mut f)?;
         f.sync_all()?;
         std::fs::rename(&tmp, path).with_context(|| format!("renaming to {}", path.display()))
@@ -29,7 +34,8 @@ fn atomic_write(path: &Path, write: impl FnOnce(&mut std::fs::File) -> Result<()
 }
 
 pub fn write_png(path: &Path, img: &Image) -> Result<()> {
-    let buf = image::RgbImage::from_raw(img.width, img.height, img.to_rgb8()).context("image buffer size")?;
+    let buf = image::RgbImage::from_raw(img.width, img.height, img.to_rgb8())
+        .context("image buffer size")?;
     atomic_write(path, |f| {
         let mut w = std::io::BufWriter::new(f);
         buf.write_to(&mut w, image::ImageFormat::Png)

@@ -64,7 +64,13 @@ pub fn gather(
 /// - MIP / MinIP: max / min of the gathered value and a valid voxel.
 /// - X-ray: gathered sum plus the voxel's opacity (no saturation; the sum
 ///   needs `rgba_bits + ceil(log2(depth))` bits).
-pub fn composite(mode: Mode, order: Order, acc: [u32; 4], new: &Sample, rgba_bits: u32) -> ([u32; 4], bool) {
+pub fn composite(
+    mode: Mode,
+    order: Order,
+    acc: [u32; 4],
+    new: &Sample,
+    rgba_bits: u32,
+) -> ([u32; 4], bool) {
     let m = max_of(rgba_bits);
     match mode {
         Mode::Composite | Mode::FirstOpaque => {
@@ -92,7 +98,10 @@ mod tests {
     use super::*;
 
     fn s(v: [u32; 4]) -> Sample {
-        Sample { value: v, valid: true }
+        Sample {
+            value: v,
+            valid: true,
+        }
     }
 
     #[test]
@@ -108,9 +117,21 @@ mod tests {
     #[test]
     fn opaque_front_hides_everything_behind() {
         let front = [200, 100, 50, 255];
-        let (c, _) = composite(Mode::Composite, Order::FrontToBack, front, &s([9, 9, 9, 200]), 8);
+        let (c, _) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            front,
+            &s([9, 9, 9, 200]),
+            8,
+        );
         assert_eq!(c, front);
-        let (c, _) = composite(Mode::Composite, Order::BackToFront, [9, 9, 9, 200], &s(front), 8);
+        let (c, _) = composite(
+            Mode::Composite,
+            Order::BackToFront,
+            [9, 9, 9, 200],
+            &s(front),
+            8,
+        );
         assert_eq!(c, front);
     }
 
@@ -125,8 +146,24 @@ mod tests {
 
     #[test]
     fn mip_ignores_invalid_voxels() {
-        let bad = Sample { value: [900, 0, 0, 0], valid: false };
-        assert_eq!(composite(Mode::Mip, Order::FrontToBack, [5, 0, 0, 0], &bad, 8).0[0], 5);
-        assert_eq!(composite(Mode::Mip, Order::FrontToBack, [5, 0, 0, 0], &s([900, 0, 0, 0]), 8).0[0], 900);
+        let bad = Sample {
+            value: [900, 0, 0, 0],
+            valid: false,
+        };
+        assert_eq!(
+            composite(Mode::Mip, Order::FrontToBack, [5, 0, 0, 0], &bad, 8).0[0],
+            5
+        );
+        assert_eq!(
+            composite(
+                Mode::Mip,
+                Order::FrontToBack,
+                [5, 0, 0, 0],
+                &s([900, 0, 0, 0]),
+                8
+            )
+            .0[0],
+            900
+        );
     }
 }

@@ -54,6 +54,9 @@ impl std::ops::Add for Stats {
     }
 }
 
+/// A pixel leaving on ER: base-plane address, value and face.
+type PixelOut = ([usize; 2], [u32; 4], Face);
+
 /// Render one sweep to its base plane.
 pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
     let [nx, ny, _] = sweep.dims;
@@ -75,7 +78,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     let mut stats = Stats::default();
     for z in sweep.z0..=sweep.z1 {
         let first = z == sweep.z0;
-        let outputs: Vec<(Vec<([usize; 2], [u32; 4], Face)>, Stats)> = next
+        let outputs: Vec<(Vec<PixelOut>, Stats)> = next
             .par_chunks_mut(nx)
             .enumerate()
             .map(|(y, row)| {
@@ -110,12 +113,15 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                                 vol.data[i as usize]
                             })
                         });
-                        let (r, clipped) = composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
+                        let (r, clipped) =
+                            composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
                         st.saturations += clipped as u64;
                         r
                     };
                     if c.er {
-                        let addr = sweep.base_address(x, y, z, c.face).expect("ER cells have a face");
+                        let addr = sweep
+                            .base_address(x, y, z, c.face)
+                            .expect("ER cells have a face");
                         out.push((addr, *cell, c.face));
                     }
                 }
@@ -157,7 +163,10 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> crate::error::Res
 }
 
 /// Render a scene with the golden model all the way to the final image.
-pub fn render_image(scene: &Scene, vol: &Volume) -> crate::error::Result<(crate::warp::Image, Frame)> {
+pub fn render_image(
+    scene: &Scene,
+    vol: &Volume,
+) -> crate::error::Result<(crate::warp::Image, Frame)> {
     let camera = scene.camera()?;
     let frame = render(scene, &camera, vol)?;
     let hw = scene.hardware;

@@ -13,11 +13,8 @@ pub enum CubeError {
     View(String),
     #[error("hardware: {0}")]
     Hardware(String),
-    #[error("{path}: {source}")]
-    Io {
-        path: String,
-        source: std::io::Error,
-    },
+    #[error("{path}: {err}")]
+    Io { path: String, err: std::io::Error },
 }
 
 pub type Result<T> = std::result::Result<T, CubeError>;

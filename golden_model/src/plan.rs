@@ -143,7 +143,10 @@ impl Sweep {
                 if sz == 0 {
                     return None;
                 }
-                (round_div(sx << self.frac, sz), round_div(sy << self.frac, sz))
+                (
+                    round_div(sx << self.frac, sz),
+                    round_div(sy << self.frac, sz),
+                )
             }
         };
         (dx.abs() <= one && dy.abs() <= one).then_some((dx as i32, dy as i32))
@@ -156,7 +159,9 @@ impl Sweep {
         let inc = self.increments(x, y, z);
         let (dx, dy) = match (inc, self.rays) {
             (Some(d), _) => d,
-            (None, Rays::Parallel { .. }) => unreachable!("parallel increments are range checked at planning"),
+            (None, Rays::Parallel { .. }) => {
+                unreachable!("parallel increments are range checked at planning")
+            }
             (None, Rays::Perspective { eye }) => {
                 // Saturate the direction of an invalid voxel to the 3x3 region
                 // so its cell still gathers from its neighbours.
@@ -275,7 +280,11 @@ impl Plan {
                 let dx = quantize(p.x / p.z, frac).clamp(-one, one) as i32;
                 let dy = quantize(p.y / p.z, frac).clamp(-one, one) as i32;
                 s.rays = Rays::Parallel { dx, dy };
-                s.order = if p.z > 0.0 { Order::FrontToBack } else { Order::BackToFront };
+                s.order = if p.z > 0.0 {
+                    Order::FrontToBack
+                } else {
+                    Order::BackToFront
+                };
                 s.spacing = (1.0 + (p.x / p.z).powi(2) + (p.y / p.z).powi(2)).sqrt();
                 s.view_dir = d;
                 slots[axis][(p.z > 0.0) as usize] = Some(0);
@@ -283,7 +292,11 @@ impl Plan {
             }
             Projection::Perspective => {
                 let lo = DVec3::ZERO;
-                let hi = DVec3::new((dims[0] - 1) as f64, (dims[1] - 1) as f64, (dims[2] - 1) as f64);
+                let hi = DVec3::new(
+                    (dims[0] - 1) as f64,
+                    (dims[1] - 1) as f64,
+                    (dims[2] - 1) as f64,
+                );
                 let eye = camera.origin;
                 let mut sums = [[DVec3::ZERO; 2]; 3];
                 for j in 0..camera.height {
@@ -304,12 +317,20 @@ impl Plan {
                         let n = dims[a];
                         let e = eye[a];
                         if pos == 1 {
-                            s.z0 = if e < 0.0 { 0 } else { (e.floor() as usize + 1).min(n) };
+                            s.z0 = if e < 0.0 {
+                                0
+                            } else {
+                                (e.floor() as usize + 1).min(n)
+                            };
                             s.z1 = n - 1;
                             s.order = Order::FrontToBack;
                         } else {
                             s.z0 = 0;
-                            s.z1 = if e > (n - 1) as f64 { n - 1 } else { (e.ceil() as i64 - 1).max(-1) as usize };
+                            s.z1 = if e > (n - 1) as f64 {
+                                n - 1
+                            } else {
+                                (e.ceil() as i64 - 1).max(-1) as usize
+                            };
                             s.order = Order::BackToFront;
                             if e.ceil() < 1.0 {
                                 continue;
@@ -320,7 +341,11 @@ impl Plan {
                         }
                         let pe = s.to_pipeline() * eye;
                         s.rays = Rays::Perspective {
-                            eye: [quantize(pe.x, frac), quantize(pe.y, frac), quantize(pe.z, frac)],
+                            eye: [
+                                quantize(pe.x, frac),
+                                quantize(pe.y, frac),
+                                quantize(pe.z, frac),
+                            ],
                         };
                         let m = s.to_pipeline() * sum.normalize();
                         s.spacing = (1.0 + (m.x / m.z).powi(2) + (m.y / m.z).powi(2)).sqrt();
@@ -352,7 +377,9 @@ mod tests {
     use super::*;
 
     fn scene(view: &str) -> Scene {
-        let t = format!(r#"{{"volume": {{"builtin": "sphere", "dims": [16,12,10]}}, "view": {view}, "image": [32,32]}}"#);
+        let t = format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [16,12,10]}}, "view": {view}, "image": [32,32]}}"#
+        );
         Scene::from_json(&t, None).unwrap()
     }
 
@@ -375,11 +402,17 @@ mod tests {
     #[test]
     fn exactly_45_degrees_gives_unit_increment() {
         let p = plan(r#"{"projection": "parallel", "rotate_deg": [0, 45, 0]}"#);
-        let Rays::Parallel { dx, dy } = p.sweeps[0].rays else { panic!() };
+        let Rays::Parallel { dx, dy } = p.sweeps[0].rays else {
+            panic!()
+        };
         assert_eq!((dx.abs(), dy), (256, 0));
         let p = plan(r#"{"projection": "parallel", "rotate_deg": [0, 45.01, 0]}"#);
         let q = plan(r#"{"projection": "parallel", "rotate_deg": [0, 44.99, 0]}"#);
-        assert_ne!(p.sweeps[0].axis(), q.sweeps[0].axis(), "the base plane switches at 45 degrees");
+        assert_ne!(
+            p.sweeps[0].axis(),
+            q.sweeps[0].axis(),
+            "the base plane switches at 45 degrees"
+        );
     }
 
     #[test]
@@ -401,7 +434,9 @@ mod tests {
         let p = plan(r#"{"projection": "perspective", "eye": [7.5, 5.5, -3], "fov_deg": 120}"#);
         assert!(p.sweeps.len() > 1, "{} sweeps", p.sweeps.len());
         for s in &p.sweeps {
-            let Rays::Perspective { .. } = s.rays else { panic!() };
+            let Rays::Perspective { .. } = s.rays else {
+                panic!()
+            };
         }
     }
 }

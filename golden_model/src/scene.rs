@@ -253,9 +253,9 @@ impl Scene {
     }
 
     pub fn load(path: &Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).map_err(|source| CubeError::Io {
+        let text = std::fs::read_to_string(path).map_err(|err| CubeError::Io {
             path: path.display().to_string(),
-            source,
+            err,
         })?;
         Scene::from_json(&text, path.parent())
     }
@@ -289,20 +289,24 @@ impl Scene {
             )));
         }
         let d = self.volume.dims;
-        if d.iter().any(|&n| n < 2 || n > MAX_DIM) {
+        if d.iter().any(|n| !(2..=MAX_DIM).contains(n)) {
             return Err(CubeError::Volume(format!(
                 "dims {d:?} out of range (each side 2..={MAX_DIM})"
             )));
         }
         if d.iter().product::<usize>() > MAX_VOXELS {
-            return Err(CubeError::Volume(format!("dims {d:?} exceed {MAX_VOXELS} voxels")));
+            return Err(CubeError::Volume(format!(
+                "dims {d:?} exceed {MAX_VOXELS} voxels"
+            )));
         }
         match (&self.volume.builtin, &self.volume.raw) {
             (Some(_), Some(_)) => return Err(scene_err("volume has both 'builtin' and 'raw'")),
             (None, None) => return Err(scene_err("volume needs 'builtin' or 'raw'")),
             (Some(b), None) => {
                 if !crate::volume::BUILTINS.iter().any(|(n, _)| n == b) {
-                    return Err(scene_err(format!("unknown builtin volume '{b}' (see `cube scenes`)")));
+                    return Err(scene_err(format!(
+                        "unknown builtin volume '{b}' (see `cube scenes`)"
+                    )));
                 }
                 if self.volume.kind.is_some() || self.volume.window.is_some() {
                     return Err(scene_err("'type' and 'window' apply only to raw volumes"));
@@ -316,12 +320,16 @@ impl Scene {
         }
         if let Some([lo, hi]) = self.volume.window {
             if !lo.is_finite() || !hi.is_finite() || hi <= lo {
-                return Err(scene_err(format!("window [{lo}, {hi}] must be finite with hi > lo")));
+                return Err(scene_err(format!(
+                    "window [{lo}, {hi}] must be finite with hi > lo"
+                )));
             }
         }
         let [w, h] = self.image;
         if w == 0 || h == 0 || w > MAX_IMAGE || h > MAX_IMAGE {
-            return Err(scene_err(format!("image [{w}, {h}] out of range (1..={MAX_IMAGE})")));
+            return Err(scene_err(format!(
+                "image [{w}, {h}] out of range (1..={MAX_IMAGE})"
+            )));
         }
         self.validate_transfer()?;
         self.camera().map(|_| ())
@@ -332,18 +340,24 @@ impl Scene {
         let vmax = crate::fixed::max_of(self.hardware.voxel_bits) as f64;
         let check_points = |name: &str, xs: Vec<f64>, ys: Vec<f64>, ymax: f64| -> Result<()> {
             if xs.is_empty() {
-                return Err(scene_err(format!("transfer.{name} needs at least one point")));
+                return Err(scene_err(format!(
+                    "transfer.{name} needs at least one point"
+                )));
             }
             for w in xs.windows(2) {
                 if w[1] < w[0] {
-                    return Err(scene_err(format!("transfer.{name} points must be sorted by their first value")));
+                    return Err(scene_err(format!(
+                        "transfer.{name} points must be sorted by their first value"
+                    )));
                 }
             }
             if xs.iter().chain(ys.iter()).any(|v| !v.is_finite()) {
                 return Err(scene_err(format!("transfer.{name} has a non-finite value")));
             }
             if ys.iter().any(|&y| !(0.0..=ymax).contains(&y)) {
-                return Err(scene_err(format!("transfer.{name} values must lie in [0, {ymax}]")));
+                return Err(scene_err(format!(
+                    "transfer.{name} values must lie in [0, {ymax}]"
+                )));
             }
             Ok(())
         };
@@ -367,7 +381,9 @@ impl Scene {
                 1.0,
             )?;
             if g.iter().any(|p| p[0] < 0.0) {
-                return Err(scene_err("transfer.gradient_opacity magnitudes must be >= 0"));
+                return Err(scene_err(
+                    "transfer.gradient_opacity magnitudes must be >= 0",
+                ));
             }
         }
         if t.opacity.iter().any(|p| p[0] < 0.0 || p[0] > vmax) {
@@ -380,7 +396,11 @@ impl Scene {
             return Err(scene_err("transfer.opaque_threshold must lie in (0, 1]"));
         }
         let s = &self.shading;
-        for (n, v) in [("ambient", s.ambient), ("diffuse", s.diffuse), ("specular", s.specular)] {
+        for (n, v) in [
+            ("ambient", s.ambient),
+            ("diffuse", s.diffuse),
+            ("specular", s.specular),
+        ] {
             if !(0.0..=1.0).contains(&v) {
                 return Err(scene_err(format!("shading.{n} {v} must lie in [0, 1]")));
             }
@@ -431,7 +451,11 @@ impl Camera {
         let [w, h] = image;
         match view.projection {
             Projection::Parallel => {
-                if view.eye.is_some() || view.target.is_some() || view.up.is_some() || view.fov_deg.is_some() {
+                if view.eye.is_some()
+                    || view.target.is_some()
+                    || view.up.is_some()
+                    || view.fov_deg.is_some()
+                {
                     return Err(CubeError::View(
                         "parallel views take rotate_deg and zoom, not eye/target/up/fov_deg".into(),
                     ));
@@ -440,7 +464,9 @@ impl Camera {
                 let rv = check_vec("rotate_deg", r)?;
                 let zoom = view.zoom.unwrap_or(1.0);
                 if !(zoom.is_finite() && zoom > 0.0 && zoom <= 1000.0) {
-                    return Err(CubeError::View(format!("zoom {zoom} must lie in (0, 1000]")));
+                    return Err(CubeError::View(format!(
+                        "zoom {zoom} must lie in (0, 1000]"
+                    )));
                 }
                 // World = Rz * Ry * Rx * dataset; the camera looks down world -z.
                 let rot = DMat3::from_rotation_z(rv.z.to_radians())
@@ -462,24 +488,33 @@ impl Camera {
             Projection::Perspective => {
                 if view.rotate_deg.is_some() || view.zoom.is_some() {
                     return Err(CubeError::View(
-                        "perspective views take eye/target/up/fov_deg, not rotate_deg or zoom".into(),
+                        "perspective views take eye/target/up/fov_deg, not rotate_deg or zoom"
+                            .into(),
                     ));
                 }
-                let eye = check_vec("eye", view.eye.ok_or_else(|| CubeError::View("perspective view needs 'eye'".into()))?)?;
+                let eye = check_vec(
+                    "eye",
+                    view.eye
+                        .ok_or_else(|| CubeError::View("perspective view needs 'eye'".into()))?,
+                )?;
                 let target = check_vec("target", view.target.unwrap_or(centre.to_array()))?;
                 let up = check_dir("up", view.up.unwrap_or([0.0, 1.0, 0.0]))?;
                 let fov = view.fov_deg.unwrap_or(40.0);
                 if !(fov.is_finite() && fov > 0.5 && fov < 170.0) {
-                    return Err(CubeError::View(format!("fov_deg {fov} must lie in (0.5, 170)")));
+                    return Err(CubeError::View(format!(
+                        "fov_deg {fov} must lie in (0.5, 170)"
+                    )));
                 }
                 let fwd = target - eye;
-                if !(fwd.length() > 1e-9) {
+                if fwd.length().is_nan() || fwd.length() <= 1e-9 {
                     return Err(CubeError::View("eye and target coincide".into()));
                 }
                 let forward = fwd.normalize();
                 let right = forward.cross(up);
                 if right.length() < 1e-9 {
-                    return Err(CubeError::View("up is parallel to the viewing direction".into()));
+                    return Err(CubeError::View(
+                        "up is parallel to the viewing direction".into(),
+                    ));
                 }
                 let right = right.normalize();
                 let up = right.cross(forward);
@@ -550,11 +585,16 @@ mod tests {
 
     #[test]
     fn bad_scenes_give_clear_errors() {
-        assert!(err_of(&MIN.replace("\"view\"", "\"bogus\": 1, \"view\"")).contains("unknown field"));
+        assert!(
+            err_of(&MIN.replace("\"view\"", "\"bogus\": 1, \"view\"")).contains("unknown field")
+        );
         assert!(err_of(&MIN.replace("[16,16,16]", "[0,16,16]")).contains("out of range"));
         assert!(err_of(&MIN.replace("[16,16,16]", "[100000,16,16]")).contains("out of range"));
         assert!(err_of(&MIN.replace("sphere", "teapot")).contains("unknown builtin"));
-        assert!(err_of(&MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [1e999, 0, 0]")).contains("scene"));
+        assert!(
+            err_of(&MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [1e999, 0, 0]"))
+                .contains("scene")
+        );
         assert!(err_of(&MIN.replace("}}", "}, \"mode\": \"bogus\"}")).contains("unknown variant"));
         let persp = MIN.replace(
             "\"projection\": \"parallel\"",
@@ -571,7 +611,11 @@ mod tests {
 
     #[test]
     fn parallel_rays_are_orthonormal() {
-        let s = Scene::from_json(&MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [70, 30, 0]"), None).unwrap();
+        let s = Scene::from_json(
+            &MIN.replace("parallel\"", "parallel\", \"rotate_deg\": [70, 30, 0]"),
+            None,
+        )
+        .unwrap();
         let c = s.camera().unwrap();
         assert!((c.right.dot(c.up)).abs() < 1e-12);
         assert!((c.right.cross(c.up) - (-c.forward)).length() < 1e-12);

@@ -49,14 +49,28 @@ impl Shader {
         let mode = scene.mode;
         let shading = mode.uses_colour() && scene.shading.enabled;
         let grad_opacity = mode.uses_colour() && tf.has_gradient_opacity();
-        let spacing = if mode == Mode::Composite { sweep.spacing } else { 1.0 };
+        let spacing = if mode == Mode::Composite {
+            sweep.spacing
+        } else {
+            1.0
+        };
         let opacity = matches!(mode, Mode::Composite | Mode::FirstOpaque | Mode::Xray)
             .then(|| OpacityLut::new(&tf, hw.voxel_bits, hw.rgba_bits, spacing, grad_opacity));
-        let colour = mode.uses_colour().then(|| ColourLut::new(&tf, hw.voxel_bits, hw.rgba_bits));
+        let colour = mode
+            .uses_colour()
+            .then(|| ColourLut::new(&tf, hw.voxel_bits, hw.rgba_bits));
         let reflectance = shading.then(|| {
             let to_dataset = sweep.to_dataset();
-            let light = camera.camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir)).normalize();
-            ReflectanceMap::new(&scene.shading, |g| to_dataset * g, light, -sweep.view_dir, hw.rgba_bits)
+            let light = camera
+                .camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir))
+                .normalize();
+            ReflectanceMap::new(
+                &scene.shading,
+                |g| to_dataset * g,
+                light,
+                -sweep.view_dir,
+                hw.rgba_bits,
+            )
         });
         Shader {
             mode,
@@ -75,7 +89,9 @@ impl Shader {
     pub fn transparent(&self, v: u32, c: &Control) -> bool {
         match (&self.opacity, self.mode) {
             (_, Mode::Mip | Mode::Minip) => false,
-            (Some(o), _) => c.invalid || (self.needs_gradient && c.edge) || o.row_max[o.row(v)] == 0,
+            (Some(o), _) => {
+                c.invalid || (self.needs_gradient && c.edge) || o.row_max[o.row(v)] == 0
+            }
             (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
         }
     }
@@ -98,15 +114,26 @@ impl Shader {
                 valid: true,
             },
             Mode::Composite | Mode::FirstOpaque => {
-                let g = if self.needs_gradient { gradient() } else { [0; 3] };
+                let g = if self.needs_gradient {
+                    gradient()
+                } else {
+                    [0; 3]
+                };
                 let op = self.opacity.as_ref().unwrap();
-                let gm = if op.gm_shift.is_some() { magnitude(g) } else { 0 };
+                let gm = if op.gm_shift.is_some() {
+                    magnitude(g)
+                } else {
+                    0
+                };
                 let mut alpha = op.lookup(v, gm);
                 if self.mode == Mode::FirstOpaque {
                     alpha = if alpha >= self.threshold { m } else { 0 };
                 }
                 if alpha == 0 {
-                    return Sample { value: [0; 4], valid: true };
+                    return Sample {
+                        value: [0; 4],
+                        valid: true,
+                    };
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(v);
                 let [d, s] = match &self.reflectance {

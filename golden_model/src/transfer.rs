@@ -41,7 +41,10 @@ impl TransferFn {
         TransferFn {
             opacity: t.opacity.iter().map(|p| (p[0], p[1])).collect(),
             rgb: [ch(0), ch(1), ch(2)],
-            gradient: t.gradient_opacity.as_ref().map(|g| g.iter().map(|p| (p[0], p[1])).collect()),
+            gradient: t
+                .gradient_opacity
+                .as_ref()
+                .map(|g| g.iter().map(|p| (p[0], p[1])).collect()),
         }
     }
 
@@ -172,7 +175,11 @@ impl OpacityLut {
             let top = (4.0 * tf.gradient_range()).ceil().max(1.0) as u64;
             crate::fixed::bit_len(top).saturating_sub(GM_BITS)
         });
-        let gm_n = if gm_shift.is_some() { 1u32 << GM_BITS } else { 1 };
+        let gm_n = if gm_shift.is_some() {
+            1u32 << GM_BITS
+        } else {
+            1
+        };
         let mut table = Vec::with_capacity(((1usize) << lb) * gm_n as usize);
         for i in 0..1u32 << lb {
             let a = tf.opacity(bin_centre(i, shift));
@@ -184,7 +191,10 @@ impl OpacityLut {
                 table.push(quantize_unorm(correct_opacity(a * f, spacing), rgba_bits));
             }
         }
-        let row_max = table.chunks(gm_n as usize).map(|r| *r.iter().max().unwrap()).collect();
+        let row_max = table
+            .chunks(gm_n as usize)
+            .map(|r| *r.iter().max().unwrap())
+            .collect();
         OpacityLut {
             shift,
             gm_shift,

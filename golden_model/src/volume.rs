@@ -45,14 +45,16 @@ impl Volume {
                 let kind = spec
                     .kind
                     .ok_or_else(|| CubeError::Volume("raw volume needs 'type'".into()))?;
-                let bytes = std::fs::read(path).map_err(|source| CubeError::Io {
+                let bytes = std::fs::read(path).map_err(|err| CubeError::Io {
                     path: path.display().to_string(),
-                    source,
+                    err,
                 })?;
                 from_raw(&bytes, spec.dims, kind, spec.window, bits)
                     .map_err(|e| CubeError::Volume(format!("{}: {e}", path.display())))
             }
-            _ => Err(CubeError::Volume("volume needs exactly one of 'builtin' and 'raw'".into())),
+            _ => Err(CubeError::Volume(
+                "volume needs exactly one of 'builtin' and 'raw'".into(),
+            )),
         }
     }
 }
@@ -155,10 +157,19 @@ pub fn builtin(name: &str, dims: [usize; 3], bits: u32) -> Result<Volume> {
             let skull_in = skull_out - DVec3::splat(0.06 * h.min_element());
             let brain = skull_in - DVec3::splat(0.02 * h.min_element());
             fill(dims, bits, |p| {
-                let skull = coverage(ellipsoid(p, c, skull_out)) - coverage(ellipsoid(p, c, skull_in));
+                let skull =
+                    coverage(ellipsoid(p, c, skull_out)) - coverage(ellipsoid(p, c, skull_in));
                 let tissue = coverage(ellipsoid(p, c, brain));
-                let vl = coverage(ellipsoid(p, c + h * DVec3::new(-0.18, 0.1, 0.0), h * DVec3::new(0.1, 0.25, 0.15)));
-                let vr = coverage(ellipsoid(p, c + h * DVec3::new(0.18, 0.1, 0.0), h * DVec3::new(0.1, 0.25, 0.15)));
+                let vl = coverage(ellipsoid(
+                    p,
+                    c + h * DVec3::new(-0.18, 0.1, 0.0),
+                    h * DVec3::new(0.1, 0.25, 0.15),
+                ));
+                let vr = coverage(ellipsoid(
+                    p,
+                    c + h * DVec3::new(0.18, 0.1, 0.0),
+                    h * DVec3::new(0.1, 0.25, 0.15),
+                ));
                 let lesion = coverage(ellipsoid(p, c + h * DVec3::new(0.25, -0.35, 0.2), h * 0.08));
                 0.95 * skull + 0.3 * tissue - 0.2 * (vl + vr) + 0.45 * lesion
             })
@@ -172,11 +183,19 @@ pub fn builtin(name: &str, dims: [usize; 3], bits: u32) -> Result<Volume> {
         }
         "ramp" => fill(dims, bits, |p| p.x / (n.x - 1.0)),
         "impulse" => {
-            let ci = DVec3::new((dims[0] / 2) as f64, (dims[1] / 2) as f64, (dims[2] / 2) as f64);
+            let ci = DVec3::new(
+                (dims[0] / 2) as f64,
+                (dims[1] / 2) as f64,
+                (dims[2] / 2) as f64,
+            );
             fill(dims, bits, |p| if p == ci { 1.0 } else { 0.0 })
         }
         "empty" => fill(dims, bits, |_| 0.0),
-        other => return Err(CubeError::Volume(format!("unknown builtin volume '{other}'"))),
+        other => {
+            return Err(CubeError::Volume(format!(
+                "unknown builtin volume '{other}'"
+            )))
+        }
     };
     Ok(vol)
 }
@@ -198,7 +217,10 @@ mod tests {
         assert_eq!(v.data, vec![256, 4095]);
         let e = from_raw(&[0xff, 0xff], [1, 1, 1], RawType::U16, None, 12).unwrap_err();
         assert!(e.contains("window"));
-        let hu: Vec<u8> = [-1000i16, 0, 1000, 3000].iter().flat_map(|v| v.to_le_bytes()).collect();
+        let hu: Vec<u8> = [-1000i16, 0, 1000, 3000]
+            .iter()
+            .flat_map(|v| v.to_le_bytes())
+            .collect();
         let v = from_raw(&hu, [4, 1, 1], RawType::I16, Some([-1000.0, 2000.0]), 12).unwrap();
         assert_eq!(v.data, vec![0, 1365, 2730, 4095]);
     }
@@ -211,7 +233,11 @@ mod tests {
         let i = builtin("impulse", [9, 8, 7], 16).unwrap();
         assert_eq!(i.data.iter().filter(|&&v| v == 65535).count(), 1);
         assert_eq!(i.get(4, 4, 3), 65535);
-        assert!(builtin("empty", [4, 4, 4], 8).unwrap().data.iter().all(|&v| v == 0));
+        assert!(builtin("empty", [4, 4, 4], 8)
+            .unwrap()
+            .data
+            .iter()
+            .all(|&v| v == 0));
         let r = builtin("ramp", [5, 2, 2], 8).unwrap();
         assert_eq!(&r.data[0..5], &[0, 64, 128, 191, 255]);
     }

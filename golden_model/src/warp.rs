@@ -61,7 +61,12 @@ fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
     let (fx, fy) = (p.x - x0, p.y - y0);
     let mut acc = [0.0; 4];
     let mut wsum = 0.0;
-    for (ox, oy, w) in [(0, 0, (1.0 - fx) * (1.0 - fy)), (1, 0, fx * (1.0 - fy)), (0, 1, (1.0 - fx) * fy), (1, 1, fx * fy)] {
+    for (ox, oy, w) in [
+        (0, 0, (1.0 - fx) * (1.0 - fy)),
+        (1, 0, fx * (1.0 - fy)),
+        (0, 1, (1.0 - fx) * fy),
+        (1, 1, fx * fy),
+    ] {
         let (cx, cy) = (x0 as i64 + ox, y0 as i64 + oy);
         if w <= 0.0 || cx < 0 || cy < 0 || cx >= base.width as i64 || cy >= base.height as i64 {
             continue;
@@ -100,22 +105,40 @@ pub fn warp(frame: &Frame, camera: &Camera, mode: Mode, rgba_bits: u32, voxel_bi
         .for_each(|(j, row)| {
             for (i, px) in row.iter_mut().enumerate() {
                 let (o, d) = camera.ray(i as u32, j as u32);
-                let Some(si) = frame.plan.sweep_for(d) else { continue };
+                let Some(si) = frame.plan.sweep_for(d) else {
+                    continue;
+                };
                 let sweep = &frame.plan.sweeps[si];
                 let m = sweep.to_pipeline();
                 let (po, pd) = (m * o, m * d);
                 let [nx, ny, _] = sweep.dims;
                 let lo = DVec3::new(0.0, 0.0, sweep.z0 as f64);
                 let hi = DVec3::new((nx - 1) as f64, (ny - 1) as f64, sweep.z1 as f64);
-                let Some((t0, t1, a0, a1)) = slab(po, pd, lo, hi) else { continue };
+                let Some((t0, t1, a0, a1)) = slab(po, pd, lo, hi) else {
+                    continue;
+                };
                 // The pixel left the buffer where the ray is highest in z.
                 let (t, axis) = if pd.z > 0.0 { (t1, a1) } else { (t0, a0) };
                 let q = po + pd * t;
                 let near_hi = |lo: f64, hi: f64, v: f64| (v - lo).abs() >= (v - hi).abs();
                 let (face, uv) = match axis {
                     2 => (Face::Last, DVec2::new(q.x, q.y)),
-                    0 => (if near_hi(lo.x, hi.x, q.x) { Face::XPos } else { Face::XNeg }, DVec2::new(q.y, q.z)),
-                    _ => (if near_hi(lo.y, hi.y, q.y) { Face::YPos } else { Face::YNeg }, DVec2::new(q.x, q.z)),
+                    0 => (
+                        if near_hi(lo.x, hi.x, q.x) {
+                            Face::XPos
+                        } else {
+                            Face::XNeg
+                        },
+                        DVec2::new(q.y, q.z),
+                    ),
+                    _ => (
+                        if near_hi(lo.y, hi.y, q.y) {
+                            Face::YPos
+                        } else {
+                            Face::YNeg
+                        },
+                        DVec2::new(q.x, q.z),
+                    ),
                 };
                 let p = face_to_base(sweep, face).transform_point2(uv);
                 if let Some(v) = sample_face(&frame.bases[si], p, face) {

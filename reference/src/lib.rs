@@ -54,7 +54,9 @@ impl BlockGrid {
         for bz in 0..n[2] {
             for by in 0..n[1] {
                 for bx in 0..n[0] {
-                    let r = |b: usize, a: usize| (b * BLOCK).saturating_sub(1)..((b + 1) * BLOCK + 1).min(vol.dims[a]);
+                    let r = |b: usize, a: usize| {
+                        (b * BLOCK).saturating_sub(1)..((b + 1) * BLOCK + 1).min(vol.dims[a])
+                    };
                     let (mut lo, mut hi) = (u16::MAX, 0u16);
                     for w in r(bz, 2) {
                         for v in r(by, 1) {
@@ -65,7 +67,8 @@ impl BlockGrid {
                             }
                         }
                     }
-                    live[bx + n[0] * (by + n[1] * bz)] = max_opacity(tf, lo as f64, hi as f64) > 0.0;
+                    live[bx + n[0] * (by + n[1] * bz)] =
+                        max_opacity(tf, lo as f64, hi as f64) > 0.0;
                 }
             }
         }
@@ -96,13 +99,25 @@ impl Caster<'_> {
         let c = |a: usize| p[a].clamp(0.0, (d[a] - 1) as f64);
         let (x, y, z) = (c(0), c(1), c(2));
         let (x0, y0, z0) = (x.floor() as usize, y.floor() as usize, z.floor() as usize);
-        let (x1, y1, z1) = ((x0 + 1).min(d[0] - 1), (y0 + 1).min(d[1] - 1), (z0 + 1).min(d[2] - 1));
+        let (x1, y1, z1) = (
+            (x0 + 1).min(d[0] - 1),
+            (y0 + 1).min(d[1] - 1),
+            (z0 + 1).min(d[2] - 1),
+        );
         let (fx, fy, fz) = (x - x0 as f64, y - y0 as f64, z - z0 as f64);
         let g = |u, v, w| self.vol.get(u, v, w) as f64;
         let l = |a: f64, b: f64, t: f64| a + (b - a) * t;
         l(
-            l(l(g(x0, y0, z0), g(x1, y0, z0), fx), l(g(x0, y1, z0), g(x1, y1, z0), fx), fy),
-            l(l(g(x0, y0, z1), g(x1, y0, z1), fx), l(g(x0, y1, z1), g(x1, y1, z1), fx), fy),
+            l(
+                l(g(x0, y0, z0), g(x1, y0, z0), fx),
+                l(g(x0, y1, z0), g(x1, y1, z0), fx),
+                fy,
+            ),
+            l(
+                l(g(x0, y0, z1), g(x1, y0, z1), fx),
+                l(g(x0, y1, z1), g(x1, y1, z1), fx),
+                fy,
+            ),
             fz,
         )
     }
@@ -127,7 +142,11 @@ impl Caster<'_> {
             return (0.0, None);
         }
         let needs_grad = self.scene.shading.enabled || self.tf.has_gradient_opacity();
-        let g = if needs_grad { self.gradient(p) } else { DVec3::ZERO };
+        let g = if needs_grad {
+            self.gradient(p)
+        } else {
+            DVec3::ZERO
+        };
         let a = a0 * self.tf.gradient_factor(g.length());
         if a <= 0.0 {
             return (0.0, None);
@@ -137,7 +156,12 @@ impl Caster<'_> {
             let (diff, spec) = if g.length() < 1e-12 {
                 (self.scene.shading.ambient, 0.0)
             } else {
-                phong(&self.scene.shading, -g.normalize(), self.light, self.cam.to_viewer(p))
+                phong(
+                    &self.scene.shading,
+                    -g.normalize(),
+                    self.light,
+                    self.cam.to_viewer(p),
+                )
             };
             (colour * diff + DVec3::splat(spec)).min(DVec3::ONE)
         } else {
@@ -221,7 +245,10 @@ impl Caster<'_> {
 
 /// Render `scene` with sample step `step` (voxel lengths).
 pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, step: f64) -> Image {
-    assert!(step > 0.0 && step.is_finite(), "reference step must be positive");
+    assert!(
+        step > 0.0 && step.is_finite(),
+        "reference step must be positive"
+    );
     let tf = TransferFn::new(scene);
     let light = cam
         .camera_to_dataset(DVec3::from_array(scene.shading.light_dir))
@@ -235,7 +262,8 @@ pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, step: f64) -> Image {
         vmax: vol.max_value() as f64,
         step,
         light,
-        inner: scene.mode.uses_colour() && (scene.shading.enabled || scene.transfer.gradient_opacity.is_some()),
+        inner: scene.mode.uses_colour()
+            && (scene.shading.enabled || scene.transfer.gradient_opacity.is_some()),
     };
     let mut img = Image::black(cam.width, cam.height);
     img.rgb

@@ -19,7 +19,11 @@ pub struct ErrorMetrics {
 
 /// Compare `img` against `reference`. Panics if the sizes differ (a caller bug).
 pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
-    assert_eq!((img.width, img.height), (reference.width, reference.height), "image sizes differ");
+    assert_eq!(
+        (img.width, img.height),
+        (reference.width, reference.height),
+        "image sizes differ"
+    );
     let fg_level = 0.5 / 255.0;
     let (mut euclid, mut fg, mut sq, mut max_abs) = (0.0, 0usize, 0.0, 0.0f64);
     for (a, b) in img.rgb.iter().zip(&reference.rgb) {
@@ -34,9 +38,17 @@ pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
     }
     let rmse = (sq / (3 * img.rgb.len()) as f64).sqrt();
     ErrorMetrics {
-        rel_euclid_pct: if fg == 0 { 0.0 } else { 100.0 * euclid / (fg as f64 * 3f64.sqrt()) },
+        rel_euclid_pct: if fg == 0 {
+            0.0
+        } else {
+            100.0 * euclid / (fg as f64 * 3f64.sqrt())
+        },
         rmse,
-        psnr_db: if rmse == 0.0 { f64::INFINITY } else { 20.0 * (1.0 / rmse).log10() },
+        psnr_db: if rmse == 0.0 {
+            f64::INFINITY
+        } else {
+            20.0 * (1.0 / rmse).log10()
+        },
         max_abs,
         foreground_pixels: fg,
     }

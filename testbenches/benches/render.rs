@@ -1,1 +1,35 @@
-fn main(){}
+//! Golden model and float reference at 128^3 and 256^3 (phantom, composite,
+//! 70/30 degree view, 256x256 image). Throughput is reported in voxels per
+//! second of the volume rendered; divide by the thread count for per-thread
+//! figures (`RAYON_NUM_THREADS=1` measures one thread directly).
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use golden_model::volume::builtin;
+use testbenches::scene;
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("render");
+    g.sample_size(10);
+    for n in [128usize, 256] {
+        let s = scene(&format!(
+            r#"{{"volume": {{"builtin": "phantom", "dims": [{n},{n},{n}]}},
+                "view": {{"projection": "parallel", "rotate_deg": [70, 30, 0]}},
+                "transfer": {{"opacity": [[0, 0.0], [60, 0.0], [80, 0.05], [150, 0.3], [200, 0.6], [255, 0.8]],
+                              "color": [[0, 0.9, 0.6, 0.5], [255, 1.0, 1.0, 0.95]]}},
+                "image": [256, 256]}}"#
+        ));
+        let vol = builtin("phantom", [n, n, n], 8).unwrap();
+        let cam = s.camera().unwrap();
+        g.throughput(Throughput::Elements((n * n * n) as u64));
+        g.bench_function(format!("cube4l_golden_{n}"), |b| {
+            b.iter(|| golden_model::cube4l::render_image(&s, &vol).unwrap())
+        });
+        g.bench_function(format!("reference_{n}"), |b| {
+            b.iter(|| reference::render(&s, &cam, &vol, reference::DEFAULT_STEP))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -46,7 +46,12 @@ pub fn compare_with_reference(scene: &Scene, vol: &Volume) -> Comparison {
 /// previous slice's compositing buffer, classifies, shades and composites,
 /// and pixels go out on ER at the address the CFB attached. Returns the base
 /// plane and the number of clock cycles.
-pub fn render_from_stream(vol: &Volume, sweep: &Sweep, shader: &Shader, p: usize) -> (BasePlane, u64) {
+pub fn render_from_stream(
+    vol: &Volume,
+    sweep: &Sweep,
+    shader: &Shader,
+    p: usize,
+) -> (BasePlane, u64) {
     let mem = SkewedMemory::new(vol, p);
     let [nx, ny, _] = sweep.dims;
     let reset = reset_value(shader.mode, shader.voxel_bits);
@@ -70,7 +75,11 @@ pub fn render_from_stream(vol: &Volume, sweep: &Sweep, shader: &Shader, p: usize
         for lane in beat.lanes.iter().filter(|l| !l.pad) {
             let [x, y, z] = lane.pos;
             let c = lane.control;
-            let acc = if c.sr { reset } else { gather(&prev, nx, ny, x, y, c.dx, c.dy, sweep.frac, reset) };
+            let acc = if c.sr {
+                reset
+            } else {
+                gather(&prev, nx, ny, x, y, c.dx, c.dy, sweep.frac, reset)
+            };
             let sample = shader.sample(lane.value as u32, &c, || {
                 central_difference(|ox, oy, oz| {
                     let at = |p: usize, o: isize| (p as isize + o) as usize;

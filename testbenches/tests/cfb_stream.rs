@@ -21,7 +21,12 @@ fn views() -> Vec<&'static str> {
     ]
 }
 
-fn setup(dims: [usize; 3], view: &str, p: usize, mode: &str) -> (golden_model::scene::Scene, Volume) {
+fn setup(
+    dims: [usize; 3],
+    view: &str,
+    p: usize,
+    mode: &str,
+) -> (golden_model::scene::Scene, Volume) {
     let s = scene(&format!(
         r#"{{"volume": {{"builtin": "phantom", "dims": {dims:?}}}, "view": {view}, "mode": "{mode}",
             "image": [24, 24], "hardware": {{"pipelines": {p}}}}}"#
@@ -92,12 +97,18 @@ fn stream_covers_each_voxel_once_with_its_control() {
                         cycles += 1;
                         for (k, lane) in beat.lanes.iter().enumerate() {
                             let [x, y, z] = lane.pos;
-                            assert_eq!((x + y + z) % p, k, "lane {k} holds a voxel of another module");
+                            assert_eq!(
+                                (x + y + z) % p,
+                                k,
+                                "lane {k} holds a voxel of another module"
+                            );
                             assert_eq!(x / p, beat.n_b);
                             assert_eq!((y, z), (beat.n_beam, beat.n_s));
                             assert_eq!(lane.bs, beat.n_b == 0);
                             if lane.pad {
-                                assert!(x >= sweep.dims[0] && lane.control.invalid && !lane.control.er);
+                                assert!(
+                                    x >= sweep.dims[0] && lane.control.invalid && !lane.control.er
+                                );
                                 continue;
                             }
                             let [u, v, w] = sweep.dataset(x, y, z);
@@ -123,7 +134,12 @@ fn stream_covers_each_voxel_once_with_its_control() {
 #[test]
 fn stream_order_processing_equals_golden_model() {
     for mode in ["composite", "mip", "minip", "xray", "first_opaque"] {
-        for (dims, p) in [([8, 8, 8], 4), ([10, 6, 7], 2), ([9, 12, 6], 8), ([7, 7, 9], 1)] {
+        for (dims, p) in [
+            ([8, 8, 8], 4),
+            ([10, 6, 7], 2),
+            ([9, 12, 6], 8),
+            ([7, 7, 9], 1),
+        ] {
             for view in views() {
                 let (s, vol) = setup(dims, view, p, mode);
                 let cam = s.camera().unwrap();
@@ -132,7 +148,11 @@ fn stream_order_processing_equals_golden_model() {
                     let shader = Shader::new(&s, &cam, sweep);
                     let (golden, _) = render_sweep(&vol, sweep, &shader);
                     let (streamed, cycles) = render_from_stream(&vol, sweep, &shader, p);
-                    assert_eq!(cycles, ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p)) as u64);
+                    assert_eq!(
+                        cycles,
+                        ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p))
+                            as u64
+                    );
                     for i in 0..golden.pixels.len() {
                         assert_eq!(
                             (golden.pixels[i], golden.faces[i]),

@@ -36,25 +36,41 @@ fn axis_aligned_and_opposite_views() {
     let front = run("sphere", "[32,32,32]", &parallel([0.0, 0.0, 0.0]), "");
     let back = run("sphere", "[32,32,32]", &parallel([0.0, 180.0, 0.0]), "");
     // Measured 3.99 % and 3.97 %: voxel-position sampling of the surface shell.
-    assert!(front.error.rel_euclid_pct < 4.5, "{}", front.error.rel_euclid_pct);
+    assert!(
+        front.error.rel_euclid_pct < 4.5,
+        "{}",
+        front.error.rel_euclid_pct
+    );
     // Back to front and front to back see the same symmetric sphere.
     assert!((front.error.rel_euclid_pct - back.error.rel_euclid_pct).abs() < 0.1);
 }
 
 #[test]
 fn exactly_45_degrees_and_the_base_plane_switch() {
-    let s = scene(r#"{"volume": {"builtin": "sphere", "dims": [32,32,32]}, "view": {"projection": "parallel", "rotate_deg": [0, 45, 0]}, "image": [96, 96]}"#);
+    let s = scene(
+        r#"{"volume": {"builtin": "sphere", "dims": [32,32,32]}, "view": {"projection": "parallel", "rotate_deg": [0, 45, 0]}, "image": [96, 96]}"#,
+    );
     let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
-    let Rays::Parallel { dx, dy } = plan.sweeps[0].rays else { panic!("parallel") };
+    let Rays::Parallel { dx, dy } = plan.sweeps[0].rays else {
+        panic!("parallel")
+    };
     assert_eq!((dx.abs(), dy), (256, 0), "45 degrees is dx = 1 exactly");
     let at45 = run("sphere", "[32,32,32]", &parallel([0.0, 45.0, 0.0]), "");
     let below = run("sphere", "[32,32,32]", &parallel([0.0, 44.99, 0.0]), "");
     let above = run("sphere", "[32,32,32]", &parallel([0.0, 45.01, 0.0]), "");
     // Measured 5.46 %: samples sqrt(2) voxels apart along the ray.
-    assert!(at45.error.rel_euclid_pct < 6.0, "{}", at45.error.rel_euclid_pct);
+    assert!(
+        at45.error.rel_euclid_pct < 6.0,
+        "{}",
+        at45.error.rel_euclid_pct
+    );
     // Switching the major axis across 45 degrees must not jump.
     let switch = reference::metrics::compare(&below.golden, &above.golden);
-    assert!(switch.rel_euclid_pct < 0.5, "base-plane switch changes the image by {} %", switch.rel_euclid_pct);
+    assert!(
+        switch.rel_euclid_pct < 0.5,
+        "base-plane switch changes the image by {} %",
+        switch.rel_euclid_pct
+    );
     for c in [&below, &above] {
         assert!((c.error.rel_euclid_pct - at45.error.rel_euclid_pct).abs() < 0.1);
     }
@@ -63,9 +79,17 @@ fn exactly_45_degrees_and_the_base_plane_switch() {
 #[test]
 fn oblique_and_negative_directions() {
     // Measured 7.99 %, 6.18 %: diffusion behind the surface plus shell sampling.
-    for (r, bound) in [([45.0, 45.0, 0.0], 9.0), ([-30.0, -120.0, 0.0], 7.0), ([-70.0, -30.0, 15.0], 9.0)] {
+    for (r, bound) in [
+        ([45.0, 45.0, 0.0], 9.0),
+        ([-30.0, -120.0, 0.0], 7.0),
+        ([-70.0, -30.0, 15.0], 9.0),
+    ] {
         let c = run("sphere", "[32,32,32]", &parallel(r), "");
-        assert!(c.error.rel_euclid_pct < bound, "{r:?}: {}", c.error.rel_euclid_pct);
+        assert!(
+            c.error.rel_euclid_pct < bound,
+            "{r:?}: {}",
+            c.error.rel_euclid_pct
+        );
     }
 }
 
@@ -102,13 +126,19 @@ fn near_transparent_accumulation_over_300_slices() {
     // 12-bit buffer: alpha 8/4095 per slice; exact 1 - (1 - 8/4095)^300 = 0.444.
     let a12 = centre_alpha(&json(12), &vol) as f64 / max_of(12) as f64;
     let exact = 1.0 - (1.0 - 8.0 / 4095.0f64).powi(300);
-    assert!((a12 - exact).abs() < 0.01, "12-bit accumulation {a12} vs {exact}");
+    assert!(
+        (a12 - exact).abs() < 0.01,
+        "12-bit accumulation {a12} vs {exact}"
+    );
 }
 
 #[test]
 fn fully_opaque_voxels_saturate_exactly() {
     let vol = builtin("ramp", [8, 8, 8], 8).unwrap();
-    for (view, order) in [("[0, 0, 0]", "back to front"), ("[0, 180, 0]", "front to back")] {
+    for (view, order) in [
+        ("[0, 0, 0]", "back to front"),
+        ("[0, 180, 0]", "front to back"),
+    ] {
         let json = format!(
             r#"{{"volume": {{"builtin": "ramp", "dims": [8,8,8]}}, "view": {{"projection": "parallel", "rotate_deg": {view}}},
                 "transfer": {{"opacity": [[0, 1.0], [255, 1.0]], "color": [[0, 0.5, 0.25, 1.0], [255, 0.5, 0.25, 1.0]]}},
@@ -120,21 +150,39 @@ fn fully_opaque_voxels_saturate_exactly() {
         let b = &f.bases[0];
         let sw = &f.plan.sweeps[0];
         let px = b.pixels[sw.border() + 4 + b.width * (sw.border() + 4)];
-        assert_eq!(px, [128, 64, 255, 255], "{order}: the nearest voxel alone shows");
+        assert_eq!(
+            px,
+            [128, 64, 255, 255],
+            "{order}: the nearest voxel alone shows"
+        );
     }
 }
 
 #[test]
 fn full_scale_16_bit_voxels() {
     let hw = r#", "hardware": {"voxel_bits": 16, "rgba_bits": 12}"#;
-    let mip = run("sphere", "[32,32,32]", &parallel([70.0, 30.0, 0.0]), &format!(r#", "mode": "mip"{hw}"#));
+    let mip = run(
+        "sphere",
+        "[32,32,32]",
+        &parallel([70.0, 30.0, 0.0]),
+        &format!(r#", "mode": "mip"{hw}"#),
+    );
     let peak = mip.golden.rgb.iter().map(|p| p[0]).fold(0.0, f64::max);
     assert_eq!(peak, 1.0, "full-scale voxels give full-scale MIP");
     let tf = r#", "transfer": {"opacity": [[0, 0], [20000, 0], [30000, 0.75], [65535, 0.75]], "color": [[0,1,1,1],[65535,1,1,1]]}"#;
-    let comp = run("sphere", "[32,32,32]", &parallel([70.0, 30.0, 0.0]), &format!("{tf}{hw}"));
+    let comp = run(
+        "sphere",
+        "[32,32,32]",
+        &parallel([70.0, 30.0, 0.0]),
+        &format!("{tf}{hw}"),
+    );
     // Measured 5.9 %: the same method error as 8-bit voxels (gradients of
     // +-65535 quantize to the same normals).
-    assert!(comp.error.rel_euclid_pct < 7.0, "{}", comp.error.rel_euclid_pct);
+    assert!(
+        comp.error.rel_euclid_pct < 7.0,
+        "{}",
+        comp.error.rel_euclid_pct
+    );
 }
 
 #[test]
@@ -142,24 +190,47 @@ fn empty_impulse_and_checkerboard_volumes() {
     let empty = run("empty", "[16,16,16]", &parallel([20.0, 30.0, 0.0]), "");
     assert!(empty.golden.rgb.iter().all(|p| *p == [0.0; 3]));
     assert!(empty.reference.rgb.iter().all(|p| *p == [0.0; 3]));
-    let imp = run("impulse", "[16,16,16]", &parallel([20.0, 30.0, 0.0]), r#", "mode": "mip""#);
+    let imp = run(
+        "impulse",
+        "[16,16,16]",
+        &parallel([20.0, 30.0, 0.0]),
+        r#", "mode": "mip""#,
+    );
     let argmax = |img: &golden_model::warp::Image| {
-        let i = (0..img.rgb.len()).max_by(|&a, &b| img.rgb[a][0].total_cmp(&img.rgb[b][0])).unwrap();
+        let i = (0..img.rgb.len())
+            .max_by(|&a, &b| img.rgb[a][0].total_cmp(&img.rgb[b][0]))
+            .unwrap();
         ((i as u32 % img.width) as i64, (i as u32 / img.width) as i64)
     };
     let (g, r) = (argmax(&imp.golden), argmax(&imp.reference));
-    assert!((g.0 - r.0).abs() <= 2 && (g.1 - r.1).abs() <= 2, "impulse at {g:?} vs {r:?}");
+    assert!(
+        (g.0 - r.0).abs() <= 2 && (g.1 - r.1).abs() <= 2,
+        "impulse at {g:?} vs {r:?}"
+    );
     assert!(imp.golden.rgb.iter().all(|p| p[0] <= 1.0));
     // Measured 8.81 %: every cube edge is a step the bilinear unit diffuses.
-    let cb = run("checkerboard", "[32,32,32]", &parallel([20.0, 30.0, 0.0]), "");
-    assert!(cb.error.rel_euclid_pct < 10.0, "{}", cb.error.rel_euclid_pct);
+    let cb = run(
+        "checkerboard",
+        "[32,32,32]",
+        &parallel([20.0, 30.0, 0.0]),
+        "",
+    );
+    assert!(
+        cb.error.rel_euclid_pct < 10.0,
+        "{}",
+        cb.error.rel_euclid_pct
+    );
 }
 
 #[test]
 fn perspective_eye_close_to_the_volume() {
     let view = r#"{"projection": "perspective", "eye": [15.5, 15.5, -3], "fov_deg": 100}"#;
     let c = run("sphere", "[32,32,32]", view, "");
-    assert!(c.sweeps >= 3, "a close eye needs several sweeps, got {}", c.sweeps);
+    assert!(
+        c.sweeps >= 3,
+        "a close eye needs several sweeps, got {}",
+        c.sweeps
+    );
     // Measured 6.07 %; seams where sweeps meet add to the method error.
     assert!(c.error.rel_euclid_pct < 7.0, "{}", c.error.rel_euclid_pct);
     let holes = c
@@ -169,15 +240,37 @@ fn perspective_eye_close_to_the_volume() {
         .zip(&c.reference.rgb)
         .filter(|(g, r)| r[0] > 0.2 && g[0] == 0.0)
         .count();
-    assert_eq!(holes, 0, "pixels the reference covers but no sweep rendered");
+    assert_eq!(
+        holes, 0,
+        "pixels the reference covers but no sweep rendered"
+    );
 }
 
 #[test]
 fn every_mode_stays_in_range() {
     // Measured: MIP 7.47 %, X-ray 2.48 %, first-opaque 6.26 %, MinIP 0 (no foreground).
-    for (mode, bound) in [("mip", 8.5), ("xray", 3.0), ("first_opaque", 7.0), ("minip", 0.5)] {
-        let c = run("sphere", "[32,32,32]", &parallel([70.0, 30.0, 0.0]), &format!(r#", "mode": "{mode}""#));
-        assert!(c.error.rel_euclid_pct < bound, "{mode}: {}", c.error.rel_euclid_pct);
-        assert!(c.golden.rgb.iter().flatten().all(|&v| (0.0..=1.0).contains(&v)));
+    for (mode, bound) in [
+        ("mip", 8.5),
+        ("xray", 3.0),
+        ("first_opaque", 7.0),
+        ("minip", 0.5),
+    ] {
+        let c = run(
+            "sphere",
+            "[32,32,32]",
+            &parallel([70.0, 30.0, 0.0]),
+            &format!(r#", "mode": "{mode}""#),
+        );
+        assert!(
+            c.error.rel_euclid_pct < bound,
+            "{mode}: {}",
+            c.error.rel_euclid_pct
+        );
+        assert!(c
+            .golden
+            .rgb
+            .iter()
+            .flatten()
+            .all(|&v| (0.0..=1.0).contains(&v)));
     }
 }
