@@ -325,16 +325,18 @@ impl Plan {
                             s.z1 = n - 1;
                             s.order = Order::FrontToBack;
                         } else {
-                            s.z0 = 0;
-                            s.z1 = if e > (n - 1) as f64 {
-                                n - 1
-                            } else {
-                                (e.ceil() as i64 - 1).max(-1) as usize
-                            };
-                            s.order = Order::BackToFront;
-                            if e.ceil() < 1.0 {
+                            // The exit slice (nearest the eye) must lie at
+                            // least half a voxel from it, so that one of the
+                            // 2x2 cells around every exiting ray is within 45
+                            // degrees (valid); nearer voxels are beyond 45
+                            // degrees but for at most one next to the eye.
+                            let last = (e - 0.5).floor();
+                            if last < 0.0 {
                                 continue;
                             }
+                            s.z0 = 0;
+                            s.z1 = (last as usize).min(n - 1);
+                            s.order = Order::BackToFront;
                         }
                         if s.z0 > s.z1 || s.z0 >= n {
                             continue;
