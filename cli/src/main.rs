@@ -244,17 +244,17 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
     let cam = scene.camera()?;
     let frame = golden_model::cube4l::render(scene, &cam, vol)?;
     let b = &frame.bases[0];
-    let m = golden_model::fixed::max_of(scene.hardware.rgba_bits) as f64;
-    let vm = golden_model::fixed::max_of(scene.hardware.voxel_bits) as f64;
-    let depth = frame.plan.sweeps[0].dims[2] as f64;
+    let depth = frame.plan.sweeps[0].dims[2];
+    let hw = scene.hardware;
     let mut img = Image::black(b.width as u32, b.height as u32);
     for (o, p) in img.rgb.iter_mut().zip(&b.pixels) {
-        let p = p.map(|c| c as f64);
-        *o = match scene.mode {
-            golden_model::scene::Mode::Mip | golden_model::scene::Mode::Minip => [p[0] / vm; 3],
-            golden_model::scene::Mode::Xray => [p[0] / (m * depth); 3],
-            _ => [p[0] / m, p[1] / m, p[2] / m],
-        };
+        *o = golden_model::warp::to_rgb(
+            scene.mode,
+            p.map(|c| c as f64),
+            hw.rgba_bits,
+            hw.voxel_bits,
+            depth,
+        );
     }
     Ok((img, frame.bases.len()))
 }

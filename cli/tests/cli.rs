@@ -18,6 +18,10 @@ fn write(dir: &Path, name: &str, text: &str) -> String {
     p.display().to_string()
 }
 
+fn read_json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
 const SPHERE: &str = r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [48, 40]}"#;
 
 #[test]
@@ -41,8 +45,7 @@ fn render_writes_png_and_json_with_error() {
         d.path(),
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let j: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(d.path().join("a.json")).unwrap()).unwrap();
+    let j: serde_json::Value = read_json(&d.path().join("a.json"));
     assert_eq!(j["arch"], "cube4l");
     assert_eq!(j["image"], serde_json::json!([48, 40]));
     assert!(j["seconds"].as_f64().unwrap() > 0.0);
@@ -79,8 +82,7 @@ fn reference_arch_and_scenes_listing() {
         d.path(),
     );
     assert!(o.status.success());
-    let j: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(d.path().join("r.json")).unwrap()).unwrap();
+    let j: serde_json::Value = read_json(&d.path().join("r.json"));
     assert_eq!(j["arch"], "reference");
     let o = cube(&["scenes"], d.path());
     let text = String::from_utf8_lossy(&o.stdout);
@@ -236,7 +238,6 @@ fn angles_reports_error_per_angle() {
         d.path(),
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let j: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(d.path().join("a.json")).unwrap()).unwrap();
+    let j: serde_json::Value = read_json(&d.path().join("a.json"));
     assert_eq!(j["rows"].as_array().unwrap().len(), 3);
 }

@@ -28,6 +28,25 @@ pub struct BasePlane {
     pub faces: Vec<Face>,
 }
 
+impl BasePlane {
+    /// An empty base plane for `sweep`: no pixel has come out yet.
+    pub fn new(sweep: &Sweep) -> BasePlane {
+        let [width, height] = sweep.base_dims();
+        BasePlane {
+            width,
+            height,
+            pixels: vec![[0; 4]; width * height],
+            faces: vec![Face::None; width * height],
+        }
+    }
+
+    /// Record the pixel that left through `face` at base-plane address `[x, y]`.
+    pub fn put(&mut self, [x, y]: [usize; 2], value: [u32; 4], face: Face) {
+        self.pixels[x + self.width * y] = value;
+        self.faces[x + self.width * y] = face;
+    }
+}
+
 /// Work counters of a sweep.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Stats {
@@ -66,13 +85,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
         [ds[sweep.perm[0]], ds[sweep.perm[1]], ds[sweep.perm[2]]]
     };
     let reset = reset_value(shader.mode, shader.voxel_bits);
-    let [bw, bh] = sweep.base_dims();
-    let mut base = BasePlane {
-        width: bw,
-        height: bh,
-        pixels: vec![[0; 4]; bw * bh],
-        faces: vec![Face::None; bw * bh],
-    };
+    let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
     let mut next = vec![reset; nx * ny];
     let mut stats = Stats::default();
@@ -131,9 +144,8 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
             .collect();
         for (out, st) in outputs {
             stats = stats + st;
-            for ([bx, by], px, face) in out {
-                base.pixels[bx + bw * by] = px;
-                base.faces[bx + bw * by] = face;
+            for (addr, px, face) in out {
+                base.put(addr, px, face);
             }
         }
         std::mem::swap(&mut prev, &mut next);

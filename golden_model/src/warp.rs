@@ -83,8 +83,9 @@ fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
     (wsum > 1e-9).then(|| acc.map(|a| a / wsum))
 }
 
-/// Convert a base-plane pixel value to display RGB for `mode`.
-fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: usize) -> [f64; 3] {
+/// Convert a base-plane pixel value to display RGB for `mode`; `depth` is
+/// the sweep's slice count (X-ray normalisation).
+pub fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: usize) -> [f64; 3] {
     let m = max_of(rgba_bits) as f64;
     let rgb = match mode {
         Mode::Composite | Mode::FirstOpaque => [v[0] / m, v[1] / m, v[2] / m],

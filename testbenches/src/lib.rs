@@ -6,7 +6,7 @@ use golden_model::cfb::{CfbStream, SkewedMemory};
 use golden_model::compositor::{composite, gather, reset_value};
 use golden_model::cube4l::BasePlane;
 use golden_model::gradient::central_difference;
-use golden_model::plan::{Face, Sweep};
+use golden_model::plan::Sweep;
 use golden_model::scene::Scene;
 use golden_model::shader::Shader;
 use golden_model::volume::Volume;
@@ -55,13 +55,7 @@ pub fn render_from_stream(
     let mem = SkewedMemory::new(vol, p);
     let [nx, ny, _] = sweep.dims;
     let reset = reset_value(shader.mode, shader.voxel_bits);
-    let [bw, bh] = sweep.base_dims();
-    let mut base = BasePlane {
-        width: bw,
-        height: bh,
-        pixels: vec![[0; 4]; bw * bh],
-        faces: vec![Face::None; bw * bh],
-    };
+    let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
     let mut cur = vec![reset; nx * ny];
     let mut slice = sweep.z0;
@@ -89,9 +83,8 @@ pub fn render_from_stream(
             });
             let (value, _) = composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
             cur[x + nx * y] = value;
-            if let Some([bx, by]) = lane.pixel {
-                base.pixels[bx + bw * by] = value;
-                base.faces[bx + bw * by] = c.face;
+            if let Some(addr) = lane.pixel {
+                base.put(addr, value, c.face);
             }
         }
     }

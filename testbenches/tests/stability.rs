@@ -27,6 +27,16 @@ fn run(vol: &str, dims: &str, view: &str, extra: &str) -> Comparison {
     c
 }
 
+/// Pixels the reference shows (red above 0.2) that the golden model left empty.
+fn holes(c: &Comparison) -> usize {
+    c.golden
+        .rgb
+        .iter()
+        .zip(&c.reference.rgb)
+        .filter(|(g, r)| r[0] > 0.2 && g[0] == 0.0)
+        .count()
+}
+
 fn parallel(r: [f64; 3]) -> String {
     format!(r#"{{"projection": "parallel", "rotate_deg": {r:?}}}"#)
 }
@@ -233,13 +243,7 @@ fn perspective_eye_close_to_the_volume() {
     );
     // Measured 6.07 %; seams where sweeps meet add to the method error.
     assert!(c.error.rel_euclid_pct < 7.0, "{}", c.error.rel_euclid_pct);
-    let holes = c
-        .golden
-        .rgb
-        .iter()
-        .zip(&c.reference.rgb)
-        .filter(|(g, r)| r[0] > 0.2 && g[0] == 0.0)
-        .count();
+    let holes = holes(&c);
     assert_eq!(
         holes, 0,
         "pixels the reference covers but no sweep rendered"
@@ -284,13 +288,7 @@ fn perspective_eye_inside_the_volume() {
     // Measured 6 of 9216 pixels: rays along the (1,1,1) diagonal within about
     // two voxels of the eye, where all four cells around the exit point lie
     // beyond 45 degrees in every sweep.
-    let holes = c
-        .golden
-        .rgb
-        .iter()
-        .zip(&c.reference.rgb)
-        .filter(|(g, r)| r[0] > 0.2 && g[0] == 0.0)
-        .count();
+    let holes = holes(&c);
     assert!(holes <= 8, "{holes} uncovered pixels");
     // Measured 17.8 %: the voxel grid is magnified next to the eye, each
     // sweep uses one spacing correction and one view vector for all its rays
