@@ -1,7 +1,7 @@
 //! Synthesizable rust-hdl descriptions of the Cube-4L pipeline stages, one
-//! stage per file (`cfb.rs`, `abc_gradient.rs`, `shader.rs`,
-//! `compositor.rs`, ...), each matched bit for bit against the golden model
-//! in `golden_model`. The stages arrive with the RTL work; this crate pins
-//! the toolchain (rust-hdl 0.46 builds on this rustc) and the layout.
+//! stage per file, each matched bit for bit against the golden model in
+//! `golden_model` by the testbenches. Present so far: [`compositor`] (the
+//! compositing unit). The CFB, ABC gradient, shader, bilinear unit with its
+//! compositing-buffer FIFO, and the p-pipeline top level are still to come.
 
-pub use rust_hdl;
+pub mod compositor;

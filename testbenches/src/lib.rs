@@ -90,3 +90,33 @@ pub fn render_from_stream(
     }
     (base, cycles)
 }
+
+/// Fail loudly, naming the set-up command, when an external tool is missing.
+pub fn require_tool(tool: &str) {
+    let found = std::process::Command::new("sh")
+        .args(["-c", &format!("command -v {tool}")])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false);
+    assert!(
+        found,
+        "`{tool}` is not installed: run scripts/test, which installs it"
+    );
+}
+
+/// A small deterministic generator for test vectors (xorshift64*).
+pub struct Vectors(u64);
+
+impl Vectors {
+    pub fn new(seed: u64) -> Vectors {
+        Vectors(seed.max(1))
+    }
+
+    /// Uniform in `0..=max`.
+    pub fn below(&mut self, max: u32) -> u32 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 32) as u32 % (max + 1)
+    }
+}

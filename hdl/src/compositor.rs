@@ -1,0 +1,195 @@
+//! Compositing unit of the Cube-4L pipeline (§3.5, the C_k circles of Fig.
+//! 18): one voxel per clock, one register stage. It combines the bilinear
+//! unit's accumulated RGBA with the shaded voxel, bit for bit as
+//! `golden_model::compositor::composite`:
+//!
+//! - over (composite, first-opaque): `C = sat(C_front + mul(M - A_front, C_back))`
+//!   per channel, where front/back are acc/new front to back and new/acc back
+//!   to front;
+//! - MIP / MinIP: the larger / smaller of the accumulated value and a valid voxel;
+//! - X-ray: the accumulated sum plus the voxel's opacity.
+//!
+//! The mode and order are fixed by the scene when the unit is built; the
+//! logic of the other modes is constant-folded away by synthesis.
+//! `mul(a, b) = round(a*b / M)` with `M = 2^rgba_bits - 1`, as
+//! `t = a*b + 2^(rgba_bits-1); (t + (t >> rgba_bits)) >> rgba_bits`: one
+//! 16x16 multiplier per channel.
+
+use golden_model::plan::Order;
+use golden_model::scene::Mode;
+use rust_hdl::prelude::*;
+
+/// `sat(front + mul(m - front_alpha, back))` for one channel, combinational.
+#[derive(LogicBlock)]
+struct OverChannel {
+    pub front: Signal<In, Bits<16>>,
+    pub back: Signal<In, Bits<16>>,
+    pub front_alpha: Signal<In, Bits<16>>,
+    pub result: Signal<Out, Bits<16>>,
+    m: Constant<Bits<16>>,
+    half: Constant<Bits<32>>,
+    shift: Constant<Bits<8>>,
+    product: Signal<Local, Bits<32>>,
+    scaled: Signal<Local, Bits<32>>,
+    sum: Signal<Local, Bits<32>>,
+}
+
+impl OverChannel {
+    fn new(rgba_bits: u32) -> OverChannel {
+        OverChannel {
+            m: Constant::new(((1u64 << rgba_bits) - 1).to_bits()),
+            half: Constant::new((1u64 << (rgba_bits - 1)).to_bits()),
+            shift: Constant::new((rgba_bits as u64).to_bits()),
+            front: Default::default(),
+            back: Default::default(),
+            front_alpha: Default::default(),
+            result: Default::default(),
+            product: Default::default(),
+            scaled: Default::default(),
+            sum: Default::default(),
+        }
+    }
+}
+
+impl Logic for OverChannel {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.product.next =
+            (self.m.val() - self.front_alpha.val()) * self.back.val() + self.half.val();
+        self.scaled.next =
+            (self.product.val() + (self.product.val() >> self.shift.val())) >> self.shift.val();
+        self.sum.next = bit_cast::<32, 16>(self.front.val()) + self.scaled.val();
+        self.result.next = bit_cast::<16, 32>(self.sum.val());
+        if self.sum.val() > bit_cast::<32, 16>(self.m.val()) {
+            self.result.next = self.m.val();
+        }
+    }
+}
+
+/// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
+/// channel r only and carry 0 in the others. Channel r is 32 bits wide for
+/// the X-ray sum (`rgba_bits + log2(depth)` bits) and 16-bit MIP values.
+#[derive(LogicBlock)]
+pub struct Compositor {
+    pub clock: Signal<In, Clock>,
+    pub acc_r: Signal<In, Bits<32>>,
+    pub acc_g: Signal<In, Bits<16>>,
+    pub acc_b: Signal<In, Bits<16>>,
+    pub acc_a: Signal<In, Bits<16>>,
+    pub new_r: Signal<In, Bits<32>>,
+    pub new_g: Signal<In, Bits<16>>,
+    pub new_b: Signal<In, Bits<16>>,
+    pub new_a: Signal<In, Bits<16>>,
+    /// MIP/MinIP: the voxel takes part.
+    pub new_valid: Signal<In, Bit>,
+    pub out_r: Signal<Out, Bits<32>>,
+    pub out_g: Signal<Out, Bits<16>>,
+    pub out_b: Signal<Out, Bits<16>>,
+    pub out_a: Signal<Out, Bits<16>>,
+    front_to_back: Constant<Bit>,
+    over: Constant<Bit>,
+    mip: Constant<Bit>,
+    minip: Constant<Bit>,
+    ch_r: OverChannel,
+    ch_g: OverChannel,
+    ch_b: OverChannel,
+    ch_a: OverChannel,
+    reg_r: DFF<Bits<32>>,
+    reg_g: DFF<Bits<16>>,
+    reg_b: DFF<Bits<16>>,
+    reg_a: DFF<Bits<16>>,
+}
+
+impl Compositor {
+    pub fn new(mode: Mode, order: Order, rgba_bits: u32) -> Compositor {
+        Compositor {
+            clock: Default::default(),
+            acc_r: Default::default(),
+            acc_g: Default::default(),
+            acc_b: Default::default(),
+            acc_a: Default::default(),
+            new_r: Default::default(),
+            new_g: Default::default(),
+            new_b: Default::default(),
+            new_a: Default::default(),
+            new_valid: Default::default(),
+            out_r: Default::default(),
+            out_g: Default::default(),
+            out_b: Default::default(),
+            out_a: Default::default(),
+            front_to_back: Constant::new(order == Order::FrontToBack),
+            over: Constant::new(matches!(mode, Mode::Composite | Mode::FirstOpaque)),
+            mip: Constant::new(mode == Mode::Mip),
+            minip: Constant::new(mode == Mode::Minip),
+            ch_r: OverChannel::new(rgba_bits),
+            ch_g: OverChannel::new(rgba_bits),
+            ch_b: OverChannel::new(rgba_bits),
+            ch_a: OverChannel::new(rgba_bits),
+            reg_r: Default::default(),
+            reg_g: Default::default(),
+            reg_b: Default::default(),
+            reg_a: Default::default(),
+        }
+    }
+}
+
+impl Logic for Compositor {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, reg_r, reg_g, reg_b, reg_a);
+        // Front and back operands of the over operator.
+        if self.front_to_back.val() {
+            self.ch_r.front.next = bit_cast::<16, 32>(self.acc_r.val());
+            self.ch_g.front.next = self.acc_g.val();
+            self.ch_b.front.next = self.acc_b.val();
+            self.ch_a.front.next = self.acc_a.val();
+            self.ch_r.back.next = bit_cast::<16, 32>(self.new_r.val());
+            self.ch_g.back.next = self.new_g.val();
+            self.ch_b.back.next = self.new_b.val();
+            self.ch_a.back.next = self.new_a.val();
+            self.ch_r.front_alpha.next = self.acc_a.val();
+            self.ch_g.front_alpha.next = self.acc_a.val();
+            self.ch_b.front_alpha.next = self.acc_a.val();
+            self.ch_a.front_alpha.next = self.acc_a.val();
+        } else {
+            self.ch_r.front.next = bit_cast::<16, 32>(self.new_r.val());
+            self.ch_g.front.next = self.new_g.val();
+            self.ch_b.front.next = self.new_b.val();
+            self.ch_a.front.next = self.new_a.val();
+            self.ch_r.back.next = bit_cast::<16, 32>(self.acc_r.val());
+            self.ch_g.back.next = self.acc_g.val();
+            self.ch_b.back.next = self.acc_b.val();
+            self.ch_a.back.next = self.acc_a.val();
+            self.ch_r.front_alpha.next = self.new_a.val();
+            self.ch_g.front_alpha.next = self.new_a.val();
+            self.ch_b.front_alpha.next = self.new_a.val();
+            self.ch_a.front_alpha.next = self.new_a.val();
+        }
+        // Scalar modes: channel r only.
+        self.reg_g.d.next = 0.into();
+        self.reg_b.d.next = 0.into();
+        self.reg_a.d.next = 0.into();
+        if self.over.val() {
+            self.reg_r.d.next = bit_cast::<32, 16>(self.ch_r.result.val());
+            self.reg_g.d.next = self.ch_g.result.val();
+            self.reg_b.d.next = self.ch_b.result.val();
+            self.reg_a.d.next = self.ch_a.result.val();
+        } else if self.mip.val() {
+            self.reg_r.d.next = self.acc_r.val();
+            if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
+                self.reg_r.d.next = self.new_r.val();
+            }
+        } else if self.minip.val() {
+            self.reg_r.d.next = self.acc_r.val();
+            if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
+                self.reg_r.d.next = self.new_r.val();
+            }
+        } else {
+            self.reg_r.d.next = self.acc_r.val() + self.new_r.val();
+        }
+        self.out_r.next = self.reg_r.q.val();
+        self.out_g.next = self.reg_g.q.val();
+        self.out_b.next = self.reg_b.q.val();
+        self.out_a.next = self.reg_a.q.val();
+    }
+}
