@@ -1,7 +1,10 @@
 //! Synthesizable rust-hdl descriptions of the Cube-4L pipeline stages, one
 //! stage per file, each matched bit for bit against the golden model in
 //! `golden_model` by the testbenches. Present so far: [`compositor`] (the
-//! compositing unit). The CFB, ABC gradient, shader, bilinear unit with its
-//! compositing-buffer FIFO, and the p-pipeline top level are still to come.
+//! compositing unit) and [`bilinear`] (the bilinear unit's interpolation
+//! datapath). Still to come: the CFB, the ABC gradient, the shader, the
+//! bilinear unit's 3x3 neighbour forwarding and compositing-buffer FIFO, and
+//! the p-pipeline top level.
 
+pub mod bilinear;
 pub mod compositor;
