@@ -74,12 +74,12 @@ fn run(frac: u32, max: u32) {
             wait_clock_cycle!(sim, clock, x);
             if cycle + 1 >= LATENCY {
                 let k = cycle + 1 - LATENCY;
-                for i in 0..4 {
+                for (i, want) in expected[k].iter().enumerate() {
                     let got = x.out[i].val().to_u32();
-                    if got != expected[k][i] {
+                    if got != *want {
                         panic!(
-                            "frac_bits={frac}: first mismatch at cycle {cycle} (input {k}), out[{i}]: rtl {got} golden {} (cells {:?}, wx {}, wy {})",
-                            expected[k][i], vs[k].cells, vs[k].wx, vs[k].wy
+                            "frac_bits={frac}: first mismatch at cycle {cycle} (input {k}), out[{i}]: rtl {got} golden {want} (cells {:?}, wx {}, wy {})",
+                            vs[k].cells, vs[k].wx, vs[k].wy
                         );
                     }
                 }
