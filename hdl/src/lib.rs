@@ -1,10 +1,12 @@
 //! Synthesizable rust-hdl descriptions of the Cube-4L pipeline stages, one
 //! stage per file, each matched bit for bit against the golden model in
-//! `golden_model` by the testbenches. Present so far: [`compositor`] (the
-//! compositing unit) and [`bilinear`] (the bilinear unit's interpolation
-//! datapath). Still to come: the CFB, the ABC gradient, the shader, the
-//! bilinear unit's 3x3 neighbour forwarding and compositing-buffer FIFO, and
-//! the p-pipeline top level.
+//! `golden_model` by the testbenches. Present so far: [`cfb`] (skewed
+//! memory, address generator and control bits, parallel views),
+//! [`compositor`] (the compositing unit) and [`bilinear`] (the bilinear
+//! unit's interpolation datapath). Still to come: the perspective sight-ray
+//! divider, the ABC gradient, the shader, the bilinear unit's 3x3 neighbour
+//! forwarding and compositing-buffer FIFO, and the p-pipeline top level.
 
 pub mod bilinear;
+pub mod cfb;
 pub mod compositor;

@@ -1,0 +1,444 @@
+//! Cubic Frame Buffer of Cube-4L (§3.1, Figs. 5, 6 and 13), parallel views:
+//! `P` skewed memory modules, the address generator with its counters N_b,
+//! N_B and N_s, the pipeline-to-dataset transform for the sweep's major axis,
+//! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
+//! dy, and the base-plane pixel address. Each beat it reads one voxel per
+//! pipeline and emits it with its control one clock later (the block RAM's
+//! read latency), exactly as `golden_model::cfb::CfbStream`.
+//!
+//! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
+//! `N_s`. Dataset voxel `(u, v, w)` is at address `u div P + v*b + w*b*n_v`
+//! of module `(u + v + w) mod P`. Lanes past the end of a beam whose length
+//! is not a multiple of `P` are padding: invalid, value 0, no pixel.
+//!
+//! The memory is loaded through the `load_*` port (one write per clock into
+//! module `load_module`) and maps to block RAM (`A` address bits per module).
+//! Perspective views need the per-voxel sight-ray divider, which is not built
+//! yet: [`Cfb::new`] rejects them.
+
+use golden_model::plan::{Face, Rays, Sweep};
+use rust_hdl::prelude::*;
+
+/// Sweep parameters the CFB is built for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CfbConfig {
+    /// Pipeline-space dims `[nx, ny, nz]` and the swept slices.
+    pub dims: [u32; 3],
+    pub z0: u32,
+    pub z1: u32,
+    /// Pipeline axis (0 = x, 1 = y, 2 = z) that holds dataset u, v and w.
+    pub u_from: u32,
+    pub v_from: u32,
+    pub w_from: u32,
+    /// Dataset partial beams per u beam (`ceil(n_u / P)`) and dataset n_v.
+    pub b_u: u32,
+    pub n_v: u32,
+    pub dx: i32,
+    pub dy: i32,
+}
+
+impl CfbConfig {
+    /// The configuration for one sweep of a parallel view over a dataset of
+    /// `vol_dims`, or an error for views the CFB cannot do yet.
+    pub fn from_sweep(sweep: &Sweep, vol_dims: [usize; 3], p: usize) -> Result<CfbConfig, String> {
+        let Rays::Parallel { dx, dy } = sweep.rays else {
+            return Err("perspective views need the per-voxel sight-ray divider, which the RTL CFB does not have yet".into());
+        };
+        if vol_dims.iter().any(|&n| n > 4095) {
+            return Err(format!(
+                "dims {vol_dims:?}: the RTL CFB counts positions in 12 bits"
+            ));
+        }
+        let from = |axis: usize| sweep.perm.iter().position(|&a| a == axis).unwrap() as u32;
+        Ok(CfbConfig {
+            dims: sweep.dims.map(|n| n as u32),
+            z0: sweep.z0 as u32,
+            z1: sweep.z1 as u32,
+            u_from: from(0),
+            v_from: from(1),
+            w_from: from(2),
+            b_u: vol_dims[0].div_ceil(p) as u32,
+            n_v: vol_dims[1] as u32,
+            dx,
+            dy,
+        })
+    }
+}
+
+fn bits16(v: u32) -> Bits<16> {
+    (v as u64).to_bits()
+}
+
+/// One pipeline's share of the CFB: its memory module, skew, address and control.
+#[derive(LogicBlock)]
+pub struct CfbLane<const A: usize> {
+    pub clock: Signal<In, Clock>,
+    /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam).
+    pub n_s: Signal<In, Bits<16>>,
+    pub n_beam: Signal<In, Bits<16>>,
+    pub n_b: Signal<In, Bits<16>>,
+    /// Load port: a write when `load_enable` and `load_module` names this lane.
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<A>>,
+    pub load_data: Signal<In, Bits<16>>,
+    /// Outputs, one clock after the counters.
+    pub value: Signal<Out, Bits<16>>,
+    pub x: Signal<Out, Bits<16>>,
+    pub y: Signal<Out, Bits<16>>,
+    pub z: Signal<Out, Bits<16>>,
+    pub address: Signal<Out, Bits<32>>,
+    pub pad: Signal<Out, Bit>,
+    pub sr: Signal<Out, Bit>,
+    pub er: Signal<Out, Bit>,
+    /// A direct neighbour lies outside the dataset (`Control::edge`).
+    pub at_edge: Signal<Out, Bit>,
+    /// `golden_model::plan::Face` as a number (0 = none).
+    pub face: Signal<Out, Bits<3>>,
+    pub base_x: Signal<Out, Bits<16>>,
+    pub base_y: Signal<Out, Bits<16>>,
+    memory: RAM<Bits<16>, A>,
+    lane: Constant<Bits<16>>,
+    p_mask: Constant<Bits<16>>,
+    p_shift: Constant<Bits<8>>,
+    nx: Constant<Bits<16>>,
+    nx_last: Constant<Bits<16>>,
+    ny_last: Constant<Bits<16>>,
+    nz_last: Constant<Bits<16>>,
+    z0: Constant<Bits<16>>,
+    z1: Constant<Bits<16>>,
+    border: Constant<Bits<16>>,
+    u_from: Constant<Bits<2>>,
+    v_from: Constant<Bits<2>>,
+    w_from: Constant<Bits<2>>,
+    b_u: Constant<Bits<16>>,
+    /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
+    slab_lo: Constant<Bits<16>>,
+    slab_hi: Constant<Bits<16>>,
+    dx_pos: Constant<Bit>,
+    dx_neg: Constant<Bit>,
+    dy_pos: Constant<Bit>,
+    dy_neg: Constant<Bit>,
+    xc: Signal<Local, Bits<16>>,
+    u: Signal<Local, Bits<16>>,
+    v: Signal<Local, Bits<16>>,
+    w: Signal<Local, Bits<16>>,
+    addr: Signal<Local, Bits<32>>,
+    is_pad: Signal<Local, Bit>,
+    face_c: Signal<Local, Bits<3>>,
+    depth: Signal<Local, Bits<16>>,
+    bx: Signal<Local, Bits<16>>,
+    by: Signal<Local, Bits<16>>,
+    x_q: DFF<Bits<16>>,
+    y_q: DFF<Bits<16>>,
+    z_q: DFF<Bits<16>>,
+    addr_q: DFF<Bits<32>>,
+    pad_q: DFF<Bit>,
+    sr_q: DFF<Bit>,
+    edge_q: DFF<Bit>,
+    face_q: DFF<Bits<3>>,
+    bx_q: DFF<Bits<16>>,
+    by_q: DFF<Bits<16>>,
+}
+
+impl<const A: usize> CfbLane<A> {
+    fn new(k: u32, p: u32, c: &CfbConfig) -> CfbLane<A> {
+        let slab = c.b_u * c.n_v;
+        CfbLane {
+            clock: Default::default(),
+            n_s: Default::default(),
+            n_beam: Default::default(),
+            n_b: Default::default(),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
+            value: Default::default(),
+            x: Default::default(),
+            y: Default::default(),
+            z: Default::default(),
+            address: Default::default(),
+            pad: Default::default(),
+            sr: Default::default(),
+            er: Default::default(),
+            at_edge: Default::default(),
+            face: Default::default(),
+            base_x: Default::default(),
+            base_y: Default::default(),
+            memory: Default::default(),
+            lane: Constant::new(bits16(k)),
+            p_mask: Constant::new(bits16(p - 1)),
+            p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
+            nx: Constant::new(bits16(c.dims[0])),
+            nx_last: Constant::new(bits16(c.dims[0] - 1)),
+            ny_last: Constant::new(bits16(c.dims[1] - 1)),
+            nz_last: Constant::new(bits16(c.dims[2] - 1)),
+            z0: Constant::new(bits16(c.z0)),
+            z1: Constant::new(bits16(c.z1)),
+            border: Constant::new(bits16(c.z1 - c.z0)),
+            u_from: Constant::new((c.u_from as u64).to_bits()),
+            v_from: Constant::new((c.v_from as u64).to_bits()),
+            w_from: Constant::new((c.w_from as u64).to_bits()),
+            b_u: Constant::new(bits16(c.b_u)),
+            slab_lo: Constant::new(bits16(slab & 0xffff)),
+            slab_hi: Constant::new(bits16(slab >> 16)),
+            dx_pos: Constant::new(c.dx > 0),
+            dx_neg: Constant::new(c.dx < 0),
+            dy_pos: Constant::new(c.dy > 0),
+            dy_neg: Constant::new(c.dy < 0),
+            xc: Default::default(),
+            u: Default::default(),
+            v: Default::default(),
+            w: Default::default(),
+            addr: Default::default(),
+            is_pad: Default::default(),
+            face_c: Default::default(),
+            depth: Default::default(),
+            bx: Default::default(),
+            by: Default::default(),
+            x_q: Default::default(),
+            y_q: Default::default(),
+            z_q: Default::default(),
+            addr_q: Default::default(),
+            pad_q: Default::default(),
+            sr_q: Default::default(),
+            edge_q: Default::default(),
+            face_q: Default::default(),
+            bx_q: Default::default(),
+            by_q: Default::default(),
+        }
+    }
+}
+
+impl<const A: usize> Logic for CfbLane<A> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q);
+        self.memory.read_clock.next = self.clock.val();
+        self.memory.write_clock.next = self.clock.val();
+        self.memory.write_enable.next =
+            self.load_enable.val() & (bit_cast::<16, 8>(self.load_module.val()) == self.lane.val());
+        self.memory.write_address.next = self.load_address.val();
+        self.memory.write_data.next = self.load_data.val();
+        // Skew: the lane's x within the partial beam.
+        self.xc.next = (self.n_b.val() << self.p_shift.val())
+            | ((self.lane.val() - self.n_beam.val() - self.n_s.val()) & self.p_mask.val());
+        self.is_pad.next = self.xc.val() >= self.nx.val();
+        // Pipeline to dataset coordinates.
+        self.u.next = self.xc.val();
+        if self.u_from.val() == 1 {
+            self.u.next = self.n_beam.val();
+        }
+        if self.u_from.val() == 2 {
+            self.u.next = self.n_s.val();
+        }
+        self.v.next = self.xc.val();
+        if self.v_from.val() == 1 {
+            self.v.next = self.n_beam.val();
+        }
+        if self.v_from.val() == 2 {
+            self.v.next = self.n_s.val();
+        }
+        self.w.next = self.xc.val();
+        if self.w_from.val() == 1 {
+            self.w.next = self.n_beam.val();
+        }
+        if self.w_from.val() == 2 {
+            self.w.next = self.n_s.val();
+        }
+        // i = u div P + v*b + w*b*n_v
+        self.addr.next = bit_cast::<32, 16>(self.u.val() >> self.p_shift.val())
+            + self.v.val() * self.b_u.val()
+            + self.w.val() * self.slab_lo.val()
+            + ((self.w.val() * self.slab_hi.val()) << 16);
+        if self.is_pad.val() {
+            self.addr.next = 0.into();
+        }
+        self.memory.read_address.next = bit_cast::<A, 32>(self.addr.val());
+        // Exit face and base-plane address.
+        self.face_c.next = 0.into();
+        self.depth.next = self.z1.val() - self.n_s.val();
+        self.bx.next = self.border.val() + self.xc.val();
+        self.by.next = self.border.val() + self.n_beam.val();
+        if (self.xc.val() == self.nx_last.val()) & self.dx_pos.val() {
+            self.face_c.next = 2.into();
+            self.bx.next = self.border.val() + self.xc.val() + self.depth.val();
+        } else if (self.xc.val() == 0) & self.dx_neg.val() {
+            self.face_c.next = 3.into();
+            self.bx.next = self.border.val() - self.depth.val();
+        } else if (self.n_beam.val() == self.ny_last.val()) & self.dy_pos.val() {
+            self.face_c.next = 4.into();
+            self.by.next = self.border.val() + self.n_beam.val() + self.depth.val();
+        } else if (self.n_beam.val() == 0) & self.dy_neg.val() {
+            self.face_c.next = 5.into();
+            self.by.next = self.border.val() - self.depth.val();
+        }
+        if self.n_s.val() == self.z1.val() {
+            self.face_c.next = 1.into();
+            self.bx.next = self.border.val() + self.xc.val();
+            self.by.next = self.border.val() + self.n_beam.val();
+        }
+        if self.is_pad.val() {
+            self.face_c.next = 0.into();
+        }
+        if self.face_c.val() == 0 {
+            self.bx.next = 0.into();
+            self.by.next = 0.into();
+        }
+        self.x_q.d.next = self.xc.val();
+        self.y_q.d.next = self.n_beam.val();
+        self.z_q.d.next = self.n_s.val();
+        self.addr_q.d.next = self.addr.val();
+        self.pad_q.d.next = self.is_pad.val();
+        self.sr_q.d.next = self.n_s.val() == self.z0.val();
+        self.edge_q.d.next = self.is_pad.val()
+            | (self.xc.val() == 0)
+            | (self.n_beam.val() == 0)
+            | (self.n_s.val() == 0)
+            | (self.xc.val() == self.nx_last.val())
+            | (self.n_beam.val() == self.ny_last.val())
+            | (self.n_s.val() == self.nz_last.val());
+        self.face_q.d.next = self.face_c.val();
+        self.bx_q.d.next = self.bx.val();
+        self.by_q.d.next = self.by.val();
+        // Outputs: registered control beside the RAM's registered read.
+        self.value.next = self.memory.read_data.val();
+        if self.pad_q.q.val() {
+            self.value.next = 0.into();
+        }
+        self.x.next = self.x_q.q.val();
+        self.y.next = self.y_q.q.val();
+        self.z.next = self.z_q.q.val();
+        self.address.next = self.addr_q.q.val();
+        self.pad.next = self.pad_q.q.val();
+        self.sr.next = self.sr_q.q.val();
+        self.er.next = self.face_q.q.val() != 0;
+        self.at_edge.next = self.edge_q.q.val();
+        self.face.next = self.face_q.q.val();
+        self.base_x.next = self.bx_q.q.val();
+        self.base_y.next = self.by_q.q.val();
+    }
+}
+
+/// The CFB of `P` pipelines with `A`-bit module addresses.
+#[derive(LogicBlock)]
+pub struct Cfb<const P: usize, const A: usize> {
+    pub clock: Signal<In, Clock>,
+    /// Pulse to start a sweep; `busy` stays high until its last beat is issued.
+    pub start: Signal<In, Bit>,
+    pub busy: Signal<Out, Bit>,
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<A>>,
+    pub load_data: Signal<In, Bits<16>>,
+    /// The beat on the lanes is valid (one clock after it was issued).
+    pub valid: Signal<Out, Bit>,
+    pub n_s: Signal<Out, Bits<16>>,
+    pub n_beam: Signal<Out, Bits<16>>,
+    pub n_b: Signal<Out, Bits<16>>,
+    /// Start of beam: the first partial beam of a full beam.
+    pub bs: Signal<Out, Bit>,
+    pub lanes: [CfbLane<A>; P],
+    running: DFF<Bit>,
+    ns_c: DFF<Bits<16>>,
+    nbeam_c: DFF<Bits<16>>,
+    nb_c: DFF<Bits<16>>,
+    valid_q: DFF<Bit>,
+    ns_q: DFF<Bits<16>>,
+    nbeam_q: DFF<Bits<16>>,
+    nb_q: DFF<Bits<16>>,
+    z0: Constant<Bits<16>>,
+    z1: Constant<Bits<16>>,
+    ny_last: Constant<Bits<16>>,
+    b_last: Constant<Bits<16>>,
+}
+
+impl<const P: usize, const A: usize> Cfb<P, A> {
+    pub fn new(c: &CfbConfig) -> Cfb<P, A> {
+        assert!(P.is_power_of_two(), "P must be a power of two");
+        let b = c.dims[0].div_ceil(P as u32);
+        Cfb {
+            clock: Default::default(),
+            start: Default::default(),
+            busy: Default::default(),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
+            valid: Default::default(),
+            n_s: Default::default(),
+            n_beam: Default::default(),
+            n_b: Default::default(),
+            bs: Default::default(),
+            lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
+            running: Default::default(),
+            ns_c: Default::default(),
+            nbeam_c: Default::default(),
+            nb_c: Default::default(),
+            valid_q: Default::default(),
+            ns_q: Default::default(),
+            nbeam_q: Default::default(),
+            nb_q: Default::default(),
+            z0: Constant::new(bits16(c.z0)),
+            z1: Constant::new(bits16(c.z1)),
+            ny_last: Constant::new(bits16(c.dims[1] - 1)),
+            b_last: Constant::new(bits16(b - 1)),
+        }
+    }
+}
+
+impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q);
+        for k in 0..P {
+            self.lanes[k].clock.next = self.clock.val();
+            self.lanes[k].n_s.next = self.ns_c.q.val();
+            self.lanes[k].n_beam.next = self.nbeam_c.q.val();
+            self.lanes[k].n_b.next = self.nb_c.q.val();
+            self.lanes[k].load_enable.next = self.load_enable.val();
+            self.lanes[k].load_module.next = self.load_module.val();
+            self.lanes[k].load_address.next = self.load_address.val();
+            self.lanes[k].load_data.next = self.load_data.val();
+        }
+        // The address generator: N_b fastest, then N_B, then N_s.
+        if self.start.val() & !self.running.q.val() {
+            self.running.d.next = true;
+            self.ns_c.d.next = self.z0.val();
+            self.nbeam_c.d.next = 0.into();
+            self.nb_c.d.next = 0.into();
+        }
+        if self.running.q.val() {
+            if self.nb_c.q.val() != self.b_last.val() {
+                self.nb_c.d.next = self.nb_c.q.val() + 1;
+            } else {
+                self.nb_c.d.next = 0.into();
+                if self.nbeam_c.q.val() != self.ny_last.val() {
+                    self.nbeam_c.d.next = self.nbeam_c.q.val() + 1;
+                } else {
+                    self.nbeam_c.d.next = 0.into();
+                    if self.ns_c.q.val() != self.z1.val() {
+                        self.ns_c.d.next = self.ns_c.q.val() + 1;
+                    } else {
+                        self.running.d.next = false;
+                    }
+                }
+            }
+        }
+        self.valid_q.d.next = self.running.q.val();
+        self.ns_q.d.next = self.ns_c.q.val();
+        self.nbeam_q.d.next = self.nbeam_c.q.val();
+        self.nb_q.d.next = self.nb_c.q.val();
+        self.busy.next = self.running.q.val();
+        self.valid.next = self.valid_q.q.val();
+        self.n_s.next = self.ns_q.q.val();
+        self.n_beam.next = self.nbeam_q.q.val();
+        self.n_b.next = self.nb_q.q.val();
+        self.bs.next = self.nb_q.q.val() == 0;
+    }
+}
+
+/// `Face` as the number on the lanes' `face` output.
+pub fn face_code(f: Face) -> u32 {
+    f as u8 as u32
+}
