@@ -338,6 +338,16 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub n_b: Signal<Out, Bits<16>>,
     /// Start of beam: the first partial beam of a full beam.
     pub bs: Signal<Out, Bit>,
+    /// The lanes' outputs the pipelines use, per lane (a parent may only
+    /// read its children's ports).
+    pub value: [Signal<Out, Bits<16>>; P],
+    pub x: [Signal<Out, Bits<16>>; P],
+    pub y: [Signal<Out, Bits<16>>; P],
+    pub pad: [Signal<Out, Bit>; P],
+    pub sr: [Signal<Out, Bit>; P],
+    pub er: [Signal<Out, Bit>; P],
+    pub base_x: [Signal<Out, Bits<16>>; P],
+    pub base_y: [Signal<Out, Bits<16>>; P],
     pub lanes: [CfbLane<A>; P],
     running: DFF<Bit>,
     ns_c: DFF<Bits<16>>,
@@ -370,6 +380,14 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             n_beam: Default::default(),
             n_b: Default::default(),
             bs: Default::default(),
+            value: std::array::from_fn(|_| Default::default()),
+            x: std::array::from_fn(|_| Default::default()),
+            y: std::array::from_fn(|_| Default::default()),
+            pad: std::array::from_fn(|_| Default::default()),
+            sr: std::array::from_fn(|_| Default::default()),
+            er: std::array::from_fn(|_| Default::default()),
+            base_x: std::array::from_fn(|_| Default::default()),
+            base_y: std::array::from_fn(|_| Default::default()),
             lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
             running: Default::default(),
             ns_c: Default::default(),
@@ -400,6 +418,14 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.lanes[k].load_module.next = self.load_module.val();
             self.lanes[k].load_address.next = self.load_address.val();
             self.lanes[k].load_data.next = self.load_data.val();
+            self.value[k].next = self.lanes[k].value.val();
+            self.x[k].next = self.lanes[k].x.val();
+            self.y[k].next = self.lanes[k].y.val();
+            self.pad[k].next = self.lanes[k].pad.val();
+            self.sr[k].next = self.lanes[k].sr.val();
+            self.er[k].next = self.lanes[k].er.val();
+            self.base_x[k].next = self.lanes[k].base_x.val();
+            self.base_y[k].next = self.lanes[k].base_y.val();
         }
         // The address generator: N_b fastest, then N_B, then N_s.
         if self.start.val() & !self.running.q.val() {
@@ -435,6 +461,16 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         self.n_beam.next = self.nbeam_q.q.val();
         self.n_b.next = self.nb_q.q.val();
         self.bs.next = self.nb_q.q.val() == 0;
+    }
+}
+
+impl<const P: usize, const A: usize> Cfb<P, A> {
+    /// Give the memory modules initial contents (block-RAM initialisation),
+    /// `modules[k][i]` being word `i` of module `k`.
+    pub fn preload(&mut self, modules: &[Vec<u16>]) {
+        for (lane, words) in self.lanes.iter_mut().zip(modules) {
+            lane.memory = words.iter().map(|&w| (w as u64).to_bits::<16>()).into();
+        }
     }
 }
 

@@ -10,3 +10,6 @@
 pub mod bilinear;
 pub mod cfb;
 pub mod compositor;
+pub mod pipeline;
+pub mod shader;
+pub mod unorm;

@@ -52,6 +52,18 @@ pub fn render_from_stream(
     shader: &Shader,
     p: usize,
 ) -> (BasePlane, u64) {
+    let (base, results) = stream_results(vol, sweep, shader, p);
+    (base, results.len() as u64)
+}
+
+/// Like [`render_from_stream`], also returning every lane's composited value
+/// at every beat (`None` on padding lanes): what the RTL must produce.
+pub fn stream_results(
+    vol: &Volume,
+    sweep: &Sweep,
+    shader: &Shader,
+    p: usize,
+) -> (BasePlane, Vec<Vec<Option<[u32; 4]>>>) {
     let mem = SkewedMemory::new(vol, p);
     let [nx, ny, _] = sweep.dims;
     let reset = reset_value(shader.mode, shader.voxel_bits);
@@ -59,14 +71,14 @@ pub fn render_from_stream(
     let mut prev = vec![reset; nx * ny];
     let mut cur = vec![reset; nx * ny];
     let mut slice = sweep.z0;
-    let mut cycles = 0;
+    let mut results = Vec::new();
     for beat in CfbStream::new(&mem, vol.dims, sweep) {
-        cycles += 1;
+        let mut row = vec![None; p];
         if beat.n_s != slice {
             std::mem::swap(&mut prev, &mut cur);
             slice = beat.n_s;
         }
-        for lane in beat.lanes.iter().filter(|l| !l.pad) {
+        for (k, lane) in beat.lanes.iter().enumerate().filter(|(_, l)| !l.pad) {
             let [x, y, z] = lane.pos;
             let c = lane.control;
             let acc = if c.sr {
@@ -83,12 +95,14 @@ pub fn render_from_stream(
             });
             let (value, _) = composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
             cur[x + nx * y] = value;
+            row[k] = Some(value);
             if let Some(addr) = lane.pixel {
                 base.put(addr, value, c.face);
             }
         }
+        results.push(row);
     }
-    (base, cycles)
+    (base, results)
 }
 
 /// Fail loudly, naming the set-up command, when an external tool is missing.
