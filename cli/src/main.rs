@@ -34,6 +34,11 @@ enum Arch {
     Reference,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Engine {
+    RustHdl,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene.
@@ -74,6 +79,23 @@ enum Command {
         #[arg(long)]
         json: Option<PathBuf>,
     },
+    /// Run the scene through the rust-hdl pipeline in simulation, warp its
+    /// base plane, and compare it with the golden model bit for bit (exit 0
+    /// only if every pixel matches).
+    Sim {
+        #[arg(long)]
+        scene: PathBuf,
+        #[arg(long, value_enum, default_value = "rust-hdl")]
+        engine: Engine,
+        /// Write the simulation's VCD (and a GTKWave .gtkw beside it).
+        #[arg(long)]
+        vcd: Option<PathBuf>,
+        /// The warped image of the RTL's base plane (PNG).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
     /// List the built-in volumes.
     Scenes,
 }
@@ -107,6 +129,13 @@ fn main() {
             ref_step,
             base_plane,
         ),
+        Some(Command::Sim {
+            scene,
+            engine,
+            vcd,
+            out,
+            json,
+        }) => sim_cmd(&scene, engine, vcd, out, json),
         Some(Command::Angles {
             scene,
             range,
@@ -257,6 +286,73 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
         );
     }
     Ok((img, frame.bases.len()))
+}
+
+fn sim_cmd(
+    scene_path: &Path,
+    engine: Engine,
+    vcd: Option<PathBuf>,
+    out: Option<PathBuf>,
+    json_path: Option<PathBuf>,
+) -> Result<()> {
+    let Engine::RustHdl = engine;
+    let (scene, vol) = load(scene_path)?;
+    let cam = scene.camera()?;
+    let vcd_tmp = vcd.as_ref().map(|v| v.with_extension("vcd.tmp"));
+    let r = hdl::sim::simulate(&scene, &cam, &vol, vcd_tmp.as_deref())
+        .map_err(|e| anyhow::anyhow!("sim: {e}"))?;
+    if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
+        std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
+        let gtkw_tmp = tmp.with_extension("gtkw");
+        let gtkw = v.with_extension("gtkw");
+        let text = std::fs::read_to_string(&gtkw_tmp)?
+            .replace(&tmp.display().to_string(), &v.display().to_string());
+        std::fs::remove_file(&gtkw_tmp)?;
+        output::write_text(&gtkw, &text)?;
+    }
+    let cps = r.cycles as f64 / r.seconds;
+    println!(
+        "rust-hdl: {} clocks (ideal {}, +{} fill), {:.2} s, {:.0} clocks/s; {} base-plane pixels differ from the golden model",
+        r.cycles,
+        r.ideal_cycles,
+        r.cycles - r.ideal_cycles,
+        r.seconds,
+        cps,
+        r.mismatches
+    );
+    for m in &r.first {
+        println!(
+            "  sweep {} pixel ({}, {}): rtl {:?} {:?}, golden {:?} {:?}",
+            m.sweep, m.x, m.y, m.rtl.0, m.rtl.1, m.golden.0, m.golden.1
+        );
+    }
+    if let Some(o) = out {
+        let hw = scene.hardware;
+        let img = golden_model::warp::warp(&r.frame, &cam, scene.mode, hw.rgba_bits, hw.voxel_bits);
+        write_png(&o, &img)?;
+    }
+    if let Some(j) = json_path {
+        write_json(
+            &j,
+            &json!({
+                "engine": "rust-hdl",
+                "scene": scene_path.display().to_string(),
+                "cycles": r.cycles,
+                "ideal_cycles": r.ideal_cycles,
+                "mismatches": r.mismatches,
+                "seconds": r.seconds,
+                "cycles_per_second": cps,
+                "pipelines": scene.hardware.pipelines,
+            }),
+        )?;
+    }
+    if r.mismatches > 0 {
+        bail!(
+            "{} base-plane pixels differ from the golden model",
+            r.mismatches
+        );
+    }
+    Ok(())
 }
 
 fn default_run() -> Result<()> {

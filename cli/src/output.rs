@@ -52,3 +52,10 @@ pub fn write_json(path: &Path, v: &serde_json::Value) -> Result<()> {
         Ok(())
     })
 }
+
+pub fn write_text(path: &Path, text: &str) -> Result<()> {
+    atomic_write(path, |f| {
+        f.write_all(text.as_bytes())?;
+        Ok(())
+    })
+}

@@ -241,3 +241,50 @@ fn angles_reports_error_per_angle() {
     let j: serde_json::Value = read_json(&d.path().join("a.json"));
     assert_eq!(j["rows"].as_array().unwrap().len(), 3);
 }
+
+#[test]
+fn sim_matches_golden_and_reports_clocks() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = write(
+        d.path(),
+        "s.json",
+        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
+            "mode": "mip", "image": [48, 48], "hardware": {"pipelines": 2}}"#,
+    );
+    let o = cube(
+        &[
+            "sim", "--scene", &scene, "--out", "sim.png", "--json", "sim.json",
+        ],
+        d.path(),
+    );
+    assert!(
+        o.status.success(),
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let j = read_json(&d.path().join("sim.json"));
+    assert_eq!(j["engine"], "rust-hdl");
+    assert_eq!(j["mismatches"], 0);
+    for k in ["cycles", "ideal_cycles", "seconds", "cycles_per_second"] {
+        assert!(j[k].is_number(), "{k} missing: {j}");
+    }
+    assert_eq!(j["ideal_cycles"], 12 * 12 * 6);
+    assert!(d.path().join("sim.png").exists());
+}
+
+#[test]
+fn sim_refuses_what_the_rtl_cannot_do() {
+    let d = tempfile::tempdir().unwrap();
+    let shaded = write(d.path(), "a.json", SPHERE);
+    assert_clean_error(&cube(&["sim", "--scene", &shaded], d.path()), "gradient");
+    let big = write(
+        d.path(),
+        "b.json",
+        r#"{"volume": {"builtin": "sphere", "dims": [256, 256, 256]}, "view": {"projection": "parallel"}, "mode": "mip"}"#,
+    );
+    assert_clean_error(
+        &cube(&["sim", "--scene", &big], d.path()),
+        "Verilog engines",
+    );
+}

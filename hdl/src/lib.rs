@@ -12,4 +12,5 @@ pub mod cfb;
 pub mod compositor;
 pub mod pipeline;
 pub mod shader;
+pub mod sim;
 pub mod unorm;

@@ -159,6 +159,7 @@ pub struct PipeLane<const H: usize> {
     pub er: Signal<In, Bit>,
     pub base_x: Signal<In, Bits<16>>,
     pub base_y: Signal<In, Bits<16>>,
+    pub face: Signal<In, Bits<3>>,
     /// Ring-buffer reads (hop 0) and forwarding registers, to the neighbours.
     pub ram0: Signal<Out, Bits<64>>,
     pub ram1: Signal<Out, Bits<64>>,
@@ -191,6 +192,8 @@ pub struct PipeLane<const H: usize> {
     pub px_valid: Signal<Out, Bit>,
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
+    /// The face the pixel left through (`golden_model::plan::Face` as a number).
+    pub px_face: Signal<Out, Bits<3>>,
     shader: Shader,
     ring0: RAM<Bits<64>, H>,
     ring1: RAM<Bits<64>, H>,
@@ -226,6 +229,7 @@ pub struct PipeLane<const H: usize> {
     pad_q: [DFF<Bit>; 4],
     bx_q: [DFF<Bits<16>>; 4],
     by_q: [DFF<Bits<16>>; 4],
+    face_q: [DFF<Bits<3>>; 4],
     x_q: DFF<Bits<16>>,
     y_q: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
@@ -271,6 +275,7 @@ impl<const H: usize> PipeLane<H> {
             er: Default::default(),
             base_x: Default::default(),
             base_y: Default::default(),
+            face: Default::default(),
             ram0: Default::default(),
             ram1: Default::default(),
             ram2: Default::default(),
@@ -297,6 +302,7 @@ impl<const H: usize> PipeLane<H> {
             px_valid: Default::default(),
             px_x: Default::default(),
             px_y: Default::default(),
+            px_face: Default::default(),
             shader,
             ring0: Default::default(),
             ring1: Default::default(),
@@ -331,6 +337,7 @@ impl<const H: usize> PipeLane<H> {
             pad_q: Default::default(),
             bx_q: Default::default(),
             by_q: Default::default(),
+            face_q: Default::default(),
             x_q: Default::default(),
             y_q: Default::default(),
             sr_q: Default::default(),
@@ -372,6 +379,7 @@ impl<const H: usize> Logic for PipeLane<H> {
             self.pad_q[i].clock.next = self.clock.val();
             self.bx_q[i].clock.next = self.clock.val();
             self.by_q[i].clock.next = self.clock.val();
+            self.face_q[i].clock.next = self.clock.val();
         }
         for i in 0..2 {
             self.s_r[i].clock.next = self.clock.val();
@@ -400,12 +408,14 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.pad_q[0].d.next = self.pad.val();
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
+        self.face_q[0].d.next = self.face.val();
         for i in 1..4 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
             self.bx_q[i].d.next = self.bx_q[i - 1].q.val();
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
+            self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
         self.x_q.d.next = self.x.val();
         self.y_q.d.next = self.y.val();
@@ -572,6 +582,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.px_valid.next = self.v_q[3].q.val() & self.er_q[3].q.val() & !self.pad_q[3].q.val();
         self.px_x.next = self.bx_q[3].q.val();
         self.px_y.next = self.by_q[3].q.val();
+        self.px_face.next = self.face_q[3].q.val();
     }
 }
 
@@ -651,6 +662,7 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].er.next = self.cfb.er[k].val();
             self.lanes[k].base_x.next = self.cfb.base_x[k].val();
             self.lanes[k].base_y.next = self.cfb.base_y[k].val();
+            self.lanes[k].face.next = self.cfb.face[k].val();
         }
         // Nearest-neighbour links: lane k-1 feeds lane k (lane P-1 feeds 0).
         for k in 1..P {

@@ -1,0 +1,281 @@
+//! Run a whole scene through the rust-hdl pipeline in simulation and compare
+//! its base planes with the golden model's, pixel by pixel. Also writes the
+//! simulation's VCD and a GTKWave save file that groups the signals by stage.
+
+use crate::pipeline::{Pipeline, PipelineConfig};
+use golden_model::cfb::SkewedMemory;
+use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
+use golden_model::plan::{Face, Plan};
+use golden_model::scene::{Camera, Scene};
+use golden_model::shader::Shader as GoldenShader;
+use golden_model::volume::Volume;
+use rust_hdl::prelude::*;
+use std::path::Path;
+use std::time::Instant;
+
+/// Module address bits and ring-buffer address bits of the simulated build.
+const A: usize = 16;
+const H: usize = 16;
+/// Clocks above which rust-hdl simulation is refused: the whole pipeline
+/// simulates at about 1.2·10^3 clocks/s with p = 4 (measured with
+/// `cube sim` on a 24^3 MIP scene), so this bounds a run to about two
+/// minutes.
+pub const MAX_SIM_BEATS: u64 = 1 << 17;
+
+/// One base-plane pixel where RTL and golden model differ.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Mismatch {
+    pub sweep: usize,
+    pub x: usize,
+    pub y: usize,
+    pub rtl: ([u32; 4], Face),
+    pub golden: ([u32; 4], Face),
+}
+
+#[derive(Debug, Clone)]
+pub struct SimOutcome {
+    /// The RTL's frame: its base planes under the golden model's plan.
+    pub frame: Frame,
+    pub cycles: u64,
+    /// One beat per clock: n_x * n_y * slices * ceil(n_x / p) / (n_x / p).
+    pub ideal_cycles: u64,
+    pub mismatches: usize,
+    /// The first few mismatching pixels.
+    pub first: Vec<Mismatch>,
+    pub seconds: f64,
+}
+
+fn face_of(code: u32) -> Face {
+    [
+        Face::None,
+        Face::Last,
+        Face::XPos,
+        Face::XNeg,
+        Face::YPos,
+        Face::YNeg,
+    ][code as usize]
+}
+
+/// Simulate `scene` on `vol`; `vcd` names a VCD to write (with a `.gtkw`
+/// beside it). Errors name what the RTL cannot do yet or why a scene is too
+/// large for rust-hdl simulation.
+pub fn simulate(
+    scene: &Scene,
+    camera: &Camera,
+    vol: &Volume,
+    vcd: Option<&Path>,
+) -> Result<SimOutcome, String> {
+    let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+    let p = scene.hardware.pipelines;
+    let per_module = vol.dims[0].div_ceil(p) * vol.dims[1] * vol.dims[2];
+    if per_module > 1 << A {
+        return Err(format!(
+            "{per_module} voxels per memory module exceed the simulated build's {} (2^{A}); \
+             rust-hdl simulation is for small volumes: run full frames through the Verilog engines (Verilator/Icarus), which are not built yet",
+            1u64 << A
+        ));
+    }
+    let beats: u64 = plan
+        .sweeps
+        .iter()
+        .map(|s| ((s.z1 - s.z0 + 1) * s.dims[1] * s.dims[0].div_ceil(p)) as u64)
+        .sum();
+    if beats > MAX_SIM_BEATS {
+        return Err(format!(
+            "{beats} clocks are too many for rust-hdl simulation (limit {MAX_SIM_BEATS}); use a smaller volume, \
+             or the Verilog engines (Verilator/Icarus), which are not built yet"
+        ));
+    }
+    let t = Instant::now();
+    let mut bases = Vec::new();
+    let (mut cycles, mut ideal, mut mismatches, mut first) = (0, 0, 0, Vec::new());
+    for (si, sweep) in plan.sweeps.iter().enumerate() {
+        let golden = GoldenShader::new(scene, camera, sweep);
+        let config = PipelineConfig::new(sweep, vol.dims, p, &golden)?;
+        let mem = SkewedMemory::new(vol, p);
+        let vcd = if si == 0 { vcd } else { None };
+        let (base, c) = match p {
+            1 => run::<1>(&config, &golden, &mem, sweep, vcd)?,
+            2 => run::<2>(&config, &golden, &mem, sweep, vcd)?,
+            4 => run::<4>(&config, &golden, &mem, sweep, vcd)?,
+            8 => run::<8>(&config, &golden, &mem, sweep, vcd)?,
+            _ => {
+                return Err(format!(
+                    "the RTL is built for 1, 2, 4 or 8 pipelines, not {p}"
+                ))
+            }
+        };
+        let (want, _) = render_sweep(vol, sweep, &golden);
+        for i in 0..want.pixels.len() {
+            let (r, g) = (
+                (base.pixels[i], base.faces[i]),
+                (want.pixels[i], want.faces[i]),
+            );
+            if r != g {
+                mismatches += 1;
+                if first.len() < 8 {
+                    first.push(Mismatch {
+                        sweep: si,
+                        x: i % want.width,
+                        y: i / want.width,
+                        rtl: r,
+                        golden: g,
+                    });
+                }
+            }
+        }
+        cycles += c;
+        ideal += ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p)) as u64;
+        bases.push(base);
+    }
+    Ok(SimOutcome {
+        frame: Frame {
+            plan,
+            bases,
+            stats: Stats::default(),
+        },
+        cycles,
+        ideal_cycles: ideal,
+        mismatches,
+        first,
+        seconds: t.elapsed().as_secs_f64(),
+    })
+}
+
+type Collected = std::sync::Arc<std::sync::Mutex<(BasePlane, u64)>>;
+
+fn run<const P: usize>(
+    config: &PipelineConfig,
+    golden: &GoldenShader,
+    mem: &SkewedMemory,
+    sweep: &golden_model::plan::Sweep,
+    vcd: Option<&Path>,
+) -> Result<(BasePlane, u64), String> {
+    let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
+    uut.cfb.preload(&mem.modules);
+    uut.connect_all();
+    let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(P)) as u64;
+    let out: Collected = std::sync::Arc::new(std::sync::Mutex::new((BasePlane::new(sweep), 0)));
+    let sink = out.clone();
+    let mut sim = Simulation::new();
+    sim.add_clock(5, |x: &mut Box<Pipeline<P, A, H>>| {
+        x.clock.next = !x.clock.val()
+    });
+    sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
+        let mut x = sim.init()?;
+        x.start.next = true;
+        wait_clock_cycle!(sim, clock, x);
+        x.start.next = false;
+        let (mut seen, mut cycles) = (0u64, 1u64);
+        while seen < beats {
+            wait_clock_cycle!(sim, clock, x);
+            cycles += 1;
+            if !x.lanes[0].res_beat.val() {
+                continue;
+            }
+            seen += 1;
+            let mut o = sink.lock().unwrap();
+            for lane in x.lanes.iter() {
+                if lane.px_valid.val() {
+                    let r = lane.res.val().to_u64();
+                    let v: [u32; 4] = std::array::from_fn(|c| ((r >> (16 * c)) & 0xffff) as u32);
+                    let addr = [
+                        lane.px_x.val().to_u32() as usize,
+                        lane.px_y.val().to_u32() as usize,
+                    ];
+                    o.0.put(addr, v, face_of(lane.px_face.val().to_u32()));
+                }
+            }
+            o.1 = cycles;
+        }
+        sim.done(x)
+    });
+    let limit = 10 * (2 * beats + 200);
+    match vcd {
+        Some(path) => {
+            let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
+            sim.run_traced(Box::new(uut), limit, f)
+                .map_err(|e| format!("simulation: {e:?}"))?;
+            write_gtkw(path, P).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        None => sim
+            .run(Box::new(uut), limit)
+            .map_err(|e| format!("simulation: {e:?}"))?,
+    }
+    let o = out.lock().unwrap();
+    Ok((o.0.clone(), o.1))
+}
+
+/// A GTKWave save file beside `vcd` that opens with the signals grouped by
+/// stage: CFB counters, then per pipeline its CFB lane, compositing-buffer
+/// taps, and pixel output.
+pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
+    let mut s = format!(
+        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
+        vcd.display()
+    );
+    let group = |s: &mut String, name: &str, sigs: &[String]| {
+        s.push_str(&format!("@800200\n-{name}\n@22\n"));
+        for sig in sigs {
+            s.push_str(sig);
+            s.push('\n');
+        }
+        s.push_str(&format!("@1000200\n-{name}\n"));
+    };
+    s.push_str("@28\nuut.clock\nuut.start\n");
+    group(
+        &mut s,
+        "CFB",
+        &[
+            "uut.cfb.valid",
+            "uut.cfb.n_s[15:0]",
+            "uut.cfb.n_beam[15:0]",
+            "uut.cfb.n_b[15:0]",
+            "uut.cfb.bs",
+        ]
+        .map(String::from),
+    );
+    for k in 0..p {
+        let l = format!("uut.cfb.lanes${k}");
+        group(
+            &mut s,
+            &format!("CFB lane {k}"),
+            &[
+                "x[15:0]",
+                "y[15:0]",
+                "z[15:0]",
+                "value[15:0]",
+                "address[31:0]",
+                "pad",
+                "sr",
+                "er",
+                "at_edge",
+                "face[2:0]",
+            ]
+            .map(|n| format!("{l}.{n}")),
+        );
+        let pl = format!("uut.lanes${k}");
+        group(
+            &mut s,
+            &format!("Compositing lane {k}"),
+            &[
+                "ram0[63:0]",
+                "ram1[63:0]",
+                "ram2[63:0]",
+                "ram3[63:0]",
+                "res_valid",
+                "res[63:0]",
+            ]
+            .map(|n| format!("{pl}.{n}")),
+        );
+        group(
+            &mut s,
+            &format!("Pixel out {k}"),
+            &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"].map(|n| format!("{pl}.{n}")),
+        );
+    }
+    let gtkw = vcd.with_extension("gtkw");
+    let tmp = gtkw.with_extension("gtkw.tmp");
+    std::fs::write(&tmp, s)?;
+    std::fs::rename(tmp, gtkw)
+}
