@@ -274,10 +274,33 @@ fn sim_matches_golden_and_reports_clocks() {
 }
 
 #[test]
+fn sim_shaded_scene_matches() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = write(
+        d.path(),
+        "s.json",
+        r#"{"volume": {"builtin": "phantom", "dims": [12, 12, 10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]},
+            "image": [48, 48], "hardware": {"pipelines": 4}}"#,
+    );
+    let o = cube(&["sim", "--scene", &scene, "--json", "sim.json"], d.path());
+    assert!(
+        o.status.success(),
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert_eq!(read_json(&d.path().join("sim.json"))["mismatches"], 0);
+}
+
+#[test]
 fn sim_refuses_what_the_rtl_cannot_do() {
     let d = tempfile::tempdir().unwrap();
-    let shaded = write(d.path(), "a.json", SPHERE);
-    assert_clean_error(&cube(&["sim", "--scene", &shaded], d.path()), "gradient");
+    let persp = write(
+        d.path(),
+        "a.json",
+        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "perspective", "eye": [6, 6, -20]}, "image": [16, 16]}"#,
+    );
+    assert_clean_error(&cube(&["sim", "--scene", &persp], d.path()), "divider");
     let big = write(
         d.path(),
         "b.json",

@@ -349,6 +349,7 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub base_x: [Signal<Out, Bits<16>>; P],
     pub base_y: [Signal<Out, Bits<16>>; P],
     pub face: [Signal<Out, Bits<3>>; P],
+    pub at_edge: [Signal<Out, Bit>; P],
     pub lanes: [CfbLane<A>; P],
     running: DFF<Bit>,
     ns_c: DFF<Bits<16>>,
@@ -390,6 +391,7 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             base_x: std::array::from_fn(|_| Default::default()),
             base_y: std::array::from_fn(|_| Default::default()),
             face: std::array::from_fn(|_| Default::default()),
+            at_edge: std::array::from_fn(|_| Default::default()),
             lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
             running: Default::default(),
             ns_c: Default::default(),
@@ -429,6 +431,7 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.base_x[k].next = self.lanes[k].base_x.val();
             self.base_y[k].next = self.lanes[k].base_y.val();
             self.face[k].next = self.lanes[k].face.val();
+            self.at_edge[k].next = self.lanes[k].at_edge.val();
         }
         // The address generator: N_b fastest, then N_B, then N_s.
         if self.start.val() & !self.running.q.val() {

@@ -7,6 +7,7 @@
 //! divider, the ABC gradient, the shader, the bilinear unit's 3x3 neighbour
 //! forwarding and compositing-buffer FIFO, and the p-pipeline top level.
 
+pub mod abc_gradient;
 pub mod bilinear;
 pub mod cfb;
 pub mod compositor;

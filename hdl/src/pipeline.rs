@@ -29,6 +29,7 @@
 //! ring buffer and, on ER, goes out as a base-plane pixel. A tap needs
 //! D > hops + 4, i.e. (n_y - 1) * b >= 9.
 
+use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
 use crate::cfb::{Cfb, CfbConfig};
 use crate::compositor::Compositor;
@@ -61,6 +62,11 @@ pub struct PipelineConfig {
     pub rgba_bits: u32,
     pub order: golden_model::plan::Order,
     pub reset: [u32; 4],
+    /// Shading needs the ABC gradient unit (and delays everything a slice).
+    pub gradient: bool,
+    /// Beats per slice and per beam.
+    pub slice_beats: u32,
+    pub beam_beats: u32,
 }
 
 impl PipelineConfig {
@@ -123,6 +129,9 @@ impl PipelineConfig {
             frac_bits: sweep.frac,
             rgba_bits: shader.rgba_bits,
             order: sweep.order,
+            gradient: shader.needs_gradient,
+            slice_beats: s,
+            beam_beats: b,
             reset: golden_model::compositor::reset_value(shader.mode, shader.voxel_bits),
         })
     }
@@ -160,6 +169,20 @@ pub struct PipeLane<const H: usize> {
     pub base_x: Signal<In, Bits<16>>,
     pub base_y: Signal<In, Bits<16>>,
     pub face: Signal<In, Bits<3>>,
+    pub at_edge: Signal<In, Bit>,
+    /// ABC gradient links (see `AbcGradient`).
+    pub g_from_left_xm: Signal<In, Bits<16>>,
+    pub g_from_left_ym: Signal<In, Bits<16>>,
+    pub g_from_left_zm: Signal<In, Bits<16>>,
+    pub g_from_right_xp: Signal<In, Bits<16>>,
+    pub g_from_right_yp: Signal<In, Bits<16>>,
+    pub g_from_right_zp: Signal<In, Bits<16>>,
+    pub g_to_right_xm: Signal<Out, Bits<16>>,
+    pub g_to_right_ym: Signal<Out, Bits<16>>,
+    pub g_to_right_zm: Signal<Out, Bits<16>>,
+    pub g_to_left_xp: Signal<Out, Bits<16>>,
+    pub g_to_left_yp: Signal<Out, Bits<16>>,
+    pub g_to_left_zp: Signal<Out, Bits<16>>,
     /// Ring-buffer reads (hop 0) and forwarding registers, to the neighbours.
     pub ram0: Signal<Out, Bits<64>>,
     pub ram1: Signal<Out, Bits<64>>,
@@ -194,6 +217,21 @@ pub struct PipeLane<const H: usize> {
     pub px_y: Signal<Out, Bits<16>>,
     /// The face the pixel left through (`golden_model::plan::Face` as a number).
     pub px_face: Signal<Out, Bits<3>>,
+    abc: AbcGradient<H>,
+    use_gradient: Constant<Bit>,
+    // The voxel and its control entering the shader: the CFB's, or the
+    // gradient unit's a slice later.
+    st_valid: Signal<Local, Bit>,
+    st_value: Signal<Local, Bits<16>>,
+    st_x: Signal<Local, Bits<16>>,
+    st_y: Signal<Local, Bits<16>>,
+    st_pad: Signal<Local, Bit>,
+    st_sr: Signal<Local, Bit>,
+    st_er: Signal<Local, Bit>,
+    st_edge: Signal<Local, Bit>,
+    st_face: Signal<Local, Bits<3>>,
+    st_bx: Signal<Local, Bits<16>>,
+    st_by: Signal<Local, Bits<16>>,
     shader: Shader,
     ring0: RAM<Bits<64>, H>,
     ring1: RAM<Bits<64>, H>,
@@ -276,6 +314,19 @@ impl<const H: usize> PipeLane<H> {
             base_x: Default::default(),
             base_y: Default::default(),
             face: Default::default(),
+            at_edge: Default::default(),
+            g_from_left_xm: Default::default(),
+            g_from_left_ym: Default::default(),
+            g_from_left_zm: Default::default(),
+            g_from_right_xp: Default::default(),
+            g_from_right_yp: Default::default(),
+            g_from_right_zp: Default::default(),
+            g_to_right_xm: Default::default(),
+            g_to_right_ym: Default::default(),
+            g_to_right_zm: Default::default(),
+            g_to_left_xp: Default::default(),
+            g_to_left_yp: Default::default(),
+            g_to_left_zp: Default::default(),
             ram0: Default::default(),
             ram1: Default::default(),
             ram2: Default::default(),
@@ -303,6 +354,19 @@ impl<const H: usize> PipeLane<H> {
             px_x: Default::default(),
             px_y: Default::default(),
             px_face: Default::default(),
+            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p),
+            use_gradient: Constant::new(c.gradient),
+            st_valid: Default::default(),
+            st_value: Default::default(),
+            st_x: Default::default(),
+            st_y: Default::default(),
+            st_pad: Default::default(),
+            st_sr: Default::default(),
+            st_er: Default::default(),
+            st_edge: Default::default(),
+            st_face: Default::default(),
+            st_bx: Default::default(),
+            st_by: Default::default(),
             shader,
             ring0: Default::default(),
             ring1: Default::default(),
@@ -399,16 +463,74 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ring2.write_clock.next = self.clock.val();
         self.ring3.read_clock.next = self.clock.val();
         self.ring3.write_clock.next = self.clock.val();
-        // Shader (CFB output at T-1, registered sample at T).
-        self.shader.value.next = self.value.val();
-        self.shader.invalid.next = self.pad.val();
+        // ABC gradient unit: fed by the CFB, linked to the neighbours.
+        self.abc.clock.next = self.clock.val();
+        self.abc.now.next = self.now.val();
+        self.abc.valid.next = self.beat_valid.val();
+        self.abc.value.next = self.value.val();
+        self.abc.x.next = self.x.val();
+        self.abc.y.next = self.y.val();
+        self.abc.pad.next = self.pad.val();
+        self.abc.sr.next = self.sr.val();
+        self.abc.er.next = self.er.val();
+        self.abc.at_edge.next = self.at_edge.val();
+        self.abc.face.next = self.face.val();
+        self.abc.base_x.next = self.base_x.val();
+        self.abc.base_y.next = self.base_y.val();
+        self.abc.from_left_xm.next = self.g_from_left_xm.val();
+        self.abc.from_left_ym.next = self.g_from_left_ym.val();
+        self.abc.from_left_zm.next = self.g_from_left_zm.val();
+        self.abc.from_right_xp.next = self.g_from_right_xp.val();
+        self.abc.from_right_yp.next = self.g_from_right_yp.val();
+        self.abc.from_right_zp.next = self.g_from_right_zp.val();
+        self.g_to_right_xm.next = self.abc.to_right_xm.val();
+        self.g_to_right_ym.next = self.abc.to_right_ym.val();
+        self.g_to_right_zm.next = self.abc.to_right_zm.val();
+        self.g_to_left_xp.next = self.abc.to_left_xp.val();
+        self.g_to_left_yp.next = self.abc.to_left_yp.val();
+        self.g_to_left_zp.next = self.abc.to_left_zp.val();
+        if self.use_gradient.val() {
+            self.st_valid.next = self.abc.o_valid.val();
+            self.st_value.next = self.abc.o_value.val();
+            self.st_x.next = self.abc.o_x.val();
+            self.st_y.next = self.abc.o_y.val();
+            self.st_pad.next = self.abc.o_pad.val();
+            self.st_sr.next = self.abc.o_sr.val();
+            self.st_er.next = self.abc.o_er.val();
+            self.st_edge.next = self.abc.o_edge.val();
+            self.st_face.next = self.abc.o_face.val();
+            self.st_bx.next = self.abc.o_base_x.val();
+            self.st_by.next = self.abc.o_base_y.val();
+        } else {
+            self.st_valid.next = self.beat_valid.val();
+            self.st_value.next = self.value.val();
+            self.st_x.next = self.x.val();
+            self.st_y.next = self.y.val();
+            self.st_pad.next = self.pad.val();
+            self.st_sr.next = self.sr.val();
+            self.st_er.next = self.er.val();
+            self.st_edge.next = self.at_edge.val();
+            self.st_face.next = self.face.val();
+            self.st_bx.next = self.base_x.val();
+            self.st_by.next = self.base_y.val();
+        }
+        // Shader (input at T-1, registered sample at T).
+        self.shader.value.next = self.st_value.val();
+        self.shader.invalid.next = self.st_pad.val();
+        self.shader.at_edge.next = self.st_edge.val();
+        self.shader.gx_neg.next = self.abc.gx_neg.val();
+        self.shader.gx_mag.next = self.abc.gx_mag.val();
+        self.shader.gy_neg.next = self.abc.gy_neg.val();
+        self.shader.gy_mag.next = self.abc.gy_mag.val();
+        self.shader.gz_neg.next = self.abc.gz_neg.val();
+        self.shader.gz_mag.next = self.abc.gz_mag.val();
         // Control pipeline.
-        self.v_q[0].d.next = self.beat_valid.val();
-        self.er_q[0].d.next = self.er.val();
-        self.pad_q[0].d.next = self.pad.val();
-        self.bx_q[0].d.next = self.base_x.val();
-        self.by_q[0].d.next = self.base_y.val();
-        self.face_q[0].d.next = self.face.val();
+        self.v_q[0].d.next = self.st_valid.val();
+        self.er_q[0].d.next = self.st_er.val();
+        self.pad_q[0].d.next = self.st_pad.val();
+        self.bx_q[0].d.next = self.st_bx.val();
+        self.by_q[0].d.next = self.st_by.val();
+        self.face_q[0].d.next = self.st_face.val();
         for i in 1..4 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
@@ -417,9 +539,9 @@ impl<const H: usize> Logic for PipeLane<H> {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.x_q.d.next = self.x.val();
-        self.y_q.d.next = self.y.val();
-        self.sr_q.d.next = self.sr.val();
+        self.x_q.d.next = self.st_x.val();
+        self.y_q.d.next = self.st_y.val();
+        self.sr_q.d.next = self.st_sr.val();
         // Ring-buffer reads and the forwarding registers.
         self.ring0.read_address.next = self.now.val() + self.off0.val();
         self.ring1.read_address.next = self.now.val() + self.off1.val();
@@ -663,6 +785,7 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].base_x.next = self.cfb.base_x[k].val();
             self.lanes[k].base_y.next = self.cfb.base_y[k].val();
             self.lanes[k].face.next = self.cfb.face[k].val();
+            self.lanes[k].at_edge.next = self.cfb.at_edge[k].val();
         }
         // Nearest-neighbour links: lane k-1 feeds lane k (lane P-1 feeds 0).
         for k in 1..P {
@@ -684,6 +807,27 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[0].in3a.next = self.lanes[k].ram3.val();
             self.lanes[0].in3b.next = self.lanes[k].fwd3a.val();
             self.lanes[0].in3c.next = self.lanes[k].fwd3b.val();
+        }
+        // ABC gradient links, both ways.
+        for k in 1..P {
+            self.lanes[k].g_from_left_xm.next = self.lanes[k - 1].g_to_right_xm.val();
+            self.lanes[k].g_from_left_ym.next = self.lanes[k - 1].g_to_right_ym.val();
+            self.lanes[k].g_from_left_zm.next = self.lanes[k - 1].g_to_right_zm.val();
+        }
+        for k in (P - 1)..P {
+            self.lanes[0].g_from_left_xm.next = self.lanes[k].g_to_right_xm.val();
+            self.lanes[0].g_from_left_ym.next = self.lanes[k].g_to_right_ym.val();
+            self.lanes[0].g_from_left_zm.next = self.lanes[k].g_to_right_zm.val();
+        }
+        for k in 0..(P - 1) {
+            self.lanes[k].g_from_right_xp.next = self.lanes[k + 1].g_to_left_xp.val();
+            self.lanes[k].g_from_right_yp.next = self.lanes[k + 1].g_to_left_yp.val();
+            self.lanes[k].g_from_right_zp.next = self.lanes[k + 1].g_to_left_zp.val();
+        }
+        for k in (P - 1)..P {
+            self.lanes[k].g_from_right_xp.next = self.lanes[0].g_to_left_xp.val();
+            self.lanes[k].g_from_right_yp.next = self.lanes[0].g_to_left_yp.val();
+            self.lanes[k].g_from_right_zp.next = self.lanes[0].g_to_left_zp.val();
         }
         // The leftward link: lane k+1 feeds lane k (lane 0 feeds P-1).
         for k in 0..(P - 1) {

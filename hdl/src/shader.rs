@@ -1,29 +1,46 @@
-//! Shader and classifier of Cube-4L (§3.3-3.4) for scenes without gradients
-//! (shading off, no gradient-magnitude opacity): the colour and opacity LUTs,
-//! indexed by the voxel's top bits, and the opacity weighting
-//! `weighted = mul(colour, alpha)`, bit for bit as
-//! `golden_model::shader::Shader::sample` with an unlit reflectance
-//! (`mul(c, M) = c` exactly). MIP and MinIP pass the intensity through with
-//! its validity. One register stage.
+//! Shader and classifier of Cube-4L (§3.3-3.4): the colour and opacity LUTs
+//! indexed by the voxel's top bits, the reflectance map indexed by the
+//! quantized gradient, and the opacity weighting, bit for bit as
+//! `golden_model::shader::Shader::sample`:
 //!
-//! The LUT contents are the golden model's own tables, so hardware and model
-//! cannot disagree on them; first-opaque's threshold is applied when the
-//! opacity table is filled. The gradient-driven units (reflectance map,
-//! gradient-magnitude index) are not built yet.
+//! 1. `alpha = opacity[v >> shift]`, 0 on padding and, when gradients are
+//!    used, on voxels at the dataset's edge (first-opaque's threshold is
+//!    applied when the table is filled);
+//! 2. the gradient is quantized like `golden_model::gradient::quantize_normal`:
+//!    all three components shift right (rounding half up) until the largest
+//!    fits in 4 magnitude bits, then saturate to ±15; the 5-bit two's
+//!    complement components index the reflectance map `[diffuse, specular]`;
+//! 3. `shaded = sat(mul(colour, diffuse) + specular)`, `weighted = mul(shaded, alpha)`.
+//!
+//! Without shading the reflectance is `[M, 0]` and `mul(c, M) = c`. MIP and
+//! MinIP pass the intensity through with its validity. One register stage.
+//! The LUT contents are the golden model's own tables. The gradient-magnitude
+//! index of the opacity LUT (it needs an integer square root) is not built
+//! yet.
 
 use crate::unorm::MulUnorm;
 use golden_model::fixed::max_of;
 use golden_model::scene::Mode;
+use golden_model::transfer::NORMAL_BITS;
 use rust_hdl::prelude::*;
 
 /// LUT index bits (the golden model indexes with at most 12).
 pub const LUT_INDEX_BITS: usize = 12;
+/// Reflectance-map index bits: three 5-bit components.
+pub const REFLECTANCE_BITS: usize = 15;
 
 #[derive(LogicBlock)]
 pub struct Shader {
     pub clock: Signal<In, Clock>,
     pub value: Signal<In, Bits<16>>,
     pub invalid: Signal<In, Bit>,
+    pub at_edge: Signal<In, Bit>,
+    pub gx_neg: Signal<In, Bit>,
+    pub gx_mag: Signal<In, Bits<16>>,
+    pub gy_neg: Signal<In, Bit>,
+    pub gy_mag: Signal<In, Bits<16>>,
+    pub gz_neg: Signal<In, Bit>,
+    pub gz_mag: Signal<In, Bits<16>>,
     /// Registered sample: `[r, g, b, a]`, or the intensity in `r` for MIP/MinIP.
     pub r: Signal<Out, Bits<16>>,
     pub g: Signal<Out, Bits<16>>,
@@ -32,12 +49,35 @@ pub struct Shader {
     pub valid: Signal<Out, Bit>,
     /// `[r | g << 16 | b << 32 | alpha << 48]` per LUT entry.
     lut: ROM<Bits<64>, LUT_INDEX_BITS>,
+    /// `[diffuse | specular << 16]` per quantized gradient.
+    reflectance: ROM<Bits<32>, REFLECTANCE_BITS>,
     scalar: Constant<Bit>,
+    shaded: Constant<Bit>,
+    edge_transparent: Constant<Bit>,
     shift: Constant<Bits<8>>,
+    m_max: Constant<Bits<16>>,
     mul_r: MulUnorm,
     mul_g: MulUnorm,
     mul_b: MulUnorm,
+    lit_r: MulUnorm,
+    lit_g: MulUnorm,
+    lit_b: MulUnorm,
     alpha: Signal<Local, Bits<16>>,
+    m: Signal<Local, Bits<16>>,
+    bl: Signal<Local, Bits<8>>,
+    s: Signal<Local, Bits<8>>,
+    half: Signal<Local, Bits<32>>,
+    qx: Signal<Local, Bits<32>>,
+    qy: Signal<Local, Bits<32>>,
+    qz: Signal<Local, Bits<32>>,
+    ix: Signal<Local, Bits<5>>,
+    iy: Signal<Local, Bits<5>>,
+    iz: Signal<Local, Bits<5>>,
+    diffuse: Signal<Local, Bits<16>>,
+    specular: Signal<Local, Bits<16>>,
+    sum_r: Signal<Local, Bits<32>>,
+    sum_g: Signal<Local, Bits<32>>,
+    sum_b: Signal<Local, Bits<32>>,
     r_q: DFF<Bits<16>>,
     g_q: DFF<Bits<16>>,
     b_q: DFF<Bits<16>>,
@@ -49,8 +89,16 @@ impl Shader {
     /// Build from the golden model's shader of the same sweep; `Err` for the
     /// parts not built in hardware yet.
     pub fn new(golden: &golden_model::shader::Shader) -> Result<Shader, String> {
-        if golden.needs_gradient {
-            return Err("scenes with shading or gradient opacity need the ABC gradient and reflectance units, which the RTL does not have yet".into());
+        assert_eq!(
+            NORMAL_BITS, 5,
+            "the RTL normal quantizer is built for 5-bit components"
+        );
+        if golden
+            .opacity
+            .as_ref()
+            .is_some_and(|o| o.gm_shift.is_some())
+        {
+            return Err("gradient-magnitude opacity needs the gradient-magnitude unit (an integer square root), which the RTL does not have yet".into());
         }
         if golden.mode == Mode::Xray {
             return Err("X-ray sums are wider than the RTL bilinear unit's 16-bit channels".into());
@@ -83,23 +131,60 @@ impl Shader {
             ),
             _ => (Vec::new(), 0),
         };
-        let rom: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
+        let lut: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
+        let reflectance: ROM<Bits<32>, REFLECTANCE_BITS> = match &golden.reflectance {
+            Some(r) => r
+                .table
+                .iter()
+                .map(|[d, s]| (*d as u64 | (*s as u64) << 16).to_bits())
+                .into(),
+            None => Vec::<Bits<32>>::new().into_iter().into(),
+        };
         Ok(Shader {
             clock: Default::default(),
             value: Default::default(),
             invalid: Default::default(),
+            at_edge: Default::default(),
+            gx_neg: Default::default(),
+            gx_mag: Default::default(),
+            gy_neg: Default::default(),
+            gy_mag: Default::default(),
+            gz_neg: Default::default(),
+            gz_mag: Default::default(),
             r: Default::default(),
             g: Default::default(),
             b: Default::default(),
             a: Default::default(),
             valid: Default::default(),
-            lut: rom,
+            lut,
+            reflectance,
             scalar: Constant::new(scalar),
+            shaded: Constant::new(golden.reflectance.is_some()),
+            edge_transparent: Constant::new(golden.needs_gradient),
             shift: Constant::new((shift as u64).to_bits()),
+            m_max: Constant::new((m as u64).to_bits()),
             mul_r: MulUnorm::new(golden.rgba_bits),
             mul_g: MulUnorm::new(golden.rgba_bits),
             mul_b: MulUnorm::new(golden.rgba_bits),
+            lit_r: MulUnorm::new(golden.rgba_bits),
+            lit_g: MulUnorm::new(golden.rgba_bits),
+            lit_b: MulUnorm::new(golden.rgba_bits),
             alpha: Default::default(),
+            m: Default::default(),
+            bl: Default::default(),
+            s: Default::default(),
+            half: Default::default(),
+            qx: Default::default(),
+            qy: Default::default(),
+            qz: Default::default(),
+            ix: Default::default(),
+            iy: Default::default(),
+            iz: Default::default(),
+            diffuse: Default::default(),
+            specular: Default::default(),
+            sum_r: Default::default(),
+            sum_g: Default::default(),
+            sum_b: Default::default(),
             r_q: Default::default(),
             g_q: Default::default(),
             b_q: Default::default(),
@@ -116,12 +201,145 @@ impl Logic for Shader {
         self.lut.address.next =
             bit_cast::<LUT_INDEX_BITS, 16>(self.value.val() >> self.shift.val());
         self.alpha.next = bit_cast::<16, 64>(self.lut.data.val() >> 48);
-        if self.invalid.val() {
+        if self.invalid.val() | (self.edge_transparent.val() & self.at_edge.val()) {
             self.alpha.next = 0.into();
         }
-        self.mul_r.a.next = bit_cast::<16, 64>(self.lut.data.val());
-        self.mul_g.a.next = bit_cast::<16, 64>(self.lut.data.val() >> 16);
-        self.mul_b.a.next = bit_cast::<16, 64>(self.lut.data.val() >> 32);
+        // Normal quantizer: leading one of the largest component.
+        self.m.next = self.gx_mag.val();
+        if self.gy_mag.val() > self.m.val() {
+            self.m.next = self.gy_mag.val();
+        }
+        if self.gz_mag.val() > self.m.val() {
+            self.m.next = self.gz_mag.val();
+        }
+        self.bl.next = 0.into();
+        if self.m.val() >= 1 {
+            self.bl.next = 1.into();
+        }
+        if self.m.val() >= 2 {
+            self.bl.next = 2.into();
+        }
+        if self.m.val() >= 4 {
+            self.bl.next = 3.into();
+        }
+        if self.m.val() >= 8 {
+            self.bl.next = 4.into();
+        }
+        if self.m.val() >= 16 {
+            self.bl.next = 5.into();
+        }
+        if self.m.val() >= 32 {
+            self.bl.next = 6.into();
+        }
+        if self.m.val() >= 64 {
+            self.bl.next = 7.into();
+        }
+        if self.m.val() >= 128 {
+            self.bl.next = 8.into();
+        }
+        if self.m.val() >= 256 {
+            self.bl.next = 9.into();
+        }
+        if self.m.val() >= 512 {
+            self.bl.next = 10.into();
+        }
+        if self.m.val() >= 1024 {
+            self.bl.next = 11.into();
+        }
+        if self.m.val() >= 2048 {
+            self.bl.next = 12.into();
+        }
+        if self.m.val() >= 4096 {
+            self.bl.next = 13.into();
+        }
+        if self.m.val() >= 8192 {
+            self.bl.next = 14.into();
+        }
+        if self.m.val() >= 16384 {
+            self.bl.next = 15.into();
+        }
+        if self.m.val() >= 32768 {
+            self.bl.next = 16.into();
+        }
+        self.s.next = 0.into();
+        if self.bl.val() > 4 {
+            self.s.next = self.bl.val() - 4;
+        }
+        self.half.next = 0.into();
+        if self.s.val() > 0 {
+            self.half.next = (bit_cast::<32, 16>(1.into()) << self.s.val()) >> 1;
+        }
+        self.qx.next = (bit_cast::<32, 16>(self.gx_mag.val()) + self.half.val()) >> self.s.val();
+        if self.gx_neg.val() & (self.s.val() > 0) {
+            self.qx.next =
+                (bit_cast::<32, 16>(self.gx_mag.val()) + self.half.val() - 1) >> self.s.val();
+        }
+        self.qy.next = (bit_cast::<32, 16>(self.gy_mag.val()) + self.half.val()) >> self.s.val();
+        if self.gy_neg.val() & (self.s.val() > 0) {
+            self.qy.next =
+                (bit_cast::<32, 16>(self.gy_mag.val()) + self.half.val() - 1) >> self.s.val();
+        }
+        self.qz.next = (bit_cast::<32, 16>(self.gz_mag.val()) + self.half.val()) >> self.s.val();
+        if self.gz_neg.val() & (self.s.val() > 0) {
+            self.qz.next =
+                (bit_cast::<32, 16>(self.gz_mag.val()) + self.half.val() - 1) >> self.s.val();
+        }
+        if self.qx.val() > 15 {
+            self.qx.next = 15.into();
+        }
+        if self.qy.val() > 15 {
+            self.qy.next = 15.into();
+        }
+        if self.qz.val() > 15 {
+            self.qz.next = 15.into();
+        }
+        // Five-bit two's complement components.
+        self.ix.next = bit_cast::<5, 32>(self.qx.val());
+        if self.gx_neg.val() {
+            self.ix.next = bit_cast::<5, 32>(32 - self.qx.val());
+        }
+        self.iy.next = bit_cast::<5, 32>(self.qy.val());
+        if self.gy_neg.val() {
+            self.iy.next = bit_cast::<5, 32>(32 - self.qy.val());
+        }
+        self.iz.next = bit_cast::<5, 32>(self.qz.val());
+        if self.gz_neg.val() {
+            self.iz.next = bit_cast::<5, 32>(32 - self.qz.val());
+        }
+        self.reflectance.address.next = bit_cast::<REFLECTANCE_BITS, 5>(self.ix.val())
+            | (bit_cast::<REFLECTANCE_BITS, 5>(self.iy.val()) << 5)
+            | (bit_cast::<REFLECTANCE_BITS, 5>(self.iz.val()) << 10);
+        self.diffuse.next = self.m_max.val();
+        self.specular.next = 0.into();
+        if self.shaded.val() {
+            self.diffuse.next = bit_cast::<16, 32>(self.reflectance.data.val());
+            self.specular.next = bit_cast::<16, 32>(self.reflectance.data.val() >> 16);
+        }
+        // shaded = sat(mul(c, diffuse) + specular)
+        self.lit_r.a.next = bit_cast::<16, 64>(self.lut.data.val());
+        self.lit_g.a.next = bit_cast::<16, 64>(self.lut.data.val() >> 16);
+        self.lit_b.a.next = bit_cast::<16, 64>(self.lut.data.val() >> 32);
+        self.lit_r.b.next = self.diffuse.val();
+        self.lit_g.b.next = self.diffuse.val();
+        self.lit_b.b.next = self.diffuse.val();
+        self.sum_r.next =
+            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular.val());
+        self.sum_g.next =
+            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular.val());
+        self.sum_b.next =
+            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular.val());
+        self.mul_r.a.next = bit_cast::<16, 32>(self.sum_r.val());
+        if self.sum_r.val() > bit_cast::<32, 16>(self.m_max.val()) {
+            self.mul_r.a.next = self.m_max.val();
+        }
+        self.mul_g.a.next = bit_cast::<16, 32>(self.sum_g.val());
+        if self.sum_g.val() > bit_cast::<32, 16>(self.m_max.val()) {
+            self.mul_g.a.next = self.m_max.val();
+        }
+        self.mul_b.a.next = bit_cast::<16, 32>(self.sum_b.val());
+        if self.sum_b.val() > bit_cast::<32, 16>(self.m_max.val()) {
+            self.mul_b.a.next = self.m_max.val();
+        }
         self.mul_r.b.next = self.alpha.val();
         self.mul_g.b.next = self.alpha.val();
         self.mul_b.b.next = self.alpha.val();

@@ -17,10 +17,20 @@ const H: usize = 12;
 /// Simulate one scene's first sweep; returns (clocks from start to the last
 /// result, ideal clocks n_x*n_y*n_z/P rounded up per beam).
 fn run<const P: usize>(dims: [usize; 3], view: &str, mode: &str, vol_name: &str) -> (u64, u64) {
+    run_shaded::<P>(dims, view, mode, vol_name, false)
+}
+
+fn run_shaded<const P: usize>(
+    dims: [usize; 3],
+    view: &str,
+    mode: &str,
+    vol_name: &str,
+    shading: bool,
+) -> (u64, u64) {
     let tf = r#""transfer": {"opacity": [[0, 0], [40, 0.02], [120, 0.3], [200, 0.9], [255, 1.0]], "color": [[0, 0.2, 0.4, 1.0], [128, 1.0, 0.5, 0.1], [255, 1.0, 1.0, 1.0]]}"#;
     let s = scene(&format!(
         r#"{{"volume": {{"builtin": "{vol_name}", "dims": {dims:?}}}, "view": {view}, "mode": "{mode}", {tf},
-            "shading": {{"enabled": false}}, "image": [16, 16], "hardware": {{"pipelines": {P}}}}}"#
+            "shading": {{"enabled": {shading}, "light_dir": [0.3, 0.5, 1.0], "specular": 0.4}}, "image": [16, 16], "hardware": {{"pipelines": {P}}}}}"#
     ));
     let vol = builtin(vol_name, dims, 8).unwrap();
     let cam = s.camera().unwrap();
@@ -108,6 +118,25 @@ fn pipeline_composite_and_other_modes() {
         run::<2>([9, 10, 8], view, "first_opaque", "sphere");
         run::<4>([8, 10, 8], view, "minip", "checkerboard");
     }
+}
+
+#[test]
+fn pipeline_shaded_composite_with_abc_gradients() {
+    for view in VIEWS {
+        run_shaded::<4>([12, 12, 12], view, "composite", "phantom", true);
+        run_shaded::<2>([10, 9, 8], view, "composite", "sphere", true);
+        run_shaded::<1>([8, 8, 8], view, "first_opaque", "sphere", true);
+    }
+}
+
+#[test]
+fn pipeline_shaded_clock_count_adds_one_slice() {
+    // The gradient needs the slice ahead: one slice (n_y * n_x / p beats) and
+    // one clock more fill than without shading.
+    let (cycles, ideal) = run_shaded::<4>([16, 16, 16], VIEWS[1], "composite", "phantom", true);
+    let (plain, _) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
+    assert_eq!(cycles - plain, 16 * 16 / 4 + 1);
+    assert!(cycles > ideal);
 }
 
 #[test]
