@@ -1,4 +1,4 @@
-//! Cubic Frame Buffer of Cube-4L (§3.1, Figs. 5, 6 and 13), parallel views:
+//! Cubic Frame Buffer of Cube-4L (§3.1, Figs. 5, 6, 7 and 13):
 //! `P` skewed memory modules, the address generator with its counters N_b,
 //! N_B and N_s, the pipeline-to-dataset transform for the sweep's major axis,
 //! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
@@ -13,9 +13,14 @@
 //!
 //! The memory is loaded through the `load_*` port (one write per clock into
 //! module `load_module`) and maps to block RAM (`A` address bits per module).
-//! Perspective views need the per-voxel sight-ray divider, which is not built
-//! yet: [`Cfb::new`] rejects them.
+//!
+//! dx and dy are frame registers for parallel views. Perspective views add
+//! the per-voxel divider: `S = P - V` in fixed point, then
+//! `dx = round(S_x * 2^f / S_z)` with halves away from zero. `|dx| > 1` or
+//! `S_z = 0` sets *invalid*, and such voxels carry the golden model's
+//! saturated direction, `sign(S_x) * sign(S_z)`.
 
+use crate::divider::Divider;
 use golden_model::plan::{Face, Rays, Sweep};
 use rust_hdl::prelude::*;
 
@@ -33,17 +38,24 @@ pub struct CfbConfig {
     /// Dataset partial beams per u beam (`ceil(n_u / P)`) and dataset n_v.
     pub b_u: u32,
     pub n_v: u32,
+    /// Parallel views: the frame registers (fixed point with `frac` bits).
     pub dx: i32,
     pub dy: i32,
+    /// Perspective views: the eye in pipeline space, fixed point.
+    pub eye: Option<[i64; 3]>,
+    pub frac: u32,
 }
 
 impl CfbConfig {
-    /// The configuration for one sweep of a parallel view over a dataset of
-    /// `vol_dims`, or an error for views the CFB cannot do yet.
+    /// The configuration for one sweep over a dataset of `vol_dims`.
     pub fn from_sweep(sweep: &Sweep, vol_dims: [usize; 3], p: usize) -> Result<CfbConfig, String> {
-        let Rays::Parallel { dx, dy } = sweep.rays else {
-            return Err("perspective views need the per-voxel sight-ray divider, which the RTL CFB does not have yet".into());
+        let (dx, dy, eye) = match sweep.rays {
+            Rays::Parallel { dx, dy } => (dx, dy, None),
+            Rays::Perspective { eye } => (0, 0, Some(eye)),
         };
+        if eye.is_some_and(|e| e.iter().any(|c| c.abs() >= 1 << 40)) {
+            return Err("the eye is too far away for the RTL divider's 64-bit datapath".into());
+        }
         if vol_dims.iter().any(|&n| n > 4095) {
             return Err(format!(
                 "dims {vol_dims:?}: the RTL CFB counts positions in 12 bits"
@@ -61,6 +73,8 @@ impl CfbConfig {
             n_v: vol_dims[1] as u32,
             dx,
             dy,
+            eye,
+            frac: sweep.frac,
         })
     }
 }
@@ -97,6 +111,12 @@ pub struct CfbLane<const A: usize> {
     pub face: Signal<Out, Bits<3>>,
     pub base_x: Signal<Out, Bits<16>>,
     pub base_y: Signal<Out, Bits<16>>,
+    /// Sight-ray increments (sign and magnitude, 1.0 = 2^f) and the invalid bit.
+    pub dx_neg: Signal<Out, Bit>,
+    pub dx_mag: Signal<Out, Bits<16>>,
+    pub dy_neg: Signal<Out, Bit>,
+    pub dy_mag: Signal<Out, Bits<16>>,
+    pub invalid: Signal<Out, Bit>,
     memory: RAM<Bits<16>, A>,
     lane: Constant<Bits<16>>,
     p_mask: Constant<Bits<16>>,
@@ -115,10 +135,38 @@ pub struct CfbLane<const A: usize> {
     /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
     slab_lo: Constant<Bits<16>>,
     slab_hi: Constant<Bits<16>>,
-    dx_pos: Constant<Bit>,
-    dx_neg: Constant<Bit>,
-    dy_pos: Constant<Bit>,
-    dy_neg: Constant<Bit>,
+    perspective: Constant<Bit>,
+    neg_ex: Constant<Bits<64>>,
+    neg_ey: Constant<Bits<64>>,
+    neg_ez: Constant<Bits<64>>,
+    frac: Constant<Bits<8>>,
+    one: Constant<Bits<32>>,
+    par_dx_neg: Constant<Bit>,
+    par_dx_mag: Constant<Bits<32>>,
+    par_dy_neg: Constant<Bit>,
+    par_dy_mag: Constant<Bits<32>>,
+    div_x: Divider,
+    div_y: Divider,
+    sx: Signal<Local, Bits<64>>,
+    sy: Signal<Local, Bits<64>>,
+    sz: Signal<Local, Bits<64>>,
+    sx_mag: Signal<Local, Bits<64>>,
+    sy_mag: Signal<Local, Bits<64>>,
+    sz_mag: Signal<Local, Bits<64>>,
+    dxn: Signal<Local, Bit>,
+    dxm: Signal<Local, Bits<32>>,
+    dyn_: Signal<Local, Bit>,
+    dym: Signal<Local, Bits<32>>,
+    inval: Signal<Local, Bit>,
+    dx_pos: Signal<Local, Bit>,
+    dx_neg_nz: Signal<Local, Bit>,
+    dy_pos: Signal<Local, Bit>,
+    dy_neg_nz: Signal<Local, Bit>,
+    dxn_q: DFF<Bit>,
+    dxm_q: DFF<Bits<16>>,
+    dyn_q: DFF<Bit>,
+    dym_q: DFF<Bits<16>>,
+    inval_q: DFF<Bit>,
     xc: Signal<Local, Bits<16>>,
     u: Signal<Local, Bits<16>>,
     v: Signal<Local, Bits<16>>,
@@ -165,6 +213,11 @@ impl<const A: usize> CfbLane<A> {
             face: Default::default(),
             base_x: Default::default(),
             base_y: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
+            invalid: Default::default(),
             memory: Default::default(),
             lane: Constant::new(bits16(k)),
             p_mask: Constant::new(bits16(p - 1)),
@@ -182,10 +235,38 @@ impl<const A: usize> CfbLane<A> {
             b_u: Constant::new(bits16(c.b_u)),
             slab_lo: Constant::new(bits16(slab & 0xffff)),
             slab_hi: Constant::new(bits16(slab >> 16)),
-            dx_pos: Constant::new(c.dx > 0),
-            dx_neg: Constant::new(c.dx < 0),
-            dy_pos: Constant::new(c.dy > 0),
-            dy_neg: Constant::new(c.dy < 0),
+            perspective: Constant::new(c.eye.is_some()),
+            neg_ex: Constant::new((c.eye.map_or(0, |e| e[0]).wrapping_neg() as u64).to_bits()),
+            neg_ey: Constant::new((c.eye.map_or(0, |e| e[1]).wrapping_neg() as u64).to_bits()),
+            neg_ez: Constant::new((c.eye.map_or(0, |e| e[2]).wrapping_neg() as u64).to_bits()),
+            frac: Constant::new((c.frac as u64).to_bits()),
+            one: Constant::new((1u64 << c.frac).to_bits()),
+            par_dx_neg: Constant::new(c.dx < 0),
+            par_dx_mag: Constant::new((c.dx.unsigned_abs() as u64).to_bits()),
+            par_dy_neg: Constant::new(c.dy < 0),
+            par_dy_mag: Constant::new((c.dy.unsigned_abs() as u64).to_bits()),
+            div_x: Default::default(),
+            div_y: Default::default(),
+            sx: Default::default(),
+            sy: Default::default(),
+            sz: Default::default(),
+            sx_mag: Default::default(),
+            sy_mag: Default::default(),
+            sz_mag: Default::default(),
+            dxn: Default::default(),
+            dxm: Default::default(),
+            dyn_: Default::default(),
+            dym: Default::default(),
+            inval: Default::default(),
+            dx_pos: Default::default(),
+            dx_neg_nz: Default::default(),
+            dy_pos: Default::default(),
+            dy_neg_nz: Default::default(),
+            dxn_q: Default::default(),
+            dxm_q: Default::default(),
+            dyn_q: Default::default(),
+            dym_q: Default::default(),
+            inval_q: Default::default(),
             xc: Default::default(),
             u: Default::default(),
             v: Default::default(),
@@ -213,7 +294,10 @@ impl<const A: usize> CfbLane<A> {
 impl<const A: usize> Logic for CfbLane<A> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q);
+        dff_setup!(
+            self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
+            dxm_q, dyn_q, dym_q, inval_q
+        );
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
         self.memory.write_enable.next =
@@ -255,6 +339,70 @@ impl<const A: usize> Logic for CfbLane<A> {
             self.addr.next = 0.into();
         }
         self.memory.read_address.next = bit_cast::<A, 32>(self.addr.val());
+        // Sight-ray increments: frame registers, or the per-voxel divider.
+        self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.neg_ex.val();
+        self.sy.next =
+            (bit_cast::<64, 16>(self.n_beam.val()) << self.frac.val()) + self.neg_ey.val();
+        self.sz.next = (bit_cast::<64, 16>(self.n_s.val()) << self.frac.val()) + self.neg_ez.val();
+        self.sx_mag.next = self.sx.val();
+        if self.sx.val().get_bit(63) {
+            self.sx_mag.next = 0 - self.sx.val();
+        }
+        self.sy_mag.next = self.sy.val();
+        if self.sy.val().get_bit(63) {
+            self.sy_mag.next = 0 - self.sy.val();
+        }
+        self.sz_mag.next = self.sz.val();
+        if self.sz.val().get_bit(63) {
+            self.sz_mag.next = 0 - self.sz.val();
+        }
+        self.div_x.num.next = (self.sx_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
+        self.div_x.den.next = self.sz_mag.val();
+        self.div_y.num.next = (self.sy_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
+        self.div_y.den.next = self.sz_mag.val();
+        self.dxn.next = self.par_dx_neg.val();
+        self.dxm.next = self.par_dx_mag.val();
+        self.dyn_.next = self.par_dy_neg.val();
+        self.dym.next = self.par_dy_mag.val();
+        self.inval.next = false;
+        if self.perspective.val() {
+            self.dxn.next = self.sx.val().get_bit(63) ^ self.sz.val().get_bit(63);
+            self.dyn_.next = self.sy.val().get_bit(63) ^ self.sz.val().get_bit(63);
+            self.dxm.next = self.div_x.q.val();
+            self.dym.next = self.div_y.q.val();
+            self.inval.next = (self.sz_mag.val() == 0)
+                | self.div_x.overflow.val()
+                | self.div_y.overflow.val()
+                | (self.div_x.q.val() > self.one.val())
+                | (self.div_y.q.val() > self.one.val());
+            if self.inval.val() {
+                // Saturate to the 3x3 region: sign(S_x) * sign(S_z).
+                self.dxm.next = 0.into();
+                if (self.sx_mag.val() != 0) & (self.sz_mag.val() != 0) {
+                    self.dxm.next = self.one.val();
+                }
+                self.dym.next = 0.into();
+                if (self.sy_mag.val() != 0) & (self.sz_mag.val() != 0) {
+                    self.dym.next = self.one.val();
+                }
+            }
+        }
+        if self.dxm.val() == 0 {
+            self.dxn.next = false;
+        }
+        if self.dym.val() == 0 {
+            self.dyn_.next = false;
+        }
+        if self.is_pad.val() {
+            self.dxm.next = 0.into();
+            self.dym.next = 0.into();
+            self.dxn.next = false;
+            self.dyn_.next = false;
+        }
+        self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
+        self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
+        self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
+        self.dy_neg_nz.next = self.dyn_.val() & (self.dym.val() != 0);
         // Exit face and base-plane address.
         self.face_c.next = 0.into();
         self.depth.next = self.z1.val() - self.n_s.val();
@@ -263,13 +411,13 @@ impl<const A: usize> Logic for CfbLane<A> {
         if (self.xc.val() == self.nx_last.val()) & self.dx_pos.val() {
             self.face_c.next = 2.into();
             self.bx.next = self.border.val() + self.xc.val() + self.depth.val();
-        } else if (self.xc.val() == 0) & self.dx_neg.val() {
+        } else if (self.xc.val() == 0) & self.dx_neg_nz.val() {
             self.face_c.next = 3.into();
             self.bx.next = self.border.val() - self.depth.val();
         } else if (self.n_beam.val() == self.ny_last.val()) & self.dy_pos.val() {
             self.face_c.next = 4.into();
             self.by.next = self.border.val() + self.n_beam.val() + self.depth.val();
-        } else if (self.n_beam.val() == 0) & self.dy_neg.val() {
+        } else if (self.n_beam.val() == 0) & self.dy_neg_nz.val() {
             self.face_c.next = 5.into();
             self.by.next = self.border.val() - self.depth.val();
         }
@@ -278,7 +426,7 @@ impl<const A: usize> Logic for CfbLane<A> {
             self.bx.next = self.border.val() + self.xc.val();
             self.by.next = self.border.val() + self.n_beam.val();
         }
-        if self.is_pad.val() {
+        if self.is_pad.val() | self.inval.val() {
             self.face_c.next = 0.into();
         }
         if self.face_c.val() == 0 {
@@ -301,6 +449,11 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.face_q.d.next = self.face_c.val();
         self.bx_q.d.next = self.bx.val();
         self.by_q.d.next = self.by.val();
+        self.dxn_q.d.next = self.dxn.val();
+        self.dxm_q.d.next = bit_cast::<16, 32>(self.dxm.val());
+        self.dyn_q.d.next = self.dyn_.val();
+        self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
+        self.inval_q.d.next = self.inval.val() | self.is_pad.val();
         // Outputs: registered control beside the RAM's registered read.
         self.value.next = self.memory.read_data.val();
         if self.pad_q.q.val() {
@@ -317,6 +470,11 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.face.next = self.face_q.q.val();
         self.base_x.next = self.bx_q.q.val();
         self.base_y.next = self.by_q.q.val();
+        self.dx_neg.next = self.dxn_q.q.val();
+        self.dx_mag.next = self.dxm_q.q.val();
+        self.dy_neg.next = self.dyn_q.q.val();
+        self.dy_mag.next = self.dym_q.q.val();
+        self.invalid.next = self.inval_q.q.val();
     }
 }
 

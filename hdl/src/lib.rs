@@ -11,6 +11,7 @@ pub mod abc_gradient;
 pub mod bilinear;
 pub mod cfb;
 pub mod compositor;
+pub mod divider;
 pub mod pipeline;
 pub mod shader;
 pub mod sim;
