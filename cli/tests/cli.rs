@@ -295,12 +295,12 @@ fn sim_shaded_scene_matches() {
 #[test]
 fn sim_refuses_what_the_rtl_cannot_do() {
     let d = tempfile::tempdir().unwrap();
-    let persp = write(
+    let xray = write(
         d.path(),
         "a.json",
-        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "perspective", "eye": [6, 6, -20]}, "image": [16, 16]}"#,
+        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "parallel"}, "mode": "xray", "image": [16, 16]}"#,
     );
-    assert_clean_error(&cube(&["sim", "--scene", &persp], d.path()), "divider");
+    assert_clean_error(&cube(&["sim", "--scene", &xray], d.path()), "X-ray");
     let big = write(
         d.path(),
         "b.json",

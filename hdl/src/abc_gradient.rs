@@ -36,6 +36,11 @@ pub struct AbcGradient<const H: usize> {
     pub x: Signal<In, Bits<16>>,
     pub y: Signal<In, Bits<16>>,
     pub pad: Signal<In, Bit>,
+    pub invalid: Signal<In, Bit>,
+    pub dx_neg: Signal<In, Bit>,
+    pub dx_mag: Signal<In, Bits<16>>,
+    pub dy_neg: Signal<In, Bit>,
+    pub dy_mag: Signal<In, Bits<16>>,
     pub sr: Signal<In, Bit>,
     pub er: Signal<In, Bit>,
     pub at_edge: Signal<In, Bit>,
@@ -64,6 +69,11 @@ pub struct AbcGradient<const H: usize> {
     pub o_x: Signal<Out, Bits<16>>,
     pub o_y: Signal<Out, Bits<16>>,
     pub o_pad: Signal<Out, Bit>,
+    pub o_invalid: Signal<Out, Bit>,
+    pub o_dx_neg: Signal<Out, Bit>,
+    pub o_dx_mag: Signal<Out, Bits<16>>,
+    pub o_dy_neg: Signal<Out, Bit>,
+    pub o_dy_mag: Signal<Out, Bits<16>>,
     pub o_sr: Signal<Out, Bit>,
     pub o_er: Signal<Out, Bit>,
     pub o_edge: Signal<Out, Bit>,
@@ -119,6 +129,11 @@ impl<const H: usize> AbcGradient<H> {
             x: Default::default(),
             y: Default::default(),
             pad: Default::default(),
+            invalid: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
             sr: Default::default(),
             er: Default::default(),
             at_edge: Default::default(),
@@ -142,6 +157,11 @@ impl<const H: usize> AbcGradient<H> {
             o_x: Default::default(),
             o_y: Default::default(),
             o_pad: Default::default(),
+            o_invalid: Default::default(),
+            o_dx_neg: Default::default(),
+            o_dx_mag: Default::default(),
+            o_dy_neg: Default::default(),
+            o_dy_mag: Default::default(),
             o_sr: Default::default(),
             o_er: Default::default(),
             o_edge: Default::default(),
@@ -205,12 +225,17 @@ impl<const H: usize> Logic for AbcGradient<H> {
             | (bit_cast::<128, 16>(self.y.val()) << 32)
             | (bit_cast::<128, 16>(self.base_x.val()) << 48)
             | (bit_cast::<128, 16>(self.base_y.val()) << 64)
-            | (bit_cast::<128, 3>(self.face.val()) << 85);
+            | (bit_cast::<128, 3>(self.face.val()) << 85)
+            | (bit_cast::<128, 16>(self.dx_mag.val()) << 89)
+            | (bit_cast::<128, 16>(self.dy_mag.val()) << 106);
         self.word.next = self.word.val().replace_bit(80, self.valid.val());
         self.word.next = self.word.val().replace_bit(81, self.pad.val());
         self.word.next = self.word.val().replace_bit(82, self.sr.val());
         self.word.next = self.word.val().replace_bit(83, self.er.val());
         self.word.next = self.word.val().replace_bit(84, self.at_edge.val());
+        self.word.next = self.word.val().replace_bit(88, self.dx_neg.val());
+        self.word.next = self.word.val().replace_bit(105, self.dy_neg.val());
+        self.word.next = self.word.val().replace_bit(122, self.invalid.val());
         self.centre.write_address.next = self.now.val();
         self.centre.write_data.next = self.word.val();
         self.centre.write_enable.next = true;
@@ -290,5 +315,10 @@ impl<const H: usize> Logic for AbcGradient<H> {
         self.o_er.next = self.centre.read_data.val().get_bit(83);
         self.o_edge.next = self.centre.read_data.val().get_bit(84);
         self.o_face.next = self.centre.read_data.val().get_bits::<3>(85);
+        self.o_dx_neg.next = self.centre.read_data.val().get_bit(88);
+        self.o_dx_mag.next = self.centre.read_data.val().get_bits::<16>(89);
+        self.o_dy_neg.next = self.centre.read_data.val().get_bit(105);
+        self.o_dy_mag.next = self.centre.read_data.val().get_bits::<16>(106);
+        self.o_invalid.next = self.centre.read_data.val().get_bit(122);
     }
 }

@@ -31,6 +31,10 @@ pub struct CfbConfig {
     pub dims: [u32; 3],
     pub z0: u32,
     pub z1: u32,
+    /// Slices streamed: `z0..=z1`, plus, for a gradient unit, the halo slices
+    /// z0 - 1 and z1 + 1 inside the dataset (streamed but not composited).
+    pub stream_z0: u32,
+    pub stream_z1: u32,
     /// Pipeline axis (0 = x, 1 = y, 2 = z) that holds dataset u, v and w.
     pub u_from: u32,
     pub v_from: u32,
@@ -66,6 +70,8 @@ impl CfbConfig {
             dims: sweep.dims.map(|n| n as u32),
             z0: sweep.z0 as u32,
             z1: sweep.z1 as u32,
+            stream_z0: sweep.z0 as u32,
+            stream_z1: sweep.z1 as u32,
             u_from: from(0),
             v_from: from(1),
             w_from: from(2),
@@ -76,6 +82,14 @@ impl CfbConfig {
             eye,
             frac: sweep.frac,
         })
+    }
+
+    /// Stream one halo slice beyond each end of the sweep that lies inside
+    /// the dataset, for the gradient unit's B and A slices.
+    pub fn with_halo(mut self) -> CfbConfig {
+        self.stream_z0 = self.z0.saturating_sub(1);
+        self.stream_z1 = (self.z1 + 1).min(self.dims[2] - 1);
+        self
     }
 }
 
@@ -111,6 +125,8 @@ pub struct CfbLane<const A: usize> {
     pub face: Signal<Out, Bits<3>>,
     pub base_x: Signal<Out, Bits<16>>,
     pub base_y: Signal<Out, Bits<16>>,
+    /// A halo slice (outside z0..=z1): streamed for gradients only.
+    pub halo: Signal<Out, Bit>,
     /// Sight-ray increments (sign and magnitude, 1.0 = 2^f) and the invalid bit.
     pub dx_neg: Signal<Out, Bit>,
     pub dx_mag: Signal<Out, Bits<16>>,
@@ -167,6 +183,7 @@ pub struct CfbLane<const A: usize> {
     dyn_q: DFF<Bit>,
     dym_q: DFF<Bits<16>>,
     inval_q: DFF<Bit>,
+    halo_q: DFF<Bit>,
     xc: Signal<Local, Bits<16>>,
     u: Signal<Local, Bits<16>>,
     v: Signal<Local, Bits<16>>,
@@ -213,6 +230,7 @@ impl<const A: usize> CfbLane<A> {
             face: Default::default(),
             base_x: Default::default(),
             base_y: Default::default(),
+            halo: Default::default(),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
             dy_neg: Default::default(),
@@ -267,6 +285,7 @@ impl<const A: usize> CfbLane<A> {
             dyn_q: Default::default(),
             dym_q: Default::default(),
             inval_q: Default::default(),
+            halo_q: Default::default(),
             xc: Default::default(),
             u: Default::default(),
             v: Default::default(),
@@ -296,7 +315,7 @@ impl<const A: usize> Logic for CfbLane<A> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
-            dxm_q, dyn_q, dym_q, inval_q
+            dxm_q, dyn_q, dym_q, inval_q, halo_q
         );
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
@@ -454,6 +473,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.dyn_q.d.next = self.dyn_.val();
         self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
         self.inval_q.d.next = self.inval.val() | self.is_pad.val();
+        self.halo_q.d.next = (self.n_s.val() < self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.
         self.value.next = self.memory.read_data.val();
         if self.pad_q.q.val() {
@@ -475,6 +495,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.dy_neg.next = self.dyn_q.q.val();
         self.dy_mag.next = self.dym_q.q.val();
         self.invalid.next = self.inval_q.q.val();
+        self.halo.next = self.halo_q.q.val();
     }
 }
 
@@ -508,6 +529,12 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub base_y: [Signal<Out, Bits<16>>; P],
     pub face: [Signal<Out, Bits<3>>; P],
     pub at_edge: [Signal<Out, Bit>; P],
+    pub invalid: [Signal<Out, Bit>; P],
+    pub halo: [Signal<Out, Bit>; P],
+    pub dx_neg: [Signal<Out, Bit>; P],
+    pub dx_mag: [Signal<Out, Bits<16>>; P],
+    pub dy_neg: [Signal<Out, Bit>; P],
+    pub dy_mag: [Signal<Out, Bits<16>>; P],
     pub lanes: [CfbLane<A>; P],
     running: DFF<Bit>,
     ns_c: DFF<Bits<16>>,
@@ -550,6 +577,12 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             base_y: std::array::from_fn(|_| Default::default()),
             face: std::array::from_fn(|_| Default::default()),
             at_edge: std::array::from_fn(|_| Default::default()),
+            invalid: std::array::from_fn(|_| Default::default()),
+            halo: std::array::from_fn(|_| Default::default()),
+            dx_neg: std::array::from_fn(|_| Default::default()),
+            dx_mag: std::array::from_fn(|_| Default::default()),
+            dy_neg: std::array::from_fn(|_| Default::default()),
+            dy_mag: std::array::from_fn(|_| Default::default()),
             lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
             running: Default::default(),
             ns_c: Default::default(),
@@ -559,8 +592,8 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             ns_q: Default::default(),
             nbeam_q: Default::default(),
             nb_q: Default::default(),
-            z0: Constant::new(bits16(c.z0)),
-            z1: Constant::new(bits16(c.z1)),
+            z0: Constant::new(bits16(c.stream_z0)),
+            z1: Constant::new(bits16(c.stream_z1)),
             ny_last: Constant::new(bits16(c.dims[1] - 1)),
             b_last: Constant::new(bits16(b - 1)),
         }
@@ -590,6 +623,12 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.base_y[k].next = self.lanes[k].base_y.val();
             self.face[k].next = self.lanes[k].face.val();
             self.at_edge[k].next = self.lanes[k].at_edge.val();
+            self.invalid[k].next = self.lanes[k].invalid.val();
+            self.halo[k].next = self.lanes[k].halo.val();
+            self.dx_neg[k].next = self.lanes[k].dx_neg.val();
+            self.dx_mag[k].next = self.lanes[k].dx_mag.val();
+            self.dy_neg[k].next = self.lanes[k].dy_neg.val();
+            self.dy_mag[k].next = self.lanes[k].dy_mag.val();
         }
         // The address generator: N_b fastest, then N_B, then N_s.
         if self.start.val() & !self.running.q.val() {

@@ -1,33 +1,33 @@
-//! The Cube-4L rendering pipelines (§3, Figs. 4, 6, 18-21) for parallel
-//! views of scenes without gradients: the CFB feeds `P` pipelines, each with a
-//! shader, a compositing-buffer history, the bilinear unit and the compositing
-//! unit. Pipelines talk only to their nearest neighbours.
+//! The Cube-4L rendering pipelines (§3, Figs. 4, 6, 18-21): the CFB feeds
+//! `P` pipelines, each with the ABC gradient unit (when the scene shades), a
+//! shader, a compositing-buffer history, the bilinear unit and the
+//! compositing unit. Pipelines talk only to their nearest neighbours.
 //!
 //! **Compositing buffer and neighbourhood.** Let R(t, j) be the value lane j
 //! composited at beat t, S = n_y*b the beats of a slice and B = b those of a
-//! beam. By the skew, the cells of the previous slice around voxel (x, y, z)
-//! of lane k at beat t are:
+//! beam. By the skew, cell (x + e_x, y + e_y) of the previous slice, for
+//! voxel (x, y, z) of lane k at beat t, was composited by lane
+//! k - 1 + e_x + e_y at beat t - S + e_y*B, one beat earlier or later when
+//! e_x crosses a partial-beam end (x mod P = 0 with e_x = -1, x mod P = P-1
+//! with e_x = +1). Each lane keeps its results in a ring buffer of block RAM
+//! (one copy per tap, one read port each). The nine taps of the 3x3 region
+//! hop to the consuming lane through one register per neighbour link
+//! (m = 1 - e_x - e_y links; tap (+1, +1) takes one leftward link), and each
+//! tap keeps its previous value for the partial-beam case (the extension
+//! units of Figs. 14-15). The signs of the voxel's dx and dy then narrow the
+//! 3x3 region to 2x2 (Figs. 19-21). Cells outside the slice, and every cell at
+//! the start of a ray (SR), read as the reset value.
 //!
-//! | cell | lane | beat |
-//! |---|---|---|
-//! | (x, y) | k-1 | t - S |
-//! | (x-1, y) / (x+1, y) | k-2 / k | t - S - [x mod P = 0] / t - S + [x mod P = P-1] |
-//! | (x, y-1) / (x, y+1) | k-2 / k | t - S - B / t - S + B |
-//! | diagonals | k-3, k-1, k+1 | combinations of the above |
+//! **Timing.** Shader input at T-1 (the CFB's output, or the gradient unit's a
+//! slice later), shader register at T, gather and bilinear T..T+2, compositor
+//! register at T+3, where the result is written to the ring buffer and, on
+//! ER, goes out as a base-plane pixel. A tap needs delay > hops + 4, i.e.
+//! (n_y - 1) * b >= 9.
 //!
-//! Parallel views have constant signs of dx and dy, so only the 2x2 cells they
-//! select are fetched (the 3x3 network is needed only with the perspective
-//! divider). Each lane keeps its results in a ring buffer of block RAM (one
-//! copy per tap, one read port each). A tap read at lane j hops to lane k
-//! through one register per neighbour link, so it is read that many clocks
-//! early. Each tap also keeps its previous value for the partial-beam
-//! boundary cases (the extension units of Figs. 14-15). Cells outside the
-//! slice, and every cell at the start of a ray (SR), read as the reset value.
-//!
-//! **Timing.** CFB output at T-1, shader register at T, gather and bilinear
-//! T..T+2, compositor register at T+3, where the result is written to the
-//! ring buffer and, on ER, goes out as a base-plane pixel. A tap needs
-//! D > hops + 4, i.e. (n_y - 1) * b >= 9.
+//! Units a scene does not need are disabled by constants (so synthesis removes
+//! them) and get empty tables: the gradient unit and reflectance map without
+//! shading, and the divider and the five taps outside the 2x2 region selected
+//! by constant signs for parallel views.
 
 use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
@@ -38,14 +38,27 @@ use golden_model::plan::Sweep;
 use golden_model::scene::Mode;
 use rust_hdl::prelude::*;
 
-/// Where one tap of the 2x2 neighbourhood comes from.
+/// The taps' `(e_x, e_y)` offsets, in the order of the lane's `t0..t8`.
+pub const TAPS: [(i32, i32); 9] = [
+    (0, 0),
+    (-1, 0),
+    (1, 0),
+    (0, -1),
+    (0, 1),
+    (-1, -1),
+    (1, -1),
+    (-1, 1),
+    (1, 1),
+];
+
+/// Where one tap of the 3x3 neighbourhood comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Tap {
     /// Neighbour links the value crosses, each from lane j to lane j+1;
     /// with `left`, one link from lane k+1 to lane k instead.
     pub hops: u32,
     pub left: bool,
-    /// Beat delay of the tap stream.
+    /// Beat delay of the tap stream (its previous value is one beat older).
     pub delay: u32,
 }
 
@@ -54,10 +67,7 @@ pub struct Tap {
 pub struct PipelineConfig {
     pub cfb: CfbConfig,
     pub p: u32,
-    pub taps: [Tap; 4],
-    /// The x neighbour is x-1 (dx >= 0) or x+1; likewise y.
-    pub sx_pos: bool,
-    pub sy_pos: bool,
+    pub taps: [Tap; 9],
     pub frac_bits: u32,
     pub rgba_bits: u32,
     pub order: golden_model::plan::Order,
@@ -77,6 +87,11 @@ impl PipelineConfig {
         shader: &golden_model::shader::Shader,
     ) -> Result<PipelineConfig, String> {
         let cfb = CfbConfig::from_sweep(sweep, vol_dims, p)?;
+        let cfb = if shader.needs_gradient {
+            cfb.with_halo()
+        } else {
+            cfb
+        };
         let pu = p as u32;
         let b = cfb.dims[0].div_ceil(pu);
         let s = cfb.dims[1] * b;
@@ -86,10 +101,9 @@ impl PipelineConfig {
                 cfb.dims[1]
             ));
         }
-        let sx_pos = cfb.dx >= 0;
-        let sy_pos = cfb.dy >= 0;
-        let tap = |m: i32, delay: u32| {
-            let hops = m.rem_euclid(pu as i32) as u32;
+        let taps = TAPS.map(|(ex, ey)| {
+            let m = 1 - ex - ey;
+            let delay = (s as i32 - ey * b as i32 - (ex == 1) as i32) as u32;
             if m == -1 && pu > 2 {
                 Tap {
                     hops: 1,
@@ -98,34 +112,16 @@ impl PipelineConfig {
                 }
             } else {
                 Tap {
-                    hops,
+                    hops: m.rem_euclid(pu as i32) as u32,
                     left: false,
                     delay,
                 }
             }
-        };
-        let bb = b;
-        let taps = [
-            tap(1, s),
-            if sx_pos { tap(2, s) } else { tap(0, s - 1) },
-            if sy_pos {
-                tap(2, s + bb)
-            } else {
-                tap(0, s - bb)
-            },
-            match (sx_pos, sy_pos) {
-                (true, true) => tap(3, s + bb),
-                (true, false) => tap(1, s - bb),
-                (false, true) => tap(1, s + bb - 1),
-                (false, false) => tap(-1, s - bb - 1),
-            },
-        ];
+        });
         Ok(PipelineConfig {
             cfb,
             p: pu,
             taps,
-            sx_pos,
-            sy_pos,
             frac_bits: sweep.frac,
             rgba_bits: shader.rgba_bits,
             order: sweep.order,
@@ -138,13 +134,38 @@ impl PipelineConfig {
 
     /// Smallest ring-buffer address width that holds every tap's delay.
     pub fn history_bits(&self) -> usize {
-        let need = self
+        let taps = self
             .taps
             .iter()
             .map(|t| t.delay + t.hops + 8)
             .max()
             .unwrap();
+        let abc = if self.gradient {
+            2 * self.slice_beats + self.beam_beats + 8
+        } else {
+            0
+        };
+        let need = taps.max(abc);
         (32 - need.leading_zeros()) as usize
+    }
+
+    /// The units this scene's hardware leaves out.
+    pub fn left_out(&self, mode: Mode) -> Vec<&'static str> {
+        let mut v = Vec::new();
+        if !self.gradient {
+            v.push("abc_gradient");
+        }
+        if !(self.gradient && mode.uses_colour()) {
+            v.push("reflectance_map");
+        }
+        if self.cfb.eye.is_none() {
+            v.push("sight_ray_divider");
+            v.push("3x3_neighbourhood (2x2 by constant signs)");
+        }
+        if matches!(mode, Mode::Mip | Mode::Minip) {
+            v.push("colour_and_opacity_luts");
+        }
+        v
     }
 }
 
@@ -164,12 +185,18 @@ pub struct PipeLane<const H: usize> {
     pub x: Signal<In, Bits<16>>,
     pub y: Signal<In, Bits<16>>,
     pub pad: Signal<In, Bit>,
+    pub invalid: Signal<In, Bit>,
+    pub halo: Signal<In, Bit>,
     pub sr: Signal<In, Bit>,
     pub er: Signal<In, Bit>,
     pub base_x: Signal<In, Bits<16>>,
     pub base_y: Signal<In, Bits<16>>,
     pub face: Signal<In, Bits<3>>,
     pub at_edge: Signal<In, Bit>,
+    pub dx_neg: Signal<In, Bit>,
+    pub dx_mag: Signal<In, Bits<16>>,
+    pub dy_neg: Signal<In, Bit>,
+    pub dy_mag: Signal<In, Bits<16>>,
     /// ABC gradient links (see `AbcGradient`).
     pub g_from_left_xm: Signal<In, Bits<16>>,
     pub g_from_left_ym: Signal<In, Bits<16>>,
@@ -183,29 +210,34 @@ pub struct PipeLane<const H: usize> {
     pub g_to_left_xp: Signal<Out, Bits<16>>,
     pub g_to_left_yp: Signal<Out, Bits<16>>,
     pub g_to_left_zp: Signal<Out, Bits<16>>,
-    /// Ring-buffer reads (hop 0) and forwarding registers, to the neighbours.
-    pub ram0: Signal<Out, Bits<64>>,
-    pub ram1: Signal<Out, Bits<64>>,
-    pub ram2: Signal<Out, Bits<64>>,
-    pub ram3: Signal<Out, Bits<64>>,
-    pub fwd0a: Signal<Out, Bits<64>>,
-    pub fwd1a: Signal<Out, Bits<64>>,
-    pub fwd1b: Signal<Out, Bits<64>>,
-    pub fwd2a: Signal<Out, Bits<64>>,
-    pub fwd2b: Signal<Out, Bits<64>>,
-    pub fwd3a: Signal<Out, Bits<64>>,
-    pub fwd3b: Signal<Out, Bits<64>>,
-    /// From the neighbour: `in_c_s` feeds hop s+1 of tap c.
-    pub in0a: Signal<In, Bits<64>>,
-    pub in1a: Signal<In, Bits<64>>,
-    pub in1b: Signal<In, Bits<64>>,
-    pub in2a: Signal<In, Bits<64>>,
-    pub in2b: Signal<In, Bits<64>>,
-    pub in3a: Signal<In, Bits<64>>,
-    pub in3b: Signal<In, Bits<64>>,
-    pub in3c: Signal<In, Bits<64>>,
-    /// From the right neighbour (lane k+1), for the leftward tap.
-    pub in3l: Signal<In, Bits<64>>,
+    /// Compositing-buffer taps: `tC s0` is tap C's ring-buffer read, `tC sJ`
+    /// its value after J links (passed on), `tC iJ` the input of its J-th
+    /// link register (from lane k-1), `t8il` tap 8's leftward link (from k+1).
+    pub t0s0: Signal<Out, Bits<64>>,
+    pub t0i1: Signal<In, Bits<64>>,
+    pub t1s0: Signal<Out, Bits<64>>,
+    pub t1s1: Signal<Out, Bits<64>>,
+    pub t1i1: Signal<In, Bits<64>>,
+    pub t1i2: Signal<In, Bits<64>>,
+    pub t2s0: Signal<Out, Bits<64>>,
+    pub t3s0: Signal<Out, Bits<64>>,
+    pub t3s1: Signal<Out, Bits<64>>,
+    pub t3i1: Signal<In, Bits<64>>,
+    pub t3i2: Signal<In, Bits<64>>,
+    pub t4s0: Signal<Out, Bits<64>>,
+    pub t5s0: Signal<Out, Bits<64>>,
+    pub t5s1: Signal<Out, Bits<64>>,
+    pub t5s2: Signal<Out, Bits<64>>,
+    pub t5i1: Signal<In, Bits<64>>,
+    pub t5i2: Signal<In, Bits<64>>,
+    pub t5i3: Signal<In, Bits<64>>,
+    pub t6s0: Signal<Out, Bits<64>>,
+    pub t6i1: Signal<In, Bits<64>>,
+    pub t7s0: Signal<Out, Bits<64>>,
+    pub t7i1: Signal<In, Bits<64>>,
+    pub t8s0: Signal<Out, Bits<64>>,
+    pub t8i1: Signal<In, Bits<64>>,
+    pub t8il: Signal<In, Bits<64>>,
     /// The composited value of this lane's voxel (T+3): `res_beat` marks a
     /// beat, `res_valid` one that is not padding.
     pub res_beat: Signal<Out, Bit>,
@@ -226,42 +258,96 @@ pub struct PipeLane<const H: usize> {
     st_x: Signal<Local, Bits<16>>,
     st_y: Signal<Local, Bits<16>>,
     st_pad: Signal<Local, Bit>,
+    st_invalid: Signal<Local, Bit>,
     st_sr: Signal<Local, Bit>,
     st_er: Signal<Local, Bit>,
     st_edge: Signal<Local, Bit>,
     st_face: Signal<Local, Bits<3>>,
     st_bx: Signal<Local, Bits<16>>,
     st_by: Signal<Local, Bits<16>>,
+    st_dxn: Signal<Local, Bit>,
+    st_dxm: Signal<Local, Bits<16>>,
+    st_dyn: Signal<Local, Bit>,
+    st_dym: Signal<Local, Bits<16>>,
     shader: Shader,
     ring0: RAM<Bits<64>, H>,
+    f0_1: DFF<Bits<64>>,
+    s0: Signal<Local, Bits<64>>,
+    a0: Signal<Local, Bits<64>>,
+    prev0: DFF<Bits<64>>,
+    hops0: Constant<Bits<2>>,
+    off0: Constant<Bits<H>>,
     ring1: RAM<Bits<64>, H>,
-    ring2: RAM<Bits<64>, H>,
-    ring3: RAM<Bits<64>, H>,
-    f0a: DFF<Bits<64>>,
-    f1a: DFF<Bits<64>>,
-    f1b: DFF<Bits<64>>,
-    f2a: DFF<Bits<64>>,
-    f2b: DFF<Bits<64>>,
-    f3a: DFF<Bits<64>>,
-    f3b: DFF<Bits<64>>,
-    f3c: DFF<Bits<64>>,
-    f3l: DFF<Bits<64>>,
+    f1_1: DFF<Bits<64>>,
+    f1_2: DFF<Bits<64>>,
+    s1: Signal<Local, Bits<64>>,
+    a1: Signal<Local, Bits<64>>,
     prev1: DFF<Bits<64>>,
+    hops1: Constant<Bits<2>>,
+    off1: Constant<Bits<H>>,
+    ring2: RAM<Bits<64>, H>,
+    s2: Signal<Local, Bits<64>>,
+    a2: Signal<Local, Bits<64>>,
+    prev2: DFF<Bits<64>>,
+    hops2: Constant<Bits<2>>,
+    off2: Constant<Bits<H>>,
+    ring3: RAM<Bits<64>, H>,
+    f3_1: DFF<Bits<64>>,
+    f3_2: DFF<Bits<64>>,
+    s3: Signal<Local, Bits<64>>,
+    a3: Signal<Local, Bits<64>>,
     prev3: DFF<Bits<64>>,
-    t0: Signal<Local, Bits<64>>,
-    t1: Signal<Local, Bits<64>>,
-    t2: Signal<Local, Bits<64>>,
-    t3: Signal<Local, Bits<64>>,
+    hops3: Constant<Bits<2>>,
+    off3: Constant<Bits<H>>,
+    ring4: RAM<Bits<64>, H>,
+    s4: Signal<Local, Bits<64>>,
+    a4: Signal<Local, Bits<64>>,
+    prev4: DFF<Bits<64>>,
+    hops4: Constant<Bits<2>>,
+    off4: Constant<Bits<H>>,
+    ring5: RAM<Bits<64>, H>,
+    f5_1: DFF<Bits<64>>,
+    f5_2: DFF<Bits<64>>,
+    f5_3: DFF<Bits<64>>,
+    s5: Signal<Local, Bits<64>>,
+    a5: Signal<Local, Bits<64>>,
+    prev5: DFF<Bits<64>>,
+    hops5: Constant<Bits<2>>,
+    off5: Constant<Bits<H>>,
+    ring6: RAM<Bits<64>, H>,
+    f6_1: DFF<Bits<64>>,
+    s6: Signal<Local, Bits<64>>,
+    a6: Signal<Local, Bits<64>>,
+    prev6: DFF<Bits<64>>,
+    hops6: Constant<Bits<2>>,
+    off6: Constant<Bits<H>>,
+    ring7: RAM<Bits<64>, H>,
+    f7_1: DFF<Bits<64>>,
+    s7: Signal<Local, Bits<64>>,
+    a7: Signal<Local, Bits<64>>,
+    prev7: DFF<Bits<64>>,
+    hops7: Constant<Bits<2>>,
+    off7: Constant<Bits<H>>,
+    ring8: RAM<Bits<64>, H>,
+    f8_1: DFF<Bits<64>>,
+    s8: Signal<Local, Bits<64>>,
+    a8: Signal<Local, Bits<64>>,
+    prev8: DFF<Bits<64>>,
+    hops8: Constant<Bits<2>>,
+    off8: Constant<Bits<H>>,
+    f8l: DFF<Bits<64>>,
+    left8: Constant<Bit>,
+    first: Signal<Local, Bit>,
+    last: Signal<Local, Bit>,
     c00: Signal<Local, Bits<64>>,
     c10: Signal<Local, Bits<64>>,
     c01: Signal<Local, Bits<64>>,
     c11: Signal<Local, Bits<64>>,
     x_out: Signal<Local, Bit>,
     y_out: Signal<Local, Bit>,
-    use_prev: Signal<Local, Bit>,
     bilinear: Bilinear,
     compositor: Compositor,
-    // Control delayed from the CFB (T-1) to T, and on to T+3.
+    // Control delayed from the shader input (T-1) to T, and on to T+3.
     v_q: [DFF<Bit>; 4],
     er_q: [DFF<Bit>; 4],
     pad_q: [DFF<Bit>; 4],
@@ -271,29 +357,20 @@ pub struct PipeLane<const H: usize> {
     x_q: DFF<Bits<16>>,
     y_q: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
+    dxn_q: DFF<Bit>,
+    dxm_q: DFF<Bits<16>>,
+    dyn_q: DFF<Bit>,
+    dym_q: DFF<Bits<16>>,
     // The shader's sample delayed from T to T+2.
     s_r: [DFF<Bits<16>>; 2],
     s_g: [DFF<Bits<16>>; 2],
     s_b: [DFF<Bits<16>>; 2],
     s_a: [DFF<Bits<16>>; 2],
     s_v: [DFF<Bit>; 2],
-    hops0: Constant<Bits<2>>,
-    hops1: Constant<Bits<2>>,
-    hops2: Constant<Bits<2>>,
-    hops3: Constant<Bits<2>>,
-    left3: Constant<Bit>,
-    off0: Constant<Bits<H>>,
-    off1: Constant<Bits<H>>,
-    off2: Constant<Bits<H>>,
-    off3: Constant<Bits<H>>,
-    sx_pos: Constant<Bit>,
-    sy_pos: Constant<Bit>,
     p_mask: Constant<Bits<16>>,
     nx_last: Constant<Bits<16>>,
     ny_last: Constant<Bits<16>>,
     reset: Constant<Bits<64>>,
-    wx: Constant<Bits<16>>,
-    wy: Constant<Bits<16>>,
 }
 
 impl<const H: usize> PipeLane<H> {
@@ -309,12 +386,18 @@ impl<const H: usize> PipeLane<H> {
             x: Default::default(),
             y: Default::default(),
             pad: Default::default(),
+            invalid: Default::default(),
+            halo: Default::default(),
             sr: Default::default(),
             er: Default::default(),
             base_x: Default::default(),
             base_y: Default::default(),
             face: Default::default(),
             at_edge: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
             g_from_left_xm: Default::default(),
             g_from_left_ym: Default::default(),
             g_from_left_zm: Default::default(),
@@ -327,26 +410,6 @@ impl<const H: usize> PipeLane<H> {
             g_to_left_xp: Default::default(),
             g_to_left_yp: Default::default(),
             g_to_left_zp: Default::default(),
-            ram0: Default::default(),
-            ram1: Default::default(),
-            ram2: Default::default(),
-            ram3: Default::default(),
-            fwd0a: Default::default(),
-            fwd1a: Default::default(),
-            fwd1b: Default::default(),
-            fwd2a: Default::default(),
-            fwd2b: Default::default(),
-            fwd3a: Default::default(),
-            fwd3b: Default::default(),
-            in0a: Default::default(),
-            in1a: Default::default(),
-            in1b: Default::default(),
-            in2a: Default::default(),
-            in2b: Default::default(),
-            in3a: Default::default(),
-            in3b: Default::default(),
-            in3c: Default::default(),
-            in3l: Default::default(),
             res_beat: Default::default(),
             res_valid: Default::default(),
             res: Default::default(),
@@ -361,39 +424,118 @@ impl<const H: usize> PipeLane<H> {
             st_x: Default::default(),
             st_y: Default::default(),
             st_pad: Default::default(),
+            st_invalid: Default::default(),
             st_sr: Default::default(),
             st_er: Default::default(),
             st_edge: Default::default(),
             st_face: Default::default(),
             st_bx: Default::default(),
             st_by: Default::default(),
+            st_dxn: Default::default(),
+            st_dxm: Default::default(),
+            st_dyn: Default::default(),
+            st_dym: Default::default(),
             shader,
+            t0s0: Default::default(),
+            t0i1: Default::default(),
+            t1s0: Default::default(),
+            t1s1: Default::default(),
+            t1i1: Default::default(),
+            t1i2: Default::default(),
+            t2s0: Default::default(),
+            t3s0: Default::default(),
+            t3s1: Default::default(),
+            t3i1: Default::default(),
+            t3i2: Default::default(),
+            t4s0: Default::default(),
+            t5s0: Default::default(),
+            t5s1: Default::default(),
+            t5s2: Default::default(),
+            t5i1: Default::default(),
+            t5i2: Default::default(),
+            t5i3: Default::default(),
+            t6s0: Default::default(),
+            t6i1: Default::default(),
+            t7s0: Default::default(),
+            t7i1: Default::default(),
+            t8s0: Default::default(),
+            t8i1: Default::default(),
+            t8il: Default::default(),
             ring0: Default::default(),
+            f0_1: Default::default(),
+            s0: Default::default(),
+            a0: Default::default(),
+            prev0: Default::default(),
+            hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
+            off0: Constant::new(off(&c.taps[0]).to_bits()),
             ring1: Default::default(),
-            ring2: Default::default(),
-            ring3: Default::default(),
-            f0a: Default::default(),
-            f1a: Default::default(),
-            f1b: Default::default(),
-            f2a: Default::default(),
-            f2b: Default::default(),
-            f3a: Default::default(),
-            f3b: Default::default(),
-            f3c: Default::default(),
-            f3l: Default::default(),
+            f1_1: Default::default(),
+            f1_2: Default::default(),
+            s1: Default::default(),
+            a1: Default::default(),
             prev1: Default::default(),
+            hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
+            off1: Constant::new(off(&c.taps[1]).to_bits()),
+            ring2: Default::default(),
+            s2: Default::default(),
+            a2: Default::default(),
+            prev2: Default::default(),
+            hops2: Constant::new((c.taps[2].hops as u64).to_bits()),
+            off2: Constant::new(off(&c.taps[2]).to_bits()),
+            ring3: Default::default(),
+            f3_1: Default::default(),
+            f3_2: Default::default(),
+            s3: Default::default(),
+            a3: Default::default(),
             prev3: Default::default(),
-            t0: Default::default(),
-            t1: Default::default(),
-            t2: Default::default(),
-            t3: Default::default(),
+            hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
+            off3: Constant::new(off(&c.taps[3]).to_bits()),
+            ring4: Default::default(),
+            s4: Default::default(),
+            a4: Default::default(),
+            prev4: Default::default(),
+            hops4: Constant::new((c.taps[4].hops as u64).to_bits()),
+            off4: Constant::new(off(&c.taps[4]).to_bits()),
+            ring5: Default::default(),
+            f5_1: Default::default(),
+            f5_2: Default::default(),
+            f5_3: Default::default(),
+            s5: Default::default(),
+            a5: Default::default(),
+            prev5: Default::default(),
+            hops5: Constant::new((c.taps[5].hops as u64).to_bits()),
+            off5: Constant::new(off(&c.taps[5]).to_bits()),
+            ring6: Default::default(),
+            f6_1: Default::default(),
+            s6: Default::default(),
+            a6: Default::default(),
+            prev6: Default::default(),
+            hops6: Constant::new((c.taps[6].hops as u64).to_bits()),
+            off6: Constant::new(off(&c.taps[6]).to_bits()),
+            ring7: Default::default(),
+            f7_1: Default::default(),
+            s7: Default::default(),
+            a7: Default::default(),
+            prev7: Default::default(),
+            hops7: Constant::new((c.taps[7].hops as u64).to_bits()),
+            off7: Constant::new(off(&c.taps[7]).to_bits()),
+            ring8: Default::default(),
+            f8_1: Default::default(),
+            s8: Default::default(),
+            a8: Default::default(),
+            prev8: Default::default(),
+            hops8: Constant::new((c.taps[8].hops as u64).to_bits()),
+            off8: Constant::new(off(&c.taps[8]).to_bits()),
+            f8l: Default::default(),
+            left8: Constant::new(c.taps[8].left),
+            first: Default::default(),
+            last: Default::default(),
             c00: Default::default(),
             c10: Default::default(),
             c01: Default::default(),
             c11: Default::default(),
             x_out: Default::default(),
             y_out: Default::default(),
-            use_prev: Default::default(),
             bilinear: Bilinear::new(c.frac_bits),
             compositor: Compositor::new(mode, c.order, c.rgba_bits),
             v_q: Default::default(),
@@ -405,28 +547,19 @@ impl<const H: usize> PipeLane<H> {
             x_q: Default::default(),
             y_q: Default::default(),
             sr_q: Default::default(),
+            dxn_q: Default::default(),
+            dxm_q: Default::default(),
+            dyn_q: Default::default(),
+            dym_q: Default::default(),
             s_r: Default::default(),
             s_g: Default::default(),
             s_b: Default::default(),
             s_a: Default::default(),
             s_v: Default::default(),
-            hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
-            hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
-            hops2: Constant::new((c.taps[2].hops as u64).to_bits()),
-            hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
-            left3: Constant::new(c.taps[3].left),
-            off0: Constant::new(off(&c.taps[0]).to_bits()),
-            off1: Constant::new(off(&c.taps[1]).to_bits()),
-            off2: Constant::new(off(&c.taps[2]).to_bits()),
-            off3: Constant::new(off(&c.taps[3]).to_bits()),
-            sx_pos: Constant::new(c.sx_pos),
-            sy_pos: Constant::new(c.sy_pos),
             p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
             nx_last: Constant::new(((c.cfb.dims[0] - 1) as u64).to_bits()),
             ny_last: Constant::new(((c.cfb.dims[1] - 1) as u64).to_bits()),
             reset: Constant::new(pack(c.reset).to_bits()),
-            wx: Constant::new((c.cfb.dx.unsigned_abs() as u64).to_bits()),
-            wy: Constant::new((c.cfb.dy.unsigned_abs() as u64).to_bits()),
         }
     }
 }
@@ -435,7 +568,9 @@ impl<const H: usize> Logic for PipeLane<H> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, f0a, f1a, f1b, f2a, f2b, f3a, f3b, f3c, f3l, prev1, prev3, x_q, y_q, sr_q
+            self, clock, x_q, y_q, sr_q, dxn_q, dxm_q, dyn_q, dym_q, f0_1, prev0, f1_1, f1_2,
+            prev1, prev2, f3_1, f3_2, prev3, prev4, f5_1, f5_2, f5_3, prev5, f6_1, prev6, f7_1,
+            prev7, f8_1, prev8, f8l
         );
         for i in 0..4 {
             self.v_q[i].clock.next = self.clock.val();
@@ -455,28 +590,25 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.shader.clock.next = self.clock.val();
         self.bilinear.clock.next = self.clock.val();
         self.compositor.clock.next = self.clock.val();
-        self.ring0.read_clock.next = self.clock.val();
-        self.ring0.write_clock.next = self.clock.val();
-        self.ring1.read_clock.next = self.clock.val();
-        self.ring1.write_clock.next = self.clock.val();
-        self.ring2.read_clock.next = self.clock.val();
-        self.ring2.write_clock.next = self.clock.val();
-        self.ring3.read_clock.next = self.clock.val();
-        self.ring3.write_clock.next = self.clock.val();
         // ABC gradient unit: fed by the CFB, linked to the neighbours.
         self.abc.clock.next = self.clock.val();
         self.abc.now.next = self.now.val();
-        self.abc.valid.next = self.beat_valid.val();
+        self.abc.valid.next = self.beat_valid.val() & !self.halo.val();
         self.abc.value.next = self.value.val();
         self.abc.x.next = self.x.val();
         self.abc.y.next = self.y.val();
         self.abc.pad.next = self.pad.val();
+        self.abc.invalid.next = self.invalid.val();
         self.abc.sr.next = self.sr.val();
         self.abc.er.next = self.er.val();
         self.abc.at_edge.next = self.at_edge.val();
         self.abc.face.next = self.face.val();
         self.abc.base_x.next = self.base_x.val();
         self.abc.base_y.next = self.base_y.val();
+        self.abc.dx_neg.next = self.dx_neg.val();
+        self.abc.dx_mag.next = self.dx_mag.val();
+        self.abc.dy_neg.next = self.dy_neg.val();
+        self.abc.dy_mag.next = self.dy_mag.val();
         self.abc.from_left_xm.next = self.g_from_left_xm.val();
         self.abc.from_left_ym.next = self.g_from_left_ym.val();
         self.abc.from_left_zm.next = self.g_from_left_zm.val();
@@ -495,28 +627,38 @@ impl<const H: usize> Logic for PipeLane<H> {
             self.st_x.next = self.abc.o_x.val();
             self.st_y.next = self.abc.o_y.val();
             self.st_pad.next = self.abc.o_pad.val();
+            self.st_invalid.next = self.abc.o_invalid.val();
             self.st_sr.next = self.abc.o_sr.val();
             self.st_er.next = self.abc.o_er.val();
             self.st_edge.next = self.abc.o_edge.val();
             self.st_face.next = self.abc.o_face.val();
             self.st_bx.next = self.abc.o_base_x.val();
             self.st_by.next = self.abc.o_base_y.val();
+            self.st_dxn.next = self.abc.o_dx_neg.val();
+            self.st_dxm.next = self.abc.o_dx_mag.val();
+            self.st_dyn.next = self.abc.o_dy_neg.val();
+            self.st_dym.next = self.abc.o_dy_mag.val();
         } else {
             self.st_valid.next = self.beat_valid.val();
             self.st_value.next = self.value.val();
             self.st_x.next = self.x.val();
             self.st_y.next = self.y.val();
             self.st_pad.next = self.pad.val();
+            self.st_invalid.next = self.invalid.val();
             self.st_sr.next = self.sr.val();
             self.st_er.next = self.er.val();
             self.st_edge.next = self.at_edge.val();
             self.st_face.next = self.face.val();
             self.st_bx.next = self.base_x.val();
             self.st_by.next = self.base_y.val();
+            self.st_dxn.next = self.dx_neg.val();
+            self.st_dxm.next = self.dx_mag.val();
+            self.st_dyn.next = self.dy_neg.val();
+            self.st_dym.next = self.dy_mag.val();
         }
         // Shader (input at T-1, registered sample at T).
         self.shader.value.next = self.st_value.val();
-        self.shader.invalid.next = self.st_pad.val();
+        self.shader.invalid.next = self.st_invalid.val();
         self.shader.at_edge.next = self.st_edge.val();
         self.shader.gx_neg.next = self.abc.gx_neg.val();
         self.shader.gx_mag.next = self.abc.gx_mag.val();
@@ -542,91 +684,192 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.x_q.d.next = self.st_x.val();
         self.y_q.d.next = self.st_y.val();
         self.sr_q.d.next = self.st_sr.val();
-        // Ring-buffer reads and the forwarding registers.
+        self.dxn_q.d.next = self.st_dxn.val();
+        self.dxm_q.d.next = self.st_dxm.val();
+        self.dyn_q.d.next = self.st_dyn.val();
+        self.dym_q.d.next = self.st_dym.val();
+        // Partial-beam ends: x-1 of a partial beam's first lane is one beat
+        // older, x+1 of its last lane one beat newer.
+        self.first.next = (self.x_q.q.val() & self.p_mask.val()) == 0;
+        self.last.next = (self.x_q.q.val() & self.p_mask.val()) == self.p_mask.val();
+        // The nine taps, aligned at T.
+        self.ring0.read_clock.next = self.clock.val();
+        self.ring0.write_clock.next = self.clock.val();
         self.ring0.read_address.next = self.now.val() + self.off0.val();
-        self.ring1.read_address.next = self.now.val() + self.off1.val();
-        self.ring2.read_address.next = self.now.val() + self.off2.val();
-        self.ring3.read_address.next = self.now.val() + self.off3.val();
-        self.ram0.next = self.ring0.read_data.val();
-        self.ram1.next = self.ring1.read_data.val();
-        self.ram2.next = self.ring2.read_data.val();
-        self.ram3.next = self.ring3.read_data.val();
-        self.f0a.d.next = self.in0a.val();
-        self.f1a.d.next = self.in1a.val();
-        self.f1b.d.next = self.in1b.val();
-        self.f2a.d.next = self.in2a.val();
-        self.f2b.d.next = self.in2b.val();
-        self.f3a.d.next = self.in3a.val();
-        self.f3b.d.next = self.in3b.val();
-        self.f3c.d.next = self.in3c.val();
-        self.f3l.d.next = self.in3l.val();
-        self.fwd0a.next = self.f0a.q.val();
-        self.fwd1a.next = self.f1a.q.val();
-        self.fwd1b.next = self.f1b.q.val();
-        self.fwd2a.next = self.f2a.q.val();
-        self.fwd2b.next = self.f2b.q.val();
-        self.fwd3a.next = self.f3a.q.val();
-        self.fwd3b.next = self.f3b.q.val();
-        // The tap streams at this lane, after their hops.
-        self.t0.next = self.ring0.read_data.val();
+        self.t0s0.next = self.ring0.read_data.val();
+        self.f0_1.d.next = self.t0i1.val();
+        self.s0.next = self.ring0.read_data.val();
         if self.hops0.val() == 1 {
-            self.t0.next = self.f0a.q.val();
+            self.s0.next = self.f0_1.q.val();
         }
-        self.t1.next = self.ring1.read_data.val();
+        self.prev0.d.next = self.s0.val();
+        self.a0.next = self.s0.val();
+        self.ring1.read_clock.next = self.clock.val();
+        self.ring1.write_clock.next = self.clock.val();
+        self.ring1.read_address.next = self.now.val() + self.off1.val();
+        self.t1s0.next = self.ring1.read_data.val();
+        self.f1_1.d.next = self.t1i1.val();
+        self.f1_2.d.next = self.t1i2.val();
+        self.t1s1.next = self.f1_1.q.val();
+        self.s1.next = self.ring1.read_data.val();
         if self.hops1.val() == 1 {
-            self.t1.next = self.f1a.q.val();
+            self.s1.next = self.f1_1.q.val();
         }
         if self.hops1.val() == 2 {
-            self.t1.next = self.f1b.q.val();
+            self.s1.next = self.f1_2.q.val();
         }
-        self.t2.next = self.ring2.read_data.val();
-        if self.hops2.val() == 1 {
-            self.t2.next = self.f2a.q.val();
+        self.prev1.d.next = self.s1.val();
+        self.a1.next = self.s1.val();
+        if self.first.val() {
+            self.a1.next = self.prev1.q.val();
         }
-        if self.hops2.val() == 2 {
-            self.t2.next = self.f2b.q.val();
+        self.ring2.read_clock.next = self.clock.val();
+        self.ring2.write_clock.next = self.clock.val();
+        self.ring2.read_address.next = self.now.val() + self.off2.val();
+        self.t2s0.next = self.ring2.read_data.val();
+        self.s2.next = self.ring2.read_data.val();
+        self.prev2.d.next = self.s2.val();
+        self.a2.next = self.prev2.q.val();
+        if self.last.val() {
+            self.a2.next = self.s2.val();
         }
-        self.t3.next = self.ring3.read_data.val();
+        self.ring3.read_clock.next = self.clock.val();
+        self.ring3.write_clock.next = self.clock.val();
+        self.ring3.read_address.next = self.now.val() + self.off3.val();
+        self.t3s0.next = self.ring3.read_data.val();
+        self.f3_1.d.next = self.t3i1.val();
+        self.f3_2.d.next = self.t3i2.val();
+        self.t3s1.next = self.f3_1.q.val();
+        self.s3.next = self.ring3.read_data.val();
         if self.hops3.val() == 1 {
-            self.t3.next = self.f3a.q.val();
+            self.s3.next = self.f3_1.q.val();
         }
         if self.hops3.val() == 2 {
-            self.t3.next = self.f3b.q.val();
+            self.s3.next = self.f3_2.q.val();
         }
-        if self.hops3.val() == 3 {
-            self.t3.next = self.f3c.q.val();
+        self.prev3.d.next = self.s3.val();
+        self.a3.next = self.s3.val();
+        self.ring4.read_clock.next = self.clock.val();
+        self.ring4.write_clock.next = self.clock.val();
+        self.ring4.read_address.next = self.now.val() + self.off4.val();
+        self.t4s0.next = self.ring4.read_data.val();
+        self.s4.next = self.ring4.read_data.val();
+        self.prev4.d.next = self.s4.val();
+        self.a4.next = self.s4.val();
+        self.ring5.read_clock.next = self.clock.val();
+        self.ring5.write_clock.next = self.clock.val();
+        self.ring5.read_address.next = self.now.val() + self.off5.val();
+        self.t5s0.next = self.ring5.read_data.val();
+        self.f5_1.d.next = self.t5i1.val();
+        self.f5_2.d.next = self.t5i2.val();
+        self.f5_3.d.next = self.t5i3.val();
+        self.t5s1.next = self.f5_1.q.val();
+        self.t5s2.next = self.f5_2.q.val();
+        self.s5.next = self.ring5.read_data.val();
+        if self.hops5.val() == 1 {
+            self.s5.next = self.f5_1.q.val();
         }
-        if self.left3.val() {
-            self.t3.next = self.f3l.q.val();
+        if self.hops5.val() == 2 {
+            self.s5.next = self.f5_2.q.val();
         }
-        self.prev1.d.next = self.t1.val();
-        self.prev3.d.next = self.t3.val();
-        // Partial-beam boundaries: x-1 of a beam's first lane lies one beat
-        // further back, x+1 of its last lane one beat nearer.
-        if self.sx_pos.val() {
-            self.use_prev.next = (self.x_q.q.val() & self.p_mask.val()) == 0;
-        } else {
-            self.use_prev.next = (self.x_q.q.val() & self.p_mask.val()) != self.p_mask.val();
+        if self.hops5.val() == 3 {
+            self.s5.next = self.f5_3.q.val();
         }
-        self.c00.next = self.t0.val();
-        self.c10.next = self.t1.val();
-        self.c11.next = self.t3.val();
-        if self.use_prev.val() {
-            self.c10.next = self.prev1.q.val();
-            self.c11.next = self.prev3.q.val();
+        self.prev5.d.next = self.s5.val();
+        self.a5.next = self.s5.val();
+        if self.first.val() {
+            self.a5.next = self.prev5.q.val();
         }
-        self.c01.next = self.t2.val();
+        self.ring6.read_clock.next = self.clock.val();
+        self.ring6.write_clock.next = self.clock.val();
+        self.ring6.read_address.next = self.now.val() + self.off6.val();
+        self.t6s0.next = self.ring6.read_data.val();
+        self.f6_1.d.next = self.t6i1.val();
+        self.s6.next = self.ring6.read_data.val();
+        if self.hops6.val() == 1 {
+            self.s6.next = self.f6_1.q.val();
+        }
+        self.prev6.d.next = self.s6.val();
+        self.a6.next = self.prev6.q.val();
+        if self.last.val() {
+            self.a6.next = self.s6.val();
+        }
+        self.ring7.read_clock.next = self.clock.val();
+        self.ring7.write_clock.next = self.clock.val();
+        self.ring7.read_address.next = self.now.val() + self.off7.val();
+        self.t7s0.next = self.ring7.read_data.val();
+        self.f7_1.d.next = self.t7i1.val();
+        self.s7.next = self.ring7.read_data.val();
+        if self.hops7.val() == 1 {
+            self.s7.next = self.f7_1.q.val();
+        }
+        self.prev7.d.next = self.s7.val();
+        self.a7.next = self.s7.val();
+        if self.first.val() {
+            self.a7.next = self.prev7.q.val();
+        }
+        self.ring8.read_clock.next = self.clock.val();
+        self.ring8.write_clock.next = self.clock.val();
+        self.ring8.read_address.next = self.now.val() + self.off8.val();
+        self.t8s0.next = self.ring8.read_data.val();
+        self.f8_1.d.next = self.t8i1.val();
+        self.s8.next = self.ring8.read_data.val();
+        if self.hops8.val() == 1 {
+            self.s8.next = self.f8_1.q.val();
+        }
+        self.f8l.d.next = self.t8il.val();
+        if self.left8.val() {
+            self.s8.next = self.f8l.q.val();
+        }
+        self.prev8.d.next = self.s8.val();
+        self.a8.next = self.prev8.q.val();
+        if self.last.val() {
+            self.a8.next = self.s8.val();
+        }
+        // The signs of dx and dy narrow the 3x3 region to 2x2: the
+        // neighbours are x - sign(dx) and y - sign(dy).
+        self.c00.next = self.a0.val();
+        self.c10.next = self.a0.val();
+        self.c01.next = self.a0.val();
+        self.c11.next = self.a0.val();
+        self.x_out.next = false;
+        self.y_out.next = false;
+        if self.dxm_q.q.val() != 0 {
+            if self.dxn_q.q.val() {
+                self.c10.next = self.a2.val();
+                self.x_out.next = self.x_q.q.val() == self.nx_last.val();
+            } else {
+                self.c10.next = self.a1.val();
+                self.x_out.next = self.x_q.q.val() == 0;
+            }
+        }
+        if self.dym_q.q.val() != 0 {
+            if self.dyn_q.q.val() {
+                self.c01.next = self.a4.val();
+                self.y_out.next = self.y_q.q.val() == self.ny_last.val();
+            } else {
+                self.c01.next = self.a3.val();
+                self.y_out.next = self.y_q.q.val() == 0;
+            }
+        }
+        self.c11.next = self.c01.val();
+        if self.dxm_q.q.val() != 0 {
+            self.c11.next = self.c10.val();
+            if self.dym_q.q.val() != 0 {
+                if self.dxn_q.q.val() {
+                    if self.dyn_q.q.val() {
+                        self.c11.next = self.a8.val();
+                    } else {
+                        self.c11.next = self.a6.val();
+                    }
+                } else if self.dyn_q.q.val() {
+                    self.c11.next = self.a7.val();
+                } else {
+                    self.c11.next = self.a5.val();
+                }
+            }
+        }
         // Cells outside the slice, and the start of a ray, read as reset.
-        if self.sx_pos.val() {
-            self.x_out.next = self.x_q.q.val() == 0;
-        } else {
-            self.x_out.next = self.x_q.q.val() == self.nx_last.val();
-        }
-        if self.sy_pos.val() {
-            self.y_out.next = self.y_q.q.val() == 0;
-        } else {
-            self.y_out.next = self.y_q.q.val() == self.ny_last.val();
-        }
         if self.x_out.val() {
             self.c10.next = self.reset.val();
             self.c11.next = self.reset.val();
@@ -658,8 +901,8 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.bilinear.c11[1].next = bit_cast::<16, 64>(self.c11.val() >> 16);
         self.bilinear.c11[2].next = bit_cast::<16, 64>(self.c11.val() >> 32);
         self.bilinear.c11[3].next = bit_cast::<16, 64>(self.c11.val() >> 48);
-        self.bilinear.wx.next = self.wx.val();
-        self.bilinear.wy.next = self.wy.val();
+        self.bilinear.wx.next = self.dxm_q.q.val();
+        self.bilinear.wy.next = self.dym_q.q.val();
         // The sample waits for the bilinear unit (T -> T+2).
         self.s_r[0].d.next = self.shader.r.val();
         self.s_g[0].d.next = self.shader.g.val();
@@ -685,21 +928,36 @@ impl<const H: usize> Logic for PipeLane<H> {
             | (bit_cast::<64, 16>(self.compositor.out_g.val()) << 16)
             | (bit_cast::<64, 16>(self.compositor.out_b.val()) << 32)
             | (bit_cast::<64, 16>(self.compositor.out_a.val()) << 48);
+        // Write the result into the ring buffers at its beat's time.
+        self.ring0.write_address.next = self.now.val() - 3;
+        self.ring0.write_data.next = self.res.val();
+        self.ring0.write_enable.next = self.v_q[3].q.val();
+        self.ring1.write_address.next = self.now.val() - 3;
+        self.ring1.write_data.next = self.res.val();
+        self.ring1.write_enable.next = self.v_q[3].q.val();
+        self.ring2.write_address.next = self.now.val() - 3;
+        self.ring2.write_data.next = self.res.val();
+        self.ring2.write_enable.next = self.v_q[3].q.val();
+        self.ring3.write_address.next = self.now.val() - 3;
+        self.ring3.write_data.next = self.res.val();
+        self.ring3.write_enable.next = self.v_q[3].q.val();
+        self.ring4.write_address.next = self.now.val() - 3;
+        self.ring4.write_data.next = self.res.val();
+        self.ring4.write_enable.next = self.v_q[3].q.val();
+        self.ring5.write_address.next = self.now.val() - 3;
+        self.ring5.write_data.next = self.res.val();
+        self.ring5.write_enable.next = self.v_q[3].q.val();
+        self.ring6.write_address.next = self.now.val() - 3;
+        self.ring6.write_data.next = self.res.val();
+        self.ring6.write_enable.next = self.v_q[3].q.val();
+        self.ring7.write_address.next = self.now.val() - 3;
+        self.ring7.write_data.next = self.res.val();
+        self.ring7.write_enable.next = self.v_q[3].q.val();
+        self.ring8.write_address.next = self.now.val() - 3;
+        self.ring8.write_data.next = self.res.val();
+        self.ring8.write_enable.next = self.v_q[3].q.val();
         self.res_beat.next = self.v_q[3].q.val();
         self.res_valid.next = self.v_q[3].q.val() & !self.pad_q[3].q.val();
-        // Write the result into the ring buffer at its beat's time.
-        self.ring0.write_address.next = self.now.val() - 3;
-        self.ring1.write_address.next = self.now.val() - 3;
-        self.ring2.write_address.next = self.now.val() - 3;
-        self.ring3.write_address.next = self.now.val() - 3;
-        self.ring0.write_data.next = self.res.val();
-        self.ring1.write_data.next = self.res.val();
-        self.ring2.write_data.next = self.res.val();
-        self.ring3.write_data.next = self.res.val();
-        self.ring0.write_enable.next = self.v_q[3].q.val();
-        self.ring1.write_enable.next = self.v_q[3].q.val();
-        self.ring2.write_enable.next = self.v_q[3].q.val();
-        self.ring3.write_enable.next = self.v_q[3].q.val();
         // Pixel out on ER.
         self.px_valid.next = self.v_q[3].q.val() & self.er_q[3].q.val() & !self.pad_q[3].q.val();
         self.px_x.next = self.bx_q[3].q.val();
@@ -709,7 +967,7 @@ impl<const H: usize> Logic for PipeLane<H> {
 }
 
 /// The whole Cube-4L pipeline: CFB and `P` pipelines (`A`-bit memory
-/// modules, `H`-bit compositing-buffer ring buffers).
+/// modules, `H`-bit ring buffers).
 #[derive(LogicBlock)]
 pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
@@ -780,33 +1038,52 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].x.next = self.cfb.x[k].val();
             self.lanes[k].y.next = self.cfb.y[k].val();
             self.lanes[k].pad.next = self.cfb.pad[k].val();
+            self.lanes[k].invalid.next = self.cfb.invalid[k].val();
+            self.lanes[k].halo.next = self.cfb.halo[k].val();
             self.lanes[k].sr.next = self.cfb.sr[k].val();
             self.lanes[k].er.next = self.cfb.er[k].val();
             self.lanes[k].base_x.next = self.cfb.base_x[k].val();
             self.lanes[k].base_y.next = self.cfb.base_y[k].val();
             self.lanes[k].face.next = self.cfb.face[k].val();
             self.lanes[k].at_edge.next = self.cfb.at_edge[k].val();
+            self.lanes[k].dx_neg.next = self.cfb.dx_neg[k].val();
+            self.lanes[k].dx_mag.next = self.cfb.dx_mag[k].val();
+            self.lanes[k].dy_neg.next = self.cfb.dy_neg[k].val();
+            self.lanes[k].dy_mag.next = self.cfb.dy_mag[k].val();
         }
         // Nearest-neighbour links: lane k-1 feeds lane k (lane P-1 feeds 0).
         for k in 1..P {
-            self.lanes[k].in0a.next = self.lanes[k - 1].ram0.val();
-            self.lanes[k].in1a.next = self.lanes[k - 1].ram1.val();
-            self.lanes[k].in1b.next = self.lanes[k - 1].fwd1a.val();
-            self.lanes[k].in2a.next = self.lanes[k - 1].ram2.val();
-            self.lanes[k].in2b.next = self.lanes[k - 1].fwd2a.val();
-            self.lanes[k].in3a.next = self.lanes[k - 1].ram3.val();
-            self.lanes[k].in3b.next = self.lanes[k - 1].fwd3a.val();
-            self.lanes[k].in3c.next = self.lanes[k - 1].fwd3b.val();
+            self.lanes[k].t0i1.next = self.lanes[k - 1].t0s0.val();
+            self.lanes[k].t1i1.next = self.lanes[k - 1].t1s0.val();
+            self.lanes[k].t1i2.next = self.lanes[k - 1].t1s1.val();
+            self.lanes[k].t3i1.next = self.lanes[k - 1].t3s0.val();
+            self.lanes[k].t3i2.next = self.lanes[k - 1].t3s1.val();
+            self.lanes[k].t5i1.next = self.lanes[k - 1].t5s0.val();
+            self.lanes[k].t5i2.next = self.lanes[k - 1].t5s1.val();
+            self.lanes[k].t5i3.next = self.lanes[k - 1].t5s2.val();
+            self.lanes[k].t6i1.next = self.lanes[k - 1].t6s0.val();
+            self.lanes[k].t7i1.next = self.lanes[k - 1].t7s0.val();
+            self.lanes[k].t8i1.next = self.lanes[k - 1].t8s0.val();
         }
         for k in (P - 1)..P {
-            self.lanes[0].in0a.next = self.lanes[k].ram0.val();
-            self.lanes[0].in1a.next = self.lanes[k].ram1.val();
-            self.lanes[0].in1b.next = self.lanes[k].fwd1a.val();
-            self.lanes[0].in2a.next = self.lanes[k].ram2.val();
-            self.lanes[0].in2b.next = self.lanes[k].fwd2a.val();
-            self.lanes[0].in3a.next = self.lanes[k].ram3.val();
-            self.lanes[0].in3b.next = self.lanes[k].fwd3a.val();
-            self.lanes[0].in3c.next = self.lanes[k].fwd3b.val();
+            self.lanes[0].t0i1.next = self.lanes[k].t0s0.val();
+            self.lanes[0].t1i1.next = self.lanes[k].t1s0.val();
+            self.lanes[0].t1i2.next = self.lanes[k].t1s1.val();
+            self.lanes[0].t3i1.next = self.lanes[k].t3s0.val();
+            self.lanes[0].t3i2.next = self.lanes[k].t3s1.val();
+            self.lanes[0].t5i1.next = self.lanes[k].t5s0.val();
+            self.lanes[0].t5i2.next = self.lanes[k].t5s1.val();
+            self.lanes[0].t5i3.next = self.lanes[k].t5s2.val();
+            self.lanes[0].t6i1.next = self.lanes[k].t6s0.val();
+            self.lanes[0].t7i1.next = self.lanes[k].t7s0.val();
+            self.lanes[0].t8i1.next = self.lanes[k].t8s0.val();
+        }
+        // The leftward link of tap (x+1, y+1): lane k+1 feeds lane k.
+        for k in 0..(P - 1) {
+            self.lanes[k].t8il.next = self.lanes[k + 1].t8s0.val();
+        }
+        for k in (P - 1)..P {
+            self.lanes[k].t8il.next = self.lanes[0].t8s0.val();
         }
         // ABC gradient links, both ways.
         for k in 1..P {
@@ -828,13 +1105,6 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].g_from_right_xp.next = self.lanes[0].g_to_left_xp.val();
             self.lanes[k].g_from_right_yp.next = self.lanes[0].g_to_left_yp.val();
             self.lanes[k].g_from_right_zp.next = self.lanes[0].g_to_left_zp.val();
-        }
-        // The leftward link: lane k+1 feeds lane k (lane 0 feeds P-1).
-        for k in 0..(P - 1) {
-            self.lanes[k].in3l.next = self.lanes[k + 1].ram3.val();
-        }
-        for k in (P - 1)..P {
-            self.lanes[k].in3l.next = self.lanes[0].ram3.val();
         }
     }
 }

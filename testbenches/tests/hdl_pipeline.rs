@@ -35,16 +35,35 @@ fn run_shaded<const P: usize>(
     let vol = builtin(vol_name, dims, 8).unwrap();
     let cam = s.camera().unwrap();
     let plan = Plan::new(&s, &cam).unwrap();
-    let sweep = &plan.sweeps[0];
-    let golden = GoldenShader::new(&s, &cam, sweep);
-    let (base, results) = stream_results(&vol, sweep, &golden, P);
+    let mut total = (0, 0);
+    for sweep in &plan.sweeps {
+        let label = format!(
+            "p={P} {dims:?} {mode} {view} sweep axis {} z {}..={}",
+            sweep.axis(),
+            sweep.z0,
+            sweep.z1
+        );
+        let (c, i) = run_sweep::<P>(&s, &cam, &vol, sweep, label);
+        total = (total.0 + c, total.1 + i);
+    }
+    total
+}
+
+fn run_sweep<const P: usize>(
+    s: &golden_model::scene::Scene,
+    cam: &golden_model::scene::Camera,
+    vol: &golden_model::volume::Volume,
+    sweep: &golden_model::plan::Sweep,
+    label: String,
+) -> (u64, u64) {
+    let golden = GoldenShader::new(s, cam, sweep);
+    let (base, results) = stream_results(vol, sweep, &golden, P);
     let config = PipelineConfig::new(sweep, vol.dims, P, &golden).unwrap();
     let mut uut = Pipeline::<P, A, H>::new(&config, &golden).unwrap();
-    let mem = SkewedMemory::new(&vol, P);
+    let mem = SkewedMemory::new(vol, P);
     assert!(mem.modules[0].len() <= 1 << A);
     uut.cfb.preload(&mem.modules);
     uut.connect_all();
-    let label = format!("p={P} {dims:?} {mode} {view}");
     let expected_pixels = base.faces.iter().filter(|f| **f != Face::None).count();
     let beats = results.len();
     let mut sim = Simulation::new();
@@ -137,6 +156,21 @@ fn pipeline_shaded_clock_count_adds_one_slice() {
     let (plain, _) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
     assert_eq!(cycles - plain, 16 * 16 / 4 + 1);
     assert!(cycles > ideal);
+}
+
+const PERSPECTIVE: [&str; 3] = [
+    r#"{"projection": "perspective", "eye": [5, 6, -10], "fov_deg": 90}"#,
+    r#"{"projection": "perspective", "eye": [30, 4, 5.5], "fov_deg": 70}"#,
+    r#"{"projection": "perspective", "eye": [5.3, 6.6, 4.2], "target": [6, 5, 11], "fov_deg": 120}"#,
+];
+
+#[test]
+fn pipeline_perspective_every_sweep() {
+    for view in PERSPECTIVE {
+        run::<4>([12, 12, 12], view, "mip", "phantom");
+        run_shaded::<2>([10, 12, 11], view, "composite", "phantom", true);
+        run::<1>([9, 10, 11], view, "first_opaque", "sphere");
+    }
 }
 
 #[test]
