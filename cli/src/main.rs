@@ -320,6 +320,14 @@ fn sim_cmd(
         cps,
         r.mismatches
     );
+    println!(
+        "units left out: {}",
+        if r.left_out.is_empty() {
+            "none".to_string()
+        } else {
+            r.left_out.join(", ")
+        }
+    );
     for m in &r.first {
         println!(
             "  sweep {} pixel ({}, {}): rtl {:?} {:?}, golden {:?} {:?}",
@@ -343,6 +351,7 @@ fn sim_cmd(
                 "seconds": r.seconds,
                 "cycles_per_second": cps,
                 "pipelines": scene.hardware.pipelines,
+                "units_left_out": r.left_out,
             }),
         )?;
     }
@@ -368,7 +377,7 @@ fn default_run() -> Result<()> {
         &out.join("default_diff.png"),
         &difference(&g.image, &r.image, 8.0),
     )?;
-    let d = scene.volume.dims;
+    let d = scene.volume.render_dims();
     println!(
         "scene: built-in default ({} {}x{}x{}, {:?})",
         scene.volume.builtin.as_deref().unwrap_or("?"),

@@ -266,7 +266,7 @@ pub fn slab(o: DVec3, d: DVec3, lo: DVec3, hi: DVec3) -> Option<(f64, f64, usize
 
 impl Plan {
     pub fn new(scene: &Scene, camera: &Camera) -> Result<Plan> {
-        let dims = scene.volume.dims;
+        let dims = scene.volume.render_dims();
         let frac = scene.hardware.frac_bits;
         let mut slots = [[None; 2]; 3];
         let mut sweeps = Vec::new();

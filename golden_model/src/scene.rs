@@ -44,6 +44,22 @@ pub struct VolumeSpec {
     #[serde(rename = "type")]
     pub kind: Option<RawType>,
     pub window: Option<[f64; 2]>,
+    /// Optional sub-box of the loaded volume; the scene then renders it alone.
+    pub crop: Option<Crop>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields)]
+pub struct Crop {
+    pub offset: [usize; 3],
+    pub dims: [usize; 3],
+}
+
+impl VolumeSpec {
+    /// Dims of the volume the scene renders (after any crop).
+    pub fn render_dims(&self) -> [usize; 3] {
+        self.crop.map_or(self.dims, |c| c.dims)
+    }
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
@@ -318,6 +334,15 @@ impl Scene {
                 }
             }
         }
+        if let Some(c) = self.volume.crop {
+            let inside = (0..3).all(|a| c.dims[a] >= 2 && c.offset[a] + c.dims[a] <= d[a]);
+            if !inside {
+                return Err(CubeError::Volume(format!(
+                    "crop offset {:?} dims {:?} must lie inside dims {d:?} with each side >= 2",
+                    c.offset, c.dims
+                )));
+            }
+        }
         if let Some([lo, hi]) = self.volume.window {
             if !lo.is_finite() || !hi.is_finite() || hi <= lo {
                 return Err(scene_err(format!(
@@ -416,7 +441,7 @@ impl Scene {
 
     /// The camera this scene's view defines, in dataset voxel coordinates.
     pub fn camera(&self) -> Result<Camera> {
-        Camera::new(&self.view, self.volume.dims, self.image)
+        Camera::new(&self.view, self.volume.render_dims(), self.image)
     }
 }
 
@@ -601,6 +626,11 @@ mod tests {
             "\"projection\": \"perspective\", \"eye\": [8,8,-20], \"up\": [0,0,0]",
         );
         assert!(err_of(&persp).contains("zero length"));
+        let crop = MIN.replace(
+            "[16,16,16]}",
+            "[16,16,16], \"crop\": {\"offset\": [8, 0, 0], \"dims\": [9, 4, 4]}}",
+        );
+        assert!(err_of(&crop).contains("crop"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"voxel_bits\": 10}}");
         assert!(err_of(&hw).contains("voxel_bits"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"rgba_bits\": 16}}");

@@ -37,8 +37,33 @@ impl Volume {
         max_of(self.bits)
     }
 
-    /// Load the volume a scene describes.
+    /// Load the volume a scene describes (cropped when the scene says so).
     pub fn from_spec(spec: &VolumeSpec, bits: u32) -> Result<Volume> {
+        let vol = Self::load_whole(spec, bits)?;
+        Ok(match spec.crop {
+            Some(c) => vol.crop(c.offset, c.dims),
+            None => vol,
+        })
+    }
+
+    /// The sub-box at `offset` of size `dims` (which must lie inside).
+    pub fn crop(&self, offset: [usize; 3], dims: [usize; 3]) -> Volume {
+        let mut data = Vec::with_capacity(dims.iter().product());
+        for w in 0..dims[2] {
+            for v in 0..dims[1] {
+                for u in 0..dims[0] {
+                    data.push(self.get(u + offset[0], v + offset[1], w + offset[2]));
+                }
+            }
+        }
+        Volume {
+            dims,
+            bits: self.bits,
+            data,
+        }
+    }
+
+    fn load_whole(spec: &VolumeSpec, bits: u32) -> Result<Volume> {
         match (&spec.builtin, &spec.raw) {
             (Some(name), None) => builtin(name, spec.dims, bits),
             (None, Some(path)) => {
@@ -223,6 +248,24 @@ mod tests {
             .collect();
         let v = from_raw(&hu, [4, 1, 1], RawType::I16, Some([-1000.0, 2000.0]), 12).unwrap();
         assert_eq!(v.data, vec![0, 1365, 2730, 4095]);
+    }
+
+    #[test]
+    fn crop_takes_the_sub_box() {
+        let r = builtin("ramp", [8, 3, 2], 8).unwrap();
+        let c = r.crop([2, 1, 1], [3, 2, 1]);
+        assert_eq!(c.dims, [3, 2, 1]);
+        assert_eq!(
+            c.data,
+            vec![
+                r.get(2, 1, 1),
+                r.get(3, 1, 1),
+                r.get(4, 1, 1),
+                r.get(2, 2, 1),
+                r.get(3, 2, 1),
+                r.get(4, 2, 1)
+            ]
+        );
     }
 
     #[test]

@@ -16,11 +16,11 @@ use std::time::Instant;
 /// Module address bits and ring-buffer address bits of the simulated build.
 const A: usize = 16;
 const H: usize = 16;
-/// Clocks above which rust-hdl simulation is refused: the whole pipeline
-/// simulates at about 1.2·10^3 clocks/s with p = 4 (measured with
-/// `cube sim` on a 24^3 MIP scene), so this bounds a run to about two
-/// minutes.
-pub const MAX_SIM_BEATS: u64 = 1 << 17;
+/// Clocks above which rust-hdl simulation is refused. With p = 4 the whole
+/// pipeline simulates at about 1.2·10^3 clocks/s for MIP and 5.8·10^2
+/// clocks/s shaded (measured with `cube sim` on `scenes/sim_*.json`), so this
+/// bounds a run to about two minutes.
+pub const MAX_SIM_BEATS: u64 = 1 << 16;
 
 /// One base-plane pixel where RTL and golden model differ.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -43,6 +43,8 @@ pub struct SimOutcome {
     /// The first few mismatching pixels.
     pub first: Vec<Mismatch>,
     pub seconds: f64,
+    /// Units this scene's hardware leaves out (see `PipelineConfig::left_out`).
+    pub left_out: Vec<&'static str>,
 }
 
 fn face_of(code: u32) -> Face {
@@ -89,9 +91,11 @@ pub fn simulate(
     let t = Instant::now();
     let mut bases = Vec::new();
     let (mut cycles, mut ideal, mut mismatches, mut first) = (0, 0, 0, Vec::new());
+    let mut left_out = Vec::new();
     for (si, sweep) in plan.sweeps.iter().enumerate() {
         let golden = GoldenShader::new(scene, camera, sweep);
         let config = PipelineConfig::new(sweep, vol.dims, p, &golden)?;
+        left_out = config.left_out(scene.mode);
         let mem = SkewedMemory::new(vol, p);
         let vcd = if si == 0 { vcd } else { None };
         let (base, c) = match p {
@@ -139,6 +143,7 @@ pub fn simulate(
         mismatches,
         first,
         seconds: t.elapsed().as_secs_f64(),
+        left_out,
     })
 }
 

@@ -122,6 +122,45 @@ const VIEWS: [&str; 5] = [
 ];
 
 #[test]
+fn views_cover_both_orders_and_every_sign() {
+    use golden_model::plan::{Order, Rays};
+    let (mut orders, mut dx, mut dy) = (Vec::new(), Vec::new(), Vec::new());
+    for view in VIEWS {
+        let s = scene(&format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [8, 8, 8]}}, "view": {view}, "image": [8, 8]}}"#
+        ));
+        let sweep = &Plan::new(&s, &s.camera().unwrap()).unwrap().sweeps[0];
+        let Rays::Parallel { dx: x, dy: y } = sweep.rays else {
+            unreachable!()
+        };
+        orders.push(sweep.order);
+        dx.push(x);
+        dy.push(y);
+    }
+    assert!(
+        orders.contains(&Order::FrontToBack) && orders.contains(&Order::BackToFront),
+        "{orders:?}"
+    );
+    assert!(
+        dx.iter().any(|&v| v > 0) && dx.iter().any(|&v| v < 0),
+        "{dx:?}"
+    );
+    assert!(
+        dy.iter().any(|&v| v > 0) && dy.iter().any(|&v| v < 0),
+        "{dy:?}"
+    );
+    assert!(
+        dx.iter().any(|&v| v.abs() == 256),
+        "exactly 45 degrees: {dx:?}"
+    );
+}
+
+#[test]
+fn pipeline_larger_non_cubic_volume() {
+    run_shaded::<4>([32, 24, 16], VIEWS[1], "composite", "phantom", true);
+}
+
+#[test]
 fn pipeline_mip_every_view_and_p() {
     for view in VIEWS {
         run::<1>([8, 8, 8], view, "mip", "phantom");
