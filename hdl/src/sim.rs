@@ -219,64 +219,85 @@ pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
         "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
         vcd.display()
     );
-    let group = |s: &mut String, name: &str, sigs: &[String]| {
+    let group = |s: &mut String, name: &str, sigs: Vec<String>| {
         s.push_str(&format!("@800200\n-{name}\n@22\n"));
         for sig in sigs {
-            s.push_str(sig);
+            s.push_str(&sig);
             s.push('\n');
         }
         s.push_str(&format!("@1000200\n-{name}\n"));
+    };
+    let under = |prefix: &str, names: &[&str]| {
+        names
+            .iter()
+            .map(|n| format!("{prefix}.{n}"))
+            .collect::<Vec<_>>()
     };
     s.push_str("@28\nuut.clock\nuut.start\n");
     group(
         &mut s,
         "CFB",
-        &[
-            "uut.cfb.valid",
-            "uut.cfb.n_s[15:0]",
-            "uut.cfb.n_beam[15:0]",
-            "uut.cfb.n_b[15:0]",
-            "uut.cfb.bs",
-        ]
-        .map(String::from),
+        under(
+            "uut.cfb",
+            &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
+        ),
     );
     for k in 0..p {
-        let l = format!("uut.cfb.lanes${k}");
+        let cfb_lane = [
+            "x[15:0]",
+            "y[15:0]",
+            "z[15:0]",
+            "value[15:0]",
+            "address[31:0]",
+            "pad",
+            "halo",
+            "sr",
+            "er",
+            "at_edge",
+            "invalid",
+            "face[2:0]",
+            "dx_neg",
+            "dx_mag[15:0]",
+            "dy_neg",
+            "dy_mag[15:0]",
+        ];
         group(
             &mut s,
             &format!("CFB lane {k}"),
-            &[
-                "x[15:0]",
-                "y[15:0]",
-                "z[15:0]",
-                "value[15:0]",
-                "address[31:0]",
-                "pad",
-                "sr",
-                "er",
-                "at_edge",
-                "face[2:0]",
-            ]
-            .map(|n| format!("{l}.{n}")),
+            under(&format!("uut.cfb.lanes${k}"), &cfb_lane),
         );
-        let pl = format!("uut.lanes${k}");
+        let lane = format!("uut.lanes${k}");
+        let abc = [
+            "o_valid",
+            "o_value[15:0]",
+            "gx_neg",
+            "gx_mag[15:0]",
+            "gy_neg",
+            "gy_mag[15:0]",
+            "gz_neg",
+            "gz_mag[15:0]",
+        ];
         group(
             &mut s,
-            &format!("Compositing lane {k}"),
-            &[
-                "ram0[63:0]",
-                "ram1[63:0]",
-                "ram2[63:0]",
-                "ram3[63:0]",
-                "res_valid",
-                "res[63:0]",
-            ]
-            .map(|n| format!("{pl}.{n}")),
+            &format!("ABC gradient {k}"),
+            under(&format!("{lane}.abc"), &abc),
         );
+        let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
+        group(
+            &mut s,
+            &format!("Shader {k}"),
+            under(&format!("{lane}.shader"), &shader),
+        );
+        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.t{c}s0[63:0]")).collect();
+        taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
+        group(&mut s, &format!("Compositing lane {k}"), taps);
         group(
             &mut s,
             &format!("Pixel out {k}"),
-            &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"].map(|n| format!("{pl}.{n}")),
+            under(
+                &lane,
+                &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
+            ),
         );
     }
     let gtkw = vcd.with_extension("gtkw");
