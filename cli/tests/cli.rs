@@ -298,9 +298,13 @@ fn sim_refuses_what_the_rtl_cannot_do() {
     let xray = write(
         d.path(),
         "a.json",
-        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "parallel"}, "mode": "xray", "image": [16, 16]}"#,
+        r#"{"volume": {"builtin": "sphere", "dims": [32, 12, 12]}, "view": {"projection": "parallel"}, "mode": "xray", "image": [16, 16],
+            "hardware": {"pipelines": 16}}"#,
     );
-    assert_clean_error(&cube(&["sim", "--scene", &xray], d.path()), "X-ray");
+    assert_clean_error(
+        &cube(&["sim", "--scene", &xray], d.path()),
+        "1, 2, 4 or 8 pipelines",
+    );
     let big = write(
         d.path(),
         "b.json",

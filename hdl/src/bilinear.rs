@@ -9,9 +9,11 @@
 //! lerp(a, b, w) = a + (((b - a) * w + 2^(f-1)) >> f)   (arithmetic shift)
 //! ```
 //!
-//! Two register stages, one voxel per clock. Channels are 16 bits wide
-//! (RGBA, or MIP/MinIP intensities); the X-ray sum, wider than the 16x16
-//! multiplier, is not handled here yet.
+//! Two register stages, one voxel per clock. Channel 0 is 32 bits wide for
+//! the X-ray sum (`rgba_bits + log2(depth)` bits): its difference is split
+//! into 16-bit halves for two 16x16 multipliers, and with 16-bit inputs the
+//! upper half is constant zero, so synthesis removes it. Channels 1-3 are 16
+//! bits wide.
 
 use rust_hdl::prelude::*;
 
@@ -64,6 +66,120 @@ impl Logic for Lerp {
         } else {
             self.y.next = self.a.val() - bit_cast::<16, 32>(self.step_down.val());
         }
+    }
+}
+
+/// `lerp(a, b, w)` for 32-bit `a`, `b`: the difference's halves go through
+/// two 16x16 multipliers, `d*w = (d_hi*w << 16) + d_lo*w`.
+#[derive(LogicBlock)]
+struct WideLerp {
+    pub a: Signal<In, Bits<32>>,
+    pub b: Signal<In, Bits<32>>,
+    pub w: Signal<In, Bits<16>>,
+    pub y: Signal<Out, Bits<32>>,
+    half: Constant<Bits<64>>,
+    shift: Constant<Bits<8>>,
+    diff: Signal<Local, Bits<32>>,
+    prod: Signal<Local, Bits<64>>,
+    step_up: Signal<Local, Bits<64>>,
+    step_down: Signal<Local, Bits<64>>,
+}
+
+impl WideLerp {
+    fn new(frac_bits: u32) -> WideLerp {
+        WideLerp {
+            a: Default::default(),
+            b: Default::default(),
+            w: Default::default(),
+            y: Default::default(),
+            half: Constant::new((1u64 << (frac_bits - 1)).to_bits()),
+            shift: Constant::new((frac_bits as u64).to_bits()),
+            diff: Default::default(),
+            prod: Default::default(),
+            step_up: Default::default(),
+            step_down: Default::default(),
+        }
+    }
+}
+
+impl Logic for WideLerp {
+    #[hdl_gen]
+    fn update(&mut self) {
+        if self.b.val() >= self.a.val() {
+            self.diff.next = self.b.val() - self.a.val();
+        } else {
+            self.diff.next = self.a.val() - self.b.val();
+        }
+        self.prod.next = (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val())
+            << 16)
+            + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+        self.step_up.next = (self.prod.val() + self.half.val()) >> self.shift.val();
+        self.step_down.next = (self.prod.val() + self.half.val() - 1) >> self.shift.val();
+        if self.b.val() >= self.a.val() {
+            self.y.next = self.a.val() + bit_cast::<32, 64>(self.step_up.val());
+        } else {
+            self.y.next = self.a.val() - bit_cast::<32, 64>(self.step_down.val());
+        }
+    }
+}
+
+/// Channel 0: the same two stages with 32-bit values.
+#[derive(LogicBlock)]
+struct WideChannel {
+    pub clock: Signal<In, Clock>,
+    pub c00: Signal<In, Bits<32>>,
+    pub c10: Signal<In, Bits<32>>,
+    pub c01: Signal<In, Bits<32>>,
+    pub c11: Signal<In, Bits<32>>,
+    pub wx: Signal<In, Bits<16>>,
+    pub wy: Signal<In, Bits<16>>,
+    pub y: Signal<Out, Bits<32>>,
+    top: WideLerp,
+    bottom: WideLerp,
+    vertical: WideLerp,
+    top_q: DFF<Bits<32>>,
+    bottom_q: DFF<Bits<32>>,
+    out_q: DFF<Bits<32>>,
+}
+
+impl WideChannel {
+    fn new(frac_bits: u32) -> WideChannel {
+        WideChannel {
+            clock: Default::default(),
+            c00: Default::default(),
+            c10: Default::default(),
+            c01: Default::default(),
+            c11: Default::default(),
+            wx: Default::default(),
+            wy: Default::default(),
+            y: Default::default(),
+            top: WideLerp::new(frac_bits),
+            bottom: WideLerp::new(frac_bits),
+            vertical: WideLerp::new(frac_bits),
+            top_q: Default::default(),
+            bottom_q: Default::default(),
+            out_q: Default::default(),
+        }
+    }
+}
+
+impl Logic for WideChannel {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, top_q, bottom_q, out_q);
+        self.top.a.next = self.c00.val();
+        self.top.b.next = self.c10.val();
+        self.top.w.next = self.wx.val();
+        self.bottom.a.next = self.c01.val();
+        self.bottom.b.next = self.c11.val();
+        self.bottom.w.next = self.wx.val();
+        self.top_q.d.next = self.top.y.val();
+        self.bottom_q.d.next = self.bottom.y.val();
+        self.vertical.a.next = self.top_q.q.val();
+        self.vertical.b.next = self.bottom_q.q.val();
+        self.vertical.w.next = self.wy.val();
+        self.out_q.d.next = self.vertical.y.val();
+        self.y.next = self.out_q.q.val();
     }
 }
 
@@ -128,21 +244,23 @@ impl Logic for Channel {
     }
 }
 
-/// The bilinear datapath for RGBA: cells `cXY_{r,g,b,a}` where X/Y = 1
-/// names the neighbour chosen by the sign of dx/dy; two clocks of latency.
+/// The bilinear datapath for RGBA (or an X-ray sum in channel 0): cells
+/// `cXY[channel]` where X/Y = 1 names the neighbour chosen by the sign of
+/// dx/dy; two clocks of latency.
 #[derive(LogicBlock)]
 pub struct Bilinear {
     pub clock: Signal<In, Clock>,
-    pub c00: [Signal<In, Bits<16>>; 4],
-    pub c10: [Signal<In, Bits<16>>; 4],
-    pub c01: [Signal<In, Bits<16>>; 4],
-    pub c11: [Signal<In, Bits<16>>; 4],
+    pub c00: [Signal<In, Bits<32>>; 4],
+    pub c10: [Signal<In, Bits<32>>; 4],
+    pub c01: [Signal<In, Bits<32>>; 4],
+    pub c11: [Signal<In, Bits<32>>; 4],
     /// |dx| and |dy| with `frac_bits` fractional bits (1.0 = 2^frac_bits).
     pub wx: Signal<In, Bits<16>>,
     pub wy: Signal<In, Bits<16>>,
-    pub out: [Signal<Out, Bits<16>>; 4],
+    pub out: [Signal<Out, Bits<32>>; 4],
     wy_q: DFF<Bits<16>>,
-    ch: [Channel; 4],
+    wide: WideChannel,
+    ch: [Channel; 3],
 }
 
 impl Bilinear {
@@ -157,6 +275,7 @@ impl Bilinear {
             wy: Default::default(),
             out: Default::default(),
             wy_q: Default::default(),
+            wide: WideChannel::new(frac_bits),
             ch: std::array::from_fn(|_| Channel::new(frac_bits)),
         }
     }
@@ -167,15 +286,37 @@ impl Logic for Bilinear {
     fn update(&mut self) {
         dff_setup!(self, clock, wy_q);
         self.wy_q.d.next = self.wy.val();
-        for i in 0..4 {
-            self.ch[i].clock.next = self.clock.val();
-            self.ch[i].c00.next = self.c00[i].val();
-            self.ch[i].c10.next = self.c10[i].val();
-            self.ch[i].c01.next = self.c01[i].val();
-            self.ch[i].c11.next = self.c11[i].val();
-            self.ch[i].wx.next = self.wx.val();
-            self.ch[i].wy.next = self.wy_q.q.val();
-            self.out[i].next = self.ch[i].y.val();
-        }
+        self.wide.clock.next = self.clock.val();
+        self.wide.c00.next = self.c00[0].val();
+        self.wide.c10.next = self.c10[0].val();
+        self.wide.c01.next = self.c01[0].val();
+        self.wide.c11.next = self.c11[0].val();
+        self.wide.wx.next = self.wx.val();
+        self.wide.wy.next = self.wy_q.q.val();
+        self.out[0].next = self.wide.y.val();
+        self.ch[0].clock.next = self.clock.val();
+        self.ch[0].c00.next = bit_cast::<16, 32>(self.c00[1].val());
+        self.ch[0].c10.next = bit_cast::<16, 32>(self.c10[1].val());
+        self.ch[0].c01.next = bit_cast::<16, 32>(self.c01[1].val());
+        self.ch[0].c11.next = bit_cast::<16, 32>(self.c11[1].val());
+        self.ch[0].wx.next = self.wx.val();
+        self.ch[0].wy.next = self.wy_q.q.val();
+        self.out[1].next = bit_cast::<32, 16>(self.ch[0].y.val());
+        self.ch[1].clock.next = self.clock.val();
+        self.ch[1].c00.next = bit_cast::<16, 32>(self.c00[2].val());
+        self.ch[1].c10.next = bit_cast::<16, 32>(self.c10[2].val());
+        self.ch[1].c01.next = bit_cast::<16, 32>(self.c01[2].val());
+        self.ch[1].c11.next = bit_cast::<16, 32>(self.c11[2].val());
+        self.ch[1].wx.next = self.wx.val();
+        self.ch[1].wy.next = self.wy_q.q.val();
+        self.out[2].next = bit_cast::<32, 16>(self.ch[1].y.val());
+        self.ch[2].clock.next = self.clock.val();
+        self.ch[2].c00.next = bit_cast::<16, 32>(self.c00[3].val());
+        self.ch[2].c10.next = bit_cast::<16, 32>(self.c10[3].val());
+        self.ch[2].c01.next = bit_cast::<16, 32>(self.c01[3].val());
+        self.ch[2].c11.next = bit_cast::<16, 32>(self.c11[3].val());
+        self.ch[2].wx.next = self.wx.val();
+        self.ch[2].wy.next = self.wy_q.q.val();
+        self.out[3].next = bit_cast::<32, 16>(self.ch[2].y.val());
     }
 }

@@ -173,6 +173,16 @@ fn pack(v: [u32; 4]) -> u64 {
     v[0] as u64 | (v[1] as u64) << 16 | (v[2] as u64) << 32 | (v[3] as u64) << 48
 }
 
+/// A lane's packed result word as `[r, g, b, a]`: four 16-bit channels, or
+/// for X-ray a 32-bit sum in channel 0.
+pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
+    if mode == Mode::Xray {
+        [word as u32, 0, 0, 0]
+    } else {
+        std::array::from_fn(|c| ((word >> (16 * c)) & 0xffff) as u32)
+    }
+}
+
 /// One pipeline after the CFB.
 #[derive(LogicBlock)]
 pub struct PipeLane<const H: usize> {
@@ -371,6 +381,10 @@ pub struct PipeLane<const H: usize> {
     nx_last: Constant<Bits<16>>,
     ny_last: Constant<Bits<16>>,
     reset: Constant<Bits<64>>,
+    /// Channel masks of the packed word: X-ray keeps a 32-bit sum in channel
+    /// 0 and nothing else.
+    r_mask: Constant<Bits<64>>,
+    gba_mask: Constant<Bits<64>>,
 }
 
 impl<const H: usize> PipeLane<H> {
@@ -560,6 +574,15 @@ impl<const H: usize> PipeLane<H> {
             nx_last: Constant::new(((c.cfb.dims[0] - 1) as u64).to_bits()),
             ny_last: Constant::new(((c.cfb.dims[1] - 1) as u64).to_bits()),
             reset: Constant::new(pack(c.reset).to_bits()),
+            r_mask: Constant::new(
+                (if mode == Mode::Xray {
+                    0xffff_ffffu64
+                } else {
+                    0xffff
+                })
+                .to_bits(),
+            ),
+            gba_mask: Constant::new((if mode == Mode::Xray { 0u64 } else { 0xffff }).to_bits()),
         }
     }
 }
@@ -885,22 +908,34 @@ impl<const H: usize> Logic for PipeLane<H> {
             self.c11.next = self.reset.val();
         }
         // Bilinear unit (T..T+2).
-        self.bilinear.c00[0].next = bit_cast::<16, 64>(self.c00.val());
-        self.bilinear.c00[1].next = bit_cast::<16, 64>(self.c00.val() >> 16);
-        self.bilinear.c00[2].next = bit_cast::<16, 64>(self.c00.val() >> 32);
-        self.bilinear.c00[3].next = bit_cast::<16, 64>(self.c00.val() >> 48);
-        self.bilinear.c10[0].next = bit_cast::<16, 64>(self.c10.val());
-        self.bilinear.c10[1].next = bit_cast::<16, 64>(self.c10.val() >> 16);
-        self.bilinear.c10[2].next = bit_cast::<16, 64>(self.c10.val() >> 32);
-        self.bilinear.c10[3].next = bit_cast::<16, 64>(self.c10.val() >> 48);
-        self.bilinear.c01[0].next = bit_cast::<16, 64>(self.c01.val());
-        self.bilinear.c01[1].next = bit_cast::<16, 64>(self.c01.val() >> 16);
-        self.bilinear.c01[2].next = bit_cast::<16, 64>(self.c01.val() >> 32);
-        self.bilinear.c01[3].next = bit_cast::<16, 64>(self.c01.val() >> 48);
-        self.bilinear.c11[0].next = bit_cast::<16, 64>(self.c11.val());
-        self.bilinear.c11[1].next = bit_cast::<16, 64>(self.c11.val() >> 16);
-        self.bilinear.c11[2].next = bit_cast::<16, 64>(self.c11.val() >> 32);
-        self.bilinear.c11[3].next = bit_cast::<16, 64>(self.c11.val() >> 48);
+        self.bilinear.c00[0].next = bit_cast::<32, 64>(self.c00.val() & self.r_mask.val());
+        self.bilinear.c00[1].next =
+            bit_cast::<32, 64>((self.c00.val() >> 16) & self.gba_mask.val());
+        self.bilinear.c00[2].next =
+            bit_cast::<32, 64>((self.c00.val() >> 32) & self.gba_mask.val());
+        self.bilinear.c00[3].next =
+            bit_cast::<32, 64>((self.c00.val() >> 48) & self.gba_mask.val());
+        self.bilinear.c10[0].next = bit_cast::<32, 64>(self.c10.val() & self.r_mask.val());
+        self.bilinear.c10[1].next =
+            bit_cast::<32, 64>((self.c10.val() >> 16) & self.gba_mask.val());
+        self.bilinear.c10[2].next =
+            bit_cast::<32, 64>((self.c10.val() >> 32) & self.gba_mask.val());
+        self.bilinear.c10[3].next =
+            bit_cast::<32, 64>((self.c10.val() >> 48) & self.gba_mask.val());
+        self.bilinear.c01[0].next = bit_cast::<32, 64>(self.c01.val() & self.r_mask.val());
+        self.bilinear.c01[1].next =
+            bit_cast::<32, 64>((self.c01.val() >> 16) & self.gba_mask.val());
+        self.bilinear.c01[2].next =
+            bit_cast::<32, 64>((self.c01.val() >> 32) & self.gba_mask.val());
+        self.bilinear.c01[3].next =
+            bit_cast::<32, 64>((self.c01.val() >> 48) & self.gba_mask.val());
+        self.bilinear.c11[0].next = bit_cast::<32, 64>(self.c11.val() & self.r_mask.val());
+        self.bilinear.c11[1].next =
+            bit_cast::<32, 64>((self.c11.val() >> 16) & self.gba_mask.val());
+        self.bilinear.c11[2].next =
+            bit_cast::<32, 64>((self.c11.val() >> 32) & self.gba_mask.val());
+        self.bilinear.c11[3].next =
+            bit_cast::<32, 64>((self.c11.val() >> 48) & self.gba_mask.val());
         self.bilinear.wx.next = self.dxm_q.q.val();
         self.bilinear.wy.next = self.dym_q.q.val();
         // The sample waits for the bilinear unit (T -> T+2).
@@ -915,10 +950,10 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.s_a[1].d.next = self.s_a[0].q.val();
         self.s_v[1].d.next = self.s_v[0].q.val();
         // Compositing unit (T+2 -> T+3).
-        self.compositor.acc_r.next = bit_cast::<32, 16>(self.bilinear.out[0].val());
-        self.compositor.acc_g.next = self.bilinear.out[1].val();
-        self.compositor.acc_b.next = self.bilinear.out[2].val();
-        self.compositor.acc_a.next = self.bilinear.out[3].val();
+        self.compositor.acc_r.next = self.bilinear.out[0].val();
+        self.compositor.acc_g.next = bit_cast::<16, 32>(self.bilinear.out[1].val());
+        self.compositor.acc_b.next = bit_cast::<16, 32>(self.bilinear.out[2].val());
+        self.compositor.acc_a.next = bit_cast::<16, 32>(self.bilinear.out[3].val());
         self.compositor.new_r.next = bit_cast::<32, 16>(self.s_r[1].q.val());
         self.compositor.new_g.next = self.s_g[1].q.val();
         self.compositor.new_b.next = self.s_b[1].q.val();

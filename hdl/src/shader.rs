@@ -13,7 +13,8 @@
 //! 3. `shaded = sat(mul(colour, diffuse) + specular)`, `weighted = mul(shaded, alpha)`.
 //!
 //! Without shading the reflectance is `[M, 0]` and `mul(c, M) = c`. MIP and
-//! MinIP pass the intensity through with its validity. One register stage.
+//! MinIP pass the intensity through with its validity; X-ray takes the
+//! classified opacity. One register stage.
 //! The LUT contents are the golden model's own tables. The gradient-magnitude
 //! index of the opacity LUT (it needs an integer square root) is not built
 //! yet.
@@ -52,6 +53,7 @@ pub struct Shader {
     /// `[diffuse | specular << 16]` per quantized gradient.
     reflectance: ROM<Bits<32>, REFLECTANCE_BITS>,
     scalar: Constant<Bit>,
+    xray: Constant<Bit>,
     shaded: Constant<Bit>,
     edge_transparent: Constant<Bit>,
     shift: Constant<Bits<8>>,
@@ -100,9 +102,6 @@ impl Shader {
         {
             return Err("gradient-magnitude opacity needs the gradient-magnitude unit (an integer square root), which the RTL does not have yet".into());
         }
-        if golden.mode == Mode::Xray {
-            return Err("X-ray sums are wider than the RTL bilinear unit's 16-bit channels".into());
-        }
         let scalar = matches!(golden.mode, Mode::Mip | Mode::Minip);
         let m = max_of(golden.rgba_bits);
         let (entries, shift): (Vec<u64>, u32) = match (&golden.colour, &golden.opacity) {
@@ -129,6 +128,7 @@ impl Shader {
                     .collect(),
                 c.shift,
             ),
+            (None, Some(o)) => (o.table.iter().map(|&a| (a as u64) << 48).collect(), o.shift),
             _ => (Vec::new(), 0),
         };
         let lut: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
@@ -159,6 +159,7 @@ impl Shader {
             lut,
             reflectance,
             scalar: Constant::new(scalar),
+            xray: Constant::new(golden.mode == Mode::Xray),
             shaded: Constant::new(golden.reflectance.is_some()),
             edge_transparent: Constant::new(golden.needs_gradient),
             shift: Constant::new((shift as u64).to_bits()),
@@ -348,6 +349,11 @@ impl Logic for Shader {
             self.g_q.d.next = 0.into();
             self.b_q.d.next = 0.into();
             self.a_q.d.next = 0.into();
+        } else if self.xray.val() {
+            self.r_q.d.next = self.alpha.val();
+            self.g_q.d.next = 0.into();
+            self.b_q.d.next = 0.into();
+            self.a_q.d.next = 0.into();
         } else {
             self.r_q.d.next = self.mul_r.y.val();
             self.g_q.d.next = self.mul_g.y.val();
@@ -355,6 +361,9 @@ impl Logic for Shader {
             self.a_q.d.next = self.alpha.val();
         }
         self.valid_q.d.next = !self.invalid.val();
+        if self.xray.val() {
+            self.valid_q.d.next = true;
+        }
         self.r.next = self.r_q.q.val();
         self.g.next = self.g_q.q.val();
         self.b.next = self.b_q.q.val();

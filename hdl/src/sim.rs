@@ -2,7 +2,7 @@
 //! its base planes with the golden model's, pixel by pixel. Also writes the
 //! simulation's VCD and a GTKWave save file that groups the signals by stage.
 
-use crate::pipeline::{Pipeline, PipelineConfig};
+use crate::pipeline::{unpack, Pipeline, PipelineConfig};
 use golden_model::cfb::SkewedMemory;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
 use golden_model::plan::{Face, Plan};
@@ -160,6 +160,7 @@ fn run<const P: usize>(
     uut.cfb.preload(&mem.modules);
     uut.connect_all();
     let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(P)) as u64;
+    let mode = golden.mode;
     let out: Collected = std::sync::Arc::new(std::sync::Mutex::new((BasePlane::new(sweep), 0)));
     let sink = out.clone();
     let mut sim = Simulation::new();
@@ -182,8 +183,7 @@ fn run<const P: usize>(
             let mut o = sink.lock().unwrap();
             for lane in x.lanes.iter() {
                 if lane.px_valid.val() {
-                    let r = lane.res.val().to_u64();
-                    let v: [u32; 4] = std::array::from_fn(|c| ((r >> (16 * c)) & 0xffff) as u32);
+                    let v = unpack(mode, lane.res.val().to_u64());
                     let addr = [
                         lane.px_x.val().to_u32() as usize,
                         lane.px_y.val().to_u32() as usize,

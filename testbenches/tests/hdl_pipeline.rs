@@ -7,7 +7,7 @@ use golden_model::cfb::SkewedMemory;
 use golden_model::plan::{Face, Plan};
 use golden_model::shader::Shader as GoldenShader;
 use golden_model::volume::builtin;
-use hdl::pipeline::{Pipeline, PipelineConfig};
+use hdl::pipeline::{unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
 use testbenches::{require_tool, scene, stream_results};
 
@@ -57,6 +57,7 @@ fn run_sweep<const P: usize>(
     label: String,
 ) -> (u64, u64) {
     let golden = GoldenShader::new(s, cam, sweep);
+    let mode = golden.mode;
     let (base, results) = stream_results(vol, sweep, &golden, P);
     let config = PipelineConfig::new(sweep, vol.dims, P, &golden).unwrap();
     let mut uut = Pipeline::<P, A, H>::new(&config, &golden).unwrap();
@@ -89,8 +90,7 @@ fn run_sweep<const P: usize>(
                 let lane = &x.lanes[k];
                 assert_eq!(lane.res_valid.val(), want.is_some(), "{label}: beat {beat} lane {k}: padding");
                 let Some(want) = want else { continue };
-                let r = lane.res.val().to_u64();
-                let got: [u32; 4] = std::array::from_fn(|c| ((r >> (16 * c)) & 0xffff) as u32);
+                let got = unpack(mode, lane.res.val().to_u64());
                 if got != *want {
                     panic!("{label}: first mismatch at cycle {cycles}, beat {beat}, lane {k}, res: rtl {got:?} golden {want:?}");
                 }
@@ -171,6 +171,9 @@ fn pipeline_mip_every_view_and_p() {
 
 #[test]
 fn pipeline_composite_and_other_modes() {
+    for view in PERSPECTIVE.iter().take(1).chain(VIEWS.iter()) {
+        run::<2>([10, 10, 9], view, "xray", "phantom");
+    }
     for view in VIEWS {
         run::<4>([12, 12, 12], view, "composite", "phantom");
         run::<2>([9, 10, 8], view, "first_opaque", "sphere");
