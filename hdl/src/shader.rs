@@ -15,9 +15,10 @@
 //! Without shading the reflectance is `[M, 0]` and `mul(c, M) = c`. MIP and
 //! MinIP pass the intensity through with its validity; X-ray takes the
 //! classified opacity. One register stage.
-//! The LUT contents are the golden model's own tables. The gradient-magnitude
-//! index of the opacity LUT (it needs an integer square root) is not built
-//! yet.
+//! With `gradient_opacity` the opacity LUT is two-dimensional: the row of the
+//! intensity and `min(15, isqrt(gx^2 + gy^2 + gz^2) >> gm_shift)`, with the
+//! square root computed digit by digit (no multiplier). The LUT contents are
+//! the golden model's own tables.
 
 use crate::unorm::MulUnorm;
 use golden_model::fixed::max_of;
@@ -29,6 +30,36 @@ use rust_hdl::prelude::*;
 pub const LUT_INDEX_BITS: usize = 12;
 /// Reflectance-map index bits: three 5-bit components.
 pub const REFLECTANCE_BITS: usize = 15;
+
+/// `floor(sqrt(n))` of a 35-bit `n`, digit by digit (shifts, compares and
+/// subtracts; no multiplier), combinational.
+#[derive(LogicBlock, Default)]
+struct IntSqrt {
+    pub n: Signal<In, Bits<64>>,
+    pub root: Signal<Out, Bits<32>>,
+    op: Signal<Local, Bits<64>>,
+    res: Signal<Local, Bits<64>>,
+    trial: Signal<Local, Bits<64>>,
+}
+
+impl Logic for IntSqrt {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.op.next = self.n.val();
+        self.res.next = 0.into();
+        for i in 0..18 {
+            self.trial.next = self.res.val() + (bit_cast::<64, 1>(1.into()) << (34 - 2 * i));
+            if self.op.val() >= self.trial.val() {
+                self.op.next = self.op.val() - self.trial.val();
+                self.res.next =
+                    (self.res.val() >> 1) + (bit_cast::<64, 1>(1.into()) << (34 - 2 * i));
+            } else {
+                self.res.next = self.res.val() >> 1;
+            }
+        }
+        self.root.next = bit_cast::<32, 64>(self.res.val());
+    }
+}
 
 #[derive(LogicBlock)]
 pub struct Shader {
@@ -52,6 +83,17 @@ pub struct Shader {
     lut: ROM<Bits<64>, LUT_INDEX_BITS>,
     /// `[diffuse | specular << 16]` per quantized gradient.
     reflectance: ROM<Bits<32>, REFLECTANCE_BITS>,
+    /// Opacity by `(intensity row << 4) | gradient-magnitude bin` (empty
+    /// without gradient opacity).
+    alpha_gm: ROM<Bits<16>, 16>,
+    sqrt: IntSqrt,
+    sq_x: Signal<Local, Bits<32>>,
+    sq_y: Signal<Local, Bits<32>>,
+    sq_z: Signal<Local, Bits<32>>,
+    gm_bin: Signal<Local, Bits<32>>,
+    row: Signal<Local, Bits<LUT_INDEX_BITS>>,
+    gm_on: Constant<Bit>,
+    gm_shift: Constant<Bits<8>>,
     scalar: Constant<Bit>,
     xray: Constant<Bit>,
     shaded: Constant<Bit>,
@@ -95,13 +137,11 @@ impl Shader {
             NORMAL_BITS, 5,
             "the RTL normal quantizer is built for 5-bit components"
         );
-        if golden
-            .opacity
-            .as_ref()
-            .is_some_and(|o| o.gm_shift.is_some())
-        {
-            return Err("gradient-magnitude opacity needs the gradient-magnitude unit (an integer square root), which the RTL does not have yet".into());
-        }
+        assert_eq!(
+            golden_model::transfer::GM_BITS,
+            4,
+            "the RTL opacity LUT takes a 4-bit gradient-magnitude bin"
+        );
         let scalar = matches!(golden.mode, Mode::Mip | Mode::Minip);
         let m = max_of(golden.rgba_bits);
         let (entries, shift): (Vec<u64>, u32) = match (&golden.colour, &golden.opacity) {
@@ -132,6 +172,27 @@ impl Shader {
             _ => (Vec::new(), 0),
         };
         let lut: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
+        let gm_shift = golden.opacity.as_ref().and_then(|o| o.gm_shift);
+        let alpha_gm: ROM<Bits<16>, 16> = match (&golden.opacity, gm_shift) {
+            (Some(o), Some(_)) => o
+                .table
+                .iter()
+                .map(|&a| {
+                    let a = match golden.mode {
+                        Mode::FirstOpaque => {
+                            if a >= golden.threshold {
+                                m
+                            } else {
+                                0
+                            }
+                        }
+                        _ => a,
+                    };
+                    (a as u64).to_bits()
+                })
+                .into(),
+            _ => Vec::<Bits<16>>::new().into_iter().into(),
+        };
         let reflectance: ROM<Bits<32>, REFLECTANCE_BITS> = match &golden.reflectance {
             Some(r) => r
                 .table
@@ -158,6 +219,15 @@ impl Shader {
             valid: Default::default(),
             lut,
             reflectance,
+            alpha_gm,
+            sqrt: Default::default(),
+            sq_x: Default::default(),
+            sq_y: Default::default(),
+            sq_z: Default::default(),
+            gm_bin: Default::default(),
+            row: Default::default(),
+            gm_on: Constant::new(gm_shift.is_some()),
+            gm_shift: Constant::new((gm_shift.unwrap_or(0) as u64).to_bits()),
             scalar: Constant::new(scalar),
             xray: Constant::new(golden.mode == Mode::Xray),
             shaded: Constant::new(golden.reflectance.is_some()),
@@ -199,9 +269,25 @@ impl Logic for Shader {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, r_q, g_q, b_q, a_q, valid_q);
-        self.lut.address.next =
-            bit_cast::<LUT_INDEX_BITS, 16>(self.value.val() >> self.shift.val());
+        self.row.next = bit_cast::<LUT_INDEX_BITS, 16>(self.value.val() >> self.shift.val());
+        self.lut.address.next = self.row.val();
         self.alpha.next = bit_cast::<16, 64>(self.lut.data.val() >> 48);
+        // Gradient magnitude and the two-dimensional opacity LUT.
+        self.sq_x.next = self.gx_mag.val() * self.gx_mag.val();
+        self.sq_y.next = self.gy_mag.val() * self.gy_mag.val();
+        self.sq_z.next = self.gz_mag.val() * self.gz_mag.val();
+        self.sqrt.n.next = bit_cast::<64, 32>(self.sq_x.val())
+            + bit_cast::<64, 32>(self.sq_y.val())
+            + bit_cast::<64, 32>(self.sq_z.val());
+        self.gm_bin.next = self.sqrt.root.val() >> self.gm_shift.val();
+        if self.gm_bin.val() > 15 {
+            self.gm_bin.next = 15.into();
+        }
+        self.alpha_gm.address.next = (bit_cast::<16, LUT_INDEX_BITS>(self.row.val()) << 4)
+            | bit_cast::<16, 32>(self.gm_bin.val());
+        if self.gm_on.val() {
+            self.alpha.next = self.alpha_gm.data.val();
+        }
         if self.invalid.val() | (self.edge_transparent.val() & self.at_edge.val()) {
             self.alpha.next = 0.into();
         }

@@ -27,7 +27,22 @@ fn run_shaded<const P: usize>(
     vol_name: &str,
     shading: bool,
 ) -> (u64, u64) {
-    let tf = r#""transfer": {"opacity": [[0, 0], [40, 0.02], [120, 0.3], [200, 0.9], [255, 1.0]], "color": [[0, 0.2, 0.4, 1.0], [128, 1.0, 0.5, 0.1], [255, 1.0, 1.0, 1.0]]}"#;
+    run_tf::<P>(dims, view, mode, vol_name, shading, "")
+}
+
+/// One scene through every sweep; `gradient_opacity` is spliced into the
+/// transfer function.
+fn run_tf<const P: usize>(
+    dims: [usize; 3],
+    view: &str,
+    mode: &str,
+    vol_name: &str,
+    shading: bool,
+    gradient_opacity: &str,
+) -> (u64, u64) {
+    let tf = format!(
+        r#""transfer": {{"opacity": [[0, 0], [40, 0.02], [120, 0.3], [200, 0.9], [255, 1.0]], "color": [[0, 0.2, 0.4, 1.0], [128, 1.0, 0.5, 0.1], [255, 1.0, 1.0, 1.0]]{gradient_opacity}}}"#
+    );
     let s = scene(&format!(
         r#"{{"volume": {{"builtin": "{vol_name}", "dims": {dims:?}}}, "view": {view}, "mode": "{mode}", {tf},
             "shading": {{"enabled": {shading}, "light_dir": [0.3, 0.5, 1.0], "specular": 0.4}}, "image": [16, 16], "hardware": {{"pipelines": {P}}}}}"#
@@ -187,6 +202,16 @@ fn pipeline_shaded_composite_with_abc_gradients() {
         run_shaded::<4>([12, 12, 12], view, "composite", "phantom", true);
         run_shaded::<2>([10, 9, 8], view, "composite", "sphere", true);
         run_shaded::<1>([8, 8, 8], view, "first_opaque", "sphere", true);
+    }
+}
+
+#[test]
+fn pipeline_gradient_magnitude_opacity() {
+    let gm = r#", "gradient_opacity": [[0, 0.1], [10, 0.4], [40, 1.0]]"#;
+    for view in [VIEWS[1], VIEWS[3], PERSPECTIVE[0]] {
+        run_tf::<4>([12, 12, 12], view, "composite", "phantom", true, gm);
+        run_tf::<2>([10, 12, 9], view, "composite", "phantom", false, gm);
+        run_tf::<2>([10, 12, 9], view, "first_opaque", "sphere", false, gm);
     }
 }
 
