@@ -13,6 +13,9 @@
 //!
 //! The memory is loaded through the `load_*` port (one write per clock into
 //! module `load_module`) and maps to block RAM (`A` address bits per module).
+//! For volumes beyond on-chip memory, [`CfbConfig::external_memory`] makes
+//! each lane present its read address on `ext_addr` and take the voxel from
+//! `ext_data` one clock later, as a synchronous external RAM answers.
 //!
 //! dx and dy are frame registers for parallel views. Perspective views add
 //! the per-voxel divider: `S = P - V` in fixed point, then
@@ -48,6 +51,8 @@ pub struct CfbConfig {
     /// Perspective views: the eye in pipeline space, fixed point.
     pub eye: Option<[i64; 3]>,
     pub frac: u32,
+    /// Voxels come from an external RAM through `ext_addr`/`ext_data`.
+    pub external_memory: bool,
 }
 
 impl CfbConfig {
@@ -81,6 +86,7 @@ impl CfbConfig {
             dy,
             eye,
             frac: sweep.frac,
+            external_memory: false,
         })
     }
 
@@ -110,6 +116,10 @@ pub struct CfbLane<const A: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
+    /// External memory port: the read address, and the word it returns one
+    /// clock later.
+    pub ext_addr: Signal<Out, Bits<A>>,
+    pub ext_data: Signal<In, Bits<16>>,
     /// Outputs, one clock after the counters.
     pub value: Signal<Out, Bits<16>>,
     pub x: Signal<Out, Bits<16>>,
@@ -152,6 +162,7 @@ pub struct CfbLane<const A: usize> {
     slab_lo: Constant<Bits<16>>,
     slab_hi: Constant<Bits<16>>,
     perspective: Constant<Bit>,
+    external: Constant<Bit>,
     neg_ex: Constant<Bits<64>>,
     neg_ey: Constant<Bits<64>>,
     neg_ez: Constant<Bits<64>>,
@@ -218,6 +229,8 @@ impl<const A: usize> CfbLane<A> {
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
+            ext_addr: Default::default(),
+            ext_data: Default::default(),
             value: Default::default(),
             x: Default::default(),
             y: Default::default(),
@@ -254,6 +267,7 @@ impl<const A: usize> CfbLane<A> {
             slab_lo: Constant::new(bits16(slab & 0xffff)),
             slab_hi: Constant::new(bits16(slab >> 16)),
             perspective: Constant::new(c.eye.is_some()),
+            external: Constant::new(c.external_memory),
             neg_ex: Constant::new((c.eye.map_or(0, |e| e[0]).wrapping_neg() as u64).to_bits()),
             neg_ey: Constant::new((c.eye.map_or(0, |e| e[1]).wrapping_neg() as u64).to_bits()),
             neg_ez: Constant::new((c.eye.map_or(0, |e| e[2]).wrapping_neg() as u64).to_bits()),
@@ -358,6 +372,7 @@ impl<const A: usize> Logic for CfbLane<A> {
             self.addr.next = 0.into();
         }
         self.memory.read_address.next = bit_cast::<A, 32>(self.addr.val());
+        self.ext_addr.next = bit_cast::<A, 32>(self.addr.val());
         // Sight-ray increments: frame registers, or the per-voxel divider.
         self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.neg_ex.val();
         self.sy.next =
@@ -476,6 +491,9 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.halo_q.d.next = (self.n_s.val() < self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.
         self.value.next = self.memory.read_data.val();
+        if self.external.val() {
+            self.value.next = self.ext_data.val();
+        }
         if self.pad_q.q.val() {
             self.value.next = 0.into();
         }
@@ -531,6 +549,9 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub at_edge: [Signal<Out, Bit>; P],
     pub invalid: [Signal<Out, Bit>; P],
     pub halo: [Signal<Out, Bit>; P],
+    /// Per lane: the external memory port (see `CfbLane`).
+    pub ext_addr: [Signal<Out, Bits<A>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
     pub dx_neg: [Signal<Out, Bit>; P],
     pub dx_mag: [Signal<Out, Bits<16>>; P],
     pub dy_neg: [Signal<Out, Bit>; P],
@@ -579,6 +600,8 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             at_edge: std::array::from_fn(|_| Default::default()),
             invalid: std::array::from_fn(|_| Default::default()),
             halo: std::array::from_fn(|_| Default::default()),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
             dx_neg: std::array::from_fn(|_| Default::default()),
             dx_mag: std::array::from_fn(|_| Default::default()),
             dy_neg: std::array::from_fn(|_| Default::default()),
@@ -625,6 +648,8 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.at_edge[k].next = self.lanes[k].at_edge.val();
             self.invalid[k].next = self.lanes[k].invalid.val();
             self.halo[k].next = self.lanes[k].halo.val();
+            self.ext_addr[k].next = self.lanes[k].ext_addr.val();
+            self.lanes[k].ext_data.next = self.ext_data[k].val();
             self.dx_neg[k].next = self.lanes[k].dx_neg.val();
             self.dx_mag[k].next = self.lanes[k].dx_mag.val();
             self.dy_neg[k].next = self.lanes[k].dy_neg.val();

@@ -1069,6 +1069,7 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].clock.next = self.clock.val();
             self.lanes[k].now.next = self.now.q.val();
             self.lanes[k].beat_valid.next = self.cfb.valid.val();
+            self.cfb.ext_data[k].next = 0.into();
             self.lanes[k].value.next = self.cfb.value[k].val();
             self.lanes[k].x.next = self.cfb.x[k].val();
             self.lanes[k].y.next = self.cfb.y[k].val();

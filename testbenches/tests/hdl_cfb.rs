@@ -44,6 +44,18 @@ fn run_sweep<const P: usize>(
     sweep: &golden_model::plan::Sweep,
     label: &str,
 ) {
+    run_sweep_memory::<P>(vol, sweep, label, false)
+}
+
+/// With `external`, the voxels come from a RAM model in the testbench that
+/// answers each lane's `ext_addr` one clock later; otherwise the memory is
+/// loaded through the load port.
+fn run_sweep_memory<const P: usize>(
+    vol: &golden_model::volume::Volume,
+    sweep: &golden_model::plan::Sweep,
+    label: &str,
+    external: bool,
+) {
     let label = label.to_string();
     let mem = SkewedMemory::new(vol, P);
     assert!(
@@ -51,7 +63,10 @@ fn run_sweep<const P: usize>(
         "test volume too large for {A} address bits"
     );
     let beats: Vec<_> = CfbStream::new(&mem, vol.dims, sweep).collect();
-    let config = CfbConfig::from_sweep(sweep, vol.dims, P).unwrap();
+    let config = CfbConfig {
+        external_memory: external,
+        ..CfbConfig::from_sweep(sweep, vol.dims, P).unwrap()
+    };
     let mut uut = Cfb::<P, A>::new(&config);
     uut.connect_all();
     let mut sim = Simulation::new();
@@ -60,8 +75,8 @@ fn run_sweep<const P: usize>(
     let total = (mem.modules.len() * mem.modules[0].len() + 4 * beats.len() + 64) as u64;
     sim.add_testbench(move |mut sim: Sim<Cfb<P, A>>| {
         let mut x = sim.init()?;
-        // Load the skewed memory, one word per clock.
-        for (k, module) in modules.iter().enumerate() {
+        // Load the skewed memory, one word per clock (the internal memory).
+        for (k, module) in modules.iter().enumerate().filter(|_| !external) {
             for (i, &v) in module.iter().enumerate() {
                 x.load_enable.next = true;
                 x.load_module.next = (k as u64).to_bits();
@@ -76,10 +91,22 @@ fn run_sweep<const P: usize>(
         x.start.next = false;
         let mut next = 0;
         let mut cycles = 0u64;
+        // The address of the first beat is presented in the clock after start.
+        let mut pending: [usize; P] = std::array::from_fn(|k| x.ext_addr[k].val().to_u32() as usize);
         while next < beats.len() {
             wait_clock_cycle!(sim, clock, x);
             cycles += 1;
             assert!(cycles < 4 * beats.len() as u64 + 16, "{label}: stream stalled at beat {next}");
+            if external {
+                // The external RAM model: at the edge it returns the word
+                // addressed in the clock before; outputs are compared half a
+                // clock later, once they have settled.
+                for k in 0..P {
+                    x.ext_data[k].next = (modules[k].get(pending[k]).copied().unwrap_or(0) as u64).to_bits();
+                    pending[k] = x.ext_addr[k].val().to_u32() as usize;
+                }
+                wait_clock_false!(sim, clock, x);
+            }
             if !x.valid.val() {
                 continue;
             }
@@ -148,6 +175,20 @@ fn sign_mag(neg: bool, mag: u32) -> u32 {
         (mag as i32).wrapping_neg() as u32
     } else {
         mag
+    }
+}
+
+#[test]
+fn cfb_with_external_memory_model() {
+    for view in [views()[0], views()[4]] {
+        let s = scene(&format!(
+            r#"{{"volume": {{"builtin": "phantom", "dims": [10, 8, 6]}}, "view": {view}, "image": [16, 16]}}"#
+        ));
+        let vol = builtin("phantom", [10, 8, 6], 8).unwrap();
+        let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+        for sweep in &plan.sweeps {
+            run_sweep_memory::<4>(&vol, sweep, &format!("external memory, {view}"), true);
+        }
     }
 }
 
