@@ -134,3 +134,28 @@ impl Vectors {
         (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 32) as u32 % (max + 1)
     }
 }
+
+/// Run a rust-hdl simulation; with the environment variable `CUBE_VCD` set,
+/// trace it to `target/tmp/vcd/<name>.vcd` (the big pipeline runs would
+/// write gigabytes if they always traced).
+pub fn run_sim<T: rust_hdl::prelude::Block + Send + 'static>(
+    mut sim: rust_hdl::prelude::Simulation<T>,
+    uut: Box<T>,
+    max_time: u64,
+    name: &str,
+) {
+    let result = match std::env::var_os("CUBE_VCD") {
+        Some(_) => {
+            let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/tmp/vcd");
+            std::fs::create_dir_all(&dir).unwrap();
+            let file: String = name
+                .chars()
+                .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+                .collect();
+            let path = dir.join(format!("{file}.vcd"));
+            sim.run_traced(uut, max_time, std::fs::File::create(&path).unwrap())
+        }
+        None => sim.run(uut, max_time),
+    };
+    result.unwrap_or_else(|e| panic!("{name}: simulation failed: {e:?}"));
+}

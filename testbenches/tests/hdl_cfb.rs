@@ -7,7 +7,7 @@ use golden_model::plan::Plan;
 use golden_model::volume::builtin;
 use hdl::cfb::{face_code, Cfb, CfbConfig};
 use rust_hdl::prelude::*;
-use testbenches::{require_tool, scene};
+use testbenches::{require_tool, run_sim, scene};
 
 const A: usize = 12;
 
@@ -73,6 +73,7 @@ fn run_sweep_memory<const P: usize>(
     sim.add_clock(5, |x: &mut Box<Cfb<P, A>>| x.clock.next = !x.clock.val());
     let modules = mem.modules.clone();
     let total = (mem.modules.len() * mem.modules[0].len() + 4 * beats.len() + 64) as u64;
+    let label_for_vcd = label.clone();
     sim.add_testbench(move |mut sim: Sim<Cfb<P, A>>| {
         let mut x = sim.init()?;
         // Load the skewed memory, one word per clock (the internal memory).
@@ -155,8 +156,12 @@ fn run_sweep_memory<const P: usize>(
         assert_eq!(cycles, beats.len() as u64, "{label}: clocks per sweep");
         sim.done(x)
     });
-    sim.run(Box::new(uut), 10 * total)
-        .unwrap_or_else(|e| panic!("{e:?}"));
+    run_sim(
+        sim,
+        Box::new(uut),
+        10 * total,
+        &format!("cfb {label_for_vcd}"),
+    );
 }
 
 #[test]

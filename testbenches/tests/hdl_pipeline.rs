@@ -9,7 +9,7 @@ use golden_model::shader::Shader as GoldenShader;
 use golden_model::volume::builtin;
 use hdl::pipeline::{unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
-use testbenches::{require_tool, scene, stream_results};
+use testbenches::{require_tool, run_sim, scene, stream_results};
 
 const A: usize = 13;
 const H: usize = 12;
@@ -88,6 +88,7 @@ fn run_sweep<const P: usize>(
     });
     let ideal = beats as u64;
     let (tx, rx) = std::sync::mpsc::channel();
+    let label_for_vcd = label.clone();
     sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
         let mut x = sim.init()?;
         x.start.next = true;
@@ -123,8 +124,12 @@ fn run_sweep<const P: usize>(
         tx.send(cycles + 1).unwrap();
         sim.done(x)
     });
-    sim.run(Box::new(uut), 10 * (3 * beats as u64 + 200))
-        .unwrap_or_else(|e| panic!("{e:?}"));
+    run_sim(
+        sim,
+        Box::new(uut),
+        10 * (3 * beats as u64 + 200),
+        &format!("pipeline {label_for_vcd}"),
+    );
     (rx.recv().unwrap(), ideal)
 }
 
