@@ -1012,6 +1012,15 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
+    /// The pixel bus: per pipeline, a base-plane pixel on ER (§3, Fig. 4),
+    /// and each lane's composited value with its beat and padding flags.
+    pub px_valid: [Signal<Out, Bit>; P],
+    pub px_x: [Signal<Out, Bits<16>>; P],
+    pub px_y: [Signal<Out, Bits<16>>; P],
+    pub px_face: [Signal<Out, Bits<3>>; P],
+    pub res_beat: [Signal<Out, Bit>; P],
+    pub res_valid: [Signal<Out, Bit>; P],
+    pub res: [Signal<Out, Bits<64>>; P],
     pub cfb: Cfb<P, A>,
     pub lanes: [PipeLane<H>; P],
     now: DFF<Bits<H>>,
@@ -1047,6 +1056,13 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
+            px_valid: std::array::from_fn(|_| Default::default()),
+            px_x: std::array::from_fn(|_| Default::default()),
+            px_y: std::array::from_fn(|_| Default::default()),
+            px_face: std::array::from_fn(|_| Default::default()),
+            res_beat: std::array::from_fn(|_| Default::default()),
+            res_valid: std::array::from_fn(|_| Default::default()),
+            res: std::array::from_fn(|_| Default::default()),
             cfb: Cfb::new(&config.cfb),
             lanes: lanes.try_into().unwrap_or_else(|_| unreachable!()),
             now: Default::default(),
@@ -1070,6 +1086,13 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].now.next = self.now.q.val();
             self.lanes[k].beat_valid.next = self.cfb.valid.val();
             self.cfb.ext_data[k].next = 0.into();
+            self.px_valid[k].next = self.lanes[k].px_valid.val();
+            self.px_x[k].next = self.lanes[k].px_x.val();
+            self.px_y[k].next = self.lanes[k].px_y.val();
+            self.px_face[k].next = self.lanes[k].px_face.val();
+            self.res_beat[k].next = self.lanes[k].res_beat.val();
+            self.res_valid[k].next = self.lanes[k].res_valid.val();
+            self.res[k].next = self.lanes[k].res.val();
             self.lanes[k].value.next = self.cfb.value[k].val();
             self.lanes[k].x.next = self.cfb.x[k].val();
             self.lanes[k].y.next = self.cfb.y[k].val();
