@@ -17,9 +17,8 @@ use std::time::Instant;
 const A: usize = 16;
 const H: usize = 16;
 /// Clocks above which rust-hdl simulation is refused. With p = 4 the whole
-/// pipeline simulates at about 1.2·10^3 clocks/s for MIP and 5.8·10^2
-/// clocks/s shaded (measured with `cube sim` on `scenes/sim_*.json`), so this
-/// bounds a run to about two minutes.
+/// pipeline simulates at about 4-5·10^2 clocks/s (measured with `cube sim` on
+/// `scenes/sim_*.json`), so this bounds a run to two or three minutes.
 pub const MAX_SIM_BEATS: u64 = 1 << 16;
 
 /// One base-plane pixel where RTL and golden model differ.
