@@ -9,68 +9,19 @@
 //! lerp(a, b, w) = a + (((b - a) * w + 2^(f-1)) >> f)   (arithmetic shift)
 //! ```
 //!
-//! Two register stages, one voxel per clock. Channel 0 is 32 bits wide for
-//! the X-ray sum (`rgba_bits + log2(depth)` bits): its difference is split
-//! into 16-bit halves for two 16x16 multipliers, and with 16-bit inputs the
-//! upper half is constant zero, so synthesis removes it. Channels 1-3 are 16
-//! bits wide.
+//! Two register stages, one voxel per clock. Every channel is 32 bits wide
+//! so that channel 0 can carry the X-ray sum (`rgba_bits + log2(depth)`
+//! bits); the difference is split into 16-bit halves for two 16x16
+//! multipliers, and where the inputs are 16-bit values the upper half is
+//! constant zero, so synthesis removes it.
 
 use rust_hdl::prelude::*;
 
-/// `lerp(a, b, w)` with `w` in `0..=2^frac`, combinational, one multiplier.
-/// Unsigned form of the arithmetic shift: for `b >= a`,
-/// `a + (((b - a) * w + 2^(f-1)) >> f)`; for `b < a`,
-/// `a - (((a - b) * w + 2^(f-1) - 1) >> f)`.
-#[derive(LogicBlock)]
-struct Lerp {
-    pub a: Signal<In, Bits<16>>,
-    pub b: Signal<In, Bits<16>>,
-    pub w: Signal<In, Bits<16>>,
-    pub y: Signal<Out, Bits<16>>,
-    half: Constant<Bits<32>>,
-    shift: Constant<Bits<8>>,
-    diff: Signal<Local, Bits<16>>,
-    step_up: Signal<Local, Bits<32>>,
-    step_down: Signal<Local, Bits<32>>,
-}
-
-impl Lerp {
-    fn new(frac_bits: u32) -> Lerp {
-        Lerp {
-            a: Default::default(),
-            b: Default::default(),
-            w: Default::default(),
-            y: Default::default(),
-            half: Constant::new((1u64 << (frac_bits - 1)).to_bits()),
-            shift: Constant::new((frac_bits as u64).to_bits()),
-            diff: Default::default(),
-            step_up: Default::default(),
-            step_down: Default::default(),
-        }
-    }
-}
-
-impl Logic for Lerp {
-    #[hdl_gen]
-    fn update(&mut self) {
-        if self.b.val() >= self.a.val() {
-            self.diff.next = self.b.val() - self.a.val();
-        } else {
-            self.diff.next = self.a.val() - self.b.val();
-        }
-        self.step_up.next = (self.diff.val() * self.w.val() + self.half.val()) >> self.shift.val();
-        self.step_down.next =
-            (self.diff.val() * self.w.val() + self.half.val() - 1) >> self.shift.val();
-        if self.b.val() >= self.a.val() {
-            self.y.next = self.a.val() + bit_cast::<16, 32>(self.step_up.val());
-        } else {
-            self.y.next = self.a.val() - bit_cast::<16, 32>(self.step_down.val());
-        }
-    }
-}
-
-/// `lerp(a, b, w)` for 32-bit `a`, `b`: the difference's halves go through
-/// two 16x16 multipliers, `d*w = (d_hi*w << 16) + d_lo*w`.
+/// `lerp(a, b, w)` with `w` in `0..=2^frac`, combinational. In unsigned
+/// form: for `b >= a`, `a + (((b - a) * w + 2^(f-1)) >> f)`; for `b < a`,
+/// `a - (((a - b) * w + 2^(f-1) - 1) >> f)` (the arithmetic shift of the
+/// golden model). The 32-bit difference's halves go through two 16x16
+/// multipliers, `d*w = (d_hi*w << 16) + d_lo*w`.
 #[derive(LogicBlock)]
 struct WideLerp {
     pub a: Signal<In, Bits<32>>,
@@ -123,7 +74,7 @@ impl Logic for WideLerp {
     }
 }
 
-/// Channel 0: the same two stages with 32-bit values.
+/// One channel: two x lerps, a register, the y lerp, a register.
 #[derive(LogicBlock)]
 struct WideChannel {
     pub clock: Signal<In, Clock>,
@@ -183,67 +134,6 @@ impl Logic for WideChannel {
     }
 }
 
-/// One channel: two x lerps, a register, the y lerp, a register.
-#[derive(LogicBlock)]
-struct Channel {
-    pub clock: Signal<In, Clock>,
-    pub c00: Signal<In, Bits<16>>,
-    pub c10: Signal<In, Bits<16>>,
-    pub c01: Signal<In, Bits<16>>,
-    pub c11: Signal<In, Bits<16>>,
-    pub wx: Signal<In, Bits<16>>,
-    /// |dy|, already delayed to stage 2 by the caller.
-    pub wy: Signal<In, Bits<16>>,
-    pub y: Signal<Out, Bits<16>>,
-    top: Lerp,
-    bottom: Lerp,
-    vertical: Lerp,
-    top_q: DFF<Bits<16>>,
-    bottom_q: DFF<Bits<16>>,
-    out_q: DFF<Bits<16>>,
-}
-
-impl Channel {
-    fn new(frac_bits: u32) -> Channel {
-        Channel {
-            clock: Default::default(),
-            c00: Default::default(),
-            c10: Default::default(),
-            c01: Default::default(),
-            c11: Default::default(),
-            wx: Default::default(),
-            wy: Default::default(),
-            y: Default::default(),
-            top: Lerp::new(frac_bits),
-            bottom: Lerp::new(frac_bits),
-            vertical: Lerp::new(frac_bits),
-            top_q: Default::default(),
-            bottom_q: Default::default(),
-            out_q: Default::default(),
-        }
-    }
-}
-
-impl Logic for Channel {
-    #[hdl_gen]
-    fn update(&mut self) {
-        dff_setup!(self, clock, top_q, bottom_q, out_q);
-        self.top.a.next = self.c00.val();
-        self.top.b.next = self.c10.val();
-        self.top.w.next = self.wx.val();
-        self.bottom.a.next = self.c01.val();
-        self.bottom.b.next = self.c11.val();
-        self.bottom.w.next = self.wx.val();
-        self.top_q.d.next = self.top.y.val();
-        self.bottom_q.d.next = self.bottom.y.val();
-        self.vertical.a.next = self.top_q.q.val();
-        self.vertical.b.next = self.bottom_q.q.val();
-        self.vertical.w.next = self.wy.val();
-        self.out_q.d.next = self.vertical.y.val();
-        self.y.next = self.out_q.q.val();
-    }
-}
-
 /// The bilinear datapath for RGBA (or an X-ray sum in channel 0): cells
 /// `cXY[channel]` where X/Y = 1 names the neighbour chosen by the sign of
 /// dx/dy; two clocks of latency.
@@ -259,8 +149,7 @@ pub struct Bilinear {
     pub wy: Signal<In, Bits<16>>,
     pub out: [Signal<Out, Bits<32>>; 4],
     wy_q: DFF<Bits<16>>,
-    wide: WideChannel,
-    ch: [Channel; 3],
+    ch: [WideChannel; 4],
 }
 
 impl Bilinear {
@@ -275,8 +164,7 @@ impl Bilinear {
             wy: Default::default(),
             out: Default::default(),
             wy_q: Default::default(),
-            wide: WideChannel::new(frac_bits),
-            ch: std::array::from_fn(|_| Channel::new(frac_bits)),
+            ch: std::array::from_fn(|_| WideChannel::new(frac_bits)),
         }
     }
 }
@@ -286,37 +174,37 @@ impl Logic for Bilinear {
     fn update(&mut self) {
         dff_setup!(self, clock, wy_q);
         self.wy_q.d.next = self.wy.val();
-        self.wide.clock.next = self.clock.val();
-        self.wide.c00.next = self.c00[0].val();
-        self.wide.c10.next = self.c10[0].val();
-        self.wide.c01.next = self.c01[0].val();
-        self.wide.c11.next = self.c11[0].val();
-        self.wide.wx.next = self.wx.val();
-        self.wide.wy.next = self.wy_q.q.val();
-        self.out[0].next = self.wide.y.val();
         self.ch[0].clock.next = self.clock.val();
-        self.ch[0].c00.next = bit_cast::<16, 32>(self.c00[1].val());
-        self.ch[0].c10.next = bit_cast::<16, 32>(self.c10[1].val());
-        self.ch[0].c01.next = bit_cast::<16, 32>(self.c01[1].val());
-        self.ch[0].c11.next = bit_cast::<16, 32>(self.c11[1].val());
+        self.ch[0].c00.next = self.c00[0].val();
+        self.ch[0].c10.next = self.c10[0].val();
+        self.ch[0].c01.next = self.c01[0].val();
+        self.ch[0].c11.next = self.c11[0].val();
         self.ch[0].wx.next = self.wx.val();
         self.ch[0].wy.next = self.wy_q.q.val();
-        self.out[1].next = bit_cast::<32, 16>(self.ch[0].y.val());
+        self.out[0].next = self.ch[0].y.val();
         self.ch[1].clock.next = self.clock.val();
-        self.ch[1].c00.next = bit_cast::<16, 32>(self.c00[2].val());
-        self.ch[1].c10.next = bit_cast::<16, 32>(self.c10[2].val());
-        self.ch[1].c01.next = bit_cast::<16, 32>(self.c01[2].val());
-        self.ch[1].c11.next = bit_cast::<16, 32>(self.c11[2].val());
+        self.ch[1].c00.next = self.c00[1].val();
+        self.ch[1].c10.next = self.c10[1].val();
+        self.ch[1].c01.next = self.c01[1].val();
+        self.ch[1].c11.next = self.c11[1].val();
         self.ch[1].wx.next = self.wx.val();
         self.ch[1].wy.next = self.wy_q.q.val();
-        self.out[2].next = bit_cast::<32, 16>(self.ch[1].y.val());
+        self.out[1].next = self.ch[1].y.val();
         self.ch[2].clock.next = self.clock.val();
-        self.ch[2].c00.next = bit_cast::<16, 32>(self.c00[3].val());
-        self.ch[2].c10.next = bit_cast::<16, 32>(self.c10[3].val());
-        self.ch[2].c01.next = bit_cast::<16, 32>(self.c01[3].val());
-        self.ch[2].c11.next = bit_cast::<16, 32>(self.c11[3].val());
+        self.ch[2].c00.next = self.c00[2].val();
+        self.ch[2].c10.next = self.c10[2].val();
+        self.ch[2].c01.next = self.c01[2].val();
+        self.ch[2].c11.next = self.c11[2].val();
         self.ch[2].wx.next = self.wx.val();
         self.ch[2].wy.next = self.wy_q.q.val();
-        self.out[3].next = bit_cast::<32, 16>(self.ch[2].y.val());
+        self.out[2].next = self.ch[2].y.val();
+        self.ch[3].clock.next = self.clock.val();
+        self.ch[3].c00.next = self.c00[3].val();
+        self.ch[3].c10.next = self.c10[3].val();
+        self.ch[3].c01.next = self.c01[3].val();
+        self.ch[3].c11.next = self.c11[3].val();
+        self.ch[3].wx.next = self.wx.val();
+        self.ch[3].wy.next = self.wy_q.q.val();
+        self.out[3].next = self.ch[3].y.val();
     }
 }

@@ -11,10 +11,10 @@
 //!
 //! The mode and order are fixed by the scene when the unit is built; the
 //! logic of the other modes is constant-folded away by synthesis.
-//! `mul(a, b) = round(a*b / M)` with `M = 2^rgba_bits - 1`, as
-//! `t = a*b + 2^(rgba_bits-1); (t + (t >> rgba_bits)) >> rgba_bits`: one
-//! 16x16 multiplier per channel.
+//! `mul(a, b) = round(a*b / M)` with `M = 2^rgba_bits - 1` is `unorm::MulUnorm`:
+//! one 16x16 multiplier per channel.
 
+use crate::unorm::MulUnorm;
 use golden_model::plan::Order;
 use golden_model::scene::Mode;
 use rust_hdl::prelude::*;
@@ -27,10 +27,7 @@ struct OverChannel {
     pub front_alpha: Signal<In, Bits<16>>,
     pub result: Signal<Out, Bits<16>>,
     m: Constant<Bits<16>>,
-    half: Constant<Bits<32>>,
-    shift: Constant<Bits<8>>,
-    product: Signal<Local, Bits<32>>,
-    scaled: Signal<Local, Bits<32>>,
+    mul: MulUnorm,
     sum: Signal<Local, Bits<32>>,
 }
 
@@ -38,14 +35,11 @@ impl OverChannel {
     fn new(rgba_bits: u32) -> OverChannel {
         OverChannel {
             m: Constant::new(((1u64 << rgba_bits) - 1).to_bits()),
-            half: Constant::new((1u64 << (rgba_bits - 1)).to_bits()),
-            shift: Constant::new((rgba_bits as u64).to_bits()),
+            mul: MulUnorm::new(rgba_bits),
             front: Default::default(),
             back: Default::default(),
             front_alpha: Default::default(),
             result: Default::default(),
-            product: Default::default(),
-            scaled: Default::default(),
             sum: Default::default(),
         }
     }
@@ -54,11 +48,9 @@ impl OverChannel {
 impl Logic for OverChannel {
     #[hdl_gen]
     fn update(&mut self) {
-        self.product.next =
-            (self.m.val() - self.front_alpha.val()) * self.back.val() + self.half.val();
-        self.scaled.next =
-            (self.product.val() + (self.product.val() >> self.shift.val())) >> self.shift.val();
-        self.sum.next = bit_cast::<32, 16>(self.front.val()) + self.scaled.val();
+        self.mul.a.next = self.m.val() - self.front_alpha.val();
+        self.mul.b.next = self.back.val();
+        self.sum.next = bit_cast::<32, 16>(self.front.val()) + bit_cast::<32, 16>(self.mul.y.val());
         self.result.next = bit_cast::<16, 32>(self.sum.val());
         if self.sum.val() > bit_cast::<32, 16>(self.m.val()) {
             self.result.next = self.m.val();

@@ -159,3 +159,22 @@ pub fn run_sim<T: rust_hdl::prelude::Block + Send + 'static>(
     };
     result.unwrap_or_else(|e| panic!("{name}: simulation failed: {e:?}"));
 }
+
+/// Convert a VCD with `vcd2fst` (GTKWave's parser) and fail with its message
+/// if it rejects the file.
+pub fn assert_vcd_parses(vcd: &std::path::Path) {
+    require_tool("vcd2fst");
+    let fst = vcd.with_extension("fst");
+    let out = std::process::Command::new("vcd2fst")
+        .arg(vcd)
+        .arg(&fst)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "vcd2fst rejects {}: {}",
+        vcd.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::metadata(&fst).unwrap().len() > 0);
+}
