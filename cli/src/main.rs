@@ -36,7 +36,10 @@ enum Arch {
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Engine {
+    /// rust-hdl's own simulator.
     RustHdl,
+    /// Icarus Verilog running the Verilog rust-hdl emits.
+    Iverilog,
 }
 
 #[derive(Subcommand)]
@@ -295,11 +298,14 @@ fn sim_cmd(
     out: Option<PathBuf>,
     json_path: Option<PathBuf>,
 ) -> Result<()> {
-    let Engine::RustHdl = engine;
+    let (engine, name) = match engine {
+        Engine::RustHdl => (hdl::sim::Engine::RustHdl, "rust-hdl"),
+        Engine::Iverilog => (hdl::sim::Engine::Iverilog, "iverilog"),
+    };
     let (scene, vol) = load(scene_path)?;
     let cam = scene.camera()?;
     let vcd_tmp = vcd.as_ref().map(|v| v.with_extension("vcd.tmp"));
-    let r = hdl::sim::simulate(&scene, &cam, &vol, vcd_tmp.as_deref())
+    let r = hdl::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
         .map_err(|e| anyhow::anyhow!("sim: {e}"))?;
     if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
         std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
@@ -312,7 +318,7 @@ fn sim_cmd(
     }
     let cps = r.cycles as f64 / r.seconds;
     println!(
-        "rust-hdl: {} clocks (ideal {}, +{} fill), {:.2} s, {:.0} clocks/s; {} base-plane pixels differ from the golden model",
+        "{name}: {} clocks (ideal {}, +{} fill), {:.2} s, {:.0} clocks/s; {} base-plane pixels differ from the golden model",
         r.cycles,
         r.ideal_cycles,
         r.cycles - r.ideal_cycles,
@@ -343,7 +349,7 @@ fn sim_cmd(
         write_json(
             &j,
             &json!({
-                "engine": "rust-hdl",
+                "engine": name,
                 "scene": scene_path.display().to_string(),
                 "cycles": r.cycles,
                 "ideal_cycles": r.ideal_cycles,

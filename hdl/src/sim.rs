@@ -1,6 +1,9 @@
-//! Run a whole scene through the rust-hdl pipeline in simulation and compare
-//! its base planes with the golden model's, pixel by pixel. Also writes the
-//! simulation's VCD and a GTKWave save file that groups the signals by stage.
+//! Run a whole scene through the pipeline in simulation and compare its base
+//! planes with the golden model's, pixel by pixel. Two engines: rust-hdl's own
+//! simulator (which can also write a VCD and a GTKWave save file grouping the
+//! signals by stage), and Icarus Verilog running the Verilog that rust-hdl
+//! emits, so that the emitted Verilog itself is checked against the golden
+//! model.
 
 use crate::pipeline::{unpack, Pipeline, PipelineConfig};
 use golden_model::cfb::SkewedMemory;
@@ -57,13 +60,35 @@ fn face_of(code: u32) -> Face {
     ][code as usize]
 }
 
-/// Simulate `scene` on `vol`; `vcd` names a VCD to write (with a `.gtkw`
-/// beside it). Errors name what the RTL cannot do yet or why a scene is too
-/// large for rust-hdl simulation.
+/// The simulator that runs the pipeline.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Engine {
+    RustHdl,
+    /// Icarus Verilog on the emitted Verilog.
+    Iverilog,
+}
+
+/// Clocks above which Icarus simulation is refused.
+pub const MAX_IVERILOG_BEATS: u64 = 1 << 20;
+
+/// Simulate `scene` on `vol` with rust-hdl; `vcd` names a VCD to write (with a
+/// `.gtkw` beside it). Errors name what the RTL cannot do yet or why a scene
+/// is too large for rust-hdl simulation.
 pub fn simulate(
     scene: &Scene,
     camera: &Camera,
     vol: &Volume,
+    vcd: Option<&Path>,
+) -> Result<SimOutcome, String> {
+    simulate_with(scene, camera, vol, Engine::RustHdl, vcd)
+}
+
+/// Simulate with either engine (a VCD only with rust-hdl).
+pub fn simulate_with(
+    scene: &Scene,
+    camera: &Camera,
+    vol: &Volume,
+    engine: Engine,
     vcd: Option<&Path>,
 ) -> Result<SimOutcome, String> {
     let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
@@ -81,11 +106,18 @@ pub fn simulate(
         .iter()
         .map(|s| ((s.z1 - s.z0 + 1) * s.dims[1] * s.dims[0].div_ceil(p)) as u64)
         .sum();
-    if beats > MAX_SIM_BEATS {
-        return Err(format!(
-            "{beats} clocks are too many for rust-hdl simulation (limit {MAX_SIM_BEATS}); use a smaller volume, \
-             or the Verilog engines (Verilator/Icarus), which are not built yet"
-        ));
+    match engine {
+        Engine::RustHdl if beats > MAX_SIM_BEATS => {
+            return Err(format!(
+                "{beats} clocks are too many for rust-hdl simulation (limit {MAX_SIM_BEATS}); use a smaller volume, \
+                 or the Verilog engines: --engine iverilog (Verilator is not built yet)"
+            ))
+        }
+        Engine::Iverilog if beats > MAX_IVERILOG_BEATS => {
+            return Err(format!("{beats} clocks are too many for Icarus simulation (limit {MAX_IVERILOG_BEATS})"))
+        }
+        Engine::Iverilog if vcd.is_some() => return Err("--vcd is written by the rust-hdl engine only".into()),
+        _ => {}
     }
     let t = Instant::now();
     let mut bases = Vec::new();
@@ -208,6 +240,136 @@ fn run<const P: usize>(
     }
     let o = out.lock().unwrap();
     Ok((o.0.clone(), o.1))
+}
+
+/// Run one sweep of the emitted Verilog under Icarus: the pipeline with its
+/// memory preloaded, and a generated testbench that starts it and logs every
+/// pixel on the pixel bus until the last beat.
+fn run_iverilog<const P: usize>(
+    config: &PipelineConfig,
+    golden: &GoldenShader,
+    mem: &SkewedMemory,
+    sweep: &golden_model::plan::Sweep,
+) -> Result<(BasePlane, u64), String> {
+    let verilog = emit_verilog::<P>(config, golden, mem)?;
+    run_icarus(&verilog, P, sweep, golden.mode)
+}
+
+/// The Verilog of one sweep's pipeline, with the voxel memory preloaded
+/// (block-RAM initialisation), as the simulation engines run it.
+pub fn emit_verilog<const P: usize>(
+    config: &PipelineConfig,
+    golden: &GoldenShader,
+    mem: &SkewedMemory,
+) -> Result<String, String> {
+    let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
+    uut.cfb.preload(&mem.modules);
+    uut.connect_all();
+    Ok(generate_verilog(&uut))
+}
+
+/// Simulate emitted pipeline Verilog (from [`emit_verilog`], possibly altered)
+/// under Icarus for one sweep; returns the base plane of the pixels it put
+/// out and its clock count.
+pub fn run_icarus(
+    verilog: &str,
+    p: usize,
+    sweep: &golden_model::plan::Sweep,
+    mode: golden_model::scene::Mode,
+) -> Result<(BasePlane, u64), String> {
+    let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p)) as u64;
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cube-iverilog-{}-{run}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let result = (|| {
+        std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
+        std::fs::write(dir.join("tb.v"), testbench_verilog(p, beats)).map_err(|e| e.to_string())?;
+        let tool = |cmd: &mut std::process::Command| -> Result<std::process::Output, String> {
+            let out = cmd.current_dir(&dir).output().map_err(|e| {
+                format!("cannot run Icarus Verilog ({e}): run scripts/test, which installs it")
+            })?;
+            if !out.status.success() {
+                return Err(format!(
+                    "{:?} failed: {}",
+                    cmd.get_program(),
+                    String::from_utf8_lossy(&out.stderr)
+                ));
+            }
+            Ok(out)
+        };
+        tool(
+            std::process::Command::new("iverilog")
+                .args(["-g2012", "-o", "sim.vvp", "top.v", "tb.v"]),
+        )?;
+        tool(std::process::Command::new("vvp").args(["-n", "sim.vvp"]))?;
+        let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
+        let mut base = BasePlane::new(sweep);
+        let mut cycles = None;
+        for line in log.lines() {
+            let f: Vec<&str> = line.split_whitespace().collect();
+            match f.as_slice() {
+                ["cycles", c] => cycles = c.parse::<u64>().ok(),
+                ["timeout"] => return Err("the Verilog pipeline did not finish the sweep".into()),
+                [x, y, face, res] => {
+                    let n = |s: &str| {
+                        s.parse::<u64>()
+                            .map_err(|e| format!("pixel log '{line}': {e}"))
+                    };
+                    base.put(
+                        [n(x)? as usize, n(y)? as usize],
+                        unpack(mode, n(res)?),
+                        face_of(n(face)? as u32),
+                    );
+                }
+                _ => return Err(format!("unexpected line in the pixel log: '{line}'")),
+            }
+        }
+        // Counted like the rust-hdl engine: from the clock that registers start.
+        Ok((base, cycles.ok_or("the pixel log has no clock count")? + 1))
+    })();
+    let _ = std::fs::remove_dir_all(&dir);
+    result
+}
+
+/// A Verilog testbench for the emitted `top`: clock, one start pulse, and a
+/// log line `x y face res` for every pixel on the bus until `beats` beats
+/// have come out; then `cycles N` (or `timeout`).
+fn testbench_verilog(p: usize, beats: u64) -> String {
+    let mut v =
+        String::from("`timescale 1ns/1ps\nmodule tb;\n  reg clock = 0;\n  reg start = 0;\n");
+    let mut ports = String::from(
+        ".clock(clock), .start(start), .load_enable(1'b0), .load_module(8'd0), .load_address({A}'d0), .load_data(16'd0)",
+    )
+    .replace("{A}", &A.to_string());
+    let mut log = String::new();
+    for k in 0..p {
+        v.push_str(&format!(
+            "  wire px_valid${k};\n  wire [15:0] px_x${k};\n  wire [15:0] px_y${k};\n  wire [2:0] px_face${k};\n  wire res_beat${k};\n  wire res_valid${k};\n  wire [63:0] res${k};\n"
+        ));
+        for n in [
+            "px_valid",
+            "px_x",
+            "px_y",
+            "px_face",
+            "res_beat",
+            "res_valid",
+            "res",
+        ] {
+            ports.push_str(&format!(", .{n}${k}({n}${k})"));
+        }
+        log.push_str(&format!(
+            "      if (px_valid${k}) $fdisplay(f, \"%0d %0d %0d %0d\", px_x${k}, px_y${k}, px_face${k}, res${k});\n"
+        ));
+    }
+    v.push_str(&format!(
+        "  top uut({ports});\n  always #5 clock = ~clock;\n"
+    ));
+    v.push_str(&format!(
+        "  integer f;\n  integer beats = 0;\n  integer cycles = 0;\n  initial begin\n    f = $fopen(\"pixels.txt\", \"w\");\n    @(negedge clock) start = 1;\n    @(negedge clock) start = 0;\n    while (beats < {beats}) begin\n      @(posedge clock);\n      #1;\n      cycles = cycles + 1;\n      if (res_beat$0) beats = beats + 1;\n{log}      if (cycles > {limit}) begin\n        $fdisplay(f, \"timeout\");\n        beats = {beats};\n      end\n    end\n    $fdisplay(f, \"cycles %0d\", cycles);\n    $fclose(f);\n    $finish;\n  end\nendmodule\n",
+        limit = 2 * beats + 1000
+    ));
+    v
 }
 
 /// A GTKWave save file beside `vcd` that opens with the signals grouped by
