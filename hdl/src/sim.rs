@@ -99,7 +99,7 @@ pub fn simulate_with(
     if per_module > 1 << A {
         return Err(format!(
             "{per_module} voxels per memory module exceed the simulated build's {} (2^{A}); \
-             rust-hdl simulation is for small volumes: run full frames through the Verilog engines (Verilator/Icarus), which are not built yet",
+             the simulation engines are for small volumes; full frames belong to the Verilog engines, whose fast one (Verilator) is not built yet",
             1u64 << A
         ));
     }
