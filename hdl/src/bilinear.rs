@@ -174,37 +174,15 @@ impl Logic for Bilinear {
     fn update(&mut self) {
         dff_setup!(self, clock, wy_q);
         self.wy_q.d.next = self.wy.val();
-        self.ch[0].clock.next = self.clock.val();
-        self.ch[0].c00.next = self.c00[0].val();
-        self.ch[0].c10.next = self.c10[0].val();
-        self.ch[0].c01.next = self.c01[0].val();
-        self.ch[0].c11.next = self.c11[0].val();
-        self.ch[0].wx.next = self.wx.val();
-        self.ch[0].wy.next = self.wy_q.q.val();
-        self.out[0].next = self.ch[0].y.val();
-        self.ch[1].clock.next = self.clock.val();
-        self.ch[1].c00.next = self.c00[1].val();
-        self.ch[1].c10.next = self.c10[1].val();
-        self.ch[1].c01.next = self.c01[1].val();
-        self.ch[1].c11.next = self.c11[1].val();
-        self.ch[1].wx.next = self.wx.val();
-        self.ch[1].wy.next = self.wy_q.q.val();
-        self.out[1].next = self.ch[1].y.val();
-        self.ch[2].clock.next = self.clock.val();
-        self.ch[2].c00.next = self.c00[2].val();
-        self.ch[2].c10.next = self.c10[2].val();
-        self.ch[2].c01.next = self.c01[2].val();
-        self.ch[2].c11.next = self.c11[2].val();
-        self.ch[2].wx.next = self.wx.val();
-        self.ch[2].wy.next = self.wy_q.q.val();
-        self.out[2].next = self.ch[2].y.val();
-        self.ch[3].clock.next = self.clock.val();
-        self.ch[3].c00.next = self.c00[3].val();
-        self.ch[3].c10.next = self.c10[3].val();
-        self.ch[3].c01.next = self.c01[3].val();
-        self.ch[3].c11.next = self.c11[3].val();
-        self.ch[3].wx.next = self.wx.val();
-        self.ch[3].wy.next = self.wy_q.q.val();
-        self.out[3].next = self.ch[3].y.val();
+        for i in 0..4 {
+            self.ch[i].clock.next = self.clock.val();
+            self.ch[i].c00.next = self.c00[i].val();
+            self.ch[i].c10.next = self.c10[i].val();
+            self.ch[i].c01.next = self.c01[i].val();
+            self.ch[i].c11.next = self.c11[i].val();
+            self.ch[i].wx.next = self.wx.val();
+            self.ch[i].wy.next = self.wy_q.q.val();
+            self.out[i].next = self.ch[i].y.val();
+        }
     }
 }
