@@ -99,6 +99,15 @@ enum Command {
         #[arg(long)]
         json: Option<PathBuf>,
     },
+    /// Write the scene's pruned pipeline as Verilog: one file per stage, a
+    /// top, Verilator lint waivers and a manifest of parameters and left-out
+    /// units.
+    Verilog {
+        #[arg(long)]
+        scene: PathBuf,
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// List the built-in volumes.
     Scenes,
 }
@@ -107,6 +116,7 @@ fn main() {
     let cli = Cli::parse();
     let r = match cli.command {
         None => default_run(),
+        Some(Command::Verilog { scene, out }) => verilog_cmd(&scene, &out),
         Some(Command::Scenes) => {
             for (name, what) in BUILTINS {
                 println!("{name:<13} {what}");
@@ -289,6 +299,34 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
         );
     }
     Ok((img, frame.bases.len()))
+}
+
+fn verilog_cmd(scene_path: &Path, out: &Path) -> Result<()> {
+    let scene = Scene::load(scene_path)?;
+    let cam = scene.camera()?;
+    let name = scene_path
+        .file_name()
+        .map(|n| n.to_string_lossy().to_string())
+        .unwrap_or_default();
+    let m = hdl::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), out)
+        .map_err(|e| anyhow::anyhow!("verilog: {e}"))?;
+    let sweeps = m["sweeps"].as_array().map_or(0, |s| s.len());
+    println!(
+        "wrote {} ({} sweep{}, {} memory); units left out: {}",
+        out.display(),
+        sweeps,
+        if sweeps == 1 { "" } else { "s" },
+        m["parameters"]["memory"]["kind"].as_str().unwrap_or("?"),
+        m["units_left_out"]
+            .as_array()
+            .map(|a| a
+                .iter()
+                .filter_map(|v| v.as_str())
+                .collect::<Vec<_>>()
+                .join(", "))
+            .unwrap_or_default()
+    );
+    Ok(())
 }
 
 fn sim_cmd(

@@ -86,7 +86,7 @@ pub struct AbcGradient<const H: usize> {
     pub gy_mag: Signal<Out, Bits<16>>,
     pub gz_neg: Signal<Out, Bit>,
     pub gz_mag: Signal<Out, Bits<16>>,
-    centre: RAM<Bits<128>, H>,
+    centre: RAM<Bits<123>, H>,
     ring_xm: RAM<Bits<16>, H>,
     ring_ym: RAM<Bits<16>, H>,
     ring_zm: RAM<Bits<16>, H>,
@@ -100,7 +100,7 @@ pub struct AbcGradient<const H: usize> {
     hop_zp: DFF<Bits<16>>,
     prev_xm: DFF<Bits<16>>,
     prev_xp: DFF<Bits<16>>,
-    word: Signal<Local, Bits<128>>,
+    word: Signal<Local, Bits<123>>,
     xm: Signal<Local, Bits<16>>,
     xp: Signal<Local, Bits<16>>,
     off_centre: Constant<Bits<H>>,
@@ -220,22 +220,22 @@ impl<const H: usize> Logic for AbcGradient<H> {
         self.ring_yp.write_clock.next = self.clock.val();
         // Every CFB clock goes into the rings at address `now` (the B and C
         // slices); the centre word carries the voxel with its control.
-        self.word.next = bit_cast::<128, 16>(self.value.val())
-            | (bit_cast::<128, 16>(self.x.val()) << 16)
-            | (bit_cast::<128, 16>(self.y.val()) << 32)
-            | (bit_cast::<128, 16>(self.base_x.val()) << 48)
-            | (bit_cast::<128, 16>(self.base_y.val()) << 64)
-            | (bit_cast::<128, 3>(self.face.val()) << 85)
-            | (bit_cast::<128, 16>(self.dx_mag.val()) << 89)
-            | (bit_cast::<128, 16>(self.dy_mag.val()) << 106);
-        self.word.next = self.word.val().replace_bit(80, self.valid.val());
-        self.word.next = self.word.val().replace_bit(81, self.pad.val());
-        self.word.next = self.word.val().replace_bit(82, self.sr.val());
-        self.word.next = self.word.val().replace_bit(83, self.er.val());
-        self.word.next = self.word.val().replace_bit(84, self.at_edge.val());
-        self.word.next = self.word.val().replace_bit(88, self.dx_neg.val());
-        self.word.next = self.word.val().replace_bit(105, self.dy_neg.val());
-        self.word.next = self.word.val().replace_bit(122, self.invalid.val());
+        self.word.next = bit_cast::<123, 16>(self.value.val())
+            | (bit_cast::<123, 16>(self.x.val()) << 16)
+            | (bit_cast::<123, 16>(self.y.val()) << 32)
+            | (bit_cast::<123, 16>(self.base_x.val()) << 48)
+            | (bit_cast::<123, 16>(self.base_y.val()) << 64)
+            | (bit_cast::<123, 1>(self.valid.val().into()) << 80)
+            | (bit_cast::<123, 1>(self.pad.val().into()) << 81)
+            | (bit_cast::<123, 1>(self.sr.val().into()) << 82)
+            | (bit_cast::<123, 1>(self.er.val().into()) << 83)
+            | (bit_cast::<123, 1>(self.at_edge.val().into()) << 84)
+            | (bit_cast::<123, 3>(self.face.val()) << 85)
+            | (bit_cast::<123, 1>(self.dx_neg.val().into()) << 88)
+            | (bit_cast::<123, 16>(self.dx_mag.val()) << 89)
+            | (bit_cast::<123, 1>(self.dy_neg.val().into()) << 105)
+            | (bit_cast::<123, 16>(self.dy_mag.val()) << 106)
+            | (bit_cast::<123, 1>(self.invalid.val().into()) << 122);
         self.centre.write_address.next = self.now.val();
         self.centre.write_data.next = self.word.val();
         self.centre.write_enable.next = true;

@@ -32,8 +32,8 @@ struct WideLerp {
     shift: Constant<Bits<8>>,
     diff: Signal<Local, Bits<32>>,
     prod: Signal<Local, Bits<64>>,
-    step_up: Signal<Local, Bits<64>>,
-    step_down: Signal<Local, Bits<64>>,
+    step_up: Signal<Local, Bits<32>>,
+    step_down: Signal<Local, Bits<32>>,
 }
 
 impl WideLerp {
@@ -64,12 +64,14 @@ impl Logic for WideLerp {
         self.prod.next = (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val())
             << 16)
             + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
-        self.step_up.next = (self.prod.val() + self.half.val()) >> self.shift.val();
-        self.step_down.next = (self.prod.val() + self.half.val() - 1) >> self.shift.val();
+        self.step_up.next =
+            bit_cast::<32, 64>((self.prod.val() + self.half.val()) >> self.shift.val());
+        self.step_down.next =
+            bit_cast::<32, 64>((self.prod.val() + self.half.val() - 1) >> self.shift.val());
         if self.b.val() >= self.a.val() {
-            self.y.next = self.a.val() + bit_cast::<32, 64>(self.step_up.val());
+            self.y.next = self.a.val() + self.step_up.val();
         } else {
-            self.y.next = self.a.val() - bit_cast::<32, 64>(self.step_down.val());
+            self.y.next = self.a.val() - self.step_down.val();
         }
     }
 }

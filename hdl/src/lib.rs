@@ -12,6 +12,7 @@ pub mod bilinear;
 pub mod cfb;
 pub mod compositor;
 pub mod divider;
+pub mod export;
 pub mod pipeline;
 pub mod shader;
 pub mod sim;

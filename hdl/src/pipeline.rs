@@ -229,12 +229,10 @@ pub struct PipeLane<const H: usize> {
     pub t1s1: Signal<Out, Bits<64>>,
     pub t1i1: Signal<In, Bits<64>>,
     pub t1i2: Signal<In, Bits<64>>,
-    pub t2s0: Signal<Out, Bits<64>>,
     pub t3s0: Signal<Out, Bits<64>>,
     pub t3s1: Signal<Out, Bits<64>>,
     pub t3i1: Signal<In, Bits<64>>,
     pub t3i2: Signal<In, Bits<64>>,
-    pub t4s0: Signal<Out, Bits<64>>,
     pub t5s0: Signal<Out, Bits<64>>,
     pub t5s1: Signal<Out, Bits<64>>,
     pub t5s2: Signal<Out, Bits<64>>,
@@ -299,7 +297,6 @@ pub struct PipeLane<const H: usize> {
     s2: Signal<Local, Bits<64>>,
     a2: Signal<Local, Bits<64>>,
     prev2: DFF<Bits<64>>,
-    hops2: Constant<Bits<2>>,
     off2: Constant<Bits<H>>,
     ring3: RAM<Bits<64>, H>,
     f3_1: DFF<Bits<64>>,
@@ -313,7 +310,6 @@ pub struct PipeLane<const H: usize> {
     s4: Signal<Local, Bits<64>>,
     a4: Signal<Local, Bits<64>>,
     prev4: DFF<Bits<64>>,
-    hops4: Constant<Bits<2>>,
     off4: Constant<Bits<H>>,
     ring5: RAM<Bits<64>, H>,
     f5_1: DFF<Bits<64>>,
@@ -456,12 +452,10 @@ impl<const H: usize> PipeLane<H> {
             t1s1: Default::default(),
             t1i1: Default::default(),
             t1i2: Default::default(),
-            t2s0: Default::default(),
             t3s0: Default::default(),
             t3s1: Default::default(),
             t3i1: Default::default(),
             t3i2: Default::default(),
-            t4s0: Default::default(),
             t5s0: Default::default(),
             t5s1: Default::default(),
             t5s2: Default::default(),
@@ -494,7 +488,6 @@ impl<const H: usize> PipeLane<H> {
             s2: Default::default(),
             a2: Default::default(),
             prev2: Default::default(),
-            hops2: Constant::new((c.taps[2].hops as u64).to_bits()),
             off2: Constant::new(off(&c.taps[2]).to_bits()),
             ring3: Default::default(),
             f3_1: Default::default(),
@@ -508,7 +501,6 @@ impl<const H: usize> PipeLane<H> {
             s4: Default::default(),
             a4: Default::default(),
             prev4: Default::default(),
-            hops4: Constant::new((c.taps[4].hops as u64).to_bits()),
             off4: Constant::new(off(&c.taps[4]).to_bits()),
             ring5: Default::default(),
             f5_1: Default::default(),
@@ -749,7 +741,6 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ring2.read_clock.next = self.clock.val();
         self.ring2.write_clock.next = self.clock.val();
         self.ring2.read_address.next = self.now.val() + self.off2.val();
-        self.t2s0.next = self.ring2.read_data.val();
         self.s2.next = self.ring2.read_data.val();
         self.prev2.d.next = self.s2.val();
         self.a2.next = self.prev2.q.val();
@@ -775,7 +766,6 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ring4.read_clock.next = self.clock.val();
         self.ring4.write_clock.next = self.clock.val();
         self.ring4.read_address.next = self.now.val() + self.off4.val();
-        self.t4s0.next = self.ring4.read_data.val();
         self.s4.next = self.ring4.read_data.val();
         self.prev4.d.next = self.s4.val();
         self.a4.next = self.s4.val();
@@ -1012,6 +1002,17 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
+    /// Sweep status from the CFB's address generator: running, and the
+    /// slice (N_s), beam (N_B) and partial beam (N_b) being read, with BS.
+    pub busy: Signal<Out, Bit>,
+    pub n_s: Signal<Out, Bits<16>>,
+    pub n_beam: Signal<Out, Bits<16>>,
+    pub n_b: Signal<Out, Bits<16>>,
+    pub bs: Signal<Out, Bit>,
+    /// Per pipeline, the external voxel memory port of a CFB built with
+    /// `external_memory` (see `cfb::CfbLane`).
+    pub ext_addr: [Signal<Out, Bits<32>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
     /// The pixel bus: per pipeline, a base-plane pixel on ER (§3, Fig. 4),
     /// and each lane's composited value with its beat and padding flags.
     pub px_valid: [Signal<Out, Bit>; P],
@@ -1056,6 +1057,13 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
+            busy: Default::default(),
+            n_s: Default::default(),
+            n_beam: Default::default(),
+            n_b: Default::default(),
+            bs: Default::default(),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
             px_valid: std::array::from_fn(|_| Default::default()),
             px_x: std::array::from_fn(|_| Default::default()),
             px_y: std::array::from_fn(|_| Default::default()),
@@ -1081,11 +1089,17 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
         self.cfb.load_module.next = self.load_module.val();
         self.cfb.load_address.next = self.load_address.val();
         self.cfb.load_data.next = self.load_data.val();
+        self.busy.next = self.cfb.busy.val();
+        self.n_s.next = self.cfb.n_s.val();
+        self.n_beam.next = self.cfb.n_beam.val();
+        self.n_b.next = self.cfb.n_b.val();
+        self.bs.next = self.cfb.bs.val();
         for k in 0..P {
             self.lanes[k].clock.next = self.clock.val();
             self.lanes[k].now.next = self.now.q.val();
             self.lanes[k].beat_valid.next = self.cfb.valid.val();
-            self.cfb.ext_data[k].next = 0.into();
+            self.cfb.ext_data[k].next = self.ext_data[k].val();
+            self.ext_addr[k].next = self.cfb.ext_addr[k].val();
             self.px_valid[k].next = self.lanes[k].px_valid.val();
             self.px_x[k].next = self.lanes[k].px_x.val();
             self.px_y[k].next = self.lanes[k].px_y.val();

@@ -455,7 +455,7 @@ pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
             &format!("Shader {k}"),
             under(&format!("{lane}.shader"), &shader),
         );
-        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.t{c}s0[63:0]")).collect();
+        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.a{c}[63:0]")).collect();
         taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
         group(&mut s, &format!("Compositing lane {k}"), taps);
         group(

@@ -1,0 +1,426 @@
+//! Verilog export: the pipeline of each sweep of a scene as rust-hdl emits
+//! it, split into one file per module, with a manifest of its parameters and
+//! of the units the scene leaves out.
+
+use crate::pipeline::{Pipeline, PipelineConfig};
+use golden_model::cfb::SkewedMemory;
+use golden_model::plan::{Plan, Rays, Sweep};
+use golden_model::scene::{Camera, Scene};
+use golden_model::shader::Shader as GoldenShader;
+use rust_hdl::prelude::*;
+
+/// Ring-buffer address bits of every build: enough for a 256² slice at
+/// p >= 2 (see `PipelineConfig::history_bits`, which refuses larger needs).
+pub const H: usize = 16;
+/// Address bits of an on-chip memory module: 2^16 voxels per module.
+pub const ON_CHIP_BITS: usize = 16;
+
+/// Where the voxels live.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Memory {
+    /// p block-RAM modules of 2^16 voxels inside the CFB, loaded through the
+    /// load port (or initialised, for simulation).
+    OnChip,
+    /// An external RAM on each lane's `ext_addr`/`ext_data` port; the CFB's
+    /// own modules are a 2-word stub.
+    External,
+}
+
+impl Memory {
+    /// On chip when every module fits 2^16 voxels.
+    pub fn for_volume(dims: [usize; 3], p: usize) -> Memory {
+        if dims[0].div_ceil(p) * dims[1] * dims[2] <= 1 << ON_CHIP_BITS {
+            Memory::OnChip
+        } else {
+            Memory::External
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Memory::OnChip => "on-chip",
+            Memory::External => "external",
+        }
+    }
+}
+
+/// The Verilog of one sweep's pipeline. `preload` initialises on-chip
+/// memory modules (simulation only; hardware loads them through the load
+/// port).
+pub fn pipeline_verilog(
+    config: &PipelineConfig,
+    golden: &GoldenShader,
+    memory: Memory,
+    preload: Option<&SkewedMemory>,
+) -> Result<String, String> {
+    fn emit<const P: usize, const A: usize>(
+        config: &PipelineConfig,
+        golden: &GoldenShader,
+        preload: Option<&SkewedMemory>,
+    ) -> Result<String, String> {
+        let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
+        if let Some(mem) = preload {
+            uut.cfb.preload(&mem.modules);
+        }
+        uut.connect_all();
+        Ok(width_clean(&generate_verilog(&uut)))
+    }
+    let mut config = config.clone();
+    config.cfb.external_memory = memory == Memory::External;
+    let preload = preload.filter(|_| memory == Memory::OnChip);
+    match (config.p, memory) {
+        (1, Memory::OnChip) => emit::<1, ON_CHIP_BITS>(&config, golden, preload),
+        (2, Memory::OnChip) => emit::<2, ON_CHIP_BITS>(&config, golden, preload),
+        (4, Memory::OnChip) => emit::<4, ON_CHIP_BITS>(&config, golden, preload),
+        (8, Memory::OnChip) => emit::<8, ON_CHIP_BITS>(&config, golden, preload),
+        (1, Memory::External) => emit::<1, 1>(&config, golden, None),
+        (2, Memory::External) => emit::<2, 1>(&config, golden, None),
+        (4, Memory::External) => emit::<4, 1>(&config, golden, None),
+        (8, Memory::External) => emit::<8, 1>(&config, golden, None),
+        (p, _) => Err(format!(
+            "the RTL is built for 1, 2, 4 or 8 pipelines, not {p}"
+        )),
+    }
+}
+
+/// One Verilog module of an emitted design.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Module {
+    pub name: String,
+    pub text: String,
+}
+
+/// Split emitted Verilog into its modules, in order (the top first).
+pub fn split_modules(verilog: &str) -> Vec<Module> {
+    let mut out = Vec::new();
+    let mut current: Option<Module> = None;
+    for line in verilog.lines() {
+        if current.is_none() {
+            if let Some(rest) = line.strip_prefix("module ") {
+                let name = rest
+                    .split(|c: char| c == '(' || c.is_whitespace())
+                    .next()
+                    .unwrap_or_default()
+                    .to_string();
+                current = Some(Module {
+                    name,
+                    text: String::new(),
+                });
+            } else {
+                continue;
+            }
+        }
+        let m = current.as_mut().expect("inside a module");
+        m.text.push_str(line);
+        m.text.push('\n');
+        if line.starts_with("endmodule") {
+            out.extend(current.take());
+        }
+    }
+    out
+}
+
+/// The exported design of one sweep.
+#[derive(Debug, Clone)]
+pub struct SweepDesign {
+    pub sweep: Sweep,
+    pub config: PipelineConfig,
+    pub verilog: String,
+}
+
+/// Every sweep's pipeline for `scene` (volume dimensions `dims`, after any
+/// crop) and the memory it was built with.
+pub fn export(
+    scene: &Scene,
+    camera: &Camera,
+    dims: [usize; 3],
+) -> Result<(Vec<SweepDesign>, Memory), String> {
+    let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+    let p = scene.hardware.pipelines;
+    let memory = Memory::for_volume(dims, p);
+    let mut designs = Vec::new();
+    for sweep in &plan.sweeps {
+        let golden = GoldenShader::new(scene, camera, sweep);
+        let config = PipelineConfig::new(sweep, dims, p, &golden)?;
+        let verilog = pipeline_verilog(&config, &golden, memory, None)?;
+        designs.push(SweepDesign {
+            sweep: sweep.clone(),
+            config,
+            verilog,
+        });
+    }
+    Ok((designs, memory))
+}
+
+/// Whether a sweep's rays are perspective (it then has the divider).
+pub fn is_perspective(sweep: &Sweep) -> bool {
+    matches!(sweep.rays, Rays::Perspective { .. })
+}
+
+/// Rewrite two of rust-hdl's emission habits that make every expression
+/// width-mismatched for `verilator -Wall`, keeping rust-hdl's semantics:
+/// - `bit_cast::<N, M>(e)` is emitted as the mask `((e) & N'h…)`, which
+///   leaves the expression at the wider width; it becomes the
+///   SystemVerilog size cast `N'(e)`, which truncates or zero-extends to N
+///   bits exactly as `bit_cast` does in rust-hdl's simulation;
+/// - every Rust integer literal is emitted as `32'h…`; it becomes the
+///   unsized `'h…`, which is the same 32-bit unsigned value but which lint
+///   lets take the width of its context.
+///
+/// Both forms are checked against the golden model by co-simulation.
+pub fn width_clean(verilog: &str) -> String {
+    unsize_literals(&size_casts(verilog))
+}
+
+fn size_casts(v: &str) -> String {
+    let b = v.as_bytes();
+    let mut out = String::with_capacity(v.len());
+    // Positions of open parentheses not yet closed, in `out`.
+    let mut open: Vec<usize> = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        if c == b'(' {
+            open.push(out.len());
+            out.push('(');
+            i += 1;
+            continue;
+        }
+        if c == b')' {
+            let inner_open = open.pop();
+            out.push(')');
+            i += 1;
+            // After `(e)`: ` & N'h<mask>)` closing an outer `(` right before it?
+            if let (Some(start), Some((bits, len))) = (inner_open, cast_mask(&v[i..])) {
+                if start > 0
+                    && out.as_bytes()[start - 1] == b'('
+                    && open.last() == Some(&(start - 1))
+                {
+                    open.pop();
+                    let e = out[start + 1..out.len() - 1].to_string();
+                    out.truncate(start - 1);
+                    out.push_str(&format!("{bits}'({e})"));
+                    i += len;
+                }
+            }
+            continue;
+        }
+        let ch = v[i..].chars().next().expect("inside the text");
+        out.push(ch);
+        i += ch.len_utf8();
+    }
+    out
+}
+
+/// ` & N'h<2^N - 1>)` at the start of `s`: (N, its length).
+fn cast_mask(s: &str) -> Option<(usize, usize)> {
+    let rest = s.strip_prefix(" & ")?;
+    let tick = rest.find('\'')?;
+    let bits: usize = rest[..tick].parse().ok()?;
+    let digits = rest[tick + 1..].strip_prefix('h')?;
+    let end = digits.find(')')?;
+    let mask = &digits[..end];
+    let want = format!("{:x}", (num_bigint_free_mask(bits)));
+    (bits > 0 && mask == want).then_some((bits, 3 + tick + 2 + end + 1))
+}
+
+/// 2^bits - 1 as hex digits (bits up to 128).
+fn num_bigint_free_mask(bits: usize) -> u128 {
+    if bits >= 128 {
+        u128::MAX
+    } else {
+        (1u128 << bits) - 1
+    }
+}
+
+fn unsize_literals(v: &str) -> String {
+    let mut out = String::with_capacity(v.len());
+    let mut rest = v;
+    while let Some(k) = rest.find("32'h") {
+        let before = rest[..k].chars().last();
+        out.push_str(&rest[..k]);
+        if before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_' || c == '$') {
+            out.push_str("32'h");
+        } else {
+            out.push_str("'h");
+        }
+        rest = &rest[k + 4..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The file (one per stage) that holds module `name`. rust-hdl emits one
+/// module per instance, named by its path (`top$lanes$2$shader$lut`), so
+/// each stage's file holds that stage's modules of every pipeline.
+pub fn stage_file(name: &str) -> &'static str {
+    let parts: Vec<&str> = name.split('$').collect();
+    match parts.as_slice() {
+        ["top"] => "top.v",
+        ["top", "cfb", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
+        ["top", "cfb", ..] => "cfb.v",
+        ["top", "lanes", _, "abc", ..] => "abc_gradient.v",
+        ["top", "lanes", _, "shader", ..] => "shader.v",
+        ["top", "lanes", _, "bilinear", ..] => "bilinear.v",
+        ["top", "lanes", _, "compositor", ..] => "compositor.v",
+        _ => "pipe_lane.v",
+    }
+}
+
+/// The stage files in the order a tool should read them (top first).
+pub const STAGE_FILES: [&str; 8] = [
+    "top.v",
+    "cfb.v",
+    "divider.v",
+    "abc_gradient.v",
+    "shader.v",
+    "pipe_lane.v",
+    "bilinear.v",
+    "compositor.v",
+];
+
+/// Verilator configuration with the lint waivers every emitted design
+/// needs; each is narrow (one rule, matched on the signal or file) and
+/// explained. (Verilator's configuration lexer stumbles on parentheses and
+/// paired apostrophes inside comments, so the comments avoid them.)
+pub const LINT_WAIVERS: &str = r#"`verilator_config
+// rust-hdl names every module by its instance path, as in top$cfb$lanes$0, and
+// the kit groups one stage's modules per file, so only top.v can carry its
+// module's name.
+lint_off -rule DECLFILENAME -file "*cfb.v"
+lint_off -rule DECLFILENAME -file "*divider.v"
+lint_off -rule DECLFILENAME -file "*abc_gradient.v"
+lint_off -rule DECLFILENAME -file "*shader.v"
+lint_off -rule DECLFILENAME -file "*pipe_lane.v"
+lint_off -rule DECLFILENAME -file "*bilinear.v"
+lint_off -rule DECLFILENAME -file "*compositor.v"
+// Each CFB lane's dataset z and memory address are observability outputs:
+// the CFB testbench compares them with the golden model's stream, and the
+// waveforms show them; the pipeline itself needs neither.
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$z'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$address'*"
+// The bilinear unit's four channels share one 32-bit datapath, which X-ray
+// needs for its sum in channel 0; channels 1-3 carry 16-bit values.
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
+// Perspective only. rust-hdl emits the logic of a module as one always block,
+// so Verilator sees the block, the divider it feeds and the block again as a
+// loop, though the divider inputs come from registers and the rust-hdl
+// logic-loop check passes. This only costs Verilator some speed.
+lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
+"#;
+
+/// Write one design (emitted Verilog) into `dir`: the stage files and the
+/// lint waivers. Returns the file names written.
+pub fn write_stage_files(dir: &std::path::Path, verilog: &str) -> std::io::Result<Vec<String>> {
+    let mut texts: std::collections::BTreeMap<&str, String> = Default::default();
+    for m in split_modules(verilog) {
+        texts
+            .entry(stage_file(&m.name))
+            .or_default()
+            .push_str(&m.text);
+    }
+    let mut names = Vec::new();
+    for f in STAGE_FILES {
+        if let Some(t) = texts.get(f) {
+            std::fs::write(dir.join(f), t)?;
+            names.push(f.to_string());
+        }
+    }
+    std::fs::write(dir.join("lint.vlt"), LINT_WAIVERS)?;
+    Ok(names)
+}
+
+/// Export `scene` (named `name` in the manifest) into `out`: the stage files
+/// of each sweep's pipeline (in `out` for one sweep, in `out/sweep<i>` for
+/// several), `lint.vlt`, and `manifest.json`. The directory is built beside
+/// `out` and renamed over it, so it is written whole or not at all. Returns
+/// the manifest.
+pub fn write_export(
+    name: &str,
+    scene: &Scene,
+    camera: &Camera,
+    dims: [usize; 3],
+    out: &std::path::Path,
+) -> Result<serde_json::Value, String> {
+    let (designs, memory) = export(scene, camera, dims)?;
+    let parent = match out.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    let leaf = out
+        .file_name()
+        .ok_or_else(|| format!("{} is not a directory path", out.display()))?
+        .to_string_lossy()
+        .to_string();
+    let io = |e: std::io::Error| format!("{}: {e}", out.display());
+    std::fs::create_dir_all(&parent).map_err(io)?;
+    let tmp = parent.join(format!(".{leaf}.tmp{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    let result = (|| {
+        std::fs::create_dir_all(&tmp).map_err(io)?;
+        let mut sweeps = Vec::new();
+        for (i, d) in designs.iter().enumerate() {
+            let sub = if designs.len() == 1 {
+                ".".to_string()
+            } else {
+                format!("sweep{i}")
+            };
+            let dir = tmp.join(&sub);
+            std::fs::create_dir_all(&dir).map_err(io)?;
+            let files = write_stage_files(&dir, &d.verilog).map_err(io)?;
+            let s = &d.sweep;
+            let rays = match s.rays {
+                Rays::Parallel { dx, dy } => serde_json::json!({"parallel": {"dx": dx, "dy": dy}}),
+                Rays::Perspective { eye } => serde_json::json!({"perspective": {"eye": eye}}),
+            };
+            sweeps.push(serde_json::json!({
+                "dir": sub,
+                "files": files,
+                "axes": s.perm,
+                "dims": s.dims,
+                "slices": [s.z0, s.z1],
+                "order": format!("{:?}", s.order),
+                "rays": rays,
+                "history_bits_needed": d.config.history_bits(),
+            }));
+        }
+        let hw = scene.hardware;
+        let p = hw.pipelines;
+        let config = &designs[0].config;
+        let manifest = serde_json::json!({
+            "scene": name,
+            "generator": format!("cube {} with rust-hdl 0.46", env!("CARGO_PKG_VERSION")),
+            "top": "top",
+            "parameters": {
+                "pipelines": p,
+                "volume_dims": dims,
+                "voxel_bits": hw.voxel_bits,
+                "frac_bits": hw.frac_bits,
+                "rgba_bits": hw.rgba_bits,
+                "mode": format!("{:?}", scene.mode),
+                "memory": {
+                    "kind": memory.name(),
+                    "voxels_per_module": dims[0].div_ceil(p) * dims[1] * dims[2],
+                    "module_address_bits": if memory == Memory::OnChip { ON_CHIP_BITS } else { 32 },
+                },
+                "ring_buffer_address_bits": H,
+            },
+            "units_left_out": config.left_out(scene.mode),
+            "sweeps": sweeps,
+            "lint": "verilator --lint-only -Wall lint.vlt <files>",
+        });
+        let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
+        std::fs::write(tmp.join("manifest.json"), text).map_err(io)?;
+        let old = parent.join(format!(".{leaf}.old{}", std::process::id()));
+        if out.exists() {
+            std::fs::rename(out, &old).map_err(io)?;
+        }
+        std::fs::rename(&tmp, out).map_err(io)?;
+        let _ = std::fs::remove_dir_all(&old);
+        Ok(manifest)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    result
+}
