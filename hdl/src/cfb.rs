@@ -325,6 +325,9 @@ impl<const A: usize> CfbLane<A> {
 }
 
 impl<const A: usize> Logic for CfbLane<A> {
+    // The halo test is written `n_s + 1 <= z0` so that Verilator sees no
+    // constant compare when z0 = 0.
+    #[allow(clippy::int_plus_one)]
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -488,7 +491,6 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.dyn_q.d.next = self.dyn_.val();
         self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
         self.inval_q.d.next = self.inval.val() | self.is_pad.val();
-        // n_s < z0, written so that lint sees no constant compare when z0 = 0.
         self.halo_q.d.next =
             (self.n_s.val() + 1 <= self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.

@@ -1,0 +1,932 @@
+module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n_beam,n_b,bs,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,px_valid$0,px_valid$1,px_valid$2,px_valid$3,px_x$0,px_x$1,px_x$2,px_x$3,px_y$0,px_y$1,px_y$2,px_y$3,px_face$0,px_face$1,px_face$2,px_face$3,res_beat$0,res_beat$1,res_beat$2,res_beat$3,res_valid$0,res_valid$1,res_valid$2,res_valid$3,res$0,res$1,res$2,res$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  start;
+    input wire  load_enable;
+    input wire  [7:0] load_module;
+    input wire  [15:0] load_address;
+    input wire  [15:0] load_data;
+    output reg  busy;
+    output reg  [15:0] n_s;
+    output reg  [15:0] n_beam;
+    output reg  [15:0] n_b;
+    output reg  bs;
+    output reg  [31:0] ext_addr$0;
+    output reg  [31:0] ext_addr$1;
+    output reg  [31:0] ext_addr$2;
+    output reg  [31:0] ext_addr$3;
+    input wire  [15:0] ext_data$0;
+    input wire  [15:0] ext_data$1;
+    input wire  [15:0] ext_data$2;
+    input wire  [15:0] ext_data$3;
+    output reg  px_valid$0;
+    output reg  px_valid$1;
+    output reg  px_valid$2;
+    output reg  px_valid$3;
+    output reg  [15:0] px_x$0;
+    output reg  [15:0] px_x$1;
+    output reg  [15:0] px_x$2;
+    output reg  [15:0] px_x$3;
+    output reg  [15:0] px_y$0;
+    output reg  [15:0] px_y$1;
+    output reg  [15:0] px_y$2;
+    output reg  [15:0] px_y$3;
+    output reg  [2:0] px_face$0;
+    output reg  [2:0] px_face$1;
+    output reg  [2:0] px_face$2;
+    output reg  [2:0] px_face$3;
+    output reg  res_beat$0;
+    output reg  res_beat$1;
+    output reg  res_beat$2;
+    output reg  res_beat$3;
+    output reg  res_valid$0;
+    output reg  res_valid$1;
+    output reg  res_valid$2;
+    output reg  res_valid$3;
+    output reg  [63:0] res$0;
+    output reg  [63:0] res$1;
+    output reg  [63:0] res$2;
+    output reg  [63:0] res$3;
+    
+    // Stub signals
+    reg  cfb$clock;
+    reg  cfb$start;
+    wire  cfb$busy;
+    reg  cfb$load_enable;
+    reg  [7:0] cfb$load_module;
+    reg  [15:0] cfb$load_address;
+    reg  [15:0] cfb$load_data;
+    wire  cfb$valid;
+    wire  [15:0] cfb$n_s;
+    wire  [15:0] cfb$n_beam;
+    wire  [15:0] cfb$n_b;
+    wire  cfb$bs;
+    wire  [15:0] cfb$value$0;
+    wire  [15:0] cfb$value$1;
+    wire  [15:0] cfb$value$2;
+    wire  [15:0] cfb$value$3;
+    wire  [15:0] cfb$x$0;
+    wire  [15:0] cfb$x$1;
+    wire  [15:0] cfb$x$2;
+    wire  [15:0] cfb$x$3;
+    wire  [15:0] cfb$y$0;
+    wire  [15:0] cfb$y$1;
+    wire  [15:0] cfb$y$2;
+    wire  [15:0] cfb$y$3;
+    wire  cfb$pad$0;
+    wire  cfb$pad$1;
+    wire  cfb$pad$2;
+    wire  cfb$pad$3;
+    wire  cfb$sr$0;
+    wire  cfb$sr$1;
+    wire  cfb$sr$2;
+    wire  cfb$sr$3;
+    wire  cfb$er$0;
+    wire  cfb$er$1;
+    wire  cfb$er$2;
+    wire  cfb$er$3;
+    wire  [15:0] cfb$base_x$0;
+    wire  [15:0] cfb$base_x$1;
+    wire  [15:0] cfb$base_x$2;
+    wire  [15:0] cfb$base_x$3;
+    wire  [15:0] cfb$base_y$0;
+    wire  [15:0] cfb$base_y$1;
+    wire  [15:0] cfb$base_y$2;
+    wire  [15:0] cfb$base_y$3;
+    wire  [2:0] cfb$face$0;
+    wire  [2:0] cfb$face$1;
+    wire  [2:0] cfb$face$2;
+    wire  [2:0] cfb$face$3;
+    wire  cfb$at_edge$0;
+    wire  cfb$at_edge$1;
+    wire  cfb$at_edge$2;
+    wire  cfb$at_edge$3;
+    wire  cfb$invalid$0;
+    wire  cfb$invalid$1;
+    wire  cfb$invalid$2;
+    wire  cfb$invalid$3;
+    wire  cfb$halo$0;
+    wire  cfb$halo$1;
+    wire  cfb$halo$2;
+    wire  cfb$halo$3;
+    wire  [31:0] cfb$ext_addr$0;
+    wire  [31:0] cfb$ext_addr$1;
+    wire  [31:0] cfb$ext_addr$2;
+    wire  [31:0] cfb$ext_addr$3;
+    reg  [15:0] cfb$ext_data$0;
+    reg  [15:0] cfb$ext_data$1;
+    reg  [15:0] cfb$ext_data$2;
+    reg  [15:0] cfb$ext_data$3;
+    wire  cfb$dx_neg$0;
+    wire  cfb$dx_neg$1;
+    wire  cfb$dx_neg$2;
+    wire  cfb$dx_neg$3;
+    wire  [15:0] cfb$dx_mag$0;
+    wire  [15:0] cfb$dx_mag$1;
+    wire  [15:0] cfb$dx_mag$2;
+    wire  [15:0] cfb$dx_mag$3;
+    wire  cfb$dy_neg$0;
+    wire  cfb$dy_neg$1;
+    wire  cfb$dy_neg$2;
+    wire  cfb$dy_neg$3;
+    wire  [15:0] cfb$dy_mag$0;
+    wire  [15:0] cfb$dy_mag$1;
+    wire  [15:0] cfb$dy_mag$2;
+    wire  [15:0] cfb$dy_mag$3;
+    reg  lanes$0$clock;
+    reg  [15:0] lanes$0$now;
+    reg  lanes$0$beat_valid;
+    reg  [15:0] lanes$0$value;
+    reg  [15:0] lanes$0$x;
+    reg  [15:0] lanes$0$y;
+    reg  lanes$0$pad;
+    reg  lanes$0$invalid;
+    reg  lanes$0$halo;
+    reg  lanes$0$sr;
+    reg  lanes$0$er;
+    reg  [15:0] lanes$0$base_x;
+    reg  [15:0] lanes$0$base_y;
+    reg  [2:0] lanes$0$face;
+    reg  lanes$0$at_edge;
+    reg  lanes$0$dx_neg;
+    reg  [15:0] lanes$0$dx_mag;
+    reg  lanes$0$dy_neg;
+    reg  [15:0] lanes$0$dy_mag;
+    reg  [15:0] lanes$0$g_from_left_xm;
+    reg  [15:0] lanes$0$g_from_left_ym;
+    reg  [15:0] lanes$0$g_from_left_zm;
+    reg  [15:0] lanes$0$g_from_right_xp;
+    reg  [15:0] lanes$0$g_from_right_yp;
+    reg  [15:0] lanes$0$g_from_right_zp;
+    wire  [15:0] lanes$0$g_to_right_xm;
+    wire  [15:0] lanes$0$g_to_right_ym;
+    wire  [15:0] lanes$0$g_to_right_zm;
+    wire  [15:0] lanes$0$g_to_left_xp;
+    wire  [15:0] lanes$0$g_to_left_yp;
+    wire  [15:0] lanes$0$g_to_left_zp;
+    wire  [63:0] lanes$0$t0s0;
+    reg  [63:0] lanes$0$t0i1;
+    wire  [63:0] lanes$0$t1s0;
+    wire  [63:0] lanes$0$t1s1;
+    reg  [63:0] lanes$0$t1i1;
+    reg  [63:0] lanes$0$t1i2;
+    wire  [63:0] lanes$0$t3s0;
+    wire  [63:0] lanes$0$t3s1;
+    reg  [63:0] lanes$0$t3i1;
+    reg  [63:0] lanes$0$t3i2;
+    wire  [63:0] lanes$0$t5s0;
+    wire  [63:0] lanes$0$t5s1;
+    wire  [63:0] lanes$0$t5s2;
+    reg  [63:0] lanes$0$t5i1;
+    reg  [63:0] lanes$0$t5i2;
+    reg  [63:0] lanes$0$t5i3;
+    wire  [63:0] lanes$0$t6s0;
+    reg  [63:0] lanes$0$t6i1;
+    wire  [63:0] lanes$0$t7s0;
+    reg  [63:0] lanes$0$t7i1;
+    wire  [63:0] lanes$0$t8s0;
+    reg  [63:0] lanes$0$t8i1;
+    reg  [63:0] lanes$0$t8il;
+    wire  lanes$0$res_beat;
+    wire  lanes$0$res_valid;
+    wire  [63:0] lanes$0$res;
+    wire  lanes$0$px_valid;
+    wire  [15:0] lanes$0$px_x;
+    wire  [15:0] lanes$0$px_y;
+    wire  [2:0] lanes$0$px_face;
+    reg  lanes$1$clock;
+    reg  [15:0] lanes$1$now;
+    reg  lanes$1$beat_valid;
+    reg  [15:0] lanes$1$value;
+    reg  [15:0] lanes$1$x;
+    reg  [15:0] lanes$1$y;
+    reg  lanes$1$pad;
+    reg  lanes$1$invalid;
+    reg  lanes$1$halo;
+    reg  lanes$1$sr;
+    reg  lanes$1$er;
+    reg  [15:0] lanes$1$base_x;
+    reg  [15:0] lanes$1$base_y;
+    reg  [2:0] lanes$1$face;
+    reg  lanes$1$at_edge;
+    reg  lanes$1$dx_neg;
+    reg  [15:0] lanes$1$dx_mag;
+    reg  lanes$1$dy_neg;
+    reg  [15:0] lanes$1$dy_mag;
+    reg  [15:0] lanes$1$g_from_left_xm;
+    reg  [15:0] lanes$1$g_from_left_ym;
+    reg  [15:0] lanes$1$g_from_left_zm;
+    reg  [15:0] lanes$1$g_from_right_xp;
+    reg  [15:0] lanes$1$g_from_right_yp;
+    reg  [15:0] lanes$1$g_from_right_zp;
+    wire  [15:0] lanes$1$g_to_right_xm;
+    wire  [15:0] lanes$1$g_to_right_ym;
+    wire  [15:0] lanes$1$g_to_right_zm;
+    wire  [15:0] lanes$1$g_to_left_xp;
+    wire  [15:0] lanes$1$g_to_left_yp;
+    wire  [15:0] lanes$1$g_to_left_zp;
+    wire  [63:0] lanes$1$t0s0;
+    reg  [63:0] lanes$1$t0i1;
+    wire  [63:0] lanes$1$t1s0;
+    wire  [63:0] lanes$1$t1s1;
+    reg  [63:0] lanes$1$t1i1;
+    reg  [63:0] lanes$1$t1i2;
+    wire  [63:0] lanes$1$t3s0;
+    wire  [63:0] lanes$1$t3s1;
+    reg  [63:0] lanes$1$t3i1;
+    reg  [63:0] lanes$1$t3i2;
+    wire  [63:0] lanes$1$t5s0;
+    wire  [63:0] lanes$1$t5s1;
+    wire  [63:0] lanes$1$t5s2;
+    reg  [63:0] lanes$1$t5i1;
+    reg  [63:0] lanes$1$t5i2;
+    reg  [63:0] lanes$1$t5i3;
+    wire  [63:0] lanes$1$t6s0;
+    reg  [63:0] lanes$1$t6i1;
+    wire  [63:0] lanes$1$t7s0;
+    reg  [63:0] lanes$1$t7i1;
+    wire  [63:0] lanes$1$t8s0;
+    reg  [63:0] lanes$1$t8i1;
+    reg  [63:0] lanes$1$t8il;
+    wire  lanes$1$res_beat;
+    wire  lanes$1$res_valid;
+    wire  [63:0] lanes$1$res;
+    wire  lanes$1$px_valid;
+    wire  [15:0] lanes$1$px_x;
+    wire  [15:0] lanes$1$px_y;
+    wire  [2:0] lanes$1$px_face;
+    reg  lanes$2$clock;
+    reg  [15:0] lanes$2$now;
+    reg  lanes$2$beat_valid;
+    reg  [15:0] lanes$2$value;
+    reg  [15:0] lanes$2$x;
+    reg  [15:0] lanes$2$y;
+    reg  lanes$2$pad;
+    reg  lanes$2$invalid;
+    reg  lanes$2$halo;
+    reg  lanes$2$sr;
+    reg  lanes$2$er;
+    reg  [15:0] lanes$2$base_x;
+    reg  [15:0] lanes$2$base_y;
+    reg  [2:0] lanes$2$face;
+    reg  lanes$2$at_edge;
+    reg  lanes$2$dx_neg;
+    reg  [15:0] lanes$2$dx_mag;
+    reg  lanes$2$dy_neg;
+    reg  [15:0] lanes$2$dy_mag;
+    reg  [15:0] lanes$2$g_from_left_xm;
+    reg  [15:0] lanes$2$g_from_left_ym;
+    reg  [15:0] lanes$2$g_from_left_zm;
+    reg  [15:0] lanes$2$g_from_right_xp;
+    reg  [15:0] lanes$2$g_from_right_yp;
+    reg  [15:0] lanes$2$g_from_right_zp;
+    wire  [15:0] lanes$2$g_to_right_xm;
+    wire  [15:0] lanes$2$g_to_right_ym;
+    wire  [15:0] lanes$2$g_to_right_zm;
+    wire  [15:0] lanes$2$g_to_left_xp;
+    wire  [15:0] lanes$2$g_to_left_yp;
+    wire  [15:0] lanes$2$g_to_left_zp;
+    wire  [63:0] lanes$2$t0s0;
+    reg  [63:0] lanes$2$t0i1;
+    wire  [63:0] lanes$2$t1s0;
+    wire  [63:0] lanes$2$t1s1;
+    reg  [63:0] lanes$2$t1i1;
+    reg  [63:0] lanes$2$t1i2;
+    wire  [63:0] lanes$2$t3s0;
+    wire  [63:0] lanes$2$t3s1;
+    reg  [63:0] lanes$2$t3i1;
+    reg  [63:0] lanes$2$t3i2;
+    wire  [63:0] lanes$2$t5s0;
+    wire  [63:0] lanes$2$t5s1;
+    wire  [63:0] lanes$2$t5s2;
+    reg  [63:0] lanes$2$t5i1;
+    reg  [63:0] lanes$2$t5i2;
+    reg  [63:0] lanes$2$t5i3;
+    wire  [63:0] lanes$2$t6s0;
+    reg  [63:0] lanes$2$t6i1;
+    wire  [63:0] lanes$2$t7s0;
+    reg  [63:0] lanes$2$t7i1;
+    wire  [63:0] lanes$2$t8s0;
+    reg  [63:0] lanes$2$t8i1;
+    reg  [63:0] lanes$2$t8il;
+    wire  lanes$2$res_beat;
+    wire  lanes$2$res_valid;
+    wire  [63:0] lanes$2$res;
+    wire  lanes$2$px_valid;
+    wire  [15:0] lanes$2$px_x;
+    wire  [15:0] lanes$2$px_y;
+    wire  [2:0] lanes$2$px_face;
+    reg  lanes$3$clock;
+    reg  [15:0] lanes$3$now;
+    reg  lanes$3$beat_valid;
+    reg  [15:0] lanes$3$value;
+    reg  [15:0] lanes$3$x;
+    reg  [15:0] lanes$3$y;
+    reg  lanes$3$pad;
+    reg  lanes$3$invalid;
+    reg  lanes$3$halo;
+    reg  lanes$3$sr;
+    reg  lanes$3$er;
+    reg  [15:0] lanes$3$base_x;
+    reg  [15:0] lanes$3$base_y;
+    reg  [2:0] lanes$3$face;
+    reg  lanes$3$at_edge;
+    reg  lanes$3$dx_neg;
+    reg  [15:0] lanes$3$dx_mag;
+    reg  lanes$3$dy_neg;
+    reg  [15:0] lanes$3$dy_mag;
+    reg  [15:0] lanes$3$g_from_left_xm;
+    reg  [15:0] lanes$3$g_from_left_ym;
+    reg  [15:0] lanes$3$g_from_left_zm;
+    reg  [15:0] lanes$3$g_from_right_xp;
+    reg  [15:0] lanes$3$g_from_right_yp;
+    reg  [15:0] lanes$3$g_from_right_zp;
+    wire  [15:0] lanes$3$g_to_right_xm;
+    wire  [15:0] lanes$3$g_to_right_ym;
+    wire  [15:0] lanes$3$g_to_right_zm;
+    wire  [15:0] lanes$3$g_to_left_xp;
+    wire  [15:0] lanes$3$g_to_left_yp;
+    wire  [15:0] lanes$3$g_to_left_zp;
+    wire  [63:0] lanes$3$t0s0;
+    reg  [63:0] lanes$3$t0i1;
+    wire  [63:0] lanes$3$t1s0;
+    wire  [63:0] lanes$3$t1s1;
+    reg  [63:0] lanes$3$t1i1;
+    reg  [63:0] lanes$3$t1i2;
+    wire  [63:0] lanes$3$t3s0;
+    wire  [63:0] lanes$3$t3s1;
+    reg  [63:0] lanes$3$t3i1;
+    reg  [63:0] lanes$3$t3i2;
+    wire  [63:0] lanes$3$t5s0;
+    wire  [63:0] lanes$3$t5s1;
+    wire  [63:0] lanes$3$t5s2;
+    reg  [63:0] lanes$3$t5i1;
+    reg  [63:0] lanes$3$t5i2;
+    reg  [63:0] lanes$3$t5i3;
+    wire  [63:0] lanes$3$t6s0;
+    reg  [63:0] lanes$3$t6i1;
+    wire  [63:0] lanes$3$t7s0;
+    reg  [63:0] lanes$3$t7i1;
+    wire  [63:0] lanes$3$t8s0;
+    reg  [63:0] lanes$3$t8i1;
+    reg  [63:0] lanes$3$t8il;
+    wire  lanes$3$res_beat;
+    wire  lanes$3$res_valid;
+    wire  [63:0] lanes$3$res;
+    wire  lanes$3$px_valid;
+    wire  [15:0] lanes$3$px_x;
+    wire  [15:0] lanes$3$px_y;
+    wire  [2:0] lanes$3$px_face;
+    reg  [15:0] now$d;
+    wire  [15:0] now$q;
+    reg  now$clock;
+    
+    // Sub module instances
+    top$cfb cfb(
+        .clock(cfb$clock),
+        .start(cfb$start),
+        .busy(cfb$busy),
+        .load_enable(cfb$load_enable),
+        .load_module(cfb$load_module),
+        .load_address(cfb$load_address),
+        .load_data(cfb$load_data),
+        .valid(cfb$valid),
+        .n_s(cfb$n_s),
+        .n_beam(cfb$n_beam),
+        .n_b(cfb$n_b),
+        .bs(cfb$bs),
+        .value$0(cfb$value$0),
+        .value$1(cfb$value$1),
+        .value$2(cfb$value$2),
+        .value$3(cfb$value$3),
+        .x$0(cfb$x$0),
+        .x$1(cfb$x$1),
+        .x$2(cfb$x$2),
+        .x$3(cfb$x$3),
+        .y$0(cfb$y$0),
+        .y$1(cfb$y$1),
+        .y$2(cfb$y$2),
+        .y$3(cfb$y$3),
+        .pad$0(cfb$pad$0),
+        .pad$1(cfb$pad$1),
+        .pad$2(cfb$pad$2),
+        .pad$3(cfb$pad$3),
+        .sr$0(cfb$sr$0),
+        .sr$1(cfb$sr$1),
+        .sr$2(cfb$sr$2),
+        .sr$3(cfb$sr$3),
+        .er$0(cfb$er$0),
+        .er$1(cfb$er$1),
+        .er$2(cfb$er$2),
+        .er$3(cfb$er$3),
+        .base_x$0(cfb$base_x$0),
+        .base_x$1(cfb$base_x$1),
+        .base_x$2(cfb$base_x$2),
+        .base_x$3(cfb$base_x$3),
+        .base_y$0(cfb$base_y$0),
+        .base_y$1(cfb$base_y$1),
+        .base_y$2(cfb$base_y$2),
+        .base_y$3(cfb$base_y$3),
+        .face$0(cfb$face$0),
+        .face$1(cfb$face$1),
+        .face$2(cfb$face$2),
+        .face$3(cfb$face$3),
+        .at_edge$0(cfb$at_edge$0),
+        .at_edge$1(cfb$at_edge$1),
+        .at_edge$2(cfb$at_edge$2),
+        .at_edge$3(cfb$at_edge$3),
+        .invalid$0(cfb$invalid$0),
+        .invalid$1(cfb$invalid$1),
+        .invalid$2(cfb$invalid$2),
+        .invalid$3(cfb$invalid$3),
+        .halo$0(cfb$halo$0),
+        .halo$1(cfb$halo$1),
+        .halo$2(cfb$halo$2),
+        .halo$3(cfb$halo$3),
+        .ext_addr$0(cfb$ext_addr$0),
+        .ext_addr$1(cfb$ext_addr$1),
+        .ext_addr$2(cfb$ext_addr$2),
+        .ext_addr$3(cfb$ext_addr$3),
+        .ext_data$0(cfb$ext_data$0),
+        .ext_data$1(cfb$ext_data$1),
+        .ext_data$2(cfb$ext_data$2),
+        .ext_data$3(cfb$ext_data$3),
+        .dx_neg$0(cfb$dx_neg$0),
+        .dx_neg$1(cfb$dx_neg$1),
+        .dx_neg$2(cfb$dx_neg$2),
+        .dx_neg$3(cfb$dx_neg$3),
+        .dx_mag$0(cfb$dx_mag$0),
+        .dx_mag$1(cfb$dx_mag$1),
+        .dx_mag$2(cfb$dx_mag$2),
+        .dx_mag$3(cfb$dx_mag$3),
+        .dy_neg$0(cfb$dy_neg$0),
+        .dy_neg$1(cfb$dy_neg$1),
+        .dy_neg$2(cfb$dy_neg$2),
+        .dy_neg$3(cfb$dy_neg$3),
+        .dy_mag$0(cfb$dy_mag$0),
+        .dy_mag$1(cfb$dy_mag$1),
+        .dy_mag$2(cfb$dy_mag$2),
+        .dy_mag$3(cfb$dy_mag$3)
+    );
+    top$lanes$0 lanes$0(
+        .clock(lanes$0$clock),
+        .now(lanes$0$now),
+        .beat_valid(lanes$0$beat_valid),
+        .value(lanes$0$value),
+        .x(lanes$0$x),
+        .y(lanes$0$y),
+        .pad(lanes$0$pad),
+        .invalid(lanes$0$invalid),
+        .halo(lanes$0$halo),
+        .sr(lanes$0$sr),
+        .er(lanes$0$er),
+        .base_x(lanes$0$base_x),
+        .base_y(lanes$0$base_y),
+        .face(lanes$0$face),
+        .at_edge(lanes$0$at_edge),
+        .dx_neg(lanes$0$dx_neg),
+        .dx_mag(lanes$0$dx_mag),
+        .dy_neg(lanes$0$dy_neg),
+        .dy_mag(lanes$0$dy_mag),
+        .g_from_left_xm(lanes$0$g_from_left_xm),
+        .g_from_left_ym(lanes$0$g_from_left_ym),
+        .g_from_left_zm(lanes$0$g_from_left_zm),
+        .g_from_right_xp(lanes$0$g_from_right_xp),
+        .g_from_right_yp(lanes$0$g_from_right_yp),
+        .g_from_right_zp(lanes$0$g_from_right_zp),
+        .g_to_right_xm(lanes$0$g_to_right_xm),
+        .g_to_right_ym(lanes$0$g_to_right_ym),
+        .g_to_right_zm(lanes$0$g_to_right_zm),
+        .g_to_left_xp(lanes$0$g_to_left_xp),
+        .g_to_left_yp(lanes$0$g_to_left_yp),
+        .g_to_left_zp(lanes$0$g_to_left_zp),
+        .t0s0(lanes$0$t0s0),
+        .t0i1(lanes$0$t0i1),
+        .t1s0(lanes$0$t1s0),
+        .t1s1(lanes$0$t1s1),
+        .t1i1(lanes$0$t1i1),
+        .t1i2(lanes$0$t1i2),
+        .t3s0(lanes$0$t3s0),
+        .t3s1(lanes$0$t3s1),
+        .t3i1(lanes$0$t3i1),
+        .t3i2(lanes$0$t3i2),
+        .t5s0(lanes$0$t5s0),
+        .t5s1(lanes$0$t5s1),
+        .t5s2(lanes$0$t5s2),
+        .t5i1(lanes$0$t5i1),
+        .t5i2(lanes$0$t5i2),
+        .t5i3(lanes$0$t5i3),
+        .t6s0(lanes$0$t6s0),
+        .t6i1(lanes$0$t6i1),
+        .t7s0(lanes$0$t7s0),
+        .t7i1(lanes$0$t7i1),
+        .t8s0(lanes$0$t8s0),
+        .t8i1(lanes$0$t8i1),
+        .t8il(lanes$0$t8il),
+        .res_beat(lanes$0$res_beat),
+        .res_valid(lanes$0$res_valid),
+        .res(lanes$0$res),
+        .px_valid(lanes$0$px_valid),
+        .px_x(lanes$0$px_x),
+        .px_y(lanes$0$px_y),
+        .px_face(lanes$0$px_face)
+    );
+    top$lanes$1 lanes$1(
+        .clock(lanes$1$clock),
+        .now(lanes$1$now),
+        .beat_valid(lanes$1$beat_valid),
+        .value(lanes$1$value),
+        .x(lanes$1$x),
+        .y(lanes$1$y),
+        .pad(lanes$1$pad),
+        .invalid(lanes$1$invalid),
+        .halo(lanes$1$halo),
+        .sr(lanes$1$sr),
+        .er(lanes$1$er),
+        .base_x(lanes$1$base_x),
+        .base_y(lanes$1$base_y),
+        .face(lanes$1$face),
+        .at_edge(lanes$1$at_edge),
+        .dx_neg(lanes$1$dx_neg),
+        .dx_mag(lanes$1$dx_mag),
+        .dy_neg(lanes$1$dy_neg),
+        .dy_mag(lanes$1$dy_mag),
+        .g_from_left_xm(lanes$1$g_from_left_xm),
+        .g_from_left_ym(lanes$1$g_from_left_ym),
+        .g_from_left_zm(lanes$1$g_from_left_zm),
+        .g_from_right_xp(lanes$1$g_from_right_xp),
+        .g_from_right_yp(lanes$1$g_from_right_yp),
+        .g_from_right_zp(lanes$1$g_from_right_zp),
+        .g_to_right_xm(lanes$1$g_to_right_xm),
+        .g_to_right_ym(lanes$1$g_to_right_ym),
+        .g_to_right_zm(lanes$1$g_to_right_zm),
+        .g_to_left_xp(lanes$1$g_to_left_xp),
+        .g_to_left_yp(lanes$1$g_to_left_yp),
+        .g_to_left_zp(lanes$1$g_to_left_zp),
+        .t0s0(lanes$1$t0s0),
+        .t0i1(lanes$1$t0i1),
+        .t1s0(lanes$1$t1s0),
+        .t1s1(lanes$1$t1s1),
+        .t1i1(lanes$1$t1i1),
+        .t1i2(lanes$1$t1i2),
+        .t3s0(lanes$1$t3s0),
+        .t3s1(lanes$1$t3s1),
+        .t3i1(lanes$1$t3i1),
+        .t3i2(lanes$1$t3i2),
+        .t5s0(lanes$1$t5s0),
+        .t5s1(lanes$1$t5s1),
+        .t5s2(lanes$1$t5s2),
+        .t5i1(lanes$1$t5i1),
+        .t5i2(lanes$1$t5i2),
+        .t5i3(lanes$1$t5i3),
+        .t6s0(lanes$1$t6s0),
+        .t6i1(lanes$1$t6i1),
+        .t7s0(lanes$1$t7s0),
+        .t7i1(lanes$1$t7i1),
+        .t8s0(lanes$1$t8s0),
+        .t8i1(lanes$1$t8i1),
+        .t8il(lanes$1$t8il),
+        .res_beat(lanes$1$res_beat),
+        .res_valid(lanes$1$res_valid),
+        .res(lanes$1$res),
+        .px_valid(lanes$1$px_valid),
+        .px_x(lanes$1$px_x),
+        .px_y(lanes$1$px_y),
+        .px_face(lanes$1$px_face)
+    );
+    top$lanes$2 lanes$2(
+        .clock(lanes$2$clock),
+        .now(lanes$2$now),
+        .beat_valid(lanes$2$beat_valid),
+        .value(lanes$2$value),
+        .x(lanes$2$x),
+        .y(lanes$2$y),
+        .pad(lanes$2$pad),
+        .invalid(lanes$2$invalid),
+        .halo(lanes$2$halo),
+        .sr(lanes$2$sr),
+        .er(lanes$2$er),
+        .base_x(lanes$2$base_x),
+        .base_y(lanes$2$base_y),
+        .face(lanes$2$face),
+        .at_edge(lanes$2$at_edge),
+        .dx_neg(lanes$2$dx_neg),
+        .dx_mag(lanes$2$dx_mag),
+        .dy_neg(lanes$2$dy_neg),
+        .dy_mag(lanes$2$dy_mag),
+        .g_from_left_xm(lanes$2$g_from_left_xm),
+        .g_from_left_ym(lanes$2$g_from_left_ym),
+        .g_from_left_zm(lanes$2$g_from_left_zm),
+        .g_from_right_xp(lanes$2$g_from_right_xp),
+        .g_from_right_yp(lanes$2$g_from_right_yp),
+        .g_from_right_zp(lanes$2$g_from_right_zp),
+        .g_to_right_xm(lanes$2$g_to_right_xm),
+        .g_to_right_ym(lanes$2$g_to_right_ym),
+        .g_to_right_zm(lanes$2$g_to_right_zm),
+        .g_to_left_xp(lanes$2$g_to_left_xp),
+        .g_to_left_yp(lanes$2$g_to_left_yp),
+        .g_to_left_zp(lanes$2$g_to_left_zp),
+        .t0s0(lanes$2$t0s0),
+        .t0i1(lanes$2$t0i1),
+        .t1s0(lanes$2$t1s0),
+        .t1s1(lanes$2$t1s1),
+        .t1i1(lanes$2$t1i1),
+        .t1i2(lanes$2$t1i2),
+        .t3s0(lanes$2$t3s0),
+        .t3s1(lanes$2$t3s1),
+        .t3i1(lanes$2$t3i1),
+        .t3i2(lanes$2$t3i2),
+        .t5s0(lanes$2$t5s0),
+        .t5s1(lanes$2$t5s1),
+        .t5s2(lanes$2$t5s2),
+        .t5i1(lanes$2$t5i1),
+        .t5i2(lanes$2$t5i2),
+        .t5i3(lanes$2$t5i3),
+        .t6s0(lanes$2$t6s0),
+        .t6i1(lanes$2$t6i1),
+        .t7s0(lanes$2$t7s0),
+        .t7i1(lanes$2$t7i1),
+        .t8s0(lanes$2$t8s0),
+        .t8i1(lanes$2$t8i1),
+        .t8il(lanes$2$t8il),
+        .res_beat(lanes$2$res_beat),
+        .res_valid(lanes$2$res_valid),
+        .res(lanes$2$res),
+        .px_valid(lanes$2$px_valid),
+        .px_x(lanes$2$px_x),
+        .px_y(lanes$2$px_y),
+        .px_face(lanes$2$px_face)
+    );
+    top$lanes$3 lanes$3(
+        .clock(lanes$3$clock),
+        .now(lanes$3$now),
+        .beat_valid(lanes$3$beat_valid),
+        .value(lanes$3$value),
+        .x(lanes$3$x),
+        .y(lanes$3$y),
+        .pad(lanes$3$pad),
+        .invalid(lanes$3$invalid),
+        .halo(lanes$3$halo),
+        .sr(lanes$3$sr),
+        .er(lanes$3$er),
+        .base_x(lanes$3$base_x),
+        .base_y(lanes$3$base_y),
+        .face(lanes$3$face),
+        .at_edge(lanes$3$at_edge),
+        .dx_neg(lanes$3$dx_neg),
+        .dx_mag(lanes$3$dx_mag),
+        .dy_neg(lanes$3$dy_neg),
+        .dy_mag(lanes$3$dy_mag),
+        .g_from_left_xm(lanes$3$g_from_left_xm),
+        .g_from_left_ym(lanes$3$g_from_left_ym),
+        .g_from_left_zm(lanes$3$g_from_left_zm),
+        .g_from_right_xp(lanes$3$g_from_right_xp),
+        .g_from_right_yp(lanes$3$g_from_right_yp),
+        .g_from_right_zp(lanes$3$g_from_right_zp),
+        .g_to_right_xm(lanes$3$g_to_right_xm),
+        .g_to_right_ym(lanes$3$g_to_right_ym),
+        .g_to_right_zm(lanes$3$g_to_right_zm),
+        .g_to_left_xp(lanes$3$g_to_left_xp),
+        .g_to_left_yp(lanes$3$g_to_left_yp),
+        .g_to_left_zp(lanes$3$g_to_left_zp),
+        .t0s0(lanes$3$t0s0),
+        .t0i1(lanes$3$t0i1),
+        .t1s0(lanes$3$t1s0),
+        .t1s1(lanes$3$t1s1),
+        .t1i1(lanes$3$t1i1),
+        .t1i2(lanes$3$t1i2),
+        .t3s0(lanes$3$t3s0),
+        .t3s1(lanes$3$t3s1),
+        .t3i1(lanes$3$t3i1),
+        .t3i2(lanes$3$t3i2),
+        .t5s0(lanes$3$t5s0),
+        .t5s1(lanes$3$t5s1),
+        .t5s2(lanes$3$t5s2),
+        .t5i1(lanes$3$t5i1),
+        .t5i2(lanes$3$t5i2),
+        .t5i3(lanes$3$t5i3),
+        .t6s0(lanes$3$t6s0),
+        .t6i1(lanes$3$t6i1),
+        .t7s0(lanes$3$t7s0),
+        .t7i1(lanes$3$t7i1),
+        .t8s0(lanes$3$t8s0),
+        .t8i1(lanes$3$t8i1),
+        .t8il(lanes$3$t8il),
+        .res_beat(lanes$3$res_beat),
+        .res_valid(lanes$3$res_valid),
+        .res(lanes$3$res),
+        .px_valid(lanes$3$px_valid),
+        .px_x(lanes$3$px_x),
+        .px_y(lanes$3$px_y),
+        .px_face(lanes$3$px_face)
+    );
+    top$now now(
+        .d(now$d),
+        .q(now$q),
+        .clock(now$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        now$clock = clock;
+        now$d = now$q;
+        now$d = now$q + 'h1;
+        cfb$clock = clock;
+        cfb$start = start;
+        cfb$load_enable = load_enable;
+        cfb$load_module = load_module;
+        cfb$load_address = load_address;
+        cfb$load_data = load_data;
+        busy = cfb$busy;
+        n_s = cfb$n_s;
+        n_beam = cfb$n_beam;
+        n_b = cfb$n_b;
+        bs = cfb$bs;
+        lanes$0$clock = clock;
+        lanes$0$now = now$q;
+        lanes$0$beat_valid = cfb$valid;
+        cfb$ext_data$0 = ext_data$0;
+        ext_addr$0 = cfb$ext_addr$0;
+        px_valid$0 = lanes$0$px_valid;
+        px_x$0 = lanes$0$px_x;
+        px_y$0 = lanes$0$px_y;
+        px_face$0 = lanes$0$px_face;
+        res_beat$0 = lanes$0$res_beat;
+        res_valid$0 = lanes$0$res_valid;
+        res$0 = lanes$0$res;
+        lanes$0$value = cfb$value$0;
+        lanes$0$x = cfb$x$0;
+        lanes$0$y = cfb$y$0;
+        lanes$0$pad = cfb$pad$0;
+        lanes$0$invalid = cfb$invalid$0;
+        lanes$0$halo = cfb$halo$0;
+        lanes$0$sr = cfb$sr$0;
+        lanes$0$er = cfb$er$0;
+        lanes$0$base_x = cfb$base_x$0;
+        lanes$0$base_y = cfb$base_y$0;
+        lanes$0$face = cfb$face$0;
+        lanes$0$at_edge = cfb$at_edge$0;
+        lanes$0$dx_neg = cfb$dx_neg$0;
+        lanes$0$dx_mag = cfb$dx_mag$0;
+        lanes$0$dy_neg = cfb$dy_neg$0;
+        lanes$0$dy_mag = cfb$dy_mag$0;
+        lanes$1$clock = clock;
+        lanes$1$now = now$q;
+        lanes$1$beat_valid = cfb$valid;
+        cfb$ext_data$1 = ext_data$1;
+        ext_addr$1 = cfb$ext_addr$1;
+        px_valid$1 = lanes$1$px_valid;
+        px_x$1 = lanes$1$px_x;
+        px_y$1 = lanes$1$px_y;
+        px_face$1 = lanes$1$px_face;
+        res_beat$1 = lanes$1$res_beat;
+        res_valid$1 = lanes$1$res_valid;
+        res$1 = lanes$1$res;
+        lanes$1$value = cfb$value$1;
+        lanes$1$x = cfb$x$1;
+        lanes$1$y = cfb$y$1;
+        lanes$1$pad = cfb$pad$1;
+        lanes$1$invalid = cfb$invalid$1;
+        lanes$1$halo = cfb$halo$1;
+        lanes$1$sr = cfb$sr$1;
+        lanes$1$er = cfb$er$1;
+        lanes$1$base_x = cfb$base_x$1;
+        lanes$1$base_y = cfb$base_y$1;
+        lanes$1$face = cfb$face$1;
+        lanes$1$at_edge = cfb$at_edge$1;
+        lanes$1$dx_neg = cfb$dx_neg$1;
+        lanes$1$dx_mag = cfb$dx_mag$1;
+        lanes$1$dy_neg = cfb$dy_neg$1;
+        lanes$1$dy_mag = cfb$dy_mag$1;
+        lanes$2$clock = clock;
+        lanes$2$now = now$q;
+        lanes$2$beat_valid = cfb$valid;
+        cfb$ext_data$2 = ext_data$2;
+        ext_addr$2 = cfb$ext_addr$2;
+        px_valid$2 = lanes$2$px_valid;
+        px_x$2 = lanes$2$px_x;
+        px_y$2 = lanes$2$px_y;
+        px_face$2 = lanes$2$px_face;
+        res_beat$2 = lanes$2$res_beat;
+        res_valid$2 = lanes$2$res_valid;
+        res$2 = lanes$2$res;
+        lanes$2$value = cfb$value$2;
+        lanes$2$x = cfb$x$2;
+        lanes$2$y = cfb$y$2;
+        lanes$2$pad = cfb$pad$2;
+        lanes$2$invalid = cfb$invalid$2;
+        lanes$2$halo = cfb$halo$2;
+        lanes$2$sr = cfb$sr$2;
+        lanes$2$er = cfb$er$2;
+        lanes$2$base_x = cfb$base_x$2;
+        lanes$2$base_y = cfb$base_y$2;
+        lanes$2$face = cfb$face$2;
+        lanes$2$at_edge = cfb$at_edge$2;
+        lanes$2$dx_neg = cfb$dx_neg$2;
+        lanes$2$dx_mag = cfb$dx_mag$2;
+        lanes$2$dy_neg = cfb$dy_neg$2;
+        lanes$2$dy_mag = cfb$dy_mag$2;
+        lanes$3$clock = clock;
+        lanes$3$now = now$q;
+        lanes$3$beat_valid = cfb$valid;
+        cfb$ext_data$3 = ext_data$3;
+        ext_addr$3 = cfb$ext_addr$3;
+        px_valid$3 = lanes$3$px_valid;
+        px_x$3 = lanes$3$px_x;
+        px_y$3 = lanes$3$px_y;
+        px_face$3 = lanes$3$px_face;
+        res_beat$3 = lanes$3$res_beat;
+        res_valid$3 = lanes$3$res_valid;
+        res$3 = lanes$3$res;
+        lanes$3$value = cfb$value$3;
+        lanes$3$x = cfb$x$3;
+        lanes$3$y = cfb$y$3;
+        lanes$3$pad = cfb$pad$3;
+        lanes$3$invalid = cfb$invalid$3;
+        lanes$3$halo = cfb$halo$3;
+        lanes$3$sr = cfb$sr$3;
+        lanes$3$er = cfb$er$3;
+        lanes$3$base_x = cfb$base_x$3;
+        lanes$3$base_y = cfb$base_y$3;
+        lanes$3$face = cfb$face$3;
+        lanes$3$at_edge = cfb$at_edge$3;
+        lanes$3$dx_neg = cfb$dx_neg$3;
+        lanes$3$dx_mag = cfb$dx_mag$3;
+        lanes$3$dy_neg = cfb$dy_neg$3;
+        lanes$3$dy_mag = cfb$dy_mag$3;
+        lanes$1$t0i1 = lanes$0$t0s0;
+        lanes$1$t1i1 = lanes$0$t1s0;
+        lanes$1$t1i2 = lanes$0$t1s1;
+        lanes$1$t3i1 = lanes$0$t3s0;
+        lanes$1$t3i2 = lanes$0$t3s1;
+        lanes$1$t5i1 = lanes$0$t5s0;
+        lanes$1$t5i2 = lanes$0$t5s1;
+        lanes$1$t5i3 = lanes$0$t5s2;
+        lanes$1$t6i1 = lanes$0$t6s0;
+        lanes$1$t7i1 = lanes$0$t7s0;
+        lanes$1$t8i1 = lanes$0$t8s0;
+        lanes$2$t0i1 = lanes$1$t0s0;
+        lanes$2$t1i1 = lanes$1$t1s0;
+        lanes$2$t1i2 = lanes$1$t1s1;
+        lanes$2$t3i1 = lanes$1$t3s0;
+        lanes$2$t3i2 = lanes$1$t3s1;
+        lanes$2$t5i1 = lanes$1$t5s0;
+        lanes$2$t5i2 = lanes$1$t5s1;
+        lanes$2$t5i3 = lanes$1$t5s2;
+        lanes$2$t6i1 = lanes$1$t6s0;
+        lanes$2$t7i1 = lanes$1$t7s0;
+        lanes$2$t8i1 = lanes$1$t8s0;
+        lanes$3$t0i1 = lanes$2$t0s0;
+        lanes$3$t1i1 = lanes$2$t1s0;
+        lanes$3$t1i2 = lanes$2$t1s1;
+        lanes$3$t3i1 = lanes$2$t3s0;
+        lanes$3$t3i2 = lanes$2$t3s1;
+        lanes$3$t5i1 = lanes$2$t5s0;
+        lanes$3$t5i2 = lanes$2$t5s1;
+        lanes$3$t5i3 = lanes$2$t5s2;
+        lanes$3$t6i1 = lanes$2$t6s0;
+        lanes$3$t7i1 = lanes$2$t7s0;
+        lanes$3$t8i1 = lanes$2$t8s0;
+        lanes$0$t0i1 = lanes$3$t0s0;
+        lanes$0$t1i1 = lanes$3$t1s0;
+        lanes$0$t1i2 = lanes$3$t1s1;
+        lanes$0$t3i1 = lanes$3$t3s0;
+        lanes$0$t3i2 = lanes$3$t3s1;
+        lanes$0$t5i1 = lanes$3$t5s0;
+        lanes$0$t5i2 = lanes$3$t5s1;
+        lanes$0$t5i3 = lanes$3$t5s2;
+        lanes$0$t6i1 = lanes$3$t6s0;
+        lanes$0$t7i1 = lanes$3$t7s0;
+        lanes$0$t8i1 = lanes$3$t8s0;
+        lanes$0$t8il = lanes$1$t8s0;
+        lanes$1$t8il = lanes$2$t8s0;
+        lanes$2$t8il = lanes$3$t8s0;
+        lanes$3$t8il = lanes$0$t8s0;
+        lanes$1$g_from_left_xm = lanes$0$g_to_right_xm;
+        lanes$1$g_from_left_ym = lanes$0$g_to_right_ym;
+        lanes$1$g_from_left_zm = lanes$0$g_to_right_zm;
+        lanes$2$g_from_left_xm = lanes$1$g_to_right_xm;
+        lanes$2$g_from_left_ym = lanes$1$g_to_right_ym;
+        lanes$2$g_from_left_zm = lanes$1$g_to_right_zm;
+        lanes$3$g_from_left_xm = lanes$2$g_to_right_xm;
+        lanes$3$g_from_left_ym = lanes$2$g_to_right_ym;
+        lanes$3$g_from_left_zm = lanes$2$g_to_right_zm;
+        lanes$0$g_from_left_xm = lanes$3$g_to_right_xm;
+        lanes$0$g_from_left_ym = lanes$3$g_to_right_ym;
+        lanes$0$g_from_left_zm = lanes$3$g_to_right_zm;
+        lanes$0$g_from_right_xp = lanes$1$g_to_left_xp;
+        lanes$0$g_from_right_yp = lanes$1$g_to_left_yp;
+        lanes$0$g_from_right_zp = lanes$1$g_to_left_zp;
+        lanes$1$g_from_right_xp = lanes$2$g_to_left_xp;
+        lanes$1$g_from_right_yp = lanes$2$g_to_left_yp;
+        lanes$1$g_from_right_zp = lanes$2$g_to_left_zp;
+        lanes$2$g_from_right_xp = lanes$3$g_to_left_xp;
+        lanes$2$g_from_right_yp = lanes$3$g_to_left_yp;
+        lanes$2$g_from_right_zp = lanes$3$g_to_left_zp;
+        lanes$3$g_from_right_xp = lanes$0$g_to_left_xp;
+        lanes$3$g_from_right_yp = lanes$0$g_to_left_yp;
+        lanes$3$g_from_right_zp = lanes$0$g_to_left_zp;
+    end
+    
+endmodule // top

@@ -1,0 +1,160 @@
+//! `generated_verilog/` against a fresh `cube verilog` export, and every
+//! committed file through `verilator --lint-only -Wall` and `iverilog`.
+
+use golden_model::scene::Scene;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use testbenches::require_tool;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The committed configurations: (name, scene path).
+fn configs() -> Vec<(String, PathBuf)> {
+    let mut v: Vec<(String, PathBuf)> = std::fs::read_dir(root().join("scenes/verilog"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .map(|p| (p.file_stem().unwrap().to_string_lossy().to_string(), p))
+        .collect();
+    v.sort();
+    assert!(
+        v.len() >= 3,
+        "scenes/verilog holds {} configurations",
+        v.len()
+    );
+    v
+}
+
+/// Every file under `dir`, relative to it, sorted.
+fn files_under(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                out.push(p.strip_prefix(dir).unwrap().to_path_buf());
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn committed_verilog_is_fresh() {
+    let tmp = tempfile::tempdir().unwrap();
+    for (name, scene_path) in configs() {
+        let scene = Scene::load(&scene_path).unwrap();
+        let cam = scene.camera().unwrap();
+        let fresh = tmp.path().join(&name);
+        let file = format!("{name}.json");
+        hdl::export::write_export(&file, &scene, &cam, scene.volume.render_dims(), &fresh).unwrap();
+        let committed = root().join("generated_verilog").join(&name);
+        let stale = "generated_verilog is stale: run scripts/generate-verilog";
+        assert_eq!(
+            files_under(&committed),
+            files_under(&fresh),
+            "{name}: the file sets differ; {stale}"
+        );
+        for f in files_under(&fresh) {
+            let (a, b) = (
+                std::fs::read_to_string(committed.join(&f)).unwrap(),
+                std::fs::read_to_string(fresh.join(&f)).unwrap(),
+            );
+            if a != b {
+                let line = a
+                    .lines()
+                    .zip(b.lines())
+                    .position(|(x, y)| x != y)
+                    .unwrap_or(a.lines().count().min(b.lines().count()));
+                panic!(
+                    "{name}/{}: first difference at line {}; {stale}",
+                    f.display(),
+                    line + 1
+                );
+            }
+        }
+    }
+}
+
+/// Each design directory (one per sweep) with its Verilog files, top first.
+fn designs() -> Vec<(PathBuf, Vec<String>)> {
+    let mut out = Vec::new();
+    for (name, _) in configs() {
+        let dir = root().join("generated_verilog").join(&name);
+        let m: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
+                .unwrap();
+        for s in m["sweeps"].as_array().unwrap() {
+            let files = s["files"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|f| f.as_str().unwrap().to_string())
+                .collect();
+            out.push((dir.join(s["dir"].as_str().unwrap()), files));
+        }
+    }
+    out
+}
+
+fn run(dir: &Path, program: &str, args: &[String]) -> (bool, String) {
+    let o = Command::new(program)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stderr).to_string() + &String::from_utf8_lossy(&o.stdout),
+    )
+}
+
+#[test]
+fn committed_verilog_lints_clean() {
+    require_tool("verilator");
+    for (dir, files) in designs() {
+        let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into(), "lint.vlt".into()];
+        args.extend(files);
+        let (ok, log) = run(&dir, "verilator", &args);
+        assert!(ok, "{}: verilator -Wall:\n{log}", dir.display());
+    }
+}
+
+/// The lint is live: without the waivers the same files are flagged, and
+/// only for what the waivers name.
+#[test]
+fn lint_without_waivers_flags_exactly_the_waived_rules() {
+    require_tool("verilator");
+    let (dir, files) = designs()
+        .into_iter()
+        .find(|(d, _)| d.ends_with("mip_p4_64/."))
+        .unwrap();
+    let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into()];
+    args.extend(files);
+    let (ok, log) = run(&dir, "verilator", &args);
+    assert!(!ok, "lint passed without its waivers");
+    for line in log.lines().filter(|l| l.starts_with("%Warning-")) {
+        let rule = &line["%Warning-".len()..line.find(':').unwrap()];
+        assert!(
+            hdl::export::LINT_WAIVERS.contains(&format!("-rule {rule} ")),
+            "an unwaived warning: {line}"
+        );
+    }
+}
+
+#[test]
+fn committed_verilog_compiles_with_iverilog() {
+    require_tool("iverilog");
+    for (dir, files) in designs() {
+        let mut args: Vec<String> = vec!["-g2012".into(), "-o".into(), "/dev/null".into()];
+        args.extend(files);
+        let (ok, log) = run(&dir, "iverilog", &args);
+        assert!(ok, "{}: iverilog:\n{log}", dir.display());
+    }
+}
