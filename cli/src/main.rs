@@ -40,6 +40,9 @@ enum Engine {
     RustHdl,
     /// Icarus Verilog running the Verilog rust-hdl emits.
     Iverilog,
+    /// Verilator running the Verilog rust-hdl emits (built once per design,
+    /// cached); the engine for full frames.
+    Verilator,
 }
 
 #[derive(Subcommand)]
@@ -108,15 +111,39 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Compare two VCD traces of the same design (e.g. rust-hdl against
+    /// Verilator) signal by signal and cycle by cycle. Exit 0 when equal, 1
+    /// when they differ, 2 on a bad file.
+    VcdDiff {
+        a: PathBuf,
+        b: PathBuf,
+        /// Compare only signals whose name below the top matches this glob
+        /// (e.g. 'lanes$0.*' or '*.res').
+        #[arg(long)]
+        signals: Option<String>,
+        /// How many first mismatches to print.
+        #[arg(long, default_value_t = 10)]
+        show: usize,
+    },
     /// List the built-in volumes.
     Scenes,
 }
 
 fn main() {
     let cli = Cli::parse();
+    if let Some(Command::VcdDiff {
+        a,
+        b,
+        signals,
+        show,
+    }) = &cli.command
+    {
+        std::process::exit(vcd_diff_cmd(a, b, signals.as_deref(), *show));
+    }
     let r = match cli.command {
         None => default_run(),
         Some(Command::Verilog { scene, out }) => verilog_cmd(&scene, &out),
+        Some(Command::VcdDiff { .. }) => unreachable!("handled above"),
         Some(Command::Scenes) => {
             for (name, what) in BUILTINS {
                 println!("{name:<13} {what}");
@@ -301,6 +328,48 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
     Ok((img, frame.bases.len()))
 }
 
+/// `cube vcd-diff`: 0 equal, 1 different, 2 bad input.
+fn vcd_diff_cmd(a: &Path, b: &Path, signals: Option<&str>, show: usize) -> i32 {
+    use hdl::vcd_diff::{compare, show as hex, Trace};
+    let loaded = Trace::load(a).and_then(|ta| Ok((ta, Trace::load(b)?)));
+    let c = match loaded.and_then(|(ta, tb)| compare(&ta, &tb, signals)) {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: vcd-diff: {e}");
+            return 2;
+        }
+    };
+    println!(
+        "{} signals compared over {} cycles ({} in A only, {} in B only)",
+        c.compared,
+        c.cycles_a.min(c.cycles_b),
+        c.only_a,
+        c.only_b
+    );
+    if c.cycles_a != c.cycles_b {
+        println!(
+            "lengths differ: A has {} cycles, B has {}",
+            c.cycles_a, c.cycles_b
+        );
+    }
+    for m in c.mismatches.iter().take(show) {
+        println!(
+            "cycle {}: {}: A {} B {}",
+            m.cycle,
+            m.signal,
+            hex(&m.a),
+            hex(&m.b)
+        );
+    }
+    if c.equal() {
+        println!("traces equal");
+        0
+    } else {
+        println!("{} signals differ", c.mismatches.len());
+        1
+    }
+}
+
 fn verilog_cmd(scene_path: &Path, out: &Path) -> Result<()> {
     let scene = Scene::load(scene_path)?;
     let cam = scene.camera()?;
@@ -336,10 +405,12 @@ fn sim_cmd(
     out: Option<PathBuf>,
     json_path: Option<PathBuf>,
 ) -> Result<()> {
-    let (engine, name) = match engine {
-        Engine::RustHdl => (hdl::sim::Engine::RustHdl, "rust-hdl"),
-        Engine::Iverilog => (hdl::sim::Engine::Iverilog, "iverilog"),
+    let engine = match engine {
+        Engine::RustHdl => hdl::sim::Engine::RustHdl,
+        Engine::Iverilog => hdl::sim::Engine::Iverilog,
+        Engine::Verilator => hdl::sim::Engine::Verilator,
     };
+    let name = engine.name();
     let (scene, vol) = load(scene_path)?;
     let cam = scene.camera()?;
     let vcd_tmp = vcd.as_ref().map(|v| v.with_extension("vcd.tmp"));
@@ -354,14 +425,16 @@ fn sim_cmd(
         std::fs::remove_file(&gtkw_tmp)?;
         output::write_text(&gtkw, &text)?;
     }
-    let cps = r.cycles as f64 / r.seconds;
+    let cps = r.cycles as f64 / r.sim_seconds;
     println!(
-        "{name}: {} clocks (ideal {}, +{} fill), {:.2} s, {:.0} clocks/s; {} base-plane pixels differ from the golden model",
+        "{name}: {} clocks (ideal {}, +{} fill), {:.2} s in all ({:.2} s simulating, {:.0} clocks/s; {:.1} s building); {} base-plane pixels differ from the golden model",
         r.cycles,
         r.ideal_cycles,
         r.cycles - r.ideal_cycles,
         r.seconds,
+        r.sim_seconds,
         cps,
+        r.build_seconds,
         r.mismatches
     );
     println!(
@@ -393,6 +466,8 @@ fn sim_cmd(
                 "ideal_cycles": r.ideal_cycles,
                 "mismatches": r.mismatches,
                 "seconds": r.seconds,
+                "sim_seconds": r.sim_seconds,
+                "build_seconds": r.build_seconds,
                 "cycles_per_second": cps,
                 "pipelines": scene.hardware.pipelines,
                 "units_left_out": r.left_out,

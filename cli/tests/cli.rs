@@ -312,6 +312,142 @@ fn sim_refuses_what_the_rtl_cannot_do() {
     );
     assert_clean_error(
         &cube(&["sim", "--scene", &big], d.path()),
-        "Verilog engines",
+        "--engine verilator",
     );
+}
+
+#[test]
+fn verilog_writes_stage_files_lint_waivers_and_manifest() {
+    let d = tempfile::tempdir().unwrap();
+    let mip = write(
+        d.path(),
+        "mip.json",
+        r#"{"volume": {"builtin": "sphere", "dims": [16, 16, 16]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
+            "mode": "mip", "hardware": {"pipelines": 2}}"#,
+    );
+    std::fs::create_dir_all(d.path().join("out/stale")).unwrap();
+    let o = cube(&["verilog", "--scene", &mip, "--out", "out"], d.path());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = d.path().join("out");
+    assert!(
+        !out.join("stale").exists(),
+        "the old directory is replaced whole"
+    );
+    for f in [
+        "top.v",
+        "cfb.v",
+        "shader.v",
+        "compositor.v",
+        "bilinear.v",
+        "lint.vlt",
+        "manifest.json",
+    ] {
+        assert!(out.join(f).exists(), "{f} missing");
+    }
+    let top = std::fs::read_to_string(out.join("top.v")).unwrap();
+    assert!(top.starts_with("module top("));
+    let m = read_json(&out.join("manifest.json"));
+    assert_eq!(m["parameters"]["pipelines"], 2);
+    assert_eq!(m["parameters"]["memory"]["kind"], "on-chip");
+    assert_eq!(m["scene"], "mip.json");
+    let left: Vec<&str> = m["units_left_out"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert!(
+        left.contains(&"abc_gradient") && left.contains(&"sight_ray_divider"),
+        "{left:?}"
+    );
+    assert_eq!(m["sweeps"].as_array().unwrap().len(), 1);
+    let bad = write(
+        d.path(),
+        "bad.json",
+        r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel"}, "hardware": {"pipelines": 16}}"#,
+    );
+    assert_clean_error(
+        &cube(&["verilog", "--scene", &bad, "--out", "out2"], d.path()),
+        "1, 2, 4 or 8 pipelines",
+    );
+    assert!(
+        !d.path().join("out2").exists(),
+        "nothing is written on error"
+    );
+}
+
+/// A VCD with a top scope `top_scope` (nested under `wrapper` if given), a
+/// clock of half-period `half`, and a 4-bit `count` that counts clocks
+/// except that it holds `glitch` at cycle 3 when given.
+fn counter_vcd(
+    wrapper: Option<&str>,
+    top_scope: &str,
+    timescale: &str,
+    half: u64,
+    glitch: Option<u32>,
+) -> String {
+    let mut v = format!("$timescale {timescale} $end\n");
+    if let Some(w) = wrapper {
+        v.push_str(&format!("$scope module {w} $end\n"));
+    }
+    v.push_str(&format!(
+        "$scope module {top_scope} $end\n$var wire 1 ! clock $end\n$var wire 4 \" count [3:0] $end\n$upscope $end\n"
+    ));
+    if wrapper.is_some() {
+        v.push_str("$upscope $end\n");
+    }
+    v.push_str("$enddefinitions $end\n#0\n0!\nb0 \"\n");
+    for cycle in 0..8u32 {
+        let t = half + 2 * half * cycle as u64;
+        let value = match glitch {
+            Some(g) if cycle == 3 => g,
+            _ => cycle + 1,
+        };
+        // A repeated timestamp: the value change is written separately.
+        v.push_str(&format!(
+            "#{t}\n1!\n#{t}\nb{value:b} \"\n#{}\n0!\n",
+            t + half
+        ));
+    }
+    v
+}
+
+#[test]
+fn vcd_diff_aligns_names_and_cycles_and_exits_0_1_2() {
+    let d = tempfile::tempdir().unwrap();
+    let a = write(d.path(), "a.vcd", &counter_vcd(None, "uut", "1ns", 5, None));
+    let b = write(
+        d.path(),
+        "b.vcd",
+        &counter_vcd(Some("TOP"), "top", "1ps", 500, None),
+    );
+    let c = write(
+        d.path(),
+        "c.vcd",
+        &counter_vcd(Some("TOP"), "top", "1ps", 500, Some(9)),
+    );
+    let o = cube(&["vcd-diff", &a, &b], d.path());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{text}");
+    assert!(text.contains("2 signals compared over 8 cycles"), "{text}");
+    let o = cube(&["vcd-diff", &a, &c], d.path());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{text}");
+    assert!(text.contains("cycle 3: count: A 0x4 B 0x9"), "{text}");
+    let o = cube(&["vcd-diff", &a, &c, "--signals", "clock"], d.path());
+    assert_eq!(o.status.code(), Some(0), "only the clock compared");
+    let junk = write(
+        d.path(),
+        "junk.vcd",
+        "$scope module x $end\n$var wire 1 ! y $end\n$upscope $end\n$enddefinitions $end\n#0\n1!\n",
+    );
+    for bad in [&junk, "missing.vcd"] {
+        let o = cube(&["vcd-diff", &a, bad], d.path());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.starts_with("error: vcd-diff:") && !err.contains("panicked"),
+            "{err}"
+        );
+    }
 }

@@ -17,3 +17,5 @@ pub mod pipeline;
 pub mod shader;
 pub mod sim;
 pub mod unorm;
+pub mod vcd_diff;
+pub mod verilator;

@@ -1,10 +1,11 @@
 //! Run a whole scene through the pipeline in simulation and compare its base
-//! planes with the golden model's, pixel by pixel. Two engines: rust-hdl's own
-//! simulator (which can also write a VCD and a GTKWave save file grouping the
-//! signals by stage), and Icarus Verilog running the Verilog that rust-hdl
-//! emits, so that the emitted Verilog itself is checked against the golden
-//! model.
+//! planes with the golden model's, pixel by pixel. Three engines: rust-hdl's
+//! own simulator, and Icarus Verilog and Verilator running the Verilog that
+//! rust-hdl emits, so that the emitted Verilog itself is checked against the
+//! golden model. rust-hdl and Verilator can write a VCD with a GTKWave save
+//! file grouping the signals by stage.
 
+use crate::export::{pipeline_verilog, Memory, H, ON_CHIP_BITS as A};
 use crate::pipeline::{unpack, Pipeline, PipelineConfig};
 use golden_model::cfb::SkewedMemory;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
@@ -16,9 +17,6 @@ use rust_hdl::prelude::*;
 use std::path::Path;
 use std::time::Instant;
 
-/// Module address bits and ring-buffer address bits of the simulated build.
-const A: usize = 16;
-const H: usize = 16;
 /// Clocks above which rust-hdl simulation is refused. With p = 4 the whole
 /// pipeline simulates at about 4-5·10^2 clocks/s (measured with `cube sim` on
 /// `scenes/sim_*.json`), so this bounds a run to two or three minutes.
@@ -45,6 +43,10 @@ pub struct SimOutcome {
     /// The first few mismatching pixels.
     pub first: Vec<Mismatch>,
     pub seconds: f64,
+    /// Time inside the simulator alone (for Verilator, without its build).
+    pub sim_seconds: f64,
+    /// Verilator's build time (0 when every sweep's build was cached).
+    pub build_seconds: f64,
     /// Units this scene's hardware leaves out (see `PipelineConfig::left_out`).
     pub left_out: Vec<&'static str>,
 }
@@ -66,7 +68,23 @@ pub enum Engine {
     RustHdl,
     /// Icarus Verilog on the emitted Verilog.
     Iverilog,
+    /// Verilator on the emitted Verilog, with a generated C++ harness.
+    Verilator,
 }
+
+impl Engine {
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::RustHdl => "rust-hdl",
+            Engine::Iverilog => "iverilog",
+            Engine::Verilator => "verilator",
+        }
+    }
+}
+
+/// Clocks above which Verilator simulation is refused: about 2.7·10^8, some
+/// minutes at its measured speed on the full pipeline.
+pub const MAX_VERILATOR_BEATS: u64 = 1 << 28;
 
 /// Clocks above which Icarus simulation is refused: it runs the emitted
 /// pipeline at about 10^2 clocks/s (p = 4, compilation included, measured on
@@ -96,11 +114,11 @@ pub fn simulate_with(
     let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
     let p = scene.hardware.pipelines;
     let per_module = vol.dims[0].div_ceil(p) * vol.dims[1] * vol.dims[2];
-    if per_module > 1 << A {
+    let memory = Memory::for_volume(vol.dims, p);
+    if memory == Memory::External && engine != Engine::Verilator {
         return Err(format!(
-            "{per_module} voxels per memory module exceed the simulated build's {} (2^{A}); \
-             the simulation engines are for small volumes; full frames belong to the Verilog engines, whose fast one (Verilator) is not built yet",
-            1u64 << A
+            "{per_module} voxels per memory module exceed on-chip memory (2^{A}); \
+             such volumes need the external memory model of --engine verilator"
         ));
     }
     let beats: u64 = plan
@@ -112,40 +130,66 @@ pub fn simulate_with(
         Engine::RustHdl if beats > MAX_SIM_BEATS => {
             return Err(format!(
                 "{beats} clocks are too many for rust-hdl simulation (limit {MAX_SIM_BEATS}); use a smaller volume, \
-                 or the Verilog engines: --engine iverilog (Verilator is not built yet)"
+                 or the Verilog engine for full frames: --engine verilator"
             ))
         }
         Engine::Iverilog if beats > MAX_IVERILOG_BEATS => {
-            return Err(format!("{beats} clocks are too many for Icarus simulation (limit {MAX_IVERILOG_BEATS})"))
+            return Err(format!(
+                "{beats} clocks are too many for Icarus simulation (limit {MAX_IVERILOG_BEATS}); use --engine verilator"
+            ))
         }
-        Engine::Iverilog if vcd.is_some() => return Err("--vcd is written by the rust-hdl engine only".into()),
+        Engine::Verilator if beats > MAX_VERILATOR_BEATS => {
+            return Err(format!("{beats} clocks are too many for Verilator simulation (limit {MAX_VERILATOR_BEATS})"))
+        }
+        Engine::Iverilog if vcd.is_some() => {
+            return Err("--vcd is written by the rust-hdl and verilator engines".into())
+        }
         _ => {}
     }
     let t = Instant::now();
     let mut bases = Vec::new();
     let (mut cycles, mut ideal, mut mismatches, mut first) = (0, 0, 0, Vec::new());
     let mut left_out = Vec::new();
+    let (mut sim_seconds, mut build_seconds) = (0.0, 0.0);
     for (si, sweep) in plan.sweeps.iter().enumerate() {
         let golden = GoldenShader::new(scene, camera, sweep);
         let config = PipelineConfig::new(sweep, vol.dims, p, &golden)?;
         left_out = config.left_out(scene.mode);
         let mem = SkewedMemory::new(vol, p);
         let vcd = if si == 0 { vcd } else { None };
+        let started = Instant::now();
+        let mut built = 0.0;
         let (base, c) = match (engine, p) {
             (Engine::RustHdl, 1) => run::<1>(&config, &golden, &mem, sweep, vcd)?,
             (Engine::RustHdl, 2) => run::<2>(&config, &golden, &mem, sweep, vcd)?,
             (Engine::RustHdl, 4) => run::<4>(&config, &golden, &mem, sweep, vcd)?,
             (Engine::RustHdl, 8) => run::<8>(&config, &golden, &mem, sweep, vcd)?,
-            (Engine::Iverilog, 1) => run_iverilog::<1>(&config, &golden, &mem, sweep)?,
-            (Engine::Iverilog, 2) => run_iverilog::<2>(&config, &golden, &mem, sweep)?,
-            (Engine::Iverilog, 4) => run_iverilog::<4>(&config, &golden, &mem, sweep)?,
-            (Engine::Iverilog, 8) => run_iverilog::<8>(&config, &golden, &mem, sweep)?,
+            (Engine::Iverilog, _) => {
+                let verilog = pipeline_verilog(&config, &golden, memory, Some(&mem))?;
+                run_icarus(&verilog, p, sweep, golden.mode)?
+            }
+            (Engine::Verilator, _) => {
+                let verilog = pipeline_verilog(&config, &golden, memory, Some(&mem))?;
+                let external = (memory == Memory::External).then_some(&mem);
+                let r = crate::verilator::run(&verilog, p, sweep, golden.mode, external, vcd)?;
+                if let Some(path) = vcd {
+                    write_gtkw(path, p, "TOP.top")
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                }
+                built = r.build_seconds;
+                sim_seconds += r.run_seconds;
+                (r.base, r.cycles)
+            }
             _ => {
                 return Err(format!(
                     "the RTL is built for 1, 2, 4 or 8 pipelines, not {p}"
                 ))
             }
         };
+        if engine != Engine::Verilator {
+            sim_seconds += started.elapsed().as_secs_f64();
+        }
+        build_seconds += built;
         let (want, _) = render_sweep(vol, sweep, &golden);
         for i in 0..want.pixels.len() {
             let (r, g) = (
@@ -180,6 +224,8 @@ pub fn simulate_with(
         mismatches,
         first,
         seconds: t.elapsed().as_secs_f64(),
+        sim_seconds,
+        build_seconds,
         left_out,
     })
 }
@@ -238,7 +284,7 @@ fn run<const P: usize>(
             let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
             sim.run_traced(Box::new(uut), limit, f)
                 .map_err(|e| format!("simulation: {e:?}"))?;
-            write_gtkw(path, P).map_err(|e| format!("{}: {e}", path.display()))?;
+            write_gtkw(path, P, "uut").map_err(|e| format!("{}: {e}", path.display()))?;
         }
         None => sim
             .run(Box::new(uut), limit)
@@ -248,33 +294,8 @@ fn run<const P: usize>(
     Ok((o.0.clone(), o.1))
 }
 
-/// Run one sweep of the emitted Verilog under Icarus: the pipeline with its
-/// memory preloaded, and a generated testbench that starts it and logs every
-/// pixel on the pixel bus until the last beat.
-fn run_iverilog<const P: usize>(
-    config: &PipelineConfig,
-    golden: &GoldenShader,
-    mem: &SkewedMemory,
-    sweep: &golden_model::plan::Sweep,
-) -> Result<(BasePlane, u64), String> {
-    let verilog = emit_verilog::<P>(config, golden, mem)?;
-    run_icarus(&verilog, P, sweep, golden.mode)
-}
-
-/// The Verilog of one sweep's pipeline, with the voxel memory preloaded
-/// (block-RAM initialisation), as the simulation engines run it.
-pub fn emit_verilog<const P: usize>(
-    config: &PipelineConfig,
-    golden: &GoldenShader,
-    mem: &SkewedMemory,
-) -> Result<String, String> {
-    let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
-    uut.cfb.preload(&mem.modules);
-    uut.connect_all();
-    Ok(generate_verilog(&uut))
-}
-
-/// Simulate emitted pipeline Verilog (from [`emit_verilog`], possibly altered)
+/// Simulate emitted pipeline Verilog (from [`pipeline_verilog`] with on-chip
+/// memory preloaded, possibly altered)
 /// under Icarus for one sweep; returns the base plane of the pixels it put
 /// out and its clock count.
 pub fn run_icarus(
@@ -310,32 +331,43 @@ pub fn run_icarus(
         )?;
         tool(std::process::Command::new("vvp").args(["-n", "sim.vvp"]))?;
         let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
-        let mut base = BasePlane::new(sweep);
-        let mut cycles = None;
-        for line in log.lines() {
-            let f: Vec<&str> = line.split_whitespace().collect();
-            match f.as_slice() {
-                ["cycles", c] => cycles = c.parse::<u64>().ok(),
-                ["timeout"] => return Err("the Verilog pipeline did not finish the sweep".into()),
-                [x, y, face, res] => {
-                    let n = |s: &str| {
-                        s.parse::<u64>()
-                            .map_err(|e| format!("pixel log '{line}': {e}"))
-                    };
-                    base.put(
-                        [n(x)? as usize, n(y)? as usize],
-                        unpack(mode, n(res)?),
-                        face_of(n(face)? as u32),
-                    );
-                }
-                _ => return Err(format!("unexpected line in the pixel log: '{line}'")),
-            }
-        }
+        let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
         // Counted like the rust-hdl engine: from the clock that registers start.
-        Ok((base, cycles.ok_or("the pixel log has no clock count")? + 1))
+        Ok((base, cycles + 1))
     })();
     let _ = std::fs::remove_dir_all(&dir);
     result
+}
+
+/// Parse a Verilog engine's pixel log: `x y face res` per pixel on the bus,
+/// then `cycles N` (or `timeout`).
+pub fn parse_pixel_log(
+    log: &str,
+    sweep: &golden_model::plan::Sweep,
+    mode: golden_model::scene::Mode,
+) -> Result<(BasePlane, u64), String> {
+    let mut base = BasePlane::new(sweep);
+    let mut cycles = None;
+    for line in log.lines() {
+        let f: Vec<&str> = line.split_whitespace().collect();
+        match f.as_slice() {
+            ["cycles", c] => cycles = c.parse::<u64>().ok(),
+            ["timeout"] => return Err("the Verilog pipeline did not finish the sweep".into()),
+            [x, y, face, res] => {
+                let n = |s: &str| {
+                    s.parse::<u64>()
+                        .map_err(|e| format!("pixel log '{line}': {e}"))
+                };
+                base.put(
+                    [n(x)? as usize, n(y)? as usize],
+                    unpack(mode, n(res)?),
+                    face_of(n(face)? as u32),
+                );
+            }
+            _ => return Err(format!("unexpected line in the pixel log: '{line}'")),
+        }
+    }
+    Ok((base, cycles.ok_or("the pixel log has no clock count")?))
 }
 
 /// A Verilog testbench for the emitted `top`: clock, one start pulse, and a
@@ -353,6 +385,7 @@ fn testbench_verilog(p: usize, beats: u64) -> String {
         v.push_str(&format!(
             "  wire px_valid${k};\n  wire [15:0] px_x${k};\n  wire [15:0] px_y${k};\n  wire [2:0] px_face${k};\n  wire res_beat${k};\n  wire res_valid${k};\n  wire [63:0] res${k};\n"
         ));
+        ports.push_str(&format!(", .ext_data${k}(16'd0)"));
         for n in [
             "px_valid",
             "px_x",
@@ -380,8 +413,9 @@ fn testbench_verilog(p: usize, beats: u64) -> String {
 
 /// A GTKWave save file beside `vcd` that opens with the signals grouped by
 /// stage: CFB counters, then per pipeline its CFB lane, compositing-buffer
-/// taps, and pixel output.
-pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
+/// taps, and pixel output. `top` is the design's scope in the VCD (`uut` for
+/// rust-hdl, `TOP.top` for Verilator).
+pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
     let mut s = format!(
         "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
         vcd.display()
@@ -400,12 +434,12 @@ pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
             .map(|n| format!("{prefix}.{n}"))
             .collect::<Vec<_>>()
     };
-    s.push_str("@28\nuut.clock\nuut.start\n");
+    s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
     group(
         &mut s,
         "CFB",
         under(
-            "uut.cfb",
+            &format!("{top}.cfb"),
             &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
         ),
     );
@@ -431,9 +465,9 @@ pub fn write_gtkw(vcd: &Path, p: usize) -> std::io::Result<()> {
         group(
             &mut s,
             &format!("CFB lane {k}"),
-            under(&format!("uut.cfb.lanes${k}"), &cfb_lane),
+            under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
         );
-        let lane = format!("uut.lanes${k}");
+        let lane = format!("{top}.lanes${k}");
         let abc = [
             "o_valid",
             "o_value[15:0]",

@@ -49,8 +49,9 @@ fn a_fault_in_the_emitted_verilog_is_caught() {
     use golden_model::cube4l::render_sweep;
     use golden_model::plan::Plan;
     use golden_model::shader::Shader;
+    use hdl::export::{pipeline_verilog, Memory};
     use hdl::pipeline::PipelineConfig;
-    use hdl::sim::{emit_verilog, run_icarus};
+    use hdl::sim::run_icarus;
     require_tool("iverilog");
     let s = scene(
         r#"{"volume": {"builtin": "phantom", "dims": [10, 10, 8]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]},
@@ -61,7 +62,8 @@ fn a_fault_in_the_emitted_verilog_is_caught() {
     let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
     let golden = Shader::new(&s, &cam, sweep);
     let config = PipelineConfig::new(sweep, vol.dims, 2, &golden).unwrap();
-    let verilog = emit_verilog::<2>(&config, &golden, &SkewedMemory::new(&vol, 2)).unwrap();
+    let mem = SkewedMemory::new(&vol, 2);
+    let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
     let (want, _) = render_sweep(&vol, sweep, &golden);
     let differing = |v: &str| {
         let (base, _) = run_icarus(v, 2, sweep, golden.mode).unwrap();

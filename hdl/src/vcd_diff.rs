@@ -1,0 +1,275 @@
+//! Compare two VCD traces of the same design from different simulators
+//! (rust-hdl, Verilator, Icarus) signal by signal and cycle by cycle.
+//!
+//! - Signals are lined up by hierarchical name below the design's top: each
+//!   trace's leading scopes (`uut.` for rust-hdl, `TOP.top.` for Verilator,
+//!   `tb.uut.` for Icarus) are dropped by choosing, per trace, the number of
+//!   leading scopes that lines up the most names. Bit ranges are ignored.
+//! - Time is counted in cycles of the top's `clock`: each signal is sampled
+//!   once per rising edge, after every change at that edge's timestamp, so
+//!   timescales, clock periods and repeated timestamps do not matter.
+//! - Values are compared as bit strings without leading zeros.
+
+use std::collections::{BTreeMap, HashMap};
+use std::path::Path;
+
+/// A trace reduced to per-cycle samples of its signals.
+#[derive(Debug, Clone)]
+pub struct Trace {
+    /// Full hierarchical name of each signal, with its VCD id code.
+    names: Vec<(Vec<String>, String)>,
+    /// Per id code: (cycle, value) at each cycle where the sampled value
+    /// changed, starting with cycle 0.
+    samples: HashMap<String, Vec<(u64, String)>>,
+    /// Rising clock edges seen.
+    pub cycles: u64,
+}
+
+/// A bad VCD file: unreadable, unparsable, or without a top clock.
+#[derive(Debug, Clone)]
+pub struct BadTrace(pub String);
+
+impl std::fmt::Display for BadTrace {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+fn canonical(bits: &str) -> String {
+    let t = bits.trim_start_matches('0');
+    if t.is_empty() {
+        "0".into()
+    } else {
+        t.to_string()
+    }
+}
+
+impl Trace {
+    pub fn load(path: &Path) -> Result<Trace, BadTrace> {
+        let bad = |e: &dyn std::fmt::Display| BadTrace(format!("{}: {e}", path.display()));
+        let f = std::fs::File::open(path).map_err(|e| bad(&e))?;
+        let mut parser = vcd::Parser::new(std::io::BufReader::new(f));
+        let header = parser.parse_header().map_err(|e| bad(&e))?;
+        let mut names = Vec::new();
+        fn walk(
+            items: &[vcd::ScopeItem],
+            path: &mut Vec<String>,
+            out: &mut Vec<(Vec<String>, String)>,
+        ) {
+            for item in items {
+                match item {
+                    vcd::ScopeItem::Scope(s) => {
+                        path.push(s.identifier.clone());
+                        walk(&s.items, path, out);
+                        path.pop();
+                    }
+                    vcd::ScopeItem::Var(v) => {
+                        let mut full = path.clone();
+                        full.push(v.reference.clone());
+                        out.push((full, v.code.to_string()));
+                    }
+                    _ => {}
+                }
+            }
+        }
+        walk(&header.items, &mut Vec::new(), &mut names);
+        // The top's clock: the shallowest variable named `clock`.
+        let clock = names
+            .iter()
+            .filter(|(n, _)| n.last().is_some_and(|l| l == "clock"))
+            .min_by_key(|(n, _)| n.len())
+            .map(|(_, c)| c.clone())
+            .ok_or_else(|| bad(&"no `clock` signal"))?;
+        let mut current: HashMap<String, String> = HashMap::new();
+        let mut samples: HashMap<String, Vec<(u64, String)>> = HashMap::new();
+        let mut cycles = 0u64;
+        let mut clock_was = String::from("0");
+        let mut rose = false;
+        let mut sample = |current: &HashMap<String, String>, cycle: u64| {
+            for (code, v) in current {
+                let s = samples.entry(code.clone()).or_default();
+                if s.last().is_none_or(|(_, last)| last != v) {
+                    s.push((cycle, v.clone()));
+                }
+            }
+        };
+        let mut now = 0u64;
+        for cmd in parser {
+            let cmd = cmd.map_err(|e| bad(&e))?;
+            match cmd {
+                // A repeated timestamp continues the same instant.
+                vcd::Command::Timestamp(t) if t == now => {}
+                vcd::Command::Timestamp(t) => {
+                    now = t;
+                    if rose {
+                        sample(&current, cycles);
+                        cycles += 1;
+                        rose = false;
+                    }
+                }
+                vcd::Command::ChangeScalar(id, v) => {
+                    let id = id.to_string();
+                    let v = canonical(&v.to_string());
+                    if id == clock {
+                        rose |= clock_was == "0" && v == "1";
+                        clock_was = v.clone();
+                    }
+                    current.insert(id, v);
+                }
+                vcd::Command::ChangeVector(id, v) => {
+                    let id = id.to_string();
+                    let v = canonical(&v.to_string());
+                    if id == clock {
+                        rose |= clock_was == "0" && v == "1";
+                        clock_was = v.clone();
+                    }
+                    current.insert(id, v);
+                }
+                _ => {}
+            }
+        }
+        if rose {
+            sample(&current, cycles);
+            cycles += 1;
+        }
+        if cycles == 0 {
+            return Err(bad(&"the clock never rises"));
+        }
+        Ok(Trace {
+            names,
+            samples,
+            cycles,
+        })
+    }
+
+    /// Names with `skip` leading scopes dropped, to id codes.
+    fn named(&self, skip: usize) -> BTreeMap<String, String> {
+        self.names
+            .iter()
+            .filter(|(n, _)| n.len() > skip)
+            .map(|(n, c)| (n[skip..].join("."), c.clone()))
+            .collect()
+    }
+
+    /// The sampled value of `code` at `cycle`.
+    fn at(&self, code: &str, cycle: u64) -> &str {
+        let Some(s) = self.samples.get(code) else {
+            return "x";
+        };
+        match s.partition_point(|(c, _)| *c <= cycle) {
+            0 => "x",
+            i => &s[i - 1].1,
+        }
+    }
+}
+
+/// One signal's first differing cycle.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SignalMismatch {
+    pub cycle: u64,
+    pub signal: String,
+    pub a: String,
+    pub b: String,
+}
+
+/// The outcome of a comparison.
+#[derive(Debug, Clone)]
+pub struct Comparison {
+    pub compared: usize,
+    pub only_a: usize,
+    pub only_b: usize,
+    pub cycles_a: u64,
+    pub cycles_b: u64,
+    /// Each differing signal's first mismatch, earliest first.
+    pub mismatches: Vec<SignalMismatch>,
+}
+
+impl Comparison {
+    pub fn equal(&self) -> bool {
+        self.mismatches.is_empty() && self.cycles_a == self.cycles_b
+    }
+}
+
+/// Show a bit string as hex when it is all 0/1.
+pub fn show(bits: &str) -> String {
+    if bits.chars().all(|c| c == '0' || c == '1') && bits.len() <= 128 {
+        format!("{:#x}", u128::from_str_radix(bits, 2).unwrap_or(0))
+    } else {
+        bits.to_string()
+    }
+}
+
+/// Compare two traces over the signals whose aligned name matches `pattern`
+/// (a glob; every signal when `None`).
+pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison, BadTrace> {
+    let pat = pattern
+        .map(glob::Pattern::new)
+        .transpose()
+        .map_err(|e| BadTrace(format!("--signals: {e}")))?;
+    let mut best = (0, 0, 0);
+    for sa in 0..3 {
+        let na = a.named(sa);
+        for sb in 0..3 {
+            let nb = b.named(sb);
+            let common = na.keys().filter(|k| nb.contains_key(*k)).count();
+            if common > best.0 {
+                best = (common, sa, sb);
+            }
+        }
+    }
+    let (na, nb) = (a.named(best.1), b.named(best.2));
+    let keep = |k: &str| pat.as_ref().is_none_or(|p| p.matches(k));
+    let common: Vec<&String> = na
+        .keys()
+        .filter(|k| nb.contains_key(*k) && keep(k))
+        .collect();
+    if common.is_empty() {
+        return Err(BadTrace(
+            "the traces have no signal in common (check --signals)".into(),
+        ));
+    }
+    let cycles = a.cycles.min(b.cycles);
+    let mut mismatches = Vec::new();
+    for name in &common {
+        let (ca, cb) = (&na[*name], &nb[*name]);
+        // Cycles where either side changes: the only places a difference can start.
+        let mut points: Vec<u64> = a
+            .samples
+            .get(ca)
+            .into_iter()
+            .flatten()
+            .map(|(c, _)| *c)
+            .collect();
+        points.extend(b.samples.get(cb).into_iter().flatten().map(|(c, _)| *c));
+        points.push(0);
+        points.sort_unstable();
+        points.dedup();
+        if let Some(&c) = points
+            .iter()
+            .filter(|&&c| c < cycles)
+            .find(|&&c| a.at(ca, c) != b.at(cb, c))
+        {
+            mismatches.push(SignalMismatch {
+                cycle: c,
+                signal: name.to_string(),
+                a: a.at(ca, c).to_string(),
+                b: b.at(cb, c).to_string(),
+            });
+        }
+    }
+    mismatches.sort_by(|x, y| (x.cycle, &x.signal).cmp(&(y.cycle, &y.signal)));
+    Ok(Comparison {
+        compared: common.len(),
+        only_a: na
+            .keys()
+            .filter(|k| !nb.contains_key(*k) && keep(k))
+            .count(),
+        only_b: nb
+            .keys()
+            .filter(|k| !na.contains_key(*k) && keep(k))
+            .count(),
+        cycles_a: a.cycles,
+        cycles_b: b.cycles,
+        mismatches,
+    })
+}
