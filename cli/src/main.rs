@@ -45,6 +45,13 @@ enum Engine {
     Verilator,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum SynthTarget {
+    Ice40,
+    Xilinx,
+    Generic,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene.
@@ -111,6 +118,21 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Synthesize the scene's pipeline with yosys and report cells, LUTs,
+    /// flip-flops, block RAMs and DSPs; on iCE40, a design that fits an UP5K
+    /// is placed and routed with nextpnr-ice40 for fmax, and the frame rate
+    /// is projected for 256³ and 512³ volumes.
+    Synth {
+        #[arg(long)]
+        scene: PathBuf,
+        #[arg(long, value_enum, default_value = "ice40")]
+        target: SynthTarget,
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Skip placement and routing.
+        #[arg(long)]
+        no_pnr: bool,
+    },
     /// Compare two VCD traces of the same design (e.g. rust-hdl against
     /// Verilator) signal by signal and cycle by cycle. Exit 0 when equal, 1
     /// when they differ, 2 on a bad file.
@@ -144,6 +166,12 @@ fn main() {
         None => default_run(),
         Some(Command::Verilog { scene, out }) => verilog_cmd(&scene, &out),
         Some(Command::VcdDiff { .. }) => unreachable!("handled above"),
+        Some(Command::Synth {
+            scene,
+            target,
+            json,
+            no_pnr,
+        }) => synth_cmd(&scene, target, json, !no_pnr),
         Some(Command::Scenes) => {
             for (name, what) in BUILTINS {
                 println!("{name:<13} {what}");
@@ -326,6 +354,108 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
         );
     }
     Ok((img, frame.bases.len()))
+}
+
+fn synth_cmd(
+    scene_path: &Path,
+    target: SynthTarget,
+    json_path: Option<PathBuf>,
+    pnr: bool,
+) -> Result<()> {
+    use hdl::synth::{frame_clocks, synthesize, Target};
+    let target = match target {
+        SynthTarget::Ice40 => Target::Ice40,
+        SynthTarget::Xilinx => Target::Xilinx,
+        SynthTarget::Generic => Target::Generic,
+    };
+    let scene = Scene::load(scene_path)?;
+    let cam = scene.camera()?;
+    let dir = std::env::temp_dir().join(format!("cube-synth-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let name = scene_path
+        .file_name()
+        .map(|n| n.to_string_lossy().to_string())
+        .unwrap_or_default();
+    let result = (|| {
+        let m = hdl::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &dir)
+            .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+        let sweep = &m["sweeps"][0];
+        let files: Vec<String> = sweep["files"]
+            .as_array()
+            .context("manifest files")?
+            .iter()
+            .filter_map(|f| f.as_str().map(String::from))
+            .collect();
+        let sub = dir.join(sweep["dir"].as_str().unwrap_or("."));
+        let r = synthesize(&sub, &files, target, pnr).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+        Ok::<_, anyhow::Error>((m, r))
+    })();
+    let _ = std::fs::remove_dir_all(&dir);
+    let (m, r) = result?;
+    let p = scene.hardware.pipelines as u64;
+    let gradient = !m["units_left_out"]
+        .as_array()
+        .is_some_and(|a| a.iter().any(|u| u == "abc_gradient"));
+    println!(
+        "{}: {} cells, {} LUTs, {} flip-flops, {} block RAMs, {} DSPs ({:.1} s)",
+        target.name(),
+        r.cells,
+        r.luts,
+        r.flip_flops,
+        r.block_rams,
+        r.dsps,
+        r.synth_seconds
+    );
+    let sweeps = m["sweeps"].as_array().map_or(1, |s| s.len());
+    if sweeps > 1 {
+        println!("(sweep 0 of {sweeps}; every sweep's pipeline has the same structure, with its own constants)");
+    }
+    let mut projection = serde_json::Map::new();
+    match (r.fits_up5k, r.fmax_mhz) {
+        (Some(false), _) => println!(
+            "does not fit an iCE40 UP5K ({} LUTs, {} BRAMs, {} DSPs available): no place and route",
+            hdl::synth::UP5K.0,
+            hdl::synth::UP5K.1,
+            hdl::synth::UP5K.2
+        ),
+        (_, Some(f)) => {
+            println!("nextpnr-ice40 (UP5K): fmax {f:.2} MHz");
+            for n in [256u64, 512] {
+                let clocks = frame_clocks(n, p, gradient);
+                let fps = f * 1e6 / clocks as f64;
+                println!("  {n}³ at p = {p}: {clocks} clocks per frame, {fps:.2} frames/s");
+                projection.insert(
+                    format!("{n}"),
+                    json!({"clocks_per_frame": clocks, "frames_per_second": fps}),
+                );
+            }
+        }
+        _ => {}
+    }
+    if let Some(j) = json_path {
+        write_json(
+            &j,
+            &json!({
+                "scene": name,
+                "target": target.name(),
+                "pipelines": p,
+                "cells": r.cells,
+                "luts": r.luts,
+                "flip_flops": r.flip_flops,
+                "block_rams": r.block_rams,
+                "dsps": r.dsps,
+                "cell_types": r.cell_types,
+                "synth_seconds": r.synth_seconds,
+                "fits_up5k": r.fits_up5k,
+                "fmax_mhz": r.fmax_mhz,
+                "pnr_seconds": r.pnr_seconds,
+                "projected": projection,
+                "units_left_out": m["units_left_out"],
+                "parameters": m["parameters"],
+            }),
+        )?;
+    }
+    Ok(())
 }
 
 /// `cube vcd-diff`: 0 equal, 1 different, 2 bad input.

@@ -355,20 +355,17 @@ module top$lanes$0$abc$centre(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[122:0] mem[65535:0];
-    
-    
+    reg [122:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$centre
 module top$lanes$0$abc$hop_xm(d,q,clock);
     
@@ -518,20 +515,17 @@ module top$lanes$0$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$ring_xm
 module top$lanes$0$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -545,20 +539,17 @@ module top$lanes$0$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$ring_xp
 module top$lanes$0$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -572,20 +563,17 @@ module top$lanes$0$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$ring_ym
 module top$lanes$0$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -599,20 +587,17 @@ module top$lanes$0$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$ring_yp
 module top$lanes$0$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -626,20 +611,17 @@ module top$lanes$0$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$abc$ring_zm
 module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
@@ -998,20 +980,17 @@ module top$lanes$1$abc$centre(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[122:0] mem[65535:0];
-    
-    
+    reg [122:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$centre
 module top$lanes$1$abc$hop_xm(d,q,clock);
     
@@ -1161,20 +1140,17 @@ module top$lanes$1$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$ring_xm
 module top$lanes$1$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1188,20 +1164,17 @@ module top$lanes$1$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$ring_xp
 module top$lanes$1$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1215,20 +1188,17 @@ module top$lanes$1$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$ring_ym
 module top$lanes$1$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1242,20 +1212,17 @@ module top$lanes$1$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$ring_yp
 module top$lanes$1$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1269,20 +1236,17 @@ module top$lanes$1$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$abc$ring_zm
 module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
@@ -1641,20 +1605,17 @@ module top$lanes$2$abc$centre(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[122:0] mem[65535:0];
-    
-    
+    reg [122:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$centre
 module top$lanes$2$abc$hop_xm(d,q,clock);
     
@@ -1804,20 +1765,17 @@ module top$lanes$2$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$ring_xm
 module top$lanes$2$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1831,20 +1789,17 @@ module top$lanes$2$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$ring_xp
 module top$lanes$2$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1858,20 +1813,17 @@ module top$lanes$2$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$ring_ym
 module top$lanes$2$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1885,20 +1837,17 @@ module top$lanes$2$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$ring_yp
 module top$lanes$2$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -1912,20 +1861,17 @@ module top$lanes$2$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$2$abc$ring_zm
 module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
@@ -2284,20 +2230,17 @@ module top$lanes$3$abc$centre(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[122:0] mem[65535:0];
-    
-    
+    reg [122:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$centre
 module top$lanes$3$abc$hop_xm(d,q,clock);
     
@@ -2447,20 +2390,17 @@ module top$lanes$3$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$ring_xm
 module top$lanes$3$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2474,20 +2414,17 @@ module top$lanes$3$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$ring_xp
 module top$lanes$3$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2501,20 +2438,17 @@ module top$lanes$3$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$ring_ym
 module top$lanes$3$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2528,20 +2462,17 @@ module top$lanes$3$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$ring_yp
 module top$lanes$3$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2555,18 +2486,15 @@ module top$lanes$3$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$3$abc$ring_zm

@@ -6,7 +6,7 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     output reg  busy;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  valid;
     output reg  [15:0] n_s;
@@ -99,7 +99,7 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     reg  [15:0] lanes$0$n_b;
     reg  lanes$0$load_enable;
     reg  [7:0] lanes$0$load_module;
-    reg  lanes$0$load_address;
+    reg  [15:0] lanes$0$load_address;
     reg  [15:0] lanes$0$load_data;
     wire  [31:0] lanes$0$ext_addr;
     reg  [15:0] lanes$0$ext_data;
@@ -127,7 +127,7 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     reg  [15:0] lanes$1$n_b;
     reg  lanes$1$load_enable;
     reg  [7:0] lanes$1$load_module;
-    reg  lanes$1$load_address;
+    reg  [15:0] lanes$1$load_address;
     reg  [15:0] lanes$1$load_data;
     wire  [31:0] lanes$1$ext_addr;
     reg  [15:0] lanes$1$ext_data;
@@ -155,7 +155,7 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     reg  [15:0] lanes$2$n_b;
     reg  lanes$2$load_enable;
     reg  [7:0] lanes$2$load_module;
-    reg  lanes$2$load_address;
+    reg  [15:0] lanes$2$load_address;
     reg  [15:0] lanes$2$load_data;
     wire  [31:0] lanes$2$ext_addr;
     reg  [15:0] lanes$2$ext_data;
@@ -183,7 +183,7 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     reg  [15:0] lanes$3$n_b;
     reg  lanes$3$load_enable;
     reg  [7:0] lanes$3$load_module;
-    reg  lanes$3$load_address;
+    reg  [15:0] lanes$3$load_address;
     reg  [15:0] lanes$3$load_data;
     wire  [31:0] lanes$3$ext_addr;
     reg  [15:0] lanes$3$ext_data;
@@ -562,7 +562,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  [31:0] ext_addr;
     input wire  [15:0] ext_data;
@@ -615,10 +615,10 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     localparam  par_dy_mag = 'h9d;
     
     // Stub signals
-    reg  memory$read_address;
+    reg  [15:0] memory$read_address;
     reg  memory$read_clock;
     wire  [15:0] memory$read_data;
-    reg  memory$write_address;
+    reg  [15:0] memory$write_address;
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
@@ -875,7 +875,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         if (is_pad) begin
             addr = 'h0;
         end
-        memory$read_address = 1'(addr);
+        memory$read_address = 16'(addr);
         ext_addr = addr;
         sx = (64'(xc) << frac) + neg_ex;
         sy = (64'(n_beam) << frac) + neg_ey;
@@ -1199,29 +1199,26 @@ endmodule // top$cfb$lanes$0$inval_q
 module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[1:0];
-    
-    
+    reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[0:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[0:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$0$memory
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
@@ -1317,7 +1314,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  [31:0] ext_addr;
     input wire  [15:0] ext_data;
@@ -1370,10 +1367,10 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     localparam  par_dy_mag = 'h9d;
     
     // Stub signals
-    reg  memory$read_address;
+    reg  [15:0] memory$read_address;
     reg  memory$read_clock;
     wire  [15:0] memory$read_data;
-    reg  memory$write_address;
+    reg  [15:0] memory$write_address;
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
@@ -1630,7 +1627,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         if (is_pad) begin
             addr = 'h0;
         end
-        memory$read_address = 1'(addr);
+        memory$read_address = 16'(addr);
         ext_addr = addr;
         sx = (64'(xc) << frac) + neg_ex;
         sy = (64'(n_beam) << frac) + neg_ey;
@@ -1954,29 +1951,26 @@ endmodule // top$cfb$lanes$1$inval_q
 module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[1:0];
-    
-    
+    reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[0:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[0:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$1$memory
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
@@ -2072,7 +2066,7 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  [31:0] ext_addr;
     input wire  [15:0] ext_data;
@@ -2125,10 +2119,10 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     localparam  par_dy_mag = 'h9d;
     
     // Stub signals
-    reg  memory$read_address;
+    reg  [15:0] memory$read_address;
     reg  memory$read_clock;
     wire  [15:0] memory$read_data;
-    reg  memory$write_address;
+    reg  [15:0] memory$write_address;
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
@@ -2385,7 +2379,7 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         if (is_pad) begin
             addr = 'h0;
         end
-        memory$read_address = 1'(addr);
+        memory$read_address = 16'(addr);
         ext_addr = addr;
         sx = (64'(xc) << frac) + neg_ex;
         sy = (64'(n_beam) << frac) + neg_ey;
@@ -2709,29 +2703,26 @@ endmodule // top$cfb$lanes$2$inval_q
 module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[1:0];
-    
-    
+    reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[0:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[0:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$2$memory
 module top$cfb$lanes$2$pad_q(d,q,clock);
     
@@ -2827,7 +2818,7 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  [31:0] ext_addr;
     input wire  [15:0] ext_data;
@@ -2880,10 +2871,10 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     localparam  par_dy_mag = 'h9d;
     
     // Stub signals
-    reg  memory$read_address;
+    reg  [15:0] memory$read_address;
     reg  memory$read_clock;
     wire  [15:0] memory$read_data;
-    reg  memory$write_address;
+    reg  [15:0] memory$write_address;
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
@@ -3140,7 +3131,7 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         if (is_pad) begin
             addr = 'h0;
         end
-        memory$read_address = 1'(addr);
+        memory$read_address = 16'(addr);
         ext_addr = addr;
         sx = (64'(xc) << frac) + neg_ex;
         sy = (64'(n_beam) << frac) + neg_ey;
@@ -3464,29 +3455,26 @@ endmodule // top$cfb$lanes$3$inval_q
 module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[1:0];
-    
-    
+    reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[0:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[0:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$3$memory
 module top$cfb$lanes$3$pad_q(d,q,clock);
     

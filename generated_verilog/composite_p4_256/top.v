@@ -5,7 +5,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     input wire  start;
     input wire  load_enable;
     input wire  [7:0] load_module;
-    input wire  load_address;
+    input wire  [15:0] load_address;
     input wire  [15:0] load_data;
     output reg  busy;
     output reg  [15:0] n_s;
@@ -55,7 +55,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  cfb$busy;
     reg  cfb$load_enable;
     reg  [7:0] cfb$load_module;
-    reg  cfb$load_address;
+    reg  [15:0] cfb$load_address;
     reg  [15:0] cfb$load_data;
     wire  cfb$valid;
     wire  [15:0] cfb$n_s;

@@ -1208,20 +1208,17 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$0$memory
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
@@ -1963,20 +1960,17 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$1$memory
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
@@ -2718,20 +2712,17 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$2$memory
 module top$cfb$lanes$2$pad_q(d,q,clock);
     
@@ -3473,20 +3464,17 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg[15:0] mem[65535:0];
-    
-    
+    reg [15:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[15:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[15:0]] <= write_data;
        end
     end
-                
 endmodule // top$cfb$lanes$3$memory
 module top$cfb$lanes$3$pad_q(d,q,clock);
     

@@ -23,6 +23,7 @@
 //! outside the dataset (`at_edge`) get garbage gradients and are made
 //! transparent by the shader, as in the golden model.
 
+use crate::ram::DepthRam;
 use rust_hdl::prelude::*;
 
 /// One pipeline's gradient unit; `H` ring-buffer address bits (>= 2S + B + 4).
@@ -86,12 +87,12 @@ pub struct AbcGradient<const H: usize> {
     pub gy_mag: Signal<Out, Bits<16>>,
     pub gz_neg: Signal<Out, Bit>,
     pub gz_mag: Signal<Out, Bits<16>>,
-    centre: RAM<Bits<123>, H>,
-    ring_xm: RAM<Bits<16>, H>,
-    ring_ym: RAM<Bits<16>, H>,
-    ring_zm: RAM<Bits<16>, H>,
-    ring_xp: RAM<Bits<16>, H>,
-    ring_yp: RAM<Bits<16>, H>,
+    centre: DepthRam<Bits<123>, H>,
+    ring_xm: DepthRam<Bits<16>, H>,
+    ring_ym: DepthRam<Bits<16>, H>,
+    ring_zm: DepthRam<Bits<16>, H>,
+    ring_xp: DepthRam<Bits<16>, H>,
+    ring_yp: DepthRam<Bits<16>, H>,
     hop_xm: DFF<Bits<16>>,
     hop_ym: DFF<Bits<16>>,
     hop_zm: DFF<Bits<16>>,
@@ -113,8 +114,20 @@ pub struct AbcGradient<const H: usize> {
 }
 
 impl<const H: usize> AbcGradient<H> {
-    /// `s` beats per slice, `b` per beam, `p` pipelines.
-    pub fn new(s: u32, b: u32, p: u32) -> AbcGradient<H> {
+    /// Address bits of the B/C-slice rings: they hold the longest delay,
+    /// two slices and a beam, with a margin of 8.
+    pub fn ring_bits(s: u32, b: u32) -> usize {
+        crate::cfb::bits_for((2 * s + b + 9) as u64) as usize
+    }
+
+    /// `s` beats per slice, `b` per beam, `p` pipelines. Without `enabled`
+    /// (a scene without gradients) the rings are 2-word stubs.
+    pub fn new(s: u32, b: u32, p: u32, enabled: bool) -> AbcGradient<H> {
+        let bits = if enabled {
+            Self::ring_bits(s, b).min(H)
+        } else {
+            1
+        };
         let mask = (1i64 << H) - 1;
         // Read address = now + hops + 1 - delay, delays relative to the output
         // stage, which is S + 1 clocks after the CFB.
@@ -174,12 +187,12 @@ impl<const H: usize> AbcGradient<H> {
             gy_mag: Default::default(),
             gz_neg: Default::default(),
             gz_mag: Default::default(),
-            centre: Default::default(),
-            ring_xm: Default::default(),
-            ring_ym: Default::default(),
-            ring_zm: Default::default(),
-            ring_xp: Default::default(),
-            ring_yp: Default::default(),
+            centre: DepthRam::new(bits),
+            ring_xm: DepthRam::new(bits),
+            ring_ym: DepthRam::new(bits),
+            ring_zm: DepthRam::new(bits),
+            ring_xp: DepthRam::new(bits),
+            ring_yp: DepthRam::new(bits),
             hop_xm: Default::default(),
             hop_ym: Default::default(),
             hop_zm: Default::default(),

@@ -24,6 +24,7 @@
 //! saturated direction, `sign(S_x) * sign(S_z)`.
 
 use crate::divider::Divider;
+use crate::ram::DepthRam;
 use golden_model::plan::{Face, Rays, Sweep};
 use rust_hdl::prelude::*;
 
@@ -53,6 +54,9 @@ pub struct CfbConfig {
     pub frac: u32,
     /// Voxels come from an external RAM through `ext_addr`/`ext_data`.
     pub external_memory: bool,
+    /// Address bits of an on-chip memory module: it holds
+    /// `ceil(n_u / P) * n_v * n_w` voxels.
+    pub memory_bits: u32,
 }
 
 impl CfbConfig {
@@ -87,6 +91,7 @@ impl CfbConfig {
             eye,
             frac: sweep.frac,
             external_memory: false,
+            memory_bits: bits_for((vol_dims[0].div_ceil(p) * vol_dims[1] * vol_dims[2]) as u64),
         })
     }
 
@@ -97,6 +102,11 @@ impl CfbConfig {
         self.stream_z1 = (self.z1 + 1).min(self.dims[2] - 1);
         self
     }
+}
+
+/// Address bits that count `n` words (at least 1).
+pub fn bits_for(n: u64) -> u32 {
+    (64 - n.saturating_sub(1).leading_zeros()).max(1)
 }
 
 fn bits16(v: u32) -> Bits<16> {
@@ -143,7 +153,7 @@ pub struct CfbLane<const A: usize> {
     pub dy_neg: Signal<Out, Bit>,
     pub dy_mag: Signal<Out, Bits<16>>,
     pub invalid: Signal<Out, Bit>,
-    memory: RAM<Bits<16>, A>,
+    memory: DepthRam<Bits<16>, A>,
     lane: Constant<Bits<16>>,
     p_mask: Constant<Bits<16>>,
     p_shift: Constant<Bits<8>>,
@@ -249,7 +259,12 @@ impl<const A: usize> CfbLane<A> {
             dy_neg: Default::default(),
             dy_mag: Default::default(),
             invalid: Default::default(),
-            memory: Default::default(),
+            // A 2-word stub when the voxels live in external RAM.
+            memory: DepthRam::new(if c.external_memory {
+                1
+            } else {
+                (c.memory_bits as usize).min(A)
+            }),
             lane: Constant::new(bits16(k)),
             p_mask: Constant::new(bits16(p - 1)),
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
@@ -701,7 +716,8 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
     /// `modules[k][i]` being word `i` of module `k`.
     pub fn preload(&mut self, modules: &[Vec<u16>]) {
         for (lane, words) in self.lanes.iter_mut().zip(modules) {
-            lane.memory = words.iter().map(|&w| (w as u64).to_bits::<16>()).into();
+            lane.memory
+                .preload(words.iter().map(|&w| (w as u64).to_bits::<16>()));
         }
     }
 }

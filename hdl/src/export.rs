@@ -18,11 +18,12 @@ pub const ON_CHIP_BITS: usize = 16;
 /// Where the voxels live.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Memory {
-    /// p block-RAM modules of 2^16 voxels inside the CFB, loaded through the
-    /// load port (or initialised, for simulation).
+    /// p block-RAM modules inside the CFB, each as deep as its share of the
+    /// volume (up to 2^16 voxels), loaded through the load port (or
+    /// initialised, for simulation).
     OnChip,
     /// An external RAM on each lane's `ext_addr`/`ext_data` port; the CFB's
-    /// own modules are a 2-word stub.
+    /// own modules are 2-word stubs.
     External,
 }
 
@@ -53,12 +54,12 @@ pub fn pipeline_verilog(
     memory: Memory,
     preload: Option<&SkewedMemory>,
 ) -> Result<String, String> {
-    fn emit<const P: usize, const A: usize>(
+    fn emit<const P: usize>(
         config: &PipelineConfig,
         golden: &GoldenShader,
         preload: Option<&SkewedMemory>,
     ) -> Result<String, String> {
-        let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
+        let mut uut = Pipeline::<P, ON_CHIP_BITS, H>::new(config, golden)?;
         if let Some(mem) = preload {
             uut.cfb.preload(&mem.modules);
         }
@@ -68,16 +69,12 @@ pub fn pipeline_verilog(
     let mut config = config.clone();
     config.cfb.external_memory = memory == Memory::External;
     let preload = preload.filter(|_| memory == Memory::OnChip);
-    match (config.p, memory) {
-        (1, Memory::OnChip) => emit::<1, ON_CHIP_BITS>(&config, golden, preload),
-        (2, Memory::OnChip) => emit::<2, ON_CHIP_BITS>(&config, golden, preload),
-        (4, Memory::OnChip) => emit::<4, ON_CHIP_BITS>(&config, golden, preload),
-        (8, Memory::OnChip) => emit::<8, ON_CHIP_BITS>(&config, golden, preload),
-        (1, Memory::External) => emit::<1, 1>(&config, golden, None),
-        (2, Memory::External) => emit::<2, 1>(&config, golden, None),
-        (4, Memory::External) => emit::<4, 1>(&config, golden, None),
-        (8, Memory::External) => emit::<8, 1>(&config, golden, None),
-        (p, _) => Err(format!(
+    match config.p {
+        1 => emit::<1>(&config, golden, preload),
+        2 => emit::<2>(&config, golden, preload),
+        4 => emit::<4>(&config, golden, preload),
+        8 => emit::<8>(&config, golden, preload),
+        p => Err(format!(
             "the RTL is built for 1, 2, 4 or 8 pipelines, not {p}"
         )),
     }
@@ -299,6 +296,10 @@ lint_off -rule DECLFILENAME -file "*compositor.v"
 // waveforms show them; the pipeline itself needs neither.
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$z'*"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$address'*"
+// Ring buffers and memory modules are as deep as the scene needs: they take
+// the pipeline's 16-bit addresses and use only the low address bits.
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_address'*"
 // The bilinear unit's four channels share one 32-bit datapath, which X-ray
 // needs for its sum in channel 0; channels 1-3 carry 16-bit values.
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
@@ -401,9 +402,14 @@ pub fn write_export(
                 "memory": {
                     "kind": memory.name(),
                     "voxels_per_module": dims[0].div_ceil(p) * dims[1] * dims[2],
-                    "module_address_bits": if memory == Memory::OnChip { ON_CHIP_BITS } else { 32 },
+                    "module_address_bits": if memory == Memory::OnChip { config.cfb.memory_bits } else { 32 },
                 },
-                "ring_buffer_address_bits": H,
+                "tap_ring_address_bits": config.tap_bits(),
+                "gradient_ring_address_bits": if config.gradient {
+                    crate::abc_gradient::AbcGradient::<H>::ring_bits(config.slice_beats, config.beam_beats)
+                } else {
+                    0
+                },
             },
             "units_left_out": config.left_out(scene.mode),
             "sweeps": sweeps,

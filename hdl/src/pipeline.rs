@@ -33,6 +33,7 @@ use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
 use crate::cfb::{Cfb, CfbConfig};
 use crate::compositor::Compositor;
+use crate::ram::DepthRam;
 use crate::shader::Shader;
 use golden_model::plan::Sweep;
 use golden_model::scene::Mode;
@@ -132,21 +133,27 @@ impl PipelineConfig {
         })
     }
 
-    /// Smallest ring-buffer address width that holds every tap's delay.
-    pub fn history_bits(&self) -> usize {
-        let taps = self
+    /// Address bits of the compositing-buffer tap rings: they hold every
+    /// tap's delay, with a margin of 8.
+    pub fn tap_bits(&self) -> usize {
+        let need = self
             .taps
             .iter()
             .map(|t| t.delay + t.hops + 8)
             .max()
             .unwrap();
+        crate::cfb::bits_for(need as u64 + 1) as usize
+    }
+
+    /// Smallest ring-buffer address width (`H`) that the build needs: the
+    /// tap rings', and the gradient unit's when the scene has one.
+    pub fn history_bits(&self) -> usize {
         let abc = if self.gradient {
-            2 * self.slice_beats + self.beam_beats + 8
+            AbcGradient::<32>::ring_bits(self.slice_beats, self.beam_beats)
         } else {
             0
         };
-        let need = taps.max(abc);
-        (32 - need.leading_zeros()) as usize
+        self.tap_bits().max(abc)
     }
 
     /// The units this scene's hardware leaves out.
@@ -278,14 +285,14 @@ pub struct PipeLane<const H: usize> {
     st_dyn: Signal<Local, Bit>,
     st_dym: Signal<Local, Bits<16>>,
     shader: Shader,
-    ring0: RAM<Bits<64>, H>,
+    ring0: DepthRam<Bits<64>, H>,
     f0_1: DFF<Bits<64>>,
     s0: Signal<Local, Bits<64>>,
     a0: Signal<Local, Bits<64>>,
     prev0: DFF<Bits<64>>,
     hops0: Constant<Bits<2>>,
     off0: Constant<Bits<H>>,
-    ring1: RAM<Bits<64>, H>,
+    ring1: DepthRam<Bits<64>, H>,
     f1_1: DFF<Bits<64>>,
     f1_2: DFF<Bits<64>>,
     s1: Signal<Local, Bits<64>>,
@@ -293,12 +300,12 @@ pub struct PipeLane<const H: usize> {
     prev1: DFF<Bits<64>>,
     hops1: Constant<Bits<2>>,
     off1: Constant<Bits<H>>,
-    ring2: RAM<Bits<64>, H>,
+    ring2: DepthRam<Bits<64>, H>,
     s2: Signal<Local, Bits<64>>,
     a2: Signal<Local, Bits<64>>,
     prev2: DFF<Bits<64>>,
     off2: Constant<Bits<H>>,
-    ring3: RAM<Bits<64>, H>,
+    ring3: DepthRam<Bits<64>, H>,
     f3_1: DFF<Bits<64>>,
     f3_2: DFF<Bits<64>>,
     s3: Signal<Local, Bits<64>>,
@@ -306,12 +313,12 @@ pub struct PipeLane<const H: usize> {
     prev3: DFF<Bits<64>>,
     hops3: Constant<Bits<2>>,
     off3: Constant<Bits<H>>,
-    ring4: RAM<Bits<64>, H>,
+    ring4: DepthRam<Bits<64>, H>,
     s4: Signal<Local, Bits<64>>,
     a4: Signal<Local, Bits<64>>,
     prev4: DFF<Bits<64>>,
     off4: Constant<Bits<H>>,
-    ring5: RAM<Bits<64>, H>,
+    ring5: DepthRam<Bits<64>, H>,
     f5_1: DFF<Bits<64>>,
     f5_2: DFF<Bits<64>>,
     f5_3: DFF<Bits<64>>,
@@ -320,21 +327,21 @@ pub struct PipeLane<const H: usize> {
     prev5: DFF<Bits<64>>,
     hops5: Constant<Bits<2>>,
     off5: Constant<Bits<H>>,
-    ring6: RAM<Bits<64>, H>,
+    ring6: DepthRam<Bits<64>, H>,
     f6_1: DFF<Bits<64>>,
     s6: Signal<Local, Bits<64>>,
     a6: Signal<Local, Bits<64>>,
     prev6: DFF<Bits<64>>,
     hops6: Constant<Bits<2>>,
     off6: Constant<Bits<H>>,
-    ring7: RAM<Bits<64>, H>,
+    ring7: DepthRam<Bits<64>, H>,
     f7_1: DFF<Bits<64>>,
     s7: Signal<Local, Bits<64>>,
     a7: Signal<Local, Bits<64>>,
     prev7: DFF<Bits<64>>,
     hops7: Constant<Bits<2>>,
     off7: Constant<Bits<H>>,
-    ring8: RAM<Bits<64>, H>,
+    ring8: DepthRam<Bits<64>, H>,
     f8_1: DFF<Bits<64>>,
     s8: Signal<Local, Bits<64>>,
     a8: Signal<Local, Bits<64>>,
@@ -427,7 +434,7 @@ impl<const H: usize> PipeLane<H> {
             px_x: Default::default(),
             px_y: Default::default(),
             px_face: Default::default(),
-            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p),
+            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p, c.gradient),
             use_gradient: Constant::new(c.gradient),
             st_valid: Default::default(),
             st_value: Default::default(),
@@ -469,14 +476,14 @@ impl<const H: usize> PipeLane<H> {
             t8s0: Default::default(),
             t8i1: Default::default(),
             t8il: Default::default(),
-            ring0: Default::default(),
+            ring0: DepthRam::new(c.tap_bits().min(H)),
             f0_1: Default::default(),
             s0: Default::default(),
             a0: Default::default(),
             prev0: Default::default(),
             hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
             off0: Constant::new(off(&c.taps[0]).to_bits()),
-            ring1: Default::default(),
+            ring1: DepthRam::new(c.tap_bits().min(H)),
             f1_1: Default::default(),
             f1_2: Default::default(),
             s1: Default::default(),
@@ -484,12 +491,12 @@ impl<const H: usize> PipeLane<H> {
             prev1: Default::default(),
             hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
             off1: Constant::new(off(&c.taps[1]).to_bits()),
-            ring2: Default::default(),
+            ring2: DepthRam::new(c.tap_bits().min(H)),
             s2: Default::default(),
             a2: Default::default(),
             prev2: Default::default(),
             off2: Constant::new(off(&c.taps[2]).to_bits()),
-            ring3: Default::default(),
+            ring3: DepthRam::new(c.tap_bits().min(H)),
             f3_1: Default::default(),
             f3_2: Default::default(),
             s3: Default::default(),
@@ -497,12 +504,12 @@ impl<const H: usize> PipeLane<H> {
             prev3: Default::default(),
             hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
             off3: Constant::new(off(&c.taps[3]).to_bits()),
-            ring4: Default::default(),
+            ring4: DepthRam::new(c.tap_bits().min(H)),
             s4: Default::default(),
             a4: Default::default(),
             prev4: Default::default(),
             off4: Constant::new(off(&c.taps[4]).to_bits()),
-            ring5: Default::default(),
+            ring5: DepthRam::new(c.tap_bits().min(H)),
             f5_1: Default::default(),
             f5_2: Default::default(),
             f5_3: Default::default(),
@@ -511,21 +518,21 @@ impl<const H: usize> PipeLane<H> {
             prev5: Default::default(),
             hops5: Constant::new((c.taps[5].hops as u64).to_bits()),
             off5: Constant::new(off(&c.taps[5]).to_bits()),
-            ring6: Default::default(),
+            ring6: DepthRam::new(c.tap_bits().min(H)),
             f6_1: Default::default(),
             s6: Default::default(),
             a6: Default::default(),
             prev6: Default::default(),
             hops6: Constant::new((c.taps[6].hops as u64).to_bits()),
             off6: Constant::new(off(&c.taps[6]).to_bits()),
-            ring7: Default::default(),
+            ring7: DepthRam::new(c.tap_bits().min(H)),
             f7_1: Default::default(),
             s7: Default::default(),
             a7: Default::default(),
             prev7: Default::default(),
             hops7: Constant::new((c.taps[7].hops as u64).to_bits()),
             off7: Constant::new(off(&c.taps[7]).to_bits()),
-            ring8: Default::default(),
+            ring8: DepthRam::new(c.tap_bits().min(H)),
             f8_1: Default::default(),
             s8: Default::default(),
             a8: Default::default(),
@@ -1044,6 +1051,12 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             return Err(format!(
                 "the taps need {}-bit ring buffers, built with {H}",
                 config.history_bits()
+            ));
+        }
+        if !config.cfb.external_memory && config.cfb.memory_bits as usize > A {
+            return Err(format!(
+                "{}-bit memory modules needed, built with {A}: use external memory",
+                config.cfb.memory_bits
             ));
         }
         let mut lanes = Vec::with_capacity(P);

@@ -2238,20 +2238,17 @@ module top$lanes$0$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring0
 module top$lanes$0$ring1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2265,20 +2262,17 @@ module top$lanes$0$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring1
 module top$lanes$0$ring2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2292,20 +2286,17 @@ module top$lanes$0$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring2
 module top$lanes$0$ring3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2319,20 +2310,17 @@ module top$lanes$0$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring3
 module top$lanes$0$ring4(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2346,20 +2334,17 @@ module top$lanes$0$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring4
 module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2373,20 +2358,17 @@ module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring5
 module top$lanes$0$ring6(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2400,20 +2382,17 @@ module top$lanes$0$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring6
 module top$lanes$0$ring7(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2427,20 +2406,17 @@ module top$lanes$0$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring7
 module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -2454,20 +2430,17 @@ module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$0$ring8
 module top$lanes$0$s_a$0(d,q,clock);
     
@@ -4998,20 +4971,17 @@ module top$lanes$1$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring0
 module top$lanes$1$ring1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5025,20 +4995,17 @@ module top$lanes$1$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring1
 module top$lanes$1$ring2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5052,20 +5019,17 @@ module top$lanes$1$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring2
 module top$lanes$1$ring3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5079,20 +5043,17 @@ module top$lanes$1$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring3
 module top$lanes$1$ring4(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5106,20 +5067,17 @@ module top$lanes$1$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring4
 module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5133,20 +5091,17 @@ module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring5
 module top$lanes$1$ring6(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5160,20 +5115,17 @@ module top$lanes$1$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring6
 module top$lanes$1$ring7(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5187,20 +5139,17 @@ module top$lanes$1$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring7
 module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5214,20 +5163,17 @@ module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg[63:0] mem[65535:0];
-    
-    
+    reg [63:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address];
+       read_data <= mem[read_address[9:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address] <= write_data;
+          mem[write_address[9:0]] <= write_data;
        end
     end
-                
 endmodule // top$lanes$1$ring8
 module top$lanes$1$s_a$0(d,q,clock);
     

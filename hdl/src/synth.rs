@@ -1,0 +1,284 @@
+//! Synthesis of an exported design with yosys, and for iCE40 designs that
+//! fit an UltraPlus UP5K, placement and routing with nextpnr-ice40 for fmax.
+//!
+//! Resource counts come from yosys `stat` after the target's flow:
+//! `synth_ice40 -dsp` (SB_LUT4, SB_DFF*, SB_RAM40_4K, SB_MAC16),
+//! `synth_xilinx -family xc7` (LUT1-6, FD*, RAMB18E1/RAMB36E1, DSP48E1) or
+//! generic `synth` (gates; memories become flip-flops, multipliers gates).
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Command;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    Ice40,
+    Xilinx,
+    Generic,
+}
+
+impl Target {
+    pub fn name(self) -> &'static str {
+        match self {
+            Target::Ice40 => "ice40",
+            Target::Xilinx => "xilinx",
+            Target::Generic => "generic",
+        }
+    }
+
+    fn script(self) -> &'static str {
+        match self {
+            Target::Ice40 => "synth_ice40 -dsp -top top -json synth.json",
+            Target::Xilinx => "synth_xilinx -family xc7 -top top",
+            Target::Generic => "synth -flatten -top top",
+        }
+    }
+}
+
+/// The iCE40 UltraPlus UP5K's resources: logic cells, 4-kbit block RAMs and
+/// 16x16 DSPs.
+pub const UP5K: (u64, u64, u64) = (5280, 30, 8);
+
+#[derive(Debug, Clone)]
+pub struct Report {
+    pub target: Target,
+    pub cells: u64,
+    pub luts: u64,
+    pub flip_flops: u64,
+    pub block_rams: u64,
+    pub dsps: u64,
+    /// Every cell type with its count.
+    pub cell_types: BTreeMap<String, u64>,
+    pub synth_seconds: f64,
+    /// iCE40 only: whether LUTs, block RAMs and DSPs fit an UP5K.
+    pub fits_up5k: Option<bool>,
+    /// iCE40 designs that fit: nextpnr-ice40's maximum clock frequency.
+    pub fmax_mhz: Option<f64>,
+    pub pnr_seconds: Option<f64>,
+}
+
+fn run_tool(cmd: &mut Command, what: &str) -> Result<std::process::Output, String> {
+    let out = cmd
+        .output()
+        .map_err(|e| format!("cannot run {what} ({e}): run scripts/test, which installs it"))?;
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        let log = String::from_utf8_lossy(&out.stdout);
+        let tail: Vec<&str> = log.lines().rev().take(15).collect();
+        return Err(format!(
+            "{what} failed: {err}{}",
+            tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+        ));
+    }
+    Ok(out)
+}
+
+/// Parse the cell counts of the last `Number of cells:` block of yosys `stat`.
+pub fn parse_stat(text: &str) -> (u64, BTreeMap<String, u64>) {
+    let mut cells = 0;
+    let mut types = BTreeMap::new();
+    let mut in_cells = false;
+    for line in text.lines() {
+        let t = line.trim();
+        if let Some(n) = t.strip_prefix("Number of cells:") {
+            cells = n.trim().parse().unwrap_or(0);
+            types.clear();
+            in_cells = true;
+            continue;
+        }
+        if in_cells {
+            let f: Vec<&str> = t.split_whitespace().collect();
+            match f.as_slice() {
+                [name, n] if n.chars().all(|c| c.is_ascii_digit()) => {
+                    types.insert(name.to_string(), n.parse().unwrap_or(0));
+                }
+                _ => in_cells = false,
+            }
+        }
+    }
+    (cells, types)
+}
+
+/// Synthesize the design whose files (`top.v` first) are in `dir`; writes
+/// `synth.log` (and for iCE40 `synth.json`) there. With `pnr`, an iCE40
+/// design that fits an UP5K is also placed and routed for fmax.
+pub fn synthesize(
+    dir: &Path,
+    files: &[String],
+    target: Target,
+    pnr: bool,
+) -> Result<Report, String> {
+    let t = std::time::Instant::now();
+    let script = format!(
+        "read_verilog -sv {}; {}; tee -q -o stat.txt stat",
+        files.join(" "),
+        target.script()
+    );
+    let out = run_tool(
+        Command::new("yosys")
+            .args(["-q", "-p", &script])
+            .current_dir(dir),
+        "yosys",
+    )?;
+    std::fs::write(dir.join("synth.log"), &out.stdout).map_err(|e| e.to_string())?;
+    let stat = std::fs::read_to_string(dir.join("stat.txt")).map_err(|e| e.to_string())?;
+    let synth_seconds = t.elapsed().as_secs_f64();
+    let (cells, types) = parse_stat(&stat);
+    let sum = |f: &dyn Fn(&str) -> bool| -> u64 {
+        types.iter().filter(|(k, _)| f(k)).map(|(_, v)| *v).sum()
+    };
+    let (luts, flip_flops, block_rams, dsps) = match target {
+        Target::Ice40 => (
+            sum(&|k| k == "SB_LUT4"),
+            sum(&|k| k.starts_with("SB_DFF")),
+            sum(&|k| k.starts_with("SB_RAM40")),
+            sum(&|k| k == "SB_MAC16"),
+        ),
+        Target::Xilinx => (
+            sum(&|k| k.starts_with("LUT")),
+            sum(&|k| k.starts_with("FD")),
+            sum(&|k| k.starts_with("RAMB")),
+            sum(&|k| k.starts_with("DSP48")),
+        ),
+        Target::Generic => (
+            0,
+            sum(&|k| k.contains("DFF")),
+            0,
+            sum(&|k| k.contains("mul") || k.contains("MUL")),
+        ),
+    };
+    let fits_up5k = (target == Target::Ice40)
+        .then_some(luts <= UP5K.0 && block_rams <= UP5K.1 && dsps <= UP5K.2);
+    let mut report = Report {
+        target,
+        cells,
+        luts,
+        flip_flops,
+        block_rams,
+        dsps,
+        cell_types: types,
+        synth_seconds,
+        fits_up5k,
+        fmax_mhz: None,
+        pnr_seconds: None,
+    };
+    if pnr && fits_up5k == Some(true) {
+        let t = std::time::Instant::now();
+        report.fmax_mhz = Some(place_and_route(dir, files)?);
+        report.pnr_seconds = Some(t.elapsed().as_secs_f64());
+    }
+    Ok(report)
+}
+
+/// Ports of module `top` in `top.v`: (name, is_input, width).
+fn top_ports(top_v: &str) -> Vec<(String, bool, u32)> {
+    top_v
+        .lines()
+        .map(str::trim)
+        .take_while(|l| !l.starts_with("// Stub signals"))
+        .filter_map(|l| {
+            let input = l.starts_with("input ");
+            if !input && !l.starts_with("output ") {
+                return None;
+            }
+            let l = l.trim_end_matches(';');
+            let name = l.split_whitespace().last()?.to_string();
+            let width = match (l.find('['), l.find(':')) {
+                (Some(a), Some(b)) => l[a + 1..b].parse::<u32>().ok()? + 1,
+                _ => 1,
+            };
+            Some((name, input, width))
+        })
+        .collect()
+}
+
+/// A wrapper that gives the pipeline the few pins an UP5K package has: the
+/// load port's word (and every external-memory input) from a serial shift
+/// register, every output folded into an 8-bit registered digest, so that
+/// nothing is optimised away and the clock sees every real path.
+pub fn fmax_wrapper(top_v: &str) -> String {
+    let ports = top_ports(top_v);
+    let mut v = String::from(
+        "module fmax_top(input clock, input start, input load_enable, input serial_in, output reg [7:0] digest);\n  reg [63:0] shift;\n  always @(posedge clock) shift <= {shift[62:0], serial_in};\n",
+    );
+    let mut conns = Vec::new();
+    let mut outs = Vec::new();
+    for (name, input, width) in &ports {
+        match (name.as_str(), input) {
+            ("clock" | "start" | "load_enable", true) => conns.push(format!(".{name}({name})")),
+            (_, true) => conns.push(format!(".{name}(shift[{}:0])", width - 1)),
+            (_, false) => {
+                let wire = format!("o_{}", name.replace('$', "_"));
+                v.push_str(&format!("  wire [{}:0] {wire};\n", width - 1));
+                conns.push(format!(".{name}({wire})"));
+                outs.push((wire, *width));
+            }
+        }
+    }
+    v.push_str(&format!("  top uut({});\n", conns.join(", ")));
+    let mut terms = vec!["digest".to_string()];
+    for (wire, width) in outs {
+        for lo in (0..width).step_by(8) {
+            let hi = (lo + 7).min(width - 1);
+            terms.push(format!("8'({wire}[{hi}:{lo}])"));
+        }
+    }
+    v.push_str(&format!(
+        "  always @(posedge clock) digest <= {};\nendmodule\n",
+        terms.join(" ^ ")
+    ));
+    v
+}
+
+/// Place and route for an UP5K (sg48) with nextpnr-ice40; returns the fmax
+/// of the pipeline clock in MHz.
+fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
+    let top_v = std::fs::read_to_string(dir.join("top.v")).map_err(|e| e.to_string())?;
+    std::fs::write(dir.join("fmax_top.v"), fmax_wrapper(&top_v)).map_err(|e| e.to_string())?;
+    let script = format!(
+        "read_verilog -sv fmax_top.v {}; synth_ice40 -dsp -top fmax_top -json fmax.json",
+        files.join(" ")
+    );
+    run_tool(
+        Command::new("yosys")
+            .args(["-q", "-p", &script])
+            .current_dir(dir),
+        "yosys",
+    )?;
+    let out = run_tool(
+        Command::new("nextpnr-ice40")
+            .args([
+                "--up5k",
+                "--package",
+                "sg48",
+                "--json",
+                "fmax.json",
+                "--pcf-allow-unconstrained",
+                "--freq",
+                "12",
+                "--seed",
+                "1",
+            ])
+            .current_dir(dir),
+        "nextpnr-ice40",
+    )?;
+    let log = String::from_utf8_lossy(&out.stderr).to_string();
+    std::fs::write(dir.join("pnr.log"), &log).map_err(|e| e.to_string())?;
+    // The last "Max frequency for clock" line is the post-route figure.
+    log.lines()
+        .rev()
+        .filter(|l| l.contains("Max frequency for clock"))
+        .find_map(|l| {
+            let rest = &l[l.find("': ")? + 3..];
+            rest.split_whitespace().next()?.parse::<f64>().ok()
+        })
+        .ok_or_else(|| "nextpnr-ice40 reported no fmax (see pnr.log)".into())
+}
+
+/// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per
+/// pipeline per clock over n slices of n beams of ceil(n/p) partial beams,
+/// plus one slice for the gradient unit and 6 clocks of fill.
+pub fn frame_clocks(n: u64, p: u64, gradient: bool) -> u64 {
+    let slice = n * n.div_ceil(p);
+    n * slice + if gradient { slice } else { 0 } + 6
+}
