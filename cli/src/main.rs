@@ -473,8 +473,8 @@ fn vcd_diff_cmd(a: &Path, b: &Path, signals: Option<&str>, show: usize) -> i32 {
         "{} signals compared over {} cycles ({} in A only, {} in B only)",
         c.compared,
         c.cycles_a.min(c.cycles_b),
-        c.only_a,
-        c.only_b
+        c.only_a.len(),
+        c.only_b.len()
     );
     if c.cycles_a != c.cycles_b {
         println!(

@@ -62,6 +62,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     localparam  off_xp = 16'hc002;
     localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [15:0] centre$read_address;
@@ -340,6 +341,36 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         o_dy_neg = centre$read_data['h69];
         o_dy_mag = centre$read_data[('h6a)+:(16)];
         o_invalid = centre$read_data['h7a];
+        if (~enabled) begin
+            to_right_xm = 'h0;
+            to_right_ym = 'h0;
+            to_right_zm = 'h0;
+            to_left_xp = 'h0;
+            to_left_yp = 'h0;
+            to_left_zp = 'h0;
+            o_value = 'h0;
+            o_x = 'h0;
+            o_y = 'h0;
+            o_dx_mag = 'h0;
+            o_dy_mag = 'h0;
+            o_base_x = 'h0;
+            o_base_y = 'h0;
+            gx_mag = 'h0;
+            gy_mag = 'h0;
+            gz_mag = 'h0;
+            o_valid = 1'b0;
+            o_pad = 1'b0;
+            o_invalid = 1'b0;
+            o_dx_neg = 1'b0;
+            o_dy_neg = 1'b0;
+            o_sr = 1'b0;
+            o_er = 1'b0;
+            o_edge = 1'b0;
+            gx_neg = 1'b0;
+            gy_neg = 1'b0;
+            gz_neg = 1'b0;
+            o_face = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$abc
@@ -687,6 +718,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     localparam  off_xp = 16'hc002;
     localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [15:0] centre$read_address;
@@ -965,6 +997,36 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         o_dy_neg = centre$read_data['h69];
         o_dy_mag = centre$read_data[('h6a)+:(16)];
         o_invalid = centre$read_data['h7a];
+        if (~enabled) begin
+            to_right_xm = 'h0;
+            to_right_ym = 'h0;
+            to_right_zm = 'h0;
+            to_left_xp = 'h0;
+            to_left_yp = 'h0;
+            to_left_zp = 'h0;
+            o_value = 'h0;
+            o_x = 'h0;
+            o_y = 'h0;
+            o_dx_mag = 'h0;
+            o_dy_mag = 'h0;
+            o_base_x = 'h0;
+            o_base_y = 'h0;
+            gx_mag = 'h0;
+            gy_mag = 'h0;
+            gz_mag = 'h0;
+            o_valid = 1'b0;
+            o_pad = 1'b0;
+            o_invalid = 1'b0;
+            o_dx_neg = 1'b0;
+            o_dy_neg = 1'b0;
+            o_sr = 1'b0;
+            o_er = 1'b0;
+            o_edge = 1'b0;
+            gx_neg = 1'b0;
+            gy_neg = 1'b0;
+            gz_neg = 1'b0;
+            o_face = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$abc
@@ -1312,6 +1374,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     localparam  off_xp = 16'hc002;
     localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [15:0] centre$read_address;
@@ -1590,6 +1653,36 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         o_dy_neg = centre$read_data['h69];
         o_dy_mag = centre$read_data[('h6a)+:(16)];
         o_invalid = centre$read_data['h7a];
+        if (~enabled) begin
+            to_right_xm = 'h0;
+            to_right_ym = 'h0;
+            to_right_zm = 'h0;
+            to_left_xp = 'h0;
+            to_left_yp = 'h0;
+            to_left_zp = 'h0;
+            o_value = 'h0;
+            o_x = 'h0;
+            o_y = 'h0;
+            o_dx_mag = 'h0;
+            o_dy_mag = 'h0;
+            o_base_x = 'h0;
+            o_base_y = 'h0;
+            gx_mag = 'h0;
+            gy_mag = 'h0;
+            gz_mag = 'h0;
+            o_valid = 1'b0;
+            o_pad = 1'b0;
+            o_invalid = 1'b0;
+            o_dx_neg = 1'b0;
+            o_dy_neg = 1'b0;
+            o_sr = 1'b0;
+            o_er = 1'b0;
+            o_edge = 1'b0;
+            gx_neg = 1'b0;
+            gy_neg = 1'b0;
+            gz_neg = 1'b0;
+            o_face = 'h0;
+        end
     end
     
 endmodule // top$lanes$2$abc
@@ -1937,6 +2030,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     localparam  off_xp = 16'hc002;
     localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [15:0] centre$read_address;
@@ -2215,6 +2309,36 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         o_dy_neg = centre$read_data['h69];
         o_dy_mag = centre$read_data[('h6a)+:(16)];
         o_invalid = centre$read_data['h7a];
+        if (~enabled) begin
+            to_right_xm = 'h0;
+            to_right_ym = 'h0;
+            to_right_zm = 'h0;
+            to_left_xp = 'h0;
+            to_left_yp = 'h0;
+            to_left_zp = 'h0;
+            o_value = 'h0;
+            o_x = 'h0;
+            o_y = 'h0;
+            o_dx_mag = 'h0;
+            o_dy_mag = 'h0;
+            o_base_x = 'h0;
+            o_base_y = 'h0;
+            gx_mag = 'h0;
+            gy_mag = 'h0;
+            gz_mag = 'h0;
+            o_valid = 1'b0;
+            o_pad = 1'b0;
+            o_invalid = 1'b0;
+            o_dx_neg = 1'b0;
+            o_dy_neg = 1'b0;
+            o_sr = 1'b0;
+            o_er = 1'b0;
+            o_edge = 1'b0;
+            gx_neg = 1'b0;
+            gy_neg = 1'b0;
+            gz_neg = 1'b0;
+            o_face = 'h0;
+        end
     end
     
 endmodule // top$lanes$3$abc

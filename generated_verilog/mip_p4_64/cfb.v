@@ -624,12 +624,12 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     reg  memory$write_enable;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
+    wire  [31:0] div_x$q = 'h0;
+    wire  div_x$overflow = 'h0;
     reg  [63:0] div_y$num;
     reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    wire  [31:0] div_y$q = 'h0;
+    wire  div_y$overflow = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -715,18 +715,6 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
-    );
-    top$cfb$lanes$0$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$0$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
     );
     top$cfb$lanes$0$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -1376,12 +1364,12 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     reg  memory$write_enable;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
+    wire  [31:0] div_x$q = 'h0;
+    wire  div_x$overflow = 'h0;
     reg  [63:0] div_y$num;
     reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    wire  [31:0] div_y$q = 'h0;
+    wire  div_y$overflow = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -1467,18 +1455,6 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
-    );
-    top$cfb$lanes$1$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$1$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
     );
     top$cfb$lanes$1$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -2128,12 +2104,12 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     reg  memory$write_enable;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
+    wire  [31:0] div_x$q = 'h0;
+    wire  div_x$overflow = 'h0;
     reg  [63:0] div_y$num;
     reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    wire  [31:0] div_y$q = 'h0;
+    wire  div_y$overflow = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -2219,18 +2195,6 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
-    );
-    top$cfb$lanes$2$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$2$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
     );
     top$cfb$lanes$2$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -2880,12 +2844,12 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     reg  memory$write_enable;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
+    wire  [31:0] div_x$q = 'h0;
+    wire  div_x$overflow = 'h0;
     reg  [63:0] div_y$num;
     reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    wire  [31:0] div_y$q = 'h0;
+    wire  div_y$overflow = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -2971,18 +2935,6 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
-    );
-    top$cfb$lanes$3$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$3$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
     );
     top$cfb$lanes$3$dxn_q dxn_q(
         .d(dxn_q$d),

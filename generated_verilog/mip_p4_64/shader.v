@@ -29,11 +29,11 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Stub signals
     reg  [11:0] lut$address;
-    wire  [63:0] lut$data;
+    wire  [63:0] lut$data = 'h0;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -94,18 +94,6 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$0$shader$lut lut(
-        .address(lut$address),
-        .data(lut$data)
-    );
-    top$lanes$0$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$0$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
-    );
     top$lanes$0$shader$sqrt sqrt(
         .n(sqrt$n),
         .root(sqrt$root)
@@ -371,20 +359,6 @@ module top$lanes$0$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$a_q
-module top$lanes$0$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$0$shader$alpha_gm
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -482,20 +456,6 @@ module top$lanes$0$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
-module top$lanes$0$shader$lut(address,data);
-    
-    // Module arguments
-    input wire  [11:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 64'h0;
-    endcase
-            
-endmodule // top$lanes$0$shader$lut
 module top$lanes$0$shader$mul_b(a,b,y);
     
     // Module arguments
@@ -576,20 +536,6 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
-module top$lanes$0$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$0$shader$reflectance
 module top$lanes$0$shader$sqrt(n,root);
     
     // Module arguments
@@ -801,11 +747,11 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Stub signals
     reg  [11:0] lut$address;
-    wire  [63:0] lut$data;
+    wire  [63:0] lut$data = 'h0;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -866,18 +812,6 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$1$shader$lut lut(
-        .address(lut$address),
-        .data(lut$data)
-    );
-    top$lanes$1$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$1$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
-    );
     top$lanes$1$shader$sqrt sqrt(
         .n(sqrt$n),
         .root(sqrt$root)
@@ -1143,20 +1077,6 @@ module top$lanes$1$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$a_q
-module top$lanes$1$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$1$shader$alpha_gm
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1254,20 +1174,6 @@ module top$lanes$1$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
-module top$lanes$1$shader$lut(address,data);
-    
-    // Module arguments
-    input wire  [11:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 64'h0;
-    endcase
-            
-endmodule // top$lanes$1$shader$lut
 module top$lanes$1$shader$mul_b(a,b,y);
     
     // Module arguments
@@ -1348,20 +1254,6 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
-module top$lanes$1$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$1$shader$reflectance
 module top$lanes$1$shader$sqrt(n,root);
     
     // Module arguments
@@ -1573,11 +1465,11 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Stub signals
     reg  [11:0] lut$address;
-    wire  [63:0] lut$data;
+    wire  [63:0] lut$data = 'h0;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -1638,18 +1530,6 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$2$shader$lut lut(
-        .address(lut$address),
-        .data(lut$data)
-    );
-    top$lanes$2$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$2$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
-    );
     top$lanes$2$shader$sqrt sqrt(
         .n(sqrt$n),
         .root(sqrt$root)
@@ -1915,20 +1795,6 @@ module top$lanes$2$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$a_q
-module top$lanes$2$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$2$shader$alpha_gm
 module top$lanes$2$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -2026,20 +1892,6 @@ module top$lanes$2$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_r
-module top$lanes$2$shader$lut(address,data);
-    
-    // Module arguments
-    input wire  [11:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 64'h0;
-    endcase
-            
-endmodule // top$lanes$2$shader$lut
 module top$lanes$2$shader$mul_b(a,b,y);
     
     // Module arguments
@@ -2120,20 +1972,6 @@ module top$lanes$2$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$r_q
-module top$lanes$2$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$2$shader$reflectance
 module top$lanes$2$shader$sqrt(n,root);
     
     // Module arguments
@@ -2345,11 +2183,11 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Stub signals
     reg  [11:0] lut$address;
-    wire  [63:0] lut$data;
+    wire  [63:0] lut$data = 'h0;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -2410,18 +2248,6 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$3$shader$lut lut(
-        .address(lut$address),
-        .data(lut$data)
-    );
-    top$lanes$3$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$3$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
-    );
     top$lanes$3$shader$sqrt sqrt(
         .n(sqrt$n),
         .root(sqrt$root)
@@ -2687,20 +2513,6 @@ module top$lanes$3$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$a_q
-module top$lanes$3$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$3$shader$alpha_gm
 module top$lanes$3$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -2798,20 +2610,6 @@ module top$lanes$3$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_r
-module top$lanes$3$shader$lut(address,data);
-    
-    // Module arguments
-    input wire  [11:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 64'h0;
-    endcase
-            
-endmodule // top$lanes$3$shader$lut
 module top$lanes$3$shader$mul_b(a,b,y);
     
     // Module arguments
@@ -2892,20 +2690,6 @@ module top$lanes$3$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$r_q
-module top$lanes$3$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$3$shader$reflectance
 module top$lanes$3$shader$sqrt(n,root);
     
     // Module arguments

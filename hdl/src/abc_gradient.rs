@@ -111,6 +111,7 @@ pub struct AbcGradient<const H: usize> {
     off_xp: Constant<Bits<H>>,
     off_yp: Constant<Bits<H>>,
     p_mask: Constant<Bits<16>>,
+    enabled: Constant<Bit>,
 }
 
 impl<const H: usize> AbcGradient<H> {
@@ -211,6 +212,7 @@ impl<const H: usize> AbcGradient<H> {
             off_xp: off(1, s),
             off_yp: off(1, s + 1 - b),
             p_mask: Constant::new(((p - 1) as u64).to_bits()),
+            enabled: Constant::new(enabled),
         }
     }
 }
@@ -333,5 +335,37 @@ impl<const H: usize> Logic for AbcGradient<H> {
         self.o_dy_neg.next = self.centre.read_data.val().get_bit(105);
         self.o_dy_mag.next = self.centre.read_data.val().get_bits::<16>(106);
         self.o_invalid.next = self.centre.read_data.val().get_bit(122);
+        // Left out of the scene's hardware (see `export::prune`): every
+        // output is zero, as in the emitted Verilog, which has no unit.
+        if !self.enabled.val() {
+            self.to_right_xm.next = 0.into();
+            self.to_right_ym.next = 0.into();
+            self.to_right_zm.next = 0.into();
+            self.to_left_xp.next = 0.into();
+            self.to_left_yp.next = 0.into();
+            self.to_left_zp.next = 0.into();
+            self.o_value.next = 0.into();
+            self.o_x.next = 0.into();
+            self.o_y.next = 0.into();
+            self.o_dx_mag.next = 0.into();
+            self.o_dy_mag.next = 0.into();
+            self.o_base_x.next = 0.into();
+            self.o_base_y.next = 0.into();
+            self.gx_mag.next = 0.into();
+            self.gy_mag.next = 0.into();
+            self.gz_mag.next = 0.into();
+            self.o_valid.next = false;
+            self.o_pad.next = false;
+            self.o_invalid.next = false;
+            self.o_dx_neg.next = false;
+            self.o_dy_neg.next = false;
+            self.o_sr.next = false;
+            self.o_er.next = false;
+            self.o_edge.next = false;
+            self.gx_neg.next = false;
+            self.gy_neg.next = false;
+            self.gz_neg.next = false;
+            self.o_face.next = 0.into();
+        }
     }
 }

@@ -6,7 +6,7 @@
 
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct Divider {
     pub num: Signal<In, Bits<64>>,
     pub den: Signal<In, Bits<64>>,
@@ -14,6 +14,23 @@ pub struct Divider {
     pub overflow: Signal<Out, Bit>,
     rem: Signal<Local, Bits<64>>,
     quo: Signal<Local, Bits<32>>,
+    enabled: Constant<Bit>,
+}
+
+impl Divider {
+    /// Without `enabled` (parallel views) the outputs are zero, as in the
+    /// emitted Verilog, which leaves the divider out (`export::prune`).
+    pub fn new(enabled: bool) -> Divider {
+        Divider {
+            num: Default::default(),
+            den: Default::default(),
+            q: Default::default(),
+            overflow: Default::default(),
+            rem: Default::default(),
+            quo: Default::default(),
+            enabled: Constant::new(enabled),
+        }
+    }
 }
 
 impl Logic for Divider {
@@ -31,5 +48,9 @@ impl Logic for Divider {
             }
         }
         self.q.next = self.quo.val();
+        if !self.enabled.val() {
+            self.q.next = 0.into();
+            self.overflow.next = false;
+        }
     }
 }

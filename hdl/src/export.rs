@@ -45,9 +45,9 @@ impl Memory {
     }
 }
 
-/// The Verilog of one sweep's pipeline. `preload` initialises on-chip
-/// memory modules (simulation only; hardware loads them through the load
-/// port).
+/// The Verilog of one sweep's pipeline, with the units the scene does not
+/// need left out. `preload` initialises on-chip memory modules (simulation
+/// only; hardware loads them through the load port).
 pub fn pipeline_verilog(
     config: &PipelineConfig,
     golden: &GoldenShader,
@@ -64,7 +64,8 @@ pub fn pipeline_verilog(
             uut.cfb.preload(&mem.modules);
         }
         uut.connect_all();
-        Ok(width_clean(&generate_verilog(&uut)))
+        let units = left_out(config, golden);
+        prune(&width_clean(&generate_verilog(&uut)), &units)
     }
     let mut config = config.clone();
     config.cfb.external_memory = memory == Memory::External;
@@ -78,6 +79,170 @@ pub fn pipeline_verilog(
             "the RTL is built for 1, 2, 4 or 8 pipelines, not {p}"
         )),
     }
+}
+
+/// A unit that a scene's hardware leaves out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LeftOut {
+    pub name: &'static str,
+    /// Its instance names, under their parents; the emitted Verilog has no
+    /// such instance (see [`prune`]). Empty for units that stay in the
+    /// Verilog, disabled by constants, for synthesis to remove.
+    pub instances: &'static [&'static str],
+}
+
+/// The units a sweep's pipeline leaves out.
+pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> {
+    let mut v = Vec::new();
+    if !config.gradient {
+        v.push(LeftOut {
+            name: "abc_gradient",
+            instances: &["abc"],
+        });
+    }
+    if golden.reflectance.is_none() {
+        v.push(LeftOut {
+            name: "reflectance_map",
+            instances: &["reflectance"],
+        });
+    }
+    if golden.colour.is_none() && golden.opacity.is_none() {
+        v.push(LeftOut {
+            name: "colour_and_opacity_lut",
+            instances: &["lut"],
+        });
+    }
+    if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+        v.push(LeftOut {
+            name: "gradient_opacity_lut",
+            instances: &["alpha_gm"],
+        });
+    }
+    if config.cfb.eye.is_none() {
+        v.push(LeftOut {
+            name: "sight_ray_divider",
+            instances: &["div_x", "div_y"],
+        });
+        v.push(LeftOut {
+            name: "3x3_taps_outside_2x2 (disabled by constant dx/dy signs)",
+            instances: &[],
+        });
+    }
+    v
+}
+
+/// The names of `units`, for reports.
+pub fn names(units: &[LeftOut]) -> Vec<&'static str> {
+    units.iter().map(|u| u.name).collect()
+}
+
+/// Ports of a module, from its declarations: (name, is_output).
+fn module_ports(text: &str) -> Vec<(String, bool)> {
+    text.lines()
+        .map(str::trim)
+        .filter_map(|l| {
+            let output = l.starts_with("output ");
+            if !output && !l.starts_with("input ") {
+                return None;
+            }
+            Some((
+                l.trim_end_matches(';')
+                    .split_whitespace()
+                    .last()?
+                    .to_string(),
+                output,
+            ))
+        })
+        .collect()
+}
+
+/// Remove the instances named in `units` from emitted Verilog: their
+/// modules and every module below them, and their instantiation in the
+/// parent, whose wires for their outputs become constant zero. The rust-hdl
+/// description drives zero on those outputs too when the unit is disabled,
+/// so simulation and the pruned Verilog agree signal for signal. The inputs
+/// the parent computes for the removed instance stay, unread.
+pub fn prune(verilog: &str, units: &[LeftOut]) -> Result<String, String> {
+    let gone: Vec<&str> = units
+        .iter()
+        .flat_map(|u| u.instances.iter().copied())
+        .collect();
+    let mut modules = split_modules(verilog);
+    let pruned: Vec<(String, Vec<(String, bool)>)> = modules
+        .iter()
+        .filter(|m| {
+            m.name
+                .rsplit_once('$')
+                .is_some_and(|(_, leaf)| gone.contains(&leaf))
+        })
+        .map(|m| (m.name.clone(), module_ports(&m.text)))
+        .collect();
+    modules.retain(|m| {
+        !pruned
+            .iter()
+            .any(|(p, _)| m.name == *p || m.name.starts_with(&format!("{p}$")))
+    });
+    for (name, ports) in &pruned {
+        let (parent, instance) = name.rsplit_once('$').expect("a sub-module");
+        let m = modules
+            .iter_mut()
+            .find(|m| m.name == parent)
+            .ok_or_else(|| format!("prune: no parent module {parent}"))?;
+        let head = format!("{name} {instance}(");
+        let mut out = String::with_capacity(m.text.len());
+        let mut skipping = false;
+        let mut found = false;
+        for line in m.text.lines() {
+            let t = line.trim();
+            if t == head {
+                skipping = true;
+                found = true;
+                continue;
+            }
+            if skipping {
+                skipping = t != ");";
+                continue;
+            }
+            let output_wire = ports.iter().any(|(p, out)| {
+                *out && t.starts_with("wire ") && t.ends_with(&format!(" {instance}${p};"))
+            });
+            if output_wire {
+                out.push_str(line.trim_end_matches(';'));
+                out.push_str(" = 'h0;\n");
+            } else {
+                out.push_str(line);
+                out.push('\n');
+            }
+        }
+        if !found {
+            return Err(format!("prune: no instance {instance} in {parent}"));
+        }
+        m.text = out;
+    }
+    Ok(modules
+        .into_iter()
+        .map(|m| m.text)
+        .collect::<Vec<_>>()
+        .join("\n"))
+}
+
+/// Verilator waivers for a design with `units` pruned: the inputs its
+/// parents still compute for the removed instances are unread.
+pub fn lint_waivers(units: &[LeftOut]) -> String {
+    let mut s = LINT_WAIVERS.to_string();
+    let instances: Vec<&str> = units
+        .iter()
+        .flat_map(|u| u.instances.iter().copied())
+        .collect();
+    if !instances.is_empty() {
+        s.push_str("// Units this scene leaves out are gone, but their parents still compute\n// the inputs they would have read.\n");
+        for i in instances {
+            s.push_str(&format!(
+                "lint_off -rule UNUSEDSIGNAL -file \"*\" -match \"*Signal is not used: '{i}$*\"\n"
+            ));
+        }
+    }
+    s
 }
 
 /// One Verilog module of an emitted design.
@@ -122,6 +287,7 @@ pub fn split_modules(verilog: &str) -> Vec<Module> {
 pub struct SweepDesign {
     pub sweep: Sweep,
     pub config: PipelineConfig,
+    pub left_out: Vec<LeftOut>,
     pub verilog: String,
 }
 
@@ -142,6 +308,7 @@ pub fn export(
         let verilog = pipeline_verilog(&config, &golden, memory, None)?;
         designs.push(SweepDesign {
             sweep: sweep.clone(),
+            left_out: left_out(&config, &golden),
             config,
             verilog,
         });
@@ -310,9 +477,13 @@ lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
 lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
 "#;
 
-/// Write one design (emitted Verilog) into `dir`: the stage files and the
-/// lint waivers. Returns the file names written.
-pub fn write_stage_files(dir: &std::path::Path, verilog: &str) -> std::io::Result<Vec<String>> {
+/// Write one design (emitted Verilog, with `units` left out) into `dir`:
+/// the stage files and the lint waivers. Returns the file names written.
+pub fn write_stage_files(
+    dir: &std::path::Path,
+    verilog: &str,
+    units: &[LeftOut],
+) -> std::io::Result<Vec<String>> {
     let mut texts: std::collections::BTreeMap<&str, String> = Default::default();
     for m in split_modules(verilog) {
         texts
@@ -327,7 +498,7 @@ pub fn write_stage_files(dir: &std::path::Path, verilog: &str) -> std::io::Resul
             names.push(f.to_string());
         }
     }
-    std::fs::write(dir.join("lint.vlt"), LINT_WAIVERS)?;
+    std::fs::write(dir.join("lint.vlt"), lint_waivers(units))?;
     Ok(names)
 }
 
@@ -368,7 +539,7 @@ pub fn write_export(
             };
             let dir = tmp.join(&sub);
             std::fs::create_dir_all(&dir).map_err(io)?;
-            let files = write_stage_files(&dir, &d.verilog).map_err(io)?;
+            let files = write_stage_files(&dir, &d.verilog, &d.left_out).map_err(io)?;
             let s = &d.sweep;
             let rays = match s.rays {
                 Rays::Parallel { dx, dy } => serde_json::json!({"parallel": {"dx": dx, "dy": dy}}),
@@ -411,7 +582,7 @@ pub fn write_export(
                     0
                 },
             },
-            "units_left_out": config.left_out(scene.mode),
+            "units_left_out": names(&designs[0].left_out),
             "sweeps": sweeps,
             "lint": "verilator --lint-only -Wall lint.vlt <files>",
         });

@@ -155,25 +155,6 @@ impl PipelineConfig {
         };
         self.tap_bits().max(abc)
     }
-
-    /// The units this scene's hardware leaves out.
-    pub fn left_out(&self, mode: Mode) -> Vec<&'static str> {
-        let mut v = Vec::new();
-        if !self.gradient {
-            v.push("abc_gradient");
-        }
-        if !(self.gradient && mode.uses_colour()) {
-            v.push("reflectance_map");
-        }
-        if self.cfb.eye.is_none() {
-            v.push("sight_ray_divider");
-            v.push("3x3_neighbourhood (2x2 by constant signs)");
-        }
-        if matches!(mode, Mode::Mip | Mode::Minip) {
-            v.push("colour_and_opacity_luts");
-        }
-        v
-    }
 }
 
 fn pack(v: [u32; 4]) -> u64 {

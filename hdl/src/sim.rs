@@ -47,7 +47,7 @@ pub struct SimOutcome {
     pub sim_seconds: f64,
     /// Verilator's build time (0 when every sweep's build was cached).
     pub build_seconds: f64,
-    /// Units this scene's hardware leaves out (see `PipelineConfig::left_out`).
+    /// Units this scene's hardware leaves out (see `export::left_out`).
     pub left_out: Vec<&'static str>,
 }
 
@@ -154,7 +154,7 @@ pub fn simulate_with(
     for (si, sweep) in plan.sweeps.iter().enumerate() {
         let golden = GoldenShader::new(scene, camera, sweep);
         let config = PipelineConfig::new(sweep, vol.dims, p, &golden)?;
-        left_out = config.left_out(scene.mode);
+        left_out = crate::export::names(&crate::export::left_out(&config, &golden));
         let mem = SkewedMemory::new(vol, p);
         let vcd = if si == 0 { vcd } else { None };
         let started = Instant::now();

@@ -176,8 +176,9 @@ pub struct SignalMismatch {
 #[derive(Debug, Clone)]
 pub struct Comparison {
     pub compared: usize,
-    pub only_a: usize,
-    pub only_b: usize,
+    /// Signals (aligned names) in one trace only.
+    pub only_a: Vec<String>,
+    pub only_b: Vec<String>,
     pub cycles_a: u64,
     pub cycles_b: u64,
     /// Each differing signal's first mismatch, earliest first.
@@ -263,11 +264,13 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
         only_a: na
             .keys()
             .filter(|k| !nb.contains_key(*k) && keep(k))
-            .count(),
+            .cloned()
+            .collect(),
         only_b: nb
             .keys()
             .filter(|k| !na.contains_key(*k) && keep(k))
-            .count(),
+            .cloned()
+            .collect(),
         cycles_a: a.cycles,
         cycles_b: b.cycles,
         mismatches,

@@ -67,8 +67,19 @@ fn verilator_trace_equals_rust_hdl_trace() {
     );
     let c = compare(&a, &b, None).unwrap();
     // Every rust-hdl signal has its namesake in Verilator's trace (which
-    // also holds the parents' copies of child ports).
-    assert_eq!(c.only_a, 0, "rust-hdl signals missing in Verilator's trace");
+    // also holds the parents' copies of child ports), but for those inside
+    // the units the scene leaves out of the Verilog: here the divider and
+    // the gradient-opacity table.
+    let gone = |n: &str| {
+        n.split('.')
+            .any(|part| ["div_x", "div_y", "alpha_gm"].contains(&part))
+    };
+    assert!(!c.only_a.is_empty());
+    assert!(
+        c.only_a.iter().all(|n| gone(n)),
+        "rust-hdl signals missing in Verilator's trace: {:?}",
+        c.only_a.iter().filter(|n| !gone(n)).collect::<Vec<_>>()
+    );
     assert!(c.compared > 2000, "only {} signals compared", c.compared);
     assert_eq!((c.cycles_a, c.cycles_b), (r.cycles, r.cycles));
     assert!(

@@ -31,9 +31,9 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [11:0] lut$address;
     wire  [63:0] lut$data;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -97,14 +97,6 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     top$lanes$0$shader$lut lut(
         .address(lut$address),
         .data(lut$data)
-    );
-    top$lanes$0$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$0$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
     );
     top$lanes$0$shader$sqrt sqrt(
         .n(sqrt$n),
@@ -371,20 +363,6 @@ module top$lanes$0$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$a_q
-module top$lanes$0$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$0$shader$alpha_gm
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -831,20 +809,6 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
-module top$lanes$0$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$0$shader$reflectance
 module top$lanes$0$shader$sqrt(n,root);
     
     // Module arguments
@@ -1058,9 +1022,9 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [11:0] lut$address;
     wire  [63:0] lut$data;
     reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data;
+    wire  [31:0] reflectance$data = 'h0;
     reg  [15:0] alpha_gm$address;
-    wire  [15:0] alpha_gm$data;
+    wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root;
     reg  [15:0] mul_r$a;
@@ -1124,14 +1088,6 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     top$lanes$1$shader$lut lut(
         .address(lut$address),
         .data(lut$data)
-    );
-    top$lanes$1$shader$reflectance reflectance(
-        .address(reflectance$address),
-        .data(reflectance$data)
-    );
-    top$lanes$1$shader$alpha_gm alpha_gm(
-        .address(alpha_gm$address),
-        .data(alpha_gm$data)
     );
     top$lanes$1$shader$sqrt sqrt(
         .n(sqrt$n),
@@ -1398,20 +1354,6 @@ module top$lanes$1$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$a_q
-module top$lanes$1$shader$alpha_gm(address,data);
-    
-    // Module arguments
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$lanes$1$shader$alpha_gm
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1858,20 +1800,6 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
-module top$lanes$1$shader$reflectance(address,data);
-    
-    // Module arguments
-    input wire  [14:0] address;
-    output reg  [31:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-      
-      default: data = 'h0;
-    endcase
-            
-endmodule // top$lanes$1$shader$reflectance
 module top$lanes$1$shader$sqrt(n,root);
     
     // Module arguments

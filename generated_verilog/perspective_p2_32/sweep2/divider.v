@@ -6,6 +6,9 @@ module top$cfb$lanes$0$div_x(num,den,q,overflow);
     output reg  [31:0] q;
     output reg  overflow;
     
+    // Constant declarations
+    localparam  enabled = 1'b1;
+    
     // Local signals
     reg  [63:0] rem;
     reg  [31:0] quo;
@@ -84,6 +87,10 @@ module top$cfb$lanes$0$div_x(num,den,q,overflow);
             quo = quo | (32'('h1) << ('h10 - 16));
         end
         q = quo;
+        if (~enabled) begin
+            q = 'h0;
+            overflow = 1'b0;
+        end
     end
     
 endmodule // top$cfb$lanes$0$div_x
@@ -95,6 +102,9 @@ module top$cfb$lanes$0$div_y(num,den,q,overflow);
     output reg  [31:0] q;
     output reg  overflow;
     
+    // Constant declarations
+    localparam  enabled = 1'b1;
+    
     // Local signals
     reg  [63:0] rem;
     reg  [31:0] quo;
@@ -173,6 +183,10 @@ module top$cfb$lanes$0$div_y(num,den,q,overflow);
             quo = quo | (32'('h1) << ('h10 - 16));
         end
         q = quo;
+        if (~enabled) begin
+            q = 'h0;
+            overflow = 1'b0;
+        end
     end
     
 endmodule // top$cfb$lanes$0$div_y
@@ -184,6 +198,9 @@ module top$cfb$lanes$1$div_x(num,den,q,overflow);
     output reg  [31:0] q;
     output reg  overflow;
     
+    // Constant declarations
+    localparam  enabled = 1'b1;
+    
     // Local signals
     reg  [63:0] rem;
     reg  [31:0] quo;
@@ -262,6 +279,10 @@ module top$cfb$lanes$1$div_x(num,den,q,overflow);
             quo = quo | (32'('h1) << ('h10 - 16));
         end
         q = quo;
+        if (~enabled) begin
+            q = 'h0;
+            overflow = 1'b0;
+        end
     end
     
 endmodule // top$cfb$lanes$1$div_x
@@ -273,6 +294,9 @@ module top$cfb$lanes$1$div_y(num,den,q,overflow);
     output reg  [31:0] q;
     output reg  overflow;
     
+    // Constant declarations
+    localparam  enabled = 1'b1;
+    
     // Local signals
     reg  [63:0] rem;
     reg  [31:0] quo;
@@ -351,6 +375,10 @@ module top$cfb$lanes$1$div_y(num,den,q,overflow);
             quo = quo | (32'('h1) << ('h10 - 16));
         end
         q = quo;
+        if (~enabled) begin
+            q = 'h0;
+            overflow = 1'b0;
+        end
     end
     
 endmodule // top$cfb$lanes$1$div_y

@@ -114,34 +114,34 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     reg  [15:0] abc$from_right_xp;
     reg  [15:0] abc$from_right_yp;
     reg  [15:0] abc$from_right_zp;
-    wire  [15:0] abc$to_right_xm;
-    wire  [15:0] abc$to_right_ym;
-    wire  [15:0] abc$to_right_zm;
-    wire  [15:0] abc$to_left_xp;
-    wire  [15:0] abc$to_left_yp;
-    wire  [15:0] abc$to_left_zp;
-    wire  abc$o_valid;
-    wire  [15:0] abc$o_value;
-    wire  [15:0] abc$o_x;
-    wire  [15:0] abc$o_y;
-    wire  abc$o_pad;
-    wire  abc$o_invalid;
-    wire  abc$o_dx_neg;
-    wire  [15:0] abc$o_dx_mag;
-    wire  abc$o_dy_neg;
-    wire  [15:0] abc$o_dy_mag;
-    wire  abc$o_sr;
-    wire  abc$o_er;
-    wire  abc$o_edge;
-    wire  [2:0] abc$o_face;
-    wire  [15:0] abc$o_base_x;
-    wire  [15:0] abc$o_base_y;
-    wire  abc$gx_neg;
-    wire  [15:0] abc$gx_mag;
-    wire  abc$gy_neg;
-    wire  [15:0] abc$gy_mag;
-    wire  abc$gz_neg;
-    wire  [15:0] abc$gz_mag;
+    wire  [15:0] abc$to_right_xm = 'h0;
+    wire  [15:0] abc$to_right_ym = 'h0;
+    wire  [15:0] abc$to_right_zm = 'h0;
+    wire  [15:0] abc$to_left_xp = 'h0;
+    wire  [15:0] abc$to_left_yp = 'h0;
+    wire  [15:0] abc$to_left_zp = 'h0;
+    wire  abc$o_valid = 'h0;
+    wire  [15:0] abc$o_value = 'h0;
+    wire  [15:0] abc$o_x = 'h0;
+    wire  [15:0] abc$o_y = 'h0;
+    wire  abc$o_pad = 'h0;
+    wire  abc$o_invalid = 'h0;
+    wire  abc$o_dx_neg = 'h0;
+    wire  [15:0] abc$o_dx_mag = 'h0;
+    wire  abc$o_dy_neg = 'h0;
+    wire  [15:0] abc$o_dy_mag = 'h0;
+    wire  abc$o_sr = 'h0;
+    wire  abc$o_er = 'h0;
+    wire  abc$o_edge = 'h0;
+    wire  [2:0] abc$o_face = 'h0;
+    wire  [15:0] abc$o_base_x = 'h0;
+    wire  [15:0] abc$o_base_y = 'h0;
+    wire  abc$gx_neg = 'h0;
+    wire  [15:0] abc$gx_mag = 'h0;
+    wire  abc$gy_neg = 'h0;
+    wire  [15:0] abc$gy_mag = 'h0;
+    wire  abc$gz_neg = 'h0;
+    wire  [15:0] abc$gz_mag = 'h0;
     reg  shader$clock;
     reg  [15:0] shader$value;
     reg  shader$invalid;
@@ -489,60 +489,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     reg  y_out;
     
     // Sub module instances
-    top$lanes$0$abc abc(
-        .clock(abc$clock),
-        .now(abc$now),
-        .valid(abc$valid),
-        .value(abc$value),
-        .x(abc$x),
-        .y(abc$y),
-        .pad(abc$pad),
-        .invalid(abc$invalid),
-        .dx_neg(abc$dx_neg),
-        .dx_mag(abc$dx_mag),
-        .dy_neg(abc$dy_neg),
-        .dy_mag(abc$dy_mag),
-        .sr(abc$sr),
-        .er(abc$er),
-        .at_edge(abc$at_edge),
-        .face(abc$face),
-        .base_x(abc$base_x),
-        .base_y(abc$base_y),
-        .from_left_xm(abc$from_left_xm),
-        .from_left_ym(abc$from_left_ym),
-        .from_left_zm(abc$from_left_zm),
-        .from_right_xp(abc$from_right_xp),
-        .from_right_yp(abc$from_right_yp),
-        .from_right_zp(abc$from_right_zp),
-        .to_right_xm(abc$to_right_xm),
-        .to_right_ym(abc$to_right_ym),
-        .to_right_zm(abc$to_right_zm),
-        .to_left_xp(abc$to_left_xp),
-        .to_left_yp(abc$to_left_yp),
-        .to_left_zp(abc$to_left_zp),
-        .o_valid(abc$o_valid),
-        .o_value(abc$o_value),
-        .o_x(abc$o_x),
-        .o_y(abc$o_y),
-        .o_pad(abc$o_pad),
-        .o_invalid(abc$o_invalid),
-        .o_dx_neg(abc$o_dx_neg),
-        .o_dx_mag(abc$o_dx_mag),
-        .o_dy_neg(abc$o_dy_neg),
-        .o_dy_mag(abc$o_dy_mag),
-        .o_sr(abc$o_sr),
-        .o_er(abc$o_er),
-        .o_edge(abc$o_edge),
-        .o_face(abc$o_face),
-        .o_base_x(abc$o_base_x),
-        .o_base_y(abc$o_base_y),
-        .gx_neg(abc$gx_neg),
-        .gx_mag(abc$gx_mag),
-        .gy_neg(abc$gy_neg),
-        .gy_mag(abc$gy_mag),
-        .gz_neg(abc$gz_neg),
-        .gz_mag(abc$gz_mag)
-    );
     top$lanes$0$shader shader(
         .clock(shader$clock),
         .value(shader$value),
@@ -2847,34 +2793,34 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     reg  [15:0] abc$from_right_xp;
     reg  [15:0] abc$from_right_yp;
     reg  [15:0] abc$from_right_zp;
-    wire  [15:0] abc$to_right_xm;
-    wire  [15:0] abc$to_right_ym;
-    wire  [15:0] abc$to_right_zm;
-    wire  [15:0] abc$to_left_xp;
-    wire  [15:0] abc$to_left_yp;
-    wire  [15:0] abc$to_left_zp;
-    wire  abc$o_valid;
-    wire  [15:0] abc$o_value;
-    wire  [15:0] abc$o_x;
-    wire  [15:0] abc$o_y;
-    wire  abc$o_pad;
-    wire  abc$o_invalid;
-    wire  abc$o_dx_neg;
-    wire  [15:0] abc$o_dx_mag;
-    wire  abc$o_dy_neg;
-    wire  [15:0] abc$o_dy_mag;
-    wire  abc$o_sr;
-    wire  abc$o_er;
-    wire  abc$o_edge;
-    wire  [2:0] abc$o_face;
-    wire  [15:0] abc$o_base_x;
-    wire  [15:0] abc$o_base_y;
-    wire  abc$gx_neg;
-    wire  [15:0] abc$gx_mag;
-    wire  abc$gy_neg;
-    wire  [15:0] abc$gy_mag;
-    wire  abc$gz_neg;
-    wire  [15:0] abc$gz_mag;
+    wire  [15:0] abc$to_right_xm = 'h0;
+    wire  [15:0] abc$to_right_ym = 'h0;
+    wire  [15:0] abc$to_right_zm = 'h0;
+    wire  [15:0] abc$to_left_xp = 'h0;
+    wire  [15:0] abc$to_left_yp = 'h0;
+    wire  [15:0] abc$to_left_zp = 'h0;
+    wire  abc$o_valid = 'h0;
+    wire  [15:0] abc$o_value = 'h0;
+    wire  [15:0] abc$o_x = 'h0;
+    wire  [15:0] abc$o_y = 'h0;
+    wire  abc$o_pad = 'h0;
+    wire  abc$o_invalid = 'h0;
+    wire  abc$o_dx_neg = 'h0;
+    wire  [15:0] abc$o_dx_mag = 'h0;
+    wire  abc$o_dy_neg = 'h0;
+    wire  [15:0] abc$o_dy_mag = 'h0;
+    wire  abc$o_sr = 'h0;
+    wire  abc$o_er = 'h0;
+    wire  abc$o_edge = 'h0;
+    wire  [2:0] abc$o_face = 'h0;
+    wire  [15:0] abc$o_base_x = 'h0;
+    wire  [15:0] abc$o_base_y = 'h0;
+    wire  abc$gx_neg = 'h0;
+    wire  [15:0] abc$gx_mag = 'h0;
+    wire  abc$gy_neg = 'h0;
+    wire  [15:0] abc$gy_mag = 'h0;
+    wire  abc$gz_neg = 'h0;
+    wire  [15:0] abc$gz_mag = 'h0;
     reg  shader$clock;
     reg  [15:0] shader$value;
     reg  shader$invalid;
@@ -3222,60 +3168,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     reg  y_out;
     
     // Sub module instances
-    top$lanes$1$abc abc(
-        .clock(abc$clock),
-        .now(abc$now),
-        .valid(abc$valid),
-        .value(abc$value),
-        .x(abc$x),
-        .y(abc$y),
-        .pad(abc$pad),
-        .invalid(abc$invalid),
-        .dx_neg(abc$dx_neg),
-        .dx_mag(abc$dx_mag),
-        .dy_neg(abc$dy_neg),
-        .dy_mag(abc$dy_mag),
-        .sr(abc$sr),
-        .er(abc$er),
-        .at_edge(abc$at_edge),
-        .face(abc$face),
-        .base_x(abc$base_x),
-        .base_y(abc$base_y),
-        .from_left_xm(abc$from_left_xm),
-        .from_left_ym(abc$from_left_ym),
-        .from_left_zm(abc$from_left_zm),
-        .from_right_xp(abc$from_right_xp),
-        .from_right_yp(abc$from_right_yp),
-        .from_right_zp(abc$from_right_zp),
-        .to_right_xm(abc$to_right_xm),
-        .to_right_ym(abc$to_right_ym),
-        .to_right_zm(abc$to_right_zm),
-        .to_left_xp(abc$to_left_xp),
-        .to_left_yp(abc$to_left_yp),
-        .to_left_zp(abc$to_left_zp),
-        .o_valid(abc$o_valid),
-        .o_value(abc$o_value),
-        .o_x(abc$o_x),
-        .o_y(abc$o_y),
-        .o_pad(abc$o_pad),
-        .o_invalid(abc$o_invalid),
-        .o_dx_neg(abc$o_dx_neg),
-        .o_dx_mag(abc$o_dx_mag),
-        .o_dy_neg(abc$o_dy_neg),
-        .o_dy_mag(abc$o_dy_mag),
-        .o_sr(abc$o_sr),
-        .o_er(abc$o_er),
-        .o_edge(abc$o_edge),
-        .o_face(abc$o_face),
-        .o_base_x(abc$o_base_x),
-        .o_base_y(abc$o_base_y),
-        .gx_neg(abc$gx_neg),
-        .gx_mag(abc$gx_mag),
-        .gy_neg(abc$gy_neg),
-        .gy_mag(abc$gy_mag),
-        .gz_neg(abc$gz_neg),
-        .gz_mag(abc$gz_mag)
-    );
     top$lanes$1$shader shader(
         .clock(shader$clock),
         .value(shader$value),
