@@ -96,6 +96,7 @@ impl Trace {
         let mut now = 0u64;
         for cmd in parser {
             let cmd = cmd.map_err(|e| bad(&e))?;
+            let mut change = None;
             match cmd {
                 // A repeated timestamp continues the same instant.
                 vcd::Command::Timestamp(t) if t == now => {}
@@ -107,25 +108,17 @@ impl Trace {
                         rose = false;
                     }
                 }
-                vcd::Command::ChangeScalar(id, v) => {
-                    let id = id.to_string();
-                    let v = canonical(&v.to_string());
-                    if id == clock {
-                        rose |= clock_was == "0" && v == "1";
-                        clock_was = v.clone();
-                    }
-                    current.insert(id, v);
-                }
-                vcd::Command::ChangeVector(id, v) => {
-                    let id = id.to_string();
-                    let v = canonical(&v.to_string());
-                    if id == clock {
-                        rose |= clock_was == "0" && v == "1";
-                        clock_was = v.clone();
-                    }
-                    current.insert(id, v);
-                }
+                vcd::Command::ChangeScalar(id, v) => change = Some((id, v.to_string())),
+                vcd::Command::ChangeVector(id, v) => change = Some((id, v.to_string())),
                 _ => {}
+            }
+            if let Some((id, v)) = change {
+                let (id, v) = (id.to_string(), canonical(&v));
+                if id == clock {
+                    rose |= clock_was == "0" && v == "1";
+                    clock_was = v.clone();
+                }
+                current.insert(id, v);
             }
         }
         if rose {
