@@ -546,15 +546,15 @@ module top$lanes$0$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$abc$ring_xm
@@ -570,15 +570,15 @@ module top$lanes$0$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$abc$ring_xp
@@ -594,15 +594,15 @@ module top$lanes$0$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$abc$ring_ym
@@ -618,15 +618,15 @@ module top$lanes$0$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$abc$ring_yp
@@ -642,15 +642,15 @@ module top$lanes$0$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$abc$ring_zm
@@ -1202,15 +1202,15 @@ module top$lanes$1$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$abc$ring_xm
@@ -1226,15 +1226,15 @@ module top$lanes$1$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$abc$ring_xp
@@ -1250,15 +1250,15 @@ module top$lanes$1$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$abc$ring_ym
@@ -1274,15 +1274,15 @@ module top$lanes$1$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$abc$ring_yp
@@ -1298,15 +1298,15 @@ module top$lanes$1$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$abc$ring_zm
@@ -1858,15 +1858,15 @@ module top$lanes$2$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$abc$ring_xm
@@ -1882,15 +1882,15 @@ module top$lanes$2$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$abc$ring_xp
@@ -1906,15 +1906,15 @@ module top$lanes$2$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$abc$ring_ym
@@ -1930,15 +1930,15 @@ module top$lanes$2$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$abc$ring_yp
@@ -1954,15 +1954,15 @@ module top$lanes$2$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$abc$ring_zm
@@ -2514,15 +2514,15 @@ module top$lanes$3$abc$ring_xm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$abc$ring_xm
@@ -2538,15 +2538,15 @@ module top$lanes$3$abc$ring_xp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$abc$ring_xp
@@ -2562,15 +2562,15 @@ module top$lanes$3$abc$ring_ym(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$abc$ring_ym
@@ -2586,15 +2586,15 @@ module top$lanes$3$abc$ring_yp(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$abc$ring_yp
@@ -2610,15 +2610,15 @@ module top$lanes$3$abc$ring_zm(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$abc$ring_zm

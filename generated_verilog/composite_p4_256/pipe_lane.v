@@ -2238,15 +2238,15 @@ module top$lanes$0$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring0
@@ -2262,15 +2262,15 @@ module top$lanes$0$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring1
@@ -2286,15 +2286,15 @@ module top$lanes$0$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring2
@@ -2310,15 +2310,15 @@ module top$lanes$0$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring3
@@ -2334,15 +2334,15 @@ module top$lanes$0$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring4
@@ -2358,15 +2358,15 @@ module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring5
@@ -2382,15 +2382,15 @@ module top$lanes$0$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring6
@@ -2406,15 +2406,15 @@ module top$lanes$0$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring7
@@ -2430,15 +2430,15 @@ module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring8
@@ -4971,15 +4971,15 @@ module top$lanes$1$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring0
@@ -4995,15 +4995,15 @@ module top$lanes$1$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring1
@@ -5019,15 +5019,15 @@ module top$lanes$1$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring2
@@ -5043,15 +5043,15 @@ module top$lanes$1$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring3
@@ -5067,15 +5067,15 @@ module top$lanes$1$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring4
@@ -5091,15 +5091,15 @@ module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring5
@@ -5115,15 +5115,15 @@ module top$lanes$1$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring6
@@ -5139,15 +5139,15 @@ module top$lanes$1$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring7
@@ -5163,15 +5163,15 @@ module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring8
@@ -7704,15 +7704,15 @@ module top$lanes$2$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring0
@@ -7728,15 +7728,15 @@ module top$lanes$2$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring1
@@ -7752,15 +7752,15 @@ module top$lanes$2$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring2
@@ -7776,15 +7776,15 @@ module top$lanes$2$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring3
@@ -7800,15 +7800,15 @@ module top$lanes$2$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring4
@@ -7824,15 +7824,15 @@ module top$lanes$2$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring5
@@ -7848,15 +7848,15 @@ module top$lanes$2$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring6
@@ -7872,15 +7872,15 @@ module top$lanes$2$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring7
@@ -7896,15 +7896,15 @@ module top$lanes$2$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring8
@@ -10437,15 +10437,15 @@ module top$lanes$3$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring0
@@ -10461,15 +10461,15 @@ module top$lanes$3$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring1
@@ -10485,15 +10485,15 @@ module top$lanes$3$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring2
@@ -10509,15 +10509,15 @@ module top$lanes$3$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring3
@@ -10533,15 +10533,15 @@ module top$lanes$3$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring4
@@ -10557,15 +10557,15 @@ module top$lanes$3$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring5
@@ -10581,15 +10581,15 @@ module top$lanes$3$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring6
@@ -10605,15 +10605,15 @@ module top$lanes$3$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring7
@@ -10629,15 +10629,15 @@ module top$lanes$3$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[32767:0];
+    reg [31:0] mem[32767:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[14:0]];
+       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= write_data;
+          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring8

@@ -1196,15 +1196,15 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$0$memory
@@ -1936,15 +1936,15 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$1$memory
@@ -2676,15 +2676,15 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$2$memory
@@ -3416,15 +3416,15 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[65535:0];
+    reg [7:0] mem[65535:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
+       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
+          mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$3$memory

@@ -121,9 +121,16 @@ impl<const H: usize> AbcGradient<H> {
         crate::cfb::bits_for((2 * s + b + 9) as u64) as usize
     }
 
-    /// `s` beats per slice, `b` per beam, `p` pipelines. Without `enabled`
-    /// (a scene without gradients) the rings are 2-word stubs.
-    pub fn new(s: u32, b: u32, p: u32, enabled: bool) -> AbcGradient<H> {
+    /// `s` beats per slice, `b` per beam, `p` pipelines, voxels of
+    /// `voxel_bits`. Without `enabled` (a scene without gradients) the rings
+    /// are 2-word stubs.
+    pub fn new(s: u32, b: u32, p: u32, voxel_bits: u32, enabled: bool) -> AbcGradient<H> {
+        let ring = |bits: usize| {
+            DepthRam::new(bits).fields(
+                &[(0, voxel_bits as usize)],
+                ((1u64 << voxel_bits) - 1).to_bits(),
+            )
+        };
         let bits = if enabled {
             Self::ring_bits(s, b).min(H)
         } else {
@@ -189,11 +196,11 @@ impl<const H: usize> AbcGradient<H> {
             gz_neg: Default::default(),
             gz_mag: Default::default(),
             centre: DepthRam::new(bits),
-            ring_xm: DepthRam::new(bits),
-            ring_ym: DepthRam::new(bits),
-            ring_zm: DepthRam::new(bits),
-            ring_xp: DepthRam::new(bits),
-            ring_yp: DepthRam::new(bits),
+            ring_xm: ring(bits),
+            ring_ym: ring(bits),
+            ring_zm: ring(bits),
+            ring_xp: ring(bits),
+            ring_yp: ring(bits),
             hop_xm: Default::default(),
             hop_ym: Default::default(),
             hop_zm: Default::default(),

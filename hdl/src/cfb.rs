@@ -57,6 +57,8 @@ pub struct CfbConfig {
     /// Address bits of an on-chip memory module: it holds
     /// `ceil(n_u / P) * n_v * n_w` voxels.
     pub memory_bits: u32,
+    /// Bits stored per voxel (the scene's voxel bits; 16 by default).
+    pub voxel_bits: u32,
 }
 
 impl CfbConfig {
@@ -92,6 +94,7 @@ impl CfbConfig {
             frac: sweep.frac,
             external_memory: false,
             memory_bits: bits_for((vol_dims[0].div_ceil(p) * vol_dims[1] * vol_dims[2]) as u64),
+            voxel_bits: 16,
         })
     }
 
@@ -264,7 +267,11 @@ impl<const A: usize> CfbLane<A> {
                 1
             } else {
                 (c.memory_bits as usize).min(A)
-            }),
+            })
+            .fields(
+                &[(0, c.voxel_bits as usize)],
+                ((1u64 << c.voxel_bits) - 1).to_bits(),
+            ),
             lane: Constant::new(bits16(k)),
             p_mask: Constant::new(bits16(p - 1)),
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),

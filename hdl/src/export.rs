@@ -464,9 +464,12 @@ lint_off -rule DECLFILENAME -file "*compositor.v"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$z'*"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$address'*"
 // Ring buffers and memory modules are as deep as the scene needs: they take
-// the pipeline's 16-bit addresses and use only the low address bits.
+// the pipeline's 16-bit addresses and use only the low address bits,
 lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
 lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_address'*"
+// and store only the bits the scene can set: the voxel bits of a voxel, and
+// four channels of RGBA bits in the 16-bit slots of a composited word.
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_data'*"
 // The bilinear unit's four channels share one 32-bit datapath, which X-ray
 // needs for its sum in channel 0; channels 1-3 carry 16-bit values.
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"

@@ -78,6 +78,12 @@ pub struct PipelineConfig {
     /// Beats per slice and per beam.
     pub slice_beats: u32,
     pub beam_beats: u32,
+    pub voxel_bits: u32,
+    /// Bit fields `(lowest bit, width)` of a composited word that can be
+    /// non-zero, which the compositing-buffer rings store: four `rgba_bits`
+    /// channels in 16-bit slots; the intensity for MIP/MinIP; the 32-bit sum
+    /// for X-ray.
+    pub ring_fields: Vec<(usize, usize)>,
 }
 
 impl PipelineConfig {
@@ -87,7 +93,8 @@ impl PipelineConfig {
         p: usize,
         shader: &golden_model::shader::Shader,
     ) -> Result<PipelineConfig, String> {
-        let cfb = CfbConfig::from_sweep(sweep, vol_dims, p)?;
+        let mut cfb = CfbConfig::from_sweep(sweep, vol_dims, p)?;
+        cfb.voxel_bits = shader.voxel_bits;
         let cfb = if shader.needs_gradient {
             cfb.with_halo()
         } else {
@@ -129,6 +136,14 @@ impl PipelineConfig {
             gradient: shader.needs_gradient,
             slice_beats: s,
             beam_beats: b,
+            voxel_bits: shader.voxel_bits,
+            ring_fields: match shader.mode {
+                Mode::Mip | Mode::Minip => vec![(0, shader.voxel_bits as usize)],
+                Mode::Xray => vec![(0, 32)],
+                Mode::Composite | Mode::FirstOpaque => (0..4)
+                    .map(|c| (16 * c, shader.rgba_bits as usize))
+                    .collect(),
+            },
             reset: golden_model::compositor::reset_value(shader.mode, shader.voxel_bits),
         })
     }
@@ -155,6 +170,16 @@ impl PipelineConfig {
         };
         self.tap_bits().max(abc)
     }
+}
+
+/// A compositing-buffer ring: as deep as the taps' delays, as wide as the
+/// composited values can be.
+fn tap_ring<const H: usize>(c: &PipelineConfig) -> DepthRam<Bits<64>, H> {
+    let mask = c
+        .ring_fields
+        .iter()
+        .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo);
+    DepthRam::new(c.tap_bits().min(H)).fields(&c.ring_fields, mask.to_bits())
 }
 
 fn pack(v: [u32; 4]) -> u64 {
@@ -415,7 +440,7 @@ impl<const H: usize> PipeLane<H> {
             px_x: Default::default(),
             px_y: Default::default(),
             px_face: Default::default(),
-            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p, c.gradient),
+            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p, c.voxel_bits, c.gradient),
             use_gradient: Constant::new(c.gradient),
             st_valid: Default::default(),
             st_value: Default::default(),
@@ -457,14 +482,14 @@ impl<const H: usize> PipeLane<H> {
             t8s0: Default::default(),
             t8i1: Default::default(),
             t8il: Default::default(),
-            ring0: DepthRam::new(c.tap_bits().min(H)),
+            ring0: tap_ring(c),
             f0_1: Default::default(),
             s0: Default::default(),
             a0: Default::default(),
             prev0: Default::default(),
             hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
             off0: Constant::new(off(&c.taps[0]).to_bits()),
-            ring1: DepthRam::new(c.tap_bits().min(H)),
+            ring1: tap_ring(c),
             f1_1: Default::default(),
             f1_2: Default::default(),
             s1: Default::default(),
@@ -472,12 +497,12 @@ impl<const H: usize> PipeLane<H> {
             prev1: Default::default(),
             hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
             off1: Constant::new(off(&c.taps[1]).to_bits()),
-            ring2: DepthRam::new(c.tap_bits().min(H)),
+            ring2: tap_ring(c),
             s2: Default::default(),
             a2: Default::default(),
             prev2: Default::default(),
             off2: Constant::new(off(&c.taps[2]).to_bits()),
-            ring3: DepthRam::new(c.tap_bits().min(H)),
+            ring3: tap_ring(c),
             f3_1: Default::default(),
             f3_2: Default::default(),
             s3: Default::default(),
@@ -485,12 +510,12 @@ impl<const H: usize> PipeLane<H> {
             prev3: Default::default(),
             hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
             off3: Constant::new(off(&c.taps[3]).to_bits()),
-            ring4: DepthRam::new(c.tap_bits().min(H)),
+            ring4: tap_ring(c),
             s4: Default::default(),
             a4: Default::default(),
             prev4: Default::default(),
             off4: Constant::new(off(&c.taps[4]).to_bits()),
-            ring5: DepthRam::new(c.tap_bits().min(H)),
+            ring5: tap_ring(c),
             f5_1: Default::default(),
             f5_2: Default::default(),
             f5_3: Default::default(),
@@ -499,21 +524,21 @@ impl<const H: usize> PipeLane<H> {
             prev5: Default::default(),
             hops5: Constant::new((c.taps[5].hops as u64).to_bits()),
             off5: Constant::new(off(&c.taps[5]).to_bits()),
-            ring6: DepthRam::new(c.tap_bits().min(H)),
+            ring6: tap_ring(c),
             f6_1: Default::default(),
             s6: Default::default(),
             a6: Default::default(),
             prev6: Default::default(),
             hops6: Constant::new((c.taps[6].hops as u64).to_bits()),
             off6: Constant::new(off(&c.taps[6]).to_bits()),
-            ring7: DepthRam::new(c.tap_bits().min(H)),
+            ring7: tap_ring(c),
             f7_1: Default::default(),
             s7: Default::default(),
             a7: Default::default(),
             prev7: Default::default(),
             hops7: Constant::new((c.taps[7].hops as u64).to_bits()),
             off7: Constant::new(off(&c.taps[7]).to_bits()),
-            ring8: DepthRam::new(c.tap_bits().min(H)),
+            ring8: tap_ring(c),
             f8_1: Default::default(),
             s8: Default::default(),
             a8: Default::default(),

@@ -1004,15 +1004,15 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[16383:0];
+    reg [7:0] mem[16383:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[13:0]];
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= write_data;
+          mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$0$memory
@@ -1756,15 +1756,15 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[16383:0];
+    reg [7:0] mem[16383:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[13:0]];
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= write_data;
+          mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$cfb$lanes$1$memory

@@ -2184,15 +2184,15 @@ module top$lanes$0$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring0
@@ -2208,15 +2208,15 @@ module top$lanes$0$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring1
@@ -2232,15 +2232,15 @@ module top$lanes$0$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring2
@@ -2256,15 +2256,15 @@ module top$lanes$0$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring3
@@ -2280,15 +2280,15 @@ module top$lanes$0$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring4
@@ -2304,15 +2304,15 @@ module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring5
@@ -2328,15 +2328,15 @@ module top$lanes$0$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring6
@@ -2352,15 +2352,15 @@ module top$lanes$0$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring7
@@ -2376,15 +2376,15 @@ module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring8
@@ -4863,15 +4863,15 @@ module top$lanes$1$ring0(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring0
@@ -4887,15 +4887,15 @@ module top$lanes$1$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring1
@@ -4911,15 +4911,15 @@ module top$lanes$1$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring2
@@ -4935,15 +4935,15 @@ module top$lanes$1$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring3
@@ -4959,15 +4959,15 @@ module top$lanes$1$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring4
@@ -4983,15 +4983,15 @@ module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring5
@@ -5007,15 +5007,15 @@ module top$lanes$1$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring6
@@ -5031,15 +5031,15 @@ module top$lanes$1$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring7
@@ -5055,15 +5055,15 @@ module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [63:0] mem[1023:0];
+    reg [31:0] mem[1023:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[9:0]];
+       read_data <= {8'd0, mem[read_address[9:0]][31:24], 8'd0, mem[read_address[9:0]][23:16], 8'd0, mem[read_address[9:0]][15:8], 8'd0, mem[read_address[9:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= write_data;
+          mem[write_address[9:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring8
