@@ -215,6 +215,7 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -223,6 +224,9 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
@@ -274,6 +278,7 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -282,6 +287,9 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
@@ -333,6 +341,7 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -341,6 +350,9 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
@@ -392,6 +404,7 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -400,6 +413,9 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
@@ -688,6 +704,7 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -696,6 +713,9 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
@@ -747,6 +767,7 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -755,6 +776,9 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
@@ -806,6 +830,7 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -814,6 +839,9 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
@@ -865,6 +893,7 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -873,6 +902,9 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
@@ -1161,6 +1193,7 @@ module top$lanes$2$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1169,6 +1202,9 @@ module top$lanes$2$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$2$compositor$ch_a$mul
@@ -1220,6 +1256,7 @@ module top$lanes$2$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1228,6 +1265,9 @@ module top$lanes$2$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$2$compositor$ch_b$mul
@@ -1279,6 +1319,7 @@ module top$lanes$2$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1287,6 +1328,9 @@ module top$lanes$2$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$2$compositor$ch_g$mul
@@ -1338,6 +1382,7 @@ module top$lanes$2$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1346,6 +1391,9 @@ module top$lanes$2$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$2$compositor$ch_r$mul
@@ -1634,6 +1682,7 @@ module top$lanes$3$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1642,6 +1691,9 @@ module top$lanes$3$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$3$compositor$ch_a$mul
@@ -1693,6 +1745,7 @@ module top$lanes$3$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1701,6 +1754,9 @@ module top$lanes$3$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$3$compositor$ch_b$mul
@@ -1752,6 +1808,7 @@ module top$lanes$3$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1760,6 +1817,9 @@ module top$lanes$3$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$3$compositor$ch_g$mul
@@ -1811,6 +1871,7 @@ module top$lanes$3$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1819,6 +1880,9 @@ module top$lanes$3$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$3$compositor$ch_r$mul

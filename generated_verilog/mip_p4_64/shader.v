@@ -35,25 +35,25 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y;
+    wire  [15:0] mul_r$y = 'h0;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y;
+    wire  [15:0] mul_g$y = 'h0;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
-    wire  [15:0] lit_r$y;
+    wire  [15:0] lit_r$y = 'h0;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
-    wire  [15:0] lit_g$y;
+    wire  [15:0] lit_g$y = 'h0;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
-    wire  [15:0] lit_b$y;
+    wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -94,40 +94,6 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$0$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
-    );
-    top$lanes$0$shader$mul_r mul_r(
-        .a(mul_r$a),
-        .b(mul_r$b),
-        .y(mul_r$y)
-    );
-    top$lanes$0$shader$mul_g mul_g(
-        .a(mul_g$a),
-        .b(mul_g$b),
-        .y(mul_g$y)
-    );
-    top$lanes$0$shader$mul_b mul_b(
-        .a(mul_b$a),
-        .b(mul_b$b),
-        .y(mul_b$y)
-    );
-    top$lanes$0$shader$lit_r lit_r(
-        .a(lit_r$a),
-        .b(lit_r$b),
-        .y(lit_r$y)
-    );
-    top$lanes$0$shader$lit_g lit_g(
-        .a(lit_g$a),
-        .b(lit_g$b),
-        .y(lit_g$y)
-    );
-    top$lanes$0$shader$lit_b lit_b(
-        .a(lit_b$a),
-        .b(lit_b$b),
-        .y(lit_b$y)
-    );
     top$lanes$0$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -393,132 +359,6 @@ module top$lanes$0$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$g_q
-module top$lanes$0$shader$lit_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$lit_b
-module top$lanes$0$shader$lit_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$lit_g
-module top$lanes$0$shader$lit_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$lit_r
-module top$lanes$0$shader$mul_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$mul_b
-module top$lanes$0$shader$mul_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$mul_g
-module top$lanes$0$shader$mul_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$0$shader$mul_r
 module top$lanes$0$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -536,169 +376,6 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
-module top$lanes$0$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$0$shader$sqrt
 module top$lanes$0$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -753,25 +430,25 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y;
+    wire  [15:0] mul_r$y = 'h0;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y;
+    wire  [15:0] mul_g$y = 'h0;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
-    wire  [15:0] lit_r$y;
+    wire  [15:0] lit_r$y = 'h0;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
-    wire  [15:0] lit_g$y;
+    wire  [15:0] lit_g$y = 'h0;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
-    wire  [15:0] lit_b$y;
+    wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -812,40 +489,6 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$1$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
-    );
-    top$lanes$1$shader$mul_r mul_r(
-        .a(mul_r$a),
-        .b(mul_r$b),
-        .y(mul_r$y)
-    );
-    top$lanes$1$shader$mul_g mul_g(
-        .a(mul_g$a),
-        .b(mul_g$b),
-        .y(mul_g$y)
-    );
-    top$lanes$1$shader$mul_b mul_b(
-        .a(mul_b$a),
-        .b(mul_b$b),
-        .y(mul_b$y)
-    );
-    top$lanes$1$shader$lit_r lit_r(
-        .a(lit_r$a),
-        .b(lit_r$b),
-        .y(lit_r$y)
-    );
-    top$lanes$1$shader$lit_g lit_g(
-        .a(lit_g$a),
-        .b(lit_g$b),
-        .y(lit_g$y)
-    );
-    top$lanes$1$shader$lit_b lit_b(
-        .a(lit_b$a),
-        .b(lit_b$b),
-        .y(lit_b$y)
-    );
     top$lanes$1$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -1111,132 +754,6 @@ module top$lanes$1$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$g_q
-module top$lanes$1$shader$lit_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$lit_b
-module top$lanes$1$shader$lit_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$lit_g
-module top$lanes$1$shader$lit_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$lit_r
-module top$lanes$1$shader$mul_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$mul_b
-module top$lanes$1$shader$mul_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$mul_g
-module top$lanes$1$shader$mul_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$1$shader$mul_r
 module top$lanes$1$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1254,169 +771,6 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
-module top$lanes$1$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$1$shader$sqrt
 module top$lanes$1$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -1471,25 +825,25 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y;
+    wire  [15:0] mul_r$y = 'h0;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y;
+    wire  [15:0] mul_g$y = 'h0;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
-    wire  [15:0] lit_r$y;
+    wire  [15:0] lit_r$y = 'h0;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
-    wire  [15:0] lit_g$y;
+    wire  [15:0] lit_g$y = 'h0;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
-    wire  [15:0] lit_b$y;
+    wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -1530,40 +884,6 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$2$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
-    );
-    top$lanes$2$shader$mul_r mul_r(
-        .a(mul_r$a),
-        .b(mul_r$b),
-        .y(mul_r$y)
-    );
-    top$lanes$2$shader$mul_g mul_g(
-        .a(mul_g$a),
-        .b(mul_g$b),
-        .y(mul_g$y)
-    );
-    top$lanes$2$shader$mul_b mul_b(
-        .a(mul_b$a),
-        .b(mul_b$b),
-        .y(mul_b$y)
-    );
-    top$lanes$2$shader$lit_r lit_r(
-        .a(lit_r$a),
-        .b(lit_r$b),
-        .y(lit_r$y)
-    );
-    top$lanes$2$shader$lit_g lit_g(
-        .a(lit_g$a),
-        .b(lit_g$b),
-        .y(lit_g$y)
-    );
-    top$lanes$2$shader$lit_b lit_b(
-        .a(lit_b$a),
-        .b(lit_b$b),
-        .y(lit_b$y)
-    );
     top$lanes$2$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -1829,132 +1149,6 @@ module top$lanes$2$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$g_q
-module top$lanes$2$shader$lit_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$lit_b
-module top$lanes$2$shader$lit_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$lit_g
-module top$lanes$2$shader$lit_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$lit_r
-module top$lanes$2$shader$mul_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$mul_b
-module top$lanes$2$shader$mul_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$mul_g
-module top$lanes$2$shader$mul_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$2$shader$mul_r
 module top$lanes$2$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1972,169 +1166,6 @@ module top$lanes$2$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$r_q
-module top$lanes$2$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$2$shader$sqrt
 module top$lanes$2$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -2189,25 +1220,25 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y;
+    wire  [15:0] mul_r$y = 'h0;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y;
+    wire  [15:0] mul_g$y = 'h0;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
-    wire  [15:0] lit_r$y;
+    wire  [15:0] lit_r$y = 'h0;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
-    wire  [15:0] lit_g$y;
+    wire  [15:0] lit_g$y = 'h0;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
-    wire  [15:0] lit_b$y;
+    wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -2248,40 +1279,6 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$3$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
-    );
-    top$lanes$3$shader$mul_r mul_r(
-        .a(mul_r$a),
-        .b(mul_r$b),
-        .y(mul_r$y)
-    );
-    top$lanes$3$shader$mul_g mul_g(
-        .a(mul_g$a),
-        .b(mul_g$b),
-        .y(mul_g$y)
-    );
-    top$lanes$3$shader$mul_b mul_b(
-        .a(mul_b$a),
-        .b(mul_b$b),
-        .y(mul_b$y)
-    );
-    top$lanes$3$shader$lit_r lit_r(
-        .a(lit_r$a),
-        .b(lit_r$b),
-        .y(lit_r$y)
-    );
-    top$lanes$3$shader$lit_g lit_g(
-        .a(lit_g$a),
-        .b(lit_g$b),
-        .y(lit_g$y)
-    );
-    top$lanes$3$shader$lit_b lit_b(
-        .a(lit_b$a),
-        .b(lit_b$b),
-        .y(lit_b$y)
-    );
     top$lanes$3$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -2547,132 +1544,6 @@ module top$lanes$3$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$g_q
-module top$lanes$3$shader$lit_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$lit_b
-module top$lanes$3$shader$lit_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$lit_g
-module top$lanes$3$shader$lit_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$lit_r
-module top$lanes$3$shader$mul_b(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$mul_b
-module top$lanes$3$shader$mul_g(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$mul_g
-module top$lanes$3$shader$mul_r(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    always @(*) begin
-        t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
-    end
-    
-endmodule // top$lanes$3$shader$mul_r
 module top$lanes$3$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -2690,169 +1561,6 @@ module top$lanes$3$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$r_q
-module top$lanes$3$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$3$shader$sqrt
 module top$lanes$3$shader$valid_q(d,q,clock);
     
     // Module arguments

@@ -114,8 +114,14 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
     }
     if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
         v.push(LeftOut {
-            name: "gradient_opacity_lut",
-            instances: &["alpha_gm"],
+            name: "gradient_opacity_lut_and_magnitude",
+            instances: &["alpha_gm", "sqrt"],
+        });
+    }
+    if !golden.mode.uses_colour() {
+        v.push(LeftOut {
+            name: "shading_and_weighting_multipliers",
+            instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
         });
     }
     if config.cfb.eye.is_none() {

@@ -33,13 +33,29 @@ pub const REFLECTANCE_BITS: usize = 15;
 
 /// `floor(sqrt(n))` of a 35-bit `n`, digit by digit (shifts, compares and
 /// subtracts; no multiplier), combinational.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 struct IntSqrt {
     pub n: Signal<In, Bits<64>>,
     pub root: Signal<Out, Bits<32>>,
     op: Signal<Local, Bits<64>>,
     res: Signal<Local, Bits<64>>,
     trial: Signal<Local, Bits<64>>,
+    enabled: Constant<Bit>,
+}
+
+impl IntSqrt {
+    /// Without `enabled` (no gradient opacity) the root is zero, as in the
+    /// emitted Verilog, which leaves the unit out (`export::prune`).
+    fn new(enabled: bool) -> IntSqrt {
+        IntSqrt {
+            n: Default::default(),
+            root: Default::default(),
+            op: Default::default(),
+            res: Default::default(),
+            trial: Default::default(),
+            enabled: Constant::new(enabled),
+        }
+    }
 }
 
 impl Logic for IntSqrt {
@@ -58,6 +74,9 @@ impl Logic for IntSqrt {
             }
         }
         self.root.next = bit_cast::<32, 64>(self.res.val());
+        if !self.enabled.val() {
+            self.root.next = 0.into();
+        }
     }
 }
 
@@ -201,6 +220,9 @@ impl Shader {
                 .into(),
             None => Vec::<Bits<32>>::new().into_iter().into(),
         };
+        // The colour path (shading and opacity weighting) serves composite and
+        // first-opaque only.
+        let colour = golden.mode.uses_colour();
         Ok(Shader {
             clock: Default::default(),
             value: Default::default(),
@@ -220,7 +242,7 @@ impl Shader {
             lut,
             reflectance,
             alpha_gm,
-            sqrt: Default::default(),
+            sqrt: IntSqrt::new(gm_shift.is_some()),
             sq_x: Default::default(),
             sq_y: Default::default(),
             sq_z: Default::default(),
@@ -234,12 +256,12 @@ impl Shader {
             edge_transparent: Constant::new(golden.needs_gradient),
             shift: Constant::new((shift as u64).to_bits()),
             m_max: Constant::new((m as u64).to_bits()),
-            mul_r: MulUnorm::new(golden.rgba_bits),
-            mul_g: MulUnorm::new(golden.rgba_bits),
-            mul_b: MulUnorm::new(golden.rgba_bits),
-            lit_r: MulUnorm::new(golden.rgba_bits),
-            lit_g: MulUnorm::new(golden.rgba_bits),
-            lit_b: MulUnorm::new(golden.rgba_bits),
+            mul_r: MulUnorm::enabled(golden.rgba_bits, colour),
+            mul_g: MulUnorm::enabled(golden.rgba_bits, colour),
+            mul_b: MulUnorm::enabled(golden.rgba_bits, colour),
+            lit_r: MulUnorm::enabled(golden.rgba_bits, colour),
+            lit_g: MulUnorm::enabled(golden.rgba_bits, colour),
+            lit_b: MulUnorm::enabled(golden.rgba_bits, colour),
             alpha: Default::default(),
             m: Default::default(),
             bl: Default::default(),

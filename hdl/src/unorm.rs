@@ -12,10 +12,17 @@ pub struct MulUnorm {
     half: Constant<Bits<32>>,
     shift: Constant<Bits<8>>,
     t: Signal<Local, Bits<32>>,
+    enabled: Constant<Bit>,
 }
 
 impl MulUnorm {
     pub fn new(bits: u32) -> MulUnorm {
+        MulUnorm::enabled(bits, true)
+    }
+
+    /// Without `enabled` the product is zero, as in emitted Verilog that
+    /// leaves the multiplier out (`export::prune`).
+    pub fn enabled(bits: u32, enabled: bool) -> MulUnorm {
         MulUnorm {
             a: Default::default(),
             b: Default::default(),
@@ -23,6 +30,7 @@ impl MulUnorm {
             half: Constant::new((1u64 << (bits - 1)).to_bits()),
             shift: Constant::new((bits as u64).to_bits()),
             t: Default::default(),
+            enabled: Constant::new(enabled),
         }
     }
 }
@@ -34,5 +42,8 @@ impl Logic for MulUnorm {
         self.y.next = bit_cast::<16, 32>(
             (self.t.val() + (self.t.val() >> self.shift.val())) >> self.shift.val(),
         );
+        if !self.enabled.val() {
+            self.y.next = 0.into();
+        }
     }
 }

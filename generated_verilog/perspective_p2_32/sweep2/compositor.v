@@ -215,6 +215,7 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -223,6 +224,9 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
@@ -274,6 +278,7 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -282,6 +287,9 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
@@ -333,6 +341,7 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -341,6 +350,9 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
@@ -392,6 +404,7 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -400,6 +413,9 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
@@ -688,6 +704,7 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -696,6 +713,9 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
@@ -747,6 +767,7 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -755,6 +776,9 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
@@ -806,6 +830,7 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -814,6 +839,9 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
@@ -865,6 +893,7 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -873,6 +902,9 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul

@@ -35,7 +35,7 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
@@ -97,10 +97,6 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     top$lanes$0$shader$lut lut(
         .address(lut$address),
         .data(lut$data)
-    );
-    top$lanes$0$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
     );
     top$lanes$0$shader$mul_r mul_r(
         .a(mul_r$a),
@@ -407,6 +403,7 @@ module top$lanes$0$shader$lit_b(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -415,6 +412,9 @@ module top$lanes$0$shader$lit_b(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$lit_b
@@ -428,6 +428,7 @@ module top$lanes$0$shader$lit_g(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -436,6 +437,9 @@ module top$lanes$0$shader$lit_g(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$lit_g
@@ -449,6 +453,7 @@ module top$lanes$0$shader$lit_r(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -457,6 +462,9 @@ module top$lanes$0$shader$lit_r(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$lit_r
@@ -739,6 +747,7 @@ module top$lanes$0$shader$mul_b(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -747,6 +756,9 @@ module top$lanes$0$shader$mul_b(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$mul_b
@@ -760,6 +772,7 @@ module top$lanes$0$shader$mul_g(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -768,6 +781,9 @@ module top$lanes$0$shader$mul_g(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$mul_g
@@ -781,6 +797,7 @@ module top$lanes$0$shader$mul_r(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -789,6 +806,9 @@ module top$lanes$0$shader$mul_r(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$0$shader$mul_r
@@ -809,169 +829,6 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
-module top$lanes$0$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$0$shader$sqrt
 module top$lanes$0$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -1026,7 +883,7 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root;
+    wire  [31:0] sqrt$root = 'h0;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
@@ -1088,10 +945,6 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     top$lanes$1$shader$lut lut(
         .address(lut$address),
         .data(lut$data)
-    );
-    top$lanes$1$shader$sqrt sqrt(
-        .n(sqrt$n),
-        .root(sqrt$root)
     );
     top$lanes$1$shader$mul_r mul_r(
         .a(mul_r$a),
@@ -1398,6 +1251,7 @@ module top$lanes$1$shader$lit_b(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1406,6 +1260,9 @@ module top$lanes$1$shader$lit_b(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$lit_b
@@ -1419,6 +1276,7 @@ module top$lanes$1$shader$lit_g(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1427,6 +1285,9 @@ module top$lanes$1$shader$lit_g(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$lit_g
@@ -1440,6 +1301,7 @@ module top$lanes$1$shader$lit_r(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1448,6 +1310,9 @@ module top$lanes$1$shader$lit_r(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$lit_r
@@ -1730,6 +1595,7 @@ module top$lanes$1$shader$mul_b(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1738,6 +1604,9 @@ module top$lanes$1$shader$mul_b(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$mul_b
@@ -1751,6 +1620,7 @@ module top$lanes$1$shader$mul_g(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1759,6 +1629,9 @@ module top$lanes$1$shader$mul_g(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$mul_g
@@ -1772,6 +1645,7 @@ module top$lanes$1$shader$mul_r(a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Local signals
     reg  [31:0] t;
@@ -1780,6 +1654,9 @@ module top$lanes$1$shader$mul_r(a,b,y);
     always @(*) begin
         t = a * b + half;
         y = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y = 'h0;
+        end
     end
     
 endmodule // top$lanes$1$shader$mul_r
@@ -1800,169 +1677,6 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
-module top$lanes$1$shader$sqrt(n,root);
-    
-    // Module arguments
-    input wire  [63:0] n;
-    output reg  [31:0] root;
-    
-    // Local signals
-    reg  [63:0] op;
-    reg  [63:0] res;
-    reg  [63:0] trial;
-    
-    // Update code
-    always @(*) begin
-        op = n;
-        res = 'h0;
-        trial = res + (64'('h1) << ('h22 - 'h2 * 0));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 0));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 1));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 1));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 2));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 2));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 3));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 3));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 4));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 4));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 5));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 5));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 6));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 6));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 7));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 7));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 8));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 8));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 9));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 9));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 10));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 10));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 11));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 11));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 12));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 12));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 13));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 13));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 14));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 14));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 15));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 15));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 16));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 16));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        trial = res + (64'('h1) << ('h22 - 'h2 * 17));
-        if (op >= trial) begin
-            op = op - trial;
-            res = (res >> 'h1) + (64'('h1) << ('h22 - 'h2 * 17));
-        end
-        else begin
-            res = res >> 'h1;
-        end
-        root = 32'(res);
-    end
-    
-endmodule // top$lanes$1$shader$sqrt
 module top$lanes$1$shader$valid_q(d,q,clock);
     
     // Module arguments
