@@ -24,10 +24,12 @@
 //! ER, goes out as a base-plane pixel. A tap needs delay > hops + 4, i.e.
 //! (n_y - 1) * b >= 9.
 //!
-//! Units a scene does not need are disabled by constants (so synthesis removes
-//! them) and get empty tables: the gradient unit and reflectance map without
-//! shading, and the divider and the five taps outside the 2x2 region selected
-//! by constant signs for parallel views.
+//! Units a scene does not need are built disabled, with empty tables and
+//! 2-word rings, and drive zero; `export::prune` removes them from the
+//! emitted Verilog (see `export::left_out`). The five taps outside the 2x2
+//! region that constant signs select stay, disabled by constants. The
+//! compositing-buffer rings are as deep as the longest tap delay and store
+//! only the bits the mode can set (`PipelineConfig::ring_fields`).
 
 use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
