@@ -390,12 +390,12 @@ fn cast_mask(s: &str) -> Option<(usize, usize)> {
     let digits = rest[tick + 1..].strip_prefix('h')?;
     let end = digits.find(')')?;
     let mask = &digits[..end];
-    let want = format!("{:x}", (num_bigint_free_mask(bits)));
+    let want = format!("{:x}", ones(bits));
     (bits > 0 && mask == want).then_some((bits, 3 + tick + 2 + end + 1))
 }
 
-/// 2^bits - 1 as hex digits (bits up to 128).
-fn num_bigint_free_mask(bits: usize) -> u128 {
+/// 2^bits - 1 (bits up to 128).
+fn ones(bits: usize) -> u128 {
     if bits >= 128 {
         u128::MAX
     } else {
@@ -609,4 +609,55 @@ pub fn write_export(
         let _ = std::fs::remove_dir_all(&tmp);
     }
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn casts_become_size_casts_and_literals_unsized() {
+        let v = "  y = ((a + ((b) & 16'hffff)) & 32'hffffffff) + 32'h3 - 132'h1 + x32'h2;\n  z = ((c) & 16'hfff);\n";
+        assert_eq!(
+            width_clean(v),
+            "  y = 32'(a + 16'(b)) + 'h3 - 132'h1 + x32'h2;\n  z = ((c) & 16'hfff);\n",
+            "a mask that is not 2^N - 1 stays a mask"
+        );
+    }
+
+    const TOY: &str = "\n\nmodule top(clock,q);\n    input wire  clock;\n    output reg  [3:0] q;\n    reg  u$a;\n    wire  [3:0] u$y;\n    top$u u(\n        .a(u$a),\n        .y(u$y)\n    );\n    always @(*) begin\n        u$a = clock;\n        q = u$y;\n    end\nendmodule // top\n\n\nmodule top$u(a,y);\n    input wire  a;\n    output reg  [3:0] y;\n    top$u$v v(\n    );\nendmodule // top$u\n\n\nmodule top$u$v();\nendmodule // top$u$v\n";
+
+    #[test]
+    fn split_keeps_every_module_in_order() {
+        let names: Vec<String> = split_modules(TOY).into_iter().map(|m| m.name).collect();
+        assert_eq!(names, ["top", "top$u", "top$u$v"]);
+    }
+
+    #[test]
+    fn prune_removes_the_unit_and_zeroes_its_outputs() {
+        let unit = LeftOut {
+            name: "u",
+            instances: &["u"],
+        };
+        let v = prune(TOY, &[unit]).unwrap();
+        assert_eq!(split_modules(&v).len(), 1, "{v}");
+        assert!(v.contains("wire  [3:0] u$y = 'h0;"), "{v}");
+        assert!(!v.contains("top$u u("), "{v}");
+        assert!(
+            v.contains("u$a = clock;"),
+            "the parent's input wiring stays"
+        );
+        let missing = LeftOut {
+            name: "w",
+            instances: &["w"],
+        };
+        assert_eq!(
+            prune(TOY, &[missing]).unwrap(),
+            split_modules(TOY)
+                .into_iter()
+                .map(|m| m.text)
+                .collect::<Vec<_>>()
+                .join("\n")
+        );
+    }
 }
