@@ -2286,15 +2286,15 @@ module top$lanes$0$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring2
@@ -2310,15 +2310,15 @@ module top$lanes$0$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring3
@@ -2358,15 +2358,15 @@ module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring5
@@ -2382,15 +2382,15 @@ module top$lanes$0$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring6
@@ -2430,15 +2430,15 @@ module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring8
@@ -5019,15 +5019,15 @@ module top$lanes$1$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring2
@@ -5043,15 +5043,15 @@ module top$lanes$1$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring3
@@ -5091,15 +5091,15 @@ module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring5
@@ -5115,15 +5115,15 @@ module top$lanes$1$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring6
@@ -5163,15 +5163,15 @@ module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring8
@@ -7752,15 +7752,15 @@ module top$lanes$2$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring2
@@ -7776,15 +7776,15 @@ module top$lanes$2$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring3
@@ -7824,15 +7824,15 @@ module top$lanes$2$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring5
@@ -7848,15 +7848,15 @@ module top$lanes$2$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring6
@@ -7896,15 +7896,15 @@ module top$lanes$2$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring8
@@ -10485,15 +10485,15 @@ module top$lanes$3$ring2(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring2
@@ -10509,15 +10509,15 @@ module top$lanes$3$ring3(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring3
@@ -10557,15 +10557,15 @@ module top$lanes$3$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring5
@@ -10581,15 +10581,15 @@ module top$lanes$3$ring6(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring6
@@ -10629,15 +10629,15 @@ module top$lanes$3$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[32767:0];
+    reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[14:0]][31:24], 8'd0, mem[read_address[14:0]][23:16], 8'd0, mem[read_address[14:0]][15:8], 8'd0, mem[read_address[14:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][31:24], 8'd0, mem[read_address[0:0]][23:16], 8'd0, mem[read_address[0:0]][15:8], 8'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[14:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring8

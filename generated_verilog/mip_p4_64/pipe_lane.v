@@ -2208,15 +2208,15 @@ module top$lanes$0$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring1
@@ -2280,15 +2280,15 @@ module top$lanes$0$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring4
@@ -2304,15 +2304,15 @@ module top$lanes$0$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring5
@@ -2352,15 +2352,15 @@ module top$lanes$0$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring7
@@ -2376,15 +2376,15 @@ module top$lanes$0$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$0$ring8
@@ -4887,15 +4887,15 @@ module top$lanes$1$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring1
@@ -4959,15 +4959,15 @@ module top$lanes$1$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring4
@@ -4983,15 +4983,15 @@ module top$lanes$1$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring5
@@ -5031,15 +5031,15 @@ module top$lanes$1$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring7
@@ -5055,15 +5055,15 @@ module top$lanes$1$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$1$ring8
@@ -7566,15 +7566,15 @@ module top$lanes$2$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring1
@@ -7638,15 +7638,15 @@ module top$lanes$2$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring4
@@ -7662,15 +7662,15 @@ module top$lanes$2$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring5
@@ -7710,15 +7710,15 @@ module top$lanes$2$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring7
@@ -7734,15 +7734,15 @@ module top$lanes$2$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$2$ring8
@@ -10245,15 +10245,15 @@ module top$lanes$3$ring1(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring1
@@ -10317,15 +10317,15 @@ module top$lanes$3$ring4(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring4
@@ -10341,15 +10341,15 @@ module top$lanes$3$ring5(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring5
@@ -10389,15 +10389,15 @@ module top$lanes$3$ring7(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring7
@@ -10413,15 +10413,15 @@ module top$lanes$3$ring8(read_address,read_clock,read_data,write_address,write_c
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[2047:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[10:0]][7:0]};
+       read_data <= {56'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[10:0]] <= {write_data[7:0]};
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$lanes$3$ring8

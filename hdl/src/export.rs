@@ -130,7 +130,7 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
             instances: &["div_x", "div_y"],
         });
         v.push(LeftOut {
-            name: "3x3_taps_outside_2x2 (disabled by constant dx/dy signs)",
+            name: "3x3_taps_outside_2x2 (2-word rings)",
             instances: &[],
         });
     }

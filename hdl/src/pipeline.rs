@@ -26,10 +26,11 @@
 //!
 //! Units a scene does not need are built disabled, with empty tables and
 //! 2-word rings, and drive zero; `export::prune` removes them from the
-//! emitted Verilog (see `export::left_out`). The five taps outside the 2x2
-//! region that constant signs select stay, disabled by constants. The
-//! compositing-buffer rings are as deep as the longest tap delay and store
-//! only the bits the mode can set (`PipelineConfig::ring_fields`).
+//! emitted Verilog (see `export::left_out`). The compositing-buffer rings are
+//! as deep as the longest tap delay and store only the bits the mode can set
+//! (`PipelineConfig::ring_fields`); for parallel views the five taps outside
+//! the 2x2 that the constant signs select get 2-word rings
+//! (`PipelineConfig::taps_used`).
 
 use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
@@ -86,6 +87,11 @@ pub struct PipelineConfig {
     /// channels in 16-bit slots; the intensity for MIP/MinIP; the 32-bit sum
     /// for X-ray.
     pub ring_fields: Vec<(usize, usize)>,
+    /// The taps (in `TAPS` order) that the 2x2 selection can pick: all for
+    /// perspective views; for parallel views the four that the constant
+    /// signs of dx and dy select, fewer when dx or dy is 0. The others get
+    /// 2-word rings.
+    pub taps_used: [bool; 9],
 }
 
 impl PipelineConfig {
@@ -139,6 +145,14 @@ impl PipelineConfig {
             slice_beats: s,
             beam_beats: b,
             voxel_bits: shader.voxel_bits,
+            taps_used: match sweep.rays {
+                golden_model::plan::Rays::Parallel { dx, dy } => {
+                    // Tap (e_x, e_y) serves x - sign(dx), y - sign(dy).
+                    let (sx, sy) = (-dx.signum(), -dy.signum());
+                    TAPS.map(|(ex, ey)| (ex == 0 || ex == sx) && (ey == 0 || ey == sy))
+                }
+                golden_model::plan::Rays::Perspective { .. } => [true; 9],
+            },
             ring_fields: match shader.mode {
                 Mode::Mip | Mode::Minip => vec![(0, shader.voxel_bits as usize)],
                 Mode::Xray => vec![(0, 32)],
@@ -174,14 +188,19 @@ impl PipelineConfig {
     }
 }
 
-/// A compositing-buffer ring: as deep as the taps' delays, as wide as the
-/// composited values can be.
-fn tap_ring<const H: usize>(c: &PipelineConfig) -> DepthRam<Bits<64>, H> {
+/// Tap `tap`'s compositing-buffer ring: as deep as the taps' delays (2 words
+/// when the tap is never selected), as wide as the composited values can be.
+fn tap_ring<const H: usize>(c: &PipelineConfig, tap: usize) -> DepthRam<Bits<64>, H> {
     let mask = c
         .ring_fields
         .iter()
         .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo);
-    DepthRam::new(c.tap_bits().min(H)).fields(&c.ring_fields, mask.to_bits())
+    let bits = if c.taps_used[tap] {
+        c.tap_bits().min(H)
+    } else {
+        1
+    };
+    DepthRam::new(bits).fields(&c.ring_fields, mask.to_bits())
 }
 
 fn pack(v: [u32; 4]) -> u64 {
@@ -484,14 +503,14 @@ impl<const H: usize> PipeLane<H> {
             t8s0: Default::default(),
             t8i1: Default::default(),
             t8il: Default::default(),
-            ring0: tap_ring(c),
+            ring0: tap_ring(c, 0),
             f0_1: Default::default(),
             s0: Default::default(),
             a0: Default::default(),
             prev0: Default::default(),
             hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
             off0: Constant::new(off(&c.taps[0]).to_bits()),
-            ring1: tap_ring(c),
+            ring1: tap_ring(c, 1),
             f1_1: Default::default(),
             f1_2: Default::default(),
             s1: Default::default(),
@@ -499,12 +518,12 @@ impl<const H: usize> PipeLane<H> {
             prev1: Default::default(),
             hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
             off1: Constant::new(off(&c.taps[1]).to_bits()),
-            ring2: tap_ring(c),
+            ring2: tap_ring(c, 2),
             s2: Default::default(),
             a2: Default::default(),
             prev2: Default::default(),
             off2: Constant::new(off(&c.taps[2]).to_bits()),
-            ring3: tap_ring(c),
+            ring3: tap_ring(c, 3),
             f3_1: Default::default(),
             f3_2: Default::default(),
             s3: Default::default(),
@@ -512,12 +531,12 @@ impl<const H: usize> PipeLane<H> {
             prev3: Default::default(),
             hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
             off3: Constant::new(off(&c.taps[3]).to_bits()),
-            ring4: tap_ring(c),
+            ring4: tap_ring(c, 4),
             s4: Default::default(),
             a4: Default::default(),
             prev4: Default::default(),
             off4: Constant::new(off(&c.taps[4]).to_bits()),
-            ring5: tap_ring(c),
+            ring5: tap_ring(c, 5),
             f5_1: Default::default(),
             f5_2: Default::default(),
             f5_3: Default::default(),
@@ -526,21 +545,21 @@ impl<const H: usize> PipeLane<H> {
             prev5: Default::default(),
             hops5: Constant::new((c.taps[5].hops as u64).to_bits()),
             off5: Constant::new(off(&c.taps[5]).to_bits()),
-            ring6: tap_ring(c),
+            ring6: tap_ring(c, 6),
             f6_1: Default::default(),
             s6: Default::default(),
             a6: Default::default(),
             prev6: Default::default(),
             hops6: Constant::new((c.taps[6].hops as u64).to_bits()),
             off6: Constant::new(off(&c.taps[6]).to_bits()),
-            ring7: tap_ring(c),
+            ring7: tap_ring(c, 7),
             f7_1: Default::default(),
             s7: Default::default(),
             a7: Default::default(),
             prev7: Default::default(),
             hops7: Constant::new((c.taps[7].hops as u64).to_bits()),
             off7: Constant::new(off(&c.taps[7]).to_bits()),
-            ring8: tap_ring(c),
+            ring8: tap_ring(c, 8),
             f8_1: Default::default(),
             s8: Default::default(),
             a8: Default::default(),
