@@ -92,9 +92,10 @@ enum Command {
         #[arg(long)]
         json: Option<PathBuf>,
     },
-    /// Run the scene through the rust-hdl pipeline in simulation, warp its
-    /// base plane, and compare it with the golden model bit for bit (exit 0
-    /// only if every pixel matches).
+    /// Run the scene through the pipeline in simulation (rust-hdl, or the
+    /// emitted Verilog under Icarus or Verilator), warp its base plane, and
+    /// compare it with the golden model bit for bit (exit 0 only if every
+    /// pixel matches).
     Sim {
         #[arg(long)]
         scene: PathBuf,
