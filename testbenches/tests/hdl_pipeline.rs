@@ -273,3 +273,34 @@ fn pipeline_verilog_passes_yosys() {
     yosys_validate("pipeline", &generate_verilog(&uut))
         .unwrap_or_else(|e| panic!("yosys rejects the pipeline: {e:?}"));
 }
+
+/// Wider voxels and channels than the 8-bit default: the memory words and
+/// compositing rings are narrowed to the scene's bits, so every precision
+/// must still match the golden model bit for bit.
+#[test]
+fn pipeline_wider_voxels_and_channels() {
+    let cases = [
+        ("composite", 12, 12, 2, true),
+        ("first_opaque", 12, 15, 2, false),
+        ("mip", 16, 15, 4, false),
+        ("minip", 12, 8, 2, false),
+        ("xray", 16, 12, 2, false),
+    ];
+    for (mode, voxel_bits, rgba_bits, p, shading) in cases {
+        let top = (1u32 << voxel_bits) - 1;
+        let s = scene(&format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [10, 10, 8]}}, "view": {{"projection": "parallel", "rotate_deg": [25, 40, 0]}},
+                "mode": "{mode}", "transfer": {{"opacity": [[0, 0.0], [{q}, 0.2], [{top}, 0.9]], "color": [[0, 0.2, 0.4, 1.0], [{top}, 1.0, 0.9, 0.5]]}},
+                "shading": {{"enabled": {shading}}}, "image": [16, 16],
+                "hardware": {{"pipelines": {p}, "voxel_bits": {voxel_bits}, "rgba_bits": {rgba_bits}}}}}"#,
+            q = top / 4
+        ));
+        let vol = builtin("sphere", s.volume.dims, voxel_bits).unwrap();
+        let r = hdl::sim::simulate(&s, &s.camera().unwrap(), &vol, None).unwrap();
+        assert_eq!(
+            r.mismatches, 0,
+            "{mode} voxel_bits={voxel_bits} rgba_bits={rgba_bits} p={p}: first differences {:?}",
+            r.first
+        );
+    }
+}
