@@ -19,6 +19,7 @@ pub mod ram;
 pub mod shader;
 pub mod sim;
 pub mod synth;
+pub mod tool;
 pub mod unorm;
 pub mod vcd_diff;
 pub mod verilator;

@@ -312,24 +312,18 @@ pub fn run_icarus(
     let result = (|| {
         std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
         std::fs::write(dir.join("tb.v"), testbench_verilog(p, beats)).map_err(|e| e.to_string())?;
-        let tool = |cmd: &mut std::process::Command| -> Result<std::process::Output, String> {
-            let out = cmd.current_dir(&dir).output().map_err(|e| {
-                format!("cannot run Icarus Verilog ({e}): run scripts/test, which installs it")
-            })?;
-            if !out.status.success() {
-                return Err(format!(
-                    "{:?} failed: {}",
-                    cmd.get_program(),
-                    String::from_utf8_lossy(&out.stderr)
-                ));
-            }
-            Ok(out)
-        };
-        tool(
+        crate::tool::run(
             std::process::Command::new("iverilog")
-                .args(["-g2012", "-o", "sim.vvp", "top.v", "tb.v"]),
+                .args(["-g2012", "-o", "sim.vvp", "top.v", "tb.v"])
+                .current_dir(&dir),
+            "Icarus Verilog (iverilog)",
         )?;
-        tool(std::process::Command::new("vvp").args(["-n", "sim.vvp"]))?;
+        crate::tool::run(
+            std::process::Command::new("vvp")
+                .args(["-n", "sim.vvp"])
+                .current_dir(&dir),
+            "Icarus Verilog (vvp)",
+        )?;
         let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
         let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
         // Counted like the rust-hdl engine: from the clock that registers start.

@@ -6,6 +6,7 @@
 //! `synth_xilinx -family xc7` (LUT1-6, FD*, RAMB18E1/RAMB36E1, DSP48E1) or
 //! generic `synth` (gates; memories become flip-flops, multipliers gates).
 
+use crate::tool::run as run_tool;
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
@@ -55,22 +56,6 @@ pub struct Report {
     /// iCE40 designs that fit: nextpnr-ice40's maximum clock frequency.
     pub fmax_mhz: Option<f64>,
     pub pnr_seconds: Option<f64>,
-}
-
-fn run_tool(cmd: &mut Command, what: &str) -> Result<std::process::Output, String> {
-    let out = cmd
-        .output()
-        .map_err(|e| format!("cannot run {what} ({e}): run scripts/test, which installs it"))?;
-    if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        let log = String::from_utf8_lossy(&out.stdout);
-        let tail: Vec<&str> = log.lines().rev().take(15).collect();
-        return Err(format!(
-            "{what} failed: {err}{}",
-            tail.into_iter().rev().collect::<Vec<_>>().join("\n")
-        ));
-    }
-    Ok(out)
 }
 
 /// Parse the cell counts of the last `Number of cells:` block of yosys `stat`.

@@ -123,10 +123,6 @@ int main(int argc, char** argv) {{
     )
 }
 
-fn tool_error(what: &str, e: std::io::Error) -> String {
-    format!("cannot run {what} ({e}): run scripts/test, which installs it")
-}
-
 /// Where built harnesses are kept: `$CUBE_CACHE_DIR`, else
 /// `$XDG_CACHE_HOME/cube`, else `~/.cache/cube`.
 pub fn cache_root() -> PathBuf {
@@ -144,10 +140,7 @@ pub fn cache_root() -> PathBuf {
 /// whole emitted design whose top has `p` pipelines. Returns the path of
 /// the executable and whether it came from the cache.
 pub fn build(verilog: &str, p: usize) -> Result<(PathBuf, bool), String> {
-    let version = Command::new("verilator")
-        .arg("--version")
-        .output()
-        .map_err(|e| tool_error("Verilator", e))?;
+    let version = crate::tool::run(Command::new("verilator").arg("--version"), "Verilator")?;
     let harness = harness_cpp(p);
     let mut h = std::collections::hash_map::DefaultHasher::new();
     (verilog, &harness, FLAGS, &version.stdout).hash(&mut h);
@@ -166,26 +159,21 @@ pub fn build(verilog: &str, p: usize) -> Result<(PathBuf, bool), String> {
         std::fs::write(tmp.join("lint.vlt"), crate::export::LINT_WAIVERS)
             .map_err(|e| e.to_string())?;
         std::fs::write(tmp.join("harness.cpp"), &harness).map_err(|e| e.to_string())?;
-        let out = Command::new("verilator")
-            .args(FLAGS)
-            .args([
-                "lint.vlt",
-                "top.v",
-                "harness.cpp",
-                "--top-module",
-                "top",
-                "-Mdir",
-                "obj",
-            ])
-            .current_dir(&tmp)
-            .output()
-            .map_err(|e| tool_error("Verilator", e))?;
-        if !out.status.success() {
-            return Err(format!(
-                "verilator failed: {}",
-                String::from_utf8_lossy(&out.stderr)
-            ));
-        }
+        crate::tool::run(
+            Command::new("verilator")
+                .args(FLAGS)
+                .args([
+                    "lint.vlt",
+                    "top.v",
+                    "harness.cpp",
+                    "--top-module",
+                    "top",
+                    "-Mdir",
+                    "obj",
+                ])
+                .current_dir(&tmp),
+            "Verilator",
+        )?;
         Ok(())
     })();
     if let Err(e) = result {
