@@ -322,11 +322,6 @@ pub fn export(
     Ok((designs, memory))
 }
 
-/// Whether a sweep's rays are perspective (it then has the divider).
-pub fn is_perspective(sweep: &Sweep) -> bool {
-    matches!(sweep.rays, Rays::Perspective { .. })
-}
-
 /// Rewrite two of rust-hdl's emission habits that make every expression
 /// width-mismatched for `verilator -Wall`, keeping rust-hdl's semantics:
 /// - `bit_cast::<N, M>(e)` is emitted as the mask `((e) & N'h…)`, which
