@@ -5,11 +5,11 @@ mod output;
 
 use anyhow::{bail, Context, Result};
 use clap::{Parser, Subcommand, ValueEnum};
-use golden_model::scene::Scene;
-use golden_model::volume::{Volume, BUILTINS};
-use golden_model::warp::Image;
 use output::{write_json, write_png};
 use reference::metrics::{compare, difference, ErrorMetrics};
+use scene::volume::{Volume, BUILTINS};
+use scene::Image;
+use scene::Scene;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -363,7 +363,7 @@ fn synth_cmd(
     json_path: Option<PathBuf>,
     pnr: bool,
 ) -> Result<()> {
-    use hdl::synth::{frame_clocks, synthesize, Target};
+    use cosim::synth::{frame_clocks, synthesize, Target};
     let target = match target {
         SynthTarget::Ice40 => Target::Ice40,
         SynthTarget::Xilinx => Target::Xilinx,
@@ -378,7 +378,7 @@ fn synth_cmd(
         .map(|n| n.to_string_lossy().to_string())
         .unwrap_or_default();
     let result = (|| {
-        let m = hdl::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &dir)
+        let m = cosim::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &dir)
             .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
         let sweep = &m["sweeps"][0];
         let files: Vec<String> = sweep["files"]
@@ -415,9 +415,9 @@ fn synth_cmd(
     match (r.fits_up5k, r.fmax_mhz) {
         (Some(false), _) => println!(
             "does not fit an iCE40 UP5K ({} LUTs, {} BRAMs, {} DSPs available): no place and route",
-            hdl::synth::UP5K.0,
-            hdl::synth::UP5K.1,
-            hdl::synth::UP5K.2
+            cosim::synth::UP5K.0,
+            cosim::synth::UP5K.1,
+            cosim::synth::UP5K.2
         ),
         (_, Some(f)) => {
             println!("nextpnr-ice40 (UP5K): fmax {f:.2} MHz");
@@ -461,7 +461,7 @@ fn synth_cmd(
 
 /// `cube vcd-diff`: 0 equal, 1 different, 2 bad input.
 fn vcd_diff_cmd(a: &Path, b: &Path, signals: Option<&str>, show: usize) -> i32 {
-    use hdl::vcd_diff::{compare, show as hex, Trace};
+    use cosim::vcd_diff::{compare, show as hex, Trace};
     let loaded = Trace::load(a).and_then(|ta| Ok((ta, Trace::load(b)?)));
     let c = match loaded.and_then(|(ta, tb)| compare(&ta, &tb, signals)) {
         Ok(c) => c,
@@ -508,7 +508,7 @@ fn verilog_cmd(scene_path: &Path, out: &Path) -> Result<()> {
         .file_name()
         .map(|n| n.to_string_lossy().to_string())
         .unwrap_or_default();
-    let m = hdl::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), out)
+    let m = cosim::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), out)
         .map_err(|e| anyhow::anyhow!("verilog: {e}"))?;
     let sweeps = m["sweeps"].as_array().map_or(0, |s| s.len());
     println!(
@@ -537,15 +537,15 @@ fn sim_cmd(
     json_path: Option<PathBuf>,
 ) -> Result<()> {
     let engine = match engine {
-        Engine::RustHdl => hdl::sim::Engine::RustHdl,
-        Engine::Iverilog => hdl::sim::Engine::Iverilog,
-        Engine::Verilator => hdl::sim::Engine::Verilator,
+        Engine::RustHdl => cosim::sim::Engine::RustHdl,
+        Engine::Iverilog => cosim::sim::Engine::Iverilog,
+        Engine::Verilator => cosim::sim::Engine::Verilator,
     };
     let name = engine.name();
     let (scene, vol) = load(scene_path)?;
     let cam = scene.camera()?;
     let vcd_tmp = vcd.as_ref().map(|v| v.with_extension("vcd.tmp"));
-    let r = hdl::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
+    let r = cosim::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
         .map_err(|e| anyhow::anyhow!("sim: {e}"))?;
     if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
         std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
@@ -675,7 +675,7 @@ fn angles_cmd(
     }
     let (mut scene, vol) = load(scene_path)?;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
-    if scene.view.projection != golden_model::scene::Projection::Parallel {
+    if scene.view.projection != scene::Projection::Parallel {
         bail!("angles turns a parallel view; the scene is perspective");
     }
     let mut rows = Vec::new();
@@ -690,7 +690,7 @@ fn angles_cmd(
         let r = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
         let m = compare(&g.image, &r.image);
         let cam = scene.camera()?;
-        let plan = golden_model::plan::Plan::new(&scene, &cam)?;
+        let plan = golden_model::cube4l::plan::Plan::new(&scene, &cam)?;
         let axis = ["u", "v", "w"][plan.sweeps[0].axis()];
         println!(
             "{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7}",

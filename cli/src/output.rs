@@ -2,7 +2,7 @@
 //! target, then renamed over it.
 
 use anyhow::{Context, Result};
-use golden_model::warp::Image;
+use scene::Image;
 use std::io::Write;
 use std::path::Path;
 

@@ -1,25 +1,17 @@
-//! Bit-accurate fixed-point golden model of the Cube-4L ray-slice-sweep
-//! pipeline (Bitter & Kaufman), stage by stage, plus the scene, volume and
-//! transfer-function definitions the whole kit shares.
+//! The bit-accurate fixed-point golden models of the kit: the spec the RTL
+//! must match bit for bit. One folder per architecture:
 //!
-//! Stages, in pipeline order: [`cfb`] (skewed memory, voxel stream, control
-//! bits), [`plan`] (view planning, dx/dy), [`gradient`] (ABC central
-//! differences), [`shader`] (classification and shading LUTs),
-//! [`compositor`] (bilinear unit and compositing), [`cube4l`] (the sweep),
-//! [`warp`] (base plane to final image). [`fixed`] names every rounding,
-//! truncation and saturation.
+//! - [`cube4l`]: the Cube-4L ray-slice-sweep pipeline (Bitter & Kaufman),
+//!   stage by stage: planning, CFB stream, ABC gradient, shader, compositor,
+//!   base plane.
+//!
+//! What the architectures share: [`fixed`] (every rounding, truncation and
+//! saturation, named), [`lut`] (the classification and shading LUTs filled
+//! from the scene's transfer function and lighting) and [`warp`] (base plane
+//! to final image). Scenes, volumes, the camera and the float formulas come
+//! from the `scene` crate.
 
-pub mod cfb;
-pub mod compositor;
 pub mod cube4l;
-pub mod error;
 pub mod fixed;
-pub mod gradient;
-pub mod plan;
-pub mod scene;
-pub mod shader;
-pub mod transfer;
-pub mod volume;
+pub mod lut;
 pub mod warp;
-
-pub use error::{CubeError, Result};

@@ -5,37 +5,11 @@
 //! perspective views take the same path; a multi-sweep perspective frame takes
 //! each pixel from the sweep of its ray's major axis and direction.
 
-use crate::cube4l::{BasePlane, Frame};
+use crate::cube4l::frame::{BasePlane, Frame};
+use crate::cube4l::plan::{slab, Face, Sweep};
 use crate::fixed::max_of;
-use crate::plan::{slab, Face, Sweep};
-use crate::scene::{Camera, Mode};
 use glam::{DAffine2, DVec2, DVec3};
-
-/// The final image: linear RGB in [0, 1], row 0 at the top.
-#[derive(Debug, Clone)]
-pub struct Image {
-    pub width: u32,
-    pub height: u32,
-    pub rgb: Vec<[f64; 3]>,
-}
-
-impl Image {
-    pub fn black(width: u32, height: u32) -> Image {
-        Image {
-            width,
-            height,
-            rgb: vec![[0.0; 3]; (width * height) as usize],
-        }
-    }
-
-    /// 8-bit RGB bytes, rounded.
-    pub fn to_rgb8(&self) -> Vec<u8> {
-        self.rgb
-            .iter()
-            .flat_map(|p| p.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8))
-            .collect()
-    }
-}
+use scene::{Camera, Image, Mode};
 
 /// Map from a point on `face` (its two in-plane pipeline coordinates, plus
 /// the slice for side faces) to continuous base-plane coordinates.
@@ -153,17 +127,17 @@ pub fn warp(frame: &Frame, camera: &Camera, mode: Mode, rgba_bits: u32, voxel_bi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::Sweep;
+    use crate::cube4l::plan::Sweep;
 
     #[test]
     fn face_maps_agree_with_base_addresses() {
-        let plan_scene = crate::scene::Scene::from_json(
+        let plan_scene = scene::Scene::from_json(
             r#"{"volume": {"builtin": "sphere", "dims": [6,5,4]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]}, "image": [8, 8]}"#,
             None,
         )
         .unwrap();
         let cam = plan_scene.camera().unwrap();
-        let plan = crate::plan::Plan::new(&plan_scene, &cam).unwrap();
+        let plan = crate::cube4l::plan::Plan::new(&plan_scene, &cam).unwrap();
         let s: &Sweep = &plan.sweeps[0];
         let [nx, ny, _] = s.dims;
         for z in s.z0..=s.z1 {

@@ -12,11 +12,12 @@
 pub mod metrics;
 
 use glam::DVec3;
-use golden_model::scene::{Camera, Mode, Scene};
-use golden_model::transfer::{correct_opacity, phong, TransferFn};
-use golden_model::volume::Volume;
-use golden_model::warp::Image;
 use rayon::prelude::*;
+use scene::lighting::phong;
+use scene::transfer::{correct_opacity, TransferFn};
+use scene::volume::Volume;
+use scene::Image;
+use scene::{Camera, Mode, Scene};
 
 /// Default sample step along the ray, in voxel lengths.
 pub const DEFAULT_STEP: f64 = 0.25;

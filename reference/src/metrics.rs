@@ -1,6 +1,6 @@
 //! Error metrics between a rendered image and the reference.
 
-use golden_model::warp::Image;
+use scene::Image;
 /// Error of an image against the reference (colours in [0, 1]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ErrorMetrics {

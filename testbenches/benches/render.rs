@@ -4,7 +4,7 @@
 //! figures (`RAYON_NUM_THREADS=1` measures one thread directly).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use golden_model::volume::builtin;
+use scene::volume::builtin;
 use testbenches::scene;
 
 fn bench(c: &mut Criterion) {

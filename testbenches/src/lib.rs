@@ -2,16 +2,16 @@
 //! golden model and the reference, and drive the golden stages from the
 //! CFB's skewed voxel stream exactly as the hardware will receive it.
 
-use golden_model::cfb::{CfbStream, SkewedMemory};
-use golden_model::compositor::{composite, gather, reset_value};
+use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
+use golden_model::cube4l::compositor::{composite, gather, reset_value};
+use golden_model::cube4l::gradient::central_difference;
+use golden_model::cube4l::plan::Sweep;
+use golden_model::cube4l::shader::Shader;
 use golden_model::cube4l::BasePlane;
-use golden_model::gradient::central_difference;
-use golden_model::plan::Sweep;
-use golden_model::scene::Scene;
-use golden_model::shader::Shader;
-use golden_model::volume::Volume;
-use golden_model::warp::Image;
 use reference::metrics::{compare, ErrorMetrics};
+use scene::volume::Volume;
+use scene::Image;
+use scene::Scene;
 
 /// Parse a scene from JSON text; panics with the parse error (test helper).
 pub fn scene(json: &str) -> Scene {

@@ -1,11 +1,11 @@
 //! The CFB stream generator: exact skew, coverage, control bits and pixel
 //! addresses, and equality of stream-order processing with the golden model.
 
-use golden_model::cfb::{skew, CfbStream, SkewedMemory};
+use golden_model::cube4l::cfb::{skew, CfbStream, SkewedMemory};
+use golden_model::cube4l::plan::Plan;
 use golden_model::cube4l::render_sweep;
-use golden_model::plan::Plan;
-use golden_model::shader::Shader;
-use golden_model::volume::{builtin, Volume};
+use golden_model::cube4l::shader::Shader;
+use scene::volume::{builtin, Volume};
 use std::collections::HashSet;
 use testbenches::{render_from_stream, scene};
 
@@ -21,12 +21,7 @@ fn views() -> Vec<&'static str> {
     ]
 }
 
-fn setup(
-    dims: [usize; 3],
-    view: &str,
-    p: usize,
-    mode: &str,
-) -> (golden_model::scene::Scene, Volume) {
+fn setup(dims: [usize; 3], view: &str, p: usize, mode: &str) -> (scene::Scene, Volume) {
     let s = scene(&format!(
         r#"{{"volume": {{"builtin": "phantom", "dims": {dims:?}}}, "view": {view}, "mode": "{mode}",
             "image": [24, 24], "hardware": {{"pipelines": {p}}}}}"#

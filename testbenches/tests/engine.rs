@@ -1,8 +1,8 @@
 //! The engine CT (256x256x110, 8 bit) renders in composite and MIP with the
 //! golden model, and its error against the reference is measured.
 
-use golden_model::scene::Scene;
-use golden_model::volume::Volume;
+use scene::volume::Volume;
+use scene::Scene;
 use std::path::PathBuf;
 use testbenches::compare_with_reference;
 

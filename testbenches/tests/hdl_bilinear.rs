@@ -1,7 +1,7 @@
-//! `hdl::bilinear` against `golden_model::compositor::gather`, cycle by cycle
+//! `hdl::bilinear` against `golden_model::cube4l::compositor::gather`, cycle by cycle
 //! in rust-hdl simulation (two clocks of latency); its Verilog passes yosys.
 
-use golden_model::compositor::gather;
+use golden_model::cube4l::compositor::gather;
 use hdl::bilinear::Bilinear;
 use rust_hdl::prelude::*;
 use testbenches::{require_tool, Vectors};

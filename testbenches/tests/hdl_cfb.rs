@@ -1,12 +1,12 @@
-//! `hdl::cfb` against `golden_model::cfb::CfbStream`: the memory is loaded
+//! `hdl::cfb` against `golden_model::cube4l::cfb::CfbStream`: the memory is loaded
 //! through the load port, then every beat of the sweep is compared lane by
 //! lane, cycle by cycle, in rust-hdl simulation.
 
-use golden_model::cfb::{CfbStream, SkewedMemory};
-use golden_model::plan::Plan;
-use golden_model::volume::builtin;
+use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
+use golden_model::cube4l::plan::Plan;
 use hdl::cfb::{face_code, Cfb, CfbConfig};
 use rust_hdl::prelude::*;
+use scene::volume::builtin;
 use testbenches::{require_tool, run_sim, scene};
 
 const A: usize = 12;
@@ -40,8 +40,8 @@ fn run<const P: usize>(dims: [usize; 3], view: &str) {
 }
 
 fn run_sweep<const P: usize>(
-    vol: &golden_model::volume::Volume,
-    sweep: &golden_model::plan::Sweep,
+    vol: &scene::volume::Volume,
+    sweep: &golden_model::cube4l::plan::Sweep,
     label: &str,
 ) {
     run_sweep_memory::<P>(vol, sweep, label, false)
@@ -51,8 +51,8 @@ fn run_sweep<const P: usize>(
 /// answers each lane's `ext_addr` one clock later; otherwise the memory is
 /// loaded through the load port.
 fn run_sweep_memory<const P: usize>(
-    vol: &golden_model::volume::Volume,
-    sweep: &golden_model::plan::Sweep,
+    vol: &scene::volume::Volume,
+    sweep: &golden_model::cube4l::plan::Sweep,
     label: &str,
     external: bool,
 ) {

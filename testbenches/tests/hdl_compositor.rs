@@ -1,14 +1,14 @@
-//! `hdl::compositor` against `golden_model::compositor::composite`, cycle by
+//! `hdl::compositor` against `golden_model::cube4l::compositor::composite`, cycle by
 //! cycle in rust-hdl simulation, for every mode, both orders and two RGBA
 //! widths; its Verilog passes yosys.
 
-use golden_model::compositor::composite;
+use golden_model::cube4l::compositor::composite;
+use golden_model::cube4l::plan::Order;
+use golden_model::cube4l::shader::Sample;
 use golden_model::fixed::max_of;
-use golden_model::plan::Order;
-use golden_model::scene::Mode;
-use golden_model::shader::Sample;
 use hdl::compositor::Compositor;
 use rust_hdl::prelude::*;
+use scene::Mode;
 use testbenches::{assert_vcd_parses, require_tool, Vectors};
 
 const N: usize = 600;

@@ -2,8 +2,8 @@
 //! Verilog: its base planes must equal the golden model's bit for bit, like
 //! the rust-hdl simulation's.
 
-use golden_model::volume::builtin;
-use hdl::sim::{simulate_with, Engine};
+use cosim::sim::{simulate_with, Engine};
+use scene::volume::builtin;
 use testbenches::{require_tool, scene};
 
 fn check(json: &str, vol_name: &str) {
@@ -45,13 +45,13 @@ fn emitted_verilog_matches_golden_model_under_icarus() {
 
 #[test]
 fn a_fault_in_the_emitted_verilog_is_caught() {
-    use golden_model::cfb::SkewedMemory;
+    use cosim::export::{pipeline_verilog, Memory};
+    use cosim::iverilog::run_icarus;
+    use golden_model::cube4l::cfb::SkewedMemory;
+    use golden_model::cube4l::plan::Plan;
     use golden_model::cube4l::render_sweep;
-    use golden_model::plan::Plan;
-    use golden_model::shader::Shader;
-    use hdl::export::{pipeline_verilog, Memory};
+    use golden_model::cube4l::shader::Shader;
     use hdl::pipeline::PipelineConfig;
-    use hdl::sim::run_icarus;
     require_tool("iverilog");
     let s = scene(
         r#"{"volume": {"builtin": "phantom", "dims": [10, 10, 8]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]},

@@ -3,12 +3,12 @@
 //! the golden model: every lane's composited value every cycle, every
 //! base-plane pixel and its address, and the clocks per sweep.
 
-use golden_model::cfb::SkewedMemory;
-use golden_model::plan::{Face, Plan};
-use golden_model::shader::Shader as GoldenShader;
-use golden_model::volume::builtin;
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::{Face, Plan};
+use golden_model::cube4l::shader::Shader as GoldenShader;
 use hdl::pipeline::{unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
+use scene::volume::builtin;
 use testbenches::{require_tool, run_sim, scene, stream_results};
 
 const A: usize = 13;
@@ -65,10 +65,10 @@ fn run_tf<const P: usize>(
 }
 
 fn run_sweep<const P: usize>(
-    s: &golden_model::scene::Scene,
-    cam: &golden_model::scene::Camera,
-    vol: &golden_model::volume::Volume,
-    sweep: &golden_model::plan::Sweep,
+    s: &scene::Scene,
+    cam: &scene::Camera,
+    vol: &scene::volume::Volume,
+    sweep: &golden_model::cube4l::plan::Sweep,
     label: String,
 ) -> (u64, u64) {
     let golden = GoldenShader::new(s, cam, sweep);
@@ -143,7 +143,7 @@ const VIEWS: [&str; 5] = [
 
 #[test]
 fn views_cover_both_orders_and_every_sign() {
-    use golden_model::plan::{Order, Rays};
+    use golden_model::cube4l::plan::{Order, Rays};
     let (mut orders, mut dx, mut dy) = (Vec::new(), Vec::new(), Vec::new());
     for view in VIEWS {
         let s = scene(&format!(
@@ -296,7 +296,7 @@ fn pipeline_wider_voxels_and_channels() {
             q = top / 4
         ));
         let vol = builtin("sphere", s.volume.dims, voxel_bits).unwrap();
-        let r = hdl::sim::simulate(&s, &s.camera().unwrap(), &vol, None).unwrap();
+        let r = cosim::sim::simulate(&s, &s.camera().unwrap(), &vol, None).unwrap();
         assert_eq!(
             r.mismatches, 0,
             "{mode} voxel_bits={voxel_bits} rgba_bits={rgba_bits} p={p}: first differences {:?}",

@@ -1,7 +1,7 @@
 //! Waveforms of the whole-pipeline simulation: the VCD parses with vcd2fst,
 //! and every signal the GTKWave save file names exists in it.
 
-use golden_model::volume::builtin;
+use scene::volume::builtin;
 use std::collections::HashSet;
 use testbenches::{assert_vcd_parses, scene};
 
@@ -37,7 +37,7 @@ fn pipeline_vcd_parses_and_gtkw_names_its_signals() {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vcd");
     std::fs::create_dir_all(&dir).unwrap();
     let vcd = dir.join("pipeline_p2.vcd");
-    let r = hdl::sim::simulate(&s, &s.camera().unwrap(), &vol, Some(&vcd)).unwrap();
+    let r = cosim::sim::simulate(&s, &s.camera().unwrap(), &vol, Some(&vcd)).unwrap();
     assert_eq!(r.mismatches, 0);
     assert_vcd_parses(&vcd);
     let names = vcd_names(&vcd);

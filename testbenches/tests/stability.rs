@@ -11,10 +11,10 @@
 //! visible surface (zero at 0 and 45 degrees). The reference integrates the
 //! continuous tri-linear field every 0.25 voxel.
 
+use golden_model::cube4l::plan::{Plan, Rays};
 use golden_model::cube4l::render;
 use golden_model::fixed::max_of;
-use golden_model::plan::{Plan, Rays};
-use golden_model::volume::{builtin, Volume};
+use scene::volume::{builtin, Volume};
 use testbenches::{compare_with_reference, scene, Comparison};
 
 fn run(vol: &str, dims: &str, view: &str, extra: &str) -> Comparison {
@@ -206,7 +206,7 @@ fn empty_impulse_and_checkerboard_volumes() {
         &parallel([20.0, 30.0, 0.0]),
         r#", "mode": "mip""#,
     );
-    let argmax = |img: &golden_model::warp::Image| {
+    let argmax = |img: &scene::Image| {
         let i = (0..img.rgb.len())
             .max_by(|&a, &b| img.rgb[a][0].total_cmp(&img.rgb[b][0]))
             .unwrap();
@@ -309,7 +309,7 @@ fn gradient_magnitude_opacity() {
     ));
     let cam = s.camera().unwrap();
     let plan = Plan::new(&s, &cam).unwrap();
-    let shader = golden_model::shader::Shader::new(&s, &cam, &plan.sweeps[0]);
+    let shader = golden_model::cube4l::shader::Shader::new(&s, &cam, &plan.sweeps[0]);
     assert!(shader.opacity.as_ref().unwrap().gm_shift.is_some());
     let c = run("sphere", "[32,32,32]", &parallel([70.0, 30.0, 0.0]), tf);
     // Measured 6.26 %.

@@ -1,7 +1,7 @@
 //! Synthesis with yosys and place and route with nextpnr-ice40 of a pipeline
 //! small enough for an iCE40 UP5K.
 
-use hdl::synth::{frame_clocks, parse_stat, synthesize, Target};
+use cosim::synth::{frame_clocks, parse_stat, synthesize, Target};
 use testbenches::{require_tool, scene};
 
 #[test]
@@ -14,7 +14,7 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_up5k() {
     );
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mip");
-    let m = hdl::export::write_export("mip.json", &s, &s.camera().unwrap(), s.volume.dims, &out)
+    let m = cosim::export::write_export("mip.json", &s, &s.camera().unwrap(), s.volume.dims, &out)
         .unwrap();
     let files: Vec<String> = m["sweeps"][0]["files"]
         .as_array()

@@ -1,7 +1,7 @@
 //! `generated_verilog/` against a fresh `cube verilog` export, and every
 //! committed file through `verilator --lint-only -Wall` and `iverilog`.
 
-use golden_model::scene::Scene;
+use scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use testbenches::require_tool;
@@ -53,7 +53,8 @@ fn committed_verilog_is_fresh() {
         let cam = scene.camera().unwrap();
         let fresh = tmp.path().join(&name);
         let file = format!("{name}.json");
-        hdl::export::write_export(&file, &scene, &cam, scene.volume.render_dims(), &fresh).unwrap();
+        cosim::export::write_export(&file, &scene, &cam, scene.volume.render_dims(), &fresh)
+            .unwrap();
         let committed = root().join("generated_verilog").join(&name);
         let stale = "generated_verilog is stale: run scripts/generate-verilog";
         assert_eq!(
@@ -142,7 +143,7 @@ fn lint_without_waivers_flags_exactly_the_waived_rules() {
     for line in log.lines().filter(|l| l.starts_with("%Warning-")) {
         let rule = &line["%Warning-".len()..line.find(':').unwrap()];
         assert!(
-            hdl::export::LINT_WAIVERS.contains(&format!("-rule {rule} ")),
+            cosim::export::LINT_WAIVERS.contains(&format!("-rule {rule} ")),
             "an unwaived warning: {line}"
         );
     }

@@ -4,7 +4,7 @@
 //! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
 //! dy, and the base-plane pixel address. Each beat it reads one voxel per
 //! pipeline and emits it with its control one clock later (the block RAM's
-//! read latency), exactly as `golden_model::cfb::CfbStream`.
+//! read latency), exactly as `golden_model::cube4l::cfb::CfbStream`.
 //!
 //! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
 //! `N_s`. Dataset voxel `(u, v, w)` is at address `u div P + v*b + w*b*n_v`
@@ -25,7 +25,7 @@
 
 use crate::divider::Divider;
 use crate::ram::DepthRam;
-use golden_model::plan::{Face, Rays, Sweep};
+use golden_model::cube4l::plan::{Face, Rays, Sweep};
 use rust_hdl::prelude::*;
 
 /// Sweep parameters the CFB is built for.
@@ -144,7 +144,7 @@ pub struct CfbLane<const A: usize> {
     pub er: Signal<Out, Bit>,
     /// A direct neighbour lies outside the dataset (`Control::edge`).
     pub at_edge: Signal<Out, Bit>,
-    /// `golden_model::plan::Face` as a number (0 = none).
+    /// `golden_model::cube4l::plan::Face` as a number (0 = none).
     pub face: Signal<Out, Bits<3>>,
     pub base_x: Signal<Out, Bits<16>>,
     pub base_y: Signal<Out, Bits<16>>,

@@ -2,12 +2,12 @@
 //! it, split into one file per module, with a manifest of its parameters and
 //! of the units the scene leaves out.
 
-use crate::pipeline::{Pipeline, PipelineConfig};
-use golden_model::cfb::SkewedMemory;
-use golden_model::plan::{Plan, Rays, Sweep};
-use golden_model::scene::{Camera, Scene};
-use golden_model::shader::Shader as GoldenShader;
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::{Plan, Rays, Sweep};
+use golden_model::cube4l::shader::Shader as GoldenShader;
+use hdl::pipeline::{Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
+use scene::{Camera, Scene};
 
 /// Ring-buffer address bits of every build: enough for a 256² slice at
 /// p >= 2 (see `PipelineConfig::history_bits`, which refuses larger needs).
@@ -581,7 +581,7 @@ pub fn write_export(
                 },
                 "tap_ring_address_bits": config.tap_bits(),
                 "gradient_ring_address_bits": if config.gradient {
-                    crate::abc_gradient::AbcGradient::<H>::ring_bits(config.slice_beats, config.beam_beats)
+                    hdl::abc_gradient::AbcGradient::<H>::ring_bits(config.slice_beats, config.beam_beats)
                 } else {
                     0
                 },

@@ -9,11 +9,12 @@
 //! 3. `shaded = sat(mul(c, d) + s)` per RGB channel (`sat`: clamp to M).
 //! 4. `weighted = mul(shaded, alpha)`, emitted as `[r, g, b, alpha]`.
 
+use super::gradient::{magnitude, quantize_normal};
+use super::plan::{Control, Sweep};
 use crate::fixed::{max_of, mul_unorm, quantize_unorm, sat_u};
-use crate::gradient::{magnitude, quantize_normal};
-use crate::plan::{Control, Sweep};
-use crate::scene::{Camera, Mode, Scene};
-use crate::transfer::{unlit, ColourLut, OpacityLut, ReflectanceMap, TransferFn};
+use crate::lut::{unlit, ColourLut, OpacityLut, ReflectanceMap};
+use scene::transfer::TransferFn;
+use scene::{Camera, Mode, Scene};
 
 /// The classification and shading tables of one sweep, and which units the
 /// scene needs.

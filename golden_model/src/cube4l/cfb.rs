@@ -9,8 +9,8 @@
 //! that is not a multiple of `p` is padded: lanes past the end carry an
 //! invalid, padding voxel and never output a pixel.
 
-use crate::plan::{Control, Sweep};
-use crate::volume::Volume;
+use super::plan::{Control, Sweep};
+use scene::volume::Volume;
 
 /// The volume distributed over `p` memory modules.
 #[derive(Debug, Clone)]
@@ -122,7 +122,7 @@ impl Iterator for CfbStream<'_> {
                         er: false,
                         invalid: true,
                         edge: true,
-                        face: crate::plan::Face::None,
+                        face: super::plan::Face::None,
                     };
                     (0, 0, c, None)
                 } else {

@@ -2,9 +2,58 @@
 //! volumes. Voxels are unsigned integers of the scene's `voxel_bits`.
 
 use crate::error::{CubeError, Result};
-use crate::fixed::max_of;
-use crate::scene::{RawType, VolumeSpec};
 use glam::DVec3;
+use serde::Deserialize;
+use std::path::PathBuf;
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VolumeSpec {
+    pub builtin: Option<String>,
+    pub raw: Option<PathBuf>,
+    pub dims: [usize; 3],
+    #[serde(rename = "type")]
+    pub kind: Option<RawType>,
+    pub window: Option<[f64; 2]>,
+    /// Optional sub-box of the loaded volume; the scene then renders it alone.
+    pub crop: Option<Crop>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields)]
+pub struct Crop {
+    pub offset: [usize; 3],
+    pub dims: [usize; 3],
+}
+
+impl VolumeSpec {
+    /// Dims of the volume the scene renders (after any crop).
+    pub fn render_dims(&self) -> [usize; 3] {
+        self.crop.map_or(self.dims, |c| c.dims)
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum RawType {
+    U8,
+    U16,
+    I16,
+}
+
+impl RawType {
+    pub fn bytes(self) -> usize {
+        match self {
+            RawType::U8 => 1,
+            RawType::U16 | RawType::I16 => 2,
+        }
+    }
+}
+
+/// Largest value of an unsigned `bits`-wide voxel, `2^bits - 1`.
+pub fn max_value(bits: u32) -> u32 {
+    ((1u64 << bits) - 1) as u32
+}
 
 #[derive(Debug, Clone)]
 pub struct Volume {
@@ -34,7 +83,7 @@ impl Volume {
     }
 
     pub fn max_value(&self) -> u32 {
-        max_of(self.bits)
+        max_value(self.bits)
     }
 
     /// Load the volume a scene describes (cropped when the scene says so).
@@ -113,7 +162,7 @@ pub fn from_raw(
             .map(|c| i16::from_le_bytes([c[0], c[1]]) as f64)
             .collect(),
     };
-    let vmax = max_of(bits);
+    let vmax = max_value(bits);
     let data = match window {
         Some([lo, hi]) => raw
             .iter()
@@ -143,7 +192,7 @@ pub fn sphere_geometry(dims: [usize; 3]) -> (DVec3, f64) {
 }
 
 fn fill(dims: [usize; 3], bits: u32, f: impl Fn(DVec3) -> f64) -> Volume {
-    let vmax = max_of(bits) as f64;
+    let vmax = max_value(bits) as f64;
     let mut data = Vec::with_capacity(dims.iter().product());
     for w in 0..dims[2] {
         for v in 0..dims[1] {

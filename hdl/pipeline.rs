@@ -38,9 +38,9 @@ use crate::cfb::{Cfb, CfbConfig};
 use crate::compositor::Compositor;
 use crate::ram::DepthRam;
 use crate::shader::Shader;
-use golden_model::plan::Sweep;
-use golden_model::scene::Mode;
+use golden_model::cube4l::plan::Sweep;
 use rust_hdl::prelude::*;
+use scene::Mode;
 
 /// The taps' `(e_x, e_y)` offsets, in the order of the lane's `t0..t8`.
 pub const TAPS: [(i32, i32); 9] = [
@@ -74,7 +74,7 @@ pub struct PipelineConfig {
     pub taps: [Tap; 9],
     pub frac_bits: u32,
     pub rgba_bits: u32,
-    pub order: golden_model::plan::Order,
+    pub order: golden_model::cube4l::plan::Order,
     pub reset: [u32; 4],
     /// Shading needs the ABC gradient unit (and delays everything a slice).
     pub gradient: bool,
@@ -99,7 +99,7 @@ impl PipelineConfig {
         sweep: &Sweep,
         vol_dims: [usize; 3],
         p: usize,
-        shader: &golden_model::shader::Shader,
+        shader: &golden_model::cube4l::shader::Shader,
     ) -> Result<PipelineConfig, String> {
         let mut cfb = CfbConfig::from_sweep(sweep, vol_dims, p)?;
         cfb.voxel_bits = shader.voxel_bits;
@@ -146,12 +146,12 @@ impl PipelineConfig {
             beam_beats: b,
             voxel_bits: shader.voxel_bits,
             taps_used: match sweep.rays {
-                golden_model::plan::Rays::Parallel { dx, dy } => {
+                golden_model::cube4l::plan::Rays::Parallel { dx, dy } => {
                     // Tap (e_x, e_y) serves x - sign(dx), y - sign(dy).
                     let (sx, sy) = (-dx.signum(), -dy.signum());
                     TAPS.map(|(ex, ey)| (ex == 0 || ex == sx) && (ey == 0 || ey == sy))
                 }
-                golden_model::plan::Rays::Perspective { .. } => [true; 9],
+                golden_model::cube4l::plan::Rays::Perspective { .. } => [true; 9],
             },
             ring_fields: match shader.mode {
                 Mode::Mip | Mode::Minip => vec![(0, shader.voxel_bits as usize)],
@@ -160,7 +160,7 @@ impl PipelineConfig {
                     .map(|c| (16 * c, shader.rgba_bits as usize))
                     .collect(),
             },
-            reset: golden_model::compositor::reset_value(shader.mode, shader.voxel_bits),
+            reset: golden_model::cube4l::compositor::reset_value(shader.mode, shader.voxel_bits),
         })
     }
 
@@ -289,7 +289,7 @@ pub struct PipeLane<const H: usize> {
     pub px_valid: Signal<Out, Bit>,
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
-    /// The face the pixel left through (`golden_model::plan::Face` as a number).
+    /// The face the pixel left through (`golden_model::cube4l::plan::Face` as a number).
     pub px_face: Signal<Out, Bits<3>>,
     abc: AbcGradient<H>,
     use_gradient: Constant<Bit>,
@@ -1066,7 +1066,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
     /// shader of that sweep, whose LUTs the hardware copies.
     pub fn new(
         config: &PipelineConfig,
-        golden: &golden_model::shader::Shader,
+        golden: &golden_model::cube4l::shader::Shader,
     ) -> Result<Pipeline<P, A, H>, String> {
         if config.p as usize != P {
             return Err(format!(

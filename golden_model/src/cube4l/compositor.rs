@@ -7,10 +7,10 @@
 //! of dx and dy narrow it to 2x2: neighbour `x - sign(dx)` with weight `|dx|`.
 //! Cells outside the slice read as the reset value (nothing accumulated).
 
+use super::plan::Order;
+use super::shader::Sample;
 use crate::fixed::{lerp_frac, max_of, mul_unorm, sat_u};
-use crate::plan::Order;
-use crate::scene::Mode;
-use crate::shader::Sample;
+use scene::Mode;
 
 /// Value of an empty compositing-buffer cell (the SR reset value).
 pub fn reset_value(mode: Mode, voxel_bits: u32) -> [u32; 4] {

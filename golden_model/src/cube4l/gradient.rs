@@ -4,7 +4,7 @@
 //! (`Control::edge`) and never reach here.
 
 use crate::fixed::{bit_len, isqrt, round_shift_sat};
-use crate::transfer::NORMAL_BITS;
+use crate::lut::NORMAL_BITS;
 
 /// `(v(x+1) - v(x-1), v(y+1) - v(y-1), v(z+1) - v(z-1))`: signed, one bit
 /// wider than the voxels, not halved.

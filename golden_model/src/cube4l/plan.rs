@@ -9,10 +9,10 @@
 //! sweep per (major axis, direction) that some pixel's ray has; each covers
 //! the slices on the ray's side of the eye.
 
-use crate::error::{CubeError, Result};
 use crate::fixed::{quantize, round_div};
-use crate::scene::{Camera, Projection, Scene};
 use glam::{DMat3, DVec3};
+use scene::{Camera, Projection, Scene};
+use scene::{CubeError, Result};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Order {

@@ -4,22 +4,17 @@
 //! generator, control bits) with the perspective [`divider`],
 //! [`abc_gradient`], [`shader`], the bilinear unit ([`bilinear`]),
 //! [`compositor`], and [`pipeline`], which joins p pipelines by
-//! nearest-neighbour links. Around them: [`ram`] (block RAM as deep as the
-//! scene needs), [`export`] (Verilog per stage, lint waivers, manifest),
-//! [`sim`] with the [`verilator`] engine, [`vcd_diff`] and [`synth`].
+//! nearest-neighbour links, with [`ram`] (block RAM as deep as the scene
+//! needs) and [`unorm`] (the exact unorm multiplier). Nothing here spawns a
+//! process or touches a file: the `cosim` crate exports, simulates and
+//! synthesizes these stages.
 
 pub mod abc_gradient;
 pub mod bilinear;
 pub mod cfb;
 pub mod compositor;
 pub mod divider;
-pub mod export;
 pub mod pipeline;
 pub mod ram;
 pub mod shader;
-pub mod sim;
-pub mod synth;
-pub mod tool;
 pub mod unorm;
-pub mod vcd_diff;
-pub mod verilator;

@@ -6,10 +6,10 @@
 //! for cycle; it models the external voxel RAM when the design has one, and
 //! logs every pixel on the pixel bus.
 
-use golden_model::cfb::SkewedMemory;
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::Sweep;
 use golden_model::cube4l::BasePlane;
-use golden_model::plan::Sweep;
-use golden_model::scene::Mode;
+use scene::Mode;
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -275,7 +275,7 @@ pub fn run(
         }
         let run_seconds = t.elapsed().as_secs_f64();
         let text = std::fs::read_to_string(&log).map_err(|e| e.to_string())?;
-        let (base, cycles) = crate::sim::parse_pixel_log(&text, sweep, mode)?;
+        let (base, cycles) = crate::pixel_log::parse_pixel_log(&text, sweep, mode)?;
         Ok(Run {
             base,
             cycles,

@@ -1,7 +1,7 @@
 //! Bilinear interpolation datapath of the Cube-4L bilinear unit (§3.7, the
 //! second two stages of Figs. 20-21): given the 2x2 compositing-buffer cells
 //! that the signs of dx and dy selected, and the weights |dx| and |dy|, it
-//! computes per channel, bit for bit as `golden_model::compositor::gather`,
+//! computes per channel, bit for bit as `golden_model::cube4l::compositor::gather`,
 //!
 //! ```text
 //! top    = lerp(c00, c10, |dx|)     bottom = lerp(c01, c11, |dx|)    (stage 1)

@@ -1,7 +1,7 @@
 //! Compositing unit of the Cube-4L pipeline (§3.5, the C_k circles of Fig.
 //! 18): one voxel per clock, one register stage. It combines the bilinear
 //! unit's accumulated RGBA with the shaded voxel, bit for bit as
-//! `golden_model::compositor::composite`:
+//! `golden_model::cube4l::compositor::composite`:
 //!
 //! - over (composite, first-opaque): `C = sat(C_front + mul(M - A_front, C_back))`
 //!   per channel, where front/back are acc/new front to back and new/acc back
@@ -15,9 +15,9 @@
 //! one 16x16 multiplier per channel.
 
 use crate::unorm::MulUnorm;
-use golden_model::plan::Order;
-use golden_model::scene::Mode;
+use golden_model::cube4l::plan::Order;
 use rust_hdl::prelude::*;
+use scene::Mode;
 
 /// `sat(front + mul(m - front_alpha, back))` for one channel, combinational.
 #[derive(LogicBlock)]

@@ -1,6 +1,6 @@
 //! ABC gradient estimation of Cube-4L (§3.2, Figs. 8-17): central
 //! differences at voxel positions, bit for bit as
-//! `golden_model::gradient::central_difference`, with only nearest-neighbour
+//! `golden_model::cube4l::gradient::central_difference`, with only nearest-neighbour
 //! links between pipelines.
 //!
 //! The gradient of slice z needs slice z+1, so the unit emits voxel t (with

@@ -1,12 +1,12 @@
 //! Shader and classifier of Cube-4L (§3.3-3.4): the colour and opacity LUTs
 //! indexed by the voxel's top bits, the reflectance map indexed by the
 //! quantized gradient, and the opacity weighting, bit for bit as
-//! `golden_model::shader::Shader::sample`:
+//! `golden_model::cube4l::shader::Shader::sample`:
 //!
 //! 1. `alpha = opacity[v >> shift]`, 0 on padding and, when gradients are
 //!    used, on voxels at the dataset's edge (first-opaque's threshold is
 //!    applied when the table is filled);
-//! 2. the gradient is quantized like `golden_model::gradient::quantize_normal`:
+//! 2. the gradient is quantized like `golden_model::cube4l::gradient::quantize_normal`:
 //!    all three components shift right (rounding half up) until the largest
 //!    fits in 4 magnitude bits, then saturate to ±15; the 5-bit two's
 //!    complement components index the reflectance map `[diffuse, specular]`;
@@ -22,9 +22,9 @@
 
 use crate::unorm::MulUnorm;
 use golden_model::fixed::max_of;
-use golden_model::scene::Mode;
-use golden_model::transfer::NORMAL_BITS;
+use golden_model::lut::NORMAL_BITS;
 use rust_hdl::prelude::*;
+use scene::Mode;
 
 /// LUT index bits (the golden model indexes with at most 12).
 pub const LUT_INDEX_BITS: usize = 12;
@@ -151,13 +151,13 @@ pub struct Shader {
 impl Shader {
     /// Build from the golden model's shader of the same sweep; `Err` for the
     /// parts not built in hardware yet.
-    pub fn new(golden: &golden_model::shader::Shader) -> Result<Shader, String> {
+    pub fn new(golden: &golden_model::cube4l::shader::Shader) -> Result<Shader, String> {
         assert_eq!(
             NORMAL_BITS, 5,
             "the RTL normal quantizer is built for 5-bit components"
         );
         assert_eq!(
-            golden_model::transfer::GM_BITS,
+            golden_model::lut::GM_BITS,
             4,
             "the RTL opacity LUT takes a 4-bit gradient-magnitude bin"
         );

@@ -2,10 +2,11 @@
 //! image size and hardware precision. Parsing rejects unknown keys and every
 //! value the renderers cannot honour, with a one-line message.
 
+use crate::camera::{check_dir, Camera, ViewSpec};
 use crate::error::{CubeError, Result};
-use glam::{DMat3, DVec3};
+use crate::volume::{max_value, VolumeSpec, BUILTINS};
 use serde::Deserialize;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Largest accepted volume side; larger sides are treated as absurd input.
 pub const MAX_DIM: usize = 4096;
@@ -33,73 +34,6 @@ pub struct Scene {
 
 fn default_image() -> [u32; 2] {
     [256, 256]
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct VolumeSpec {
-    pub builtin: Option<String>,
-    pub raw: Option<PathBuf>,
-    pub dims: [usize; 3],
-    #[serde(rename = "type")]
-    pub kind: Option<RawType>,
-    pub window: Option<[f64; 2]>,
-    /// Optional sub-box of the loaded volume; the scene then renders it alone.
-    pub crop: Option<Crop>,
-}
-
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
-#[serde(deny_unknown_fields)]
-pub struct Crop {
-    pub offset: [usize; 3],
-    pub dims: [usize; 3],
-}
-
-impl VolumeSpec {
-    /// Dims of the volume the scene renders (after any crop).
-    pub fn render_dims(&self) -> [usize; 3] {
-        self.crop.map_or(self.dims, |c| c.dims)
-    }
-}
-
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "lowercase")]
-pub enum RawType {
-    U8,
-    U16,
-    I16,
-}
-
-impl RawType {
-    pub fn bytes(self) -> usize {
-        match self {
-            RawType::U8 => 1,
-            RawType::U16 | RawType::I16 => 2,
-        }
-    }
-}
-
-#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "lowercase")]
-pub enum Projection {
-    Parallel,
-    Perspective,
-}
-
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ViewSpec {
-    pub projection: Projection,
-    /// Parallel only: rotations of the volume about the world x, y and z axes,
-    /// applied in that order (x first).
-    pub rotate_deg: Option<[f64; 3]>,
-    /// Perspective only, all in voxel coordinates of the dataset.
-    pub eye: Option<[f64; 3]>,
-    pub target: Option<[f64; 3]>,
-    pub up: Option<[f64; 3]>,
-    pub fov_deg: Option<f64>,
-    /// Parallel only: magnification; 1 fits the volume's diagonal to the image.
-    pub zoom: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
@@ -238,22 +172,6 @@ fn scene_err(msg: impl Into<String>) -> CubeError {
     CubeError::Scene(msg.into())
 }
 
-fn check_vec(name: &str, v: [f64; 3]) -> Result<DVec3> {
-    let d = DVec3::from_array(v);
-    if !d.is_finite() {
-        return Err(CubeError::View(format!("{name} {v:?} is not finite")));
-    }
-    Ok(d)
-}
-
-fn check_dir(name: &str, v: [f64; 3]) -> Result<DVec3> {
-    let d = check_vec(name, v)?;
-    if d.length() < 1e-9 {
-        return Err(CubeError::View(format!("{name} {v:?} has zero length")));
-    }
-    Ok(d.normalize())
-}
-
 impl Scene {
     /// Parse and validate a scene. Relative raw paths are resolved against
     /// `base` (the scene file's folder).
@@ -319,7 +237,7 @@ impl Scene {
             (Some(_), Some(_)) => return Err(scene_err("volume has both 'builtin' and 'raw'")),
             (None, None) => return Err(scene_err("volume needs 'builtin' or 'raw'")),
             (Some(b), None) => {
-                if !crate::volume::BUILTINS.iter().any(|(n, _)| n == b) {
+                if !BUILTINS.iter().any(|(n, _)| n == b) {
                     return Err(scene_err(format!(
                         "unknown builtin volume '{b}' (see `cube scenes`)"
                     )));
@@ -362,7 +280,7 @@ impl Scene {
 
     fn validate_transfer(&self) -> Result<()> {
         let t = &self.transfer;
-        let vmax = crate::fixed::max_of(self.hardware.voxel_bits) as f64;
+        let vmax = max_value(self.hardware.voxel_bits) as f64;
         let check_points = |name: &str, xs: Vec<f64>, ys: Vec<f64>, ymax: f64| -> Result<()> {
             if xs.is_empty() {
                 return Err(scene_err(format!(
@@ -442,151 +360,6 @@ impl Scene {
     /// The camera this scene's view defines, in dataset voxel coordinates.
     pub fn camera(&self) -> Result<Camera> {
         Camera::new(&self.view, self.volume.render_dims(), self.image)
-    }
-}
-
-/// How the final image's pixels map to rays in dataset voxel coordinates
-/// (voxel `(u, v, w)` sits at `(u, v, w)`). Both renderers take their rays from
-/// here, so their images cover the same region.
-#[derive(Debug, Clone)]
-pub struct Camera {
-    pub projection: Projection,
-    /// Camera axes in dataset coordinates: right, up, and forward (into the scene).
-    pub right: DVec3,
-    pub up: DVec3,
-    pub forward: DVec3,
-    /// Parallel: image centre. Perspective: eye.
-    pub origin: DVec3,
-    /// Parallel: voxel units per pixel. Perspective: tan(fov/2) / (height/2).
-    pub scale: f64,
-    pub width: u32,
-    pub height: u32,
-    /// Distance from the image centre back to where parallel rays start.
-    pub back: f64,
-}
-
-impl Camera {
-    pub fn new(view: &ViewSpec, dims: [usize; 3], image: [u32; 2]) -> Result<Camera> {
-        let centre = DVec3::new(
-            (dims[0] - 1) as f64 / 2.0,
-            (dims[1] - 1) as f64 / 2.0,
-            (dims[2] - 1) as f64 / 2.0,
-        );
-        let diag = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64).length();
-        let [w, h] = image;
-        match view.projection {
-            Projection::Parallel => {
-                if view.eye.is_some()
-                    || view.target.is_some()
-                    || view.up.is_some()
-                    || view.fov_deg.is_some()
-                {
-                    return Err(CubeError::View(
-                        "parallel views take rotate_deg and zoom, not eye/target/up/fov_deg".into(),
-                    ));
-                }
-                let r = view.rotate_deg.unwrap_or([0.0; 3]);
-                let rv = check_vec("rotate_deg", r)?;
-                let zoom = view.zoom.unwrap_or(1.0);
-                if !(zoom.is_finite() && zoom > 0.0 && zoom <= 1000.0) {
-                    return Err(CubeError::View(format!(
-                        "zoom {zoom} must lie in (0, 1000]"
-                    )));
-                }
-                // World = Rz * Ry * Rx * dataset; the camera looks down world -z.
-                let rot = DMat3::from_rotation_z(rv.z.to_radians())
-                    * DMat3::from_rotation_y(rv.y.to_radians())
-                    * DMat3::from_rotation_x(rv.x.to_radians());
-                let inv = rot.transpose();
-                Ok(Camera {
-                    projection: Projection::Parallel,
-                    right: inv * DVec3::X,
-                    up: inv * DVec3::Y,
-                    forward: inv * DVec3::NEG_Z,
-                    origin: centre,
-                    scale: diag / (w.min(h) as f64 * zoom),
-                    width: w,
-                    height: h,
-                    back: diag,
-                })
-            }
-            Projection::Perspective => {
-                if view.rotate_deg.is_some() || view.zoom.is_some() {
-                    return Err(CubeError::View(
-                        "perspective views take eye/target/up/fov_deg, not rotate_deg or zoom"
-                            .into(),
-                    ));
-                }
-                let eye = check_vec(
-                    "eye",
-                    view.eye
-                        .ok_or_else(|| CubeError::View("perspective view needs 'eye'".into()))?,
-                )?;
-                let target = check_vec("target", view.target.unwrap_or(centre.to_array()))?;
-                let up = check_dir("up", view.up.unwrap_or([0.0, 1.0, 0.0]))?;
-                let fov = view.fov_deg.unwrap_or(40.0);
-                if !(fov.is_finite() && fov > 0.5 && fov < 170.0) {
-                    return Err(CubeError::View(format!(
-                        "fov_deg {fov} must lie in (0.5, 170)"
-                    )));
-                }
-                let fwd = target - eye;
-                if fwd.length().is_nan() || fwd.length() <= 1e-9 {
-                    return Err(CubeError::View("eye and target coincide".into()));
-                }
-                let forward = fwd.normalize();
-                let right = forward.cross(up);
-                if right.length() < 1e-9 {
-                    return Err(CubeError::View(
-                        "up is parallel to the viewing direction".into(),
-                    ));
-                }
-                let right = right.normalize();
-                let up = right.cross(forward);
-                Ok(Camera {
-                    projection: Projection::Perspective,
-                    right,
-                    up,
-                    forward,
-                    origin: eye,
-                    scale: (fov.to_radians() / 2.0).tan() / (h as f64 / 2.0),
-                    width: w,
-                    height: h,
-                    back: 0.0,
-                })
-            }
-        }
-    }
-
-    /// The ray through the centre of pixel `(i, j)` (row 0 at the top):
-    /// origin and unit direction, in dataset coordinates.
-    pub fn ray(&self, i: u32, j: u32) -> (DVec3, DVec3) {
-        let sx = i as f64 + 0.5 - self.width as f64 / 2.0;
-        let sy = self.height as f64 / 2.0 - (j as f64 + 0.5);
-        match self.projection {
-            Projection::Parallel => {
-                let o = self.origin + self.right * (sx * self.scale) + self.up * (sy * self.scale)
-                    - self.forward * self.back;
-                (o, self.forward)
-            }
-            Projection::Perspective => {
-                let d = self.forward + self.right * (sx * self.scale) + self.up * (sy * self.scale);
-                (self.origin, d.normalize())
-            }
-        }
-    }
-
-    /// Direction from a point towards the viewer (for specular highlights).
-    pub fn to_viewer(&self, p: DVec3) -> DVec3 {
-        match self.projection {
-            Projection::Parallel => -self.forward,
-            Projection::Perspective => (self.origin - p).normalize_or_zero(),
-        }
-    }
-
-    /// A camera-space vector (x right, y up, z towards the viewer) in dataset coordinates.
-    pub fn camera_to_dataset(&self, v: DVec3) -> DVec3 {
-        self.right * v.x + self.up * v.y - self.forward * v.z
     }
 }
 

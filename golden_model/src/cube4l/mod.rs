@@ -10,68 +10,22 @@
 //! identity), and front to back a cell whose gathered opacity is already
 //! full skips the voxel (`mul(0, x) = 0`).
 
-use crate::compositor::{composite, gather, reset_value};
-use crate::gradient::central_difference;
-use crate::plan::{Face, Order, Plan, Sweep};
-use crate::scene::{Camera, Mode, Scene};
-use crate::shader::Shader;
-use crate::volume::Volume;
+pub mod cfb;
+pub mod compositor;
+pub mod frame;
+pub mod gradient;
+pub mod plan;
+pub mod shader;
+
+pub use frame::{BasePlane, Frame, Stats};
+
+use compositor::{composite, gather, reset_value};
+use gradient::central_difference;
+use plan::{Face, Order, Plan, Sweep};
 use rayon::prelude::*;
-
-/// The base-plane image of one sweep: pixels output on ER at their base-plane
-/// addresses, with the face each came out of (`Face::None` where none did).
-#[derive(Debug, Clone)]
-pub struct BasePlane {
-    pub width: usize,
-    pub height: usize,
-    pub pixels: Vec<[u32; 4]>,
-    pub faces: Vec<Face>,
-}
-
-impl BasePlane {
-    /// An empty base plane for `sweep`: no pixel has come out yet.
-    pub fn new(sweep: &Sweep) -> BasePlane {
-        let [width, height] = sweep.base_dims();
-        BasePlane {
-            width,
-            height,
-            pixels: vec![[0; 4]; width * height],
-            faces: vec![Face::None; width * height],
-        }
-    }
-
-    /// Record the pixel that left through `face` at base-plane address `[x, y]`.
-    pub fn put(&mut self, [x, y]: [usize; 2], value: [u32; 4], face: Face) {
-        self.pixels[x + self.width * y] = value;
-        self.faces[x + self.width * y] = face;
-    }
-}
-
-/// Work counters of a sweep.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    pub voxels: u64,
-    /// Voxels that went through gradient and shading.
-    pub shaded: u64,
-    /// Front-to-back cells already opaque: voxel skipped.
-    pub terminated: u64,
-    /// Compositing results clipped by saturation.
-    pub saturations: u64,
-    pub pixels_out: u64,
-}
-
-impl std::ops::Add for Stats {
-    type Output = Stats;
-    fn add(self, o: Stats) -> Stats {
-        Stats {
-            voxels: self.voxels + o.voxels,
-            shaded: self.shaded + o.shaded,
-            terminated: self.terminated + o.terminated,
-            saturations: self.saturations + o.saturations,
-            pixels_out: self.pixels_out + o.pixels_out,
-        }
-    }
-}
+use scene::volume::Volume;
+use scene::{Camera, Mode, Scene};
+use shader::Shader;
 
 /// A pixel leaving on ER: base-plane address, value and face.
 type PixelOut = ([usize; 2], [u32; 4], Face);
@@ -153,15 +107,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     (base, stats)
 }
 
-/// A whole Cube-4L frame: the plan, and one base plane per sweep.
-#[derive(Debug, Clone)]
-pub struct Frame {
-    pub plan: Plan,
-    pub bases: Vec<BasePlane>,
-    pub stats: Stats,
-}
-
-pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> crate::error::Result<Frame> {
+pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> scene::Result<Frame> {
     let plan = Plan::new(scene, camera)?;
     let mut bases = Vec::new();
     let mut stats = Stats::default();
@@ -175,10 +121,7 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> crate::error::Res
 }
 
 /// Render a scene with the golden model all the way to the final image.
-pub fn render_image(
-    scene: &Scene,
-    vol: &Volume,
-) -> crate::error::Result<(crate::warp::Image, Frame)> {
+pub fn render_image(scene: &Scene, vol: &Volume) -> scene::Result<(scene::Image, Frame)> {
     let camera = scene.camera()?;
     let frame = render(scene, &camera, vol)?;
     let hw = scene.hardware;

@@ -6,14 +6,17 @@
 //! file grouping the signals by stage.
 
 use crate::export::{pipeline_verilog, Memory, H, ON_CHIP_BITS as A};
-use crate::pipeline::{unpack, Pipeline, PipelineConfig};
-use golden_model::cfb::SkewedMemory;
+use crate::gtkw::write_gtkw;
+use crate::iverilog::run_icarus;
+use crate::pixel_log::face_of;
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::{Face, Plan};
+use golden_model::cube4l::shader::Shader as GoldenShader;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
-use golden_model::plan::{Face, Plan};
-use golden_model::scene::{Camera, Scene};
-use golden_model::shader::Shader as GoldenShader;
-use golden_model::volume::Volume;
+use hdl::pipeline::{unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
+use scene::volume::Volume;
+use scene::{Camera, Scene};
 use std::path::Path;
 use std::time::Instant;
 
@@ -49,17 +52,6 @@ pub struct SimOutcome {
     pub build_seconds: f64,
     /// Units this scene's hardware leaves out (see `export::left_out`).
     pub left_out: Vec<&'static str>,
-}
-
-fn face_of(code: u32) -> Face {
-    [
-        Face::None,
-        Face::Last,
-        Face::XPos,
-        Face::XNeg,
-        Face::YPos,
-        Face::YNeg,
-    ][code as usize]
 }
 
 /// The simulator that runs the pipeline.
@@ -236,7 +228,7 @@ fn run<const P: usize>(
     config: &PipelineConfig,
     golden: &GoldenShader,
     mem: &SkewedMemory,
-    sweep: &golden_model::plan::Sweep,
+    sweep: &golden_model::cube4l::plan::Sweep,
     vcd: Option<&Path>,
 ) -> Result<(BasePlane, u64), String> {
     let mut uut = Pipeline::<P, A, H>::new(config, golden)?;
@@ -292,211 +284,4 @@ fn run<const P: usize>(
     }
     let o = out.lock().unwrap();
     Ok((o.0.clone(), o.1))
-}
-
-/// Simulate emitted pipeline Verilog (from [`pipeline_verilog`] with on-chip
-/// memory preloaded, possibly altered)
-/// under Icarus for one sweep; returns the base plane of the pixels it put
-/// out and its clock count.
-pub fn run_icarus(
-    verilog: &str,
-    p: usize,
-    sweep: &golden_model::plan::Sweep,
-    mode: golden_model::scene::Mode,
-) -> Result<(BasePlane, u64), String> {
-    let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p)) as u64;
-    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let dir = std::env::temp_dir().join(format!("cube-iverilog-{}-{run}", std::process::id()));
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let result = (|| {
-        std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
-        std::fs::write(dir.join("tb.v"), testbench_verilog(p, beats)).map_err(|e| e.to_string())?;
-        crate::tool::run(
-            std::process::Command::new("iverilog")
-                .args(["-g2012", "-o", "sim.vvp", "top.v", "tb.v"])
-                .current_dir(&dir),
-            "Icarus Verilog (iverilog)",
-        )?;
-        crate::tool::run(
-            std::process::Command::new("vvp")
-                .args(["-n", "sim.vvp"])
-                .current_dir(&dir),
-            "Icarus Verilog (vvp)",
-        )?;
-        let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
-        let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
-        // Counted like the rust-hdl engine: from the clock that registers start.
-        Ok((base, cycles + 1))
-    })();
-    let _ = std::fs::remove_dir_all(&dir);
-    result
-}
-
-/// Parse a Verilog engine's pixel log: `x y face res` per pixel on the bus,
-/// then `cycles N` (or `timeout`).
-pub fn parse_pixel_log(
-    log: &str,
-    sweep: &golden_model::plan::Sweep,
-    mode: golden_model::scene::Mode,
-) -> Result<(BasePlane, u64), String> {
-    let mut base = BasePlane::new(sweep);
-    let mut cycles = None;
-    for line in log.lines() {
-        let f: Vec<&str> = line.split_whitespace().collect();
-        match f.as_slice() {
-            ["cycles", c] => cycles = c.parse::<u64>().ok(),
-            ["timeout"] => return Err("the Verilog pipeline did not finish the sweep".into()),
-            [x, y, face, res] => {
-                let n = |s: &str| {
-                    s.parse::<u64>()
-                        .map_err(|e| format!("pixel log '{line}': {e}"))
-                };
-                base.put(
-                    [n(x)? as usize, n(y)? as usize],
-                    unpack(mode, n(res)?),
-                    face_of(n(face)? as u32),
-                );
-            }
-            _ => return Err(format!("unexpected line in the pixel log: '{line}'")),
-        }
-    }
-    Ok((base, cycles.ok_or("the pixel log has no clock count")?))
-}
-
-/// A Verilog testbench for the emitted `top`: clock, one start pulse, and a
-/// log line `x y face res` for every pixel on the bus until `beats` beats
-/// have come out; then `cycles N` (or `timeout`).
-fn testbench_verilog(p: usize, beats: u64) -> String {
-    let mut v =
-        String::from("`timescale 1ns/1ps\nmodule tb;\n  reg clock = 0;\n  reg start = 0;\n");
-    let mut ports = String::from(
-        ".clock(clock), .start(start), .load_enable(1'b0), .load_module(8'd0), .load_address({A}'d0), .load_data(16'd0)",
-    )
-    .replace("{A}", &A.to_string());
-    let mut log = String::new();
-    for k in 0..p {
-        v.push_str(&format!(
-            "  wire px_valid${k};\n  wire [15:0] px_x${k};\n  wire [15:0] px_y${k};\n  wire [2:0] px_face${k};\n  wire res_beat${k};\n  wire res_valid${k};\n  wire [63:0] res${k};\n"
-        ));
-        ports.push_str(&format!(", .ext_data${k}(16'd0)"));
-        for n in [
-            "px_valid",
-            "px_x",
-            "px_y",
-            "px_face",
-            "res_beat",
-            "res_valid",
-            "res",
-        ] {
-            ports.push_str(&format!(", .{n}${k}({n}${k})"));
-        }
-        log.push_str(&format!(
-            "      if (px_valid${k}) $fdisplay(f, \"%0d %0d %0d %0d\", px_x${k}, px_y${k}, px_face${k}, res${k});\n"
-        ));
-    }
-    v.push_str(&format!(
-        "  top uut({ports});\n  always #5 clock = ~clock;\n"
-    ));
-    v.push_str(&format!(
-        "  integer f;\n  integer beats = 0;\n  integer cycles = 0;\n  initial begin\n    f = $fopen(\"pixels.txt\", \"w\");\n    @(negedge clock) start = 1;\n    @(negedge clock) start = 0;\n    while (beats < {beats}) begin\n      @(posedge clock);\n      #1;\n      cycles = cycles + 1;\n      if (res_beat$0) beats = beats + 1;\n{log}      if (cycles > {limit}) begin\n        $fdisplay(f, \"timeout\");\n        beats = {beats};\n      end\n    end\n    $fdisplay(f, \"cycles %0d\", cycles);\n    $fclose(f);\n    $finish;\n  end\nendmodule\n",
-        limit = 2 * beats + 1000
-    ));
-    v
-}
-
-/// A GTKWave save file beside `vcd` that opens with the signals grouped by
-/// stage: CFB counters, then per pipeline its CFB lane, compositing-buffer
-/// taps, and pixel output. `top` is the design's scope in the VCD (`uut` for
-/// rust-hdl, `TOP.top` for Verilator).
-pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
-    let mut s = format!(
-        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
-        vcd.display()
-    );
-    let group = |s: &mut String, name: &str, sigs: Vec<String>| {
-        s.push_str(&format!("@800200\n-{name}\n@22\n"));
-        for sig in sigs {
-            s.push_str(&sig);
-            s.push('\n');
-        }
-        s.push_str(&format!("@1000200\n-{name}\n"));
-    };
-    let under = |prefix: &str, names: &[&str]| {
-        names
-            .iter()
-            .map(|n| format!("{prefix}.{n}"))
-            .collect::<Vec<_>>()
-    };
-    s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
-    group(
-        &mut s,
-        "CFB",
-        under(
-            &format!("{top}.cfb"),
-            &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
-        ),
-    );
-    for k in 0..p {
-        let cfb_lane = [
-            "x[15:0]",
-            "y[15:0]",
-            "z[15:0]",
-            "value[15:0]",
-            "address[31:0]",
-            "pad",
-            "halo",
-            "sr",
-            "er",
-            "at_edge",
-            "invalid",
-            "face[2:0]",
-            "dx_neg",
-            "dx_mag[15:0]",
-            "dy_neg",
-            "dy_mag[15:0]",
-        ];
-        group(
-            &mut s,
-            &format!("CFB lane {k}"),
-            under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
-        );
-        let lane = format!("{top}.lanes${k}");
-        let abc = [
-            "o_valid",
-            "o_value[15:0]",
-            "gx_neg",
-            "gx_mag[15:0]",
-            "gy_neg",
-            "gy_mag[15:0]",
-            "gz_neg",
-            "gz_mag[15:0]",
-        ];
-        group(
-            &mut s,
-            &format!("ABC gradient {k}"),
-            under(&format!("{lane}.abc"), &abc),
-        );
-        let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
-        group(
-            &mut s,
-            &format!("Shader {k}"),
-            under(&format!("{lane}.shader"), &shader),
-        );
-        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.a{c}[63:0]")).collect();
-        taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
-        group(&mut s, &format!("Compositing lane {k}"), taps);
-        group(
-            &mut s,
-            &format!("Pixel out {k}"),
-            under(
-                &lane,
-                &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
-            ),
-        );
-    }
-    let gtkw = vcd.with_extension("gtkw");
-    let tmp = gtkw.with_extension("gtkw.tmp");
-    std::fs::write(&tmp, s)?;
-    std::fs::rename(tmp, gtkw)
 }

@@ -1,0 +1,100 @@
+//! GTKWave save files: a VCD from any engine opens with its signals grouped
+//! by stage.
+
+use std::path::Path;
+
+/// A GTKWave save file beside `vcd` that opens with the signals grouped by
+/// stage: CFB counters, then per pipeline its CFB lane, compositing-buffer
+/// taps, and pixel output. `top` is the design's scope in the VCD (`uut` for
+/// rust-hdl, `TOP.top` for Verilator).
+pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
+    let mut s = format!(
+        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
+        vcd.display()
+    );
+    let group = |s: &mut String, name: &str, sigs: Vec<String>| {
+        s.push_str(&format!("@800200\n-{name}\n@22\n"));
+        for sig in sigs {
+            s.push_str(&sig);
+            s.push('\n');
+        }
+        s.push_str(&format!("@1000200\n-{name}\n"));
+    };
+    let under = |prefix: &str, names: &[&str]| {
+        names
+            .iter()
+            .map(|n| format!("{prefix}.{n}"))
+            .collect::<Vec<_>>()
+    };
+    s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
+    group(
+        &mut s,
+        "CFB",
+        under(
+            &format!("{top}.cfb"),
+            &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
+        ),
+    );
+    for k in 0..p {
+        let cfb_lane = [
+            "x[15:0]",
+            "y[15:0]",
+            "z[15:0]",
+            "value[15:0]",
+            "address[31:0]",
+            "pad",
+            "halo",
+            "sr",
+            "er",
+            "at_edge",
+            "invalid",
+            "face[2:0]",
+            "dx_neg",
+            "dx_mag[15:0]",
+            "dy_neg",
+            "dy_mag[15:0]",
+        ];
+        group(
+            &mut s,
+            &format!("CFB lane {k}"),
+            under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
+        );
+        let lane = format!("{top}.lanes${k}");
+        let abc = [
+            "o_valid",
+            "o_value[15:0]",
+            "gx_neg",
+            "gx_mag[15:0]",
+            "gy_neg",
+            "gy_mag[15:0]",
+            "gz_neg",
+            "gz_mag[15:0]",
+        ];
+        group(
+            &mut s,
+            &format!("ABC gradient {k}"),
+            under(&format!("{lane}.abc"), &abc),
+        );
+        let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
+        group(
+            &mut s,
+            &format!("Shader {k}"),
+            under(&format!("{lane}.shader"), &shader),
+        );
+        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.a{c}[63:0]")).collect();
+        taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
+        group(&mut s, &format!("Compositing lane {k}"), taps);
+        group(
+            &mut s,
+            &format!("Pixel out {k}"),
+            under(
+                &lane,
+                &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
+            ),
+        );
+    }
+    let gtkw = vcd.with_extension("gtkw");
+    let tmp = gtkw.with_extension("gtkw.tmp");
+    std::fs::write(&tmp, s)?;
+    std::fs::rename(tmp, gtkw)
+}
