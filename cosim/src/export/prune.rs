@@ -1,0 +1,198 @@
+//! Leaving out what a scene does not need: the units a sweep's pipeline
+//! leaves out, and their removal from the emitted Verilog.
+
+use super::split::split_modules;
+use golden_model::cube4l::shader::Shader as GoldenShader;
+use hdl::pipeline::PipelineConfig;
+
+/// A unit that a scene's hardware leaves out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LeftOut {
+    pub name: &'static str,
+    /// Its instance names, under their parents; the emitted Verilog has no
+    /// such instance (see [`prune`]). Empty for units that stay in the
+    /// Verilog, disabled by constants, for synthesis to remove.
+    pub instances: &'static [&'static str],
+}
+
+/// The units a sweep's pipeline leaves out.
+pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> {
+    let mut v = Vec::new();
+    if !config.gradient {
+        v.push(LeftOut {
+            name: "abc_gradient",
+            instances: &["abc"],
+        });
+    }
+    if golden.reflectance.is_none() {
+        v.push(LeftOut {
+            name: "reflectance_map",
+            instances: &["reflectance"],
+        });
+    }
+    if golden.colour.is_none() && golden.opacity.is_none() {
+        v.push(LeftOut {
+            name: "colour_and_opacity_lut",
+            instances: &["lut"],
+        });
+    }
+    if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+        v.push(LeftOut {
+            name: "gradient_opacity_lut_and_magnitude",
+            instances: &["alpha_gm", "sqrt"],
+        });
+    }
+    if !golden.mode.uses_colour() {
+        v.push(LeftOut {
+            name: "shading_and_weighting_multipliers",
+            instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
+        });
+    }
+    if config.cfb.eye.is_none() {
+        v.push(LeftOut {
+            name: "sight_ray_divider",
+            instances: &["div_x", "div_y"],
+        });
+        v.push(LeftOut {
+            name: "3x3_taps_outside_2x2 (2-word rings)",
+            instances: &[],
+        });
+    }
+    v
+}
+
+/// The names of `units`, for reports.
+pub fn names(units: &[LeftOut]) -> Vec<&'static str> {
+    units.iter().map(|u| u.name).collect()
+}
+
+/// Ports of a module, from its declarations: (name, is_output).
+fn module_ports(text: &str) -> Vec<(String, bool)> {
+    text.lines()
+        .map(str::trim)
+        .filter_map(|l| {
+            let output = l.starts_with("output ");
+            if !output && !l.starts_with("input ") {
+                return None;
+            }
+            Some((
+                l.trim_end_matches(';')
+                    .split_whitespace()
+                    .last()?
+                    .to_string(),
+                output,
+            ))
+        })
+        .collect()
+}
+
+/// Remove the instances named in `units` from emitted Verilog: their
+/// modules and every module below them, and their instantiation in the
+/// parent, whose wires for their outputs become constant zero. The rust-hdl
+/// description drives zero on those outputs too when the unit is disabled,
+/// so simulation and the pruned Verilog agree signal for signal. The inputs
+/// the parent computes for the removed instance stay, unread.
+pub fn prune(verilog: &str, units: &[LeftOut]) -> Result<String, String> {
+    let gone: Vec<&str> = units
+        .iter()
+        .flat_map(|u| u.instances.iter().copied())
+        .collect();
+    let mut modules = split_modules(verilog);
+    let pruned: Vec<(String, Vec<(String, bool)>)> = modules
+        .iter()
+        .filter(|m| {
+            m.name
+                .rsplit_once('$')
+                .is_some_and(|(_, leaf)| gone.contains(&leaf))
+        })
+        .map(|m| (m.name.clone(), module_ports(&m.text)))
+        .collect();
+    modules.retain(|m| {
+        !pruned
+            .iter()
+            .any(|(p, _)| m.name == *p || m.name.starts_with(&format!("{p}$")))
+    });
+    for (name, ports) in &pruned {
+        let (parent, instance) = name.rsplit_once('$').expect("a sub-module");
+        let m = modules
+            .iter_mut()
+            .find(|m| m.name == parent)
+            .ok_or_else(|| format!("prune: no parent module {parent}"))?;
+        let head = format!("{name} {instance}(");
+        let mut out = String::with_capacity(m.text.len());
+        let mut skipping = false;
+        let mut found = false;
+        for line in m.text.lines() {
+            let t = line.trim();
+            if t == head {
+                skipping = true;
+                found = true;
+                continue;
+            }
+            if skipping {
+                skipping = t != ");";
+                continue;
+            }
+            let output_wire = ports.iter().any(|(p, out)| {
+                *out && t.starts_with("wire ") && t.ends_with(&format!(" {instance}${p};"))
+            });
+            if output_wire {
+                out.push_str(line.trim_end_matches(';'));
+                out.push_str(" = 'h0;\n");
+            } else {
+                out.push_str(line);
+                out.push('\n');
+            }
+        }
+        if !found {
+            return Err(format!("prune: no instance {instance} in {parent}"));
+        }
+        m.text = out;
+    }
+    Ok(modules
+        .into_iter()
+        .map(|m| m.text)
+        .collect::<Vec<_>>()
+        .join("\n"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TOY: &str = "\n\nmodule top(clock,q);\n    input wire  clock;\n    output reg  [3:0] q;\n    reg  u$a;\n    wire  [3:0] u$y;\n    top$u u(\n        .a(u$a),\n        .y(u$y)\n    );\n    always @(*) begin\n        u$a = clock;\n        q = u$y;\n    end\nendmodule // top\n\n\nmodule top$u(a,y);\n    input wire  a;\n    output reg  [3:0] y;\n    top$u$v v(\n    );\nendmodule // top$u\n\n\nmodule top$u$v();\nendmodule // top$u$v\n";
+
+    #[test]
+    fn split_keeps_every_module_in_order() {
+        let names: Vec<String> = split_modules(TOY).into_iter().map(|m| m.name).collect();
+        assert_eq!(names, ["top", "top$u", "top$u$v"]);
+    }
+
+    #[test]
+    fn prune_removes_the_unit_and_zeroes_its_outputs() {
+        let unit = LeftOut {
+            name: "u",
+            instances: &["u"],
+        };
+        let v = prune(TOY, &[unit]).unwrap();
+        assert_eq!(split_modules(&v).len(), 1, "{v}");
+        assert!(v.contains("wire  [3:0] u$y = 'h0;"), "{v}");
+        assert!(!v.contains("top$u u("), "{v}");
+        assert!(
+            v.contains("u$a = clock;"),
+            "the parent's input wiring stays"
+        );
+        let missing = LeftOut {
+            name: "w",
+            instances: &["w"],
+        };
+        assert_eq!(
+            prune(TOY, &[missing]).unwrap(),
+            split_modules(TOY)
+                .into_iter()
+                .map(|m| m.text)
+                .collect::<Vec<_>>()
+                .join("\n")
+        );
+    }
+}

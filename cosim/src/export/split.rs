@@ -1,0 +1,151 @@
+//! One file per stage: the emitted design split into its modules, grouped
+//! by the stage each belongs to, with the Verilator lint waivers.
+
+use super::prune::LeftOut;
+
+/// One Verilog module of an emitted design.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Module {
+    pub name: String,
+    pub text: String,
+}
+
+/// Split emitted Verilog into its modules, in order (the top first).
+pub fn split_modules(verilog: &str) -> Vec<Module> {
+    let mut out = Vec::new();
+    let mut current: Option<Module> = None;
+    for line in verilog.lines() {
+        if current.is_none() {
+            if let Some(rest) = line.strip_prefix("module ") {
+                let name = rest
+                    .split(|c: char| c == '(' || c.is_whitespace())
+                    .next()
+                    .unwrap_or_default()
+                    .to_string();
+                current = Some(Module {
+                    name,
+                    text: String::new(),
+                });
+            } else {
+                continue;
+            }
+        }
+        let m = current.as_mut().expect("inside a module");
+        m.text.push_str(line);
+        m.text.push('\n');
+        if line.starts_with("endmodule") {
+            out.extend(current.take());
+        }
+    }
+    out
+}
+
+/// The file (one per stage) that holds module `name`. rust-hdl emits one
+/// module per instance, named by its path (`top$lanes$2$shader$lut`), so
+/// each stage's file holds that stage's modules of every pipeline.
+pub fn stage_file(name: &str) -> &'static str {
+    let parts: Vec<&str> = name.split('$').collect();
+    match parts.as_slice() {
+        ["top"] => "top.v",
+        ["top", "cfb", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
+        ["top", "cfb", ..] => "cfb.v",
+        ["top", "lanes", _, "abc", ..] => "abc_gradient.v",
+        ["top", "lanes", _, "shader", ..] => "shader.v",
+        ["top", "lanes", _, "bilinear", ..] => "bilinear.v",
+        ["top", "lanes", _, "compositor", ..] => "compositor.v",
+        _ => "pipe_lane.v",
+    }
+}
+
+/// The stage files in the order a tool should read them (top first).
+pub const STAGE_FILES: [&str; 8] = [
+    "top.v",
+    "cfb.v",
+    "divider.v",
+    "abc_gradient.v",
+    "shader.v",
+    "pipe_lane.v",
+    "bilinear.v",
+    "compositor.v",
+];
+
+/// Verilator configuration with the lint waivers every emitted design
+/// needs; each is narrow (one rule, matched on the signal or file) and
+/// explained. (Verilator's configuration lexer stumbles on parentheses and
+/// paired apostrophes inside comments, so the comments avoid them.)
+pub const LINT_WAIVERS: &str = r#"`verilator_config
+// rust-hdl names every module by its instance path, as in top$cfb$lanes$0, and
+// the kit groups one stage's modules per file, so only top.v can carry its
+// module's name.
+lint_off -rule DECLFILENAME -file "*cfb.v"
+lint_off -rule DECLFILENAME -file "*divider.v"
+lint_off -rule DECLFILENAME -file "*abc_gradient.v"
+lint_off -rule DECLFILENAME -file "*shader.v"
+lint_off -rule DECLFILENAME -file "*pipe_lane.v"
+lint_off -rule DECLFILENAME -file "*bilinear.v"
+lint_off -rule DECLFILENAME -file "*compositor.v"
+// Each CFB lane's dataset z and memory address are observability outputs:
+// the CFB testbench compares them with the golden model's stream, and the
+// waveforms show them; the pipeline itself needs neither.
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$z'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$address'*"
+// Ring buffers and memory modules are as deep as the scene needs: they take
+// the pipeline's 16-bit addresses and use only the low address bits,
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_address'*"
+// and store only the bits the scene can set: the voxel bits of a voxel, and
+// four channels of RGBA bits in the 16-bit slots of a composited word.
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_data'*"
+// The bilinear unit's four channels share one 32-bit datapath, which X-ray
+// needs for its sum in channel 0; channels 1-3 carry 16-bit values.
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
+// Perspective only. rust-hdl emits the logic of a module as one always block,
+// so Verilator sees the block, the divider it feeds and the block again as a
+// loop, though the divider inputs come from registers and the rust-hdl
+// logic-loop check passes. This only costs Verilator some speed.
+lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
+"#;
+
+/// Verilator waivers for a design with `units` pruned: the inputs its
+/// parents still compute for the removed instances are unread.
+pub fn lint_waivers(units: &[LeftOut]) -> String {
+    let mut s = LINT_WAIVERS.to_string();
+    let instances: Vec<&str> = units
+        .iter()
+        .flat_map(|u| u.instances.iter().copied())
+        .collect();
+    if !instances.is_empty() {
+        s.push_str("// Units this scene leaves out are gone, but their parents still compute\n// the inputs they would have read.\n");
+        for i in instances {
+            s.push_str(&format!(
+                "lint_off -rule UNUSEDSIGNAL -file \"*\" -match \"*Signal is not used: '{i}$*\"\n"
+            ));
+        }
+    }
+    s
+}
+
+/// Write one design (emitted Verilog, with `units` left out) into `dir`:
+/// the stage files and the lint waivers. Returns the file names written.
+pub fn write_stage_files(
+    dir: &std::path::Path,
+    verilog: &str,
+    units: &[LeftOut],
+) -> std::io::Result<Vec<String>> {
+    let mut texts: std::collections::BTreeMap<&str, String> = Default::default();
+    for m in split_modules(verilog) {
+        texts
+            .entry(stage_file(&m.name))
+            .or_default()
+            .push_str(&m.text);
+    }
+    let mut names = Vec::new();
+    for f in STAGE_FILES {
+        if let Some(t) = texts.get(f) {
+            std::fs::write(dir.join(f), t)?;
+            names.push(f.to_string());
+        }
+    }
+    std::fs::write(dir.join("lint.vlt"), lint_waivers(units))?;
+    Ok(names)
+}
