@@ -15,10 +15,9 @@ pub fn piecewise(points: &[(f64, f64)], x: f64) -> f64 {
     }
     for w in points.windows(2) {
         let (a, b) = (w[0], w[1]);
+        // Here a.0 < x <= b.0 (x passed every earlier point), so a step
+        // (a.0 == b.0) never divides by zero: x takes its left value.
         if x <= b.0 {
-            if b.0 == a.0 {
-                return b.1;
-            }
             return a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0);
         }
     }
