@@ -37,12 +37,30 @@ pub(crate) fn check_vec(name: &str, v: [f64; 3]) -> Result<DVec3> {
     Ok(d)
 }
 
+/// Largest accepted coordinate of a perspective eye or target, in voxels.
+/// It keeps the eye, quantized with up to 15 fractional bits, within the
+/// golden model's i64 divider arithmetic and the RTL divider's datapath.
+pub const MAX_COORD: f64 = 1e6;
+
+fn check_point(name: &str, v: [f64; 3]) -> Result<DVec3> {
+    let d = check_vec(name, v)?;
+    if d.abs().max_element() > MAX_COORD {
+        return Err(CubeError::View(format!(
+            "{name} {v:?} lies beyond ±{MAX_COORD} voxels"
+        )));
+    }
+    Ok(d)
+}
+
 pub(crate) fn check_dir(name: &str, v: [f64; 3]) -> Result<DVec3> {
     let d = check_vec(name, v)?;
-    if d.length() < 1e-9 {
+    // Scale by the largest component first, so that the length neither
+    // overflows (components near 1e308) nor underflows (near 1e-300).
+    let m = d.abs().max_element();
+    if m == 0.0 {
         return Err(CubeError::View(format!("{name} {v:?} has zero length")));
     }
-    Ok(d.normalize())
+    Ok((d / m).normalize())
 }
 
 /// How the final image's pixels map to rays in dataset voxel coordinates
@@ -117,12 +135,12 @@ impl Camera {
                             .into(),
                     ));
                 }
-                let eye = check_vec(
+                let eye = check_point(
                     "eye",
                     view.eye
                         .ok_or_else(|| CubeError::View("perspective view needs 'eye'".into()))?,
                 )?;
-                let target = check_vec("target", view.target.unwrap_or(centre.to_array()))?;
+                let target = check_point("target", view.target.unwrap_or(centre.to_array()))?;
                 let up = check_dir("up", view.up.unwrap_or([0.0, 1.0, 0.0]))?;
                 let fov = view.fov_deg.unwrap_or(40.0);
                 if !(fov.is_finite() && fov > 0.5 && fov < 170.0) {

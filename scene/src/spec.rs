@@ -10,8 +10,10 @@ use std::path::Path;
 
 /// Largest accepted volume side; larger sides are treated as absurd input.
 pub const MAX_DIM: usize = 4096;
-/// Largest accepted voxel count (2 G voxels).
-pub const MAX_VOXELS: usize = 1 << 31;
+/// Largest accepted voxel count: 2^28 (for example 512 x 512 x 1024). The
+/// golden model keeps the volume as 16-bit voxels plus its compositing
+/// buffers, the reference a min-max grid: about 1 GB at this size.
+pub const MAX_VOXELS: usize = 1 << 28;
 /// Largest accepted image side.
 pub const MAX_IMAGE: u32 = 8192;
 
@@ -172,11 +174,46 @@ fn scene_err(msg: impl Into<String>) -> CubeError {
     CubeError::Scene(msg.into())
 }
 
+/// Parse scene JSON, naming the field at fault: `mode: unknown variant ...`,
+/// `volume.dims: expected 3 values, found more`.
+fn parse(text: &str) -> Result<Scene> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let scene: Scene = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        let at = format!("line {} column {}", inner.line(), inner.column());
+        let mut msg = inner.to_string();
+        // serde_json appends the position; put it once at the end.
+        if let Some(i) = msg.find(" at line ") {
+            msg.truncate(i);
+        }
+        // A fixed-size array given too many values: serde_json says only
+        // that characters trail where it expected the array's end.
+        if path != "." {
+            match msg.as_str() {
+                "trailing characters" => msg = "too many values for this array".into(),
+                // What serde_json says of a number or array where a name
+                // (an enum) or other kind of value belongs.
+                "expected value" => msg = "a value of the wrong kind or missing here".into(),
+                _ => {}
+            }
+        }
+        if path == "." {
+            scene_err(format!("{msg} ({at})"))
+        } else {
+            scene_err(format!("{path}: {msg} ({at})"))
+        }
+    })?;
+    de.end()
+        .map_err(|e| scene_err(format!("{e} after the scene object")))?;
+    Ok(scene)
+}
+
 impl Scene {
     /// Parse and validate a scene. Relative raw paths are resolved against
     /// `base` (the scene file's folder).
     pub fn from_json(text: &str, base: Option<&Path>) -> Result<Scene> {
-        let mut s: Scene = serde_json::from_str(text).map_err(|e| scene_err(e.to_string()))?;
+        let mut s: Scene = parse(text)?;
         if let (Some(raw), Some(base)) = (&s.volume.raw, base) {
             if raw.is_relative() {
                 s.volume.raw = Some(base.join(raw));
@@ -253,7 +290,13 @@ impl Scene {
             }
         }
         if let Some(c) = self.volume.crop {
-            let inside = (0..3).all(|a| c.dims[a] >= 2 && c.offset[a] + c.dims[a] <= d[a]);
+            // checked_add: an offset or size near usize::MAX must not wrap.
+            let inside = (0..3).all(|a| {
+                c.dims[a] >= 2
+                    && c.offset[a]
+                        .checked_add(c.dims[a])
+                        .is_some_and(|e| e <= d[a])
+            });
             if !inside {
                 return Err(CubeError::Volume(format!(
                     "crop offset {:?} dims {:?} must lie inside dims {d:?} with each side >= 2",
@@ -264,7 +307,12 @@ impl Scene {
         if let Some([lo, hi]) = self.volume.window {
             if !lo.is_finite() || !hi.is_finite() || hi <= lo {
                 return Err(scene_err(format!(
-                    "window [{lo}, {hi}] must be finite with hi > lo"
+                    "volume.window [{lo}, {hi}] must be finite with hi > lo"
+                )));
+            }
+            if !(hi - lo).is_finite() {
+                return Err(scene_err(format!(
+                    "volume.window [{lo}, {hi}]: hi - lo overflows; give a window within ±1e300"
                 )));
             }
         }
@@ -323,10 +371,14 @@ impl Scene {
                 g.iter().map(|p| p[1]).collect(),
                 1.0,
             )?;
-            if g.iter().any(|p| p[0] < 0.0) {
-                return Err(scene_err(
-                    "transfer.gradient_opacity magnitudes must be >= 0",
-                ));
+            // No gradient exceeds vmax * sqrt(3) / 2 voxel units per voxel
+            // (half the central difference, per component), so larger
+            // magnitudes could never be looked up.
+            if g.iter().any(|p| p[0] < 0.0 || p[0] > vmax) {
+                return Err(scene_err(format!(
+                    "transfer.gradient_opacity magnitudes must lie in [0, {vmax}] for voxel_bits {}",
+                    self.hardware.voxel_bits
+                )));
             }
         }
         if t.opacity.iter().any(|p| p[0] < 0.0 || p[0] > vmax) {

@@ -119,10 +119,7 @@ impl Volume {
                 let kind = spec
                     .kind
                     .ok_or_else(|| CubeError::Volume("raw volume needs 'type'".into()))?;
-                let bytes = std::fs::read(path).map_err(|err| CubeError::Io {
-                    path: path.display().to_string(),
-                    err,
-                })?;
+                let bytes = read_raw(path, spec.dims, kind)?;
                 from_raw(&bytes, spec.dims, kind, spec.window, bits)
                     .map_err(|e| CubeError::Volume(format!("{}: {e}", path.display())))
             }
@@ -131,6 +128,30 @@ impl Volume {
             )),
         }
     }
+}
+
+/// Read a raw volume file, checking first (with `stat`, which never blocks)
+/// that it is a regular file of exactly the size `dims` and `kind` need: a
+/// FIFO, a device or a directory is refused before it is opened, and a file
+/// of the wrong size before it is read.
+fn read_raw(path: &std::path::Path, dims: [usize; 3], kind: RawType) -> Result<Vec<u8>> {
+    let io = |err| CubeError::Io {
+        path: path.display().to_string(),
+        err,
+    };
+    let meta = std::fs::metadata(path).map_err(io)?;
+    let err = |msg: String| CubeError::Volume(format!("raw {}: {msg}", path.display()));
+    if !meta.is_file() {
+        return Err(err("not a regular file".into()));
+    }
+    let want = dims.iter().product::<usize>() * kind.bytes();
+    if meta.len() != want as u64 {
+        return Err(err(format!(
+            "file has {} bytes but dims {dims:?} x {kind:?} need {want}",
+            meta.len()
+        )));
+    }
+    std::fs::read(path).map_err(io)
 }
 
 /// Decode little-endian raw bytes. With `window = [lo, hi]` a raw value `r`
@@ -164,10 +185,17 @@ pub fn from_raw(
     };
     let vmax = max_value(bits);
     let data = match window {
-        Some([lo, hi]) => raw
-            .iter()
-            .map(|&r| (((r - lo) / (hi - lo)).clamp(0.0, 1.0) * vmax as f64).round() as u16)
-            .collect(),
+        Some([lo, hi]) => {
+            // The scene refuses windows whose width overflows; check here
+            // too, since this is public.
+            let width = hi - lo;
+            if !(width.is_finite() && width > 0.0) {
+                return Err(format!("window [{lo}, {hi}] must be finite with hi > lo"));
+            }
+            raw.iter()
+                .map(|&r| (((r - lo) / width).clamp(0.0, 1.0) * vmax as f64).round() as u16)
+                .collect()
+        }
         None => {
             if let Some(pos) = raw.iter().position(|&r| r < 0.0 || r > vmax as f64) {
                 return Err(format!(
