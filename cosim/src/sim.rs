@@ -8,7 +8,7 @@
 use crate::export::{pipeline_verilog, Memory, H, ON_CHIP_BITS as A};
 use crate::gtkw::write_gtkw;
 use crate::iverilog::run_icarus;
-use crate::pixel_log::face_of;
+use crate::pixel_log::place;
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan};
 use golden_model::cube4l::shader::Shader as GoldenShader;
@@ -222,7 +222,9 @@ pub fn simulate_with(
     })
 }
 
-type Collected = std::sync::Arc<std::sync::Mutex<(BasePlane, u64)>>;
+/// What the testbench collects: the base plane, the clock count, and the
+/// first pixel the golden model could never have output.
+type Collected = std::sync::Arc<std::sync::Mutex<(BasePlane, u64, Option<String>)>>;
 
 fn run<const P: usize>(
     config: &PipelineConfig,
@@ -236,7 +238,8 @@ fn run<const P: usize>(
     uut.connect_all();
     let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(P)) as u64;
     let mode = golden.mode;
-    let out: Collected = std::sync::Arc::new(std::sync::Mutex::new((BasePlane::new(sweep), 0)));
+    let out: Collected =
+        std::sync::Arc::new(std::sync::Mutex::new((BasePlane::new(sweep), 0, None)));
     let sink = out.clone();
     let mut sim = Simulation::new();
     sim.add_clock(5, |x: &mut Box<Pipeline<P, A, H>>| {
@@ -259,11 +262,12 @@ fn run<const P: usize>(
             for lane in x.lanes.iter() {
                 if lane.px_valid.val() {
                     let v = unpack(mode, lane.res.val().to_u64());
-                    let addr = [
-                        lane.px_x.val().to_u32() as usize,
-                        lane.px_y.val().to_u32() as usize,
-                    ];
-                    o.0.put(addr, v, face_of(lane.px_face.val().to_u32()));
+                    let addr = [lane.px_x.val().to_u64(), lane.px_y.val().to_u64()];
+                    let face = lane.px_face.val().to_u64();
+                    if let Err(e) = place(&mut o.0, addr, face, v) {
+                        // Keep the first stray pixel, with its clock.
+                        o.2.get_or_insert(format!("clock {cycles}: {e}"));
+                    }
                 }
             }
             o.1 = cycles;
@@ -283,5 +287,8 @@ fn run<const P: usize>(
             .map_err(|e| format!("simulation: {e:?}"))?,
     }
     let o = out.lock().unwrap();
-    Ok((o.0.clone(), o.1))
+    match &o.2 {
+        Some(stray) => Err(stray.clone()),
+        None => Ok((o.0.clone(), o.1)),
+    }
 }

@@ -45,8 +45,19 @@ fn canonical(bits: &str) -> String {
 }
 
 impl Trace {
+    /// Load a trace whose cycles are counted on the top's `clock`.
     pub fn load(path: &Path) -> Result<Trace, BadTrace> {
+        Trace::load_with_clock(path, "clock")
+    }
+
+    /// Load a trace whose cycles are counted on `clock`: a signal's name
+    /// (the shallowest of that name is taken) or its whole dotted path.
+    pub fn load_with_clock(path: &Path, clock: &str) -> Result<Trace, BadTrace> {
         let bad = |e: &dyn std::fmt::Display| BadTrace(format!("{}: {e}", path.display()));
+        // Refuse FIFOs and devices before opening: one with no writer would block.
+        if !std::fs::metadata(path).map_err(|e| bad(&e))?.is_file() {
+            return Err(bad(&"not a regular file"));
+        }
         let f = std::fs::File::open(path).map_err(|e| bad(&e))?;
         let mut parser = vcd::Parser::new(std::io::BufReader::new(f));
         let header = parser.parse_header().map_err(|e| bad(&e))?;
@@ -73,13 +84,17 @@ impl Trace {
             }
         }
         walk(&header.items, &mut Vec::new(), &mut names);
-        // The top's clock: the shallowest variable named `clock`.
+        // The clock: the shallowest variable of that name, or that path.
         let clock = names
             .iter()
-            .filter(|(n, _)| n.last().is_some_and(|l| l == "clock"))
+            .filter(|(n, _)| n.last().is_some_and(|l| l == clock) || n.join(".") == clock)
             .min_by_key(|(n, _)| n.len())
             .map(|(_, c)| c.clone())
-            .ok_or_else(|| bad(&"no `clock` signal"))?;
+            .ok_or_else(|| {
+                bad(&format!(
+                    "no `{clock}` signal (name the clock with --clock)"
+                ))
+            })?;
         let mut current: HashMap<String, String> = HashMap::new();
         let mut samples: HashMap<String, Vec<(u64, String)>> = HashMap::new();
         let mut cycles = 0u64;
