@@ -1,0 +1,186 @@
+//! Fuzzing the parsers with proptest: valid scene JSON and VCD text, mutated
+//! in field values, types, lengths, extremes and truncations. Whatever comes
+//! in, parsing ends in a scene (which then plans and, when small, renders)
+//! or in one clear line; it never panics or hangs.
+//!
+//! The suite runs a bounded number of cases (`PROPTEST_CASES`, default 64
+//! per property); `scripts/fuzz` runs a longer session.
+
+use proptest::prelude::*;
+use scene::{Scene, Volume};
+use serde_json::{json, Value};
+
+/// A valid scene with every section present, small enough to render.
+fn base_scene() -> Value {
+    json!({
+        "volume": {"builtin": "sphere", "dims": [8, 8, 8]},
+        "view": {"projection": "parallel", "rotate_deg": [70, 30, 0], "zoom": 1},
+        "mode": "composite",
+        "transfer": {"opacity": [[0, 0.0], [80, 0.0], [100, 0.75], [255, 0.75]],
+                     "color": [[0, 1.0, 1.0, 1.0], [255, 1.0, 0.5, 0.2]],
+                     "gradient_opacity": [[0, 0.5], [40, 1.0]],
+                     "opaque_threshold": 0.5},
+        "shading": {"enabled": true, "light_dir": [0.3, 0.3, 1.0], "ambient": 0.2,
+                    "diffuse": 0.6, "specular": 0.3, "shininess": 10},
+        "image": [16, 16],
+        "hardware": {"pipelines": 2, "voxel_bits": 8, "frac_bits": 8, "rgba_bits": 8}
+    })
+}
+
+fn perspective_scene() -> Value {
+    let mut s = base_scene();
+    s["view"] = json!({"projection": "perspective", "eye": [3.5, 3.5, -12], "target": [3.5, 3.5, 3.5],
+                       "up": [0, 1, 0], "fov_deg": 40});
+    s
+}
+
+/// Every path to a leaf (or an array) of `v`.
+fn paths(v: &Value, prefix: &mut Vec<Value>, out: &mut Vec<Vec<Value>>) {
+    out.push(prefix.clone());
+    match v {
+        Value::Object(m) => {
+            for (k, c) in m {
+                prefix.push(Value::String(k.clone()));
+                paths(c, prefix, out);
+                prefix.pop();
+            }
+        }
+        Value::Array(a) => {
+            for (i, c) in a.iter().enumerate() {
+                prefix.push(json!(i));
+                paths(c, prefix, out);
+                prefix.pop();
+            }
+        }
+        _ => {}
+    }
+}
+
+fn at<'a>(v: &'a mut Value, path: &[Value]) -> &'a mut Value {
+    path.iter().fold(v, |v, k| match k {
+        Value::String(s) => &mut v[s.as_str()],
+        Value::Number(n) => &mut v[n.as_u64().unwrap() as usize],
+        _ => unreachable!(),
+    })
+}
+
+/// Replacement values: extremes, wrong types, wrong lengths.
+fn odd_value() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        Just(json!(0)),
+        Just(json!(-1)),
+        Just(json!(1e308)),
+        Just(json!(-1e308)),
+        Just(json!(1e-320)),
+        Just(json!(u64::MAX)),
+        Just(json!(i64::MIN)),
+        Just(json!(4097)),
+        Just(json!(65536)),
+        Just(json!(0.5)),
+        Just(json!(null)),
+        Just(json!(true)),
+        Just(json!("")),
+        Just(json!("mip")),
+        Just(json!("perspective")),
+        Just(json!([])),
+        Just(json!([1])),
+        Just(json!([1, 2, 3, 4])),
+        Just(json!([[0, 0]])),
+        Just(json!({})),
+        any::<f64>().prop_map(|f| json!(f)),
+        any::<i64>().prop_map(|i| json!(i)),
+        (-3.0f64..300.0).prop_map(|f| json!(f)),
+    ]
+}
+
+/// Parse; if the scene is accepted, it must plan, and render when small.
+fn exercise(text: &str) {
+    let Ok(scene) = Scene::from_json(text, None) else {
+        let e = Scene::from_json(text, None).unwrap_err().to_string();
+        assert!(!e.contains('\n'), "one line: {e}");
+        return;
+    };
+    let cam = scene.camera().expect("a validated scene has a camera");
+    let _ = golden_model::cube4l::plan::Plan::new(&scene, &cam);
+    let dims = scene.volume.render_dims();
+    let [w, h] = scene.image;
+    if dims.iter().product::<usize>() <= 16 * 16 * 16 && w * h <= 64 * 64 {
+        let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits).unwrap();
+        if let Ok((img, _)) = golden_model::cube4l::render_image(&scene, &vol) {
+            assert!(img.rgb.iter().flatten().all(|c| c.is_finite()));
+        }
+        let r = reference::render(&scene, &cam, &vol, 1.0);
+        assert!(r.rgb.iter().flatten().all(|c| c.is_finite()));
+    }
+}
+
+fn mutate(mut v: Value, pick: usize, new: Value) -> String {
+    let mut all = Vec::new();
+    paths(&v, &mut Vec::new(), &mut all);
+    let path = &all[pick % all.len()];
+    *at(&mut v, path) = new;
+    v.to_string()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(64),
+        failure_persistence: None,
+        .. ProptestConfig::default()
+    })]
+
+    #[test]
+    fn mutated_scene_values_never_panic(pick in any::<usize>(), new in odd_value(), persp in any::<bool>()) {
+        let base = if persp { perspective_scene() } else { base_scene() };
+        exercise(&mutate(base, pick, new));
+    }
+
+    #[test]
+    fn two_mutations_never_panic(p1 in any::<usize>(), n1 in odd_value(), p2 in any::<usize>(), n2 in odd_value()) {
+        let once: Value = serde_json::from_str(&mutate(base_scene(), p1, n1)).unwrap();
+        exercise(&mutate(once, p2, n2));
+    }
+
+    #[test]
+    fn truncated_or_spliced_scene_text_never_panics(cut in any::<usize>(), junk in "[\\[\\]{}\",:0-9a-z.eE+-]{0,8}") {
+        let text = base_scene().to_string();
+        let cut = cut % (text.len() + 1);
+        exercise(&format!("{}{junk}{}", &text[..cut], &text[cut..(cut + junk.len()).min(text.len())]));
+        exercise(&text[..cut]);
+    }
+}
+
+/// A small valid VCD with a clock, a vector and a scope below the top.
+const VCD: &str = "$timescale 1ns $end\n$scope module uut $end\n$var wire 1 ! clock $end\n$var wire 4 \" count $end\n$scope module sub $end\n$var wire 1 # q $end\n$upscope $end\n$upscope $end\n$enddefinitions $end\n#0\n0!\nb0 \"\n0#\n#5\n1!\nb1 \"\n#10\n0!\n#15\n1!\nb10 \"\n1#\n#20\n0!\n";
+
+fn trace_of(text: &str) -> Result<cosim::vcd_diff::Trace, cosim::vcd_diff::BadTrace> {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("t.vcd");
+    std::fs::write(&path, text).unwrap();
+    cosim::vcd_diff::Trace::load(&path)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(64),
+        failure_persistence: None,
+        .. ProptestConfig::default()
+    })]
+
+    #[test]
+    fn mutated_vcd_text_never_panics(cut in any::<usize>(), at in any::<usize>(), junk in "[$#!\"01bxzZX \\n a-z]{0,12}") {
+        let good = trace_of(VCD).unwrap();
+        let cut = cut % (VCD.len() + 1);
+        let at = at % (cut + 1);
+        let text = format!("{}{junk}{}", &VCD[..at], &VCD[cut..]);
+        if let Ok(t) = trace_of(&text) {
+            let c = cosim::vcd_diff::compare(&good, &t, None);
+            if let Ok(c) = c {
+                let _ = c.equal();
+            }
+        } else {
+            let e = trace_of(&text).unwrap_err().to_string();
+            prop_assert!(!e.contains('\n') || e.lines().count() <= 2, "{e}");
+        }
+    }
+}
