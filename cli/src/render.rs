@@ -1,0 +1,118 @@
+//! `cube render`: render a scene with the Cube-4L golden model or the float
+//! reference, optionally compare it with the reference, and write the image,
+//! a difference image, the first sweep's base plane and a JSON report.
+
+use crate::common::{check_step, error_json, load, render_arch, Arch};
+use crate::output::{write_json, write_png};
+use anyhow::{bail, Result};
+use reference::metrics::{compare, difference};
+use scene::volume::Volume;
+use scene::Image;
+use scene::Scene;
+use serde_json::json;
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    #[arg(long)]
+    scene: PathBuf,
+    #[arg(long, value_enum, default_value = "cube4l")]
+    arch: Arch,
+    /// Final image (PNG).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Run time, image size and (with a reference) error as JSON.
+    #[arg(long)]
+    json: Option<PathBuf>,
+    /// Also render the float reference and report the error against it.
+    #[arg(long)]
+    compare_reference: bool,
+    /// Difference image against the reference (implies --compare-reference).
+    #[arg(long)]
+    diff: Option<PathBuf>,
+    /// Reference sample step along the ray, in voxel lengths.
+    #[arg(long, default_value_t = reference::DEFAULT_STEP)]
+    ref_step: f64,
+    /// Cube-4L only: write the base plane of the first sweep (PNG).
+    #[arg(long)]
+    base_plane: Option<PathBuf>,
+}
+
+fn arch_name(a: Arch) -> &'static str {
+    match a {
+        Arch::Cube4l => "cube4l",
+        Arch::Reference => "reference",
+    }
+}
+
+pub fn run(args: RenderArgs) -> Result<()> {
+    let RenderArgs {
+        scene: scene_path,
+        arch,
+        out,
+        json: json_path,
+        compare_reference,
+        diff,
+        ref_step,
+        base_plane,
+    } = args;
+    let with_ref = compare_reference || diff.is_some();
+    check_step(ref_step)?;
+    if base_plane.is_some() && arch != Arch::Cube4l {
+        bail!("--base-plane needs --arch cube4l");
+    }
+    let (scene, vol) = load(&scene_path)?;
+    let r = render_arch(&scene, &vol, arch, ref_step)?;
+    println!("{}: {:.3} s", arch_name(arch), r.seconds);
+    let mut report = json!({
+        "arch": arch_name(arch),
+        "scene": scene_path.display().to_string(),
+        "seconds": r.seconds,
+        "image": [r.image.width, r.image.height],
+        "details": r.extra,
+    });
+    if with_ref {
+        let rr = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
+        let m = compare(&r.image, &rr.image);
+        println!(
+            "reference: {:.3} s; error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+            rr.seconds, m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
+        );
+        report["error"] = error_json(&m);
+        report["reference_seconds"] = json!(rr.seconds);
+        if let Some(d) = diff {
+            write_png(&d, &difference(&r.image, &rr.image, 8.0))?;
+        }
+    }
+    if let Some(p) = base_plane {
+        let (frame_img, _) = base_plane_image(&scene, &vol)?;
+        write_png(&p, &frame_img)?;
+    }
+    if let Some(o) = out {
+        write_png(&o, &r.image)?;
+    }
+    if let Some(j) = json_path {
+        write_json(&j, &report)?;
+    }
+    Ok(())
+}
+
+/// The first sweep's base plane as an image (scaled to the display range).
+fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
+    let cam = scene.camera()?;
+    let frame = golden_model::cube4l::render(scene, &cam, vol)?;
+    let b = &frame.bases[0];
+    let depth = frame.plan.sweeps[0].dims[2];
+    let hw = scene.hardware;
+    let mut img = Image::black(b.width as u32, b.height as u32);
+    for (o, p) in img.rgb.iter_mut().zip(&b.pixels) {
+        *o = golden_model::warp::to_rgb(
+            scene.mode,
+            p.map(|c| c as f64),
+            hw.rgba_bits,
+            hw.voxel_bits,
+            depth,
+        );
+    }
+    Ok((img, frame.bases.len()))
+}
