@@ -14,9 +14,9 @@ pub struct AnglesArgs {
     #[arg(long)]
     scene: PathBuf,
     /// First, last and step angle in degrees (rotate_deg[1]).
-    #[arg(long, num_args = 3, default_values_t = [0.0, 90.0, 5.0])]
+    #[arg(long, num_args = 3, default_values_t = [0.0, 90.0, 5.0], allow_negative_numbers = true)]
     range: Vec<f64>,
-    #[arg(long, default_value_t = reference::DEFAULT_STEP)]
+    #[arg(long, default_value_t = reference::DEFAULT_STEP, allow_negative_numbers = true)]
     ref_step: f64,
     #[arg(long)]
     json: Option<PathBuf>,
@@ -31,15 +31,17 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     } = args;
     check_step(ref_step)?;
     let [from, to, step] = [range[0], range[1], range[2]];
-    if !(from.is_finite()
-        && to.is_finite()
+    // Angles are from + i * step, so each is exact to one rounding and the
+    // sweep ends even where from + step == from in floating point.
+    let steps = (to - from) / step;
+    let ok = from.abs() <= 1e6
+        && to.abs() <= 1e6
         && step.is_finite()
         && step > 0.0
-        && to >= from
-        && (to - from) / step <= 3600.0)
-    {
+        && (0.0..=3600.0).contains(&steps);
+    if !ok {
         bail!(
-            "--range FROM TO STEP needs finite values, STEP > 0, TO >= FROM and at most 3600 steps"
+            "--range FROM TO STEP needs FROM and TO within ±1e6 degrees, STEP > 0, TO >= FROM and at most 3600 steps"
         );
     }
     let (mut scene, vol) = load(&scene_path)?;
@@ -52,8 +54,8 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         "{:>7} {:>10} {:>10} {:>10} {:>9} {:>7}",
         "angle", "cube4l s", "ref s", "rel.eucl%", "PSNR dB", "sweep"
     );
-    let mut a = from;
-    while a <= to + 1e-9 {
+    for i in 0..=(steps + 1e-9).floor() as u32 {
+        let a = from + i as f64 * step;
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
         let g = render_arch(&scene, &vol, Arch::Cube4l, ref_step)?;
         let r = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
@@ -66,7 +68,6 @@ pub fn run(args: AnglesArgs) -> Result<()> {
             g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis
         );
         rows.push(json!({"angle": a, "cube4l_seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m)}));
-        a += step;
     }
     let worst = rows
         .iter()

@@ -51,14 +51,34 @@ enum Command {
     Synth(synth::SynthArgs),
     /// Compare two VCD traces of the same design (e.g. rust-hdl against
     /// Verilator) signal by signal and cycle by cycle. Exit 0 when equal, 1
-    /// when they differ, 2 on a bad file.
+    /// when they differ, 2 on a bad trace file.
     VcdDiff(vcd_diff::VcdDiffArgs),
     /// List the built-in volumes.
     Scenes,
 }
 
 fn main() {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // Help and version go to stdout as clap prints them.
+        Err(e) if !e.use_stderr() => e.exit(),
+        // Bad input: one line, exit 1, like every other error.
+        Err(e) => {
+            // clap's first paragraph, joined (a missing argument is named
+            // on the line after the message); its usage text is left out.
+            let text = e.to_string();
+            let first: Vec<&str> = text
+                .lines()
+                .map(str::trim)
+                .take_while(|l| !l.is_empty())
+                .collect();
+            eprintln!(
+                "cube: {} (see cube --help)",
+                first.join(" ").trim_start_matches("error: ")
+            );
+            std::process::exit(1);
+        }
+    };
     let r = match cli.command {
         None => default_run::run(),
         Some(Command::Render(args)) => render::run(args),

@@ -1,12 +1,54 @@
 //! Whole-or-nothing output files: written to a temporary file beside the
-//! target, then renamed over it.
+//! target, then renamed over it. A target that is a FIFO or a device
+//! (`/dev/stdout`, `/dev/null`, a named pipe) is written through, never
+//! replaced; a directory is refused.
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use scene::Image;
 use std::io::Write;
 use std::path::Path;
 
+/// What an output path names now.
+pub enum Target {
+    /// Nothing, or a regular file: written whole or not at all.
+    File,
+    /// A FIFO, a character device or a socket: written through.
+    Special,
+}
+
+/// Check an output path before any work is done for it.
+pub fn check_target(path: &Path) -> Result<Target> {
+    match std::fs::metadata(path) {
+        Ok(m) if m.is_dir() => bail!("{} is a directory, not a file", path.display()),
+        Ok(m) if !m.is_file() => Ok(Target::Special),
+        _ => Ok(Target::File),
+    }
+}
+
+/// Open a special file for writing. A FIFO is opened without blocking, so
+/// one with no reader is an error rather than a hang.
+fn open_special(path: &Path) -> Result<std::fs::File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    use std::os::unix::io::AsRawFd;
+    let f = std::fs::OpenOptions::new()
+        .write(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)
+        .with_context(|| format!("opening {} (a FIFO needs a reader)", path.display()))?;
+    // Writes may block again, like any writer to a pipe.
+    // SAFETY: fcntl on a descriptor this function owns.
+    unsafe {
+        let flags = libc::fcntl(f.as_raw_fd(), libc::F_GETFL);
+        libc::fcntl(f.as_raw_fd(), libc::F_SETFL, flags & !libc::O_NONBLOCK);
+    }
+    Ok(f)
+}
+
 fn atomic_write(path: &Path, write: impl FnOnce(&mut std::fs::File) -> Result<()>) -> Result<()> {
+    if let Target::Special = check_target(path)? {
+        let mut f = open_special(path)?;
+        return write(&mut f).with_context(|| format!("writing {}", path.display()));
+    }
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),

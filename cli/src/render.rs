@@ -31,7 +31,7 @@ pub struct RenderArgs {
     #[arg(long)]
     diff: Option<PathBuf>,
     /// Reference sample step along the ray, in voxel lengths.
-    #[arg(long, default_value_t = reference::DEFAULT_STEP)]
+    #[arg(long, default_value_t = reference::DEFAULT_STEP, allow_negative_numbers = true)]
     ref_step: f64,
     /// Cube-4L only: write the base plane of the first sweep (PNG).
     #[arg(long)]

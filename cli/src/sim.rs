@@ -53,24 +53,53 @@ pub fn run(args: SimArgs) -> Result<()> {
     let name = engine.name();
     let (scene, vol) = load(&scene_path)?;
     let cam = scene.camera()?;
-    let vcd_tmp = vcd.as_ref().map(|v| v.with_extension("vcd.tmp"));
-    let r = cosim::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
-        .map_err(|e| anyhow::anyhow!("sim: {e}"))?;
-    if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
-        std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
-        let gtkw_tmp = tmp.with_extension("gtkw");
-        let gtkw = v.with_extension("gtkw");
-        let text = std::fs::read_to_string(&gtkw_tmp)?
-            .replace(&tmp.display().to_string(), &v.display().to_string());
-        std::fs::remove_file(&gtkw_tmp)?;
-        output::write_text(&gtkw, &text)?;
+    for path in [&out, &json_path].into_iter().flatten() {
+        output::check_target(path)?;
     }
-    let cps = r.cycles as f64 / r.sim_seconds;
+    let vcd_tmp = match &vcd {
+        Some(v) => {
+            if let output::Target::Special = output::check_target(v)? {
+                bail!(
+                    "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
+                    v.display()
+                );
+            }
+            if let Some(dir) = v.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)
+                    .with_context(|| format!("creating {}", dir.display()))?;
+            }
+            Some(v.with_extension("vcd.tmp"))
+        }
+        None => None,
+    };
+    let simulated = cosim::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
+        .map_err(|e| anyhow::anyhow!("sim: {e}"))
+        .and_then(|r| {
+            if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
+                let gtkw_tmp = tmp.with_extension("gtkw");
+                let text = std::fs::read_to_string(&gtkw_tmp)?
+                    .replace(&tmp.display().to_string(), &v.display().to_string());
+                output::write_text(&v.with_extension("gtkw"), &text)?;
+                std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
+            }
+            Ok(r)
+        });
+    // Whatever happened, no temporary trace is left behind.
+    if let Some(tmp) = &vcd_tmp {
+        let _ = std::fs::remove_file(tmp);
+        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
+    }
+    let r = simulated?;
+    let cps = if r.sim_seconds > 0.0 {
+        r.cycles as f64 / r.sim_seconds
+    } else {
+        0.0
+    };
     println!(
-        "{name}: {} clocks (ideal {}, +{} fill), {:.2} s in all ({:.2} s simulating, {:.0} clocks/s; {:.1} s building); {} base-plane pixels differ from the golden model",
+        "{name}: {} clocks (ideal {}, {:+} fill), {:.2} s in all ({:.2} s simulating, {:.0} clocks/s; {:.1} s building); {} base-plane pixels differ from the golden model",
         r.cycles,
         r.ideal_cycles,
-        r.cycles - r.ideal_cycles,
+        r.cycles as i64 - r.ideal_cycles as i64,
         r.seconds,
         r.sim_seconds,
         cps,

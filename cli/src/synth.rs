@@ -45,10 +45,17 @@ pub fn run(args: SynthArgs) -> Result<()> {
         SynthTarget::Xilinx => Target::Xilinx,
         SynthTarget::Generic => Target::Generic,
     };
+    if let Some(j) = &json_path {
+        crate::output::check_target(j)?;
+    }
     let scene = Scene::load(&scene_path)?;
     let cam = scene.camera()?;
-    let dir = std::env::temp_dir().join(format!("cube-synth-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    // Removed when dropped, on every path out of this function.
+    let work = tempfile::Builder::new()
+        .prefix("cube-synth-")
+        .tempdir()
+        .context("creating a temporary directory for yosys")?;
+    let dir = work.path().join("design");
     let name = scene_name(&scene_path);
     let result = (|| {
         let m = cosim::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &dir)
@@ -64,7 +71,6 @@ pub fn run(args: SynthArgs) -> Result<()> {
         let r = synthesize(&sub, &files, target, pnr).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
         Ok::<_, anyhow::Error>((m, r))
     })();
-    let _ = std::fs::remove_dir_all(&dir);
     let (m, r) = result?;
     let p = scene.hardware.pipelines as u64;
     let gradient = !m["units_left_out"]

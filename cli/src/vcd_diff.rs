@@ -17,6 +17,10 @@ pub struct VcdDiffArgs {
     /// How many first mismatches to print.
     #[arg(long, default_value_t = 10)]
     show: usize,
+    /// The clock whose rising edges count the cycles: a signal name (the
+    /// shallowest of that name) or a dotted path.
+    #[arg(long, default_value = "clock")]
+    clock: String,
 }
 
 /// Compares the traces and returns the exit code: 0 equal, 1 different, 2
@@ -27,12 +31,14 @@ pub fn run(args: VcdDiffArgs) -> i32 {
         b,
         signals,
         show,
+        clock,
     } = args;
-    let loaded = Trace::load(&a).and_then(|ta| Ok((ta, Trace::load(&b)?)));
+    let load = |p: &PathBuf| Trace::load_with_clock(p, &clock);
+    let loaded = load(&a).and_then(|ta| Ok((ta, load(&b)?)));
     let c = match loaded.and_then(|(ta, tb)| compare(&ta, &tb, signals.as_deref())) {
         Ok(c) => c,
         Err(e) => {
-            eprintln!("error: vcd-diff: {e}");
+            eprintln!("cube: vcd-diff: {e}");
             return 2;
         }
     };

@@ -325,13 +325,15 @@ fn verilog_writes_stage_files_lint_waivers_and_manifest() {
         r#"{"volume": {"builtin": "sphere", "dims": [16, 16, 16]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
             "mode": "mip", "hardware": {"pipelines": 2}}"#,
     );
-    std::fs::create_dir_all(d.path().join("out/stale")).unwrap();
+    // A previous export's sweep directory: replaced whole.
+    std::fs::create_dir_all(d.path().join("out/sweep7")).unwrap();
+    std::fs::write(d.path().join("out/sweep7/cfb.v"), "// old").unwrap();
     let o = cube(&["verilog", "--scene", &mip, "--out", "out"], d.path());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let out = d.path().join("out");
     assert!(
-        !out.join("stale").exists(),
-        "the old directory is replaced whole"
+        !out.join("sweep7").exists(),
+        "the old export is replaced whole"
     );
     for f in [
         "top.v",
@@ -446,7 +448,7 @@ fn vcd_diff_aligns_names_and_cycles_and_exits_0_1_2() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(
-            err.starts_with("error: vcd-diff:") && !err.contains("panicked"),
+            err.starts_with("cube: vcd-diff:") && !err.contains("panicked"),
             "{err}"
         );
     }

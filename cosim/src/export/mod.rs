@@ -126,6 +126,49 @@ pub fn export(
     Ok((designs, memory))
 }
 
+/// Whether `out` may be replaced by an export: it does not exist, or it is
+/// a directory holding only what an export writes (stage files,
+/// `lint.vlt`, `manifest.json`, `sweep<i>/` of the same). Anything else is a
+/// user's, and is never deleted.
+fn replaceable(out: &std::path::Path) -> Result<(), String> {
+    fn check(dir: &std::path::Path, top: bool) -> Result<(), String> {
+        let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        for entry in entries {
+            let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
+            let name = entry.file_name().to_string_lossy().to_string();
+            let kind = entry
+                .file_type()
+                .map_err(|e| format!("{}: {e}", dir.display()))?;
+            let ours = if kind.is_dir() {
+                top && name
+                    .strip_prefix("sweep")
+                    .is_some_and(|i| !i.is_empty() && i.bytes().all(|b| b.is_ascii_digit()))
+                    && check(&entry.path(), false).is_ok()
+            } else {
+                kind.is_file()
+                    && (STAGE_FILES.contains(&name.as_str())
+                        || name == "lint.vlt"
+                        || (top && name == "manifest.json"))
+            };
+            if !ours {
+                return Err(format!(
+                    "{} holds {name}, which an export does not write; choose a new or empty directory",
+                    dir.display()
+                ));
+            }
+        }
+        Ok(())
+    }
+    match std::fs::symlink_metadata(out) {
+        Err(_) => Ok(()),
+        Ok(m) if m.is_dir() => check(out, true),
+        Ok(_) => Err(format!(
+            "{} exists and is not a directory; an export writes a directory",
+            out.display()
+        )),
+    }
+}
+
 /// Export `scene` (named `name` in the manifest) into `out`: the stage files
 /// of each sweep's pipeline (in `out` for one sweep, in `out/sweep<i>` for
 /// several), `lint.vlt`, and `manifest.json`. The directory is built beside
@@ -138,6 +181,7 @@ pub fn write_export(
     dims: [usize; 3],
     out: &std::path::Path,
 ) -> Result<serde_json::Value, String> {
+    replaceable(out)?;
     let (designs, memory) = export(scene, camera, dims)?;
     let parent = match out.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
