@@ -1,6 +1,6 @@
 //! The Icarus Verilog engine: the emitted pipeline Verilog with a generated
 //! Verilog testbench that clocks it, starts one sweep and logs every pixel
-//! on the pixel bus.
+//! on the pixel bus, and can dump a VCD of the design (scope `tb.uut`).
 
 use crate::export::ON_CHIP_BITS as A;
 use crate::pixel_log::parse_pixel_log;
@@ -10,12 +10,13 @@ use golden_model::cube4l::BasePlane;
 /// Simulate emitted pipeline Verilog (from [`crate::export::pipeline_verilog`] with on-chip
 /// memory preloaded, possibly altered)
 /// under Icarus for one sweep; returns the base plane of the pixels it put
-/// out and its clock count.
+/// out and its clock count. `vcd` names a VCD of the design to write.
 pub fn run_icarus(
     verilog: &str,
     p: usize,
     sweep: &Sweep,
     mode: scene::Mode,
+    vcd: Option<&std::path::Path>,
 ) -> Result<(BasePlane, u64), String> {
     let beats = ((sweep.z1 - sweep.z0 + 1) * sweep.dims[1] * sweep.dims[0].div_ceil(p)) as u64;
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
@@ -24,7 +25,8 @@ pub fn run_icarus(
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let result = (|| {
         std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
-        std::fs::write(dir.join("tb.v"), testbench_verilog(p, beats)).map_err(|e| e.to_string())?;
+        std::fs::write(dir.join("tb.v"), testbench_verilog(p, beats, vcd.is_some()))
+            .map_err(|e| e.to_string())?;
         crate::tool::run(
             std::process::Command::new("iverilog")
                 .args(["-g2012", "-o", "sim.vvp", "top.v", "tb.v"])
@@ -39,6 +41,10 @@ pub fn run_icarus(
         )?;
         let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
         let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
+        if let Some(path) = vcd {
+            std::fs::copy(dir.join("trace.vcd"), path)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
         // Counted like the rust-hdl engine: from the clock that registers start.
         Ok((base, cycles + 1))
     })();
@@ -48,8 +54,9 @@ pub fn run_icarus(
 
 /// A Verilog testbench for the emitted `top`: clock, one start pulse, and a
 /// log line `x y face res` for every pixel on the bus until `beats` beats
-/// have come out; then `cycles N` (or `timeout`).
-fn testbench_verilog(p: usize, beats: u64) -> String {
+/// have come out; then `cycles N` (or `timeout`). With `dump`, every signal
+/// of the design goes to `trace.vcd`.
+fn testbench_verilog(p: usize, beats: u64, dump: bool) -> String {
     let mut v =
         String::from("`timescale 1ns/1ps\nmodule tb;\n  reg clock = 0;\n  reg start = 0;\n");
     let mut ports = String::from(
@@ -81,8 +88,13 @@ fn testbench_verilog(p: usize, beats: u64) -> String {
         "  top uut({ports});\n  always #5 clock = ~clock;\n"
     ));
     v.push_str(&format!(
-        "  integer f;\n  integer beats = 0;\n  integer cycles = 0;\n  initial begin\n    f = $fopen(\"pixels.txt\", \"w\");\n    @(negedge clock) start = 1;\n    @(negedge clock) start = 0;\n    while (beats < {beats}) begin\n      @(posedge clock);\n      #1;\n      cycles = cycles + 1;\n      if (res_beat$0) beats = beats + 1;\n{log}      if (cycles > {limit}) begin\n        $fdisplay(f, \"timeout\");\n        beats = {beats};\n      end\n    end\n    $fdisplay(f, \"cycles %0d\", cycles);\n    $fclose(f);\n    $finish;\n  end\nendmodule\n",
-        limit = 2 * beats + 1000
+        "  integer f;\n  integer beats = 0;\n  integer cycles = 0;\n  initial begin\n{dump}    f = $fopen(\"pixels.txt\", \"w\");\n    @(negedge clock) start = 1;\n    @(negedge clock) start = 0;\n    while (beats < {beats}) begin\n      @(posedge clock);\n      #1;\n      cycles = cycles + 1;\n      if (res_beat$0) beats = beats + 1;\n{log}      if (cycles > {limit}) begin\n        $fdisplay(f, \"timeout\");\n        beats = {beats};\n      end\n    end\n    $fdisplay(f, \"cycles %0d\", cycles);\n    $fclose(f);\n    $finish;\n  end\nendmodule\n",
+        limit = 2 * beats + 1000,
+        dump = if dump {
+            "    $dumpfile(\"trace.vcd\");\n    $dumpvars(0, uut);\n"
+        } else {
+            ""
+        }
     ));
     v
 }

@@ -133,9 +133,6 @@ pub fn simulate_with(
         Engine::Verilator if beats > MAX_VERILATOR_BEATS => {
             return Err(format!("{beats} clocks are too many for Verilator simulation (limit {MAX_VERILATOR_BEATS})"))
         }
-        Engine::Iverilog if vcd.is_some() => {
-            return Err("--vcd is written by the rust-hdl and verilator engines".into())
-        }
         _ => {}
     }
     let t = Instant::now();
@@ -158,7 +155,12 @@ pub fn simulate_with(
             (Engine::RustHdl, 8) => run::<8>(&config, &golden, &mem, sweep, vcd)?,
             (Engine::Iverilog, _) => {
                 let verilog = pipeline_verilog(&config, &golden, memory, Some(&mem))?;
-                run_icarus(&verilog, p, sweep, golden.mode)?
+                let r = run_icarus(&verilog, p, sweep, golden.mode, vcd)?;
+                if let Some(path) = vcd {
+                    write_gtkw(path, p, "tb.uut")
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                }
+                r
             }
             (Engine::Verilator, _) => {
                 let verilog = pipeline_verilog(&config, &golden, memory, Some(&mem))?;

@@ -66,7 +66,7 @@ fn a_fault_in_the_emitted_verilog_is_caught() {
     let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
     let (want, _) = render_sweep(&vol, sweep, &golden);
     let differing = |v: &str| {
-        let (base, _) = run_icarus(v, 2, sweep, golden.mode).unwrap();
+        let (base, _) = run_icarus(v, 2, sweep, golden.mode, None).unwrap();
         (0..want.pixels.len())
             .filter(|&i| base.pixels[i] != want.pixels[i] || base.faces[i] != want.faces[i])
             .count()
