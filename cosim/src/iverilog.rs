@@ -40,11 +40,12 @@ pub fn run_icarus(
             "Icarus Verilog (vvp)",
         )?;
         let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
-        let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
+        // The trace first: it shows what went wrong when the log is bad.
         if let Some(path) = vcd {
             std::fs::copy(dir.join("trace.vcd"), path)
                 .map_err(|e| format!("{}: {e}", path.display()))?;
         }
+        let (base, cycles) = parse_pixel_log(&log, sweep, mode)?;
         // Counted like the rust-hdl engine: from the clock that registers start.
         Ok((base, cycles + 1))
     })();

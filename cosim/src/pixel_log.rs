@@ -22,6 +22,11 @@ pub fn parse_pixel_log(
             ["timeout"] => return Err("the Verilog pipeline did not finish the sweep".into()),
             [x, y, face, res] => {
                 let n = |s: &str| {
+                    if s.bytes().any(|b| b"xXzZ".contains(&b)) {
+                        return Err(format!(
+                            "the RTL put out an undefined (X or Z) pixel: '{line}' (x y face value)"
+                        ));
+                    }
                     s.parse::<u64>()
                         .map_err(|e| format!("pixel log '{line}': {e}"))
                 };

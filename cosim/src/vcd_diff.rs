@@ -44,6 +44,12 @@ fn canonical(bits: &str) -> String {
     }
 }
 
+/// A name without Verilog's escaped-identifier backslash: Icarus writes
+/// `\lanes$1$sr` where Verilator writes `lanes$1$sr`.
+fn plain(name: &str) -> String {
+    name.strip_prefix('\\').unwrap_or(name).to_string()
+}
+
 impl Trace {
     /// Load a trace whose cycles are counted on the top's `clock`.
     pub fn load(path: &Path) -> Result<Trace, BadTrace> {
@@ -70,13 +76,13 @@ impl Trace {
             for item in items {
                 match item {
                     vcd::ScopeItem::Scope(s) => {
-                        path.push(s.identifier.clone());
+                        path.push(plain(&s.identifier));
                         walk(&s.items, path, out);
                         path.pop();
                     }
                     vcd::ScopeItem::Var(v) => {
                         let mut full = path.clone();
-                        full.push(v.reference.clone());
+                        full.push(plain(&v.reference));
                         out.push((full, v.code.to_string()));
                     }
                     _ => {}

@@ -1,0 +1,272 @@
+//! A fault-injection campaign on the emitted Verilog of a shaded composite
+//! scene. Each fault is one textual edit in one module of the Verilog that
+//! `cube verilog` writes: a LUT bit flip, swapped neighbour links, an
+//! off-by-one delay, stuck control bits (SR, ER, the partial-beam start BS,
+//! invalid), wrong rounding constants, dropped saturations, a wrong 2x2
+//! selection, a gradient sign and a reflectance address wiring fault. Every
+//! fault must be caught twice: by the pixel comparison with the golden model,
+//! and by the trace comparison (`cube vcd-diff`'s `compare`) against the
+//! fault-free trace from the same simulator, which names its first bad
+//! cycle and signal.
+//!
+//! The simulator is Icarus (seconds per run, no build); both traces come
+//! from it, so four-state X values match up. Run with `--nocapture` to print
+//! the campaign table that the README shows.
+
+use cosim::export::{pipeline_verilog, split_modules, Memory};
+use cosim::iverilog::run_icarus;
+use cosim::vcd_diff::{compare, Trace};
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::Plan;
+use golden_model::cube4l::render_sweep;
+use golden_model::cube4l::shader::Shader;
+use hdl::pipeline::PipelineConfig;
+use scene::volume::builtin;
+use testbenches::{require_tool, scene};
+
+/// One edit: in module `module`, the first `from` becomes `to`.
+struct Fault {
+    kind: &'static str,
+    what: String,
+    module: &'static str,
+    from: String,
+    to: String,
+}
+
+fn fault(kind: &'static str, what: &str, module: &'static str, from: &str, to: &str) -> Fault {
+    Fault {
+        kind,
+        what: what.into(),
+        module,
+        from: from.into(),
+        to: to.into(),
+    }
+}
+
+/// The text of module `name` in `verilog`.
+fn module_text(verilog: &str, name: &str) -> String {
+    split_modules(verilog)
+        .into_iter()
+        .find(|m| m.name == name)
+        .unwrap_or_else(|| panic!("no module {name} in the emitted Verilog"))
+        .text
+}
+
+fn inject(verilog: &str, f: &Fault) -> String {
+    let text = module_text(verilog, f.module);
+    assert!(
+        text.contains(&f.from),
+        "fault site '{}' not found in {}",
+        f.from,
+        f.module
+    );
+    verilog.replacen(&text, &text.replacen(&f.from, &f.to, 1), 1)
+}
+
+/// The line of `module` that starts (after indentation) with `prefix`.
+fn line_of(verilog: &str, module: &str, prefix: &str) -> String {
+    module_text(verilog, module)
+        .lines()
+        .map(str::trim)
+        .find(|l| l.starts_with(prefix))
+        .unwrap_or_else(|| panic!("no line '{prefix}' in {module}"))
+        .to_string()
+}
+
+/// A hex literal `N'hV` at the end of `line` (before `;`), with `f` applied.
+fn edit_hex(line: &str, f: impl Fn(u64) -> u64) -> String {
+    let (head, tail) = line.rsplit_once("'h").unwrap();
+    let v = u64::from_str_radix(tail.trim_end_matches(';'), 16).unwrap();
+    format!("{head}'h{:x};", f(v))
+}
+
+#[test]
+fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
+    require_tool("iverilog");
+    let s = scene(
+        r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]},
+            "mode": "composite", "shading": {"enabled": true, "specular": 0.6}, "image": [32, 32],
+            "hardware": {"pipelines": 2}}"#,
+    );
+    let vol = builtin("sphere", s.volume.dims, 8).unwrap();
+    let cam = s.camera().unwrap();
+    let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
+    let golden = Shader::new(&s, &cam, sweep);
+    let config = PipelineConfig::new(sweep, vol.dims, 2, &golden).unwrap();
+    let mem = SkewedMemory::new(&vol, 2);
+    let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
+    let (want, _) = render_sweep(&vol, sweep, &golden);
+    let dir = tempfile::tempdir().unwrap();
+    let run = |v: &str, name: &str| {
+        let vcd = dir.path().join(format!("{name}.vcd"));
+        // A pixel the golden model could never output (undefined, stray)
+        // is an error of the run: a difference all the same.
+        let pixels = match run_icarus(v, 2, sweep, golden.mode, Some(&vcd)) {
+            Ok((base, _)) => {
+                let n = (0..want.pixels.len())
+                    .filter(|&i| base.pixels[i] != want.pixels[i] || base.faces[i] != want.faces[i])
+                    .count();
+                (n > 0).then(|| format!("{n} of {}", want.pixels.len()))
+            }
+            Err(e) => Some(e),
+        };
+        (pixels, Trace::load(&vcd).unwrap())
+    };
+    let (clean_pixels, clean) = run(&verilog, "clean");
+    assert_eq!(
+        clean_pixels, None,
+        "the untouched Verilog matches the golden model"
+    );
+
+    let lut = "top$lanes$0$shader$lut";
+    let lut_line = line_of(&verilog, lut, "12'hff:");
+    let tap0 = "top$lanes$0$taps$t0";
+    let offset = line_of(&verilog, tap0, "localparam  offset");
+    let (used, other) = if config.taps_used[5] { (5, 7) } else { (7, 5) };
+    let x_tap = match sweep.rays {
+        golden_model::cube4l::plan::Rays::Parallel { dx, .. } if dx < 0 => 2,
+        _ => 1,
+    };
+    let faults = [
+        fault(
+            "LUT bit flip",
+            "colour/opacity LUT entry 0xff: opacity bit 0 flipped",
+            lut,
+            &lut_line,
+            &edit_hex(&lut_line, |v| v ^ 1 << 48),
+        ),
+        fault(
+            "swapped neighbour link",
+            "ABC gradient: lane 1 takes its own x-link",
+            "top",
+            "lanes$1$g_from_left_xm = lanes$0$g_to_right_xm;",
+            "lanes$1$g_from_left_xm = lanes$1$g_to_right_xm;",
+        ),
+        // A link of whichever of taps 5 and 7 (the two that cross a
+        // neighbour link at p = 2) the signs of dx and dy select.
+        fault(
+            "swapped neighbour link",
+            &format!("compositing buffer: lane 1's tap-{used} link carries tap {other}"),
+            "top",
+            &format!("lanes$1$t{used}i1 = lanes$0$t{used}s0;"),
+            &format!("lanes$1$t{used}i1 = lanes$0$t{other}s0;"),
+        ),
+        fault(
+            "off-by-one delay",
+            "compositing-buffer tap 0 reads one beat late",
+            tap0,
+            &offset,
+            &edit_hex(&offset, |v| (v + 0xffff) & 0xffff),
+        ),
+        fault(
+            "stuck control bit",
+            "SR stuck at 0 (lane 0)",
+            "top",
+            "lanes$0$sr = cfb$sr$0;",
+            "lanes$0$sr = 1'b0;",
+        ),
+        fault(
+            "stuck control bit",
+            "ER stuck at 0 (lane 0)",
+            "top",
+            "lanes$0$er = cfb$er$0;",
+            "lanes$0$er = 1'b0;",
+        ),
+        fault(
+            "stuck control bit",
+            "BS, the partial-beam start, stuck at 0 (lane 0's taps)",
+            "top$lanes$0$taps",
+            "first = (x & p_mask) == 'h0;",
+            "first = 1'b0;",
+        ),
+        fault(
+            "stuck control bit",
+            "invalid stuck at 1 (lane 0)",
+            "top",
+            "lanes$0$invalid = cfb$invalid$0;",
+            "lanes$0$invalid = 1'b1;",
+        ),
+        fault(
+            "wrong rounding constant",
+            "bilinear lerp truncates (half = 0)",
+            "top$lanes$0$bilinear$ch$0$bottom",
+            "localparam  half = 64'h80;",
+            "localparam  half = 64'h0;",
+        ),
+        fault(
+            "wrong rounding constant",
+            "unorm multiplier of the over operator truncates",
+            "top$lanes$0$compositor$ch_r$mul",
+            "localparam  half = 'h80;",
+            "localparam  half = 'h0;",
+        ),
+        fault(
+            "wrong rounding constant",
+            "normal quantizer rounds down",
+            "top$lanes$0$shader",
+            "half = (32'('h1) << s) >> 'h1;",
+            "half = 'h0;",
+        ),
+        fault(
+            "dropped saturation",
+            "normal quantizer: x component not saturated",
+            "top$lanes$0$shader",
+            "if (qx > 'hf) begin",
+            "if (1'b0) begin",
+        ),
+        fault(
+            "dropped saturation",
+            "shaded colour: red not saturated after the specular add",
+            "top$lanes$0$shader",
+            "if (sum_r > 32'(m_max)) begin",
+            "if (1'b0) begin",
+        ),
+        // The neighbour that the sign of dx selects, swapped for the other.
+        fault(
+            "wrong 2x2 selection",
+            "x neighbour taken on the wrong side of the ray",
+            "top$lanes$0$cells",
+            &format!("w10 = a${x_tap};"),
+            &format!("w10 = a${};", 3 - x_tap),
+        ),
+        fault(
+            "gradient sign",
+            "x gradient sign inverted (lane 0)",
+            "top$lanes$0$feed$abc",
+            "gx_neg = xp < xm;",
+            "gx_neg = xp > xm;",
+        ),
+        fault(
+            "wiring",
+            "reflectance map address: y and x normal components swapped",
+            "top$lanes$0$shader",
+            "reflectance$address = 15'(ix) | (15'(iy) << 'h5)",
+            "reflectance$address = 15'(iy) | (15'(ix) << 'h5)",
+        ),
+    ];
+    let mut table = vec![
+        "| # | kind | fault | base-plane pixels differing | first bad cycle | first signal |"
+            .to_string(),
+        "|---|---|---|---|---|---|".to_string(),
+    ];
+    let mut missed = Vec::new();
+    for (i, f) in faults.iter().enumerate() {
+        let (pixels, trace) = run(&inject(&verilog, f), &format!("fault{i}"));
+        let c = compare(&clean, &trace, None).unwrap();
+        let first = c.mismatches.first();
+        table.push(format!(
+            "| {} | {} | {} | {} | {} | `{}` |",
+            i + 1,
+            f.kind,
+            f.what,
+            pixels.as_deref().unwrap_or("none"),
+            first.map_or("-".into(), |m| m.cycle.to_string()),
+            first.map_or("-", |m| m.signal.as_str()),
+        ));
+        if pixels.is_none() || c.equal() {
+            missed.push(f.what.clone());
+        }
+    }
+    println!("{}", table.join("\n"));
+    assert!(missed.is_empty(), "faults not caught: {missed:?}");
+}
