@@ -184,6 +184,297 @@ pub fn unlit(rgba_bits: u32) -> [u32; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use scene::Scene;
+
+    /// The transfer function of a scene with `transfer` (JSON) and `voxel_bits`.
+    fn transfer(json: &str, voxel_bits: u32) -> TransferFn {
+        let text = format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [4, 4, 4]}},
+                "view": {{"projection": "parallel"}}, "transfer": {json},
+                "hardware": {{"voxel_bits": {voxel_bits}}}}}"#
+        );
+        TransferFn::new(&Scene::from_json(&text, None).unwrap())
+    }
+
+    /// `got` is `num / den` rounded to nearest; at an exact half, where the
+    /// float evaluation may land on either side, either neighbour.
+    fn assert_rounded(got: u32, num: u128, den: u128, what: &str) {
+        let (q, r) = ((num / den) as u32, num % den);
+        match (2 * r).cmp(&den) {
+            std::cmp::Ordering::Less => assert_eq!(got, q, "{what}"),
+            std::cmp::Ordering::Greater => assert_eq!(got, q + 1, "{what}"),
+            std::cmp::Ordering::Equal => assert!(got == q || got == q + 1, "{what}"),
+        }
+    }
+
+    #[test]
+    fn lut_index_bits() {
+        assert_eq!(lut_bits(8), 8);
+        assert_eq!(lut_bits(12), 12);
+        assert_eq!(lut_bits(16), 12);
+    }
+
+    #[test]
+    fn bin_centres() {
+        assert_eq!(bin_centre(0, 0), 0.0);
+        assert_eq!(bin_centre(5, 0), 5.0);
+        assert_eq!(bin_centre(255, 0), 255.0);
+        assert_eq!(bin_centre(2, 1), 4.5);
+        assert_eq!(bin_centre(0, 4), 7.5);
+        assert_eq!(bin_centre(3, 4), 55.5);
+        assert_eq!(bin_centre(4095, 4), 65527.5);
+        assert_eq!(bin_centre(1, 5), 47.5);
+    }
+
+    #[test]
+    fn colour_lut_8_bit_entries() {
+        // r = v / 255, g = 0.2 v / 255, b = 1 - v / 255: entries v,
+        // round(v / 5) (never a half) and 255 - v.
+        let tf = transfer(
+            r#"{"opacity": [[0, 1]], "color": [[0, 0, 0, 1], [255, 1, 0.2, 0]]}"#,
+            8,
+        );
+        let lut = ColourLut::new(&tf, 8, 8);
+        assert_eq!(lut.shift, 0);
+        assert_eq!(lut.table.len(), 256);
+        for v in 0..256u32 {
+            let want = [v, (v + 2) / 5, 255 - v];
+            assert_eq!(lut.table[v as usize], want, "{v}");
+            assert_eq!(lut.lookup(v), want, "{v}");
+        }
+    }
+
+    #[test]
+    fn colour_lut_16_bit_voxels_use_bin_centres() {
+        // 16-bit voxels index a 12-bit LUT: entry i stands for the bin
+        // centre (32 i + 15) / 2. r ramps over the whole range, g reaches 1
+        // at 4095, b is flat 0.6; 15-bit colour (M = 32767).
+        let tf = transfer(
+            r#"{"opacity": [[0, 1]],
+                "color": [[0, 0, 0, 0.6], [4095, 0.062485694666971844, 1, 0.6],
+                          [65535, 1, 1, 0.6]]}"#,
+            16,
+        );
+        let lut = ColourLut::new(&tf, 16, 15);
+        assert_eq!(lut.shift, 4);
+        assert_eq!(lut.table.len(), 4096);
+        let m = 32767u128;
+        for v in 0..65536u32 {
+            let got = lut.lookup(v);
+            let i = (v / 16) as u128;
+            assert_eq!(got, lut.table[i as usize]);
+            if v % 16 != 0 {
+                continue;
+            }
+            assert_rounded(got[0], (32 * i + 15) * m, 2 * 65535, &format!("r {i}"));
+            if i < 256 {
+                assert_rounded(got[1], (32 * i + 15) * m, 2 * 4095, &format!("g {i}"));
+            } else {
+                assert_eq!(got[1], 32767, "g {i}");
+            }
+            assert_eq!(got[2], 19660, "b {i}"); // 0.6 * 32767 = 19660.2
+        }
+        // Hand values: bin 0 (centre 7.5), bin 100 (centre 1607.5).
+        assert_eq!(lut.lookup(0), [4, 60, 19660]); // 3.75, 60.0
+        assert_eq!(lut.lookup(1615), [804, 12863, 19660]); // 803.7, 12862.9
+    }
+
+    #[test]
+    fn opacity_lut_without_gradient() {
+        let tf = transfer(
+            r#"{"opacity": [[0, 0], [255, 1]], "color": [[0, 1, 1, 1]],
+                "gradient_opacity": [[0, 0], [100, 1]]}"#,
+            8,
+        );
+        // The scene has gradient opacity but the caller leaves the unit out.
+        let lut = OpacityLut::new(&tf, 8, 8, 1.0, false);
+        assert_eq!(lut.shift, 0);
+        assert_eq!(lut.gm_shift, None);
+        assert_eq!(lut.table, (0..256).collect::<Vec<u32>>());
+        assert_eq!(lut.row_max, lut.table);
+        for v in 0..256u32 {
+            assert_eq!(lut.row(v), v as usize);
+            for gm in [0, 1, 31, 1000] {
+                assert_eq!(lut.lookup(v, gm), v);
+            }
+        }
+    }
+
+    #[test]
+    fn opacity_lut_16_bit_voxels_use_bin_centres() {
+        let tf = transfer(
+            r#"{"opacity": [[0, 0], [65535, 1]], "color": [[0, 1, 1, 1]]}"#,
+            16,
+        );
+        let lut = OpacityLut::new(&tf, 16, 15, 1.0, true);
+        assert_eq!((lut.shift, lut.gm_shift), (4, None));
+        assert_eq!(lut.table.len(), 4096);
+        for v in 0..65536u32 {
+            let i = v / 16;
+            assert_eq!(lut.row(v), i as usize);
+            assert_eq!(lut.lookup(v, 77), lut.table[i as usize]);
+            let num = (32 * i as u128 + 15) * 32767;
+            assert_rounded(lut.lookup(v, 0), num, 2 * 65535, &format!("{v}"));
+        }
+    }
+
+    #[test]
+    fn opacity_correction_for_spacing() {
+        // a' = 1 - (1 - a)^spacing, quantized to 8 bits.
+        let tf = transfer(
+            r#"{"opacity": [[0, 0], [1, 0], [2, 0.5], [3, 1], [255, 1]],
+                "color": [[0, 1, 1, 1]]}"#,
+            8,
+        );
+        let at = |spacing: f64| {
+            let lut = OpacityLut::new(&tf, 8, 8, spacing, false);
+            [lut.table[0], lut.table[2], lut.table[3], lut.table[200]]
+        };
+        assert_eq!(at(1.0), [0, 128, 255, 255]); // 127.5 -> 128
+        assert_eq!(at(2.0), [0, 191, 255, 255]); // 0.75 -> 191.25
+        assert_eq!(at(0.5), [0, 75, 255, 255]); // 1 - sqrt(1/2) -> 74.7
+        assert_eq!(at(3f64.sqrt()), [0, 178, 255, 255]); // 0.699 -> 178.2
+    }
+
+    #[test]
+    fn opacity_lut_with_gradient_magnitude() {
+        // Gradient map up to 100 voxel units per voxel: the integer magnitude
+        // (of the undivided difference) covers [0, 400), 9 bits, so its
+        // 4-bit index is gm >> 5. Entry (i, g) holds
+        // a(i) * f((32 g + 15.5) / 2) = i * min((64 g + 31) / 400, 1).
+        let tf = transfer(
+            r#"{"opacity": [[0, 0], [255, 1]], "color": [[0, 1, 1, 1]],
+                "gradient_opacity": [[0, 0], [100, 1]]}"#,
+            8,
+        );
+        let lut = OpacityLut::new(&tf, 8, 8, 1.0, true);
+        assert_eq!((lut.shift, lut.gm_shift), (0, Some(5)));
+        assert_eq!(lut.table.len(), 256 * 16);
+        let entry = |i: u32, g: u64| lut.table[i as usize * 16 + g as usize];
+        for i in 0..256u32 {
+            for g in 0..16u64 {
+                let what = format!("({i}, {g})");
+                if g <= 5 {
+                    assert_rounded(entry(i, g), (i as u128) * (64 * g as u128 + 31), 400, &what);
+                } else {
+                    assert_eq!(entry(i, g), i, "{what}");
+                }
+            }
+            assert_eq!(lut.row_max[i as usize], i);
+            for gm in 0..1500u64 {
+                assert_eq!(lut.lookup(i, gm), entry(i, (gm / 32).min(15)), "{i} {gm}");
+            }
+        }
+        // Hand values: 100 * 31 / 400 = 7.75, 100 * 223 / 400 = 55.75.
+        assert_eq!(entry(100, 0), 8); // 7.75
+        assert_eq!(entry(100, 3), 56); // 55.75
+        assert_eq!(lut.lookup(100, 100), 56);
+        assert_eq!(lut.lookup(100, 10_000), 100);
+    }
+
+    #[test]
+    fn opacity_lut_small_gradient_range_has_no_shift() {
+        // Range 2: magnitudes up to 8, 4 bits, index = gm itself; entry g
+        // stands for gradient g / 2: factor 1 - g / 8 up to g = 4, then 0.5.
+        let tf = transfer(
+            r#"{"opacity": [[0, 1]], "color": [[0, 1, 1, 1]],
+                "gradient_opacity": [[0, 1], [2, 0.5]]}"#,
+            8,
+        );
+        let lut = OpacityLut::new(&tf, 8, 8, 1.0, true);
+        assert_eq!(lut.gm_shift, Some(0));
+        let row: Vec<u32> = (0..16).map(|gm| lut.lookup(9, gm)).collect();
+        let mut want = vec![255, 223, 191, 159, 128];
+        want.resize(16, 128);
+        assert_eq!(row, want);
+        assert_eq!(lut.lookup(9, 99), 128);
+        assert_eq!(lut.row_max[9], 255);
+    }
+
+    fn shading() -> Shading {
+        Shading {
+            enabled: true,
+            light_dir: [0.0, 0.0, 1.0],
+            ambient: 0.25,
+            diffuse: 0.5,
+            specular: 0.5,
+            shininess: 10.0,
+        }
+    }
+
+    #[test]
+    fn reflectance_index_packs_five_bit_fields() {
+        assert_eq!(ReflectanceMap::index(0, 0, 0), 0);
+        assert_eq!(ReflectanceMap::index(1, 0, 0), 1);
+        assert_eq!(ReflectanceMap::index(0, 1, 0), 32);
+        assert_eq!(ReflectanceMap::index(0, 0, 1), 1024);
+        assert_eq!(ReflectanceMap::index(-1, 0, 0), 31);
+        assert_eq!(ReflectanceMap::index(0, -1, 0), 31 * 32);
+        assert_eq!(ReflectanceMap::index(0, 0, -1), 31 * 1024);
+        assert_eq!(
+            ReflectanceMap::index(-16, -16, -16),
+            16 + 16 * 32 + 16 * 1024
+        );
+        assert_eq!(ReflectanceMap::index(15, 15, 15), 15 + 15 * 32 + 15 * 1024);
+        assert_eq!(ReflectanceMap::index(3, -2, 7), 3 + 30 * 32 + 7 * 1024);
+    }
+
+    #[test]
+    fn reflectance_map_head_on_light() {
+        // Light and viewer both along +z: h = +z. The normal is -g.
+        let z = DVec3::Z;
+        let map = ReflectanceMap::new(&shading(), |g| g, z, z, 8);
+        assert_eq!(map.table.len(), 32 * 32 * 32);
+        let at = |x, y, z| map.table[ReflectanceMap::index(x, y, z)];
+        // Zero gradient: ambient only, 0.25 * 255 = 63.75.
+        assert_eq!(at(0, 0, 0), [64, 0]);
+        // Facing the light: 0.75 -> 191.25; specular 0.5 -> 127.5 -> 128.
+        assert_eq!(at(0, 0, -7), [191, 128]);
+        assert_eq!(at(0, 0, -1), [191, 128]);
+        // Facing away: ambient only, no specular.
+        assert_eq!(at(0, 0, 5), [64, 0]);
+        // Grazing: n.l = 0, so no specular.
+        assert_eq!(at(4, 0, 0), [64, 0]);
+        assert_eq!(at(0, -9, 0), [64, 0]);
+        // 45 degrees: 0.25 + 0.5 / sqrt 2 = 0.6036 -> 153.9; specular
+        // 0.5 * (1 / sqrt 2)^10 = 1 / 64 -> 3.98.
+        assert_eq!(at(-3, 0, -3), [154, 4]);
+        assert_eq!(at(0, 11, -11), [154, 4]);
+        // Cube diagonal: 0.25 + 0.5 / sqrt 3 -> 137.4; 0.5 / 243 -> 0.52.
+        assert_eq!(at(-16, -16, -16), [137, 1]);
+        // 12-bit words: 0.75 * 4095 = 3071.25, 0.5 * 4095 = 2047.5.
+        let map12 = ReflectanceMap::new(&shading(), |g| g, z, z, 12);
+        assert_eq!(map12.table[ReflectanceMap::index(0, 0, -2)], [3071, 2048]);
+        assert_eq!(map12.table[ReflectanceMap::index(0, 0, 0)], [1024, 0]);
+    }
+
+    #[test]
+    fn reflectance_map_side_light_and_axis_permutation() {
+        // Light along +x, viewer along +z: h = (1, 0, 1) / sqrt 2.
+        let map = ReflectanceMap::new(&shading(), |g| g, DVec3::X, DVec3::Z, 8);
+        let at = |m: &ReflectanceMap, x, y, z| m.table[ReflectanceMap::index(x, y, z)];
+        assert_eq!(at(&map, -1, 0, 0), [191, 4]);
+        assert_eq!(at(&map, 0, 0, -1), [64, 0]);
+        assert_eq!(at(&map, 6, 0, 0), [64, 0]);
+        // Pipeline (x, y, z) is dataset (z, x, y): pipeline -z faces dataset +x.
+        let perm = ReflectanceMap::new(
+            &shading(),
+            |g| DVec3::new(g.z, g.x, g.y),
+            DVec3::X,
+            DVec3::Z,
+            8,
+        );
+        assert_eq!(at(&perm, 0, 0, -2), [191, 4]);
+        assert_eq!(at(&perm, -2, 0, 0), [64, 0]);
+        assert_eq!(at(&perm, 0, -2, 0), [64, 0]);
+    }
+
+    #[test]
+    fn unlit_is_full_diffuse_no_specular() {
+        assert_eq!(unlit(8), [255, 0]);
+        assert_eq!(unlit(12), [4095, 0]);
+        assert_eq!(unlit(4), [15, 0]);
+    }
 
     #[test]
     fn reflectance_index_is_a_bijection() {

@@ -166,4 +166,289 @@ mod tests {
             900
         );
     }
+
+    #[test]
+    fn reset_values_per_mode() {
+        assert_eq!(reset_value(Mode::Minip, 8), [255, 0, 0, 0]);
+        assert_eq!(reset_value(Mode::Minip, 12), [4095, 0, 0, 0]);
+        assert_eq!(reset_value(Mode::Minip, 16), [65535, 0, 0, 0]);
+        for mode in [Mode::Composite, Mode::FirstOpaque, Mode::Mip, Mode::Xray] {
+            for bits in [8, 12, 16] {
+                assert_eq!(reset_value(mode, bits), [0; 4], "{mode:?}");
+            }
+        }
+    }
+
+    /// `round_half_up((a * (2^f - w) + b * w) / 2^f)`, exactly.
+    fn lerp_exact(a: u32, b: u32, w: u32, frac: u32) -> u32 {
+        let one = 1i128 << frac;
+        let num = a as i128 * (one - w as i128) + b as i128 * w as i128;
+        (2 * num + one).div_euclid(2 * one) as u32
+    }
+
+    /// The bilinear unit by its definition: the ray leaves `(x, y)` towards
+    /// `(x - dx, y - dy)`; the 2x2 cells around that point, cells outside the
+    /// slice reading `reset`.
+    #[allow(clippy::too_many_arguments)]
+    fn gather_by_definition(
+        prev: &[[u32; 4]],
+        nx: usize,
+        ny: usize,
+        x: usize,
+        y: usize,
+        dx: i32,
+        dy: i32,
+        frac: u32,
+        reset: [u32; 4],
+    ) -> [u32; 4] {
+        let at = |cx: i64, cy: i64| {
+            if (0..nx as i64).contains(&cx) && (0..ny as i64).contains(&cy) {
+                prev[cy as usize * nx + cx as usize]
+            } else {
+                reset
+            }
+        };
+        let step = |d: i32| match d {
+            d if d > 0 => 1,
+            d if d < 0 => -1,
+            _ => 0,
+        };
+        let (x, y) = (x as i64, y as i64);
+        let (xn, yn) = (x - step(dx), y - step(dy));
+        let (wx, wy) = (dx.unsigned_abs(), dy.unsigned_abs());
+        std::array::from_fn(|i| {
+            let top = lerp_exact(at(x, y)[i], at(xn, y)[i], wx, frac);
+            let bottom = lerp_exact(at(x, yn)[i], at(xn, yn)[i], wx, frac);
+            lerp_exact(top, bottom, wy, frac)
+        })
+    }
+
+    #[test]
+    fn gather_matches_definition_everywhere() {
+        // A 4x3 slice with distinct values per cell and channel, every cell
+        // (edges and corners included), increments of both signs.
+        let (nx, ny) = (4, 3);
+        let prev: Vec<[u32; 4]> = (0..12u32)
+            .map(|i| [i * 21 + 3, 255 - i * 17, (i * 97) % 256, i * 5])
+            .collect();
+        let reset = [9, 250, 7, 131];
+        let ds = [-256, -255, -200, -128, -1, 0, 1, 77, 128, 129, 256];
+        for y in 0..ny {
+            for x in 0..nx {
+                for &dx in &ds {
+                    for &dy in &ds {
+                        assert_eq!(
+                            gather(&prev, nx, ny, x, y, dx, dy, 8, reset),
+                            gather_by_definition(&prev, nx, ny, x, y, dx, dy, 8, reset),
+                            "({x}, {y}) d ({dx}, {dy})"
+                        );
+                    }
+                }
+            }
+        }
+        // Other fractional widths: 2 and 12 bits.
+        for (frac, d) in [(2u32, 3i32), (12, -2900)] {
+            for y in 0..ny {
+                for x in 0..nx {
+                    assert_eq!(
+                        gather(&prev, nx, ny, x, y, d, -d, frac, reset),
+                        gather_by_definition(&prev, nx, ny, x, y, d, -d, frac, reset)
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn gather_edges_by_hand() {
+        // prev[x + 3y] = 10 * (x + 3y), reset 7.
+        let prev: Vec<[u32; 4]> = (0..9).map(|i| [i * 10, 0, 0, 0]).collect();
+        let g = |x, y, dx, dy| gather(&prev, 3, 3, x, y, dx, dy, 8, [7, 0, 0, 0])[0];
+        // Row 0 and column 0 are inside the slice.
+        assert_eq!(g(1, 0, 0, 0), 10);
+        assert_eq!(g(0, 1, 0, 0), 30);
+        assert_eq!(g(0, 0, 0, 0), 0);
+        assert_eq!(g(2, 2, 0, 0), 80);
+        // Row -1 is outside: lerp(10, 7, 1/2) = 8.5 -> 9 (half up).
+        assert_eq!(g(1, 0, 0, 128), 9);
+        assert_eq!(g(1, 0, 0, 256), 7);
+        // Row 3 and column 3 are outside.
+        assert_eq!(g(1, 2, 0, -256), 7);
+        assert_eq!(g(2, 1, -256, 0), 7);
+        // lerp(70, 7, 1/2) = 38.5 -> 39.
+        assert_eq!(g(1, 2, 0, -128), 39);
+        // Corner outside on both axes: top = lerp(80, 7, 1/4) = 61.75 -> 62,
+        // bottom = 7, lerp(62, 7, 3/4) = 20.75 -> 21.
+        assert_eq!(g(2, 2, -64, -192), 21);
+    }
+
+    #[test]
+    fn front_to_back_by_hand() {
+        // C = C_acc + round((255 - A_acc) * C_new / 255).
+        // 255 - 128 = 127: 127 * 200 / 255 = 99.6 -> 100, 127 * 100 / 255 =
+        // 49.8 -> 50, 127 * 50 / 255 = 24.9 -> 25.
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            [100, 50, 0, 128],
+            &s([200, 100, 50, 200]),
+            8,
+        );
+        assert_eq!(c, [200, 100, 25, 228]);
+        assert!(!clip);
+        // First-opaque composites the same way.
+        let (c, _) = composite(
+            Mode::FirstOpaque,
+            Order::FrontToBack,
+            [100, 50, 0, 128],
+            &s([200, 100, 50, 200]),
+            8,
+        );
+        assert_eq!(c, [200, 100, 25, 228]);
+        // Empty buffer: the voxel itself.
+        let (c, _) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            [0; 4],
+            &s([10, 20, 30, 40]),
+            8,
+        );
+        assert_eq!(c, [10, 20, 30, 40]);
+    }
+
+    #[test]
+    fn back_to_front_by_hand() {
+        // C = C_new + round((255 - A_new) * C_acc / 255).
+        // 255 - 64 = 191: 191 * 100 / 255 = 74.9 -> 75, 191 * 50 / 255 =
+        // 37.45 -> 37, 191 * 128 / 255 = 95.9 -> 96.
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::BackToFront,
+            [100, 50, 0, 128],
+            &s([60, 30, 10, 64]),
+            8,
+        );
+        assert_eq!(c, [135, 67, 10, 160]);
+        assert!(!clip);
+        // 12-bit words: 4095 - 1000 = 3095; 3095 * 2000 / 4095 = 1511.6 -> 1512.
+        let (c, _) = composite(
+            Mode::FirstOpaque,
+            Order::BackToFront,
+            [2000, 0, 4095, 2000],
+            &s([500, 1000, 0, 1000]),
+            12,
+        );
+        assert_eq!(c, [500 + 1512, 1000, 3095, 1000 + 1512]);
+    }
+
+    #[test]
+    fn saturation_is_flagged() {
+        // A colour above its opacity (not premultiplied) overflows:
+        // 200 + (255 - 100) * 255 / 255 = 355 -> 255.
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            [200, 0, 100, 100],
+            &s([255, 255, 0, 255]),
+            8,
+        );
+        assert_eq!(c, [255, 155, 100, 255]);
+        assert!(clip);
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::BackToFront,
+            [255, 0, 0, 255],
+            &s([200, 0, 0, 100]),
+            8,
+        );
+        // 200 + 155 = 355 -> 255; the alpha reaches 100 + 155 = 255 exactly.
+        assert_eq!(c, [255, 0, 0, 255]);
+        assert!(clip);
+        // Exactly full is not a saturation.
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            [255; 4],
+            &s([255; 4]),
+            8,
+        );
+        assert_eq!(c, [255; 4]);
+        assert!(!clip);
+        let (c, clip) = composite(
+            Mode::Composite,
+            Order::FrontToBack,
+            [100, 100, 100, 100],
+            &s([255; 4]),
+            8,
+        );
+        assert_eq!(c, [255; 4]);
+        assert!(!clip);
+        // Below full: no flag either way.
+        for order in [Order::FrontToBack, Order::BackToFront] {
+            let (_, clip) = composite(Mode::Composite, order, [17, 30, 2, 31], &s([0; 4]), 8);
+            assert!(!clip);
+        }
+    }
+
+    #[test]
+    fn minip_keeps_the_smallest_valid_voxel() {
+        let acc = reset_value(Mode::Minip, 8);
+        let (c, clip) = composite(Mode::Minip, Order::FrontToBack, acc, &s([90, 0, 0, 0]), 8);
+        assert_eq!(c, [90, 0, 0, 0]);
+        assert!(!clip);
+        let (c, _) = composite(Mode::Minip, Order::BackToFront, c, &s([120, 0, 0, 0]), 8);
+        assert_eq!(c, [90, 0, 0, 0]);
+        let (c, _) = composite(Mode::Minip, Order::BackToFront, c, &s([3, 0, 0, 0]), 8);
+        assert_eq!(c, [3, 0, 0, 0]);
+        let bad = Sample {
+            value: [1, 0, 0, 0],
+            valid: false,
+        };
+        assert_eq!(
+            composite(Mode::Minip, Order::FrontToBack, [90, 0, 0, 0], &bad, 8),
+            ([90, 0, 0, 0], false)
+        );
+        let bad = Sample {
+            value: [200, 0, 0, 0],
+            valid: false,
+        };
+        assert_eq!(
+            composite(Mode::Minip, Order::FrontToBack, [255, 0, 0, 0], &bad, 8),
+            ([255, 0, 0, 0], false)
+        );
+    }
+
+    #[test]
+    fn mip_keeps_the_largest_valid_voxel() {
+        let (c, clip) = composite(Mode::Mip, Order::BackToFront, [0; 4], &s([40, 0, 0, 0]), 8);
+        assert_eq!((c, clip), ([40, 0, 0, 0], false));
+        let (c, _) = composite(Mode::Mip, Order::FrontToBack, c, &s([12, 0, 0, 0]), 8);
+        assert_eq!(c, [40, 0, 0, 0]);
+    }
+
+    #[test]
+    fn xray_sums_opacities_without_saturating() {
+        let (c, clip) = composite(
+            Mode::Xray,
+            Order::FrontToBack,
+            [100, 0, 0, 0],
+            &s([50, 0, 0, 0]),
+            8,
+        );
+        assert_eq!((c, clip), ([150, 0, 0, 0], false));
+        // Past M: the sum is wider than rgba_bits.
+        let (c, clip) = composite(
+            Mode::Xray,
+            Order::BackToFront,
+            [250, 0, 0, 0],
+            &s([255, 0, 0, 0]),
+            8,
+        );
+        assert_eq!((c, clip), ([505, 0, 0, 0], false));
+        let mut acc = reset_value(Mode::Xray, 8);
+        for _ in 0..20 {
+            acc = composite(Mode::Xray, Order::FrontToBack, acc, &s([7, 0, 0, 0]), 8).0;
+        }
+        assert_eq!(acc, [140, 0, 0, 0]);
+    }
 }

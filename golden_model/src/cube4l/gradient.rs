@@ -50,4 +50,88 @@ mod tests {
         assert_eq!(g, [6, 10, -14]);
         assert_eq!(magnitude([3, 4, 0]), 5);
     }
+
+    #[test]
+    fn central_difference_reads_each_axis_both_ways() {
+        // Only the six direct neighbours are read, each with its own value.
+        let g = central_difference(|dx, dy, dz| match (dx, dy, dz) {
+            (1, 0, 0) => 1000,
+            (-1, 0, 0) => 3,
+            (0, 1, 0) => 7,
+            (0, -1, 0) => 60,
+            (0, 0, 1) => 65535,
+            (0, 0, -1) => 0,
+            other => panic!("read {other:?}"),
+        });
+        assert_eq!(g, [997, -53, 65535]);
+    }
+
+    #[test]
+    fn magnitude_is_floor_of_length() {
+        assert_eq!(magnitude([0, 0, 0]), 0);
+        assert_eq!(magnitude([-1, 0, 0]), 1);
+        assert_eq!(magnitude([1, 1, 1]), 1); // sqrt(3)
+        assert_eq!(magnitude([2, -2, 1]), 3);
+        assert_eq!(magnitude([0, 5, -12]), 13);
+        // sqrt(27) = 5.196.
+        assert_eq!(magnitude([3, 3, 3]), 5);
+        // The largest 16-bit difference on every axis: sqrt(3) * 65535.
+        assert_eq!(magnitude([65535, -65535, 65535]), 113_509);
+    }
+
+    /// The quantizer by its definition: the smallest shift `s` that brings the
+    /// largest component below `2^(NORMAL_BITS - 1)`, then
+    /// `floor(c / 2^s + 1/2)` per component, clamped to `±15`.
+    fn quantize_by_definition(g: [i32; 3]) -> [i32; 3] {
+        let m = g.iter().map(|c| c.unsigned_abs()).max().unwrap();
+        let mut s = 0;
+        while (m >> s) >= 1 << (NORMAL_BITS - 1) {
+            s += 1;
+        }
+        g.map(|c| {
+            let r = (2 * c as i64 + (1i64 << s)).div_euclid(2i64 << s);
+            r.clamp(-15, 15) as i32
+        })
+    }
+
+    #[test]
+    fn normal_quantizer_small_gradients_exhaustive() {
+        for x in -40..=40 {
+            for y in -40..=40 {
+                for z in [-40, -17, -16, -15, -9, -1, 0, 1, 8, 15, 16, 33] {
+                    let g = [x, y, z];
+                    assert_eq!(quantize_normal(g), quantize_by_definition(g), "{g:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn normal_quantizer_hand_values() {
+        // Largest 15 fits 4 magnitude bits: no shift.
+        assert_eq!(quantize_normal([15, -15, 7]), [15, -15, 7]);
+        // 16 needs one shift: 16/2 = 8, -3/2 = -1.5 -> -1 (half up), 5/2 -> 3.
+        assert_eq!(quantize_normal([16, -3, 5]), [8, -1, 3]);
+        // -16 also needs one shift.
+        assert_eq!(quantize_normal([-16, 0, 1]), [-8, 0, 1]);
+        // 31 -> 15.5 -> 16, saturated to 15; -31 -> -15.5 -> -15.
+        assert_eq!(quantize_normal([31, -31, 0]), [15, -15, 0]);
+        // Four shifts: 255/16 = 15.94 -> 16 -> 15; 40/16 = 2.5 -> 3.
+        assert_eq!(quantize_normal([255, 40, -40]), [15, 3, -2]);
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn normal_quantizer_matches_definition(
+            x in -131_070i32..=131_070,
+            y in -131_070i32..=131_070,
+            z in -131_070i32..=131_070,
+        ) {
+            let g = [x, y, z];
+            proptest::prop_assert_eq!(quantize_normal(g), quantize_by_definition(g));
+            let len = ((x as f64).powi(2) + (y as f64).powi(2) + (z as f64).powi(2)).sqrt();
+            let m = magnitude(g);
+            proptest::prop_assert!((m as f64) <= len && len < (m + 1) as f64);
+        }
+    }
 }
