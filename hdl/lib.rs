@@ -4,17 +4,24 @@
 //! generator, control bits) with the perspective [`divider`],
 //! [`abc_gradient`], [`shader`], the bilinear unit ([`bilinear`]),
 //! [`compositor`], and [`pipeline`], which joins p pipelines by
-//! nearest-neighbour links, with [`ram`] (block RAM as deep as the scene
-//! needs) and [`unorm`] (the exact unorm multiplier). Nothing here spawns a
-//! process or touches a file: the `cosim` crate exports, simulates and
-//! synthesizes these stages.
+//! nearest-neighbour links. A pipeline's lane adds [`lane_feed`] (input
+//! selection), [`tap_network`] (the compositing-buffer taps, each a
+//! [`buffer_tap`]), [`select2x2`] and [`control_delay`]. [`ram`] is block RAM
+//! as deep as the scene needs, [`unorm`] the exact unorm multiplier. Nothing
+//! here spawns a process or touches a file: the `cosim` crate exports,
+//! simulates and synthesizes these stages.
 
 pub mod abc_gradient;
 pub mod bilinear;
+pub mod buffer_tap;
 pub mod cfb;
 pub mod compositor;
+pub mod control_delay;
 pub mod divider;
+pub mod lane_feed;
 pub mod pipeline;
 pub mod ram;
+pub mod select2x2;
 pub mod shader;
+pub mod tap_network;
 pub mod unorm;

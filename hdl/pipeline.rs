@@ -24,6 +24,13 @@
 //! ER, goes out as a base-plane pixel. A tap needs delay > hops + 4, i.e.
 //! (n_y - 1) * b >= 9.
 //!
+//! **Lane.** [`PipeLane`] wires its blocks in this order: the input
+//! selection ([`LaneFeed`], which holds the ABC gradient unit), the shader,
+//! the taps ([`TapNetwork`] of nine [`crate::buffer_tap::BufferTap`]s), the
+//! 2x2 selection ([`Select2x2`]), the bilinear unit and the compositor, with
+//! the control delay line beside them ([`ControlDelay`], which also makes
+//! the pixel output).
+//!
 //! Units a scene does not need are built disabled, with empty tables and
 //! 2-word rings, and drive zero; `export::prune` removes them from the
 //! emitted Verilog (see `export::left_out`). The compositing-buffer rings are
@@ -36,8 +43,11 @@ use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
 use crate::cfb::{Cfb, CfbConfig};
 use crate::compositor::Compositor;
-use crate::ram::DepthRam;
+use crate::control_delay::ControlDelay;
+use crate::lane_feed::LaneFeed;
+use crate::select2x2::Select2x2;
 use crate::shader::Shader;
+use crate::tap_network::TapNetwork;
 use golden_model::cube4l::plan::Sweep;
 use rust_hdl::prelude::*;
 use scene::Mode;
@@ -188,22 +198,8 @@ impl PipelineConfig {
     }
 }
 
-/// Tap `tap`'s compositing-buffer ring: as deep as the taps' delays (2 words
-/// when the tap is never selected), as wide as the composited values can be.
-fn tap_ring<const H: usize>(c: &PipelineConfig, tap: usize) -> DepthRam<Bits<64>, H> {
-    let mask = c
-        .ring_fields
-        .iter()
-        .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo);
-    let bits = if c.taps_used[tap] {
-        c.tap_bits().min(H)
-    } else {
-        1
-    };
-    DepthRam::new(bits).fields(&c.ring_fields, mask.to_bits())
-}
-
-fn pack(v: [u32; 4]) -> u64 {
+/// A lane's packed result word from `[r, g, b, a]` (see [`unpack`]).
+pub(crate) fn pack(v: [u32; 4]) -> u64 {
     v[0] as u64 | (v[1] as u64) << 16 | (v[2] as u64) << 32 | (v[3] as u64) << 48
 }
 
@@ -217,7 +213,10 @@ pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
     }
 }
 
-/// One pipeline after the CFB.
+/// One pipeline after the CFB: input selection ([`LaneFeed`], with the ABC
+/// gradient unit), shader, the compositing-buffer taps ([`TapNetwork`]),
+/// the 2x2 selection ([`Select2x2`]), bilinear unit and compositor, with
+/// the control beside them ([`ControlDelay`]).
 #[derive(LogicBlock)]
 pub struct PipeLane<const H: usize> {
     pub clock: Signal<In, Clock>,
@@ -291,137 +290,17 @@ pub struct PipeLane<const H: usize> {
     pub px_y: Signal<Out, Bits<16>>,
     /// The face the pixel left through (`golden_model::cube4l::plan::Face` as a number).
     pub px_face: Signal<Out, Bits<3>>,
-    abc: AbcGradient<H>,
-    use_gradient: Constant<Bit>,
-    // The voxel and its control entering the shader: the CFB's, or the
-    // gradient unit's a slice later.
-    st_valid: Signal<Local, Bit>,
-    st_value: Signal<Local, Bits<16>>,
-    st_x: Signal<Local, Bits<16>>,
-    st_y: Signal<Local, Bits<16>>,
-    st_pad: Signal<Local, Bit>,
-    st_invalid: Signal<Local, Bit>,
-    st_sr: Signal<Local, Bit>,
-    st_er: Signal<Local, Bit>,
-    st_edge: Signal<Local, Bit>,
-    st_face: Signal<Local, Bits<3>>,
-    st_bx: Signal<Local, Bits<16>>,
-    st_by: Signal<Local, Bits<16>>,
-    st_dxn: Signal<Local, Bit>,
-    st_dxm: Signal<Local, Bits<16>>,
-    st_dyn: Signal<Local, Bit>,
-    st_dym: Signal<Local, Bits<16>>,
+    feed: LaneFeed<H>,
     shader: Shader,
-    ring0: DepthRam<Bits<64>, H>,
-    f0_1: DFF<Bits<64>>,
-    s0: Signal<Local, Bits<64>>,
-    a0: Signal<Local, Bits<64>>,
-    prev0: DFF<Bits<64>>,
-    hops0: Constant<Bits<2>>,
-    off0: Constant<Bits<H>>,
-    ring1: DepthRam<Bits<64>, H>,
-    f1_1: DFF<Bits<64>>,
-    f1_2: DFF<Bits<64>>,
-    s1: Signal<Local, Bits<64>>,
-    a1: Signal<Local, Bits<64>>,
-    prev1: DFF<Bits<64>>,
-    hops1: Constant<Bits<2>>,
-    off1: Constant<Bits<H>>,
-    ring2: DepthRam<Bits<64>, H>,
-    s2: Signal<Local, Bits<64>>,
-    a2: Signal<Local, Bits<64>>,
-    prev2: DFF<Bits<64>>,
-    off2: Constant<Bits<H>>,
-    ring3: DepthRam<Bits<64>, H>,
-    f3_1: DFF<Bits<64>>,
-    f3_2: DFF<Bits<64>>,
-    s3: Signal<Local, Bits<64>>,
-    a3: Signal<Local, Bits<64>>,
-    prev3: DFF<Bits<64>>,
-    hops3: Constant<Bits<2>>,
-    off3: Constant<Bits<H>>,
-    ring4: DepthRam<Bits<64>, H>,
-    s4: Signal<Local, Bits<64>>,
-    a4: Signal<Local, Bits<64>>,
-    prev4: DFF<Bits<64>>,
-    off4: Constant<Bits<H>>,
-    ring5: DepthRam<Bits<64>, H>,
-    f5_1: DFF<Bits<64>>,
-    f5_2: DFF<Bits<64>>,
-    f5_3: DFF<Bits<64>>,
-    s5: Signal<Local, Bits<64>>,
-    a5: Signal<Local, Bits<64>>,
-    prev5: DFF<Bits<64>>,
-    hops5: Constant<Bits<2>>,
-    off5: Constant<Bits<H>>,
-    ring6: DepthRam<Bits<64>, H>,
-    f6_1: DFF<Bits<64>>,
-    s6: Signal<Local, Bits<64>>,
-    a6: Signal<Local, Bits<64>>,
-    prev6: DFF<Bits<64>>,
-    hops6: Constant<Bits<2>>,
-    off6: Constant<Bits<H>>,
-    ring7: DepthRam<Bits<64>, H>,
-    f7_1: DFF<Bits<64>>,
-    s7: Signal<Local, Bits<64>>,
-    a7: Signal<Local, Bits<64>>,
-    prev7: DFF<Bits<64>>,
-    hops7: Constant<Bits<2>>,
-    off7: Constant<Bits<H>>,
-    ring8: DepthRam<Bits<64>, H>,
-    f8_1: DFF<Bits<64>>,
-    s8: Signal<Local, Bits<64>>,
-    a8: Signal<Local, Bits<64>>,
-    prev8: DFF<Bits<64>>,
-    hops8: Constant<Bits<2>>,
-    off8: Constant<Bits<H>>,
-    f8l: DFF<Bits<64>>,
-    left8: Constant<Bit>,
-    first: Signal<Local, Bit>,
-    last: Signal<Local, Bit>,
-    c00: Signal<Local, Bits<64>>,
-    c10: Signal<Local, Bits<64>>,
-    c01: Signal<Local, Bits<64>>,
-    c11: Signal<Local, Bits<64>>,
-    x_out: Signal<Local, Bit>,
-    y_out: Signal<Local, Bit>,
+    ctl: ControlDelay,
+    taps: TapNetwork<H>,
+    cells: Select2x2,
     bilinear: Bilinear,
     compositor: Compositor,
-    // Control delayed from the shader input (T-1) to T, and on to T+3.
-    v_q: [DFF<Bit>; 4],
-    er_q: [DFF<Bit>; 4],
-    pad_q: [DFF<Bit>; 4],
-    bx_q: [DFF<Bits<16>>; 4],
-    by_q: [DFF<Bits<16>>; 4],
-    face_q: [DFF<Bits<3>>; 4],
-    x_q: DFF<Bits<16>>,
-    y_q: DFF<Bits<16>>,
-    sr_q: DFF<Bit>,
-    dxn_q: DFF<Bit>,
-    dxm_q: DFF<Bits<16>>,
-    dyn_q: DFF<Bit>,
-    dym_q: DFF<Bits<16>>,
-    // The shader's sample delayed from T to T+2.
-    s_r: [DFF<Bits<16>>; 2],
-    s_g: [DFF<Bits<16>>; 2],
-    s_b: [DFF<Bits<16>>; 2],
-    s_a: [DFF<Bits<16>>; 2],
-    s_v: [DFF<Bit>; 2],
-    p_mask: Constant<Bits<16>>,
-    nx_last: Constant<Bits<16>>,
-    ny_last: Constant<Bits<16>>,
-    reset: Constant<Bits<64>>,
-    /// Channel masks of the packed word: X-ray keeps a 32-bit sum in channel
-    /// 0 and nothing else.
-    r_mask: Constant<Bits<64>>,
-    gba_mask: Constant<Bits<64>>,
 }
 
 impl<const H: usize> PipeLane<H> {
     fn new(c: &PipelineConfig, shader: Shader, mode: Mode) -> PipeLane<H> {
-        let mask = (1u64 << H) - 1;
-        // Read address = now + hops + 1 - delay (mod 2^H).
-        let off = |t: &Tap| ((t.hops as u64 + 1).wrapping_sub(t.delay as u64)) & mask;
         PipeLane {
             clock: Default::default(),
             now: Default::default(),
@@ -454,32 +333,6 @@ impl<const H: usize> PipeLane<H> {
             g_to_left_xp: Default::default(),
             g_to_left_yp: Default::default(),
             g_to_left_zp: Default::default(),
-            res_beat: Default::default(),
-            res_valid: Default::default(),
-            res: Default::default(),
-            px_valid: Default::default(),
-            px_x: Default::default(),
-            px_y: Default::default(),
-            px_face: Default::default(),
-            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p, c.voxel_bits, c.gradient),
-            use_gradient: Constant::new(c.gradient),
-            st_valid: Default::default(),
-            st_value: Default::default(),
-            st_x: Default::default(),
-            st_y: Default::default(),
-            st_pad: Default::default(),
-            st_invalid: Default::default(),
-            st_sr: Default::default(),
-            st_er: Default::default(),
-            st_edge: Default::default(),
-            st_face: Default::default(),
-            st_bx: Default::default(),
-            st_by: Default::default(),
-            st_dxn: Default::default(),
-            st_dxm: Default::default(),
-            st_dyn: Default::default(),
-            st_dym: Default::default(),
-            shader,
             t0s0: Default::default(),
             t0i1: Default::default(),
             t1s0: Default::default(),
@@ -503,112 +356,20 @@ impl<const H: usize> PipeLane<H> {
             t8s0: Default::default(),
             t8i1: Default::default(),
             t8il: Default::default(),
-            ring0: tap_ring(c, 0),
-            f0_1: Default::default(),
-            s0: Default::default(),
-            a0: Default::default(),
-            prev0: Default::default(),
-            hops0: Constant::new((c.taps[0].hops as u64).to_bits()),
-            off0: Constant::new(off(&c.taps[0]).to_bits()),
-            ring1: tap_ring(c, 1),
-            f1_1: Default::default(),
-            f1_2: Default::default(),
-            s1: Default::default(),
-            a1: Default::default(),
-            prev1: Default::default(),
-            hops1: Constant::new((c.taps[1].hops as u64).to_bits()),
-            off1: Constant::new(off(&c.taps[1]).to_bits()),
-            ring2: tap_ring(c, 2),
-            s2: Default::default(),
-            a2: Default::default(),
-            prev2: Default::default(),
-            off2: Constant::new(off(&c.taps[2]).to_bits()),
-            ring3: tap_ring(c, 3),
-            f3_1: Default::default(),
-            f3_2: Default::default(),
-            s3: Default::default(),
-            a3: Default::default(),
-            prev3: Default::default(),
-            hops3: Constant::new((c.taps[3].hops as u64).to_bits()),
-            off3: Constant::new(off(&c.taps[3]).to_bits()),
-            ring4: tap_ring(c, 4),
-            s4: Default::default(),
-            a4: Default::default(),
-            prev4: Default::default(),
-            off4: Constant::new(off(&c.taps[4]).to_bits()),
-            ring5: tap_ring(c, 5),
-            f5_1: Default::default(),
-            f5_2: Default::default(),
-            f5_3: Default::default(),
-            s5: Default::default(),
-            a5: Default::default(),
-            prev5: Default::default(),
-            hops5: Constant::new((c.taps[5].hops as u64).to_bits()),
-            off5: Constant::new(off(&c.taps[5]).to_bits()),
-            ring6: tap_ring(c, 6),
-            f6_1: Default::default(),
-            s6: Default::default(),
-            a6: Default::default(),
-            prev6: Default::default(),
-            hops6: Constant::new((c.taps[6].hops as u64).to_bits()),
-            off6: Constant::new(off(&c.taps[6]).to_bits()),
-            ring7: tap_ring(c, 7),
-            f7_1: Default::default(),
-            s7: Default::default(),
-            a7: Default::default(),
-            prev7: Default::default(),
-            hops7: Constant::new((c.taps[7].hops as u64).to_bits()),
-            off7: Constant::new(off(&c.taps[7]).to_bits()),
-            ring8: tap_ring(c, 8),
-            f8_1: Default::default(),
-            s8: Default::default(),
-            a8: Default::default(),
-            prev8: Default::default(),
-            hops8: Constant::new((c.taps[8].hops as u64).to_bits()),
-            off8: Constant::new(off(&c.taps[8]).to_bits()),
-            f8l: Default::default(),
-            left8: Constant::new(c.taps[8].left),
-            first: Default::default(),
-            last: Default::default(),
-            c00: Default::default(),
-            c10: Default::default(),
-            c01: Default::default(),
-            c11: Default::default(),
-            x_out: Default::default(),
-            y_out: Default::default(),
+            res_beat: Default::default(),
+            res_valid: Default::default(),
+            res: Default::default(),
+            px_valid: Default::default(),
+            px_x: Default::default(),
+            px_y: Default::default(),
+            px_face: Default::default(),
+            feed: LaneFeed::new(c),
+            shader,
+            ctl: Default::default(),
+            taps: TapNetwork::new(c),
+            cells: Select2x2::new(c, mode),
             bilinear: Bilinear::new(c.frac_bits),
             compositor: Compositor::new(mode, c.order, c.rgba_bits),
-            v_q: Default::default(),
-            er_q: Default::default(),
-            pad_q: Default::default(),
-            bx_q: Default::default(),
-            by_q: Default::default(),
-            face_q: Default::default(),
-            x_q: Default::default(),
-            y_q: Default::default(),
-            sr_q: Default::default(),
-            dxn_q: Default::default(),
-            dxm_q: Default::default(),
-            dyn_q: Default::default(),
-            dym_q: Default::default(),
-            s_r: Default::default(),
-            s_g: Default::default(),
-            s_b: Default::default(),
-            s_a: Default::default(),
-            s_v: Default::default(),
-            p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
-            nx_last: Constant::new(((c.cfb.dims[0] - 1) as u64).to_bits()),
-            ny_last: Constant::new(((c.cfb.dims[1] - 1) as u64).to_bits()),
-            reset: Constant::new(pack(c.reset).to_bits()),
-            r_mask: Constant::new(
-                (if mode == Mode::Xray {
-                    0xffff_ffffu64
-                } else {
-                    0xffff
-                })
-                .to_bits(),
-            ),
-            gba_mask: Constant::new((if mode == Mode::Xray { 0u64 } else { 0xffff }).to_bits()),
         }
     }
 }
@@ -616,412 +377,141 @@ impl<const H: usize> PipeLane<H> {
 impl<const H: usize> Logic for PipeLane<H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, x_q, y_q, sr_q, dxn_q, dxm_q, dyn_q, dym_q, f0_1, prev0, f1_1, f1_2,
-            prev1, prev2, f3_1, f3_2, prev3, prev4, f5_1, f5_2, f5_3, prev5, f6_1, prev6, f7_1,
-            prev7, f8_1, prev8, f8l
-        );
-        for i in 0..4 {
-            self.v_q[i].clock.next = self.clock.val();
-            self.er_q[i].clock.next = self.clock.val();
-            self.pad_q[i].clock.next = self.clock.val();
-            self.bx_q[i].clock.next = self.clock.val();
-            self.by_q[i].clock.next = self.clock.val();
-            self.face_q[i].clock.next = self.clock.val();
-        }
-        for i in 0..2 {
-            self.s_r[i].clock.next = self.clock.val();
-            self.s_g[i].clock.next = self.clock.val();
-            self.s_b[i].clock.next = self.clock.val();
-            self.s_a[i].clock.next = self.clock.val();
-            self.s_v[i].clock.next = self.clock.val();
-        }
-        self.shader.clock.next = self.clock.val();
-        self.bilinear.clock.next = self.clock.val();
-        self.compositor.clock.next = self.clock.val();
-        // ABC gradient unit: fed by the CFB, linked to the neighbours.
-        self.abc.clock.next = self.clock.val();
-        self.abc.now.next = self.now.val();
-        self.abc.valid.next = self.beat_valid.val() & !self.halo.val();
-        self.abc.value.next = self.value.val();
-        self.abc.x.next = self.x.val();
-        self.abc.y.next = self.y.val();
-        self.abc.pad.next = self.pad.val();
-        self.abc.invalid.next = self.invalid.val();
-        self.abc.sr.next = self.sr.val();
-        self.abc.er.next = self.er.val();
-        self.abc.at_edge.next = self.at_edge.val();
-        self.abc.face.next = self.face.val();
-        self.abc.base_x.next = self.base_x.val();
-        self.abc.base_y.next = self.base_y.val();
-        self.abc.dx_neg.next = self.dx_neg.val();
-        self.abc.dx_mag.next = self.dx_mag.val();
-        self.abc.dy_neg.next = self.dy_neg.val();
-        self.abc.dy_mag.next = self.dy_mag.val();
-        self.abc.from_left_xm.next = self.g_from_left_xm.val();
-        self.abc.from_left_ym.next = self.g_from_left_ym.val();
-        self.abc.from_left_zm.next = self.g_from_left_zm.val();
-        self.abc.from_right_xp.next = self.g_from_right_xp.val();
-        self.abc.from_right_yp.next = self.g_from_right_yp.val();
-        self.abc.from_right_zp.next = self.g_from_right_zp.val();
-        self.g_to_right_xm.next = self.abc.to_right_xm.val();
-        self.g_to_right_ym.next = self.abc.to_right_ym.val();
-        self.g_to_right_zm.next = self.abc.to_right_zm.val();
-        self.g_to_left_xp.next = self.abc.to_left_xp.val();
-        self.g_to_left_yp.next = self.abc.to_left_yp.val();
-        self.g_to_left_zp.next = self.abc.to_left_zp.val();
-        if self.use_gradient.val() {
-            self.st_valid.next = self.abc.o_valid.val();
-            self.st_value.next = self.abc.o_value.val();
-            self.st_x.next = self.abc.o_x.val();
-            self.st_y.next = self.abc.o_y.val();
-            self.st_pad.next = self.abc.o_pad.val();
-            self.st_invalid.next = self.abc.o_invalid.val();
-            self.st_sr.next = self.abc.o_sr.val();
-            self.st_er.next = self.abc.o_er.val();
-            self.st_edge.next = self.abc.o_edge.val();
-            self.st_face.next = self.abc.o_face.val();
-            self.st_bx.next = self.abc.o_base_x.val();
-            self.st_by.next = self.abc.o_base_y.val();
-            self.st_dxn.next = self.abc.o_dx_neg.val();
-            self.st_dxm.next = self.abc.o_dx_mag.val();
-            self.st_dyn.next = self.abc.o_dy_neg.val();
-            self.st_dym.next = self.abc.o_dy_mag.val();
-        } else {
-            self.st_valid.next = self.beat_valid.val();
-            self.st_value.next = self.value.val();
-            self.st_x.next = self.x.val();
-            self.st_y.next = self.y.val();
-            self.st_pad.next = self.pad.val();
-            self.st_invalid.next = self.invalid.val();
-            self.st_sr.next = self.sr.val();
-            self.st_er.next = self.er.val();
-            self.st_edge.next = self.at_edge.val();
-            self.st_face.next = self.face.val();
-            self.st_bx.next = self.base_x.val();
-            self.st_by.next = self.base_y.val();
-            self.st_dxn.next = self.dx_neg.val();
-            self.st_dxm.next = self.dx_mag.val();
-            self.st_dyn.next = self.dy_neg.val();
-            self.st_dym.next = self.dy_mag.val();
-        }
+        // Input selection (T-1): the CFB's beat, or the gradient unit's.
+        self.feed.clock.next = self.clock.val();
+        self.feed.now.next = self.now.val();
+        self.feed.beat_valid.next = self.beat_valid.val();
+        self.feed.value.next = self.value.val();
+        self.feed.x.next = self.x.val();
+        self.feed.y.next = self.y.val();
+        self.feed.pad.next = self.pad.val();
+        self.feed.invalid.next = self.invalid.val();
+        self.feed.halo.next = self.halo.val();
+        self.feed.sr.next = self.sr.val();
+        self.feed.er.next = self.er.val();
+        self.feed.base_x.next = self.base_x.val();
+        self.feed.base_y.next = self.base_y.val();
+        self.feed.face.next = self.face.val();
+        self.feed.at_edge.next = self.at_edge.val();
+        self.feed.dx_neg.next = self.dx_neg.val();
+        self.feed.dx_mag.next = self.dx_mag.val();
+        self.feed.dy_neg.next = self.dy_neg.val();
+        self.feed.dy_mag.next = self.dy_mag.val();
+        self.feed.g_from_left_xm.next = self.g_from_left_xm.val();
+        self.feed.g_from_left_ym.next = self.g_from_left_ym.val();
+        self.feed.g_from_left_zm.next = self.g_from_left_zm.val();
+        self.feed.g_from_right_xp.next = self.g_from_right_xp.val();
+        self.feed.g_from_right_yp.next = self.g_from_right_yp.val();
+        self.feed.g_from_right_zp.next = self.g_from_right_zp.val();
+        self.g_to_right_xm.next = self.feed.g_to_right_xm.val();
+        self.g_to_right_ym.next = self.feed.g_to_right_ym.val();
+        self.g_to_right_zm.next = self.feed.g_to_right_zm.val();
+        self.g_to_left_xp.next = self.feed.g_to_left_xp.val();
+        self.g_to_left_yp.next = self.feed.g_to_left_yp.val();
+        self.g_to_left_zp.next = self.feed.g_to_left_zp.val();
         // Shader (input at T-1, registered sample at T).
-        self.shader.value.next = self.st_value.val();
-        self.shader.invalid.next = self.st_invalid.val();
-        self.shader.at_edge.next = self.st_edge.val();
-        self.shader.gx_neg.next = self.abc.gx_neg.val();
-        self.shader.gx_mag.next = self.abc.gx_mag.val();
-        self.shader.gy_neg.next = self.abc.gy_neg.val();
-        self.shader.gy_mag.next = self.abc.gy_mag.val();
-        self.shader.gz_neg.next = self.abc.gz_neg.val();
-        self.shader.gz_mag.next = self.abc.gz_mag.val();
-        // Control pipeline.
-        self.v_q[0].d.next = self.st_valid.val();
-        self.er_q[0].d.next = self.st_er.val();
-        self.pad_q[0].d.next = self.st_pad.val();
-        self.bx_q[0].d.next = self.st_bx.val();
-        self.by_q[0].d.next = self.st_by.val();
-        self.face_q[0].d.next = self.st_face.val();
-        for i in 1..4 {
-            self.v_q[i].d.next = self.v_q[i - 1].q.val();
-            self.er_q[i].d.next = self.er_q[i - 1].q.val();
-            self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
-            self.bx_q[i].d.next = self.bx_q[i - 1].q.val();
-            self.by_q[i].d.next = self.by_q[i - 1].q.val();
-            self.face_q[i].d.next = self.face_q[i - 1].q.val();
+        self.shader.clock.next = self.clock.val();
+        self.shader.value.next = self.feed.o_value.val();
+        self.shader.invalid.next = self.feed.o_invalid.val();
+        self.shader.at_edge.next = self.feed.o_edge.val();
+        self.shader.gx_neg.next = self.feed.gx_neg.val();
+        self.shader.gx_mag.next = self.feed.gx_mag.val();
+        self.shader.gy_neg.next = self.feed.gy_neg.val();
+        self.shader.gy_mag.next = self.feed.gy_mag.val();
+        self.shader.gz_neg.next = self.feed.gz_neg.val();
+        self.shader.gz_mag.next = self.feed.gz_mag.val();
+        // Control beside the voxel (T-1 to T and T+3), the sample T to T+2.
+        self.ctl.clock.next = self.clock.val();
+        self.ctl.valid.next = self.feed.o_valid.val();
+        self.ctl.er.next = self.feed.o_er.val();
+        self.ctl.pad.next = self.feed.o_pad.val();
+        self.ctl.base_x.next = self.feed.o_base_x.val();
+        self.ctl.base_y.next = self.feed.o_base_y.val();
+        self.ctl.face.next = self.feed.o_face.val();
+        self.ctl.x.next = self.feed.o_x.val();
+        self.ctl.y.next = self.feed.o_y.val();
+        self.ctl.sr.next = self.feed.o_sr.val();
+        self.ctl.dx_neg.next = self.feed.o_dx_neg.val();
+        self.ctl.dx_mag.next = self.feed.o_dx_mag.val();
+        self.ctl.dy_neg.next = self.feed.o_dy_neg.val();
+        self.ctl.dy_mag.next = self.feed.o_dy_mag.val();
+        self.ctl.r.next = self.shader.r.val();
+        self.ctl.g.next = self.shader.g.val();
+        self.ctl.b.next = self.shader.b.val();
+        self.ctl.a.next = self.shader.a.val();
+        self.ctl.sample_valid.next = self.shader.valid.val();
+        // The compositing-buffer taps (T).
+        self.taps.clock.next = self.clock.val();
+        self.taps.now.next = self.now.val();
+        self.taps.x.next = self.ctl.x_t.val();
+        self.t0s0.next = self.taps.t0s0.val();
+        self.taps.t0i1.next = self.t0i1.val();
+        self.t1s0.next = self.taps.t1s0.val();
+        self.t1s1.next = self.taps.t1s1.val();
+        self.taps.t1i1.next = self.t1i1.val();
+        self.taps.t1i2.next = self.t1i2.val();
+        self.t3s0.next = self.taps.t3s0.val();
+        self.t3s1.next = self.taps.t3s1.val();
+        self.taps.t3i1.next = self.t3i1.val();
+        self.taps.t3i2.next = self.t3i2.val();
+        self.t5s0.next = self.taps.t5s0.val();
+        self.t5s1.next = self.taps.t5s1.val();
+        self.t5s2.next = self.taps.t5s2.val();
+        self.taps.t5i1.next = self.t5i1.val();
+        self.taps.t5i2.next = self.t5i2.val();
+        self.taps.t5i3.next = self.t5i3.val();
+        self.t6s0.next = self.taps.t6s0.val();
+        self.taps.t6i1.next = self.t6i1.val();
+        self.t7s0.next = self.taps.t7s0.val();
+        self.taps.t7i1.next = self.t7i1.val();
+        self.t8s0.next = self.taps.t8s0.val();
+        self.taps.t8i1.next = self.t8i1.val();
+        self.taps.t8il.next = self.t8il.val();
+        // The 2x2 selection by the signs of dx and dy (T).
+        for c in 0..9 {
+            self.cells.a[c].next = self.taps.a[c].val();
         }
-        self.x_q.d.next = self.st_x.val();
-        self.y_q.d.next = self.st_y.val();
-        self.sr_q.d.next = self.st_sr.val();
-        self.dxn_q.d.next = self.st_dxn.val();
-        self.dxm_q.d.next = self.st_dxm.val();
-        self.dyn_q.d.next = self.st_dyn.val();
-        self.dym_q.d.next = self.st_dym.val();
-        // Partial-beam ends: x-1 of a partial beam's first lane is one beat
-        // older, x+1 of its last lane one beat newer.
-        self.first.next = (self.x_q.q.val() & self.p_mask.val()) == 0;
-        self.last.next = (self.x_q.q.val() & self.p_mask.val()) == self.p_mask.val();
-        // The nine taps, aligned at T.
-        self.ring0.read_clock.next = self.clock.val();
-        self.ring0.write_clock.next = self.clock.val();
-        self.ring0.read_address.next = self.now.val() + self.off0.val();
-        self.t0s0.next = self.ring0.read_data.val();
-        self.f0_1.d.next = self.t0i1.val();
-        self.s0.next = self.ring0.read_data.val();
-        if self.hops0.val() == 1 {
-            self.s0.next = self.f0_1.q.val();
-        }
-        self.prev0.d.next = self.s0.val();
-        self.a0.next = self.s0.val();
-        self.ring1.read_clock.next = self.clock.val();
-        self.ring1.write_clock.next = self.clock.val();
-        self.ring1.read_address.next = self.now.val() + self.off1.val();
-        self.t1s0.next = self.ring1.read_data.val();
-        self.f1_1.d.next = self.t1i1.val();
-        self.f1_2.d.next = self.t1i2.val();
-        self.t1s1.next = self.f1_1.q.val();
-        self.s1.next = self.ring1.read_data.val();
-        if self.hops1.val() == 1 {
-            self.s1.next = self.f1_1.q.val();
-        }
-        if self.hops1.val() == 2 {
-            self.s1.next = self.f1_2.q.val();
-        }
-        self.prev1.d.next = self.s1.val();
-        self.a1.next = self.s1.val();
-        if self.first.val() {
-            self.a1.next = self.prev1.q.val();
-        }
-        self.ring2.read_clock.next = self.clock.val();
-        self.ring2.write_clock.next = self.clock.val();
-        self.ring2.read_address.next = self.now.val() + self.off2.val();
-        self.s2.next = self.ring2.read_data.val();
-        self.prev2.d.next = self.s2.val();
-        self.a2.next = self.prev2.q.val();
-        if self.last.val() {
-            self.a2.next = self.s2.val();
-        }
-        self.ring3.read_clock.next = self.clock.val();
-        self.ring3.write_clock.next = self.clock.val();
-        self.ring3.read_address.next = self.now.val() + self.off3.val();
-        self.t3s0.next = self.ring3.read_data.val();
-        self.f3_1.d.next = self.t3i1.val();
-        self.f3_2.d.next = self.t3i2.val();
-        self.t3s1.next = self.f3_1.q.val();
-        self.s3.next = self.ring3.read_data.val();
-        if self.hops3.val() == 1 {
-            self.s3.next = self.f3_1.q.val();
-        }
-        if self.hops3.val() == 2 {
-            self.s3.next = self.f3_2.q.val();
-        }
-        self.prev3.d.next = self.s3.val();
-        self.a3.next = self.s3.val();
-        self.ring4.read_clock.next = self.clock.val();
-        self.ring4.write_clock.next = self.clock.val();
-        self.ring4.read_address.next = self.now.val() + self.off4.val();
-        self.s4.next = self.ring4.read_data.val();
-        self.prev4.d.next = self.s4.val();
-        self.a4.next = self.s4.val();
-        self.ring5.read_clock.next = self.clock.val();
-        self.ring5.write_clock.next = self.clock.val();
-        self.ring5.read_address.next = self.now.val() + self.off5.val();
-        self.t5s0.next = self.ring5.read_data.val();
-        self.f5_1.d.next = self.t5i1.val();
-        self.f5_2.d.next = self.t5i2.val();
-        self.f5_3.d.next = self.t5i3.val();
-        self.t5s1.next = self.f5_1.q.val();
-        self.t5s2.next = self.f5_2.q.val();
-        self.s5.next = self.ring5.read_data.val();
-        if self.hops5.val() == 1 {
-            self.s5.next = self.f5_1.q.val();
-        }
-        if self.hops5.val() == 2 {
-            self.s5.next = self.f5_2.q.val();
-        }
-        if self.hops5.val() == 3 {
-            self.s5.next = self.f5_3.q.val();
-        }
-        self.prev5.d.next = self.s5.val();
-        self.a5.next = self.s5.val();
-        if self.first.val() {
-            self.a5.next = self.prev5.q.val();
-        }
-        self.ring6.read_clock.next = self.clock.val();
-        self.ring6.write_clock.next = self.clock.val();
-        self.ring6.read_address.next = self.now.val() + self.off6.val();
-        self.t6s0.next = self.ring6.read_data.val();
-        self.f6_1.d.next = self.t6i1.val();
-        self.s6.next = self.ring6.read_data.val();
-        if self.hops6.val() == 1 {
-            self.s6.next = self.f6_1.q.val();
-        }
-        self.prev6.d.next = self.s6.val();
-        self.a6.next = self.prev6.q.val();
-        if self.last.val() {
-            self.a6.next = self.s6.val();
-        }
-        self.ring7.read_clock.next = self.clock.val();
-        self.ring7.write_clock.next = self.clock.val();
-        self.ring7.read_address.next = self.now.val() + self.off7.val();
-        self.t7s0.next = self.ring7.read_data.val();
-        self.f7_1.d.next = self.t7i1.val();
-        self.s7.next = self.ring7.read_data.val();
-        if self.hops7.val() == 1 {
-            self.s7.next = self.f7_1.q.val();
-        }
-        self.prev7.d.next = self.s7.val();
-        self.a7.next = self.s7.val();
-        if self.first.val() {
-            self.a7.next = self.prev7.q.val();
-        }
-        self.ring8.read_clock.next = self.clock.val();
-        self.ring8.write_clock.next = self.clock.val();
-        self.ring8.read_address.next = self.now.val() + self.off8.val();
-        self.t8s0.next = self.ring8.read_data.val();
-        self.f8_1.d.next = self.t8i1.val();
-        self.s8.next = self.ring8.read_data.val();
-        if self.hops8.val() == 1 {
-            self.s8.next = self.f8_1.q.val();
-        }
-        self.f8l.d.next = self.t8il.val();
-        if self.left8.val() {
-            self.s8.next = self.f8l.q.val();
-        }
-        self.prev8.d.next = self.s8.val();
-        self.a8.next = self.prev8.q.val();
-        if self.last.val() {
-            self.a8.next = self.s8.val();
-        }
-        // The signs of dx and dy narrow the 3x3 region to 2x2: the
-        // neighbours are x - sign(dx) and y - sign(dy).
-        self.c00.next = self.a0.val();
-        self.c10.next = self.a0.val();
-        self.c01.next = self.a0.val();
-        self.c11.next = self.a0.val();
-        self.x_out.next = false;
-        self.y_out.next = false;
-        if self.dxm_q.q.val() != 0 {
-            if self.dxn_q.q.val() {
-                self.c10.next = self.a2.val();
-                self.x_out.next = self.x_q.q.val() == self.nx_last.val();
-            } else {
-                self.c10.next = self.a1.val();
-                self.x_out.next = self.x_q.q.val() == 0;
-            }
-        }
-        if self.dym_q.q.val() != 0 {
-            if self.dyn_q.q.val() {
-                self.c01.next = self.a4.val();
-                self.y_out.next = self.y_q.q.val() == self.ny_last.val();
-            } else {
-                self.c01.next = self.a3.val();
-                self.y_out.next = self.y_q.q.val() == 0;
-            }
-        }
-        self.c11.next = self.c01.val();
-        if self.dxm_q.q.val() != 0 {
-            self.c11.next = self.c10.val();
-            if self.dym_q.q.val() != 0 {
-                if self.dxn_q.q.val() {
-                    if self.dyn_q.q.val() {
-                        self.c11.next = self.a8.val();
-                    } else {
-                        self.c11.next = self.a6.val();
-                    }
-                } else if self.dyn_q.q.val() {
-                    self.c11.next = self.a7.val();
-                } else {
-                    self.c11.next = self.a5.val();
-                }
-            }
-        }
-        // Cells outside the slice, and the start of a ray, read as reset.
-        if self.x_out.val() {
-            self.c10.next = self.reset.val();
-            self.c11.next = self.reset.val();
-        }
-        if self.y_out.val() {
-            self.c01.next = self.reset.val();
-            self.c11.next = self.reset.val();
-        }
-        if self.sr_q.q.val() {
-            self.c00.next = self.reset.val();
-            self.c10.next = self.reset.val();
-            self.c01.next = self.reset.val();
-            self.c11.next = self.reset.val();
-        }
+        self.cells.x.next = self.ctl.x_t.val();
+        self.cells.y.next = self.ctl.y_t.val();
+        self.cells.sr.next = self.ctl.sr_t.val();
+        self.cells.dx_neg.next = self.ctl.dx_neg_t.val();
+        self.cells.dx_mag.next = self.ctl.dx_mag_t.val();
+        self.cells.dy_neg.next = self.ctl.dy_neg_t.val();
+        self.cells.dy_mag.next = self.ctl.dy_mag_t.val();
         // Bilinear unit (T..T+2).
-        self.bilinear.c00[0].next = bit_cast::<32, 64>(self.c00.val() & self.r_mask.val());
-        self.bilinear.c00[1].next =
-            bit_cast::<32, 64>((self.c00.val() >> 16) & self.gba_mask.val());
-        self.bilinear.c00[2].next =
-            bit_cast::<32, 64>((self.c00.val() >> 32) & self.gba_mask.val());
-        self.bilinear.c00[3].next =
-            bit_cast::<32, 64>((self.c00.val() >> 48) & self.gba_mask.val());
-        self.bilinear.c10[0].next = bit_cast::<32, 64>(self.c10.val() & self.r_mask.val());
-        self.bilinear.c10[1].next =
-            bit_cast::<32, 64>((self.c10.val() >> 16) & self.gba_mask.val());
-        self.bilinear.c10[2].next =
-            bit_cast::<32, 64>((self.c10.val() >> 32) & self.gba_mask.val());
-        self.bilinear.c10[3].next =
-            bit_cast::<32, 64>((self.c10.val() >> 48) & self.gba_mask.val());
-        self.bilinear.c01[0].next = bit_cast::<32, 64>(self.c01.val() & self.r_mask.val());
-        self.bilinear.c01[1].next =
-            bit_cast::<32, 64>((self.c01.val() >> 16) & self.gba_mask.val());
-        self.bilinear.c01[2].next =
-            bit_cast::<32, 64>((self.c01.val() >> 32) & self.gba_mask.val());
-        self.bilinear.c01[3].next =
-            bit_cast::<32, 64>((self.c01.val() >> 48) & self.gba_mask.val());
-        self.bilinear.c11[0].next = bit_cast::<32, 64>(self.c11.val() & self.r_mask.val());
-        self.bilinear.c11[1].next =
-            bit_cast::<32, 64>((self.c11.val() >> 16) & self.gba_mask.val());
-        self.bilinear.c11[2].next =
-            bit_cast::<32, 64>((self.c11.val() >> 32) & self.gba_mask.val());
-        self.bilinear.c11[3].next =
-            bit_cast::<32, 64>((self.c11.val() >> 48) & self.gba_mask.val());
-        self.bilinear.wx.next = self.dxm_q.q.val();
-        self.bilinear.wy.next = self.dym_q.q.val();
-        // The sample waits for the bilinear unit (T -> T+2).
-        self.s_r[0].d.next = self.shader.r.val();
-        self.s_g[0].d.next = self.shader.g.val();
-        self.s_b[0].d.next = self.shader.b.val();
-        self.s_a[0].d.next = self.shader.a.val();
-        self.s_v[0].d.next = self.shader.valid.val();
-        self.s_r[1].d.next = self.s_r[0].q.val();
-        self.s_g[1].d.next = self.s_g[0].q.val();
-        self.s_b[1].d.next = self.s_b[0].q.val();
-        self.s_a[1].d.next = self.s_a[0].q.val();
-        self.s_v[1].d.next = self.s_v[0].q.val();
+        self.bilinear.clock.next = self.clock.val();
+        for i in 0..4 {
+            self.bilinear.c00[i].next = self.cells.c00[i].val();
+            self.bilinear.c10[i].next = self.cells.c10[i].val();
+            self.bilinear.c01[i].next = self.cells.c01[i].val();
+            self.bilinear.c11[i].next = self.cells.c11[i].val();
+        }
+        self.bilinear.wx.next = self.ctl.dx_mag_t.val();
+        self.bilinear.wy.next = self.ctl.dy_mag_t.val();
         // Compositing unit (T+2 -> T+3).
+        self.compositor.clock.next = self.clock.val();
         self.compositor.acc_r.next = self.bilinear.out[0].val();
         self.compositor.acc_g.next = bit_cast::<16, 32>(self.bilinear.out[1].val());
         self.compositor.acc_b.next = bit_cast::<16, 32>(self.bilinear.out[2].val());
         self.compositor.acc_a.next = bit_cast::<16, 32>(self.bilinear.out[3].val());
-        self.compositor.new_r.next = bit_cast::<32, 16>(self.s_r[1].q.val());
-        self.compositor.new_g.next = self.s_g[1].q.val();
-        self.compositor.new_b.next = self.s_b[1].q.val();
-        self.compositor.new_a.next = self.s_a[1].q.val();
-        self.compositor.new_valid.next = self.s_v[1].q.val();
+        self.compositor.new_r.next = bit_cast::<32, 16>(self.ctl.new_r.val());
+        self.compositor.new_g.next = self.ctl.new_g.val();
+        self.compositor.new_b.next = self.ctl.new_b.val();
+        self.compositor.new_a.next = self.ctl.new_a.val();
+        self.compositor.new_valid.next = self.ctl.new_valid.val();
         self.res.next = bit_cast::<64, 32>(self.compositor.out_r.val())
             | (bit_cast::<64, 16>(self.compositor.out_g.val()) << 16)
             | (bit_cast::<64, 16>(self.compositor.out_b.val()) << 32)
             | (bit_cast::<64, 16>(self.compositor.out_a.val()) << 48);
-        // Write the result into the ring buffers at its beat's time.
-        self.ring0.write_address.next = self.now.val() - 3;
-        self.ring0.write_data.next = self.res.val();
-        self.ring0.write_enable.next = self.v_q[3].q.val();
-        self.ring1.write_address.next = self.now.val() - 3;
-        self.ring1.write_data.next = self.res.val();
-        self.ring1.write_enable.next = self.v_q[3].q.val();
-        self.ring2.write_address.next = self.now.val() - 3;
-        self.ring2.write_data.next = self.res.val();
-        self.ring2.write_enable.next = self.v_q[3].q.val();
-        self.ring3.write_address.next = self.now.val() - 3;
-        self.ring3.write_data.next = self.res.val();
-        self.ring3.write_enable.next = self.v_q[3].q.val();
-        self.ring4.write_address.next = self.now.val() - 3;
-        self.ring4.write_data.next = self.res.val();
-        self.ring4.write_enable.next = self.v_q[3].q.val();
-        self.ring5.write_address.next = self.now.val() - 3;
-        self.ring5.write_data.next = self.res.val();
-        self.ring5.write_enable.next = self.v_q[3].q.val();
-        self.ring6.write_address.next = self.now.val() - 3;
-        self.ring6.write_data.next = self.res.val();
-        self.ring6.write_enable.next = self.v_q[3].q.val();
-        self.ring7.write_address.next = self.now.val() - 3;
-        self.ring7.write_data.next = self.res.val();
-        self.ring7.write_enable.next = self.v_q[3].q.val();
-        self.ring8.write_address.next = self.now.val() - 3;
-        self.ring8.write_data.next = self.res.val();
-        self.ring8.write_enable.next = self.v_q[3].q.val();
-        self.res_beat.next = self.v_q[3].q.val();
-        self.res_valid.next = self.v_q[3].q.val() & !self.pad_q[3].q.val();
-        // Pixel out on ER.
-        self.px_valid.next = self.v_q[3].q.val() & self.er_q[3].q.val() & !self.pad_q[3].q.val();
-        self.px_x.next = self.bx_q[3].q.val();
-        self.px_y.next = self.by_q[3].q.val();
-        self.px_face.next = self.face_q[3].q.val();
+        // The result (T+3): into the taps' rings, and out with the pixel on ER.
+        self.taps.res.next = self.res.val();
+        self.taps.res_beat.next = self.ctl.res_beat.val();
+        self.res_beat.next = self.ctl.res_beat.val();
+        self.res_valid.next = self.ctl.res_valid.val();
+        self.px_valid.next = self.ctl.px_valid.val();
+        self.px_x.next = self.ctl.px_x.val();
+        self.px_y.next = self.ctl.px_y.val();
+        self.px_face.next = self.ctl.px_face.val();
     }
 }
 
@@ -1090,7 +580,23 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
         for _ in 0..P {
             lanes.push(PipeLane::new(config, Shader::new(golden)?, golden.mode));
         }
-        Ok(Pipeline {
+        let lanes = lanes
+            .into_boxed_slice()
+            .try_into()
+            .unwrap_or_else(|_| unreachable!());
+        Ok(Self::with_lanes(config, lanes))
+    }
+
+    /// The pipeline around `lanes`. rust-hdl's signals are large (a p = 4
+    /// pipeline takes half a megabyte) and testbenches build pipelines on
+    /// 2 MB test-thread stacks, so the lanes stay boxed until they move into
+    /// place, and this function, kept out of line, writes the pipeline
+    /// straight into the caller's result rather than through temporaries in
+    /// `new`'s frame.
+    #[inline(never)]
+    #[allow(clippy::boxed_local)] // the box keeps the lanes off the stack
+    fn with_lanes(config: &PipelineConfig, lanes: Box<[PipeLane<H>; P]>) -> Self {
+        Pipeline {
             clock: Default::default(),
             start: Default::default(),
             load_enable: Default::default(),
@@ -1112,9 +618,9 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             res_valid: std::array::from_fn(|_| Default::default()),
             res: std::array::from_fn(|_| Default::default()),
             cfb: Cfb::new(&config.cfb),
-            lanes: lanes.try_into().unwrap_or_else(|_| unreachable!()),
+            lanes: *lanes,
             now: Default::default(),
-        })
+        }
     }
 }
 

@@ -73,7 +73,7 @@ pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
         group(
             &mut s,
             &format!("ABC gradient {k}"),
-            under(&format!("{lane}.abc"), &abc),
+            under(&format!("{lane}.feed.abc"), &abc),
         );
         let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
         group(
@@ -81,7 +81,7 @@ pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
             &format!("Shader {k}"),
             under(&format!("{lane}.shader"), &shader),
         );
-        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.a{c}[63:0]")).collect();
+        let mut taps: Vec<String> = (0..9).map(|c| format!("{lane}.taps.a${c}[63:0]")).collect();
         taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
         group(&mut s, &format!("Compositing lane {k}"), taps);
         group(

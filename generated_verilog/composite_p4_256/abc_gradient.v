@@ -1,4 +1,4 @@
-module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
@@ -138,7 +138,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$0$abc$centre centre(
+    top$lanes$0$feed$abc$centre centre(
         .read_address(centre$read_address),
         .read_clock(centre$read_clock),
         .read_data(centre$read_data),
@@ -147,7 +147,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(centre$write_data),
         .write_enable(centre$write_enable)
     );
-    top$lanes$0$abc$ring_xm ring_xm(
+    top$lanes$0$feed$abc$ring_xm ring_xm(
         .read_address(ring_xm$read_address),
         .read_clock(ring_xm$read_clock),
         .read_data(ring_xm$read_data),
@@ -156,7 +156,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xm$write_data),
         .write_enable(ring_xm$write_enable)
     );
-    top$lanes$0$abc$ring_ym ring_ym(
+    top$lanes$0$feed$abc$ring_ym ring_ym(
         .read_address(ring_ym$read_address),
         .read_clock(ring_ym$read_clock),
         .read_data(ring_ym$read_data),
@@ -165,7 +165,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_ym$write_data),
         .write_enable(ring_ym$write_enable)
     );
-    top$lanes$0$abc$ring_zm ring_zm(
+    top$lanes$0$feed$abc$ring_zm ring_zm(
         .read_address(ring_zm$read_address),
         .read_clock(ring_zm$read_clock),
         .read_data(ring_zm$read_data),
@@ -174,7 +174,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_zm$write_data),
         .write_enable(ring_zm$write_enable)
     );
-    top$lanes$0$abc$ring_xp ring_xp(
+    top$lanes$0$feed$abc$ring_xp ring_xp(
         .read_address(ring_xp$read_address),
         .read_clock(ring_xp$read_clock),
         .read_data(ring_xp$read_data),
@@ -183,7 +183,7 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xp$write_data),
         .write_enable(ring_xp$write_enable)
     );
-    top$lanes$0$abc$ring_yp ring_yp(
+    top$lanes$0$feed$abc$ring_yp ring_yp(
         .read_address(ring_yp$read_address),
         .read_clock(ring_yp$read_clock),
         .read_data(ring_yp$read_data),
@@ -192,42 +192,42 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_yp$write_data),
         .write_enable(ring_yp$write_enable)
     );
-    top$lanes$0$abc$hop_xm hop_xm(
+    top$lanes$0$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
         .q(hop_xm$q),
         .clock(hop_xm$clock)
     );
-    top$lanes$0$abc$hop_ym hop_ym(
+    top$lanes$0$feed$abc$hop_ym hop_ym(
         .d(hop_ym$d),
         .q(hop_ym$q),
         .clock(hop_ym$clock)
     );
-    top$lanes$0$abc$hop_zm hop_zm(
+    top$lanes$0$feed$abc$hop_zm hop_zm(
         .d(hop_zm$d),
         .q(hop_zm$q),
         .clock(hop_zm$clock)
     );
-    top$lanes$0$abc$hop_xp hop_xp(
+    top$lanes$0$feed$abc$hop_xp hop_xp(
         .d(hop_xp$d),
         .q(hop_xp$q),
         .clock(hop_xp$clock)
     );
-    top$lanes$0$abc$hop_yp hop_yp(
+    top$lanes$0$feed$abc$hop_yp hop_yp(
         .d(hop_yp$d),
         .q(hop_yp$q),
         .clock(hop_yp$clock)
     );
-    top$lanes$0$abc$hop_zp hop_zp(
+    top$lanes$0$feed$abc$hop_zp hop_zp(
         .d(hop_zp$d),
         .q(hop_zp$q),
         .clock(hop_zp$clock)
     );
-    top$lanes$0$abc$prev_xm prev_xm(
+    top$lanes$0$feed$abc$prev_xm prev_xm(
         .d(prev_xm$d),
         .q(prev_xm$q),
         .clock(prev_xm$clock)
     );
-    top$lanes$0$abc$prev_xp prev_xp(
+    top$lanes$0$feed$abc$prev_xp prev_xp(
         .d(prev_xp$d),
         .q(prev_xp$q),
         .clock(prev_xp$clock)
@@ -373,8 +373,8 @@ module top$lanes$0$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         end
     end
     
-endmodule // top$lanes$0$abc
-module top$lanes$0$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc
+module top$lanes$0$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -397,8 +397,8 @@ module top$lanes$0$abc$centre(read_address,read_clock,read_data,write_address,wr
           mem[write_address[15:0]] <= write_data;
        end
     end
-endmodule // top$lanes$0$abc$centre
-module top$lanes$0$abc$hop_xm(d,q,clock);
+endmodule // top$lanes$0$feed$abc$centre
+module top$lanes$0$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -414,8 +414,8 @@ module top$lanes$0$abc$hop_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_xm
-module top$lanes$0$abc$hop_xp(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_xm
+module top$lanes$0$feed$abc$hop_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -431,8 +431,8 @@ module top$lanes$0$abc$hop_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_xp
-module top$lanes$0$abc$hop_ym(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_xp
+module top$lanes$0$feed$abc$hop_ym(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -448,8 +448,8 @@ module top$lanes$0$abc$hop_ym(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_ym
-module top$lanes$0$abc$hop_yp(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_ym
+module top$lanes$0$feed$abc$hop_yp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -465,8 +465,8 @@ module top$lanes$0$abc$hop_yp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_yp
-module top$lanes$0$abc$hop_zm(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_yp
+module top$lanes$0$feed$abc$hop_zm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -482,8 +482,8 @@ module top$lanes$0$abc$hop_zm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_zm
-module top$lanes$0$abc$hop_zp(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_zm
+module top$lanes$0$feed$abc$hop_zp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -499,8 +499,8 @@ module top$lanes$0$abc$hop_zp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$hop_zp
-module top$lanes$0$abc$prev_xm(d,q,clock);
+endmodule // top$lanes$0$feed$abc$hop_zp
+module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -516,8 +516,8 @@ module top$lanes$0$abc$prev_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$prev_xm
-module top$lanes$0$abc$prev_xp(d,q,clock);
+endmodule // top$lanes$0$feed$abc$prev_xm
+module top$lanes$0$feed$abc$prev_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -533,8 +533,8 @@ module top$lanes$0$abc$prev_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$abc$prev_xp
-module top$lanes$0$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$prev_xp
+module top$lanes$0$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -557,8 +557,8 @@ module top$lanes$0$abc$ring_xm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$abc$ring_xm
-module top$lanes$0$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$ring_xm
+module top$lanes$0$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -581,8 +581,8 @@ module top$lanes$0$abc$ring_xp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$abc$ring_xp
-module top$lanes$0$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$ring_xp
+module top$lanes$0$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -605,8 +605,8 @@ module top$lanes$0$abc$ring_ym(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$abc$ring_ym
-module top$lanes$0$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$ring_ym
+module top$lanes$0$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -629,8 +629,8 @@ module top$lanes$0$abc$ring_yp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$abc$ring_yp
-module top$lanes$0$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$ring_yp
+module top$lanes$0$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -653,8 +653,8 @@ module top$lanes$0$abc$ring_zm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$abc$ring_zm
-module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+endmodule // top$lanes$0$feed$abc$ring_zm
+module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
@@ -794,7 +794,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$1$abc$centre centre(
+    top$lanes$1$feed$abc$centre centre(
         .read_address(centre$read_address),
         .read_clock(centre$read_clock),
         .read_data(centre$read_data),
@@ -803,7 +803,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(centre$write_data),
         .write_enable(centre$write_enable)
     );
-    top$lanes$1$abc$ring_xm ring_xm(
+    top$lanes$1$feed$abc$ring_xm ring_xm(
         .read_address(ring_xm$read_address),
         .read_clock(ring_xm$read_clock),
         .read_data(ring_xm$read_data),
@@ -812,7 +812,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xm$write_data),
         .write_enable(ring_xm$write_enable)
     );
-    top$lanes$1$abc$ring_ym ring_ym(
+    top$lanes$1$feed$abc$ring_ym ring_ym(
         .read_address(ring_ym$read_address),
         .read_clock(ring_ym$read_clock),
         .read_data(ring_ym$read_data),
@@ -821,7 +821,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_ym$write_data),
         .write_enable(ring_ym$write_enable)
     );
-    top$lanes$1$abc$ring_zm ring_zm(
+    top$lanes$1$feed$abc$ring_zm ring_zm(
         .read_address(ring_zm$read_address),
         .read_clock(ring_zm$read_clock),
         .read_data(ring_zm$read_data),
@@ -830,7 +830,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_zm$write_data),
         .write_enable(ring_zm$write_enable)
     );
-    top$lanes$1$abc$ring_xp ring_xp(
+    top$lanes$1$feed$abc$ring_xp ring_xp(
         .read_address(ring_xp$read_address),
         .read_clock(ring_xp$read_clock),
         .read_data(ring_xp$read_data),
@@ -839,7 +839,7 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xp$write_data),
         .write_enable(ring_xp$write_enable)
     );
-    top$lanes$1$abc$ring_yp ring_yp(
+    top$lanes$1$feed$abc$ring_yp ring_yp(
         .read_address(ring_yp$read_address),
         .read_clock(ring_yp$read_clock),
         .read_data(ring_yp$read_data),
@@ -848,42 +848,42 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_yp$write_data),
         .write_enable(ring_yp$write_enable)
     );
-    top$lanes$1$abc$hop_xm hop_xm(
+    top$lanes$1$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
         .q(hop_xm$q),
         .clock(hop_xm$clock)
     );
-    top$lanes$1$abc$hop_ym hop_ym(
+    top$lanes$1$feed$abc$hop_ym hop_ym(
         .d(hop_ym$d),
         .q(hop_ym$q),
         .clock(hop_ym$clock)
     );
-    top$lanes$1$abc$hop_zm hop_zm(
+    top$lanes$1$feed$abc$hop_zm hop_zm(
         .d(hop_zm$d),
         .q(hop_zm$q),
         .clock(hop_zm$clock)
     );
-    top$lanes$1$abc$hop_xp hop_xp(
+    top$lanes$1$feed$abc$hop_xp hop_xp(
         .d(hop_xp$d),
         .q(hop_xp$q),
         .clock(hop_xp$clock)
     );
-    top$lanes$1$abc$hop_yp hop_yp(
+    top$lanes$1$feed$abc$hop_yp hop_yp(
         .d(hop_yp$d),
         .q(hop_yp$q),
         .clock(hop_yp$clock)
     );
-    top$lanes$1$abc$hop_zp hop_zp(
+    top$lanes$1$feed$abc$hop_zp hop_zp(
         .d(hop_zp$d),
         .q(hop_zp$q),
         .clock(hop_zp$clock)
     );
-    top$lanes$1$abc$prev_xm prev_xm(
+    top$lanes$1$feed$abc$prev_xm prev_xm(
         .d(prev_xm$d),
         .q(prev_xm$q),
         .clock(prev_xm$clock)
     );
-    top$lanes$1$abc$prev_xp prev_xp(
+    top$lanes$1$feed$abc$prev_xp prev_xp(
         .d(prev_xp$d),
         .q(prev_xp$q),
         .clock(prev_xp$clock)
@@ -1029,8 +1029,8 @@ module top$lanes$1$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         end
     end
     
-endmodule // top$lanes$1$abc
-module top$lanes$1$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc
+module top$lanes$1$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1053,8 +1053,8 @@ module top$lanes$1$abc$centre(read_address,read_clock,read_data,write_address,wr
           mem[write_address[15:0]] <= write_data;
        end
     end
-endmodule // top$lanes$1$abc$centre
-module top$lanes$1$abc$hop_xm(d,q,clock);
+endmodule // top$lanes$1$feed$abc$centre
+module top$lanes$1$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1070,8 +1070,8 @@ module top$lanes$1$abc$hop_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_xm
-module top$lanes$1$abc$hop_xp(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_xm
+module top$lanes$1$feed$abc$hop_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1087,8 +1087,8 @@ module top$lanes$1$abc$hop_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_xp
-module top$lanes$1$abc$hop_ym(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_xp
+module top$lanes$1$feed$abc$hop_ym(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1104,8 +1104,8 @@ module top$lanes$1$abc$hop_ym(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_ym
-module top$lanes$1$abc$hop_yp(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_ym
+module top$lanes$1$feed$abc$hop_yp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1121,8 +1121,8 @@ module top$lanes$1$abc$hop_yp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_yp
-module top$lanes$1$abc$hop_zm(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_yp
+module top$lanes$1$feed$abc$hop_zm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1138,8 +1138,8 @@ module top$lanes$1$abc$hop_zm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_zm
-module top$lanes$1$abc$hop_zp(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_zm
+module top$lanes$1$feed$abc$hop_zp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1155,8 +1155,8 @@ module top$lanes$1$abc$hop_zp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$hop_zp
-module top$lanes$1$abc$prev_xm(d,q,clock);
+endmodule // top$lanes$1$feed$abc$hop_zp
+module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1172,8 +1172,8 @@ module top$lanes$1$abc$prev_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$prev_xm
-module top$lanes$1$abc$prev_xp(d,q,clock);
+endmodule // top$lanes$1$feed$abc$prev_xm
+module top$lanes$1$feed$abc$prev_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1189,8 +1189,8 @@ module top$lanes$1$abc$prev_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$abc$prev_xp
-module top$lanes$1$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$prev_xp
+module top$lanes$1$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1213,8 +1213,8 @@ module top$lanes$1$abc$ring_xm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$abc$ring_xm
-module top$lanes$1$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$ring_xm
+module top$lanes$1$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1237,8 +1237,8 @@ module top$lanes$1$abc$ring_xp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$abc$ring_xp
-module top$lanes$1$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$ring_xp
+module top$lanes$1$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1261,8 +1261,8 @@ module top$lanes$1$abc$ring_ym(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$abc$ring_ym
-module top$lanes$1$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$ring_ym
+module top$lanes$1$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1285,8 +1285,8 @@ module top$lanes$1$abc$ring_yp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$abc$ring_yp
-module top$lanes$1$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$ring_yp
+module top$lanes$1$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1309,8 +1309,8 @@ module top$lanes$1$abc$ring_zm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$abc$ring_zm
-module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+endmodule // top$lanes$1$feed$abc$ring_zm
+module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
@@ -1450,7 +1450,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$2$abc$centre centre(
+    top$lanes$2$feed$abc$centre centre(
         .read_address(centre$read_address),
         .read_clock(centre$read_clock),
         .read_data(centre$read_data),
@@ -1459,7 +1459,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(centre$write_data),
         .write_enable(centre$write_enable)
     );
-    top$lanes$2$abc$ring_xm ring_xm(
+    top$lanes$2$feed$abc$ring_xm ring_xm(
         .read_address(ring_xm$read_address),
         .read_clock(ring_xm$read_clock),
         .read_data(ring_xm$read_data),
@@ -1468,7 +1468,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xm$write_data),
         .write_enable(ring_xm$write_enable)
     );
-    top$lanes$2$abc$ring_ym ring_ym(
+    top$lanes$2$feed$abc$ring_ym ring_ym(
         .read_address(ring_ym$read_address),
         .read_clock(ring_ym$read_clock),
         .read_data(ring_ym$read_data),
@@ -1477,7 +1477,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_ym$write_data),
         .write_enable(ring_ym$write_enable)
     );
-    top$lanes$2$abc$ring_zm ring_zm(
+    top$lanes$2$feed$abc$ring_zm ring_zm(
         .read_address(ring_zm$read_address),
         .read_clock(ring_zm$read_clock),
         .read_data(ring_zm$read_data),
@@ -1486,7 +1486,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_zm$write_data),
         .write_enable(ring_zm$write_enable)
     );
-    top$lanes$2$abc$ring_xp ring_xp(
+    top$lanes$2$feed$abc$ring_xp ring_xp(
         .read_address(ring_xp$read_address),
         .read_clock(ring_xp$read_clock),
         .read_data(ring_xp$read_data),
@@ -1495,7 +1495,7 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xp$write_data),
         .write_enable(ring_xp$write_enable)
     );
-    top$lanes$2$abc$ring_yp ring_yp(
+    top$lanes$2$feed$abc$ring_yp ring_yp(
         .read_address(ring_yp$read_address),
         .read_clock(ring_yp$read_clock),
         .read_data(ring_yp$read_data),
@@ -1504,42 +1504,42 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_yp$write_data),
         .write_enable(ring_yp$write_enable)
     );
-    top$lanes$2$abc$hop_xm hop_xm(
+    top$lanes$2$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
         .q(hop_xm$q),
         .clock(hop_xm$clock)
     );
-    top$lanes$2$abc$hop_ym hop_ym(
+    top$lanes$2$feed$abc$hop_ym hop_ym(
         .d(hop_ym$d),
         .q(hop_ym$q),
         .clock(hop_ym$clock)
     );
-    top$lanes$2$abc$hop_zm hop_zm(
+    top$lanes$2$feed$abc$hop_zm hop_zm(
         .d(hop_zm$d),
         .q(hop_zm$q),
         .clock(hop_zm$clock)
     );
-    top$lanes$2$abc$hop_xp hop_xp(
+    top$lanes$2$feed$abc$hop_xp hop_xp(
         .d(hop_xp$d),
         .q(hop_xp$q),
         .clock(hop_xp$clock)
     );
-    top$lanes$2$abc$hop_yp hop_yp(
+    top$lanes$2$feed$abc$hop_yp hop_yp(
         .d(hop_yp$d),
         .q(hop_yp$q),
         .clock(hop_yp$clock)
     );
-    top$lanes$2$abc$hop_zp hop_zp(
+    top$lanes$2$feed$abc$hop_zp hop_zp(
         .d(hop_zp$d),
         .q(hop_zp$q),
         .clock(hop_zp$clock)
     );
-    top$lanes$2$abc$prev_xm prev_xm(
+    top$lanes$2$feed$abc$prev_xm prev_xm(
         .d(prev_xm$d),
         .q(prev_xm$q),
         .clock(prev_xm$clock)
     );
-    top$lanes$2$abc$prev_xp prev_xp(
+    top$lanes$2$feed$abc$prev_xp prev_xp(
         .d(prev_xp$d),
         .q(prev_xp$q),
         .clock(prev_xp$clock)
@@ -1685,8 +1685,8 @@ module top$lanes$2$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         end
     end
     
-endmodule // top$lanes$2$abc
-module top$lanes$2$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc
+module top$lanes$2$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1709,8 +1709,8 @@ module top$lanes$2$abc$centre(read_address,read_clock,read_data,write_address,wr
           mem[write_address[15:0]] <= write_data;
        end
     end
-endmodule // top$lanes$2$abc$centre
-module top$lanes$2$abc$hop_xm(d,q,clock);
+endmodule // top$lanes$2$feed$abc$centre
+module top$lanes$2$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1726,8 +1726,8 @@ module top$lanes$2$abc$hop_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_xm
-module top$lanes$2$abc$hop_xp(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_xm
+module top$lanes$2$feed$abc$hop_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1743,8 +1743,8 @@ module top$lanes$2$abc$hop_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_xp
-module top$lanes$2$abc$hop_ym(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_xp
+module top$lanes$2$feed$abc$hop_ym(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1760,8 +1760,8 @@ module top$lanes$2$abc$hop_ym(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_ym
-module top$lanes$2$abc$hop_yp(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_ym
+module top$lanes$2$feed$abc$hop_yp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1777,8 +1777,8 @@ module top$lanes$2$abc$hop_yp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_yp
-module top$lanes$2$abc$hop_zm(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_yp
+module top$lanes$2$feed$abc$hop_zm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1794,8 +1794,8 @@ module top$lanes$2$abc$hop_zm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_zm
-module top$lanes$2$abc$hop_zp(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_zm
+module top$lanes$2$feed$abc$hop_zp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1811,8 +1811,8 @@ module top$lanes$2$abc$hop_zp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$hop_zp
-module top$lanes$2$abc$prev_xm(d,q,clock);
+endmodule // top$lanes$2$feed$abc$hop_zp
+module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1828,8 +1828,8 @@ module top$lanes$2$abc$prev_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$prev_xm
-module top$lanes$2$abc$prev_xp(d,q,clock);
+endmodule // top$lanes$2$feed$abc$prev_xm
+module top$lanes$2$feed$abc$prev_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1845,8 +1845,8 @@ module top$lanes$2$abc$prev_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$abc$prev_xp
-module top$lanes$2$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$prev_xp
+module top$lanes$2$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1869,8 +1869,8 @@ module top$lanes$2$abc$ring_xm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$abc$ring_xm
-module top$lanes$2$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$ring_xm
+module top$lanes$2$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1893,8 +1893,8 @@ module top$lanes$2$abc$ring_xp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$abc$ring_xp
-module top$lanes$2$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$ring_xp
+module top$lanes$2$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1917,8 +1917,8 @@ module top$lanes$2$abc$ring_ym(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$abc$ring_ym
-module top$lanes$2$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$ring_ym
+module top$lanes$2$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1941,8 +1941,8 @@ module top$lanes$2$abc$ring_yp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$abc$ring_yp
-module top$lanes$2$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$ring_yp
+module top$lanes$2$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1965,8 +1965,8 @@ module top$lanes$2$abc$ring_zm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$abc$ring_zm
-module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+endmodule // top$lanes$2$feed$abc$ring_zm
+module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
@@ -2106,7 +2106,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$3$abc$centre centre(
+    top$lanes$3$feed$abc$centre centre(
         .read_address(centre$read_address),
         .read_clock(centre$read_clock),
         .read_data(centre$read_data),
@@ -2115,7 +2115,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(centre$write_data),
         .write_enable(centre$write_enable)
     );
-    top$lanes$3$abc$ring_xm ring_xm(
+    top$lanes$3$feed$abc$ring_xm ring_xm(
         .read_address(ring_xm$read_address),
         .read_clock(ring_xm$read_clock),
         .read_data(ring_xm$read_data),
@@ -2124,7 +2124,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xm$write_data),
         .write_enable(ring_xm$write_enable)
     );
-    top$lanes$3$abc$ring_ym ring_ym(
+    top$lanes$3$feed$abc$ring_ym ring_ym(
         .read_address(ring_ym$read_address),
         .read_clock(ring_ym$read_clock),
         .read_data(ring_ym$read_data),
@@ -2133,7 +2133,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_ym$write_data),
         .write_enable(ring_ym$write_enable)
     );
-    top$lanes$3$abc$ring_zm ring_zm(
+    top$lanes$3$feed$abc$ring_zm ring_zm(
         .read_address(ring_zm$read_address),
         .read_clock(ring_zm$read_clock),
         .read_data(ring_zm$read_data),
@@ -2142,7 +2142,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_zm$write_data),
         .write_enable(ring_zm$write_enable)
     );
-    top$lanes$3$abc$ring_xp ring_xp(
+    top$lanes$3$feed$abc$ring_xp ring_xp(
         .read_address(ring_xp$read_address),
         .read_clock(ring_xp$read_clock),
         .read_data(ring_xp$read_data),
@@ -2151,7 +2151,7 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_xp$write_data),
         .write_enable(ring_xp$write_enable)
     );
-    top$lanes$3$abc$ring_yp ring_yp(
+    top$lanes$3$feed$abc$ring_yp ring_yp(
         .read_address(ring_yp$read_address),
         .read_clock(ring_yp$read_clock),
         .read_data(ring_yp$read_data),
@@ -2160,42 +2160,42 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         .write_data(ring_yp$write_data),
         .write_enable(ring_yp$write_enable)
     );
-    top$lanes$3$abc$hop_xm hop_xm(
+    top$lanes$3$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
         .q(hop_xm$q),
         .clock(hop_xm$clock)
     );
-    top$lanes$3$abc$hop_ym hop_ym(
+    top$lanes$3$feed$abc$hop_ym hop_ym(
         .d(hop_ym$d),
         .q(hop_ym$q),
         .clock(hop_ym$clock)
     );
-    top$lanes$3$abc$hop_zm hop_zm(
+    top$lanes$3$feed$abc$hop_zm hop_zm(
         .d(hop_zm$d),
         .q(hop_zm$q),
         .clock(hop_zm$clock)
     );
-    top$lanes$3$abc$hop_xp hop_xp(
+    top$lanes$3$feed$abc$hop_xp hop_xp(
         .d(hop_xp$d),
         .q(hop_xp$q),
         .clock(hop_xp$clock)
     );
-    top$lanes$3$abc$hop_yp hop_yp(
+    top$lanes$3$feed$abc$hop_yp hop_yp(
         .d(hop_yp$d),
         .q(hop_yp$q),
         .clock(hop_yp$clock)
     );
-    top$lanes$3$abc$hop_zp hop_zp(
+    top$lanes$3$feed$abc$hop_zp hop_zp(
         .d(hop_zp$d),
         .q(hop_zp$q),
         .clock(hop_zp$clock)
     );
-    top$lanes$3$abc$prev_xm prev_xm(
+    top$lanes$3$feed$abc$prev_xm prev_xm(
         .d(prev_xm$d),
         .q(prev_xm$q),
         .clock(prev_xm$clock)
     );
-    top$lanes$3$abc$prev_xp prev_xp(
+    top$lanes$3$feed$abc$prev_xp prev_xp(
         .d(prev_xp$d),
         .q(prev_xp$q),
         .clock(prev_xp$clock)
@@ -2341,8 +2341,8 @@ module top$lanes$3$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_ne
         end
     end
     
-endmodule // top$lanes$3$abc
-module top$lanes$3$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc
+module top$lanes$3$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2365,8 +2365,8 @@ module top$lanes$3$abc$centre(read_address,read_clock,read_data,write_address,wr
           mem[write_address[15:0]] <= write_data;
        end
     end
-endmodule // top$lanes$3$abc$centre
-module top$lanes$3$abc$hop_xm(d,q,clock);
+endmodule // top$lanes$3$feed$abc$centre
+module top$lanes$3$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2382,8 +2382,8 @@ module top$lanes$3$abc$hop_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_xm
-module top$lanes$3$abc$hop_xp(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_xm
+module top$lanes$3$feed$abc$hop_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2399,8 +2399,8 @@ module top$lanes$3$abc$hop_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_xp
-module top$lanes$3$abc$hop_ym(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_xp
+module top$lanes$3$feed$abc$hop_ym(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2416,8 +2416,8 @@ module top$lanes$3$abc$hop_ym(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_ym
-module top$lanes$3$abc$hop_yp(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_ym
+module top$lanes$3$feed$abc$hop_yp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2433,8 +2433,8 @@ module top$lanes$3$abc$hop_yp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_yp
-module top$lanes$3$abc$hop_zm(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_yp
+module top$lanes$3$feed$abc$hop_zm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2450,8 +2450,8 @@ module top$lanes$3$abc$hop_zm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_zm
-module top$lanes$3$abc$hop_zp(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_zm
+module top$lanes$3$feed$abc$hop_zp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2467,8 +2467,8 @@ module top$lanes$3$abc$hop_zp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$hop_zp
-module top$lanes$3$abc$prev_xm(d,q,clock);
+endmodule // top$lanes$3$feed$abc$hop_zp
+module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2484,8 +2484,8 @@ module top$lanes$3$abc$prev_xm(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$prev_xm
-module top$lanes$3$abc$prev_xp(d,q,clock);
+endmodule // top$lanes$3$feed$abc$prev_xm
+module top$lanes$3$feed$abc$prev_xp(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2501,8 +2501,8 @@ module top$lanes$3$abc$prev_xp(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$abc$prev_xp
-module top$lanes$3$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$prev_xp
+module top$lanes$3$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2525,8 +2525,8 @@ module top$lanes$3$abc$ring_xm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$abc$ring_xm
-module top$lanes$3$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$ring_xm
+module top$lanes$3$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2549,8 +2549,8 @@ module top$lanes$3$abc$ring_xp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$abc$ring_xp
-module top$lanes$3$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$ring_xp
+module top$lanes$3$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2573,8 +2573,8 @@ module top$lanes$3$abc$ring_ym(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$abc$ring_ym
-module top$lanes$3$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$ring_ym
+module top$lanes$3$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2597,8 +2597,8 @@ module top$lanes$3$abc$ring_yp(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$abc$ring_yp
-module top$lanes$3$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$ring_yp
+module top$lanes$3$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2621,4 +2621,4 @@ module top$lanes$3$abc$ring_zm(read_address,read_clock,read_data,write_address,w
           mem[write_address[15:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$abc$ring_zm
+endmodule // top$lanes$3$feed$abc$ring_zm

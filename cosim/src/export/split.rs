@@ -49,8 +49,9 @@ pub fn stage_file(name: &str) -> &'static str {
         ["top"] => "top.v",
         ["top", "cfb", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
         ["top", "cfb", ..] => "cfb.v",
-        ["top", "lanes", _, "abc", ..] => "abc_gradient.v",
+        ["top", "lanes", _, "feed", "abc", ..] => "abc_gradient.v",
         ["top", "lanes", _, "shader", ..] => "shader.v",
+        ["top", "lanes", _, "taps", ..] => "tap_network.v",
         ["top", "lanes", _, "bilinear", ..] => "bilinear.v",
         ["top", "lanes", _, "compositor", ..] => "compositor.v",
         _ => "pipe_lane.v",
@@ -58,13 +59,14 @@ pub fn stage_file(name: &str) -> &'static str {
 }
 
 /// The stage files in the order a tool should read them (top first).
-pub const STAGE_FILES: [&str; 8] = [
+pub const STAGE_FILES: [&str; 9] = [
     "top.v",
     "cfb.v",
     "divider.v",
     "abc_gradient.v",
     "shader.v",
     "pipe_lane.v",
+    "tap_network.v",
     "bilinear.v",
     "compositor.v",
 ];
@@ -82,6 +84,7 @@ lint_off -rule DECLFILENAME -file "*divider.v"
 lint_off -rule DECLFILENAME -file "*abc_gradient.v"
 lint_off -rule DECLFILENAME -file "*shader.v"
 lint_off -rule DECLFILENAME -file "*pipe_lane.v"
+lint_off -rule DECLFILENAME -file "*tap_network.v"
 lint_off -rule DECLFILENAME -file "*bilinear.v"
 lint_off -rule DECLFILENAME -file "*compositor.v"
 // Each CFB lane's dataset z and memory address are observability outputs:
