@@ -10,6 +10,18 @@ use proptest::prelude::*;
 use scene::{Scene, Volume};
 use serde_json::{json, Value};
 
+/// The suite's bounded number of cases, or `PROPTEST_CASES`.
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES")
+            .ok()
+            .and_then(|c| c.parse().ok())
+            .unwrap_or(64),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
 /// A valid scene with every section present, small enough to render.
 fn base_scene() -> Value {
     json!({
@@ -123,11 +135,7 @@ fn mutate(mut v: Value, pick: usize, new: Value) -> String {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(64),
-        failure_persistence: None,
-        .. ProptestConfig::default()
-    })]
+    #![proptest_config(config())]
 
     #[test]
     fn mutated_scene_values_never_panic(pick in any::<usize>(), new in odd_value(), persp in any::<bool>()) {
@@ -161,11 +169,7 @@ fn trace_of(text: &str) -> Result<cosim::vcd_diff::Trace, cosim::vcd_diff::BadTr
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(64),
-        failure_persistence: None,
-        .. ProptestConfig::default()
-    })]
+    #![proptest_config(config())]
 
     #[test]
     fn mutated_vcd_text_never_panics(cut in any::<usize>(), at in any::<usize>(), junk in "[$#!\"01bxzZX \\n a-z]{0,12}") {
