@@ -191,6 +191,20 @@ fn a_failed_run_leaves_no_temporary_files() {
     assert_eq!(o.status.code(), Some(1));
     let left: Vec<_> = std::fs::read_dir(p.join("w")).unwrap().collect();
     assert!(left.is_empty(), "{left:?}");
+    // A directory as the VCD is refused before anything is simulated.
+    std::fs::create_dir(p.join("vcd_dir")).unwrap();
+    let s2 = p.join("s.json").display().to_string();
+    one_line_error(
+        &cube(&["sim", "--scene", &s2, "--vcd", "vcd_dir"], p),
+        "directory",
+    );
+    assert_eq!(std::fs::read_dir(p.join("vcd_dir")).unwrap().count(), 0);
+    let stray: Vec<_> = std::fs::read_dir(p)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".tmp"))
+        .collect();
+    assert!(stray.is_empty(), "{stray:?}");
     // synth refuses a directory for --json before it runs yosys.
     std::fs::create_dir(p.join("j")).unwrap();
     let t = Instant::now();

@@ -391,6 +391,27 @@ mod tests {
     }
 
     #[test]
+    fn the_farthest_accepted_eye_plans_without_overflow() {
+        // Eye and target are bounded to ±1e6 voxels; at 15 fractional bits
+        // the divider's S << frac must still fit i64 (tests run with
+        // overflow checks). A 1x1 image's one ray passes the target.
+        for eye in ["[8, 6, -1000000]", "[1000000, -1000000, 1000000]"] {
+            let t = format!(
+                r#"{{"volume": {{"builtin": "sphere", "dims": [16,12,10]}}, "view": {{"projection": "perspective", "eye": {eye}, "fov_deg": 1}},
+                    "image": [1, 1], "hardware": {{"frac_bits": 15}}}}"#
+            );
+            let s = Scene::from_json(&t, None).unwrap();
+            let p = Plan::new(&s, &s.camera().unwrap()).unwrap();
+            for sw in &p.sweeps {
+                let [nx, ny, _] = sw.dims;
+                for (x, y, z) in [(0, 0, sw.z0), (nx - 1, ny - 1, sw.z1)] {
+                    let _ = sw.control(x, y, z);
+                }
+            }
+        }
+    }
+
+    #[test]
     fn head_on_view_sweeps_z_back_to_front() {
         // The camera looks down -z: the eye is above the volume in w.
         let p = plan(r#"{"projection": "parallel"}"#);
