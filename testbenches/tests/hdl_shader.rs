@@ -31,7 +31,7 @@ fn vectors(voxel_bits: u32, seed: u64) -> Vec<Vector> {
     (0..N)
         .map(|i| {
             // The undivided central difference spans ±vmax; extremes first.
-            let mut component = |r: &mut Vectors| match i % 9 {
+            let component = |r: &mut Vectors| match i % 9 {
                 0 => 0,
                 1 => vmax as i32,
                 2 => -(vmax as i32),
