@@ -178,3 +178,41 @@ pub fn assert_vcd_parses(vcd: &std::path::Path) {
     );
     assert!(std::fs::metadata(&fst).unwrap().len() > 0);
 }
+
+/// The first sweep of a scene as the fault-injection tests take it: the
+/// golden shader and pipeline configuration, the emitted Verilog with
+/// on-chip memory preloaded, and the base plane the golden model renders.
+pub struct EmittedSweep {
+    pub sweep: Sweep,
+    pub golden: Shader,
+    pub config: hdl::pipeline::PipelineConfig,
+    pub verilog: String,
+    pub want: BasePlane,
+}
+
+pub fn emitted_sweep(scene: &Scene, vol: &Volume) -> EmittedSweep {
+    let cam = scene.camera().unwrap();
+    let p = scene.hardware.pipelines;
+    let sweep = golden_model::cube4l::plan::Plan::new(scene, &cam)
+        .unwrap()
+        .sweeps
+        .remove(0);
+    let golden = Shader::new(scene, &cam, &sweep);
+    let config = hdl::pipeline::PipelineConfig::new(&sweep, vol.dims, p, &golden).unwrap();
+    let mem = SkewedMemory::new(vol, p);
+    let verilog = cosim::export::pipeline_verilog(
+        &config,
+        &golden,
+        cosim::export::Memory::OnChip,
+        Some(&mem),
+    )
+    .unwrap();
+    let (want, _) = golden_model::cube4l::render_sweep(vol, &sweep, &golden);
+    EmittedSweep {
+        sweep,
+        golden,
+        config,
+        verilog,
+        want,
+    }
+}

@@ -13,16 +13,11 @@
 //! from it, so four-state X values match up. Run with `--nocapture` to print
 //! the campaign table that the README shows.
 
-use cosim::export::{pipeline_verilog, split_modules, Memory};
+use cosim::export::split_modules;
 use cosim::iverilog::run_icarus;
 use cosim::vcd_diff::{compare, Trace};
-use golden_model::cube4l::cfb::SkewedMemory;
-use golden_model::cube4l::plan::Plan;
-use golden_model::cube4l::render_sweep;
-use golden_model::cube4l::shader::Shader;
-use hdl::pipeline::PipelineConfig;
 use scene::volume::builtin;
-use testbenches::{require_tool, scene};
+use testbenches::{emitted_sweep, require_tool, scene, EmittedSweep};
 
 /// One edit: in module `module`, the first `from` becomes `to`.
 struct Fault {
@@ -89,13 +84,14 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "hardware": {"pipelines": 2}}"#,
     );
     let vol = builtin("sphere", s.volume.dims, 8).unwrap();
-    let cam = s.camera().unwrap();
-    let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
-    let golden = Shader::new(&s, &cam, sweep);
-    let config = PipelineConfig::new(sweep, vol.dims, 2, &golden).unwrap();
-    let mem = SkewedMemory::new(&vol, 2);
-    let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
-    let (want, _) = render_sweep(&vol, sweep, &golden);
+    let EmittedSweep {
+        sweep,
+        golden,
+        config,
+        verilog,
+        want,
+    } = emitted_sweep(&s, &vol);
+    let sweep = &sweep;
     let dir = tempfile::tempdir().unwrap();
     let run = |v: &str, name: &str| {
         let vcd = dir.path().join(format!("{name}.vcd"));

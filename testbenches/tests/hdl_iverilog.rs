@@ -45,33 +45,23 @@ fn emitted_verilog_matches_golden_model_under_icarus() {
 
 #[test]
 fn a_fault_in_the_emitted_verilog_is_caught() {
-    use cosim::export::{pipeline_verilog, Memory};
     use cosim::iverilog::run_icarus;
-    use golden_model::cube4l::cfb::SkewedMemory;
-    use golden_model::cube4l::plan::Plan;
-    use golden_model::cube4l::render_sweep;
-    use golden_model::cube4l::shader::Shader;
-    use hdl::pipeline::PipelineConfig;
+    use testbenches::emitted_sweep;
     require_tool("iverilog");
     let s = scene(
         r#"{"volume": {"builtin": "phantom", "dims": [10, 10, 8]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]},
             "mode": "composite", "shading": {"enabled": false}, "image": [16, 16], "hardware": {"pipelines": 2}}"#,
     );
     let vol = builtin("phantom", [10, 10, 8], 8).unwrap();
-    let cam = s.camera().unwrap();
-    let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
-    let golden = Shader::new(&s, &cam, sweep);
-    let config = PipelineConfig::new(sweep, vol.dims, 2, &golden).unwrap();
-    let mem = SkewedMemory::new(&vol, 2);
-    let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
-    let (want, _) = render_sweep(&vol, sweep, &golden);
+    let e = emitted_sweep(&s, &vol);
+    let (sweep, golden, verilog, want) = (&e.sweep, &e.golden, &e.verilog, &e.want);
     let differing = |v: &str| {
         let (base, _) = run_icarus(v, 2, sweep, golden.mode, None).unwrap();
         (0..want.pixels.len())
             .filter(|&i| base.pixels[i] != want.pixels[i] || base.faces[i] != want.faces[i])
             .count()
     };
-    assert_eq!(differing(&verilog), 0, "the untouched Verilog matches");
+    assert_eq!(differing(verilog), 0, "the untouched Verilog matches");
     // Make the bilinear unit's lerps truncate instead of rounding.
     let fault = "localparam  half = 64'h80;";
     assert!(

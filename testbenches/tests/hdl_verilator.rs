@@ -3,13 +3,8 @@
 //! rust-hdl simulation's, cycle for cycle on every common signal. A fault
 //! injected into a copy of the Verilog is caught by both comparisons.
 
-use cosim::export::{pipeline_verilog, Memory};
 use cosim::sim::{simulate, simulate_with, Engine};
 use cosim::vcd_diff::{compare, Trace};
-use golden_model::cube4l::plan::Plan;
-use golden_model::cube4l::render_sweep;
-use golden_model::cube4l::shader::Shader;
-use hdl::pipeline::PipelineConfig;
 use scene::volume::{builtin, Volume};
 use scene::Scene;
 use std::path::PathBuf;
@@ -102,19 +97,14 @@ fn verilator_trace_equals_rust_hdl_trace() {
 fn a_swapped_neighbour_link_is_caught_by_pixels_and_by_the_trace() {
     require_tool("verilator");
     let (s, vol) = sphere();
-    let cam = s.camera().unwrap();
-    let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
-    let golden = Shader::new(&s, &cam, sweep);
-    let config = PipelineConfig::new(sweep, vol.dims, 2, &golden).unwrap();
-    let mem = golden_model::cube4l::cfb::SkewedMemory::new(&vol, 2);
-    let verilog = pipeline_verilog(&config, &golden, Memory::OnChip, Some(&mem)).unwrap();
+    let e = testbenches::emitted_sweep(&s, &vol);
+    let (sweep, golden, verilog, want) = (&e.sweep, &e.golden, &e.verilog, &e.want);
     // Lane 1 takes its own x-gradient link instead of lane 0's.
     let link = "lanes$1$g_from_left_xm = lanes$0$g_to_right_xm;";
     assert!(verilog.contains(link), "fault site not found");
     let broken = verilog.replace(link, "lanes$1$g_from_left_xm = lanes$1$g_to_right_xm;");
     let vcd = vcd_dir().join("sphere_p2_verilator_fault.vcd");
     let r = cosim::verilator::run(&broken, 2, sweep, golden.mode, None, Some(&vcd)).unwrap();
-    let (want, _) = render_sweep(&vol, sweep, &golden);
     let differing = (0..want.pixels.len())
         .filter(|&i| r.base.pixels[i] != want.pixels[i])
         .count();
