@@ -57,8 +57,8 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     for i in 0..=(steps + 1e-9).floor() as u32 {
         let a = from + i as f64 * step;
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
-        let g = render_arch(&scene, &vol, Arch::Cube4l, ref_step)?;
-        let r = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
+        let g = render_arch(&scene, &vol, Arch::Cube4l, ref_step, None)?;
+        let r = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
         let m = compare(&g.image, &r.image);
         let cam = scene.camera()?;
         let plan = golden_model::cube4l::plan::Plan::new(&scene, &cam)?;

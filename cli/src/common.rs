@@ -15,7 +15,22 @@ use std::time::Instant;
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Arch {
     Cube4l,
+    /// The Cube-3 golden model (Sheared3D of the paper's §6).
+    Cube3,
+    /// Cube-3's discrete rays with exact tri-linear samples, in float.
+    True3d,
     Reference,
+}
+
+impl Arch {
+    pub fn name(self) -> &'static str {
+        match self {
+            Arch::Cube4l => "cube4l",
+            Arch::Cube3 => "cube3",
+            Arch::True3d => "true3d",
+            Arch::Reference => "reference",
+        }
+    }
 }
 
 pub fn check_step(step: f64) -> Result<()> {
@@ -46,7 +61,15 @@ pub struct Rendered {
     pub extra: Value,
 }
 
-pub fn render_arch(scene: &Scene, vol: &Volume, arch: Arch, ref_step: f64) -> Result<Rendered> {
+/// Render with `arch`; `gradient` overrides the scene's Cube-3 neighbourhood
+/// (Cube-3 and True3D).
+pub fn render_arch(
+    scene: &Scene,
+    vol: &Volume,
+    arch: Arch,
+    ref_step: f64,
+    gradient: Option<u32>,
+) -> Result<Rendered> {
     let t = Instant::now();
     match arch {
         Arch::Cube4l => {
@@ -64,6 +87,47 @@ pub fn render_arch(scene: &Scene, vol: &Volume, arch: Arch, ref_step: f64) -> Re
                     "saturations": s.saturations,
                     "voxels_per_second": s.voxels as f64 / seconds,
                 }),
+            })
+        }
+        Arch::Cube3 => {
+            let n = golden_model::cube3::neighbourhood(scene, gradient)?;
+            let (image, frame) = golden_model::cube3::render_image(scene, vol, n)?;
+            let seconds = t.elapsed().as_secs_f64();
+            let s = frame.stats;
+            let v = &frame.plan.views[0];
+            Ok(Rendered {
+                image,
+                seconds,
+                extra: json!({
+                    "gradient": n.count(),
+                    "base_planes": frame.plan.views.len(),
+                    "offset": v.offset,
+                    "weight_bits": frame.widths.weight_bits,
+                    "sample_bits": frame.widths.sample_bits,
+                    "gradient_bits": frame.widths.gradient_bits,
+                    "pipelines": frame.pipelines,
+                    "trilin_left_out": frame.plan.views.iter().all(|v| v.on_grid),
+                    "rays": s.rays,
+                    "samples": s.samples,
+                    "samples_interpolated": s.interpolated,
+                    "samples_shaded": s.shaded,
+                    "samples_terminated": s.terminated,
+                    "gradient_saturations": s.gradient_saturations,
+                    "composite_saturations": s.composite_saturations,
+                    "weight_clamps": s.weight_clamps,
+                    "samples_per_second": s.samples as f64 / seconds,
+                }),
+            })
+        }
+        Arch::True3d => {
+            let cam = scene.camera()?;
+            let n = gradient.unwrap_or(scene.cube3.gradient);
+            let image =
+                reference::true3d::render(scene, &cam, vol, n, reference::true3d::Interp::Exact)?;
+            Ok(Rendered {
+                image,
+                seconds: t.elapsed().as_secs_f64(),
+                extra: json!({ "gradient": n }),
             })
         }
         Arch::Reference => {

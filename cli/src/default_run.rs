@@ -17,8 +17,8 @@ const DEFAULT_SCENE: &str = include_str!("../../scenes/default.json");
 pub fn run() -> Result<()> {
     let scene = Scene::from_json(DEFAULT_SCENE, None).context("built-in default scene")?;
     let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;
-    let g = render_arch(&scene, &vol, Arch::Cube4l, reference::DEFAULT_STEP)?;
-    let r = render_arch(&scene, &vol, Arch::Reference, reference::DEFAULT_STEP)?;
+    let g = render_arch(&scene, &vol, Arch::Cube4l, reference::DEFAULT_STEP, None)?;
+    let r = render_arch(&scene, &vol, Arch::Reference, reference::DEFAULT_STEP, None)?;
     let m = compare(&g.image, &r.image);
     let out = Path::new("out");
     write_png(&out.join("default_cube4l.png"), &g.image)?;

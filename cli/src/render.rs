@@ -33,16 +33,13 @@ pub struct RenderArgs {
     /// Reference sample step along the ray, in voxel lengths.
     #[arg(long, default_value_t = reference::DEFAULT_STEP, allow_negative_numbers = true)]
     ref_step: f64,
+    /// Cube-3 and True3D: ABC gradient neighbourhood (6, 10, 12 or 26);
+    /// default: the scene's `cube3.gradient`, else 12.
+    #[arg(long)]
+    gradient: Option<u32>,
     /// Cube-4L only: write the base plane of the first sweep (PNG).
     #[arg(long)]
     base_plane: Option<PathBuf>,
-}
-
-fn arch_name(a: Arch) -> &'static str {
-    match a {
-        Arch::Cube4l => "cube4l",
-        Arch::Reference => "reference",
-    }
 }
 
 pub fn run(args: RenderArgs) -> Result<()> {
@@ -55,24 +52,28 @@ pub fn run(args: RenderArgs) -> Result<()> {
         diff,
         ref_step,
         base_plane,
+        gradient,
     } = args;
+    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d) {
+        bail!("--gradient needs --arch cube3 or true3d");
+    }
     let with_ref = compare_reference || diff.is_some();
     check_step(ref_step)?;
     if base_plane.is_some() && arch != Arch::Cube4l {
         bail!("--base-plane needs --arch cube4l");
     }
     let (scene, vol) = load(&scene_path)?;
-    let r = render_arch(&scene, &vol, arch, ref_step)?;
-    println!("{}: {:.3} s", arch_name(arch), r.seconds);
+    let r = render_arch(&scene, &vol, arch, ref_step, gradient)?;
+    println!("{}: {:.3} s", arch.name(), r.seconds);
     let mut report = json!({
-        "arch": arch_name(arch),
+        "arch": arch.name(),
         "scene": scene_path.display().to_string(),
         "seconds": r.seconds,
         "image": [r.image.width, r.image.height],
         "details": r.extra,
     });
     if with_ref {
-        let rr = render_arch(&scene, &vol, Arch::Reference, ref_step)?;
+        let rr = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
         let m = compare(&r.image, &rr.image);
         println!(
             "reference: {:.3} s; error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",

@@ -1,6 +1,9 @@
 //! The bit-accurate fixed-point golden models of the kit: the spec the RTL
 //! must match bit for bit. One folder per architecture:
 //!
+//! - [`cube3`]: the Cube-3 template-ray caster (Pfister, Wessels & Kaufman):
+//!   planning and templates, PRP fetch into 2-D buffers, sheared tri-linear
+//!   interpolation, ABC gradients (6, 10, 12, 26) and the Ray Projection Cone.
 //! - [`cube4l`]: the Cube-4L ray-slice-sweep pipeline (Bitter & Kaufman),
 //!   stage by stage: planning, CFB stream, ABC gradient, shader, compositor,
 //!   base plane.
@@ -11,6 +14,7 @@
 //! to final image). Scenes, volumes, the camera and the float formulas come
 //! from the `scene` crate.
 
+pub mod cube3;
 pub mod cube4l;
 pub mod fixed;
 pub mod lut;

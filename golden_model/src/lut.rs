@@ -5,7 +5,7 @@
 //! models go through these quantized tables; the float reference evaluates
 //! the formulas exactly.
 
-use crate::fixed::{max_of, quantize_unorm};
+use crate::fixed::{max_of, mul_unorm, quantize_unorm, sat_u};
 use glam::DVec3;
 use scene::lighting::phong;
 use scene::transfer::{correct_opacity, TransferFn};
@@ -174,6 +174,16 @@ impl ReflectanceMap {
         let m = (1i32 << NORMAL_BITS) - 1;
         ((qx & m) | (qy & m) << NORMAL_BITS | (qz & m) << (2 * NORMAL_BITS)) as usize
     }
+}
+
+/// Shade and weight one sample (both architectures): per RGB channel
+/// `shaded = sat(mul(c, d) + s)` (`sat`: clamp to `M = 2^rgba_bits - 1`), then
+/// `mul(shaded, alpha)`; emitted as `[r, g, b, alpha]`.
+pub fn shade_weight(rgb: [u32; 3], [d, s]: [u32; 2], alpha: u32, rgba_bits: u32) -> [u32; 4] {
+    let m = max_of(rgba_bits);
+    let shade = |c: u32| sat_u(mul_unorm(c, d, rgba_bits) as u64 + s as u64, m);
+    let w = |c: u32| mul_unorm(shade(c), alpha, rgba_bits);
+    [w(rgb[0]), w(rgb[1]), w(rgb[2]), alpha]
 }
 
 /// A flat reflectance: full diffuse, no specular (shading disabled).

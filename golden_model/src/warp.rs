@@ -1,4 +1,10 @@
-//! The 2-D warp (Cube-4L §2, "warped onto the image plane"): each final-image
+//! The 2-D warp (Cube-4L §2, "warped onto the image plane"; Cube-3 §2, "a 2-D
+//! warp of the base-plane projection produces the final image"). Shared:
+//! `warp_with` (one ray per image pixel), `bilinear` (resampling over the
+//! pixels a base plane has) and `to_rgb` (display range per mode). Cube-4L's
+//! warp follows here; Cube-3's base-plane map is in `cube3::warp`.
+//!
+//! Cube-4L: each final-image
 //! pixel's ray is followed to the face of the swept box through which it left
 //! the compositing buffer, and the base plane is resampled there bilinearly,
 //! using only pixels that came out of the same face. Parallel and
@@ -28,9 +34,15 @@ fn face_to_base(sweep: &Sweep, face: Face) -> DAffine2 {
     }
 }
 
-/// Bilinear sample of the base plane at `p`, over the pixels of `face` only
-/// (weights renormalised); `None` if no such pixel is among the four.
-fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
+/// Bilinear sample at `p` of a `width` x `height` base plane over the
+/// pixels `pixel(i)` gives (weights renormalised over them); `None` if none
+/// of the four is there.
+pub fn bilinear(
+    width: usize,
+    height: usize,
+    p: DVec2,
+    pixel: impl Fn(usize) -> Option<[u32; 4]>,
+) -> Option<[f64; 4]> {
     let (x0, y0) = (p.x.floor(), p.y.floor());
     let (fx, fy) = (p.x - x0, p.y - y0);
     let mut acc = [0.0; 4];
@@ -42,19 +54,47 @@ fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
         (1, 1, fx * fy),
     ] {
         let (cx, cy) = (x0 as i64 + ox, y0 as i64 + oy);
-        if w <= 0.0 || cx < 0 || cy < 0 || cx >= base.width as i64 || cy >= base.height as i64 {
+        if w <= 0.0 || cx < 0 || cy < 0 || cx >= width as i64 || cy >= height as i64 {
             continue;
         }
-        let i = cx as usize + base.width * cy as usize;
-        if base.faces[i] != face {
+        let Some(v) = pixel(cx as usize + width * cy as usize) else {
             continue;
-        }
-        for (a, v) in acc.iter_mut().zip(base.pixels[i]) {
+        };
+        for (a, v) in acc.iter_mut().zip(v) {
             *a += w * v as f64;
         }
         wsum += w;
     }
     (wsum > 1e-9).then(|| acc.map(|a| a / wsum))
+}
+
+/// Bilinear sample of a Cube-4L base plane over the pixels of `face` only.
+fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
+    bilinear(base.width, base.height, p, |i| {
+        (base.faces[i] == face).then(|| base.pixels[i])
+    })
+}
+
+/// The final image: each pixel's ray `(origin, direction)` in dataset space
+/// goes to `lookup`, which returns its display RGB or `None` (background).
+pub fn warp_with(
+    camera: &Camera,
+    lookup: impl Fn(DVec3, DVec3) -> Option<[f64; 3]> + Sync,
+) -> Image {
+    use rayon::prelude::*;
+    let mut img = Image::black(camera.width, camera.height);
+    img.rgb
+        .par_chunks_mut(camera.width as usize)
+        .enumerate()
+        .for_each(|(j, row)| {
+            for (i, px) in row.iter_mut().enumerate() {
+                let (o, d) = camera.ray(i as u32, j as u32);
+                if let Some(c) = lookup(o, d) {
+                    *px = c;
+                }
+            }
+        });
+    img
 }
 
 /// Convert a base-plane pixel value to display RGB for `mode`; `depth` is
@@ -70,58 +110,44 @@ pub fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: u
     rgb.map(|c| c.clamp(0.0, 1.0))
 }
 
-/// Warp a frame's base planes to the final image.
+/// Warp a Cube-4L frame's base planes to the final image.
 pub fn warp(frame: &Frame, camera: &Camera, mode: Mode, rgba_bits: u32, voxel_bits: u32) -> Image {
-    use rayon::prelude::*;
-    let mut img = Image::black(camera.width, camera.height);
-    img.rgb
-        .par_chunks_mut(camera.width as usize)
-        .enumerate()
-        .for_each(|(j, row)| {
-            for (i, px) in row.iter_mut().enumerate() {
-                let (o, d) = camera.ray(i as u32, j as u32);
-                let Some(si) = frame.plan.sweep_for(d) else {
-                    continue;
-                };
-                let sweep = &frame.plan.sweeps[si];
-                let m = sweep.to_pipeline();
-                let (po, pd) = (m * o, m * d);
-                let [nx, ny, _] = sweep.dims;
-                let lo = DVec3::new(0.0, 0.0, sweep.z0 as f64);
-                let hi = DVec3::new((nx - 1) as f64, (ny - 1) as f64, sweep.z1 as f64);
-                let Some((t0, t1, a0, a1)) = slab(po, pd, lo, hi) else {
-                    continue;
-                };
-                // The pixel left the buffer where the ray is highest in z.
-                let (t, axis) = if pd.z > 0.0 { (t1, a1) } else { (t0, a0) };
-                let q = po + pd * t;
-                let near_hi = |lo: f64, hi: f64, v: f64| (v - lo).abs() >= (v - hi).abs();
-                let (face, uv) = match axis {
-                    2 => (Face::Last, DVec2::new(q.x, q.y)),
-                    0 => (
-                        if near_hi(lo.x, hi.x, q.x) {
-                            Face::XPos
-                        } else {
-                            Face::XNeg
-                        },
-                        DVec2::new(q.y, q.z),
-                    ),
-                    _ => (
-                        if near_hi(lo.y, hi.y, q.y) {
-                            Face::YPos
-                        } else {
-                            Face::YNeg
-                        },
-                        DVec2::new(q.x, q.z),
-                    ),
-                };
-                let p = face_to_base(sweep, face).transform_point2(uv);
-                if let Some(v) = sample_face(&frame.bases[si], p, face) {
-                    *px = to_rgb(mode, v, rgba_bits, voxel_bits, sweep.dims[2]);
-                }
-            }
-        });
-    img
+    warp_with(camera, |o, d| {
+        let si = frame.plan.sweep_for(d)?;
+        let sweep = &frame.plan.sweeps[si];
+        let m = sweep.to_pipeline();
+        let (po, pd) = (m * o, m * d);
+        let [nx, ny, _] = sweep.dims;
+        let lo = DVec3::new(0.0, 0.0, sweep.z0 as f64);
+        let hi = DVec3::new((nx - 1) as f64, (ny - 1) as f64, sweep.z1 as f64);
+        let (t0, t1, a0, a1) = slab(po, pd, lo, hi)?;
+        // The pixel left the buffer where the ray is highest in z.
+        let (t, axis) = if pd.z > 0.0 { (t1, a1) } else { (t0, a0) };
+        let q = po + pd * t;
+        let near_hi = |lo: f64, hi: f64, v: f64| (v - lo).abs() >= (v - hi).abs();
+        let (face, uv) = match axis {
+            2 => (Face::Last, DVec2::new(q.x, q.y)),
+            0 => (
+                if near_hi(lo.x, hi.x, q.x) {
+                    Face::XPos
+                } else {
+                    Face::XNeg
+                },
+                DVec2::new(q.y, q.z),
+            ),
+            _ => (
+                if near_hi(lo.y, hi.y, q.y) {
+                    Face::YPos
+                } else {
+                    Face::YNeg
+                },
+                DVec2::new(q.x, q.z),
+            ),
+        };
+        let p = face_to_base(sweep, face).transform_point2(uv);
+        let v = sample_face(&frame.bases[si], p, face)?;
+        Some(to_rgb(mode, v, rgba_bits, voxel_bits, sweep.dims[2]))
+    })
 }
 
 #[cfg(test)]

@@ -10,6 +10,7 @@
 //! once their opacity exceeds `1 - 1e-4`.
 
 pub mod metrics;
+pub mod true3d;
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -276,4 +277,24 @@ pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, step: f64) -> Image {
             }
         });
     img
+}
+
+/// Whether the ray `o + t·d` (`t >= 0`) meets the box `[0, hi]`.
+pub(crate) fn hits_box(o: DVec3, d: DVec3, hi: DVec3) -> bool {
+    let (mut t0, mut t1) = (0.0f64, f64::INFINITY);
+    for a in 0..3 {
+        if d[a].abs() < 1e-300 {
+            if o[a] < 0.0 || o[a] > hi[a] {
+                return false;
+            }
+            continue;
+        }
+        let (mut n0, mut n1) = (-o[a] / d[a], (hi[a] - o[a]) / d[a]);
+        if n0 > n1 {
+            std::mem::swap(&mut n0, &mut n1);
+        }
+        t0 = t0.max(n0);
+        t1 = t1.min(n1);
+    }
+    t0 <= t1
 }

@@ -19,5 +19,7 @@ pub mod volume;
 pub use camera::{Camera, Projection, ViewSpec};
 pub use error::{CubeError, Result};
 pub use image::Image;
-pub use spec::{Hardware, Mode, Scene, Shading, Transfer, MAX_DIM, MAX_IMAGE, MAX_VOXELS};
+pub use spec::{
+    Cube3Spec, Hardware, Mode, Scene, Shading, Transfer, MAX_DIM, MAX_IMAGE, MAX_VOXELS,
+};
 pub use volume::{Crop, RawType, Volume, VolumeSpec, BUILTINS};

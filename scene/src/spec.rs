@@ -32,6 +32,78 @@ pub struct Scene {
     pub image: [u32; 2],
     #[serde(default)]
     pub hardware: Hardware,
+    /// Cube-3 only: gradient neighbourhood and datapath widths.
+    #[serde(default)]
+    pub cube3: Cube3Spec,
+}
+
+/// Cube-3 parameters. Its interpolation weights, templates and sample offset
+/// take `hardware.frac_bits` fractional bits; its RPC has `hardware.pipelines`
+/// leaves; `hardware.voxel_bits` and `hardware.rgba_bits` are shared.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields)]
+pub struct Cube3Spec {
+    /// ABC gradient neighbourhood: 6, 10, 12 or 26 (§4).
+    #[serde(default = "default_neighbourhood")]
+    pub gradient: u32,
+    /// Width of an interpolated sample: `voxel_bits` integer bits plus
+    /// `sample_bits - voxel_bits` fractional bits. Default `voxel_bits + 4`.
+    pub sample_bits: Option<u32>,
+    /// Width of a signed gradient component (saturated). Default
+    /// `sample_bits + 3`: a central difference needs `sample_bits + 1`, and
+    /// the shear correction of the 6-, 10- and 26-neighbourhoods adds up to
+    /// two ray-direction terms.
+    pub gradient_bits: Option<u32>,
+}
+
+fn default_neighbourhood() -> u32 {
+    12
+}
+
+impl Default for Cube3Spec {
+    fn default() -> Self {
+        Cube3Spec {
+            gradient: 12,
+            sample_bits: None,
+            gradient_bits: None,
+        }
+    }
+}
+
+impl Cube3Spec {
+    /// Sample width for `voxel_bits`-bit voxels.
+    pub fn sample_bits(&self, voxel_bits: u32) -> u32 {
+        self.sample_bits.unwrap_or(voxel_bits + 4)
+    }
+
+    /// Gradient component width for `voxel_bits`-bit voxels.
+    pub fn gradient_bits(&self, voxel_bits: u32) -> u32 {
+        self.gradient_bits
+            .unwrap_or(self.sample_bits(voxel_bits) + 3)
+    }
+
+    fn validate(&self, voxel_bits: u32) -> Result<()> {
+        if ![6, 10, 12, 26].contains(&self.gradient) {
+            return Err(CubeError::Hardware(format!(
+                "cube3.gradient {} unsupported (6, 10, 12 or 26)",
+                self.gradient
+            )));
+        }
+        let sb = self.sample_bits(voxel_bits);
+        if !(voxel_bits..=voxel_bits + 8).contains(&sb) {
+            return Err(CubeError::Hardware(format!(
+                "cube3.sample_bits {sb} unsupported (voxel_bits {voxel_bits} to voxel_bits + 8)"
+            )));
+        }
+        let gb = self.gradient_bits(voxel_bits);
+        if !(sb + 1..=31).contains(&gb) {
+            return Err(CubeError::Hardware(format!(
+                "cube3.gradient_bits {gb} unsupported (sample_bits + 1 = {} to 31)",
+                sb + 1
+            )));
+        }
+        Ok(())
+    }
 }
 
 fn default_image() -> [u32; 2] {
@@ -259,6 +331,7 @@ impl Scene {
                 hw.pipelines
             )));
         }
+        self.cube3.validate(hw.voxel_bits)?;
         let d = self.volume.dims;
         if d.iter().any(|n| !(2..=MAX_DIM).contains(n)) {
             return Err(CubeError::Volume(format!(

@@ -226,7 +226,9 @@ pub struct Plan {
     slots: [[Option<usize>; 2]; 3],
 }
 
-fn dominant_axis(d: DVec3) -> usize {
+/// The axis most parallel to `d`: the base plane of a view is the face
+/// perpendicular to it (Cube-4L §3.1, Cube-3 §2).
+pub fn dominant_axis(d: DVec3) -> usize {
     let a = d.abs();
     // Ties (exactly 45 degrees) go to the later axis so the choice is stable.
     if a.z >= a.x && a.z >= a.y {

@@ -11,8 +11,8 @@
 
 use super::gradient::{magnitude, quantize_normal};
 use super::plan::{Control, Sweep};
-use crate::fixed::{max_of, mul_unorm, quantize_unorm, sat_u};
-use crate::lut::{unlit, ColourLut, OpacityLut, ReflectanceMap};
+use crate::fixed::{max_of, quantize_unorm};
+use crate::lut::{shade_weight, unlit, ColourLut, OpacityLut, ReflectanceMap};
 use scene::transfer::TransferFn;
 use scene::{Camera, Mode, Scene};
 
@@ -137,17 +137,15 @@ impl Shader {
                     };
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(v);
-                let [d, s] = match &self.reflectance {
+                let ds = match &self.reflectance {
                     Some(r) => {
                         let [qx, qy, qz] = quantize_normal(g);
                         r.table[ReflectanceMap::index(qx, qy, qz)]
                     }
                     None => unlit(self.rgba_bits),
                 };
-                let shade = |c: u32| sat_u(mul_unorm(c, d, self.rgba_bits) as u64 + s as u64, m);
-                let w = |c: u32| mul_unorm(shade(c), alpha, self.rgba_bits);
                 Sample {
-                    value: [w(rgb[0]), w(rgb[1]), w(rgb[2]), alpha],
+                    value: shade_weight(rgb, ds, alpha, self.rgba_bits),
                     valid: true,
                 }
             }

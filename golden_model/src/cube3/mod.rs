@@ -1,0 +1,344 @@
+//! The Cube-3 golden model (Pfister, Wessels & Kaufman, "Sheared
+//! interpolation and gradient estimation for real-time volume rendering"):
+//! template rays cast from a base plane (§2), their Projection Ray Planes
+//! fetched as beams and sheared or de-fanned into 2-D skewed buffers (`prp`),
+//! sheared tri-linear interpolation (`trilin`, §3), ABC gradients over the
+//! above, current and below sample planes (`abc`, §4), shading and
+//! classification by LUT (`shade`), and the Ray Projection Cone (`rpc`, §5).
+//! The base planes are warped to the image by the kit's warp.
+//!
+//! Dataflow for one base plane, scanline by scanline as the hardware does:
+//! PRP `v + 1` is fetched while planes `v` and `v + 1` are interpolated, so
+//! three 2-D buffers rotate; the sample plane of `v` is shaded once the
+//! planes of `v - 1` and `v + 1` exist. Scanlines are independent given the
+//! volume, so the software runs chunks of them on all cores (the result
+//! does not depend on the split).
+//!
+//! Software shortcuts that cannot change a bit: samples whose opacity row is
+//! zero skip the gradient, and a ray whose accumulated α is full stops
+//! (`rpc`); where samples sit on the grid the interpolation is skipped
+//! (`trilin`).
+
+pub mod abc;
+pub mod plan;
+pub mod prp;
+pub mod rpc;
+pub mod shade;
+pub mod trilin;
+
+use abc::{gradient, Planes, RayCoeffs};
+use plan::{sample_pos, Neighbourhood, Plan, View, Widths};
+use rayon::prelude::*;
+use rpc::{identity, node, pixel, tree};
+use scene::volume::Volume;
+use scene::{Camera, CubeError, Image, Mode, Result, Scene};
+use shade::Shader;
+use trilin::SamplePlane;
+
+/// The base-plane image of one view: pixel `(u, v)` for `u` in
+/// `u0..u0 + width`; `cast` is false where no ray was cast.
+#[derive(Debug, Clone)]
+pub struct BasePlane {
+    pub u0: i32,
+    pub v0: i32,
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<[u32; 4]>,
+    pub cast: Vec<bool>,
+}
+
+/// Work counters of a frame.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub rays: u64,
+    /// Samples taken (interpolated or on the grid).
+    pub samples: u64,
+    /// Samples through the TRILIN unit (0 when the samples sit on the grid).
+    pub interpolated: u64,
+    /// Samples through gradient and shading.
+    pub shaded: u64,
+    /// Samples skipped by early ray termination.
+    pub terminated: u64,
+    pub gradient_saturations: u64,
+    pub composite_saturations: u64,
+    /// Template weights clamped to [0, 1] (perspective frusta).
+    pub weight_clamps: u64,
+}
+
+impl std::ops::Add for Stats {
+    type Output = Stats;
+    fn add(self, o: Stats) -> Stats {
+        Stats {
+            rays: self.rays + o.rays,
+            samples: self.samples + o.samples,
+            interpolated: self.interpolated + o.interpolated,
+            shaded: self.shaded + o.shaded,
+            terminated: self.terminated + o.terminated,
+            gradient_saturations: self.gradient_saturations + o.gradient_saturations,
+            composite_saturations: self.composite_saturations + o.composite_saturations,
+            weight_clamps: self.weight_clamps + o.weight_clamps,
+        }
+    }
+}
+
+/// A whole Cube-3 frame.
+#[derive(Debug, Clone)]
+pub struct Frame {
+    pub plan: Plan,
+    pub bases: Vec<BasePlane>,
+    pub stats: Stats,
+    pub widths: Widths,
+    pub neighbourhood: Neighbourhood,
+    pub pipelines: usize,
+}
+
+/// The scene's gradient neighbourhood, or `n` when given.
+pub fn neighbourhood(scene: &Scene, n: Option<u32>) -> Result<Neighbourhood> {
+    let c = n.unwrap_or(scene.cube3.gradient);
+    Neighbourhood::from_count(c).ok_or_else(|| {
+        CubeError::Hardware(format!("cube3.gradient {c} unsupported (6, 10, 12 or 26)"))
+    })
+}
+
+/// Scanlines rendered per parallel task.
+const CHUNK: i32 = 8;
+
+/// Render one base plane.
+pub fn render_view(
+    vol: &Volume,
+    view: &View,
+    shader: &Shader,
+    n: Neighbourhood,
+    p: usize,
+) -> (BasePlane, Stats) {
+    let [w, h] = view.base_dims();
+    let (u0, v0) = (view.u[0], view.v[0]);
+    let chunks: Vec<i32> = (view.v[0]..=view.v[1]).step_by(CHUNK as usize).collect();
+    let rows: Vec<(Vec<[u32; 4]>, Vec<bool>, Stats)> = chunks
+        .par_iter()
+        .map(|&va| {
+            let vb = (va + CHUNK - 1).min(view.v[1]);
+            render_rows(vol, view, shader, n, p, va, vb)
+        })
+        .collect();
+    let mut base = BasePlane {
+        u0,
+        v0,
+        width: w,
+        height: h,
+        pixels: Vec::with_capacity(w * h),
+        cast: Vec::with_capacity(w * h),
+    };
+    let mut stats = Stats {
+        weight_clamps: view.weight_clamps,
+        ..Stats::default()
+    };
+    for (px, cast, s) in rows {
+        base.pixels.extend(px);
+        base.cast.extend(cast);
+        stats = stats + s;
+    }
+    (base, stats)
+}
+
+/// Scanlines `va..=vb`: PRPs `va - 1 ..= vb + 2`, sample planes
+/// `va - 1 ..= vb + 1` in a window of three.
+fn render_rows(
+    vol: &Volume,
+    view: &View,
+    shader: &Shader,
+    n: Neighbourhood,
+    p: usize,
+    va: i32,
+    vb: i32,
+) -> (Vec<[u32; 4]>, Vec<bool>, Stats) {
+    let f = shader.widths.sample_frac();
+    let (pu0, prays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
+    let fetch = |v: i32| prp::fetch(vol, view, v, pu0, prays);
+    let nk = view.dims[2];
+    let grad = shader.needs_gradient;
+    let zero = |v: i32| SamplePlane::zero(v, pu0, prays - 1, nk);
+    let mut planes_made = 0u64;
+    let mut interp = |v: i32, cur: &prp::Prp, next: &prp::Prp| {
+        planes_made += 1;
+        trilin::plane(view, v, cur, next, f)
+    };
+    let mut stats = Stats::default();
+    let mut pixels = Vec::new();
+    let mut cast = Vec::new();
+    let mut cur = fetch(va - 1);
+    let mut next = fetch(va);
+    let mut above = if grad {
+        interp(va - 1, &cur, &next)
+    } else {
+        zero(va - 1)
+    };
+    cur = next;
+    next = fetch(va + 1);
+    let mut current = interp(va, &cur, &next);
+    for v in va..=vb {
+        let below = if grad || v < vb {
+            cur = next;
+            next = fetch(v + 2);
+            interp(v + 1, &cur, &next)
+        } else {
+            zero(v + 1)
+        };
+        let window = Planes {
+            above: &above,
+            current: &current,
+            below: &below,
+        };
+        for u in view.u[0]..=view.u[1] {
+            let casts = view.casts(u, v);
+            cast.push(casts);
+            if !casts {
+                pixels.push([0; 4]);
+                continue;
+            }
+            stats.rays += 1;
+            let (px, s) = cast_ray(view, shader, n, p, &window, u, v);
+            pixels.push(px);
+            stats = stats + s;
+        }
+        above = current;
+        current = below;
+    }
+    if !view.on_grid {
+        stats.interpolated = planes_made * (prays as u64 - 1) * nk as u64;
+    }
+    (pixels, cast, stats)
+}
+
+/// One ray through the RPC: its base-plane pixel and counters.
+fn cast_ray(
+    view: &View,
+    shader: &Shader,
+    n: Neighbourhood,
+    p: usize,
+    planes: &Planes,
+    u: i32,
+    v: i32,
+) -> ([u32; 4], Stats) {
+    let w = view.weight_bits;
+    let [nx, ny, nk] = view.dims;
+    let (dx, dy) = (view.x.d(u), view.y.d(v));
+    let coeffs = shader.needs_gradient.then(|| RayCoeffs::new(dx, dy, w));
+    let mode = shader.mode;
+    let rgba = shader.widths.rgba_bits;
+    let m = crate::fixed::max_of(rgba);
+    let within = |q: i64, lo: i64, hi: i64| q >= lo << w && q <= hi << w;
+    let mut st = Stats::default();
+    let mut acc = identity(mode);
+    let mut leaves = vec![identity(mode); p];
+    for seg in 0..nk.div_ceil(p) {
+        if matches!(mode, Mode::Composite | Mode::FirstOpaque) && acc.value[3] == m {
+            st.terminated += (nk - seg * p) as u64;
+            break;
+        }
+        for (i, leaf) in leaves.iter_mut().enumerate() {
+            let k = seg * p + i;
+            if k >= nk {
+                *leaf = identity(mode);
+                continue;
+            }
+            st.samples += 1;
+            let xq = sample_pos(u, k, dx, w);
+            let yq = sample_pos(v, k, dy, w);
+            let zq = ((k as i64) << w) + view.offset as i64;
+            let (nx, ny, nk) = (nx as i64, ny as i64, nk as i64);
+            let inside = within(xq, 0, nx - 1) && within(yq, 0, ny - 1) && within(zq, 0, nk - 1);
+            let inner = within(xq, 1, nx - 2) && within(yq, 1, ny - 2) && within(zq, 1, nk - 2);
+            let s = planes.current.at(u, k);
+            let mut shaded = false;
+            *leaf = shader.leaf(s, inside, inner, || {
+                shaded = true;
+                let (g, sat) = gradient(
+                    n,
+                    planes,
+                    u,
+                    k,
+                    coeffs.as_ref().unwrap(),
+                    w,
+                    shader.widths.gradient_bits,
+                );
+                st.gradient_saturations += sat as u64;
+                g
+            });
+            st.shaded += shaded as u64;
+        }
+        let (root, c1) = tree(mode, &leaves, rgba);
+        let (a, c2) = node(mode, acc, root, rgba);
+        acc = a;
+        st.composite_saturations += c1 + c2 as u64;
+    }
+    (pixel(mode, acc, shader.widths.voxel_bits), st)
+}
+
+/// Render every base plane of the view.
+pub fn render(scene: &Scene, camera: &Camera, vol: &Volume, n: Neighbourhood) -> Result<Frame> {
+    let plan = Plan::new(scene, camera)?;
+    let p = scene.hardware.pipelines;
+    let mut bases = Vec::new();
+    let mut stats = Stats::default();
+    for view in &plan.views {
+        let shader = Shader::new(scene, camera, view);
+        let (b, s) = render_view(vol, view, &shader, n, p);
+        bases.push(b);
+        stats = stats + s;
+    }
+    Ok(Frame {
+        plan,
+        bases,
+        stats,
+        widths: Widths::of(scene),
+        neighbourhood: n,
+        pipelines: p,
+    })
+}
+
+/// Render a scene with the Cube-3 golden model to the final image.
+pub fn render_image(scene: &Scene, vol: &Volume, n: Neighbourhood) -> Result<(Image, Frame)> {
+    let camera = scene.camera()?;
+    let frame = render(scene, &camera, vol, n)?;
+    let img = warp(&frame, &camera, scene.mode);
+    Ok((img, frame))
+}
+
+/// Warp the base planes to the image: each pixel's ray meets its base
+/// plane's start plane (`k = O`) at continuous `(x, y)`, where the cast
+/// pixels are resampled bilinearly (`warp::bilinear`).
+pub fn warp(frame: &Frame, camera: &Camera, mode: Mode) -> Image {
+    let wd = frame.widths;
+    let dims = {
+        let v = &frame.plan.views[0];
+        let mut d = [0usize; 3];
+        for i in 0..3 {
+            d[v.perm[i]] = v.dims[i];
+        }
+        d
+    };
+    let hi = glam::DVec3::from_array(dims.map(|n| (n - 1) as f64));
+    crate::warp::warp_with(camera, |o, d| {
+        crate::cube4l::plan::slab(o, d, glam::DVec3::ZERO, hi)?;
+        let vi = frame.plan.view_for(d)?;
+        let (view, base) = (&frame.plan.views[vi], &frame.bases[vi]);
+        let (po, pd) = (view.point(o), view.to_traversal() * d);
+        if pd.z <= 0.0 {
+            return None;
+        }
+        let z = view.offset as f64 / (1u64 << view.weight_bits) as f64;
+        let q = po + pd * ((z - po.z) / pd.z);
+        let at = glam::DVec2::new(q.x - base.u0 as f64, q.y - base.v0 as f64);
+        let v = crate::warp::bilinear(base.width, base.height, at, |i| {
+            base.cast[i].then(|| base.pixels[i])
+        })?;
+        Some(crate::warp::to_rgb(
+            mode,
+            v,
+            wd.rgba_bits,
+            wd.voxel_bits,
+            view.dims[2],
+        ))
+    })
+}
