@@ -1,6 +1,8 @@
-//! `cube angles`: error and run time of the golden model against the
+//! `cube angles`: error and run time of an architecture against the
 //! reference while a parallel view turns about the vertical axis (the Cube-3
-//! §6 experiment), one row per angle.
+//! §6 experiment, Fig. 14), one row per angle. For `--arch cube3` each row
+//! also gives the error against True3D (same rays and neighbourhood, exact
+//! tri-linear samples in float).
 
 use crate::common::{check_step, error_json, load, render_arch, Arch};
 use crate::output::write_json;
@@ -20,6 +22,12 @@ pub struct AnglesArgs {
     ref_step: f64,
     #[arg(long)]
     json: Option<PathBuf>,
+    /// Architecture to compare with the reference.
+    #[arg(long, value_enum, default_value = "cube4l")]
+    arch: Arch,
+    /// Cube-3 and True3D: gradient neighbourhood (default: the scene's).
+    #[arg(long)]
+    gradient: Option<u32>,
 }
 
 pub fn run(args: AnglesArgs) -> Result<()> {
@@ -28,7 +36,15 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         range,
         ref_step,
         json: json_path,
+        arch,
+        gradient,
     } = args;
+    if arch == Arch::Reference {
+        bail!("--arch reference would compare the reference with itself");
+    }
+    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat) {
+        bail!("--gradient needs --arch cube3, true3d or sheared-float");
+    }
     check_step(ref_step)?;
     let [from, to, step] = [range[0], range[1], range[2]];
     // Angles are from + i * step, so each is exact to one rounding and the
@@ -50,24 +66,42 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         bail!("angles turns a parallel view; the scene is perspective");
     }
     let mut rows = Vec::new();
+    let with_true3d = arch == Arch::Cube3;
     println!(
-        "{:>7} {:>10} {:>10} {:>10} {:>9} {:>7}",
-        "angle", "cube4l s", "ref s", "rel.eucl%", "PSNR dB", "sweep"
+        "{:>7} {:>10} {:>10} {:>10} {:>9} {:>7} {:>12}",
+        "angle",
+        format!("{} s", arch.name()),
+        "ref s",
+        "rel.eucl%",
+        "PSNR dB",
+        "major",
+        if with_true3d { "vs true3d %" } else { "" }
     );
     for i in 0..=(steps + 1e-9).floor() as u32 {
         let a = from + i as f64 * step;
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
-        let g = render_arch(&scene, &vol, Arch::Cube4l, ref_step, None)?;
+        let g = render_arch(&scene, &vol, arch, ref_step, gradient)?;
         let r = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
         let m = compare(&g.image, &r.image);
         let cam = scene.camera()?;
         let plan = golden_model::cube4l::plan::Plan::new(&scene, &cam)?;
         let axis = ["u", "v", "w"][plan.sweeps[0].axis()];
+        let mut row = json!({"angle": a, "seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m), "details": g.extra});
+        let mut t3 = String::new();
+        if with_true3d {
+            let t = render_arch(&scene, &vol, Arch::True3d, ref_step, gradient)?;
+            let mt = compare(&g.image, &t.image);
+            t3 = format!("{:.3}", mt.rel_euclid_pct);
+            row["error_vs_true3d"] = error_json(&mt);
+            row["true3d_seconds"] = json!(t.seconds);
+            let mr = compare(&t.image, &r.image);
+            row["true3d_error"] = error_json(&mr);
+        }
         println!(
-            "{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7}",
-            g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis
+            "{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7} {:>12}",
+            g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis, t3
         );
-        rows.push(json!({"angle": a, "cube4l_seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m)}));
+        rows.push(row);
     }
     let worst = rows
         .iter()
@@ -77,7 +111,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     if let Some(j) = json_path {
         write_json(
             &j,
-            &json!({"scene": scene_path.display().to_string(), "rows": rows, "max_rel_euclid_pct": worst}),
+            &json!({"scene": scene_path.display().to_string(), "arch": arch.name(), "rows": rows, "max_rel_euclid_pct": worst}),
         )?;
     }
     Ok(())

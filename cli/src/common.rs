@@ -19,6 +19,9 @@ pub enum Arch {
     Cube3,
     /// Cube-3's discrete rays with exact tri-linear samples, in float.
     True3d,
+    /// Cube-3's sheared tri-linear interpolation in float: the golden model
+    /// without quantization (separates interpolation from quantization).
+    ShearedFloat,
     Reference,
 }
 
@@ -28,6 +31,7 @@ impl Arch {
             Arch::Cube4l => "cube4l",
             Arch::Cube3 => "cube3",
             Arch::True3d => "true3d",
+            Arch::ShearedFloat => "sheared-float",
             Arch::Reference => "reference",
         }
     }
@@ -119,11 +123,15 @@ pub fn render_arch(
                 }),
             })
         }
-        Arch::True3d => {
+        Arch::True3d | Arch::ShearedFloat => {
             let cam = scene.camera()?;
             let n = gradient.unwrap_or(scene.cube3.gradient);
-            let image =
-                reference::true3d::render(scene, &cam, vol, n, reference::true3d::Interp::Exact)?;
+            let interp = if arch == Arch::True3d {
+                reference::true3d::Interp::Exact
+            } else {
+                reference::true3d::Interp::Sheared
+            };
+            let image = reference::true3d::render(scene, &cam, vol, n, interp)?;
             Ok(Rendered {
                 image,
                 seconds: t.elapsed().as_secs_f64(),

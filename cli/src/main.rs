@@ -7,6 +7,7 @@
 mod angles;
 mod common;
 mod default_run;
+mod gradients;
 mod output;
 mod render;
 mod scenes;
@@ -21,7 +22,7 @@ use clap::{Parser, Subcommand};
 #[command(
     name = "cube",
     version,
-    about = "Cube-4L volume-rendering kit: golden model, float reference, error and run time"
+    about = "Cube volume-rendering kit (Cube-4L, Cube-3): golden models, float reference, error and run time"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -35,6 +36,10 @@ enum Command {
     /// Error and run time of the golden model against the reference while the
     /// view turns about the vertical axis (the Cube-3 §6 experiment).
     Angles(angles::AnglesArgs),
+    /// Cube-3 Fig. 15: mean angle between each ABC gradient neighbourhood's
+    /// normal and the analytic normal of the built-in sphere, at the
+    /// threshold crossings, while the view turns; JSON and a plot.
+    Gradients(gradients::GradientsArgs),
     /// Run the scene through the pipeline in simulation (rust-hdl, or the
     /// emitted Verilog under Icarus or Verilator), warp its base plane, and
     /// compare it with the golden model bit for bit (exit 0 only if every
@@ -83,6 +88,7 @@ fn main() {
         None => default_run::run(),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Angles(args)) => angles::run(args),
+        Some(Command::Gradients(args)) => gradients::run(args),
         Some(Command::Sim(args)) => sim::run(args),
         Some(Command::Verilog(args)) => verilog::run(args),
         Some(Command::Synth(args)) => synth::run(args),

@@ -76,8 +76,12 @@ fn atomic_write(path: &Path, write: impl FnOnce(&mut std::fs::File) -> Result<()
 }
 
 pub fn write_png(path: &Path, img: &Image) -> Result<()> {
-    let buf = image::RgbImage::from_raw(img.width, img.height, img.to_rgb8())
-        .context("image buffer size")?;
+    write_png_rgb8(path, img.width, img.height, img.to_rgb8())
+}
+
+/// Write 8-bit RGB pixels (row major) as a PNG, whole or not at all.
+pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: Vec<u8>) -> Result<()> {
+    let buf = image::RgbImage::from_raw(width, height, rgb).context("image buffer size")?;
     atomic_write(path, |f| {
         let mut w = std::io::BufWriter::new(f);
         buf.write_to(&mut w, image::ImageFormat::Png)

@@ -54,8 +54,8 @@ pub fn run(args: RenderArgs) -> Result<()> {
         base_plane,
         gradient,
     } = args;
-    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d) {
-        bail!("--gradient needs --arch cube3 or true3d");
+    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat) {
+        bail!("--gradient needs --arch cube3, true3d or sheared-float");
     }
     let with_ref = compare_reference || diff.is_some();
     check_step(ref_step)?;

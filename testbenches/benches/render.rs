@@ -1,4 +1,5 @@
-//! Golden model and float reference at 128^3 and 256^3 (phantom, composite,
+//! Golden models (Cube-4L, Cube-3 with the 12-neighbourhood), True3D and the
+//! float reference at 128^3 and 256^3 (phantom, composite,
 //! 70/30 degree view, 256x256 image). Throughput is reported in voxels per
 //! second of the volume rendered; divide by the thread count for per-thread
 //! figures (`RAYON_NUM_THREADS=1` measures one thread directly).
@@ -23,6 +24,22 @@ fn bench(c: &mut Criterion) {
         g.throughput(Throughput::Elements((n * n * n) as u64));
         g.bench_function(format!("cube4l_golden_{n}"), |b| {
             b.iter(|| golden_model::cube4l::render_image(&s, &vol).unwrap())
+        });
+        g.bench_function(format!("cube3_golden_{n}"), |b| {
+            b.iter(|| {
+                golden_model::cube3::render_image(
+                    &s,
+                    &vol,
+                    golden_model::cube3::plan::Neighbourhood::N12,
+                )
+                .unwrap()
+            })
+        });
+        g.bench_function(format!("true3d_{n}"), |b| {
+            b.iter(|| {
+                reference::true3d::render(&s, &cam, &vol, 12, reference::true3d::Interp::Exact)
+                    .unwrap()
+            })
         });
         g.bench_function(format!("reference_{n}"), |b| {
             b.iter(|| reference::render(&s, &cam, &vol, reference::DEFAULT_STEP))

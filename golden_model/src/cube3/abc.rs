@@ -37,8 +37,8 @@
 //!   volume axes ("the light vector must be represented in a local
 //!   coordinate system"), and the weights change per ray in perspective.
 //! - **12** (Fig. 11): x and y from `S(±1, 0, 0)` and `S(0, ±1, 0)`, which lie
-//!   exactly along `e_x` and `e_y`; z from `p ± e_z`. `p + e_z = p + r - dx·e_x
-//!   - dy·e_y` lies on plane `k + 1` at lattice offset `(-dx, -dy)`: one
+//!   exactly along `e_x` and `e_y`; z from `p ± e_z`. `p + e_z = p + r -
+//!   dx·e_x - dy·e_y` lies on plane `k + 1` at lattice offset `(-dx, -dy)`: one
 //!   bilinear interpolation of the rays `(0|-sx, 0|-sy)` with weights `|dx|`,
 //!   `|dy|` (`sx = sign(dx)`). `p - e_z` likewise on plane `k - 1` at
 //!   `(dx, dy)`. 2 + 2 + 4 + 4 = 12 samples, and the result is already along

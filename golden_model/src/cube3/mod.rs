@@ -24,6 +24,7 @@ pub mod plan;
 pub mod prp;
 pub mod rpc;
 pub mod shade;
+pub mod surface;
 pub mod trilin;
 
 use abc::{gradient, Planes, RayCoeffs};
@@ -141,8 +142,61 @@ pub fn render_view(
     (base, stats)
 }
 
-/// Scanlines `va..=vb`: PRPs `va - 1 ..= vb + 2`, sample planes
-/// `va - 1 ..= vb + 1` in a window of three.
+/// Walk scanlines `va..=vb`, calling `visit(v, planes)` with the above,
+/// current and below sample planes of each (above and below are zero when
+/// `gradients` is false). PRPs `va - 1 ..= vb + 2` are fetched, sample planes
+/// `va - 1 ..= vb + 1` interpolated, in a window of three. Returns the
+/// number of sample planes interpolated.
+pub fn scanlines(
+    vol: &Volume,
+    view: &View,
+    sample_frac: u32,
+    gradients: bool,
+    [va, vb]: [i32; 2],
+    mut visit: impl FnMut(i32, &Planes),
+) -> u64 {
+    let (pu0, prays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
+    let fetch = |v: i32| prp::fetch(vol, view, v, pu0, prays);
+    let nk = view.dims[2];
+    let zero = |v: i32| SamplePlane::zero(v, pu0, prays - 1, nk);
+    let mut planes_made = 0u64;
+    let mut interp = |v: i32, cur: &prp::Prp, next: &prp::Prp| {
+        planes_made += 1;
+        trilin::plane(view, v, cur, next, sample_frac)
+    };
+    let mut cur = fetch(va - 1);
+    let mut next = fetch(va);
+    let mut above = if gradients {
+        interp(va - 1, &cur, &next)
+    } else {
+        zero(va - 1)
+    };
+    cur = next;
+    next = fetch(va + 1);
+    let mut current = interp(va, &cur, &next);
+    for v in va..=vb {
+        let below = if gradients || v < vb {
+            cur = next;
+            next = fetch(v + 2);
+            interp(v + 1, &cur, &next)
+        } else {
+            zero(v + 1)
+        };
+        visit(
+            v,
+            &Planes {
+                above: &above,
+                current: &current,
+                below: &below,
+            },
+        );
+        above = current;
+        current = below;
+    }
+    planes_made
+}
+
+/// Scanlines `va..=vb` of a base plane: pixels, cast flags and counters.
 fn render_rows(
     vol: &Volume,
     view: &View,
@@ -152,60 +206,34 @@ fn render_rows(
     va: i32,
     vb: i32,
 ) -> (Vec<[u32; 4]>, Vec<bool>, Stats) {
-    let f = shader.widths.sample_frac();
-    let (pu0, prays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
-    let fetch = |v: i32| prp::fetch(vol, view, v, pu0, prays);
-    let nk = view.dims[2];
-    let grad = shader.needs_gradient;
-    let zero = |v: i32| SamplePlane::zero(v, pu0, prays - 1, nk);
-    let mut planes_made = 0u64;
-    let mut interp = |v: i32, cur: &prp::Prp, next: &prp::Prp| {
-        planes_made += 1;
-        trilin::plane(view, v, cur, next, f)
-    };
     let mut stats = Stats::default();
     let mut pixels = Vec::new();
     let mut cast = Vec::new();
-    let mut cur = fetch(va - 1);
-    let mut next = fetch(va);
-    let mut above = if grad {
-        interp(va - 1, &cur, &next)
-    } else {
-        zero(va - 1)
-    };
-    cur = next;
-    next = fetch(va + 1);
-    let mut current = interp(va, &cur, &next);
-    for v in va..=vb {
-        let below = if grad || v < vb {
-            cur = next;
-            next = fetch(v + 2);
-            interp(v + 1, &cur, &next)
-        } else {
-            zero(v + 1)
-        };
-        let window = Planes {
-            above: &above,
-            current: &current,
-            below: &below,
-        };
-        for u in view.u[0]..=view.u[1] {
-            let casts = view.casts(u, v);
-            cast.push(casts);
-            if !casts {
-                pixels.push([0; 4]);
-                continue;
+    let f = shader.widths.sample_frac();
+    let planes_made = scanlines(
+        vol,
+        view,
+        f,
+        shader.needs_gradient,
+        [va, vb],
+        |v, window| {
+            for u in view.u[0]..=view.u[1] {
+                let casts = view.casts(u, v);
+                cast.push(casts);
+                if !casts {
+                    pixels.push([0; 4]);
+                    continue;
+                }
+                stats.rays += 1;
+                let (px, s) = cast_ray(view, shader, n, p, window, u, v);
+                pixels.push(px);
+                stats = stats + s;
             }
-            stats.rays += 1;
-            let (px, s) = cast_ray(view, shader, n, p, &window, u, v);
-            pixels.push(px);
-            stats = stats + s;
-        }
-        above = current;
-        current = below;
-    }
+        },
+    );
     if !view.on_grid {
-        stats.interpolated = planes_made * (prays as u64 - 1) * nk as u64;
+        let rays = (view.u[1] - view.u[0] + 3) as u64;
+        stats.interpolated = planes_made * rays * view.dims[2] as u64;
     }
     (pixels, cast, stats)
 }

@@ -587,11 +587,11 @@ mod tests {
         let want_pos = [0, 0, 0, 1, 1, 1, 2];
         // Offset 0: the weight is the fraction of k·dx: 0, 3, 6, 1, 4, 7.
         let want_w = [0, 3, 6, 1, 4, 7];
-        for k in 0..=6 {
-            assert_eq!(t.pos(5, k), 5 + want_pos[k], "pos k={k}");
+        for (k, p) in want_pos.iter().enumerate() {
+            assert_eq!(t.pos(5, k), 5 + p, "pos k={k}");
         }
-        for k in 0..6 {
-            assert_eq!(t.weight(5, k), want_w[k], "weight k={k}");
+        for (k, w) in want_w.iter().enumerate() {
+            assert_eq!(t.weight(5, k), *w, "weight k={k}");
         }
     }
 
