@@ -453,3 +453,137 @@ fn vcd_diff_aligns_names_and_cycles_and_exits_0_1_2() {
         );
     }
 }
+
+#[test]
+fn cube3_and_true3d_render_every_mode_with_json() {
+    let d = tempfile::tempdir().unwrap();
+    for mode in ["composite", "mip", "minip", "xray", "first_opaque"] {
+        let text = SPHERE.replace(r#""image""#, &format!(r#""mode": "{mode}", "image""#));
+        let scene = write(d.path(), "s.json", &text);
+        for (arch, extra) in [
+            ("cube3", ["--gradient", "6"]),
+            ("true3d", ["--gradient", "26"]),
+        ] {
+            let json = d.path().join(format!("{arch}_{mode}.json"));
+            let o = cube(
+                &[
+                    "render",
+                    "--scene",
+                    &scene,
+                    "--arch",
+                    arch,
+                    extra[0],
+                    extra[1],
+                    "--compare-reference",
+                    "--json",
+                    json.to_str().unwrap(),
+                ],
+                d.path(),
+            );
+            assert!(
+                o.status.success(),
+                "{arch} {mode}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+            let j = read_json(&json);
+            assert_eq!(j["arch"], arch);
+            assert!(
+                j["error"]["rel_euclid_pct"].as_f64().unwrap() < 10.0,
+                "{arch} {mode}: {j}"
+            );
+            if arch == "cube3" {
+                assert_eq!(j["details"]["gradient"], 6);
+                assert!(j["details"]["samples"].as_u64().unwrap() > 0);
+            }
+        }
+    }
+}
+
+#[test]
+fn cube3_bad_input_names_the_field() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = write(d.path(), "s.json", SPHERE);
+    let o = cube(
+        &[
+            "render",
+            "--scene",
+            &scene,
+            "--arch",
+            "cube3",
+            "--gradient",
+            "7",
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        e.contains("cube3.gradient 7") && e.lines().count() == 1,
+        "{e}"
+    );
+    let o = cube(
+        &[
+            "render",
+            "--scene",
+            &scene,
+            "--arch",
+            "cube4l",
+            "--gradient",
+            "6",
+        ],
+        d.path(),
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--gradient needs"));
+    let bad = SPHERE.replace(r#""image""#, r#""cube3": {"sample_bits": 40}, "image""#);
+    let scene = write(d.path(), "b.json", &bad);
+    let o = cube(&["render", "--scene", &scene, "--arch", "cube3"], d.path());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("cube3.sample_bits 40") && e.lines().count() == 1,
+        "{e}"
+    );
+    let o = cube(
+        &[
+            "gradients",
+            "--scene",
+            &write(d.path(), "p.json", &SPHERE.replace("sphere", "phantom")),
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("volume: gradients needs the built-in sphere"),
+        "{e}"
+    );
+}
+
+#[test]
+fn committed_fig15_is_current() {
+    // docs/cube3/fig15.{json,png} are `cube gradients` output; regenerate
+    // with the command in the README when this fails.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+    let d = tempfile::tempdir().unwrap();
+    let (j, p) = (d.path().join("f.json"), d.path().join("f.png"));
+    let o = cube(
+        &[
+            "gradients",
+            "--scene",
+            "scenes/fig15_sphere.json",
+            "--json",
+            j.to_str().unwrap(),
+            "--plot",
+            p.to_str().unwrap(),
+        ],
+        root,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut got = read_json(&j);
+    let mut want = read_json(&root.join("docs/cube3/fig15.json"));
+    got["scene"] = serde_json::Value::Null;
+    want["scene"] = serde_json::Value::Null;
+    assert_eq!(got, want, "docs/cube3/fig15.json is stale");
+    assert!(
+        std::fs::read(&p).unwrap() == std::fs::read(root.join("docs/cube3/fig15.png")).unwrap(),
+        "docs/cube3/fig15.png is stale"
+    );
+}

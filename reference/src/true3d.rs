@@ -354,7 +354,9 @@ impl Caster<'_> {
         }
     }
 
-    fn ray(&self, pl: &Plane, u: i32, v: i32) -> [f64; 4] {
+    /// The ray's base-plane value; `None` for a MIP/MinIP ray without a
+    /// sample inside the volume (the warp leaves it out).
+    fn ray(&self, pl: &Plane, u: i32, v: i32) -> Option<[f64; 4]> {
         let [nx, ny, nk] = pl.dims.map(|n| n as f64);
         let mode = self.scene.mode;
         let needs_grad =
@@ -414,7 +416,7 @@ impl Caster<'_> {
                     };
                     if mode == Mode::FirstOpaque {
                         if a >= self.scene.transfer.opaque_threshold {
-                            return [c.x, c.y, c.z, 1.0];
+                            return Some([c.x, c.y, c.z, 1.0]);
                         }
                         continue;
                     }
@@ -423,22 +425,12 @@ impl Caster<'_> {
                 }
             }
         }
-        match mode {
+        let vmax = self.vol.max_value() as f64;
+        Some(match mode {
             Mode::Composite | Mode::FirstOpaque => [acc.x, acc.y, acc.z, alpha],
-            Mode::Mip => [
-                ext.unwrap_or(0.0) / self.vol.max_value() as f64,
-                0.0,
-                0.0,
-                0.0,
-            ],
-            Mode::Minip => [
-                ext.unwrap_or(self.vol.max_value() as f64) / self.vol.max_value() as f64,
-                0.0,
-                0.0,
-                0.0,
-            ],
+            Mode::Mip | Mode::Minip => [ext? / vmax, 0.0, 0.0, 0.0],
             Mode::Xray => [(sum / nk).min(1.0), 0.0, 0.0, 0.0],
-        }
+        })
     }
 }
 
@@ -467,7 +459,13 @@ pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, n: u32, interp: Interp)
                 .into_par_iter()
                 .flat_map_iter(|v| {
                     let c = &c;
-                    (pl.u[0]..=pl.u[1]).map(move |u| pl.casts(u, v).then(|| c.ray(pl, u, v)))
+                    (pl.u[0]..=pl.u[1]).map(move |u| {
+                        if pl.casts(u, v) {
+                            c.ray(pl, u, v)
+                        } else {
+                            None
+                        }
+                    })
                 })
                 .collect()
         })

@@ -218,14 +218,16 @@ fn render_rows(
         [va, vb],
         |v, window| {
             for u in view.u[0]..=view.u[1] {
-                let casts = view.casts(u, v);
-                cast.push(casts);
-                if !casts {
+                if !view.casts(u, v) {
+                    cast.push(false);
                     pixels.push([0; 4]);
                     continue;
                 }
                 stats.rays += 1;
-                let (px, s) = cast_ray(view, shader, n, p, window, u, v);
+                let (px, any, s) = cast_ray(view, shader, n, p, window, u, v);
+                // A MIP/MinIP ray without a sample inside the volume has
+                // no value: the warp leaves it out, as it does uncast rays.
+                cast.push(any);
                 pixels.push(px);
                 stats = stats + s;
             }
@@ -238,7 +240,8 @@ fn render_rows(
     (pixels, cast, stats)
 }
 
-/// One ray through the RPC: its base-plane pixel and counters.
+/// One ray through the RPC: its base-plane pixel, whether it holds a value
+/// (MIP/MinIP: some sample was inside the volume) and counters.
 fn cast_ray(
     view: &View,
     shader: &Shader,
@@ -247,7 +250,7 @@ fn cast_ray(
     planes: &Planes,
     u: i32,
     v: i32,
-) -> ([u32; 4], Stats) {
+) -> ([u32; 4], bool, Stats) {
     let w = view.weight_bits;
     let [nx, ny, nk] = view.dims;
     let (dx, dy) = (view.x.d(u), view.y.d(v));
@@ -300,7 +303,7 @@ fn cast_ray(
         acc = a;
         st.composite_saturations += c1 + c2 as u64;
     }
-    (pixel(mode, acc, shader.widths.voxel_bits), st)
+    (pixel(mode, acc, shader.widths.voxel_bits), acc.valid, st)
 }
 
 /// Render every base plane of the view.
