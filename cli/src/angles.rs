@@ -4,7 +4,7 @@
 //! also gives the error against True3D (same rays and neighbourhood, exact
 //! tri-linear samples in float).
 
-use crate::common::{check_step, error_json, load, render_arch, Arch};
+use crate::common::{angle_sweep, check_step, error_json, load, render_arch, Arch};
 use crate::output::write_json;
 use anyhow::{bail, Result};
 use reference::metrics::compare;
@@ -46,20 +46,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         bail!("--gradient needs --arch cube3, true3d or sheared-float");
     }
     check_step(ref_step)?;
-    let [from, to, step] = [range[0], range[1], range[2]];
-    // Angles are from + i * step, so each is exact to one rounding and the
-    // sweep ends even where from + step == from in floating point.
-    let steps = (to - from) / step;
-    let ok = from.abs() <= 1e6
-        && to.abs() <= 1e6
-        && step.is_finite()
-        && step > 0.0
-        && (0.0..=3600.0).contains(&steps);
-    if !ok {
-        bail!(
-            "--range FROM TO STEP needs FROM and TO within ±1e6 degrees, STEP > 0, TO >= FROM and at most 3600 steps"
-        );
-    }
+    let angles = angle_sweep(&range)?;
     let (mut scene, vol) = load(&scene_path)?;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
     if scene.view.projection != scene::Projection::Parallel {
@@ -77,8 +64,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         "major",
         if with_true3d { "vs true3d %" } else { "" }
     );
-    for i in 0..=(steps + 1e-9).floor() as u32 {
-        let a = from + i as f64 * step;
+    for a in angles {
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
         let g = render_arch(&scene, &vol, arch, ref_step, gradient)?;
         let r = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;

@@ -44,6 +44,27 @@ pub fn check_step(step: f64) -> Result<()> {
     Ok(())
 }
 
+/// The angles of `--range FROM TO STEP`: `FROM + i·STEP` up to `TO`, so
+/// each is exact to one rounding and the sweep ends even where
+/// `FROM + STEP == FROM` in floating point.
+pub fn angle_sweep(range: &[f64]) -> Result<Vec<f64>> {
+    let [from, to, step] = [range[0], range[1], range[2]];
+    let steps = (to - from) / step;
+    let ok = from.abs() <= 1e6
+        && to.abs() <= 1e6
+        && step.is_finite()
+        && step > 0.0
+        && (0.0..=3600.0).contains(&steps);
+    if !ok {
+        bail!(
+            "--range FROM TO STEP needs FROM and TO within ±1e6 degrees, STEP > 0, TO >= FROM and at most 3600 steps"
+        );
+    }
+    Ok((0..=(steps + 1e-9).floor() as u32)
+        .map(|i| from + i as f64 * step)
+        .collect())
+}
+
 pub fn load(scene_path: &Path) -> Result<(Scene, Volume)> {
     let scene = Scene::load(scene_path)?;
     let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;

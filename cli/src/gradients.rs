@@ -5,7 +5,7 @@
 //! normal (the negated gradient) and the sphere's analytic normal is
 //! reported per neighbourhood, with a plot.
 
-use crate::common::load;
+use crate::common::{angle_sweep, load};
 use crate::output::{check_target, write_json, write_png_rgb8};
 use anyhow::{bail, Context, Result};
 use golden_model::cube3::surface::{crossings, ALL};
@@ -32,11 +32,7 @@ pub struct GradientsArgs {
 }
 
 pub fn run(args: GradientsArgs) -> Result<()> {
-    let [from, to, step] = [args.range[0], args.range[1], args.range[2]];
-    let steps = (to - from) / step;
-    if !(from.abs() <= 1e6 && to.abs() <= 1e6 && step > 0.0 && (0.0..=3600.0).contains(&steps)) {
-        bail!("--range FROM TO STEP needs FROM and TO within ±1e6 degrees, STEP > 0, TO >= FROM and at most 3600 steps");
-    }
+    let angles = angle_sweep(&args.range)?;
     for p in [&args.json, &args.plot].into_iter().flatten() {
         check_target(p)?;
     }
@@ -60,8 +56,7 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     );
     let mut rows = Vec::new();
     let mut curves = vec![Vec::new(); 4];
-    for i in 0..=(steps + 1e-9).floor() as u32 {
-        let a = from + i as f64 * step;
+    for &a in &angles {
         scene.view.rotate_deg = Some([base[0], a, base[2]]);
         let cam = scene.camera()?;
         let xs = crossings(&scene, &cam, &vol, threshold)?;
@@ -95,7 +90,7 @@ pub fn run(args: GradientsArgs) -> Result<()> {
         }));
     }
     if let Some(p) = &args.plot {
-        let png = plot(&curves, from, to).context("drawing the plot")?;
+        let png = plot(&curves, angles[0], angles[angles.len() - 1]).context("drawing the plot")?;
         write_png_rgb8(p, PLOT_W, PLOT_H, png)?;
     }
     if let Some(j) = &args.json {

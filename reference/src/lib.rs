@@ -176,24 +176,9 @@ impl Caster<'_> {
         let (o, d) = self.cam.ray(i, j);
         let n = self.vol.dims;
         let hi = DVec3::new((n[0] - 1) as f64, (n[1] - 1) as f64, (n[2] - 1) as f64);
-        let (mut t0, mut t1) = (0.0f64, f64::INFINITY);
-        for a in 0..3 {
-            if d[a].abs() < 1e-300 {
-                if o[a] < 0.0 || o[a] > hi[a] {
-                    return [0.0; 3];
-                }
-                continue;
-            }
-            let (mut n0, mut n1) = (-o[a] / d[a], (hi[a] - o[a]) / d[a]);
-            if n0 > n1 {
-                std::mem::swap(&mut n0, &mut n1);
-            }
-            t0 = t0.max(n0);
-            t1 = t1.min(n1);
-        }
-        if t0 > t1 {
+        let Some((t0, t1)) = box_span(o, d, hi) else {
             return [0.0; 3];
-        }
+        };
         let mode = self.scene.mode;
         let major = d.abs().max_element();
         let depth = n[d.abs().to_array().iter().position(|&c| c == major).unwrap()] as f64;
@@ -279,13 +264,14 @@ pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, step: f64) -> Image {
     img
 }
 
-/// Whether the ray `o + t·d` (`t >= 0`) meets the box `[0, hi]`.
-pub(crate) fn hits_box(o: DVec3, d: DVec3, hi: DVec3) -> bool {
+/// Where the ray `o + t·d` (`t >= 0`) is inside the box `[0, hi]`:
+/// `(t_in, t_out)`, or `None` if it misses.
+pub(crate) fn box_span(o: DVec3, d: DVec3, hi: DVec3) -> Option<(f64, f64)> {
     let (mut t0, mut t1) = (0.0f64, f64::INFINITY);
     for a in 0..3 {
         if d[a].abs() < 1e-300 {
             if o[a] < 0.0 || o[a] > hi[a] {
-                return false;
+                return None;
             }
             continue;
         }
@@ -296,5 +282,5 @@ pub(crate) fn hits_box(o: DVec3, d: DVec3, hi: DVec3) -> bool {
         t0 = t0.max(n0);
         t1 = t1.min(n1);
     }
-    t0 <= t1
+    (t0 <= t1).then_some((t0, t1))
 }

@@ -179,7 +179,7 @@ fn plan(scene: &Scene, cam: &Camera) -> Result<Vec<Plane>> {
             for j in 0..cam.height {
                 for i in 0..cam.width {
                     let (o, d) = cam.ray(i, j);
-                    if crate::hits_box(o, d, hi) {
+                    if crate::box_span(o, d, hi).is_some() {
                         let a = major(d);
                         sums[a][(d[a] > 0.0) as usize] += d;
                     }
@@ -480,7 +480,7 @@ pub fn render(scene: &Scene, cam: &Camera, vol: &Volume, n: u32, interp: Interp)
         .for_each(|(j, row)| {
             for (i, px) in row.iter_mut().enumerate() {
                 let (o, d) = cam.ray(i as u32, j as u32);
-                if !crate::hits_box(o, d, hi) {
+                if crate::box_span(o, d, hi).is_none() {
                     continue;
                 }
                 let pi = if planes.len() == 1 {

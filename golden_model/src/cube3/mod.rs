@@ -104,6 +104,15 @@ pub fn neighbourhood(scene: &Scene, n: Option<u32>) -> Result<Neighbourhood> {
 /// Scanlines rendered per parallel task.
 const CHUNK: i32 = 8;
 
+/// The view's scanlines in ascending runs of `CHUNK`, `[first, last]`: each
+/// run interpolates two sample planes beyond its own, for the gradients.
+pub fn chunks(view: &View) -> Vec<[i32; 2]> {
+    (view.v[0]..=view.v[1])
+        .step_by(CHUNK as usize)
+        .map(|va| [va, (va + CHUNK - 1).min(view.v[1])])
+        .collect()
+}
+
 /// Render one base plane.
 pub fn render_view(
     vol: &Volume,
@@ -114,13 +123,9 @@ pub fn render_view(
 ) -> (BasePlane, Stats) {
     let [w, h] = view.base_dims();
     let (u0, v0) = (view.u[0], view.v[0]);
-    let chunks: Vec<i32> = (view.v[0]..=view.v[1]).step_by(CHUNK as usize).collect();
-    let rows: Vec<(Vec<[u32; 4]>, Vec<bool>, Stats)> = chunks
-        .par_iter()
-        .map(|&va| {
-            let vb = (va + CHUNK - 1).min(view.v[1]);
-            render_rows(vol, view, shader, n, p, va, vb)
-        })
+    let rows: Vec<(Vec<[u32; 4]>, Vec<bool>, Stats)> = chunks(view)
+        .into_par_iter()
+        .map(|[va, vb]| render_rows(vol, view, shader, n, p, va, vb))
         .collect();
     let mut base = BasePlane {
         u0,

@@ -38,7 +38,7 @@
 //! entry; for parallel views `E_B - E_A = 2^W` and `wx = xq - E_A` exactly,
 //! in `[0, 2^W)` by Eq. 3). The clamp is counted in `Stats::weight_clamps`.
 
-use crate::cube4l::plan::{dominant_axis, slab};
+use crate::cube4l::plan::{dominant_axis, ray_sums};
 use crate::fixed::{quantize, round_div};
 use glam::{DMat3, DVec3};
 use scene::{Camera, CubeError, Projection, Result, Scene};
@@ -341,17 +341,7 @@ impl Plan {
                 slots[axis][(d[axis] > 0.0) as usize] = Some(0);
             }
             Projection::Perspective => {
-                let hi = DVec3::from_array(dims.map(|n| (n - 1) as f64));
-                let mut sums = [[DVec3::ZERO; 2]; 3];
-                for j in 0..camera.height {
-                    for i in 0..camera.width {
-                        let (o, d) = camera.ray(i, j);
-                        if slab(o, d, DVec3::ZERO, hi).is_some() {
-                            let a = dominant_axis(d);
-                            sums[a][(d[a] > 0.0) as usize] += d;
-                        }
-                    }
-                }
+                let sums = ray_sums(camera, dims);
                 for (a, pair) in sums.iter().enumerate() {
                     for (pos, sum) in pair.iter().enumerate() {
                         if *sum == DVec3::ZERO {

@@ -24,7 +24,9 @@
 //! accumulator's α is `M`, `op(acc, x) = acc` for every `x`, so the rest of
 //! the ray is skipped without changing a bit.
 
-use crate::fixed::{max_of, mul_unorm, sat_u};
+use crate::cube4l::compositor::{composite, reset_value};
+use crate::cube4l::plan::Order;
+use crate::cube4l::shader::Sample;
 use scene::Mode;
 
 /// A tree value: `[r, g, b, α]` (composite), `[value, 0, 0, 0]` (MIP,
@@ -46,16 +48,17 @@ pub fn identity(mode: Mode) -> Leaf {
 /// One tree node: `op(front, back)`, and whether a saturation clipped.
 pub fn node(mode: Mode, l: Leaf, r: Leaf, rgba_bits: u32) -> (Leaf, bool) {
     match mode {
-        Mode::Composite | Mode::FirstOpaque => {
-            let m = max_of(rgba_bits);
-            let mut clipped = false;
-            let value = std::array::from_fn(|i| {
-                let s = l.value[i] as u64 + mul_unorm(m - l.value[3], r.value[i], rgba_bits) as u64;
-                clipped |= s > m as u64;
-                sat_u(s, m)
-            });
+        // Cube-4L's compositing unit front to back is the same operator:
+        // the left child is the accumulated value, the right one the new.
+        Mode::Composite | Mode::FirstOpaque | Mode::Xray => {
+            let back = Sample {
+                value: r.value,
+                valid: true,
+            };
+            let (value, clipped) = composite(mode, Order::FrontToBack, l.value, &back, rgba_bits);
             (Leaf { value, valid: true }, clipped)
         }
+        // Both children may be empty here (Cube-4L's accumulator never is).
         Mode::Mip | Mode::Minip => {
             let pick = |a: u32, b: u32| {
                 if mode == Mode::Mip {
@@ -74,13 +77,6 @@ pub fn node(mode: Mode, l: Leaf, r: Leaf, rgba_bits: u32) -> (Leaf, bool) {
             };
             (out, false)
         }
-        Mode::Xray => (
-            Leaf {
-                value: [l.value[0] + r.value[0], 0, 0, 0],
-                valid: true,
-            },
-            false,
-        ),
     }
 }
 
@@ -106,19 +102,16 @@ pub fn tree(mode: Mode, leaves: &[Leaf], rgba_bits: u32) -> (Leaf, u64) {
 /// The base-plane pixel of a finished ray: the accumulator, or the reset
 /// value where no sample was valid (MinIP: full scale, as Cube-4L).
 pub fn pixel(mode: Mode, acc: Leaf, voxel_bits: u32) -> [u32; 4] {
-    match (mode, acc.valid) {
-        (Mode::Minip, false) => [max_of(voxel_bits), 0, 0, 0],
-        (_, false) => [0; 4],
-        _ => acc.value,
+    if acc.valid {
+        acc.value
+    } else {
+        reset_value(mode, voxel_bits)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cube4l::compositor::composite;
-    use crate::cube4l::plan::Order;
-    use crate::cube4l::shader::Sample;
 
     fn leaf(v: [u32; 4]) -> Leaf {
         Leaf {

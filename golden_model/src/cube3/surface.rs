@@ -10,7 +10,7 @@
 
 use super::abc::{gradient, RayCoeffs};
 use super::plan::{sample_pos, Neighbourhood, Plan, Widths};
-use super::scanlines;
+use super::{chunks, scanlines};
 use glam::DVec3;
 use rayon::prelude::*;
 use scene::volume::Volume;
@@ -48,11 +48,11 @@ pub fn crossings(
         let [nx, ny, nk] = view.dims.map(|n| n as i64);
         let to_dataset = view.to_traversal().transpose();
         let one = (1i64 << w) as f64;
-        let rows: Vec<Vec<Crossing>> = (view.v[0]..=view.v[1])
+        let rows: Vec<Vec<Crossing>> = chunks(view)
             .into_par_iter()
-            .map(|v| {
+            .map(|run| {
                 let mut found = Vec::new();
-                scanlines(vol, view, f, true, [v, v], |v, planes| {
+                scanlines(vol, view, f, true, run, |v, planes| {
                     for u in view.u[0]..=view.u[1] {
                         if !view.casts(u, v) {
                             continue;

@@ -266,6 +266,25 @@ pub fn slab(o: DVec3, d: DVec3, lo: DVec3, hi: DVec3) -> Option<(f64, f64, usize
     (t0 <= t1 && t1 >= 0.0).then_some((t0.max(0.0), t1, a0, a1))
 }
 
+/// Perspective planning of both architectures: the sum of the directions of
+/// the pixel rays that meet the volume, per (dominant axis, positive
+/// direction). A base plane is needed where a sum is non-zero, and its
+/// normalised sum is the plane's mean viewing direction.
+pub fn ray_sums(camera: &Camera, dims: [usize; 3]) -> [[DVec3; 2]; 3] {
+    let hi = DVec3::from_array(dims.map(|n| (n - 1) as f64));
+    let mut sums = [[DVec3::ZERO; 2]; 3];
+    for j in 0..camera.height {
+        for i in 0..camera.width {
+            let (o, d) = camera.ray(i, j);
+            if slab(o, d, DVec3::ZERO, hi).is_some() {
+                let a = dominant_axis(d);
+                sums[a][(d[a] > 0.0) as usize] += d;
+            }
+        }
+    }
+    sums
+}
+
 impl Plan {
     pub fn new(scene: &Scene, camera: &Camera) -> Result<Plan> {
         let dims = scene.volume.render_dims();
@@ -293,23 +312,8 @@ impl Plan {
                 sweeps.push(s);
             }
             Projection::Perspective => {
-                let lo = DVec3::ZERO;
-                let hi = DVec3::new(
-                    (dims[0] - 1) as f64,
-                    (dims[1] - 1) as f64,
-                    (dims[2] - 1) as f64,
-                );
                 let eye = camera.origin;
-                let mut sums = [[DVec3::ZERO; 2]; 3];
-                for j in 0..camera.height {
-                    for i in 0..camera.width {
-                        let (o, d) = camera.ray(i, j);
-                        if slab(o, d, lo, hi).is_some() {
-                            let a = dominant_axis(d);
-                            sums[a][(d[a] > 0.0) as usize] += d;
-                        }
-                    }
-                }
+                let sums = ray_sums(camera, dims);
                 for (a, pair) in sums.iter().enumerate() {
                     for (pos, sum) in pair.iter().enumerate() {
                         if *sum == DVec3::ZERO {
