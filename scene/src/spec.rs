@@ -35,6 +35,98 @@ pub struct Scene {
     /// Cube-3 only: gradient neighbourhood and datapath widths.
     #[serde(default)]
     pub cube3: Cube3Spec,
+    /// Quantized-voxel path only: subdivisions, normals, empty-space grid,
+    /// traversal order and splat kernel.
+    #[serde(default)]
+    pub quantized: QuantizedSpec,
+}
+
+/// Parameters of the quantized-voxel path (Mora, Jessel & Caubet).
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct QuantizedSpec {
+    /// Subdivisions per side of the square of four pixels (§2.2, §2.3);
+    /// default 64 for voxel projection, 32 for splatting (the paper's).
+    pub subdivisions: Option<u32>,
+    /// Quantized normal directions (§3.1): a power of two, 16..=32768.
+    #[serde(default = "default_normals")]
+    pub normals: u32,
+    /// How a block is found empty (§3.2).
+    #[serde(default)]
+    pub empty_space: EmptySpace,
+    /// Traversal order (§3.3).
+    #[serde(default)]
+    pub order: Traversal,
+    /// Splat kernel `[b, r]` of `f(x) = b·e^(−r·x²)`, x in voxel lengths.
+    #[serde(default = "default_kernel")]
+    pub kernel: [f64; 2],
+}
+
+fn default_normals() -> u32 {
+    8192
+}
+
+fn default_kernel() -> [f64; 2] {
+    [0.446, 2.0]
+}
+
+impl Default for QuantizedSpec {
+    fn default() -> Self {
+        QuantizedSpec {
+            subdivisions: None,
+            normals: default_normals(),
+            empty_space: EmptySpace::default(),
+            order: Traversal::default(),
+            kernel: default_kernel(),
+        }
+    }
+}
+
+/// Which block summary marks a block empty: its minimum alone (the
+/// paper's grid: the opacity is zero from the minimum up), or its minimum
+/// and maximum (zero over the block's value range).
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum EmptySpace {
+    Min,
+    #[default]
+    MinMax,
+}
+
+/// Traversal order of the quantized-voxel path.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Traversal {
+    /// The paper's: no accumulation buffer, no early termination.
+    #[default]
+    BackToFront,
+    /// With early ray termination.
+    FrontToBack,
+}
+
+impl QuantizedSpec {
+    fn validate(&self) -> Result<()> {
+        if let Some(n) = self.subdivisions {
+            if !(1..=256).contains(&n) {
+                return Err(CubeError::Scene(format!(
+                    "quantized.subdivisions {n} unsupported (1..=256)"
+                )));
+            }
+        }
+        let n = self.normals;
+        if !(n.is_power_of_two() && (16..=32768).contains(&n)) {
+            return Err(CubeError::Scene(format!(
+                "quantized.normals {n} unsupported (a power of two, 16..=32768)"
+            )));
+        }
+        let [b, r] = self.kernel;
+        if !(b.is_finite() && b > 0.0 && b <= 10.0 && r.is_finite() && (0.1..=100.0).contains(&r)) {
+            return Err(CubeError::Scene(format!(
+                "quantized.kernel [{b}, {r}] unsupported (b in (0, 10], r in [0.1, 100])"
+            )));
+        }
+        Ok(())
+    }
 }
 
 /// Cube-3 parameters. Its interpolation weights, templates and sample offset
@@ -332,6 +424,7 @@ impl Scene {
             )));
         }
         self.cube3.validate(hw.voxel_bits)?;
+        self.quantized.validate()?;
         let d = self.volume.dims;
         if d.iter().any(|n| !(2..=MAX_DIM).contains(n)) {
             return Err(CubeError::Volume(format!(
