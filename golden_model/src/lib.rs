@@ -7,6 +7,9 @@
 //! - [`cube4l`]: the Cube-4L ray-slice-sweep pipeline (Bitter & Kaufman),
 //!   stage by stage: planning, CFB stream, ABC gradient, shader, compositor,
 //!   base plane.
+//! - [`quantized`]: the quantized-voxel software path (Mora, Jessel &
+//!   Caubet): voxel projection by quantized positions and quantized
+//!   splatting, in floating point, with no hardware twin.
 //!
 //! What the architectures share: [`fixed`] (every rounding, truncation and
 //! saturation, named), [`lut`] (the classification and shading LUTs filled
@@ -18,4 +21,5 @@ pub mod cube3;
 pub mod cube4l;
 pub mod fixed;
 pub mod lut;
+pub mod quantized;
 pub mod warp;
