@@ -22,6 +22,10 @@ pub enum Arch {
     /// Cube-3's sheared tri-linear interpolation in float: the golden model
     /// without quantization (separates interpolation from quantization).
     ShearedFloat,
+    /// The quantized-voxel path: voxel projection by quantized positions.
+    QuantizedProjection,
+    /// The quantized-voxel path: quantized splatting.
+    QuantizedSplat,
     Reference,
 }
 
@@ -32,6 +36,8 @@ impl Arch {
             Arch::Cube3 => "cube3",
             Arch::True3d => "true3d",
             Arch::ShearedFloat => "sheared-float",
+            Arch::QuantizedProjection => "quantized-projection",
+            Arch::QuantizedSplat => "quantized-splat",
             Arch::Reference => "reference",
         }
     }
@@ -159,6 +165,50 @@ pub fn render_arch(
                 extra: json!({ "gradient": n }),
             })
         }
+        Arch::QuantizedProjection | Arch::QuantizedSplat => {
+            use golden_model::quantized::{self as q, Method};
+            let method = if arch == Arch::QuantizedProjection {
+                Method::Projection
+            } else {
+                Method::Splat
+            };
+            let params = q::Params::of(scene, method)?;
+            let grid = q::Grid::new(vol, params.normals);
+            let volume_s = t.elapsed().as_secs_f64();
+            let (image, s, times, view) = q::frame(scene, &grid, &params)?;
+            let seconds = t.elapsed().as_secs_f64();
+            // A transfer-function change: the same function set again,
+            // timed through classification and rendering.
+            let tf = Instant::now();
+            q::reclassify(scene, &grid, &view, &params);
+            let tf_change_s = tf.elapsed().as_secs_f64();
+            let frame_s = times.view + times.classify + times.render;
+            Ok(Rendered {
+                image,
+                seconds,
+                extra: json!({
+                    "subdivisions": params.n,
+                    "normals": params.normals,
+                    "empty_space": format!("{:?}", params.empty_space),
+                    "order": format!("{:?}", params.order),
+                    "volume_prep_seconds": volume_s,
+                    "view_prep_seconds": times.view,
+                    "classify_seconds": times.classify,
+                    "render_seconds": times.render,
+                    "frame_seconds": frame_s,
+                    "tf_change_seconds": tf_change_s,
+                    "voxels": s.voxels,
+                    "blocks": s.blocks,
+                    "blocks_live": s.blocks_live,
+                    "voxels_inspected": s.inspected,
+                    "voxels_treated": s.treated,
+                    "voxels_occluded": s.occluded,
+                    "classes": s.classes,
+                    "table_entries": s.entries,
+                    "treated_per_second": s.treated as f64 / times.render,
+                }),
+            })
+        }
         Arch::Reference => {
             let cam = scene.camera()?;
             let image = reference::render(scene, &cam, vol, ref_step);
@@ -169,6 +219,49 @@ pub fn render_arch(
             })
         }
     }
+}
+
+/// Render `repeat` times: `seconds` and every `*_seconds` detail become
+/// the median over the runs; the image and the other details are the last
+/// run's (every architecture is deterministic).
+pub fn render_repeat(
+    scene: &Scene,
+    vol: &Volume,
+    arch: Arch,
+    ref_step: f64,
+    gradient: Option<u32>,
+    repeat: usize,
+) -> Result<Rendered> {
+    let mut runs = Vec::with_capacity(repeat);
+    for _ in 0..repeat.max(1) {
+        runs.push(render_arch(scene, vol, arch, ref_step, gradient)?);
+    }
+    let median = |f: &dyn Fn(&Rendered) -> f64| {
+        let mut v: Vec<f64> = runs.iter().map(f).collect();
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let seconds = median(&|r| r.seconds);
+    let mut extra = runs.last().unwrap().extra.clone();
+    if let Value::Object(map) = &mut extra {
+        let keys: Vec<String> = map
+            .keys()
+            .filter(|k| k.ends_with("_seconds"))
+            .cloned()
+            .collect();
+        for k in keys {
+            map[&k] = json!(median(&|r| r.extra[&k].as_f64().unwrap_or(f64::NAN)));
+        }
+        if repeat > 1 {
+            map.insert("repeat".into(), json!(repeat));
+        }
+    }
+    let image = runs.pop().unwrap().image;
+    Ok(Rendered {
+        image,
+        seconds,
+        extra,
+    })
 }
 
 pub fn error_json(m: &ErrorMetrics) -> Value {

@@ -6,6 +6,7 @@
 
 mod angles;
 mod common;
+mod compare;
 mod default_run;
 mod gradients;
 mod output;
@@ -58,6 +59,9 @@ enum Command {
     /// Verilator) signal by signal and cycle by cycle. Exit 0 when equal, 1
     /// when they differ, 2 on a bad trace file.
     VcdDiff(vcd_diff::VcdDiffArgs),
+    /// Error of an image made elsewhere (a peer renderer's PNG) against the
+    /// scene's float reference.
+    Compare(compare::CompareArgs),
     /// List the built-in volumes.
     Scenes,
 }
@@ -95,6 +99,7 @@ fn main() {
         // vcd-diff sets its own exit code (2 for a bad file) and prints its
         // own errors.
         Some(Command::VcdDiff(args)) => std::process::exit(vcd_diff::run(args)),
+        Some(Command::Compare(args)) => compare::run(args),
         Some(Command::Scenes) => scenes::run(),
     };
     if let Err(e) = r {

@@ -2,7 +2,7 @@
 //! reference, optionally compare it with the reference, and write the image,
 //! a difference image, the first sweep's base plane and a JSON report.
 
-use crate::common::{check_step, error_json, load, render_arch, Arch};
+use crate::common::{check_step, error_json, load, render_arch, render_repeat, Arch};
 use crate::output::{write_json, write_png};
 use anyhow::{bail, Result};
 use reference::metrics::{compare, difference};
@@ -40,6 +40,9 @@ pub struct RenderArgs {
     /// Cube-4L only: write the base plane of the first sweep (PNG).
     #[arg(long)]
     base_plane: Option<PathBuf>,
+    /// Render K times and report the median of each time (1..=1000).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    repeat: u32,
 }
 
 pub fn run(args: RenderArgs) -> Result<()> {
@@ -53,6 +56,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
         ref_step,
         base_plane,
         gradient,
+        repeat,
     } = args;
     if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat) {
         bail!("--gradient needs --arch cube3, true3d or sheared-float");
@@ -63,8 +67,33 @@ pub fn run(args: RenderArgs) -> Result<()> {
         bail!("--base-plane needs --arch cube4l");
     }
     let (scene, vol) = load(&scene_path)?;
-    let r = render_arch(&scene, &vol, arch, ref_step, gradient)?;
+    let r = render_repeat(&scene, &vol, arch, ref_step, gradient, repeat as usize)?;
     println!("{}: {:.3} s", arch.name(), r.seconds);
+    if matches!(arch, Arch::QuantizedProjection | Arch::QuantizedSplat) {
+        let d = &r.extra;
+        let ms = |k: &str| d[k].as_f64().unwrap_or(0.0) * 1e3;
+        println!(
+            "  per volume {:.1} ms; per frame {:.2} ms (view {:.2}, classify {:.2}, render {:.2}); after a transfer-function change {:.2} ms",
+            ms("volume_prep_seconds"),
+            ms("frame_seconds"),
+            ms("view_prep_seconds"),
+            ms("classify_seconds"),
+            ms("render_seconds"),
+            ms("tf_change_seconds")
+        );
+        let pct =
+            |k: &str| 100.0 * d[k].as_f64().unwrap_or(0.0) / d["voxels"].as_f64().unwrap_or(1.0);
+        println!(
+            "  voxels inspected {} ({:.1} %), treated {} ({:.1} %), skipped hidden {}; {} classes, {} table entries",
+            d["voxels_inspected"],
+            pct("voxels_inspected"),
+            d["voxels_treated"],
+            pct("voxels_treated"),
+            d["voxels_occluded"],
+            d["classes"],
+            d["table_entries"]
+        );
+    }
     let mut report = json!({
         "arch": arch.name(),
         "scene": scene_path.display().to_string(),

@@ -587,3 +587,142 @@ fn committed_fig15_is_current() {
         "docs/cube3/fig15.png is stale"
     );
 }
+
+#[test]
+fn quantized_paths_report_stages_and_compare_judges_their_images() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = write(d.path(), "s.json", SPHERE);
+    for arch in ["quantized-projection", "quantized-splat"] {
+        let json = d.path().join(format!("{arch}.json"));
+        let png = d.path().join(format!("{arch}.png"));
+        let o = cube(
+            &[
+                "render",
+                "--scene",
+                &scene,
+                "--arch",
+                arch,
+                "--repeat",
+                "3",
+                "--compare-reference",
+                "--out",
+                png.to_str().unwrap(),
+                "--json",
+                json.to_str().unwrap(),
+            ],
+            d.path(),
+        );
+        assert!(
+            o.status.success(),
+            "{arch}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let j = read_json(&json);
+        assert_eq!(j["arch"], arch);
+        let det = &j["details"];
+        for k in [
+            "volume_prep_seconds",
+            "view_prep_seconds",
+            "classify_seconds",
+            "render_seconds",
+            "frame_seconds",
+            "tf_change_seconds",
+        ] {
+            assert!(det[k].as_f64().unwrap() >= 0.0, "{arch} {k}: {j}");
+        }
+        assert!(det["voxels_treated"].as_u64().unwrap() > 0, "{j}");
+        assert!(det["voxels_inspected"].as_u64() >= det["voxels_treated"].as_u64());
+        let e = j["error"]["rel_euclid_pct"].as_f64().unwrap();
+        assert!(e < 10.0, "{arch}: {e}");
+        // `cube compare` judges the written PNG against the same reference:
+        // the error of the 8-bit image is that of the render within the
+        // rounding to 8 bits.
+        let cj = d.path().join(format!("{arch}_cmp.json"));
+        let o = cube(
+            &[
+                "compare",
+                "--scene",
+                &scene,
+                "--image",
+                png.to_str().unwrap(),
+                "--json",
+                cj.to_str().unwrap(),
+            ],
+            d.path(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let c = read_json(&cj)["error"]["rel_euclid_pct"].as_f64().unwrap();
+        assert!((c - e).abs() < 0.3, "{arch}: compare {c} vs render {e}");
+    }
+    // A wrong size, a missing file and a bad --repeat are one line each.
+    let small = SPHERE.replace("[48, 40]", "[20, 20]");
+    let small = write(d.path(), "small.json", &small);
+    let png = d.path().join("quantized-splat.png");
+    let o = cube(
+        &[
+            "compare",
+            "--scene",
+            &small,
+            "--image",
+            png.to_str().unwrap(),
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("48x40") && e.lines().count() == 1,
+        "{e}"
+    );
+    let o = cube(
+        &["compare", "--scene", &scene, "--image", "nope.png"],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("nope.png") && e.lines().count() == 1,
+        "{e}"
+    );
+    let o = cube(&["render", "--scene", &scene, "--repeat", "0"], d.path());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("--repeat") && e.lines().count() == 1,
+        "{e}"
+    );
+    // Perspective and splat-only refusals name the cause.
+    let persp = SPHERE.replace(
+        r#""projection": "parallel", "rotate_deg": [70, 30, 0]"#,
+        r#""projection": "perspective", "eye": [7.5, 7.5, -40], "target": [7.5, 7.5, 7.5], "up": [0, 1, 0], "fov_deg": 30"#,
+    );
+    let persp = write(d.path(), "persp.json", &persp);
+    let o = cube(
+        &[
+            "render",
+            "--scene",
+            &persp,
+            "--arch",
+            "quantized-projection",
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("orthographic") && e.lines().count() == 1,
+        "{e}"
+    );
+    let mip = write(
+        d.path(),
+        "mip.json",
+        &SPHERE.replace(r#""image""#, r#""mode": "mip", "image""#),
+    );
+    let o = cube(
+        &["render", "--scene", &mip, "--arch", "quantized-splat"],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1)
+            && e.contains("unsupported by quantized-splat")
+            && e.lines().count() == 1,
+        "{e}"
+    );
+}

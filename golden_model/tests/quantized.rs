@@ -148,7 +148,10 @@ fn splat_weight_error_is_within_the_papers_bound() {
             let bound = k.error_bound(n, s);
             println!("s {s} n {n}: measured {worst:.6}, bound {bound:.6}");
             assert!(worst <= bound, "s {s} n {n}: {worst} > {bound}");
-            assert!(worst > 0.5 * bound, "s {s} n {n}: {worst} far below {bound}");
+            assert!(
+                worst > 0.5 * bound,
+                "s {s} n {n}: {worst} far below {bound}"
+            );
         }
     }
     // The paper's figure: 0.012 at n = 32, one pixel per voxel length.
@@ -218,14 +221,21 @@ fn every_supported_mode_is_close_to_the_reference() {
         let s = scene(volume, [70.0, 30.0, 0.0], &format!(r#", "mode": "{mode}""#));
         let r = reference(&s);
         let lit = r.rgb.iter().filter(|p| p[0] > 0.05).count();
-        assert!(lit > 200, "{mode}: the reference must show something ({lit} pixels)");
+        assert!(
+            lit > 200,
+            "{mode}: the reference must show something ({lit} pixels)"
+        );
         let (img, _) = render(&s, Method::Projection);
         let e = compare(&img, &r).rel_euclid_pct;
         println!("{mode} projection: {e:.3} %");
         assert!(e < proj_max, "{mode} projection: {e} %");
         if splat_max.is_nan() {
-            let err = q::render(&s, &Volume::from_spec(&s.volume, 8).unwrap(), Method::Splat).unwrap_err();
-            assert!(err.to_string().contains("unsupported by quantized-splat"), "{err}");
+            let err = q::render(&s, &Volume::from_spec(&s.volume, 8).unwrap(), Method::Splat)
+                .unwrap_err();
+            assert!(
+                err.to_string().contains("unsupported by quantized-splat"),
+                "{err}"
+            );
         } else {
             let (img, _) = render(&s, Method::Splat);
             let e = compare(&img, &r).rel_euclid_pct;
@@ -253,7 +263,8 @@ fn perspective_scenes_are_refused() {
 /// within the termination's 2^-10, and skips work on an opaque scene.
 #[test]
 fn front_to_back_matches_back_to_front_and_skips_hidden_voxels() {
-    let opaque = r#", "transfer": {"opacity": [[0, 0], [60, 0], [100, 1]], "color": [[0, 1, 0.8, 0.6]]}"#;
+    let opaque =
+        r#", "transfer": {"opacity": [[0, 0], [60, 0], [100, 1]], "color": [[0, 1, 0.8, 0.6]]}"#;
     for method in [Method::Projection, Method::Splat] {
         let b2f = scene(SPHERE, [70.0, 30.0, 0.0], opaque);
         let f2b = scene(
@@ -270,7 +281,12 @@ fn front_to_back_matches_back_to_front_and_skips_hidden_voxels() {
             .flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs()))
             .fold(0.0, f64::max);
         assert!(worst <= 2.0 / 1024.0, "{method:?}: {worst}");
-        assert!(sb.treated < sa.treated, "{method:?}: {} vs {}", sb.treated, sa.treated);
+        assert!(
+            sb.treated < sa.treated,
+            "{method:?}: {} vs {}",
+            sb.treated,
+            sa.treated
+        );
     }
 }
 
@@ -281,12 +297,25 @@ fn min_max_grid_inspects_no_more_than_the_min_grid() {
     // A band of opacity in mid range: blocks above it are empty for the
     // min-max grid only.
     let tf = r#", "transfer": {"opacity": [[0, 0], [90, 0], [100, 0.5], [140, 0.5], [150, 0]], "color": [[0, 1, 1, 1]]}"#;
-    let min = scene(PHANTOM, [20.0, 30.0, 0.0], &format!(r#"{tf}, "quantized": {{"empty_space": "min"}}"#));
-    let max = scene(PHANTOM, [20.0, 30.0, 0.0], &format!(r#"{tf}, "quantized": {{"empty_space": "min_max"}}"#));
+    let min = scene(
+        PHANTOM,
+        [20.0, 30.0, 0.0],
+        &format!(r#"{tf}, "quantized": {{"empty_space": "min"}}"#),
+    );
+    let max = scene(
+        PHANTOM,
+        [20.0, 30.0, 0.0],
+        &format!(r#"{tf}, "quantized": {{"empty_space": "min_max"}}"#),
+    );
     let (a, sa) = render(&min, Method::Projection);
     let (b, sb) = render(&max, Method::Projection);
     assert_eq!(a.rgb, b.rgb);
-    assert!(sb.inspected < sa.inspected, "{} vs {}", sb.inspected, sa.inspected);
+    assert!(
+        sb.inspected < sa.inspected,
+        "{} vs {}",
+        sb.inspected,
+        sa.inspected
+    );
     assert_eq!(sa.treated, sb.treated);
 }
 
@@ -295,7 +324,11 @@ fn min_max_grid_inspects_no_more_than_the_min_grid() {
 /// it.
 #[test]
 fn empty_and_impulse_volumes() {
-    let s = scene(r#"{"builtin": "empty", "dims": [24, 24, 24]}"#, [70.0, 30.0, 0.0], "");
+    let s = scene(
+        r#"{"builtin": "empty", "dims": [24, 24, 24]}"#,
+        [70.0, 30.0, 0.0],
+        "",
+    );
     for m in [Method::Projection, Method::Splat] {
         let (img, st) = render(&s, m);
         assert!(img.rgb.iter().all(|p| *p == [0.0; 3]), "{m:?}");
@@ -309,10 +342,23 @@ fn empty_and_impulse_volumes() {
     let (img, st) = render(&s, Method::Projection);
     let r = reference(&s);
     assert_eq!(st.treated, 1);
-    let lit = |i: &Image| i.rgb.iter().enumerate().filter(|(_, p)| p[0] > 0.5).map(|(k, _)| k).collect::<Vec<_>>();
+    let lit = |i: &Image| {
+        i.rgb
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p[0] > 0.5)
+            .map(|(k, _)| k)
+            .collect::<Vec<_>>()
+    };
     let (ours, theirs) = (lit(&img), lit(&r));
-    assert!(!ours.is_empty() && ours.iter().all(|k| theirs.contains(k) || {
-        let (x, y) = ((k % 64) as i64, (k / 64) as i64);
-        theirs.iter().any(|t| ((t % 64) as i64 - x).abs() <= 1 && ((t / 64) as i64 - y).abs() <= 1)
-    }), "{ours:?} vs {theirs:?}");
+    assert!(
+        !ours.is_empty()
+            && ours.iter().all(|k| theirs.contains(k) || {
+                let (x, y) = ((k % 64) as i64, (k / 64) as i64);
+                theirs
+                    .iter()
+                    .any(|t| ((t % 64) as i64 - x).abs() <= 1 && ((t / 64) as i64 - y).abs() <= 1)
+            }),
+        "{ours:?} vs {theirs:?}"
+    );
 }

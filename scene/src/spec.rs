@@ -628,6 +628,21 @@ mod tests {
         assert!(err_of(&hw).contains("rgba_bits"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"pipelines\": 3}}");
         assert!(err_of(&hw).contains("pipelines"));
+        for (q, field) in [
+            (r#""subdivisions": 0"#, "quantized.subdivisions"),
+            (r#""subdivisions": 257"#, "quantized.subdivisions"),
+            (r#""normals": 1000"#, "quantized.normals"),
+            (r#""normals": 8"#, "quantized.normals"),
+            (r#""kernel": [0, 2]"#, "quantized.kernel"),
+            (r#""kernel": [0.446, 1e999]"#, "scene"),
+            (r#""order": "sideways""#, "unknown variant"),
+            (r#""empty_space": "max""#, "unknown variant"),
+            (r#""bogus": 1"#, "unknown field"),
+        ] {
+            let text = MIN.replace("}}", &format!("}}, \"quantized\": {{{q}}}}}"));
+            let e = err_of(&text);
+            assert!(e.contains(field), "{q}: {e}");
+        }
     }
 
     #[test]

@@ -178,7 +178,11 @@ mod tests {
                 }
             }
         }
-        Volume { dims, bits: 8, data }
+        Volume {
+            dims,
+            bits: 8,
+            data,
+        }
     }
 
     #[test]
@@ -187,7 +191,7 @@ mod tests {
         let g = Grid::new(&vol, 256);
         assert_eq!(g.blocks, [2, 2, 1]);
         assert_eq!(g.extent(1), [2, 8, 3]);
-        assert_eq!(g.voxels(3), 2 * 1 * 3);
+        assert_eq!(g.voxels(3), 2 * 3);
         // Block 3 is (1, 1, 0): u 8..10, v 8, w 0..3.
         assert_eq!((g.min[3], g.max[3]), (8 + 16, 9 + 16 + 6));
         let b = g.block([1, 1, 0]);

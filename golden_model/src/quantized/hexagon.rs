@@ -40,7 +40,9 @@ impl Hexagon {
         // A step along the view direction projects to a rounding residue
         // (cos 90° = 6e-17): zero it, so that the cube's corners pair up
         // exactly and the hull is the rectangle it should be.
-        let big = steps.iter().fold(0.0f64, |m, s| m.max(s.abs().max_element()));
+        let big = steps
+            .iter()
+            .fold(0.0f64, |m, s| m.max(s.abs().max_element()));
         let steps = steps.map(|s| s * (s.abs().max_element() > 1e-9 * big) as u8 as f64);
         let mut corners = Vec::with_capacity(8);
         for s in 0..8 {
@@ -109,7 +111,8 @@ fn convex_hull(mut pts: Vec<DVec2>) -> Vec<DVec2> {
             pts.iter().rev().copied().collect()
         };
         for p in order {
-            while hull.len() >= start + 2 && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= eps
+            while hull.len() >= start + 2
+                && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= eps
             {
                 hull.pop();
             }

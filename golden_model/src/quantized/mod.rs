@@ -160,7 +160,11 @@ pub fn render(scene: &Scene, vol: &Volume, method: Method) -> Result<(Image, Sta
 /// One frame from a grid built before: view tables, classification and
 /// rendering (the volume time is 0). The view tables are returned for
 /// [`reclassify`].
-pub fn frame(scene: &Scene, grid: &Grid, params: &Params) -> Result<(Image, Stats, Times, ViewTables)> {
+pub fn frame(
+    scene: &Scene,
+    grid: &Grid,
+    params: &Params,
+) -> Result<(Image, Stats, Times, ViewTables)> {
     let camera = scene.camera()?;
     let t = Instant::now();
     let view = ViewTables::new(scene, &camera, grid, params);
@@ -172,7 +176,12 @@ pub fn frame(scene: &Scene, grid: &Grid, params: &Params) -> Result<(Image, Stat
 
 /// A new transfer function on the same view: classification and rendering
 /// only, no pass over the volume.
-pub fn reclassify(scene: &Scene, grid: &Grid, view: &ViewTables, params: &Params) -> (Image, Stats, Times) {
+pub fn reclassify(
+    scene: &Scene,
+    grid: &Grid,
+    view: &ViewTables,
+    params: &Params,
+) -> (Image, Stats, Times) {
     let t = Instant::now();
     let classes = Classes::new(scene, grid, view, params);
     let classify = t.elapsed().as_secs_f64();

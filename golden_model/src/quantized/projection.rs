@@ -298,6 +298,9 @@ mod tests {
         let t = ProjectionTable::new(&hex, 64);
         assert!(t.classes.len() < 200, "{} classes", t.classes.len());
         assert!(t.undecided_share() < 0.25, "{}", t.undecided_share());
-        assert!(t.classes.iter().all(|c| !c.sure.is_empty() || !c.undecided.is_empty()));
+        assert!(t
+            .classes
+            .iter()
+            .all(|c| !c.sure.is_empty() || !c.undecided.is_empty()));
     }
 }

@@ -66,7 +66,9 @@ fn colour(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16) -> [f32; 3] {
 fn opacity(cl: &Classes, v: usize, g: u8) -> Option<f32> {
     let t = match &cl.gradient {
         None => cl.term[v],
-        Some(gf) if cl.alpha[v] > 0.0 => cl.shape(cl.alpha[v] as f64 * gf[g as usize] as f64) as f32,
+        Some(gf) if cl.alpha[v] > 0.0 => {
+            cl.shape(cl.alpha[v] as f64 * gf[g as usize] as f64) as f32
+        }
         Some(_) => 0.0,
     };
     (t > 0.0).then_some(t)
@@ -88,19 +90,21 @@ impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
     }
     #[inline(always)]
     fn apply(dst: &mut [f32; 4], s: &Src, w: f32) {
-        let a = if SPLAT { 1.0 - (-s.t * w).exp() } else { s.t };
+        let a = || if SPLAT { 1.0 - (-s.t * w).exp() } else { s.t };
         if F2B {
             if dst[3] < OPAQUE {
+                let a = a();
                 let k = (1.0 - dst[3]) * a;
-                for i in 0..3 {
-                    dst[i] += k * s.c[i];
+                for (d, c) in dst.iter_mut().zip(s.c) {
+                    *d += k * c;
                 }
                 dst[3] += k;
             }
         } else {
+            let a = a();
             let k = 1.0 - a;
-            for i in 0..3 {
-                dst[i] = s.c[i] * a + k * dst[i];
+            for (d, c) in dst.iter_mut().zip(s.c) {
+                *d = c * a + k * *d;
             }
             dst[3] = a + k * dst[3];
         }
@@ -240,7 +244,12 @@ pub fn render(
     (img, stats)
 }
 
-fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<[f32; 4]>, Counts)> {
+fn run<K: Kind>(
+    _: K,
+    grid: &Grid,
+    view: &ViewTables,
+    cl: &Classes,
+) -> Vec<(Vec<[f32; 4]>, Counts)> {
     match &view.footprint {
         Footprint::Projection {
             table,
@@ -270,7 +279,12 @@ fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<
     }
 }
 
-fn bands<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<[f32; 4]>, Counts)> {
+fn bands<K: Kind, F: Draw>(
+    fp: &F,
+    grid: &Grid,
+    view: &ViewTables,
+    cl: &Classes,
+) -> Vec<(Vec<[f32; 4]>, Counts)> {
     (0..view.bands.len())
         .into_par_iter()
         .map(|band| render_band::<K, F>(fp, grid, view, cl, band))
@@ -281,7 +295,15 @@ fn bands<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Classes)
 /// `cell` at fixed-point position `(fx, fy)` in its square, the square's
 /// top-left pixel at `base` in the buffer.
 trait Draw: Sync {
-    fn draw<K: Kind>(&self, buf: &mut [[f32; 4]], cell: usize, fx: u64, fy: u64, base: isize, src: &Src);
+    fn draw<K: Kind>(
+        &self,
+        buf: &mut [[f32; 4]],
+        cell: usize,
+        fx: u64,
+        fy: u64,
+        base: isize,
+        src: &Src,
+    );
 }
 
 /// §2.2: the class's sure pixels, and the undecided ones that pass their
@@ -297,7 +319,15 @@ struct Projected<'a> {
 
 impl Draw for Projected<'_> {
     #[inline(always)]
-    fn draw<K: Kind>(&self, buf: &mut [[f32; 4]], cell: usize, fx: u64, fy: u64, base: isize, src: &Src) {
+    fn draw<K: Kind>(
+        &self,
+        buf: &mut [[f32; 4]],
+        cell: usize,
+        fx: u64,
+        fy: u64,
+        base: isize,
+        src: &Src,
+    ) {
         let c = self.class_of[cell] as usize;
         for &o in &self.sure[self.sure_start[c] as usize..self.sure_start[c + 1] as usize] {
             K::apply(&mut buf[(base + o) as usize], src, 1.0);
@@ -328,7 +358,15 @@ struct Splatted<'a> {
 
 impl Draw for Splatted<'_> {
     #[inline(always)]
-    fn draw<K: Kind>(&self, buf: &mut [[f32; 4]], cell: usize, _: u64, _: u64, base: isize, src: &Src) {
+    fn draw<K: Kind>(
+        &self,
+        buf: &mut [[f32; 4]],
+        cell: usize,
+        _: u64,
+        _: u64,
+        base: isize,
+        src: &Src,
+    ) {
         let (s, t) = (self.start[cell] as usize, self.start[cell + 1] as usize);
         for (&o, &w) in self.offsets[s..t].iter().zip(&self.weights[s..t]) {
             K::apply(&mut buf[(base + o) as usize], src, w);
@@ -350,7 +388,13 @@ fn ceil_div(a: i64, d: i64) -> i64 {
     -(-a).div_euclid(d)
 }
 
-fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Classes, band: usize) -> (Vec<[f32; 4]>, Counts) {
+fn render_band<K: Kind, F: Draw>(
+    fp: &F,
+    grid: &Grid,
+    view: &ViewTables,
+    cl: &Classes,
+    band: usize,
+) -> (Vec<[f32; 4]>, Counts) {
     let (w, h) = (view.geom.width, view.geom.height);
     let (y0, y1) = (band * BAND, ((band + 1) * BAND).min(h));
     let (m, stride) = (view.margin, view.stride);
@@ -362,8 +406,16 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
     // counted; rows beyond the image count in the nearest band).
     let (cy_lo, cy_hi) = ((y0 as i64 - ey1) * one, (y1 as i64 - ey0) * one);
     let (cx_lo, cx_hi) = (-ex1 * one, (w as i64 - ex0) * one);
-    let home_lo = if band == 0 { i64::MIN / 2 } else { y0 as i64 * one };
-    let home_hi = if y1 == h { i64::MAX / 2 } else { y1 as i64 * one };
+    let home_lo = if band == 0 {
+        i64::MIN / 2
+    } else {
+        y0 as i64 * one
+    };
+    let home_hi = if y1 == h {
+        i64::MAX / 2
+    } else {
+        y1 as i64 * one
+    };
     let n = view.n as u64;
     let steps = view.steps;
     let dims = grid.dims;
@@ -374,7 +426,16 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
             continue;
         }
         let [bx0, bx1, by0, by1] = view.block_box[b];
-        if K::OCCLUDES && finished(&buf, [bx0, bx1, by0.max(y0 as i32), by1.min(y1 as i32 - 1)], y0, m, stride, w) {
+        if K::OCCLUDES
+            && finished(
+                &buf,
+                [bx0, bx1, by0.max(y0 as i32), by1.min(y1 as i32 - 1)],
+                y0,
+                m,
+                stride,
+                w,
+            )
+        {
             let centre = ((by0 + by1) / 2).clamp(0, h as i32 - 1) as usize;
             if centre / BAND == band {
                 counts.occluded += grid.voxels(b);
@@ -396,6 +457,9 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
         };
         let ((i_lo, i_hi), (j_lo, j_hi), (k_lo, k_hi)) = (cut(0), cut(1), cut(2));
         let [ox, oy] = view.block_origin[b];
+        // A block whose footprints stay within the band's rows, its home
+        // rows and the image's columns needs no per-row ranges.
+        let whole = by0 >= y0 as i32 && by1 < y1 as i32 && bx0 >= 0 && bx1 < w as i32;
         // The t-th index of lo..hi in the traversal's direction along a.
         let at = |a: usize, lo: usize, hi: usize, t: usize| {
             if view.descending[a] {
@@ -410,21 +474,32 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
                 let j = at(1, j_lo, j_hi, tj);
                 let rx = ox + k as i64 * steps[2][0] + j as i64 * steps[1][0];
                 let ry = oy + k as i64 * steps[2][1] + j as i64 * steps[1][1];
-                // The voxels of this row whose footprint reaches the band.
+                // The voxels of this row whose footprint reaches the band,
+                // and those whose centre lies in its home rows.
                 let [sx, sy] = steps[0];
-                let (ax, bx) = span(rx, sx, cx_lo, cx_hi, i_hi as i64);
-                let (ay, by) = span(ry, sy, cy_lo, cy_hi, i_hi as i64);
-                let (i0, i1) = (ax.max(ay).max(i_lo as i64), bx.min(by));
+                let (i0, i1, h0, h1) = if whole {
+                    (i_lo as i64, i_hi as i64, i_lo as i64, i_hi as i64)
+                } else {
+                    let (ax, bx) = span(rx, sx, cx_lo, cx_hi, i_hi as i64);
+                    let (ay, by) = span(ry, sy, cy_lo, cy_hi, i_hi as i64);
+                    let (h0, h1) = span(ry, sy, home_lo, home_hi, i_hi as i64);
+                    (ax.max(ay).max(i_lo as i64), bx.min(by), h0, h1)
+                };
                 if i0 >= i1 {
                     continue;
                 }
-                let (h0, h1) = span(ry, sy, home_lo, home_hi, i_hi as i64);
                 counts.inspected += (i1.min(h1) - i0.max(h0)).max(0) as u64;
                 let row = b * B3 + (k * B + j) * B;
                 for ti in 0..(i1 - i0) as usize {
                     let i = at(0, i0 as usize, i1 as usize, ti);
                     let idx = row + i;
-                    let Some(src) = K::source(cl, &view.shade, grid.values[idx] as usize, grid.normals[idx], grid.gmag[idx]) else {
+                    let Some(src) = K::source(
+                        cl,
+                        &view.shade,
+                        grid.values[idx] as usize,
+                        grid.normals[idx],
+                        grid.gmag[idx],
+                    ) else {
                         continue;
                     };
                     counts.treated += ((i as i64) >= h0 && (i as i64) < h1) as u64;
@@ -433,7 +508,8 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
                     let (px, py) = (cx >> FRAC, cy >> FRAC);
                     let (fx, fy) = ((cx & MASK) as u64, (cy & MASK) as u64);
                     let cell = ((fy * n) >> FRAC) as usize * view.n + ((fx * n) >> FRAC) as usize;
-                    let base = ((py - y0 as i64 + m as i64) * stride as i64 + px + m as i64) as isize;
+                    let base =
+                        ((py - y0 as i64 + m as i64) * stride as i64 + px + m as i64) as isize;
                     fp.draw::<K>(&mut buf, cell, fx, fy, base, &src);
                 }
             }
@@ -449,7 +525,14 @@ fn render_band<K: Kind, F: Draw>(fp: &F, grid: &Grid, view: &ViewTables, cl: &Cl
 
 /// Whether every pixel of the box `[x0, x1, y0, y1]` (inclusive, image
 /// coordinates, rows within the band) is finished.
-fn finished(buf: &[[f32; 4]], [x0, x1, y0, y1]: [i32; 4], band_y0: usize, m: usize, stride: usize, w: usize) -> bool {
+fn finished(
+    buf: &[[f32; 4]],
+    [x0, x1, y0, y1]: [i32; 4],
+    band_y0: usize,
+    m: usize,
+    stride: usize,
+    w: usize,
+) -> bool {
     let (x0, x1) = (x0.max(0), x1.min(w as i32 - 1));
     for y in y0..=y1 {
         let r = (y as usize - band_y0 + m) * stride + m;

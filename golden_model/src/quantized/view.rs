@@ -164,7 +164,10 @@ impl ViewTables {
                     sure_start.push(sure.len() as u32);
                     und_start.push(undecided.len() as u32);
                 }
-                let (e, k) = ((sure.len() + undecided.len()) as u64, table.classes.len() as u64);
+                let (e, k) = (
+                    (sure.len() + undecided.len()) as u64,
+                    table.classes.len() as u64,
+                );
                 (
                     Footprint::Projection {
                         table,

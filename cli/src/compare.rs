@@ -1,0 +1,92 @@
+//! `cube compare`: the error of an image made elsewhere (a peer renderer,
+//! an earlier run) against the scene's float reference, with the metrics
+//! every `render --compare-reference` reports.
+
+use crate::common::{check_step, error_json, load, render_arch, Arch};
+use crate::output::{write_json, write_png};
+use anyhow::{bail, Context, Result};
+use reference::metrics::{compare, difference};
+use scene::Image;
+use serde_json::json;
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct CompareArgs {
+    #[arg(long)]
+    scene: PathBuf,
+    /// The image to judge: a PNG of the scene's image size, row 0 at the top,
+    /// 8-bit channels read as linear values in [0, 1].
+    #[arg(long)]
+    image: PathBuf,
+    #[arg(long)]
+    json: Option<PathBuf>,
+    /// Difference image against the reference (x8).
+    #[arg(long)]
+    diff: Option<PathBuf>,
+    #[arg(long, default_value_t = reference::DEFAULT_STEP, allow_negative_numbers = true)]
+    ref_step: f64,
+}
+
+pub fn run(args: CompareArgs) -> Result<()> {
+    check_step(args.ref_step)?;
+    let (scene, vol) = load(&args.scene)?;
+    let img = read_png(&args.image)?;
+    let [w, h] = scene.image;
+    if (img.width, img.height) != (w, h) {
+        bail!(
+            "{} is {}x{}; the scene's image is {w}x{h}",
+            args.image.display(),
+            img.width,
+            img.height
+        );
+    }
+    let r = render_arch(&scene, &vol, Arch::Reference, args.ref_step, None)?;
+    let m = compare(&img, &r.image);
+    println!(
+        "{}: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4} (reference {:.3} s)",
+        args.image.display(),
+        m.rel_euclid_pct,
+        m.rmse,
+        m.psnr_db,
+        m.max_abs,
+        r.seconds
+    );
+    if let Some(d) = &args.diff {
+        write_png(d, &difference(&img, &r.image, 8.0))?;
+    }
+    if let Some(j) = &args.json {
+        write_json(
+            j,
+            &json!({
+                "scene": args.scene.display().to_string(),
+                "image": args.image.display().to_string(),
+                "error": error_json(&m),
+                "reference_seconds": r.seconds,
+                "ref_step": args.ref_step,
+            }),
+        )?;
+    }
+    Ok(())
+}
+
+fn read_png(path: &std::path::Path) -> Result<Image> {
+    let meta = std::fs::metadata(path).with_context(|| format!("reading {}", path.display()))?;
+    if !meta.is_file() {
+        bail!("{} is not a regular file", path.display());
+    }
+    let rgb = image::ImageReader::open(path)
+        .with_context(|| format!("reading {}", path.display()))?
+        .with_guessed_format()?
+        .decode()
+        .with_context(|| format!("decoding {} as an image", path.display()))?
+        .to_rgb8();
+    let (width, height) = rgb.dimensions();
+    Ok(Image {
+        width,
+        height,
+        rgb: rgb
+            .pixels()
+            .map(|p| p.0.map(|c| c as f64 / 255.0))
+            .collect(),
+    })
+}
