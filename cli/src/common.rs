@@ -107,11 +107,27 @@ pub fn render_arch(
             let (image, frame) = golden_model::cube4l::render_image(scene, vol)?;
             let seconds = t.elapsed().as_secs_f64();
             let s = frame.stats;
+            // The RTL's schedule: one voxel per pipeline per clock over each
+            // sweep's slices, one slice more when the gradient unit is
+            // built, and 6 clocks of fill (what `cube sim` counts).
+            let camera = scene.camera()?;
+            let p = scene.hardware.pipelines;
+            let clocks: usize = frame
+                .plan
+                .sweeps
+                .iter()
+                .map(|w| {
+                    let grad = golden_model::cube4l::shader::Shader::new(scene, &camera, w)
+                        .needs_gradient as usize;
+                    (w.z1 - w.z0 + 1 + grad) * w.dims[1] * w.dims[0].div_ceil(p) + 6
+                })
+                .sum();
             Ok(Rendered {
                 image,
                 seconds,
                 extra: json!({
                     "sweeps": frame.plan.sweeps.len(),
+                    "clocks": clocks,
                     "voxels": s.voxels,
                     "voxels_shaded": s.shaded,
                     "voxels_terminated": s.terminated,

@@ -14,6 +14,7 @@ mod render;
 mod scenes;
 mod sim;
 mod synth;
+mod tradeoff;
 mod vcd_diff;
 mod verilog;
 
@@ -62,6 +63,10 @@ enum Command {
     /// Error of an image made elsewhere (a peer renderer's PNG) against the
     /// scene's float reference.
     Compare(compare::CompareArgs),
+    /// Error against cost for every method that applies to the scene, over
+    /// its precisions and parameters: JSON, CSV, a log-log plot with the
+    /// Pareto front, and a Markdown table.
+    Tradeoff(tradeoff::TradeoffArgs),
     /// List the built-in volumes.
     Scenes,
 }
@@ -100,6 +105,7 @@ fn main() {
         // own errors.
         Some(Command::VcdDiff(args)) => std::process::exit(vcd_diff::run(args)),
         Some(Command::Compare(args)) => compare::run(args),
+        Some(Command::Tradeoff(args)) => tradeoff::run(args),
         Some(Command::Scenes) => scenes::run(),
     };
     if let Err(e) = r {

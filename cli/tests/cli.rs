@@ -726,3 +726,127 @@ fn quantized_paths_report_stages_and_compare_judges_their_images() {
         "{e}"
     );
 }
+
+/// `cube tradeoff` on a small scene: all four files, every method's rows,
+/// a non-empty Pareto front whose points no other point dominates, and
+/// errors and images byte-identical at one and two threads.
+#[test]
+fn tradeoff_writes_rows_and_an_undominated_front_independent_of_threads() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = write(d.path(), "s.json", SPHERE);
+    let run = |threads: &str, out: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_cube"))
+            .args(["tradeoff", "--scene", &scene, "--out", out, "--repeat", "1"])
+            .env("RAYON_NUM_THREADS", threads)
+            .current_dir(d.path())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        read_json(&d.path().join(out).join("tradeoff.json"))
+    };
+    let a = run("1", "one");
+    for f in ["tradeoff.csv", "tradeoff.png", "tradeoff.md"] {
+        let len = std::fs::metadata(d.path().join("one").join(f))
+            .unwrap()
+            .len();
+        assert!(len > 100, "{f}: {len} bytes");
+    }
+    let points = a["points"].as_array().unwrap();
+    for m in [
+        "reference",
+        "cube4l",
+        "cube3",
+        "true3d",
+        "quantized-projection",
+        "quantized-splat",
+    ] {
+        assert!(
+            points.iter().filter(|p| p["method"] == m).count() >= 2,
+            "{m}"
+        );
+    }
+    assert_eq!(a["clock"]["assumed"], true);
+    let cost = |p: &serde_json::Value| p["cost_seconds"].as_f64().unwrap();
+    let err = |p: &serde_json::Value| p["error"]["rel_euclid_pct"].as_f64().unwrap();
+    let front: Vec<_> = points.iter().filter(|p| p["pareto"] == true).collect();
+    assert!(!front.is_empty());
+    for f in &front {
+        for p in points {
+            let dominates =
+                cost(p) <= cost(f) && err(p) <= err(f) && (cost(p) < cost(f) || err(p) < err(f));
+            assert!(!dominates, "{p} dominates {f}");
+        }
+    }
+    // Every width varied shows in the image, or is named as not reaching it.
+    let md = std::fs::read_to_string(d.path().join("one/tradeoff.md")).unwrap();
+    assert!(
+        md.contains("Pareto front") && md.contains("ASSUMED"),
+        "{md}"
+    );
+    // Determinism: the same rows but for the times.
+    let b = run("2", "two");
+    let strip = |v: &serde_json::Value| {
+        v["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| {
+                (
+                    p["method"].clone(),
+                    p["params"].clone(),
+                    p["error"].clone(),
+                    p["image_hash"].clone(),
+                    p["clocks"].clone(),
+                )
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(strip(&a), strip(&b));
+    // Bad input: one line naming the option.
+    let o = cube(
+        &[
+            "tradeoff",
+            "--scene",
+            &scene,
+            "--out",
+            "x",
+            "--methods",
+            "cube5",
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("cube5") && e.lines().count() == 1,
+        "{e}"
+    );
+    let persp = SPHERE.replace(
+        r#""projection": "parallel", "rotate_deg": [70, 30, 0]"#,
+        r#""projection": "perspective", "eye": [7.5, 7.5, -40], "target": [7.5, 7.5, 7.5], "up": [0, 1, 0], "fov_deg": 30"#,
+    );
+    let persp = write(d.path(), "p.json", &persp);
+    let o = cube(
+        &[
+            "tradeoff",
+            "--scene",
+            &persp,
+            "--out",
+            "x",
+            "--methods",
+            "quantized-splat",
+        ],
+        d.path(),
+    );
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        o.status.code() == Some(1) && e.contains("orthographic") && e.lines().count() == 1,
+        "{e}"
+    );
+    let file = write(d.path(), "f", "user data");
+    let o = cube(&["tradeoff", "--scene", &scene, "--out", &file], d.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(
+        std::fs::read_to_string(d.path().join("f")).unwrap(),
+        "user data"
+    );
+}
