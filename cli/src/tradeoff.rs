@@ -363,8 +363,8 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         let s = patched(&base, &v.patch, &scene, dir.as_deref())
             .with_context(|| format!("{} {label}", f.name))?;
         let bits = s.hardware.voxel_bits;
-        if !volumes.contains_key(&bits) {
-            volumes.insert(bits, Volume::from_spec(&s.volume, bits)?);
+        if let std::collections::hash_map::Entry::Vacant(e) = volumes.entry(bits) {
+            e.insert(Volume::from_spec(&s.volume, bits)?);
         }
         let r = render_repeat(
             &s,
