@@ -231,7 +231,18 @@ pub fn render_arch(
             Ok(Rendered {
                 image,
                 seconds: t.elapsed().as_secs_f64(),
-                extra: json!({ "step": ref_step }),
+                // The camera in dataset voxel coordinates, for aligning
+                // other renderers (scripts/peers).
+                extra: json!({
+                    "step": ref_step,
+                    "camera": {
+                        "right": cam.right.to_array(),
+                        "up": cam.up.to_array(),
+                        "forward": cam.forward.to_array(),
+                        "origin": cam.origin.to_array(),
+                        "scale": cam.scale,
+                    },
+                }),
             })
         }
     }

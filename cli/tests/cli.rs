@@ -654,6 +654,26 @@ fn quantized_paths_report_stages_and_compare_judges_their_images() {
         let c = read_json(&cj)["error"]["rel_euclid_pct"].as_f64().unwrap();
         assert!((c - e).abs() < 0.3, "{arch}: compare {c} vs render {e}");
     }
+    // The reference's JSON carries its camera, for aligning peers.
+    let rj = d.path().join("ref.json");
+    let o = cube(
+        &[
+            "render",
+            "--scene",
+            &scene,
+            "--arch",
+            "reference",
+            "--json",
+            rj.to_str().unwrap(),
+        ],
+        d.path(),
+    );
+    assert!(o.status.success());
+    let cam = &read_json(&rj)["details"]["camera"];
+    assert!(
+        cam["scale"].as_f64().unwrap() > 0.0 && cam["forward"].as_array().unwrap().len() == 3,
+        "{cam}"
+    );
     // A wrong size, a missing file and a bad --repeat are one line each.
     let small = SPHERE.replace("[48, 40]", "[20, 20]");
     let small = write(d.path(), "small.json", &small);
