@@ -3,9 +3,9 @@
 //! region at offset `(e_x, e_y)` from the voxel, as it reaches the consuming
 //! lane at T.
 //!
-//! The tap keeps its own copy of the lane's composited values, a ring buffer
-//! of block RAM written with the lane's result at its beat's time and read
-//! `delay` beats back (see `pipeline`). The value read reaches lane k over
+//! The tap takes the lane's composited value from `delay - hops` beats back,
+//! from the lane's [`crate::buffer_rows::BufferRows`] (see `pipeline`). That
+//! value reaches lane k over
 //! `hops` neighbour links, one register each; the tap carries `M` link
 //! registers, as many as any `P` needs, takes the value after `hops` of them,
 //! and passes the values after 0..M-1 links on to lane k+1. Its previous
@@ -13,31 +13,24 @@
 //! (`use_prev`, decided by the `tap_network`).
 
 use crate::pipeline::Tap;
-use crate::ram::DepthRam;
 use rust_hdl::prelude::*;
 
-/// A compositing-buffer tap with `M` link registers (`H`-bit ring time).
+/// A compositing-buffer tap with `M` link registers.
 #[derive(LogicBlock)]
-pub struct BufferTap<const H: usize, const M: usize> {
+pub struct BufferTap<const M: usize> {
     pub clock: Signal<In, Clock>,
-    /// Ring-buffer time (the lanes' shared cycle counter).
-    pub now: Signal<In, Bits<H>>,
-    /// The lane's composited value (T+3), written when it is a beat.
-    pub res: Signal<In, Bits<64>>,
-    pub res_beat: Signal<In, Bit>,
+    /// The lane's history at this tap's delay (`BufferRows::tap`).
+    pub read: Signal<In, Bits<64>>,
     /// Take the previous value instead of the current one (partial-beam end).
     pub use_prev: Signal<In, Bit>,
     /// Link register j's input: lane k-1's value after j links (the lane's
     /// port `tC i{j+1}` for tap C).
     pub link_in: [Signal<In, Bits<64>>; M],
     /// The value after j links, passed on to lane k+1 (port `tC s{j}`): the
-    /// ring's read for j = 0, link register j-1's output beyond.
+    /// history's value for j = 0, link register j-1's output beyond.
     pub pass: [Signal<Out, Bits<64>>; M],
     /// The tap's cell at T.
     pub a: Signal<Out, Bits<64>>,
-    ring: DepthRam<Bits<64>, H>,
-    /// Read address - now: hops + 1 - delay (mod 2^H).
-    offset: Constant<Bits<H>>,
     links: [DFF<Bits<64>>; M],
     /// `take[j]`: the value crosses j + 1 links (none set: no link).
     take: [Constant<Bit>; M],
@@ -45,28 +38,22 @@ pub struct BufferTap<const H: usize, const M: usize> {
     prev: DFF<Bits<64>>,
 }
 
-impl<const H: usize, const M: usize> BufferTap<H, M> {
-    /// The tap that `route` describes, reading `ring`. Which neighbour feeds
-    /// the links (`route.left`) is the network's wiring.
-    pub fn new(route: &Tap, ring: DepthRam<Bits<64>, H>) -> Self {
+impl<const M: usize> BufferTap<M> {
+    /// The tap that `route` describes. Which neighbour feeds the links
+    /// (`route.left`) is the network's wiring.
+    pub fn new(route: &Tap) -> Self {
         assert!(
             route.hops as usize <= M,
             "a tap with {M} link registers cannot cross {} links",
             route.hops
         );
-        let mask = (1u64 << H) - 1;
-        let offset = (route.hops as u64 + 1).wrapping_sub(route.delay as u64) & mask;
         BufferTap {
             clock: Default::default(),
-            now: Default::default(),
-            res: Default::default(),
-            res_beat: Default::default(),
+            read: Default::default(),
             use_prev: Default::default(),
             link_in: std::array::from_fn(|_| Default::default()),
             pass: std::array::from_fn(|_| Default::default()),
             a: Default::default(),
-            ring,
-            offset: Constant::new(offset.to_bits()),
             links: std::array::from_fn(|_| Default::default()),
             take: std::array::from_fn(|j| Constant::new(route.hops as usize == j + 1)),
             stream: Default::default(),
@@ -75,30 +62,22 @@ impl<const H: usize, const M: usize> BufferTap<H, M> {
     }
 }
 
-impl<const H: usize, const M: usize> Logic for BufferTap<H, M> {
+impl<const M: usize> Logic for BufferTap<M> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, prev);
-        // Written at its beat's time (T+3 is now - 3), read so that the value
-        // is at T after its links.
-        self.ring.read_clock.next = self.clock.val();
-        self.ring.write_clock.next = self.clock.val();
-        self.ring.read_address.next = self.now.val() + self.offset.val();
-        self.ring.write_address.next = self.now.val() - 3;
-        self.ring.write_data.next = self.res.val();
-        self.ring.write_enable.next = self.res_beat.val();
         for j in 0..M {
             self.links[j].clock.next = self.clock.val();
             self.links[j].d.next = self.link_in[j].val();
         }
         // (`0..M.min(1)`: j = 0 only, and only for a tap with links.)
         for j in 0..M.min(1) {
-            self.pass[j].next = self.ring.read_data.val();
+            self.pass[j].next = self.read.val();
         }
         for j in 1..M {
             self.pass[j].next = self.links[j - 1].q.val();
         }
-        self.stream.next = self.ring.read_data.val();
+        self.stream.next = self.read.val();
         for j in 0..M {
             if self.take[j].val() {
                 self.stream.next = self.links[j].q.val();

@@ -1,9 +1,11 @@
 //! The voxel stream that feeds a Cube-4L pipeline's shader (§3, Fig. 18,
 //! with the ABC gradient unit of §3.2): the CFB lane's beat, or, when the
 //! scene needs gradients (shading or gradient opacity), the gradient unit's
-//! output a slice later, which carries the same beat with its
-//! central-difference gradient. This is the shader input (T-1) of
-//! `pipeline`'s timing.
+//! voxel a slice later with its central-difference gradient, beside the
+//! control the late CFB recomputes for it (the lane's control ports then
+//! carry the late CFB's, see `Pipeline`). This is the shader input (T-1) of
+//! `pipeline`'s timing. Halo slices, streamed for the gradient only, are
+//! not beats.
 //!
 //! Otherwise the gradient unit is built disabled and drives zero
 //! (`export::prune` removes it from the emitted Verilog), and the stream is
@@ -17,9 +19,8 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct LaneFeed<const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// Ring-buffer time of the gradient unit.
-    pub now: Signal<In, Bits<H>>,
-    /// The CFB lane's outputs (as `PipeLane`'s ports).
+    /// The CFB lane's outputs (as `PipeLane`'s ports; the control is the
+    /// late CFB's when the scene has gradients).
     pub beat_valid: Signal<In, Bit>,
     pub value: Signal<In, Bits<16>>,
     pub x: Signal<In, Bits<16>>,
@@ -82,7 +83,6 @@ impl<const H: usize> LaneFeed<H> {
     pub fn new(c: &PipelineConfig) -> LaneFeed<H> {
         LaneFeed {
             clock: Default::default(),
-            now: Default::default(),
             beat_valid: Default::default(),
             value: Default::default(),
             x: Default::default(),
@@ -145,23 +145,8 @@ impl<const H: usize> Logic for LaneFeed<H> {
     fn update(&mut self) {
         // ABC gradient unit: fed by the CFB, linked to the neighbours.
         self.abc.clock.next = self.clock.val();
-        self.abc.now.next = self.now.val();
-        self.abc.valid.next = self.beat_valid.val() & !self.halo.val();
         self.abc.value.next = self.value.val();
         self.abc.x.next = self.x.val();
-        self.abc.y.next = self.y.val();
-        self.abc.pad.next = self.pad.val();
-        self.abc.invalid.next = self.invalid.val();
-        self.abc.sr.next = self.sr.val();
-        self.abc.er.next = self.er.val();
-        self.abc.at_edge.next = self.at_edge.val();
-        self.abc.face.next = self.face.val();
-        self.abc.base_x.next = self.base_x.val();
-        self.abc.base_y.next = self.base_y.val();
-        self.abc.dx_neg.next = self.dx_neg.val();
-        self.abc.dx_mag.next = self.dx_mag.val();
-        self.abc.dy_neg.next = self.dy_neg.val();
-        self.abc.dy_mag.next = self.dy_mag.val();
         self.abc.from_left_xm.next = self.g_from_left_xm.val();
         self.abc.from_left_ym.next = self.g_from_left_ym.val();
         self.abc.from_left_zm.next = self.g_from_left_zm.val();
@@ -180,41 +165,27 @@ impl<const H: usize> Logic for LaneFeed<H> {
         self.gy_mag.next = self.abc.gy_mag.val();
         self.gz_neg.next = self.abc.gz_neg.val();
         self.gz_mag.next = self.abc.gz_mag.val();
-        // The stream: the gradient unit's, or the CFB's.
+        // The voxel: the gradient unit's, or the CFB's; its control as it
+        // comes.
         if self.use_gradient.val() {
-            self.o_valid.next = self.abc.o_valid.val();
             self.o_value.next = self.abc.o_value.val();
-            self.o_x.next = self.abc.o_x.val();
-            self.o_y.next = self.abc.o_y.val();
-            self.o_pad.next = self.abc.o_pad.val();
-            self.o_invalid.next = self.abc.o_invalid.val();
-            self.o_sr.next = self.abc.o_sr.val();
-            self.o_er.next = self.abc.o_er.val();
-            self.o_edge.next = self.abc.o_edge.val();
-            self.o_face.next = self.abc.o_face.val();
-            self.o_base_x.next = self.abc.o_base_x.val();
-            self.o_base_y.next = self.abc.o_base_y.val();
-            self.o_dx_neg.next = self.abc.o_dx_neg.val();
-            self.o_dx_mag.next = self.abc.o_dx_mag.val();
-            self.o_dy_neg.next = self.abc.o_dy_neg.val();
-            self.o_dy_mag.next = self.abc.o_dy_mag.val();
         } else {
-            self.o_valid.next = self.beat_valid.val();
             self.o_value.next = self.value.val();
-            self.o_x.next = self.x.val();
-            self.o_y.next = self.y.val();
-            self.o_pad.next = self.pad.val();
-            self.o_invalid.next = self.invalid.val();
-            self.o_sr.next = self.sr.val();
-            self.o_er.next = self.er.val();
-            self.o_edge.next = self.at_edge.val();
-            self.o_face.next = self.face.val();
-            self.o_base_x.next = self.base_x.val();
-            self.o_base_y.next = self.base_y.val();
-            self.o_dx_neg.next = self.dx_neg.val();
-            self.o_dx_mag.next = self.dx_mag.val();
-            self.o_dy_neg.next = self.dy_neg.val();
-            self.o_dy_mag.next = self.dy_mag.val();
         }
+        self.o_valid.next = self.beat_valid.val() & !self.halo.val();
+        self.o_x.next = self.x.val();
+        self.o_y.next = self.y.val();
+        self.o_pad.next = self.pad.val();
+        self.o_invalid.next = self.invalid.val();
+        self.o_sr.next = self.sr.val();
+        self.o_er.next = self.er.val();
+        self.o_edge.next = self.at_edge.val();
+        self.o_face.next = self.face.val();
+        self.o_base_x.next = self.base_x.val();
+        self.o_base_y.next = self.base_y.val();
+        self.o_dx_neg.next = self.dx_neg.val();
+        self.o_dx_mag.next = self.dx_mag.val();
+        self.o_dy_neg.next = self.dy_neg.val();
+        self.o_dy_mag.next = self.dy_mag.val();
     }
 }

@@ -13,10 +13,12 @@
 
 pub mod abc_gradient;
 pub mod bilinear;
+pub mod buffer_rows;
 pub mod buffer_tap;
 pub mod cfb;
 pub mod compositor;
 pub mod control_delay;
+pub mod delay_line;
 pub mod divider;
 pub mod lane_feed;
 pub mod pipeline;

@@ -39,7 +39,6 @@
 //! the 2x2 that the constant signs select get 2-word rings
 //! (`PipelineConfig::taps_used`).
 
-use crate::abc_gradient::AbcGradient;
 use crate::bilinear::Bilinear;
 use crate::cfb::{Cfb, CfbConfig};
 use crate::compositor::Compositor;
@@ -174,27 +173,45 @@ impl PipelineConfig {
         })
     }
 
-    /// Address bits of the compositing-buffer tap rings: they hold every
-    /// tap's delay, with a margin of 8.
-    pub fn tap_bits(&self) -> usize {
-        let need = self
-            .taps
-            .iter()
-            .map(|t| t.delay + t.hops + 8)
-            .max()
-            .unwrap();
-        crate::cfb::bits_for(need as u64 + 1) as usize
+    /// Stored bits of a composited word (`ring_fields`).
+    pub fn word_bits(&self) -> u64 {
+        self.ring_fields.iter().map(|f| f.1 as u64).sum()
     }
 
-    /// Smallest ring-buffer address width (`H`) that the build needs: the
-    /// tap rings', and the gradient unit's when the scene has one.
+    /// Delay-line pointer bits (`H`) the build needs for its longest line,
+    /// the compositing-buffer ring or the gradient unit's.
     pub fn history_bits(&self) -> usize {
-        let abc = if self.gradient {
-            AbcGradient::<32>::ring_bits(self.slice_beats, self.beam_beats)
+        let (s, b) = (self.slice_beats, self.beam_beats);
+        let longest = if self.gradient { s - b } else { s - b - 7 };
+        crate::cfb::bits_for(longest as u64 + 1) as usize
+    }
+
+    /// Bits of block RAM the pipelines' buffers hold (not the CFB's
+    /// voxel memory), as built: per lane the compositing-buffer history and
+    /// the gradient unit's B and C slices.
+    pub fn buffer_bits(&self) -> u64 {
+        let (s, b) = (self.slice_beats as u64, self.beam_beats as u64);
+        let row_minus = (0..9).any(|t| self.taps_used[t] && TAPS[t].1 == -1);
+        let history = (s - b - 7 + b + if row_minus { b } else { 0 }) * self.word_bits();
+        let gradient = if self.gradient {
+            (2 * s - 1) * self.voxel_bits as u64
         } else {
             0
         };
-        self.tap_bits().max(abc)
+        self.p as u64 * (history + gradient)
+    }
+
+    /// The least the scene's buffers can hold (Tables 1 and 2 of the paper):
+    /// one slice of composited words, and with gradients two slices of
+    /// voxels, for the pipeline-space slice `n_x * n_y`.
+    pub fn minimum_buffer_bits(&self) -> u64 {
+        let slice = self.cfb.dims[0] as u64 * self.cfb.dims[1] as u64;
+        slice * self.word_bits()
+            + if self.gradient {
+                2 * slice * self.voxel_bits as u64
+            } else {
+                0
+            }
     }
 }
 
@@ -220,9 +237,8 @@ pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
 #[derive(LogicBlock)]
 pub struct PipeLane<const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// Free-running cycle counter shared by all lanes (ring-buffer time).
-    pub now: Signal<In, Bits<H>>,
-    /// The CFB lane's outputs.
+    /// The CFB lane's outputs: the live voxel, and its control, or with a
+    /// gradient unit the late CFB's control for the voxel a slice back.
     pub beat_valid: Signal<In, Bit>,
     pub value: Signal<In, Bits<16>>,
     pub x: Signal<In, Bits<16>>,
@@ -303,7 +319,6 @@ impl<const H: usize> PipeLane<H> {
     fn new(c: &PipelineConfig, shader: Shader, mode: Mode) -> PipeLane<H> {
         PipeLane {
             clock: Default::default(),
-            now: Default::default(),
             beat_valid: Default::default(),
             value: Default::default(),
             x: Default::default(),
@@ -379,7 +394,6 @@ impl<const H: usize> Logic for PipeLane<H> {
     fn update(&mut self) {
         // Input selection (T-1): the CFB's beat, or the gradient unit's.
         self.feed.clock.next = self.clock.val();
-        self.feed.now.next = self.now.val();
         self.feed.beat_valid.next = self.beat_valid.val();
         self.feed.value.next = self.value.val();
         self.feed.x.next = self.x.val();
@@ -442,7 +456,6 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.sample_valid.next = self.shader.valid.val();
         // The compositing-buffer taps (T).
         self.taps.clock.next = self.clock.val();
-        self.taps.now.next = self.now.val();
         self.taps.x.next = self.ctl.x_t.val();
         self.t0s0.next = self.taps.t0s0.val();
         self.taps.t0i1.next = self.t0i1.val();
@@ -548,7 +561,14 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub res: [Signal<Out, Bits<64>>; P],
     pub cfb: Cfb<P, A>,
     pub lanes: [PipeLane<H>; P],
-    now: DFF<Bits<H>>,
+    /// With a gradient unit: the CFB's address generator again, without
+    /// memory, started S + 1 clocks after it (`late_wait` counts down), so
+    /// that the control of the voxel leaving the gradient unit is recomputed
+    /// rather than stored.
+    late: Cfb<P, A>,
+    late_wait: DFF<Bits<32>>,
+    late_delay: Constant<Bits<32>>,
+    gradient: Constant<Bit>,
 }
 
 impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
@@ -584,18 +604,28 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             .into_boxed_slice()
             .try_into()
             .unwrap_or_else(|_| unreachable!());
-        Ok(Self::with_lanes(config, lanes))
+        let cfb = Box::new(Cfb::new(&config.cfb));
+        let late = Box::new(Cfb::new(&CfbConfig {
+            external_memory: true,
+            ..config.cfb
+        }));
+        Ok(Self::with_lanes(config, lanes, cfb, late))
     }
 
-    /// The pipeline around `lanes`. rust-hdl's signals are large (a p = 4
-    /// pipeline takes half a megabyte) and testbenches build pipelines on
-    /// 2 MB test-thread stacks, so the lanes stay boxed until they move into
-    /// place, and this function, kept out of line, writes the pipeline
+    /// The pipeline around `lanes` and the two CFBs. rust-hdl's signals are
+    /// large (a p = 4 pipeline takes half a megabyte) and testbenches build
+    /// pipelines on 2 MB test-thread stacks, so the parts stay boxed until
+    /// they move into place, and this function, kept out of line, writes the pipeline
     /// straight into the caller's result rather than through temporaries in
     /// `new`'s frame.
     #[inline(never)]
-    #[allow(clippy::boxed_local)] // the box keeps the lanes off the stack
-    fn with_lanes(config: &PipelineConfig, lanes: Box<[PipeLane<H>; P]>) -> Self {
+    #[allow(clippy::boxed_local)] // the boxes keep the parts off the stack
+    fn with_lanes(
+        config: &PipelineConfig,
+        lanes: Box<[PipeLane<H>; P]>,
+        cfb: Box<Cfb<P, A>>,
+        late: Box<Cfb<P, A>>,
+    ) -> Self {
         Pipeline {
             clock: Default::default(),
             start: Default::default(),
@@ -617,9 +647,12 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             res_beat: std::array::from_fn(|_| Default::default()),
             res_valid: std::array::from_fn(|_| Default::default()),
             res: std::array::from_fn(|_| Default::default()),
-            cfb: Cfb::new(&config.cfb),
+            cfb: *cfb,
             lanes: *lanes,
-            now: Default::default(),
+            late: *late,
+            late_wait: Default::default(),
+            late_delay: Constant::new(((config.slice_beats + 1) as u64).to_bits()),
+            gradient: Constant::new(config.gradient),
         }
     }
 }
@@ -627,8 +660,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
 impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, now);
-        self.now.d.next = self.now.q.val() + 1;
+        dff_setup!(self, clock, late_wait);
         self.cfb.clock.next = self.clock.val();
         self.cfb.start.next = self.start.val();
         self.cfb.load_enable.next = self.load_enable.val();
@@ -640,10 +672,22 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
         self.n_beam.next = self.cfb.n_beam.val();
         self.n_b.next = self.cfb.n_b.val();
         self.bs.next = self.cfb.bs.val();
+        // The late CFB starts S + 1 clocks after the CFB took its start.
+        self.late_wait.d.next = self.late_wait.q.val();
+        if self.start.val() & !self.cfb.busy.val() {
+            self.late_wait.d.next = self.late_delay.val();
+        } else if self.late_wait.q.val() != 0 {
+            self.late_wait.d.next = self.late_wait.q.val() - 1;
+        }
+        self.late.clock.next = self.clock.val();
+        self.late.start.next = self.late_wait.q.val() == 1;
+        self.late.load_enable.next = false;
+        self.late.load_module.next = 0.into();
+        self.late.load_address.next = 0.into();
+        self.late.load_data.next = 0.into();
         for k in 0..P {
+            self.late.ext_data[k].next = 0.into();
             self.lanes[k].clock.next = self.clock.val();
-            self.lanes[k].now.next = self.now.q.val();
-            self.lanes[k].beat_valid.next = self.cfb.valid.val();
             self.cfb.ext_data[k].next = self.ext_data[k].val();
             self.ext_addr[k].next = self.cfb.ext_addr[k].val();
             self.px_valid[k].next = self.lanes[k].px_valid.val();
@@ -654,21 +698,46 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.res_valid[k].next = self.lanes[k].res_valid.val();
             self.res[k].next = self.lanes[k].res.val();
             self.lanes[k].value.next = self.cfb.value[k].val();
-            self.lanes[k].x.next = self.cfb.x[k].val();
-            self.lanes[k].y.next = self.cfb.y[k].val();
-            self.lanes[k].pad.next = self.cfb.pad[k].val();
-            self.lanes[k].invalid.next = self.cfb.invalid[k].val();
-            self.lanes[k].halo.next = self.cfb.halo[k].val();
-            self.lanes[k].sr.next = self.cfb.sr[k].val();
-            self.lanes[k].er.next = self.cfb.er[k].val();
-            self.lanes[k].base_x.next = self.cfb.base_x[k].val();
-            self.lanes[k].base_y.next = self.cfb.base_y[k].val();
-            self.lanes[k].face.next = self.cfb.face[k].val();
-            self.lanes[k].at_edge.next = self.cfb.at_edge[k].val();
-            self.lanes[k].dx_neg.next = self.cfb.dx_neg[k].val();
-            self.lanes[k].dx_mag.next = self.cfb.dx_mag[k].val();
-            self.lanes[k].dy_neg.next = self.cfb.dy_neg[k].val();
-            self.lanes[k].dy_mag.next = self.cfb.dy_mag[k].val();
+        }
+        // The lanes' control: the CFB's, or the late CFB's with a gradient unit.
+        if self.gradient.val() {
+            for k in 0..P {
+                self.lanes[k].beat_valid.next = self.late.valid.val();
+                self.lanes[k].x.next = self.late.x[k].val();
+                self.lanes[k].y.next = self.late.y[k].val();
+                self.lanes[k].pad.next = self.late.pad[k].val();
+                self.lanes[k].invalid.next = self.late.invalid[k].val();
+                self.lanes[k].halo.next = self.late.halo[k].val();
+                self.lanes[k].sr.next = self.late.sr[k].val();
+                self.lanes[k].er.next = self.late.er[k].val();
+                self.lanes[k].base_x.next = self.late.base_x[k].val();
+                self.lanes[k].base_y.next = self.late.base_y[k].val();
+                self.lanes[k].face.next = self.late.face[k].val();
+                self.lanes[k].at_edge.next = self.late.at_edge[k].val();
+                self.lanes[k].dx_neg.next = self.late.dx_neg[k].val();
+                self.lanes[k].dx_mag.next = self.late.dx_mag[k].val();
+                self.lanes[k].dy_neg.next = self.late.dy_neg[k].val();
+                self.lanes[k].dy_mag.next = self.late.dy_mag[k].val();
+            }
+        } else {
+            for k in 0..P {
+                self.lanes[k].beat_valid.next = self.cfb.valid.val();
+                self.lanes[k].x.next = self.cfb.x[k].val();
+                self.lanes[k].y.next = self.cfb.y[k].val();
+                self.lanes[k].pad.next = self.cfb.pad[k].val();
+                self.lanes[k].invalid.next = self.cfb.invalid[k].val();
+                self.lanes[k].halo.next = self.cfb.halo[k].val();
+                self.lanes[k].sr.next = self.cfb.sr[k].val();
+                self.lanes[k].er.next = self.cfb.er[k].val();
+                self.lanes[k].base_x.next = self.cfb.base_x[k].val();
+                self.lanes[k].base_y.next = self.cfb.base_y[k].val();
+                self.lanes[k].face.next = self.cfb.face[k].val();
+                self.lanes[k].at_edge.next = self.cfb.at_edge[k].val();
+                self.lanes[k].dx_neg.next = self.cfb.dx_neg[k].val();
+                self.lanes[k].dx_mag.next = self.cfb.dx_mag[k].val();
+                self.lanes[k].dy_neg.next = self.cfb.dy_neg[k].val();
+                self.lanes[k].dy_mag.next = self.cfb.dy_mag[k].val();
+            }
         }
         // Nearest-neighbour links: lane k-1 feeds lane k (lane P-1 feeds 0).
         for k in 1..P {

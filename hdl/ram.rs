@@ -38,9 +38,17 @@ pub struct DepthRam<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
     /// `2^bits` words (1 <= bits <= N), all zero.
     pub fn new(bits: usize) -> Self {
+        Self::with_words(1 << bits)
+    }
+
+    /// `words` words (2 <= words <= 2^N), all zero, addressed by the low
+    /// `bits_for(words)` address bits; the addresses given must stay below
+    /// `words` (a [`crate::delay_line::DelayLine`]'s pointer wraps there).
+    pub fn with_words(words: usize) -> Self {
+        let bits = crate::cfb::bits_for(words as u64) as usize;
         assert!(
-            (1..=N).contains(&bits),
-            "a {N}-bit address holds 1 to {N} address bits, not {bits}"
+            words >= 2 && bits <= N,
+            "a {N}-bit address holds 2 to 2^{N} words, not {words}"
         );
         DepthRam {
             read_address: Default::default(),
@@ -51,7 +59,7 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
             write_data: Default::default(),
             write_enable: Default::default(),
             _bits: bits,
-            _words: vec![D::default(); 1 << bits],
+            _words: vec![D::default(); words],
             _init: 0,
             _fields: Vec::new(),
             _mask: None,
@@ -86,7 +94,12 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
         }
     }
 
-    /// Initial contents, from word 0 (at most `2^bits` words). Only for
+    /// Words of storage.
+    pub fn depth(&self) -> usize {
+        self._words.len()
+    }
+
+    /// Initial contents, from word 0 (at most `depth` words). Only for
     /// whole words or one field at bit 0.
     pub fn preload(&mut self, words: impl IntoIterator<Item = D>) {
         assert!(
@@ -181,7 +194,7 @@ always @(posedge write_clock) begin
 end
 ",
             d = self.word_bits() - 1,
-            last = (1usize << self._bits) - 1,
+            last = self._words.len() - 1,
         ))
     }
 

@@ -12,31 +12,15 @@
 //! beat older, and the x+1 taps, whose streams run one beat newer, take
 //! their current value only at its last lane.
 
+use crate::buffer_rows::BufferRows;
 use crate::buffer_tap::BufferTap;
 use crate::pipeline::PipelineConfig;
-use crate::ram::DepthRam;
 use rust_hdl::prelude::*;
 
-/// Tap `tap`'s compositing-buffer ring: as deep as the taps' delays (2 words
-/// when the tap is never selected), as wide as the composited values can be.
-fn tap_ring<const H: usize>(c: &PipelineConfig, tap: usize) -> DepthRam<Bits<64>, H> {
-    let mask = c
-        .ring_fields
-        .iter()
-        .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo);
-    let bits = if c.taps_used[tap] {
-        c.tap_bits().min(H)
-    } else {
-        1
-    };
-    DepthRam::new(bits).fields(&c.ring_fields, mask.to_bits())
-}
-
-/// The nine taps of one lane (`H`-bit ring time).
+/// The nine taps of one lane, over its history (`H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct TapNetwork<const H: usize> {
     pub clock: Signal<In, Clock>,
-    pub now: Signal<In, Bits<H>>,
     /// The voxel's x at T (for the partial-beam ends).
     pub x: Signal<In, Bits<16>>,
     /// The lane's composited value (T+3) and its beat flag.
@@ -68,15 +52,16 @@ pub struct TapNetwork<const H: usize> {
     pub t8il: Signal<In, Bits<64>>,
     /// The nine cells at T, in `TAPS` order.
     pub a: [Signal<Out, Bits<64>>; 9],
-    t0: BufferTap<H, 1>,
-    t1: BufferTap<H, 2>,
-    t2: BufferTap<H, 0>,
-    t3: BufferTap<H, 2>,
-    t4: BufferTap<H, 0>,
-    t5: BufferTap<H, 3>,
-    t6: BufferTap<H, 1>,
-    t7: BufferTap<H, 1>,
-    t8: BufferTap<H, 1>,
+    rows: BufferRows<H>,
+    t0: BufferTap<1>,
+    t1: BufferTap<2>,
+    t2: BufferTap<0>,
+    t3: BufferTap<2>,
+    t4: BufferTap<0>,
+    t5: BufferTap<3>,
+    t6: BufferTap<1>,
+    t7: BufferTap<1>,
+    t8: BufferTap<1>,
     /// Tap (+1, +1) links from lane k+1.
     left8: Constant<Bit>,
     p_mask: Constant<Bits<16>>,
@@ -85,11 +70,14 @@ pub struct TapNetwork<const H: usize> {
 }
 
 impl<const H: usize> TapNetwork<H> {
+    /// Bits of block RAM in the lane's history.
+    pub fn memory_bits(&self) -> usize {
+        self.rows.memory_bits()
+    }
+
     pub fn new(c: &PipelineConfig) -> TapNetwork<H> {
-        let ring = |tap| tap_ring::<H>(c, tap);
         TapNetwork {
             clock: Default::default(),
-            now: Default::default(),
             x: Default::default(),
             res: Default::default(),
             res_beat: Default::default(),
@@ -117,15 +105,16 @@ impl<const H: usize> TapNetwork<H> {
             t8i1: Default::default(),
             t8il: Default::default(),
             a: Default::default(),
-            t0: BufferTap::new(&c.taps[0], ring(0)),
-            t1: BufferTap::new(&c.taps[1], ring(1)),
-            t2: BufferTap::new(&c.taps[2], ring(2)),
-            t3: BufferTap::new(&c.taps[3], ring(3)),
-            t4: BufferTap::new(&c.taps[4], ring(4)),
-            t5: BufferTap::new(&c.taps[5], ring(5)),
-            t6: BufferTap::new(&c.taps[6], ring(6)),
-            t7: BufferTap::new(&c.taps[7], ring(7)),
-            t8: BufferTap::new(&c.taps[8], ring(8)),
+            rows: BufferRows::new(c),
+            t0: BufferTap::new(&c.taps[0]),
+            t1: BufferTap::new(&c.taps[1]),
+            t2: BufferTap::new(&c.taps[2]),
+            t3: BufferTap::new(&c.taps[3]),
+            t4: BufferTap::new(&c.taps[4]),
+            t5: BufferTap::new(&c.taps[5]),
+            t6: BufferTap::new(&c.taps[6]),
+            t7: BufferTap::new(&c.taps[7]),
+            t8: BufferTap::new(&c.taps[8]),
             left8: Constant::new(c.taps[8].left),
             p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
             first: Default::default(),
@@ -137,59 +126,51 @@ impl<const H: usize> TapNetwork<H> {
 impl<const H: usize> Logic for TapNetwork<H> {
     #[hdl_gen]
     fn update(&mut self) {
+        // The lane's history, read once.
+        self.rows.clock.next = self.clock.val();
+        self.rows.res.next = self.res.val();
+        self.rows.res_beat.next = self.res_beat.val();
         // Partial-beam ends.
         self.first.next = (self.x.val() & self.p_mask.val()) == 0;
         self.last.next = (self.x.val() & self.p_mask.val()) == self.p_mask.val();
         // Tap (0, 0): one link.
         self.t0.clock.next = self.clock.val();
-        self.t0.now.next = self.now.val();
-        self.t0.res.next = self.res.val();
-        self.t0.res_beat.next = self.res_beat.val();
+        self.t0.read.next = self.rows.tap[0].val();
         self.t0.use_prev.next = false;
         self.t0.link_in[0].next = self.t0i1.val();
         self.t0s0.next = self.t0.pass[0].val();
         self.a[0].next = self.t0.a.val();
         // Tap (-1, 0): two links.
         self.t1.clock.next = self.clock.val();
-        self.t1.now.next = self.now.val();
-        self.t1.res.next = self.res.val();
-        self.t1.res_beat.next = self.res_beat.val();
+        self.t1.read.next = self.rows.tap[1].val();
         self.t1.use_prev.next = self.first.val();
         self.t1.link_in[0].next = self.t1i1.val();
         self.t1.link_in[1].next = self.t1i2.val();
         self.t1s0.next = self.t1.pass[0].val();
         self.t1s1.next = self.t1.pass[1].val();
         self.a[1].next = self.t1.a.val();
-        // Tap (+1, 0): the lane's own ring.
+        // Tap (+1, 0): the lane's own history, no link.
         self.t2.clock.next = self.clock.val();
-        self.t2.now.next = self.now.val();
-        self.t2.res.next = self.res.val();
-        self.t2.res_beat.next = self.res_beat.val();
+        self.t2.read.next = self.rows.tap[2].val();
         self.t2.use_prev.next = !self.last.val();
         self.a[2].next = self.t2.a.val();
         // Tap (0, -1): two links.
         self.t3.clock.next = self.clock.val();
-        self.t3.now.next = self.now.val();
-        self.t3.res.next = self.res.val();
-        self.t3.res_beat.next = self.res_beat.val();
+        self.t3.read.next = self.rows.tap[3].val();
         self.t3.use_prev.next = false;
         self.t3.link_in[0].next = self.t3i1.val();
         self.t3.link_in[1].next = self.t3i2.val();
         self.t3s0.next = self.t3.pass[0].val();
         self.t3s1.next = self.t3.pass[1].val();
         self.a[3].next = self.t3.a.val();
-        // Tap (0, +1): the lane's own ring.
+        // Tap (0, +1): the lane's own history, no link.
         self.t4.clock.next = self.clock.val();
-        self.t4.now.next = self.now.val();
-        self.t4.res.next = self.res.val();
-        self.t4.res_beat.next = self.res_beat.val();
+        self.t4.read.next = self.rows.tap[4].val();
         self.t4.use_prev.next = false;
         self.a[4].next = self.t4.a.val();
         // Tap (-1, -1): three links.
         self.t5.clock.next = self.clock.val();
-        self.t5.now.next = self.now.val();
-        self.t5.res.next = self.res.val();
-        self.t5.res_beat.next = self.res_beat.val();
+        self.t5.read.next = self.rows.tap[5].val();
         self.t5.use_prev.next = self.first.val();
         self.t5.link_in[0].next = self.t5i1.val();
         self.t5.link_in[1].next = self.t5i2.val();
@@ -200,27 +181,21 @@ impl<const H: usize> Logic for TapNetwork<H> {
         self.a[5].next = self.t5.a.val();
         // Tap (+1, -1): one link.
         self.t6.clock.next = self.clock.val();
-        self.t6.now.next = self.now.val();
-        self.t6.res.next = self.res.val();
-        self.t6.res_beat.next = self.res_beat.val();
+        self.t6.read.next = self.rows.tap[6].val();
         self.t6.use_prev.next = !self.last.val();
         self.t6.link_in[0].next = self.t6i1.val();
         self.t6s0.next = self.t6.pass[0].val();
         self.a[6].next = self.t6.a.val();
         // Tap (-1, +1): one link.
         self.t7.clock.next = self.clock.val();
-        self.t7.now.next = self.now.val();
-        self.t7.res.next = self.res.val();
-        self.t7.res_beat.next = self.res_beat.val();
+        self.t7.read.next = self.rows.tap[7].val();
         self.t7.use_prev.next = self.first.val();
         self.t7.link_in[0].next = self.t7i1.val();
         self.t7s0.next = self.t7.pass[0].val();
         self.a[7].next = self.t7.a.val();
         // Tap (+1, +1): one link, from lane k+1 when P > 2.
         self.t8.clock.next = self.clock.val();
-        self.t8.now.next = self.now.val();
-        self.t8.res.next = self.res.val();
-        self.t8.res_beat.next = self.res_beat.val();
+        self.t8.read.next = self.rows.tap[8].val();
         self.t8.use_prev.next = !self.last.val();
         // Assigned once, not as a default and an override (see `BufferTap`).
         if self.left8.val() {

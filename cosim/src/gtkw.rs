@@ -61,7 +61,7 @@ pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
         );
         let lane = format!("{top}.lanes${k}");
         let abc = [
-            "o_valid",
+            "value[15:0]",
             "o_value[15:0]",
             "gx_neg",
             "gx_mag[15:0]",

@@ -1,24 +1,9 @@
-module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$0$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
-    input wire  valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
-    input wire  [15:0] y;
-    input wire  pad;
-    input wire  invalid;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  sr;
-    input wire  er;
-    input wire  at_edge;
-    input wire  [2:0] face;
-    input wire  [15:0] base_x;
-    input wire  [15:0] base_y;
     input wire  [15:0] from_left_xm;
     input wire  [15:0] from_left_ym;
     input wire  [15:0] from_left_zm;
@@ -31,22 +16,7 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] to_left_xp;
     output reg  [15:0] to_left_yp;
     output reg  [15:0] to_left_zp;
-    output reg  o_valid;
     output reg  [15:0] o_value;
-    output reg  [15:0] o_x;
-    output reg  [15:0] o_y;
-    output reg  o_pad;
-    output reg  o_invalid;
-    output reg  o_dx_neg;
-    output reg  [15:0] o_dx_mag;
-    output reg  o_dy_neg;
-    output reg  [15:0] o_dy_mag;
-    output reg  o_sr;
-    output reg  o_er;
-    output reg  o_edge;
-    output reg  [2:0] o_face;
-    output reg  [15:0] o_base_x;
-    output reg  [15:0] o_base_y;
     output reg  gx_neg;
     output reg  [15:0] gx_mag;
     output reg  gy_neg;
@@ -55,58 +25,35 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] gz_mag;
     
     // Constant declarations
-    localparam  off_centre = 16'hc000;
-    localparam  off_xm = 16'hc001;
-    localparam  off_ym = 16'hbfc1;
-    localparam  off_zm = 16'h8001;
-    localparam  off_xp = 16'hc002;
-    localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [15:0] centre$read_address;
-    reg  centre$read_clock;
-    wire  [122:0] centre$read_data;
-    reg  [15:0] centre$write_address;
-    reg  centre$write_clock;
-    reg  [122:0] centre$write_data;
-    reg  centre$write_enable;
-    reg  [15:0] ring_xm$read_address;
-    reg  ring_xm$read_clock;
-    wire  [15:0] ring_xm$read_data;
-    reg  [15:0] ring_xm$write_address;
-    reg  ring_xm$write_clock;
-    reg  [15:0] ring_xm$write_data;
-    reg  ring_xm$write_enable;
-    reg  [15:0] ring_ym$read_address;
-    reg  ring_ym$read_clock;
-    wire  [15:0] ring_ym$read_data;
-    reg  [15:0] ring_ym$write_address;
-    reg  ring_ym$write_clock;
-    reg  [15:0] ring_ym$write_data;
-    reg  ring_ym$write_enable;
-    reg  [15:0] ring_zm$read_address;
-    reg  ring_zm$read_clock;
-    wire  [15:0] ring_zm$read_data;
-    reg  [15:0] ring_zm$write_address;
-    reg  ring_zm$write_clock;
-    reg  [15:0] ring_zm$write_data;
-    reg  ring_zm$write_enable;
-    reg  [15:0] ring_xp$read_address;
-    reg  ring_xp$read_clock;
-    wire  [15:0] ring_xp$read_data;
-    reg  [15:0] ring_xp$write_address;
-    reg  ring_xp$write_clock;
-    reg  [15:0] ring_xp$write_data;
-    reg  ring_xp$write_enable;
-    reg  [15:0] ring_yp$read_address;
-    reg  ring_yp$read_clock;
-    wire  [15:0] ring_yp$read_data;
-    reg  [15:0] ring_yp$write_address;
-    reg  ring_yp$write_clock;
-    reg  [15:0] ring_yp$write_data;
-    reg  ring_yp$write_enable;
+    reg  line_a$clock;
+    reg  [15:0] line_a$data_in;
+    reg  line_a$write_enable;
+    wire  [15:0] line_a$data_out;
+    reg  [15:0] reg_yp$d;
+    wire  [15:0] reg_yp$q;
+    reg  reg_yp$clock;
+    reg  line_b$clock;
+    reg  [15:0] line_b$data_in;
+    reg  line_b$write_enable;
+    wire  [15:0] line_b$data_out;
+    reg  [15:0] reg_xm$d;
+    wire  [15:0] reg_xm$q;
+    reg  reg_xm$clock;
+    reg  [15:0] reg_c$d;
+    wire  [15:0] reg_c$q;
+    reg  reg_c$clock;
+    reg  line_c$clock;
+    reg  [15:0] line_c$data_in;
+    reg  line_c$write_enable;
+    wire  [15:0] line_c$data_out;
+    reg  line_d$clock;
+    reg  [15:0] line_d$data_in;
+    reg  line_d$write_enable;
+    wire  [15:0] line_d$data_out;
     reg  [15:0] hop_xm$d;
     wire  [15:0] hop_xm$q;
     reg  hop_xm$clock;
@@ -133,64 +80,48 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     reg  prev_xp$clock;
     
     // Local signals
-    reg  [122:0] word;
     reg  [15:0] xm;
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$0$feed$abc$centre centre(
-        .read_address(centre$read_address),
-        .read_clock(centre$read_clock),
-        .read_data(centre$read_data),
-        .write_address(centre$write_address),
-        .write_clock(centre$write_clock),
-        .write_data(centre$write_data),
-        .write_enable(centre$write_enable)
+    top$lanes$0$feed$abc$line_a line_a(
+        .clock(line_a$clock),
+        .data_in(line_a$data_in),
+        .write_enable(line_a$write_enable),
+        .data_out(line_a$data_out)
     );
-    top$lanes$0$feed$abc$ring_xm ring_xm(
-        .read_address(ring_xm$read_address),
-        .read_clock(ring_xm$read_clock),
-        .read_data(ring_xm$read_data),
-        .write_address(ring_xm$write_address),
-        .write_clock(ring_xm$write_clock),
-        .write_data(ring_xm$write_data),
-        .write_enable(ring_xm$write_enable)
+    top$lanes$0$feed$abc$reg_yp reg_yp(
+        .d(reg_yp$d),
+        .q(reg_yp$q),
+        .clock(reg_yp$clock)
     );
-    top$lanes$0$feed$abc$ring_ym ring_ym(
-        .read_address(ring_ym$read_address),
-        .read_clock(ring_ym$read_clock),
-        .read_data(ring_ym$read_data),
-        .write_address(ring_ym$write_address),
-        .write_clock(ring_ym$write_clock),
-        .write_data(ring_ym$write_data),
-        .write_enable(ring_ym$write_enable)
+    top$lanes$0$feed$abc$line_b line_b(
+        .clock(line_b$clock),
+        .data_in(line_b$data_in),
+        .write_enable(line_b$write_enable),
+        .data_out(line_b$data_out)
     );
-    top$lanes$0$feed$abc$ring_zm ring_zm(
-        .read_address(ring_zm$read_address),
-        .read_clock(ring_zm$read_clock),
-        .read_data(ring_zm$read_data),
-        .write_address(ring_zm$write_address),
-        .write_clock(ring_zm$write_clock),
-        .write_data(ring_zm$write_data),
-        .write_enable(ring_zm$write_enable)
+    top$lanes$0$feed$abc$reg_xm reg_xm(
+        .d(reg_xm$d),
+        .q(reg_xm$q),
+        .clock(reg_xm$clock)
     );
-    top$lanes$0$feed$abc$ring_xp ring_xp(
-        .read_address(ring_xp$read_address),
-        .read_clock(ring_xp$read_clock),
-        .read_data(ring_xp$read_data),
-        .write_address(ring_xp$write_address),
-        .write_clock(ring_xp$write_clock),
-        .write_data(ring_xp$write_data),
-        .write_enable(ring_xp$write_enable)
+    top$lanes$0$feed$abc$reg_c reg_c(
+        .d(reg_c$d),
+        .q(reg_c$q),
+        .clock(reg_c$clock)
     );
-    top$lanes$0$feed$abc$ring_yp ring_yp(
-        .read_address(ring_yp$read_address),
-        .read_clock(ring_yp$read_clock),
-        .read_data(ring_yp$read_data),
-        .write_address(ring_yp$write_address),
-        .write_clock(ring_yp$write_clock),
-        .write_data(ring_yp$write_data),
-        .write_enable(ring_yp$write_enable)
+    top$lanes$0$feed$abc$line_c line_c(
+        .clock(line_c$clock),
+        .data_in(line_c$data_in),
+        .write_enable(line_c$write_enable),
+        .data_out(line_c$data_out)
+    );
+    top$lanes$0$feed$abc$line_d line_d(
+        .clock(line_d$clock),
+        .data_in(line_d$data_in),
+        .write_enable(line_d$write_enable),
+        .data_out(line_d$data_out)
     );
     top$lanes$0$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
@@ -235,6 +166,9 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     
     // Update code
     always @(*) begin
+        reg_yp$clock = clock;
+        reg_xm$clock = clock;
+        reg_c$clock = clock;
         hop_xm$clock = clock;
         hop_ym$clock = clock;
         hop_zm$clock = clock;
@@ -243,6 +177,9 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        reg_yp$d = reg_yp$q;
+        reg_xm$d = reg_xm$q;
+        reg_c$d = reg_c$q;
         hop_xm$d = hop_xm$q;
         hop_ym$d = hop_ym$q;
         hop_zm$d = hop_zm$q;
@@ -251,48 +188,26 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
-        centre$read_clock = clock;
-        centre$write_clock = clock;
-        ring_xm$read_clock = clock;
-        ring_xm$write_clock = clock;
-        ring_ym$read_clock = clock;
-        ring_ym$write_clock = clock;
-        ring_zm$read_clock = clock;
-        ring_zm$write_clock = clock;
-        ring_xp$read_clock = clock;
-        ring_xp$write_clock = clock;
-        ring_yp$read_clock = clock;
-        ring_yp$write_clock = clock;
-        word = 123'(value) | (123'(x) << 'h10) | (123'(y) << 'h20) | (123'(base_x) << 'h30) | (123'(base_y) << 'h40) | (123'(valid) << 'h50) | (123'(pad) << 'h51) | (123'(sr) << 'h52) | (123'(er) << 'h53) | (123'(at_edge) << 'h54) | (123'(face) << 'h55) | (123'(dx_neg) << 'h58) | (123'(dx_mag) << 'h59) | (123'(dy_neg) << 'h69) | (123'(dy_mag) << 'h6a) | (123'(invalid) << 'h7a);
-        centre$write_address = now;
-        centre$write_data = word;
-        centre$write_enable = 1'b1;
-        ring_xm$write_address = now;
-        ring_xm$write_data = value;
-        ring_xm$write_enable = 1'b1;
-        ring_ym$write_address = now;
-        ring_ym$write_data = value;
-        ring_ym$write_enable = 1'b1;
-        ring_zm$write_address = now;
-        ring_zm$write_data = value;
-        ring_zm$write_enable = 1'b1;
-        ring_xp$write_address = now;
-        ring_xp$write_data = value;
-        ring_xp$write_enable = 1'b1;
-        ring_yp$write_address = now;
-        ring_yp$write_data = value;
-        ring_yp$write_enable = 1'b1;
-        centre$read_address = now + off_centre;
-        ring_xm$read_address = now + off_xm;
-        ring_ym$read_address = now + off_ym;
-        ring_zm$read_address = now + off_zm;
-        ring_xp$read_address = now + off_xp;
-        ring_yp$read_address = now + off_yp;
-        to_right_xm = ring_xm$read_data;
-        to_right_ym = ring_ym$read_data;
-        to_right_zm = ring_zm$read_data;
-        to_left_xp = ring_xp$read_data;
-        to_left_yp = ring_yp$read_data;
+        line_a$clock = clock;
+        line_b$clock = clock;
+        line_c$clock = clock;
+        line_d$clock = clock;
+        line_a$data_in = value;
+        line_a$write_enable = 1'b1;
+        reg_yp$d = line_a$data_out;
+        line_b$data_in = line_a$data_out;
+        line_b$write_enable = 1'b1;
+        reg_xm$d = line_b$data_out;
+        reg_c$d = reg_xm$q;
+        line_c$data_in = reg_xm$q;
+        line_c$write_enable = 1'b1;
+        line_d$data_in = line_c$data_out;
+        line_d$write_enable = 1'b1;
+        to_left_yp = reg_yp$q;
+        to_left_xp = line_b$data_out;
+        to_right_xm = reg_xm$q;
+        to_right_ym = line_c$data_out;
+        to_right_zm = line_d$data_out;
         to_left_zp = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
@@ -303,11 +218,11 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         prev_xm$d = hop_xm$q;
         prev_xp$d = hop_xp$q;
         xm = hop_xm$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == 'h0) begin
+        if ((x & p_mask) == 'h0) begin
             xm = prev_xm$q;
         end
         xp = prev_xp$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == p_mask) begin
+        if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
         gx_neg = xp < xm;
@@ -325,22 +240,7 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         if (hop_zp$q < hop_zm$q) begin
             gz_mag = hop_zm$q - hop_zp$q;
         end
-        o_value = centre$read_data[('h0)+:(16)];
-        o_x = centre$read_data[('h10)+:(16)];
-        o_y = centre$read_data[('h20)+:(16)];
-        o_base_x = centre$read_data[('h30)+:(16)];
-        o_base_y = centre$read_data[('h40)+:(16)];
-        o_valid = centre$read_data['h50];
-        o_pad = centre$read_data['h51];
-        o_sr = centre$read_data['h52];
-        o_er = centre$read_data['h53];
-        o_edge = centre$read_data['h54];
-        o_face = centre$read_data[('h55)+:(3)];
-        o_dx_neg = centre$read_data['h58];
-        o_dx_mag = centre$read_data[('h59)+:(16)];
-        o_dy_neg = centre$read_data['h69];
-        o_dy_mag = centre$read_data[('h6a)+:(16)];
-        o_invalid = centre$read_data['h7a];
+        o_value = reg_c$q;
         if (~enabled) begin
             to_right_xm = 'h0;
             to_right_ym = 'h0;
@@ -349,55 +249,16 @@ module top$lanes$0$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
             to_left_yp = 'h0;
             to_left_zp = 'h0;
             o_value = 'h0;
-            o_x = 'h0;
-            o_y = 'h0;
-            o_dx_mag = 'h0;
-            o_dy_mag = 'h0;
-            o_base_x = 'h0;
-            o_base_y = 'h0;
             gx_mag = 'h0;
             gy_mag = 'h0;
             gz_mag = 'h0;
-            o_valid = 1'b0;
-            o_pad = 1'b0;
-            o_invalid = 1'b0;
-            o_dx_neg = 1'b0;
-            o_dy_neg = 1'b0;
-            o_sr = 1'b0;
-            o_er = 1'b0;
-            o_edge = 1'b0;
             gx_neg = 1'b0;
             gy_neg = 1'b0;
             gz_neg = 1'b0;
-            o_face = 'h0;
         end
     end
     
 endmodule // top$lanes$0$feed$abc
-module top$lanes$0$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [122:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [122:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [122:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
-       end
-    end
-endmodule // top$lanes$0$feed$abc$centre
 module top$lanes$0$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -500,6 +361,566 @@ module top$lanes$0$feed$abc$hop_zp(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$hop_zp
+module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbe;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_a$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_a$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_a$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_a
+module top$lanes$0$feed$abc$line_a$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$one
+module top$lanes$0$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$ptr
+module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16318:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_a$ram
+module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_b$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_b$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_b$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_b
+module top$lanes$0$feed$abc$line_b$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$one
+module top$lanes$0$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$ptr
+module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_b$ram
+module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_c$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_c$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_c$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_c
+module top$lanes$0$feed$abc$line_c$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$one
+module top$lanes$0$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$ptr
+module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_c$ram
+module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbf;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_d$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_d$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_d$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_d
+module top$lanes$0$feed$abc$line_d$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$one
+module top$lanes$0$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$ptr
+module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16319:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_d$ram
 module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -534,147 +955,63 @@ module top$lanes$0$feed$abc$prev_xp(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$prev_xp
-module top$lanes$0$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$lanes$0$feed$abc$reg_c(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$0$feed$abc$ring_xm
-module top$lanes$0$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$0$feed$abc$reg_c
+module top$lanes$0$feed$abc$reg_xm(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$0$feed$abc$ring_xp
-module top$lanes$0$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$0$feed$abc$reg_xm
+module top$lanes$0$feed$abc$reg_yp(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$0$feed$abc$ring_ym
-module top$lanes$0$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$feed$abc$ring_yp
-module top$lanes$0$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$feed$abc$ring_zm
-module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+          
+endmodule // top$lanes$0$feed$abc$reg_yp
+module top$lanes$1$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
-    input wire  valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
-    input wire  [15:0] y;
-    input wire  pad;
-    input wire  invalid;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  sr;
-    input wire  er;
-    input wire  at_edge;
-    input wire  [2:0] face;
-    input wire  [15:0] base_x;
-    input wire  [15:0] base_y;
     input wire  [15:0] from_left_xm;
     input wire  [15:0] from_left_ym;
     input wire  [15:0] from_left_zm;
@@ -687,22 +1024,7 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] to_left_xp;
     output reg  [15:0] to_left_yp;
     output reg  [15:0] to_left_zp;
-    output reg  o_valid;
     output reg  [15:0] o_value;
-    output reg  [15:0] o_x;
-    output reg  [15:0] o_y;
-    output reg  o_pad;
-    output reg  o_invalid;
-    output reg  o_dx_neg;
-    output reg  [15:0] o_dx_mag;
-    output reg  o_dy_neg;
-    output reg  [15:0] o_dy_mag;
-    output reg  o_sr;
-    output reg  o_er;
-    output reg  o_edge;
-    output reg  [2:0] o_face;
-    output reg  [15:0] o_base_x;
-    output reg  [15:0] o_base_y;
     output reg  gx_neg;
     output reg  [15:0] gx_mag;
     output reg  gy_neg;
@@ -711,58 +1033,35 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] gz_mag;
     
     // Constant declarations
-    localparam  off_centre = 16'hc000;
-    localparam  off_xm = 16'hc001;
-    localparam  off_ym = 16'hbfc1;
-    localparam  off_zm = 16'h8001;
-    localparam  off_xp = 16'hc002;
-    localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [15:0] centre$read_address;
-    reg  centre$read_clock;
-    wire  [122:0] centre$read_data;
-    reg  [15:0] centre$write_address;
-    reg  centre$write_clock;
-    reg  [122:0] centre$write_data;
-    reg  centre$write_enable;
-    reg  [15:0] ring_xm$read_address;
-    reg  ring_xm$read_clock;
-    wire  [15:0] ring_xm$read_data;
-    reg  [15:0] ring_xm$write_address;
-    reg  ring_xm$write_clock;
-    reg  [15:0] ring_xm$write_data;
-    reg  ring_xm$write_enable;
-    reg  [15:0] ring_ym$read_address;
-    reg  ring_ym$read_clock;
-    wire  [15:0] ring_ym$read_data;
-    reg  [15:0] ring_ym$write_address;
-    reg  ring_ym$write_clock;
-    reg  [15:0] ring_ym$write_data;
-    reg  ring_ym$write_enable;
-    reg  [15:0] ring_zm$read_address;
-    reg  ring_zm$read_clock;
-    wire  [15:0] ring_zm$read_data;
-    reg  [15:0] ring_zm$write_address;
-    reg  ring_zm$write_clock;
-    reg  [15:0] ring_zm$write_data;
-    reg  ring_zm$write_enable;
-    reg  [15:0] ring_xp$read_address;
-    reg  ring_xp$read_clock;
-    wire  [15:0] ring_xp$read_data;
-    reg  [15:0] ring_xp$write_address;
-    reg  ring_xp$write_clock;
-    reg  [15:0] ring_xp$write_data;
-    reg  ring_xp$write_enable;
-    reg  [15:0] ring_yp$read_address;
-    reg  ring_yp$read_clock;
-    wire  [15:0] ring_yp$read_data;
-    reg  [15:0] ring_yp$write_address;
-    reg  ring_yp$write_clock;
-    reg  [15:0] ring_yp$write_data;
-    reg  ring_yp$write_enable;
+    reg  line_a$clock;
+    reg  [15:0] line_a$data_in;
+    reg  line_a$write_enable;
+    wire  [15:0] line_a$data_out;
+    reg  [15:0] reg_yp$d;
+    wire  [15:0] reg_yp$q;
+    reg  reg_yp$clock;
+    reg  line_b$clock;
+    reg  [15:0] line_b$data_in;
+    reg  line_b$write_enable;
+    wire  [15:0] line_b$data_out;
+    reg  [15:0] reg_xm$d;
+    wire  [15:0] reg_xm$q;
+    reg  reg_xm$clock;
+    reg  [15:0] reg_c$d;
+    wire  [15:0] reg_c$q;
+    reg  reg_c$clock;
+    reg  line_c$clock;
+    reg  [15:0] line_c$data_in;
+    reg  line_c$write_enable;
+    wire  [15:0] line_c$data_out;
+    reg  line_d$clock;
+    reg  [15:0] line_d$data_in;
+    reg  line_d$write_enable;
+    wire  [15:0] line_d$data_out;
     reg  [15:0] hop_xm$d;
     wire  [15:0] hop_xm$q;
     reg  hop_xm$clock;
@@ -789,64 +1088,48 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     reg  prev_xp$clock;
     
     // Local signals
-    reg  [122:0] word;
     reg  [15:0] xm;
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$1$feed$abc$centre centre(
-        .read_address(centre$read_address),
-        .read_clock(centre$read_clock),
-        .read_data(centre$read_data),
-        .write_address(centre$write_address),
-        .write_clock(centre$write_clock),
-        .write_data(centre$write_data),
-        .write_enable(centre$write_enable)
+    top$lanes$1$feed$abc$line_a line_a(
+        .clock(line_a$clock),
+        .data_in(line_a$data_in),
+        .write_enable(line_a$write_enable),
+        .data_out(line_a$data_out)
     );
-    top$lanes$1$feed$abc$ring_xm ring_xm(
-        .read_address(ring_xm$read_address),
-        .read_clock(ring_xm$read_clock),
-        .read_data(ring_xm$read_data),
-        .write_address(ring_xm$write_address),
-        .write_clock(ring_xm$write_clock),
-        .write_data(ring_xm$write_data),
-        .write_enable(ring_xm$write_enable)
+    top$lanes$1$feed$abc$reg_yp reg_yp(
+        .d(reg_yp$d),
+        .q(reg_yp$q),
+        .clock(reg_yp$clock)
     );
-    top$lanes$1$feed$abc$ring_ym ring_ym(
-        .read_address(ring_ym$read_address),
-        .read_clock(ring_ym$read_clock),
-        .read_data(ring_ym$read_data),
-        .write_address(ring_ym$write_address),
-        .write_clock(ring_ym$write_clock),
-        .write_data(ring_ym$write_data),
-        .write_enable(ring_ym$write_enable)
+    top$lanes$1$feed$abc$line_b line_b(
+        .clock(line_b$clock),
+        .data_in(line_b$data_in),
+        .write_enable(line_b$write_enable),
+        .data_out(line_b$data_out)
     );
-    top$lanes$1$feed$abc$ring_zm ring_zm(
-        .read_address(ring_zm$read_address),
-        .read_clock(ring_zm$read_clock),
-        .read_data(ring_zm$read_data),
-        .write_address(ring_zm$write_address),
-        .write_clock(ring_zm$write_clock),
-        .write_data(ring_zm$write_data),
-        .write_enable(ring_zm$write_enable)
+    top$lanes$1$feed$abc$reg_xm reg_xm(
+        .d(reg_xm$d),
+        .q(reg_xm$q),
+        .clock(reg_xm$clock)
     );
-    top$lanes$1$feed$abc$ring_xp ring_xp(
-        .read_address(ring_xp$read_address),
-        .read_clock(ring_xp$read_clock),
-        .read_data(ring_xp$read_data),
-        .write_address(ring_xp$write_address),
-        .write_clock(ring_xp$write_clock),
-        .write_data(ring_xp$write_data),
-        .write_enable(ring_xp$write_enable)
+    top$lanes$1$feed$abc$reg_c reg_c(
+        .d(reg_c$d),
+        .q(reg_c$q),
+        .clock(reg_c$clock)
     );
-    top$lanes$1$feed$abc$ring_yp ring_yp(
-        .read_address(ring_yp$read_address),
-        .read_clock(ring_yp$read_clock),
-        .read_data(ring_yp$read_data),
-        .write_address(ring_yp$write_address),
-        .write_clock(ring_yp$write_clock),
-        .write_data(ring_yp$write_data),
-        .write_enable(ring_yp$write_enable)
+    top$lanes$1$feed$abc$line_c line_c(
+        .clock(line_c$clock),
+        .data_in(line_c$data_in),
+        .write_enable(line_c$write_enable),
+        .data_out(line_c$data_out)
+    );
+    top$lanes$1$feed$abc$line_d line_d(
+        .clock(line_d$clock),
+        .data_in(line_d$data_in),
+        .write_enable(line_d$write_enable),
+        .data_out(line_d$data_out)
     );
     top$lanes$1$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
@@ -891,6 +1174,9 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     
     // Update code
     always @(*) begin
+        reg_yp$clock = clock;
+        reg_xm$clock = clock;
+        reg_c$clock = clock;
         hop_xm$clock = clock;
         hop_ym$clock = clock;
         hop_zm$clock = clock;
@@ -899,6 +1185,9 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        reg_yp$d = reg_yp$q;
+        reg_xm$d = reg_xm$q;
+        reg_c$d = reg_c$q;
         hop_xm$d = hop_xm$q;
         hop_ym$d = hop_ym$q;
         hop_zm$d = hop_zm$q;
@@ -907,48 +1196,26 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
-        centre$read_clock = clock;
-        centre$write_clock = clock;
-        ring_xm$read_clock = clock;
-        ring_xm$write_clock = clock;
-        ring_ym$read_clock = clock;
-        ring_ym$write_clock = clock;
-        ring_zm$read_clock = clock;
-        ring_zm$write_clock = clock;
-        ring_xp$read_clock = clock;
-        ring_xp$write_clock = clock;
-        ring_yp$read_clock = clock;
-        ring_yp$write_clock = clock;
-        word = 123'(value) | (123'(x) << 'h10) | (123'(y) << 'h20) | (123'(base_x) << 'h30) | (123'(base_y) << 'h40) | (123'(valid) << 'h50) | (123'(pad) << 'h51) | (123'(sr) << 'h52) | (123'(er) << 'h53) | (123'(at_edge) << 'h54) | (123'(face) << 'h55) | (123'(dx_neg) << 'h58) | (123'(dx_mag) << 'h59) | (123'(dy_neg) << 'h69) | (123'(dy_mag) << 'h6a) | (123'(invalid) << 'h7a);
-        centre$write_address = now;
-        centre$write_data = word;
-        centre$write_enable = 1'b1;
-        ring_xm$write_address = now;
-        ring_xm$write_data = value;
-        ring_xm$write_enable = 1'b1;
-        ring_ym$write_address = now;
-        ring_ym$write_data = value;
-        ring_ym$write_enable = 1'b1;
-        ring_zm$write_address = now;
-        ring_zm$write_data = value;
-        ring_zm$write_enable = 1'b1;
-        ring_xp$write_address = now;
-        ring_xp$write_data = value;
-        ring_xp$write_enable = 1'b1;
-        ring_yp$write_address = now;
-        ring_yp$write_data = value;
-        ring_yp$write_enable = 1'b1;
-        centre$read_address = now + off_centre;
-        ring_xm$read_address = now + off_xm;
-        ring_ym$read_address = now + off_ym;
-        ring_zm$read_address = now + off_zm;
-        ring_xp$read_address = now + off_xp;
-        ring_yp$read_address = now + off_yp;
-        to_right_xm = ring_xm$read_data;
-        to_right_ym = ring_ym$read_data;
-        to_right_zm = ring_zm$read_data;
-        to_left_xp = ring_xp$read_data;
-        to_left_yp = ring_yp$read_data;
+        line_a$clock = clock;
+        line_b$clock = clock;
+        line_c$clock = clock;
+        line_d$clock = clock;
+        line_a$data_in = value;
+        line_a$write_enable = 1'b1;
+        reg_yp$d = line_a$data_out;
+        line_b$data_in = line_a$data_out;
+        line_b$write_enable = 1'b1;
+        reg_xm$d = line_b$data_out;
+        reg_c$d = reg_xm$q;
+        line_c$data_in = reg_xm$q;
+        line_c$write_enable = 1'b1;
+        line_d$data_in = line_c$data_out;
+        line_d$write_enable = 1'b1;
+        to_left_yp = reg_yp$q;
+        to_left_xp = line_b$data_out;
+        to_right_xm = reg_xm$q;
+        to_right_ym = line_c$data_out;
+        to_right_zm = line_d$data_out;
         to_left_zp = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
@@ -959,11 +1226,11 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         prev_xm$d = hop_xm$q;
         prev_xp$d = hop_xp$q;
         xm = hop_xm$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == 'h0) begin
+        if ((x & p_mask) == 'h0) begin
             xm = prev_xm$q;
         end
         xp = prev_xp$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == p_mask) begin
+        if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
         gx_neg = xp < xm;
@@ -981,22 +1248,7 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         if (hop_zp$q < hop_zm$q) begin
             gz_mag = hop_zm$q - hop_zp$q;
         end
-        o_value = centre$read_data[('h0)+:(16)];
-        o_x = centre$read_data[('h10)+:(16)];
-        o_y = centre$read_data[('h20)+:(16)];
-        o_base_x = centre$read_data[('h30)+:(16)];
-        o_base_y = centre$read_data[('h40)+:(16)];
-        o_valid = centre$read_data['h50];
-        o_pad = centre$read_data['h51];
-        o_sr = centre$read_data['h52];
-        o_er = centre$read_data['h53];
-        o_edge = centre$read_data['h54];
-        o_face = centre$read_data[('h55)+:(3)];
-        o_dx_neg = centre$read_data['h58];
-        o_dx_mag = centre$read_data[('h59)+:(16)];
-        o_dy_neg = centre$read_data['h69];
-        o_dy_mag = centre$read_data[('h6a)+:(16)];
-        o_invalid = centre$read_data['h7a];
+        o_value = reg_c$q;
         if (~enabled) begin
             to_right_xm = 'h0;
             to_right_ym = 'h0;
@@ -1005,55 +1257,16 @@ module top$lanes$1$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
             to_left_yp = 'h0;
             to_left_zp = 'h0;
             o_value = 'h0;
-            o_x = 'h0;
-            o_y = 'h0;
-            o_dx_mag = 'h0;
-            o_dy_mag = 'h0;
-            o_base_x = 'h0;
-            o_base_y = 'h0;
             gx_mag = 'h0;
             gy_mag = 'h0;
             gz_mag = 'h0;
-            o_valid = 1'b0;
-            o_pad = 1'b0;
-            o_invalid = 1'b0;
-            o_dx_neg = 1'b0;
-            o_dy_neg = 1'b0;
-            o_sr = 1'b0;
-            o_er = 1'b0;
-            o_edge = 1'b0;
             gx_neg = 1'b0;
             gy_neg = 1'b0;
             gz_neg = 1'b0;
-            o_face = 'h0;
         end
     end
     
 endmodule // top$lanes$1$feed$abc
-module top$lanes$1$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [122:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [122:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [122:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
-       end
-    end
-endmodule // top$lanes$1$feed$abc$centre
 module top$lanes$1$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -1156,6 +1369,566 @@ module top$lanes$1$feed$abc$hop_zp(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$hop_zp
+module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbe;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_a$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_a$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_a$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_a
+module top$lanes$1$feed$abc$line_a$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$one
+module top$lanes$1$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$ptr
+module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16318:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_a$ram
+module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_b$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_b$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_b$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_b
+module top$lanes$1$feed$abc$line_b$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$one
+module top$lanes$1$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$ptr
+module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_b$ram
+module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_c$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_c$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_c$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_c
+module top$lanes$1$feed$abc$line_c$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$one
+module top$lanes$1$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$ptr
+module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_c$ram
+module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbf;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_d$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_d$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_d$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_d
+module top$lanes$1$feed$abc$line_d$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$one
+module top$lanes$1$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$ptr
+module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16319:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_d$ram
 module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -1190,147 +1963,63 @@ module top$lanes$1$feed$abc$prev_xp(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$prev_xp
-module top$lanes$1$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$lanes$1$feed$abc$reg_c(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$1$feed$abc$ring_xm
-module top$lanes$1$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$1$feed$abc$reg_c
+module top$lanes$1$feed$abc$reg_xm(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$1$feed$abc$ring_xp
-module top$lanes$1$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$1$feed$abc$reg_xm
+module top$lanes$1$feed$abc$reg_yp(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$1$feed$abc$ring_ym
-module top$lanes$1$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$feed$abc$ring_yp
-module top$lanes$1$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$feed$abc$ring_zm
-module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+          
+endmodule // top$lanes$1$feed$abc$reg_yp
+module top$lanes$2$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
-    input wire  valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
-    input wire  [15:0] y;
-    input wire  pad;
-    input wire  invalid;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  sr;
-    input wire  er;
-    input wire  at_edge;
-    input wire  [2:0] face;
-    input wire  [15:0] base_x;
-    input wire  [15:0] base_y;
     input wire  [15:0] from_left_xm;
     input wire  [15:0] from_left_ym;
     input wire  [15:0] from_left_zm;
@@ -1343,22 +2032,7 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] to_left_xp;
     output reg  [15:0] to_left_yp;
     output reg  [15:0] to_left_zp;
-    output reg  o_valid;
     output reg  [15:0] o_value;
-    output reg  [15:0] o_x;
-    output reg  [15:0] o_y;
-    output reg  o_pad;
-    output reg  o_invalid;
-    output reg  o_dx_neg;
-    output reg  [15:0] o_dx_mag;
-    output reg  o_dy_neg;
-    output reg  [15:0] o_dy_mag;
-    output reg  o_sr;
-    output reg  o_er;
-    output reg  o_edge;
-    output reg  [2:0] o_face;
-    output reg  [15:0] o_base_x;
-    output reg  [15:0] o_base_y;
     output reg  gx_neg;
     output reg  [15:0] gx_mag;
     output reg  gy_neg;
@@ -1367,58 +2041,35 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] gz_mag;
     
     // Constant declarations
-    localparam  off_centre = 16'hc000;
-    localparam  off_xm = 16'hc001;
-    localparam  off_ym = 16'hbfc1;
-    localparam  off_zm = 16'h8001;
-    localparam  off_xp = 16'hc002;
-    localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [15:0] centre$read_address;
-    reg  centre$read_clock;
-    wire  [122:0] centre$read_data;
-    reg  [15:0] centre$write_address;
-    reg  centre$write_clock;
-    reg  [122:0] centre$write_data;
-    reg  centre$write_enable;
-    reg  [15:0] ring_xm$read_address;
-    reg  ring_xm$read_clock;
-    wire  [15:0] ring_xm$read_data;
-    reg  [15:0] ring_xm$write_address;
-    reg  ring_xm$write_clock;
-    reg  [15:0] ring_xm$write_data;
-    reg  ring_xm$write_enable;
-    reg  [15:0] ring_ym$read_address;
-    reg  ring_ym$read_clock;
-    wire  [15:0] ring_ym$read_data;
-    reg  [15:0] ring_ym$write_address;
-    reg  ring_ym$write_clock;
-    reg  [15:0] ring_ym$write_data;
-    reg  ring_ym$write_enable;
-    reg  [15:0] ring_zm$read_address;
-    reg  ring_zm$read_clock;
-    wire  [15:0] ring_zm$read_data;
-    reg  [15:0] ring_zm$write_address;
-    reg  ring_zm$write_clock;
-    reg  [15:0] ring_zm$write_data;
-    reg  ring_zm$write_enable;
-    reg  [15:0] ring_xp$read_address;
-    reg  ring_xp$read_clock;
-    wire  [15:0] ring_xp$read_data;
-    reg  [15:0] ring_xp$write_address;
-    reg  ring_xp$write_clock;
-    reg  [15:0] ring_xp$write_data;
-    reg  ring_xp$write_enable;
-    reg  [15:0] ring_yp$read_address;
-    reg  ring_yp$read_clock;
-    wire  [15:0] ring_yp$read_data;
-    reg  [15:0] ring_yp$write_address;
-    reg  ring_yp$write_clock;
-    reg  [15:0] ring_yp$write_data;
-    reg  ring_yp$write_enable;
+    reg  line_a$clock;
+    reg  [15:0] line_a$data_in;
+    reg  line_a$write_enable;
+    wire  [15:0] line_a$data_out;
+    reg  [15:0] reg_yp$d;
+    wire  [15:0] reg_yp$q;
+    reg  reg_yp$clock;
+    reg  line_b$clock;
+    reg  [15:0] line_b$data_in;
+    reg  line_b$write_enable;
+    wire  [15:0] line_b$data_out;
+    reg  [15:0] reg_xm$d;
+    wire  [15:0] reg_xm$q;
+    reg  reg_xm$clock;
+    reg  [15:0] reg_c$d;
+    wire  [15:0] reg_c$q;
+    reg  reg_c$clock;
+    reg  line_c$clock;
+    reg  [15:0] line_c$data_in;
+    reg  line_c$write_enable;
+    wire  [15:0] line_c$data_out;
+    reg  line_d$clock;
+    reg  [15:0] line_d$data_in;
+    reg  line_d$write_enable;
+    wire  [15:0] line_d$data_out;
     reg  [15:0] hop_xm$d;
     wire  [15:0] hop_xm$q;
     reg  hop_xm$clock;
@@ -1445,64 +2096,48 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     reg  prev_xp$clock;
     
     // Local signals
-    reg  [122:0] word;
     reg  [15:0] xm;
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$2$feed$abc$centre centre(
-        .read_address(centre$read_address),
-        .read_clock(centre$read_clock),
-        .read_data(centre$read_data),
-        .write_address(centre$write_address),
-        .write_clock(centre$write_clock),
-        .write_data(centre$write_data),
-        .write_enable(centre$write_enable)
+    top$lanes$2$feed$abc$line_a line_a(
+        .clock(line_a$clock),
+        .data_in(line_a$data_in),
+        .write_enable(line_a$write_enable),
+        .data_out(line_a$data_out)
     );
-    top$lanes$2$feed$abc$ring_xm ring_xm(
-        .read_address(ring_xm$read_address),
-        .read_clock(ring_xm$read_clock),
-        .read_data(ring_xm$read_data),
-        .write_address(ring_xm$write_address),
-        .write_clock(ring_xm$write_clock),
-        .write_data(ring_xm$write_data),
-        .write_enable(ring_xm$write_enable)
+    top$lanes$2$feed$abc$reg_yp reg_yp(
+        .d(reg_yp$d),
+        .q(reg_yp$q),
+        .clock(reg_yp$clock)
     );
-    top$lanes$2$feed$abc$ring_ym ring_ym(
-        .read_address(ring_ym$read_address),
-        .read_clock(ring_ym$read_clock),
-        .read_data(ring_ym$read_data),
-        .write_address(ring_ym$write_address),
-        .write_clock(ring_ym$write_clock),
-        .write_data(ring_ym$write_data),
-        .write_enable(ring_ym$write_enable)
+    top$lanes$2$feed$abc$line_b line_b(
+        .clock(line_b$clock),
+        .data_in(line_b$data_in),
+        .write_enable(line_b$write_enable),
+        .data_out(line_b$data_out)
     );
-    top$lanes$2$feed$abc$ring_zm ring_zm(
-        .read_address(ring_zm$read_address),
-        .read_clock(ring_zm$read_clock),
-        .read_data(ring_zm$read_data),
-        .write_address(ring_zm$write_address),
-        .write_clock(ring_zm$write_clock),
-        .write_data(ring_zm$write_data),
-        .write_enable(ring_zm$write_enable)
+    top$lanes$2$feed$abc$reg_xm reg_xm(
+        .d(reg_xm$d),
+        .q(reg_xm$q),
+        .clock(reg_xm$clock)
     );
-    top$lanes$2$feed$abc$ring_xp ring_xp(
-        .read_address(ring_xp$read_address),
-        .read_clock(ring_xp$read_clock),
-        .read_data(ring_xp$read_data),
-        .write_address(ring_xp$write_address),
-        .write_clock(ring_xp$write_clock),
-        .write_data(ring_xp$write_data),
-        .write_enable(ring_xp$write_enable)
+    top$lanes$2$feed$abc$reg_c reg_c(
+        .d(reg_c$d),
+        .q(reg_c$q),
+        .clock(reg_c$clock)
     );
-    top$lanes$2$feed$abc$ring_yp ring_yp(
-        .read_address(ring_yp$read_address),
-        .read_clock(ring_yp$read_clock),
-        .read_data(ring_yp$read_data),
-        .write_address(ring_yp$write_address),
-        .write_clock(ring_yp$write_clock),
-        .write_data(ring_yp$write_data),
-        .write_enable(ring_yp$write_enable)
+    top$lanes$2$feed$abc$line_c line_c(
+        .clock(line_c$clock),
+        .data_in(line_c$data_in),
+        .write_enable(line_c$write_enable),
+        .data_out(line_c$data_out)
+    );
+    top$lanes$2$feed$abc$line_d line_d(
+        .clock(line_d$clock),
+        .data_in(line_d$data_in),
+        .write_enable(line_d$write_enable),
+        .data_out(line_d$data_out)
     );
     top$lanes$2$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
@@ -1547,6 +2182,9 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     
     // Update code
     always @(*) begin
+        reg_yp$clock = clock;
+        reg_xm$clock = clock;
+        reg_c$clock = clock;
         hop_xm$clock = clock;
         hop_ym$clock = clock;
         hop_zm$clock = clock;
@@ -1555,6 +2193,9 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        reg_yp$d = reg_yp$q;
+        reg_xm$d = reg_xm$q;
+        reg_c$d = reg_c$q;
         hop_xm$d = hop_xm$q;
         hop_ym$d = hop_ym$q;
         hop_zm$d = hop_zm$q;
@@ -1563,48 +2204,26 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
-        centre$read_clock = clock;
-        centre$write_clock = clock;
-        ring_xm$read_clock = clock;
-        ring_xm$write_clock = clock;
-        ring_ym$read_clock = clock;
-        ring_ym$write_clock = clock;
-        ring_zm$read_clock = clock;
-        ring_zm$write_clock = clock;
-        ring_xp$read_clock = clock;
-        ring_xp$write_clock = clock;
-        ring_yp$read_clock = clock;
-        ring_yp$write_clock = clock;
-        word = 123'(value) | (123'(x) << 'h10) | (123'(y) << 'h20) | (123'(base_x) << 'h30) | (123'(base_y) << 'h40) | (123'(valid) << 'h50) | (123'(pad) << 'h51) | (123'(sr) << 'h52) | (123'(er) << 'h53) | (123'(at_edge) << 'h54) | (123'(face) << 'h55) | (123'(dx_neg) << 'h58) | (123'(dx_mag) << 'h59) | (123'(dy_neg) << 'h69) | (123'(dy_mag) << 'h6a) | (123'(invalid) << 'h7a);
-        centre$write_address = now;
-        centre$write_data = word;
-        centre$write_enable = 1'b1;
-        ring_xm$write_address = now;
-        ring_xm$write_data = value;
-        ring_xm$write_enable = 1'b1;
-        ring_ym$write_address = now;
-        ring_ym$write_data = value;
-        ring_ym$write_enable = 1'b1;
-        ring_zm$write_address = now;
-        ring_zm$write_data = value;
-        ring_zm$write_enable = 1'b1;
-        ring_xp$write_address = now;
-        ring_xp$write_data = value;
-        ring_xp$write_enable = 1'b1;
-        ring_yp$write_address = now;
-        ring_yp$write_data = value;
-        ring_yp$write_enable = 1'b1;
-        centre$read_address = now + off_centre;
-        ring_xm$read_address = now + off_xm;
-        ring_ym$read_address = now + off_ym;
-        ring_zm$read_address = now + off_zm;
-        ring_xp$read_address = now + off_xp;
-        ring_yp$read_address = now + off_yp;
-        to_right_xm = ring_xm$read_data;
-        to_right_ym = ring_ym$read_data;
-        to_right_zm = ring_zm$read_data;
-        to_left_xp = ring_xp$read_data;
-        to_left_yp = ring_yp$read_data;
+        line_a$clock = clock;
+        line_b$clock = clock;
+        line_c$clock = clock;
+        line_d$clock = clock;
+        line_a$data_in = value;
+        line_a$write_enable = 1'b1;
+        reg_yp$d = line_a$data_out;
+        line_b$data_in = line_a$data_out;
+        line_b$write_enable = 1'b1;
+        reg_xm$d = line_b$data_out;
+        reg_c$d = reg_xm$q;
+        line_c$data_in = reg_xm$q;
+        line_c$write_enable = 1'b1;
+        line_d$data_in = line_c$data_out;
+        line_d$write_enable = 1'b1;
+        to_left_yp = reg_yp$q;
+        to_left_xp = line_b$data_out;
+        to_right_xm = reg_xm$q;
+        to_right_ym = line_c$data_out;
+        to_right_zm = line_d$data_out;
         to_left_zp = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
@@ -1615,11 +2234,11 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         prev_xm$d = hop_xm$q;
         prev_xp$d = hop_xp$q;
         xm = hop_xm$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == 'h0) begin
+        if ((x & p_mask) == 'h0) begin
             xm = prev_xm$q;
         end
         xp = prev_xp$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == p_mask) begin
+        if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
         gx_neg = xp < xm;
@@ -1637,22 +2256,7 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         if (hop_zp$q < hop_zm$q) begin
             gz_mag = hop_zm$q - hop_zp$q;
         end
-        o_value = centre$read_data[('h0)+:(16)];
-        o_x = centre$read_data[('h10)+:(16)];
-        o_y = centre$read_data[('h20)+:(16)];
-        o_base_x = centre$read_data[('h30)+:(16)];
-        o_base_y = centre$read_data[('h40)+:(16)];
-        o_valid = centre$read_data['h50];
-        o_pad = centre$read_data['h51];
-        o_sr = centre$read_data['h52];
-        o_er = centre$read_data['h53];
-        o_edge = centre$read_data['h54];
-        o_face = centre$read_data[('h55)+:(3)];
-        o_dx_neg = centre$read_data['h58];
-        o_dx_mag = centre$read_data[('h59)+:(16)];
-        o_dy_neg = centre$read_data['h69];
-        o_dy_mag = centre$read_data[('h6a)+:(16)];
-        o_invalid = centre$read_data['h7a];
+        o_value = reg_c$q;
         if (~enabled) begin
             to_right_xm = 'h0;
             to_right_ym = 'h0;
@@ -1661,55 +2265,16 @@ module top$lanes$2$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
             to_left_yp = 'h0;
             to_left_zp = 'h0;
             o_value = 'h0;
-            o_x = 'h0;
-            o_y = 'h0;
-            o_dx_mag = 'h0;
-            o_dy_mag = 'h0;
-            o_base_x = 'h0;
-            o_base_y = 'h0;
             gx_mag = 'h0;
             gy_mag = 'h0;
             gz_mag = 'h0;
-            o_valid = 1'b0;
-            o_pad = 1'b0;
-            o_invalid = 1'b0;
-            o_dx_neg = 1'b0;
-            o_dy_neg = 1'b0;
-            o_sr = 1'b0;
-            o_er = 1'b0;
-            o_edge = 1'b0;
             gx_neg = 1'b0;
             gy_neg = 1'b0;
             gz_neg = 1'b0;
-            o_face = 'h0;
         end
     end
     
 endmodule // top$lanes$2$feed$abc
-module top$lanes$2$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [122:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [122:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [122:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
-       end
-    end
-endmodule // top$lanes$2$feed$abc$centre
 module top$lanes$2$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -1812,6 +2377,566 @@ module top$lanes$2$feed$abc$hop_zp(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$hop_zp
+module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbe;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_a$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_a$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_a$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_a
+module top$lanes$2$feed$abc$line_a$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$one
+module top$lanes$2$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$ptr
+module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16318:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_a$ram
+module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_b$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_b$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_b$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_b
+module top$lanes$2$feed$abc$line_b$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$one
+module top$lanes$2$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$ptr
+module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_b$ram
+module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_c$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_c$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_c$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_c
+module top$lanes$2$feed$abc$line_c$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$one
+module top$lanes$2$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$ptr
+module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_c$ram
+module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbf;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_d$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_d$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_d$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_d
+module top$lanes$2$feed$abc$line_d$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$one
+module top$lanes$2$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$ptr
+module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16319:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_d$ram
 module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -1846,147 +2971,63 @@ module top$lanes$2$feed$abc$prev_xp(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$prev_xp
-module top$lanes$2$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$lanes$2$feed$abc$reg_c(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$2$feed$abc$ring_xm
-module top$lanes$2$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$2$feed$abc$reg_c
+module top$lanes$2$feed$abc$reg_xm(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$2$feed$abc$ring_xp
-module top$lanes$2$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$2$feed$abc$reg_xm
+module top$lanes$2$feed$abc$reg_yp(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$2$feed$abc$ring_ym
-module top$lanes$2$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$2$feed$abc$ring_yp
-module top$lanes$2$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$2$feed$abc$ring_zm
-module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,dy_neg,dy_mag,sr,er,at_edge,face,base_x,base_y,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+          
+endmodule // top$lanes$2$feed$abc$reg_yp
+module top$lanes$3$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
-    input wire  valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
-    input wire  [15:0] y;
-    input wire  pad;
-    input wire  invalid;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  sr;
-    input wire  er;
-    input wire  at_edge;
-    input wire  [2:0] face;
-    input wire  [15:0] base_x;
-    input wire  [15:0] base_y;
     input wire  [15:0] from_left_xm;
     input wire  [15:0] from_left_ym;
     input wire  [15:0] from_left_zm;
@@ -1999,22 +3040,7 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] to_left_xp;
     output reg  [15:0] to_left_yp;
     output reg  [15:0] to_left_zp;
-    output reg  o_valid;
     output reg  [15:0] o_value;
-    output reg  [15:0] o_x;
-    output reg  [15:0] o_y;
-    output reg  o_pad;
-    output reg  o_invalid;
-    output reg  o_dx_neg;
-    output reg  [15:0] o_dx_mag;
-    output reg  o_dy_neg;
-    output reg  [15:0] o_dy_mag;
-    output reg  o_sr;
-    output reg  o_er;
-    output reg  o_edge;
-    output reg  [2:0] o_face;
-    output reg  [15:0] o_base_x;
-    output reg  [15:0] o_base_y;
     output reg  gx_neg;
     output reg  [15:0] gx_mag;
     output reg  gy_neg;
@@ -2023,58 +3049,35 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     output reg  [15:0] gz_mag;
     
     // Constant declarations
-    localparam  off_centre = 16'hc000;
-    localparam  off_xm = 16'hc001;
-    localparam  off_ym = 16'hbfc1;
-    localparam  off_zm = 16'h8001;
-    localparam  off_xp = 16'hc002;
-    localparam  off_yp = 16'hc041;
     localparam  p_mask = 16'h3;
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [15:0] centre$read_address;
-    reg  centre$read_clock;
-    wire  [122:0] centre$read_data;
-    reg  [15:0] centre$write_address;
-    reg  centre$write_clock;
-    reg  [122:0] centre$write_data;
-    reg  centre$write_enable;
-    reg  [15:0] ring_xm$read_address;
-    reg  ring_xm$read_clock;
-    wire  [15:0] ring_xm$read_data;
-    reg  [15:0] ring_xm$write_address;
-    reg  ring_xm$write_clock;
-    reg  [15:0] ring_xm$write_data;
-    reg  ring_xm$write_enable;
-    reg  [15:0] ring_ym$read_address;
-    reg  ring_ym$read_clock;
-    wire  [15:0] ring_ym$read_data;
-    reg  [15:0] ring_ym$write_address;
-    reg  ring_ym$write_clock;
-    reg  [15:0] ring_ym$write_data;
-    reg  ring_ym$write_enable;
-    reg  [15:0] ring_zm$read_address;
-    reg  ring_zm$read_clock;
-    wire  [15:0] ring_zm$read_data;
-    reg  [15:0] ring_zm$write_address;
-    reg  ring_zm$write_clock;
-    reg  [15:0] ring_zm$write_data;
-    reg  ring_zm$write_enable;
-    reg  [15:0] ring_xp$read_address;
-    reg  ring_xp$read_clock;
-    wire  [15:0] ring_xp$read_data;
-    reg  [15:0] ring_xp$write_address;
-    reg  ring_xp$write_clock;
-    reg  [15:0] ring_xp$write_data;
-    reg  ring_xp$write_enable;
-    reg  [15:0] ring_yp$read_address;
-    reg  ring_yp$read_clock;
-    wire  [15:0] ring_yp$read_data;
-    reg  [15:0] ring_yp$write_address;
-    reg  ring_yp$write_clock;
-    reg  [15:0] ring_yp$write_data;
-    reg  ring_yp$write_enable;
+    reg  line_a$clock;
+    reg  [15:0] line_a$data_in;
+    reg  line_a$write_enable;
+    wire  [15:0] line_a$data_out;
+    reg  [15:0] reg_yp$d;
+    wire  [15:0] reg_yp$q;
+    reg  reg_yp$clock;
+    reg  line_b$clock;
+    reg  [15:0] line_b$data_in;
+    reg  line_b$write_enable;
+    wire  [15:0] line_b$data_out;
+    reg  [15:0] reg_xm$d;
+    wire  [15:0] reg_xm$q;
+    reg  reg_xm$clock;
+    reg  [15:0] reg_c$d;
+    wire  [15:0] reg_c$q;
+    reg  reg_c$clock;
+    reg  line_c$clock;
+    reg  [15:0] line_c$data_in;
+    reg  line_c$write_enable;
+    wire  [15:0] line_c$data_out;
+    reg  line_d$clock;
+    reg  [15:0] line_d$data_in;
+    reg  line_d$write_enable;
+    wire  [15:0] line_d$data_out;
     reg  [15:0] hop_xm$d;
     wire  [15:0] hop_xm$q;
     reg  hop_xm$clock;
@@ -2101,64 +3104,48 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     reg  prev_xp$clock;
     
     // Local signals
-    reg  [122:0] word;
     reg  [15:0] xm;
     reg  [15:0] xp;
     
     // Sub module instances
-    top$lanes$3$feed$abc$centre centre(
-        .read_address(centre$read_address),
-        .read_clock(centre$read_clock),
-        .read_data(centre$read_data),
-        .write_address(centre$write_address),
-        .write_clock(centre$write_clock),
-        .write_data(centre$write_data),
-        .write_enable(centre$write_enable)
+    top$lanes$3$feed$abc$line_a line_a(
+        .clock(line_a$clock),
+        .data_in(line_a$data_in),
+        .write_enable(line_a$write_enable),
+        .data_out(line_a$data_out)
     );
-    top$lanes$3$feed$abc$ring_xm ring_xm(
-        .read_address(ring_xm$read_address),
-        .read_clock(ring_xm$read_clock),
-        .read_data(ring_xm$read_data),
-        .write_address(ring_xm$write_address),
-        .write_clock(ring_xm$write_clock),
-        .write_data(ring_xm$write_data),
-        .write_enable(ring_xm$write_enable)
+    top$lanes$3$feed$abc$reg_yp reg_yp(
+        .d(reg_yp$d),
+        .q(reg_yp$q),
+        .clock(reg_yp$clock)
     );
-    top$lanes$3$feed$abc$ring_ym ring_ym(
-        .read_address(ring_ym$read_address),
-        .read_clock(ring_ym$read_clock),
-        .read_data(ring_ym$read_data),
-        .write_address(ring_ym$write_address),
-        .write_clock(ring_ym$write_clock),
-        .write_data(ring_ym$write_data),
-        .write_enable(ring_ym$write_enable)
+    top$lanes$3$feed$abc$line_b line_b(
+        .clock(line_b$clock),
+        .data_in(line_b$data_in),
+        .write_enable(line_b$write_enable),
+        .data_out(line_b$data_out)
     );
-    top$lanes$3$feed$abc$ring_zm ring_zm(
-        .read_address(ring_zm$read_address),
-        .read_clock(ring_zm$read_clock),
-        .read_data(ring_zm$read_data),
-        .write_address(ring_zm$write_address),
-        .write_clock(ring_zm$write_clock),
-        .write_data(ring_zm$write_data),
-        .write_enable(ring_zm$write_enable)
+    top$lanes$3$feed$abc$reg_xm reg_xm(
+        .d(reg_xm$d),
+        .q(reg_xm$q),
+        .clock(reg_xm$clock)
     );
-    top$lanes$3$feed$abc$ring_xp ring_xp(
-        .read_address(ring_xp$read_address),
-        .read_clock(ring_xp$read_clock),
-        .read_data(ring_xp$read_data),
-        .write_address(ring_xp$write_address),
-        .write_clock(ring_xp$write_clock),
-        .write_data(ring_xp$write_data),
-        .write_enable(ring_xp$write_enable)
+    top$lanes$3$feed$abc$reg_c reg_c(
+        .d(reg_c$d),
+        .q(reg_c$q),
+        .clock(reg_c$clock)
     );
-    top$lanes$3$feed$abc$ring_yp ring_yp(
-        .read_address(ring_yp$read_address),
-        .read_clock(ring_yp$read_clock),
-        .read_data(ring_yp$read_data),
-        .write_address(ring_yp$write_address),
-        .write_clock(ring_yp$write_clock),
-        .write_data(ring_yp$write_data),
-        .write_enable(ring_yp$write_enable)
+    top$lanes$3$feed$abc$line_c line_c(
+        .clock(line_c$clock),
+        .data_in(line_c$data_in),
+        .write_enable(line_c$write_enable),
+        .data_out(line_c$data_out)
+    );
+    top$lanes$3$feed$abc$line_d line_d(
+        .clock(line_d$clock),
+        .data_in(line_d$data_in),
+        .write_enable(line_d$write_enable),
+        .data_out(line_d$data_out)
     );
     top$lanes$3$feed$abc$hop_xm hop_xm(
         .d(hop_xm$d),
@@ -2203,6 +3190,9 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
     
     // Update code
     always @(*) begin
+        reg_yp$clock = clock;
+        reg_xm$clock = clock;
+        reg_c$clock = clock;
         hop_xm$clock = clock;
         hop_ym$clock = clock;
         hop_zm$clock = clock;
@@ -2211,6 +3201,9 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        reg_yp$d = reg_yp$q;
+        reg_xm$d = reg_xm$q;
+        reg_c$d = reg_c$q;
         hop_xm$d = hop_xm$q;
         hop_ym$d = hop_ym$q;
         hop_zm$d = hop_zm$q;
@@ -2219,48 +3212,26 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
-        centre$read_clock = clock;
-        centre$write_clock = clock;
-        ring_xm$read_clock = clock;
-        ring_xm$write_clock = clock;
-        ring_ym$read_clock = clock;
-        ring_ym$write_clock = clock;
-        ring_zm$read_clock = clock;
-        ring_zm$write_clock = clock;
-        ring_xp$read_clock = clock;
-        ring_xp$write_clock = clock;
-        ring_yp$read_clock = clock;
-        ring_yp$write_clock = clock;
-        word = 123'(value) | (123'(x) << 'h10) | (123'(y) << 'h20) | (123'(base_x) << 'h30) | (123'(base_y) << 'h40) | (123'(valid) << 'h50) | (123'(pad) << 'h51) | (123'(sr) << 'h52) | (123'(er) << 'h53) | (123'(at_edge) << 'h54) | (123'(face) << 'h55) | (123'(dx_neg) << 'h58) | (123'(dx_mag) << 'h59) | (123'(dy_neg) << 'h69) | (123'(dy_mag) << 'h6a) | (123'(invalid) << 'h7a);
-        centre$write_address = now;
-        centre$write_data = word;
-        centre$write_enable = 1'b1;
-        ring_xm$write_address = now;
-        ring_xm$write_data = value;
-        ring_xm$write_enable = 1'b1;
-        ring_ym$write_address = now;
-        ring_ym$write_data = value;
-        ring_ym$write_enable = 1'b1;
-        ring_zm$write_address = now;
-        ring_zm$write_data = value;
-        ring_zm$write_enable = 1'b1;
-        ring_xp$write_address = now;
-        ring_xp$write_data = value;
-        ring_xp$write_enable = 1'b1;
-        ring_yp$write_address = now;
-        ring_yp$write_data = value;
-        ring_yp$write_enable = 1'b1;
-        centre$read_address = now + off_centre;
-        ring_xm$read_address = now + off_xm;
-        ring_ym$read_address = now + off_ym;
-        ring_zm$read_address = now + off_zm;
-        ring_xp$read_address = now + off_xp;
-        ring_yp$read_address = now + off_yp;
-        to_right_xm = ring_xm$read_data;
-        to_right_ym = ring_ym$read_data;
-        to_right_zm = ring_zm$read_data;
-        to_left_xp = ring_xp$read_data;
-        to_left_yp = ring_yp$read_data;
+        line_a$clock = clock;
+        line_b$clock = clock;
+        line_c$clock = clock;
+        line_d$clock = clock;
+        line_a$data_in = value;
+        line_a$write_enable = 1'b1;
+        reg_yp$d = line_a$data_out;
+        line_b$data_in = line_a$data_out;
+        line_b$write_enable = 1'b1;
+        reg_xm$d = line_b$data_out;
+        reg_c$d = reg_xm$q;
+        line_c$data_in = reg_xm$q;
+        line_c$write_enable = 1'b1;
+        line_d$data_in = line_c$data_out;
+        line_d$write_enable = 1'b1;
+        to_left_yp = reg_yp$q;
+        to_left_xp = line_b$data_out;
+        to_right_xm = reg_xm$q;
+        to_right_ym = line_c$data_out;
+        to_right_zm = line_d$data_out;
         to_left_zp = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
@@ -2271,11 +3242,11 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         prev_xm$d = hop_xm$q;
         prev_xp$d = hop_xp$q;
         xm = hop_xm$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == 'h0) begin
+        if ((x & p_mask) == 'h0) begin
             xm = prev_xm$q;
         end
         xp = prev_xp$q;
-        if ((centre$read_data[('h10)+:(16)] & p_mask) == p_mask) begin
+        if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
         gx_neg = xp < xm;
@@ -2293,22 +3264,7 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
         if (hop_zp$q < hop_zm$q) begin
             gz_mag = hop_zm$q - hop_zp$q;
         end
-        o_value = centre$read_data[('h0)+:(16)];
-        o_x = centre$read_data[('h10)+:(16)];
-        o_y = centre$read_data[('h20)+:(16)];
-        o_base_x = centre$read_data[('h30)+:(16)];
-        o_base_y = centre$read_data[('h40)+:(16)];
-        o_valid = centre$read_data['h50];
-        o_pad = centre$read_data['h51];
-        o_sr = centre$read_data['h52];
-        o_er = centre$read_data['h53];
-        o_edge = centre$read_data['h54];
-        o_face = centre$read_data[('h55)+:(3)];
-        o_dx_neg = centre$read_data['h58];
-        o_dx_mag = centre$read_data[('h59)+:(16)];
-        o_dy_neg = centre$read_data['h69];
-        o_dy_mag = centre$read_data[('h6a)+:(16)];
-        o_invalid = centre$read_data['h7a];
+        o_value = reg_c$q;
         if (~enabled) begin
             to_right_xm = 'h0;
             to_right_ym = 'h0;
@@ -2317,55 +3273,16 @@ module top$lanes$3$feed$abc(clock,now,valid,value,x,y,pad,invalid,dx_neg,dx_mag,
             to_left_yp = 'h0;
             to_left_zp = 'h0;
             o_value = 'h0;
-            o_x = 'h0;
-            o_y = 'h0;
-            o_dx_mag = 'h0;
-            o_dy_mag = 'h0;
-            o_base_x = 'h0;
-            o_base_y = 'h0;
             gx_mag = 'h0;
             gy_mag = 'h0;
             gz_mag = 'h0;
-            o_valid = 1'b0;
-            o_pad = 1'b0;
-            o_invalid = 1'b0;
-            o_dx_neg = 1'b0;
-            o_dy_neg = 1'b0;
-            o_sr = 1'b0;
-            o_er = 1'b0;
-            o_edge = 1'b0;
             gx_neg = 1'b0;
             gy_neg = 1'b0;
             gz_neg = 1'b0;
-            o_face = 'h0;
         end
     end
     
 endmodule // top$lanes$3$feed$abc
-module top$lanes$3$feed$abc$centre(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [122:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [122:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [122:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[15:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= write_data;
-       end
-    end
-endmodule // top$lanes$3$feed$abc$centre
 module top$lanes$3$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -2468,6 +3385,566 @@ module top$lanes$3$feed$abc$hop_zp(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$hop_zp
+module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbe;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_a$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_a$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_a$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_a
+module top$lanes$3$feed$abc$line_a$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$one
+module top$lanes$3$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$ptr
+module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16318:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_a$ram
+module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_b$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_b$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_b$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_b
+module top$lanes$3$feed$abc$line_b$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$one
+module top$lanes$3$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$ptr
+module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_b$ram
+module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3f;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_c$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_c$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_c$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_c
+module top$lanes$3$feed$abc$line_c$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$one
+module top$lanes$3$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$ptr
+module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_c$ram
+module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h3fbf;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_d$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_d$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_d$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_d
+module top$lanes$3$feed$abc$line_d$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$one
+module top$lanes$3$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$ptr
+module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16319:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_d$ram
 module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -2502,123 +3979,54 @@ module top$lanes$3$feed$abc$prev_xp(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$prev_xp
-module top$lanes$3$feed$abc$ring_xm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module top$lanes$3$feed$abc$reg_c(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$3$feed$abc$ring_xm
-module top$lanes$3$feed$abc$ring_xp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$3$feed$abc$reg_c
+module top$lanes$3$feed$abc$reg_xm(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$3$feed$abc$ring_xp
-module top$lanes$3$feed$abc$ring_ym(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+          
+endmodule // top$lanes$3$feed$abc$reg_xm
+module top$lanes$3$feed$abc$reg_yp(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+    initial begin
+       q = 16'h0;
     end
     
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
+    always @(posedge clock) begin
+       q <= d;
     end
-endmodule // top$lanes$3$feed$abc$ring_ym
-module top$lanes$3$feed$abc$ring_yp(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$3$feed$abc$ring_yp
-module top$lanes$3$feed$abc$ring_zm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[65535:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$3$feed$abc$ring_zm
+          
+endmodule // top$lanes$3$feed$abc$reg_yp

@@ -49,6 +49,10 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     output reg  [63:0] res$2;
     output reg  [63:0] res$3;
     
+    // Constant declarations
+    localparam  late_delay = 'h4001;
+    localparam  gradient = 1'b1;
+    
     // Stub signals
     reg  cfb$clock;
     reg  cfb$start;
@@ -135,7 +139,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] cfb$dy_mag$2;
     wire  [15:0] cfb$dy_mag$3;
     reg  lanes$0$clock;
-    reg  [15:0] lanes$0$now;
     reg  lanes$0$beat_valid;
     reg  [15:0] lanes$0$value;
     reg  [15:0] lanes$0$x;
@@ -196,7 +199,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$0$px_y;
     wire  [2:0] lanes$0$px_face;
     reg  lanes$1$clock;
-    reg  [15:0] lanes$1$now;
     reg  lanes$1$beat_valid;
     reg  [15:0] lanes$1$value;
     reg  [15:0] lanes$1$x;
@@ -257,7 +259,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$1$px_y;
     wire  [2:0] lanes$1$px_face;
     reg  lanes$2$clock;
-    reg  [15:0] lanes$2$now;
     reg  lanes$2$beat_valid;
     reg  [15:0] lanes$2$value;
     reg  [15:0] lanes$2$x;
@@ -318,7 +319,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$2$px_y;
     wire  [2:0] lanes$2$px_face;
     reg  lanes$3$clock;
-    reg  [15:0] lanes$3$now;
     reg  lanes$3$beat_valid;
     reg  [15:0] lanes$3$value;
     reg  [15:0] lanes$3$x;
@@ -378,9 +378,93 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$3$px_x;
     wire  [15:0] lanes$3$px_y;
     wire  [2:0] lanes$3$px_face;
-    reg  [15:0] now$d;
-    wire  [15:0] now$q;
-    reg  now$clock;
+    reg  late$clock;
+    reg  late$start;
+    wire  late$busy;
+    reg  late$load_enable;
+    reg  [7:0] late$load_module;
+    reg  [15:0] late$load_address;
+    reg  [15:0] late$load_data;
+    wire  late$valid;
+    wire  [15:0] late$n_s;
+    wire  [15:0] late$n_beam;
+    wire  [15:0] late$n_b;
+    wire  late$bs;
+    wire  [15:0] late$value$0;
+    wire  [15:0] late$value$1;
+    wire  [15:0] late$value$2;
+    wire  [15:0] late$value$3;
+    wire  [15:0] late$x$0;
+    wire  [15:0] late$x$1;
+    wire  [15:0] late$x$2;
+    wire  [15:0] late$x$3;
+    wire  [15:0] late$y$0;
+    wire  [15:0] late$y$1;
+    wire  [15:0] late$y$2;
+    wire  [15:0] late$y$3;
+    wire  late$pad$0;
+    wire  late$pad$1;
+    wire  late$pad$2;
+    wire  late$pad$3;
+    wire  late$sr$0;
+    wire  late$sr$1;
+    wire  late$sr$2;
+    wire  late$sr$3;
+    wire  late$er$0;
+    wire  late$er$1;
+    wire  late$er$2;
+    wire  late$er$3;
+    wire  [15:0] late$base_x$0;
+    wire  [15:0] late$base_x$1;
+    wire  [15:0] late$base_x$2;
+    wire  [15:0] late$base_x$3;
+    wire  [15:0] late$base_y$0;
+    wire  [15:0] late$base_y$1;
+    wire  [15:0] late$base_y$2;
+    wire  [15:0] late$base_y$3;
+    wire  [2:0] late$face$0;
+    wire  [2:0] late$face$1;
+    wire  [2:0] late$face$2;
+    wire  [2:0] late$face$3;
+    wire  late$at_edge$0;
+    wire  late$at_edge$1;
+    wire  late$at_edge$2;
+    wire  late$at_edge$3;
+    wire  late$invalid$0;
+    wire  late$invalid$1;
+    wire  late$invalid$2;
+    wire  late$invalid$3;
+    wire  late$halo$0;
+    wire  late$halo$1;
+    wire  late$halo$2;
+    wire  late$halo$3;
+    wire  [31:0] late$ext_addr$0;
+    wire  [31:0] late$ext_addr$1;
+    wire  [31:0] late$ext_addr$2;
+    wire  [31:0] late$ext_addr$3;
+    reg  [15:0] late$ext_data$0;
+    reg  [15:0] late$ext_data$1;
+    reg  [15:0] late$ext_data$2;
+    reg  [15:0] late$ext_data$3;
+    wire  late$dx_neg$0;
+    wire  late$dx_neg$1;
+    wire  late$dx_neg$2;
+    wire  late$dx_neg$3;
+    wire  [15:0] late$dx_mag$0;
+    wire  [15:0] late$dx_mag$1;
+    wire  [15:0] late$dx_mag$2;
+    wire  [15:0] late$dx_mag$3;
+    wire  late$dy_neg$0;
+    wire  late$dy_neg$1;
+    wire  late$dy_neg$2;
+    wire  late$dy_neg$3;
+    wire  [15:0] late$dy_mag$0;
+    wire  [15:0] late$dy_mag$1;
+    wire  [15:0] late$dy_mag$2;
+    wire  [15:0] late$dy_mag$3;
+    reg  [31:0] late_wait$d;
+    wire  [31:0] late_wait$q;
+    reg  late_wait$clock;
     
     // Sub module instances
     top$cfb cfb(
@@ -471,7 +555,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$0 lanes$0(
         .clock(lanes$0$clock),
-        .now(lanes$0$now),
         .beat_valid(lanes$0$beat_valid),
         .value(lanes$0$value),
         .x(lanes$0$x),
@@ -534,7 +617,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$1 lanes$1(
         .clock(lanes$1$clock),
-        .now(lanes$1$now),
         .beat_valid(lanes$1$beat_valid),
         .value(lanes$1$value),
         .x(lanes$1$x),
@@ -597,7 +679,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$2 lanes$2(
         .clock(lanes$2$clock),
-        .now(lanes$2$now),
         .beat_valid(lanes$2$beat_valid),
         .value(lanes$2$value),
         .x(lanes$2$x),
@@ -660,7 +741,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$3 lanes$3(
         .clock(lanes$3$clock),
-        .now(lanes$3$now),
         .beat_valid(lanes$3$beat_valid),
         .value(lanes$3$value),
         .x(lanes$3$x),
@@ -721,17 +801,102 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         .px_y(lanes$3$px_y),
         .px_face(lanes$3$px_face)
     );
-    top$now now(
-        .d(now$d),
-        .q(now$q),
-        .clock(now$clock)
+    top$late late(
+        .clock(late$clock),
+        .start(late$start),
+        .busy(late$busy),
+        .load_enable(late$load_enable),
+        .load_module(late$load_module),
+        .load_address(late$load_address),
+        .load_data(late$load_data),
+        .valid(late$valid),
+        .n_s(late$n_s),
+        .n_beam(late$n_beam),
+        .n_b(late$n_b),
+        .bs(late$bs),
+        .value$0(late$value$0),
+        .value$1(late$value$1),
+        .value$2(late$value$2),
+        .value$3(late$value$3),
+        .x$0(late$x$0),
+        .x$1(late$x$1),
+        .x$2(late$x$2),
+        .x$3(late$x$3),
+        .y$0(late$y$0),
+        .y$1(late$y$1),
+        .y$2(late$y$2),
+        .y$3(late$y$3),
+        .pad$0(late$pad$0),
+        .pad$1(late$pad$1),
+        .pad$2(late$pad$2),
+        .pad$3(late$pad$3),
+        .sr$0(late$sr$0),
+        .sr$1(late$sr$1),
+        .sr$2(late$sr$2),
+        .sr$3(late$sr$3),
+        .er$0(late$er$0),
+        .er$1(late$er$1),
+        .er$2(late$er$2),
+        .er$3(late$er$3),
+        .base_x$0(late$base_x$0),
+        .base_x$1(late$base_x$1),
+        .base_x$2(late$base_x$2),
+        .base_x$3(late$base_x$3),
+        .base_y$0(late$base_y$0),
+        .base_y$1(late$base_y$1),
+        .base_y$2(late$base_y$2),
+        .base_y$3(late$base_y$3),
+        .face$0(late$face$0),
+        .face$1(late$face$1),
+        .face$2(late$face$2),
+        .face$3(late$face$3),
+        .at_edge$0(late$at_edge$0),
+        .at_edge$1(late$at_edge$1),
+        .at_edge$2(late$at_edge$2),
+        .at_edge$3(late$at_edge$3),
+        .invalid$0(late$invalid$0),
+        .invalid$1(late$invalid$1),
+        .invalid$2(late$invalid$2),
+        .invalid$3(late$invalid$3),
+        .halo$0(late$halo$0),
+        .halo$1(late$halo$1),
+        .halo$2(late$halo$2),
+        .halo$3(late$halo$3),
+        .ext_addr$0(late$ext_addr$0),
+        .ext_addr$1(late$ext_addr$1),
+        .ext_addr$2(late$ext_addr$2),
+        .ext_addr$3(late$ext_addr$3),
+        .ext_data$0(late$ext_data$0),
+        .ext_data$1(late$ext_data$1),
+        .ext_data$2(late$ext_data$2),
+        .ext_data$3(late$ext_data$3),
+        .dx_neg$0(late$dx_neg$0),
+        .dx_neg$1(late$dx_neg$1),
+        .dx_neg$2(late$dx_neg$2),
+        .dx_neg$3(late$dx_neg$3),
+        .dx_mag$0(late$dx_mag$0),
+        .dx_mag$1(late$dx_mag$1),
+        .dx_mag$2(late$dx_mag$2),
+        .dx_mag$3(late$dx_mag$3),
+        .dy_neg$0(late$dy_neg$0),
+        .dy_neg$1(late$dy_neg$1),
+        .dy_neg$2(late$dy_neg$2),
+        .dy_neg$3(late$dy_neg$3),
+        .dy_mag$0(late$dy_mag$0),
+        .dy_mag$1(late$dy_mag$1),
+        .dy_mag$2(late$dy_mag$2),
+        .dy_mag$3(late$dy_mag$3)
+    );
+    top$late_wait late_wait(
+        .d(late_wait$d),
+        .q(late_wait$q),
+        .clock(late_wait$clock)
     );
     
     // Update code
     always @(*) begin
-        now$clock = clock;
-        now$d = now$q;
-        now$d = now$q + 'h1;
+        late_wait$clock = clock;
+        late_wait$d = late_wait$q;
         cfb$clock = clock;
         cfb$start = start;
         cfb$load_enable = load_enable;
@@ -743,9 +908,21 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         n_beam = cfb$n_beam;
         n_b = cfb$n_b;
         bs = cfb$bs;
+        late_wait$d = late_wait$q;
+        if (start & ~cfb$busy) begin
+            late_wait$d = late_delay;
+        end
+        else if (late_wait$q != 'h0) begin
+            late_wait$d = late_wait$q - 'h1;
+        end
+        late$clock = clock;
+        late$start = late_wait$q == 'h1;
+        late$load_enable = 1'b0;
+        late$load_module = 'h0;
+        late$load_address = 'h0;
+        late$load_data = 'h0;
+        late$ext_data$0 = 'h0;
         lanes$0$clock = clock;
-        lanes$0$now = now$q;
-        lanes$0$beat_valid = cfb$valid;
         cfb$ext_data$0 = ext_data$0;
         ext_addr$0 = cfb$ext_addr$0;
         px_valid$0 = lanes$0$px_valid;
@@ -756,24 +933,8 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$0 = lanes$0$res_valid;
         res$0 = lanes$0$res;
         lanes$0$value = cfb$value$0;
-        lanes$0$x = cfb$x$0;
-        lanes$0$y = cfb$y$0;
-        lanes$0$pad = cfb$pad$0;
-        lanes$0$invalid = cfb$invalid$0;
-        lanes$0$halo = cfb$halo$0;
-        lanes$0$sr = cfb$sr$0;
-        lanes$0$er = cfb$er$0;
-        lanes$0$base_x = cfb$base_x$0;
-        lanes$0$base_y = cfb$base_y$0;
-        lanes$0$face = cfb$face$0;
-        lanes$0$at_edge = cfb$at_edge$0;
-        lanes$0$dx_neg = cfb$dx_neg$0;
-        lanes$0$dx_mag = cfb$dx_mag$0;
-        lanes$0$dy_neg = cfb$dy_neg$0;
-        lanes$0$dy_mag = cfb$dy_mag$0;
+        late$ext_data$1 = 'h0;
         lanes$1$clock = clock;
-        lanes$1$now = now$q;
-        lanes$1$beat_valid = cfb$valid;
         cfb$ext_data$1 = ext_data$1;
         ext_addr$1 = cfb$ext_addr$1;
         px_valid$1 = lanes$1$px_valid;
@@ -784,24 +945,8 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$1 = lanes$1$res_valid;
         res$1 = lanes$1$res;
         lanes$1$value = cfb$value$1;
-        lanes$1$x = cfb$x$1;
-        lanes$1$y = cfb$y$1;
-        lanes$1$pad = cfb$pad$1;
-        lanes$1$invalid = cfb$invalid$1;
-        lanes$1$halo = cfb$halo$1;
-        lanes$1$sr = cfb$sr$1;
-        lanes$1$er = cfb$er$1;
-        lanes$1$base_x = cfb$base_x$1;
-        lanes$1$base_y = cfb$base_y$1;
-        lanes$1$face = cfb$face$1;
-        lanes$1$at_edge = cfb$at_edge$1;
-        lanes$1$dx_neg = cfb$dx_neg$1;
-        lanes$1$dx_mag = cfb$dx_mag$1;
-        lanes$1$dy_neg = cfb$dy_neg$1;
-        lanes$1$dy_mag = cfb$dy_mag$1;
+        late$ext_data$2 = 'h0;
         lanes$2$clock = clock;
-        lanes$2$now = now$q;
-        lanes$2$beat_valid = cfb$valid;
         cfb$ext_data$2 = ext_data$2;
         ext_addr$2 = cfb$ext_addr$2;
         px_valid$2 = lanes$2$px_valid;
@@ -812,24 +957,8 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$2 = lanes$2$res_valid;
         res$2 = lanes$2$res;
         lanes$2$value = cfb$value$2;
-        lanes$2$x = cfb$x$2;
-        lanes$2$y = cfb$y$2;
-        lanes$2$pad = cfb$pad$2;
-        lanes$2$invalid = cfb$invalid$2;
-        lanes$2$halo = cfb$halo$2;
-        lanes$2$sr = cfb$sr$2;
-        lanes$2$er = cfb$er$2;
-        lanes$2$base_x = cfb$base_x$2;
-        lanes$2$base_y = cfb$base_y$2;
-        lanes$2$face = cfb$face$2;
-        lanes$2$at_edge = cfb$at_edge$2;
-        lanes$2$dx_neg = cfb$dx_neg$2;
-        lanes$2$dx_mag = cfb$dx_mag$2;
-        lanes$2$dy_neg = cfb$dy_neg$2;
-        lanes$2$dy_mag = cfb$dy_mag$2;
+        late$ext_data$3 = 'h0;
         lanes$3$clock = clock;
-        lanes$3$now = now$q;
-        lanes$3$beat_valid = cfb$valid;
         cfb$ext_data$3 = ext_data$3;
         ext_addr$3 = cfb$ext_addr$3;
         px_valid$3 = lanes$3$px_valid;
@@ -840,21 +969,138 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$3 = lanes$3$res_valid;
         res$3 = lanes$3$res;
         lanes$3$value = cfb$value$3;
-        lanes$3$x = cfb$x$3;
-        lanes$3$y = cfb$y$3;
-        lanes$3$pad = cfb$pad$3;
-        lanes$3$invalid = cfb$invalid$3;
-        lanes$3$halo = cfb$halo$3;
-        lanes$3$sr = cfb$sr$3;
-        lanes$3$er = cfb$er$3;
-        lanes$3$base_x = cfb$base_x$3;
-        lanes$3$base_y = cfb$base_y$3;
-        lanes$3$face = cfb$face$3;
-        lanes$3$at_edge = cfb$at_edge$3;
-        lanes$3$dx_neg = cfb$dx_neg$3;
-        lanes$3$dx_mag = cfb$dx_mag$3;
-        lanes$3$dy_neg = cfb$dy_neg$3;
-        lanes$3$dy_mag = cfb$dy_mag$3;
+        if (gradient) begin
+            lanes$0$beat_valid = late$valid;
+            lanes$0$x = late$x$0;
+            lanes$0$y = late$y$0;
+            lanes$0$pad = late$pad$0;
+            lanes$0$invalid = late$invalid$0;
+            lanes$0$halo = late$halo$0;
+            lanes$0$sr = late$sr$0;
+            lanes$0$er = late$er$0;
+            lanes$0$base_x = late$base_x$0;
+            lanes$0$base_y = late$base_y$0;
+            lanes$0$face = late$face$0;
+            lanes$0$at_edge = late$at_edge$0;
+            lanes$0$dx_neg = late$dx_neg$0;
+            lanes$0$dx_mag = late$dx_mag$0;
+            lanes$0$dy_neg = late$dy_neg$0;
+            lanes$0$dy_mag = late$dy_mag$0;
+            lanes$1$beat_valid = late$valid;
+            lanes$1$x = late$x$1;
+            lanes$1$y = late$y$1;
+            lanes$1$pad = late$pad$1;
+            lanes$1$invalid = late$invalid$1;
+            lanes$1$halo = late$halo$1;
+            lanes$1$sr = late$sr$1;
+            lanes$1$er = late$er$1;
+            lanes$1$base_x = late$base_x$1;
+            lanes$1$base_y = late$base_y$1;
+            lanes$1$face = late$face$1;
+            lanes$1$at_edge = late$at_edge$1;
+            lanes$1$dx_neg = late$dx_neg$1;
+            lanes$1$dx_mag = late$dx_mag$1;
+            lanes$1$dy_neg = late$dy_neg$1;
+            lanes$1$dy_mag = late$dy_mag$1;
+            lanes$2$beat_valid = late$valid;
+            lanes$2$x = late$x$2;
+            lanes$2$y = late$y$2;
+            lanes$2$pad = late$pad$2;
+            lanes$2$invalid = late$invalid$2;
+            lanes$2$halo = late$halo$2;
+            lanes$2$sr = late$sr$2;
+            lanes$2$er = late$er$2;
+            lanes$2$base_x = late$base_x$2;
+            lanes$2$base_y = late$base_y$2;
+            lanes$2$face = late$face$2;
+            lanes$2$at_edge = late$at_edge$2;
+            lanes$2$dx_neg = late$dx_neg$2;
+            lanes$2$dx_mag = late$dx_mag$2;
+            lanes$2$dy_neg = late$dy_neg$2;
+            lanes$2$dy_mag = late$dy_mag$2;
+            lanes$3$beat_valid = late$valid;
+            lanes$3$x = late$x$3;
+            lanes$3$y = late$y$3;
+            lanes$3$pad = late$pad$3;
+            lanes$3$invalid = late$invalid$3;
+            lanes$3$halo = late$halo$3;
+            lanes$3$sr = late$sr$3;
+            lanes$3$er = late$er$3;
+            lanes$3$base_x = late$base_x$3;
+            lanes$3$base_y = late$base_y$3;
+            lanes$3$face = late$face$3;
+            lanes$3$at_edge = late$at_edge$3;
+            lanes$3$dx_neg = late$dx_neg$3;
+            lanes$3$dx_mag = late$dx_mag$3;
+            lanes$3$dy_neg = late$dy_neg$3;
+            lanes$3$dy_mag = late$dy_mag$3;
+        end
+        else begin
+            lanes$0$beat_valid = cfb$valid;
+            lanes$0$x = cfb$x$0;
+            lanes$0$y = cfb$y$0;
+            lanes$0$pad = cfb$pad$0;
+            lanes$0$invalid = cfb$invalid$0;
+            lanes$0$halo = cfb$halo$0;
+            lanes$0$sr = cfb$sr$0;
+            lanes$0$er = cfb$er$0;
+            lanes$0$base_x = cfb$base_x$0;
+            lanes$0$base_y = cfb$base_y$0;
+            lanes$0$face = cfb$face$0;
+            lanes$0$at_edge = cfb$at_edge$0;
+            lanes$0$dx_neg = cfb$dx_neg$0;
+            lanes$0$dx_mag = cfb$dx_mag$0;
+            lanes$0$dy_neg = cfb$dy_neg$0;
+            lanes$0$dy_mag = cfb$dy_mag$0;
+            lanes$1$beat_valid = cfb$valid;
+            lanes$1$x = cfb$x$1;
+            lanes$1$y = cfb$y$1;
+            lanes$1$pad = cfb$pad$1;
+            lanes$1$invalid = cfb$invalid$1;
+            lanes$1$halo = cfb$halo$1;
+            lanes$1$sr = cfb$sr$1;
+            lanes$1$er = cfb$er$1;
+            lanes$1$base_x = cfb$base_x$1;
+            lanes$1$base_y = cfb$base_y$1;
+            lanes$1$face = cfb$face$1;
+            lanes$1$at_edge = cfb$at_edge$1;
+            lanes$1$dx_neg = cfb$dx_neg$1;
+            lanes$1$dx_mag = cfb$dx_mag$1;
+            lanes$1$dy_neg = cfb$dy_neg$1;
+            lanes$1$dy_mag = cfb$dy_mag$1;
+            lanes$2$beat_valid = cfb$valid;
+            lanes$2$x = cfb$x$2;
+            lanes$2$y = cfb$y$2;
+            lanes$2$pad = cfb$pad$2;
+            lanes$2$invalid = cfb$invalid$2;
+            lanes$2$halo = cfb$halo$2;
+            lanes$2$sr = cfb$sr$2;
+            lanes$2$er = cfb$er$2;
+            lanes$2$base_x = cfb$base_x$2;
+            lanes$2$base_y = cfb$base_y$2;
+            lanes$2$face = cfb$face$2;
+            lanes$2$at_edge = cfb$at_edge$2;
+            lanes$2$dx_neg = cfb$dx_neg$2;
+            lanes$2$dx_mag = cfb$dx_mag$2;
+            lanes$2$dy_neg = cfb$dy_neg$2;
+            lanes$2$dy_mag = cfb$dy_mag$2;
+            lanes$3$beat_valid = cfb$valid;
+            lanes$3$x = cfb$x$3;
+            lanes$3$y = cfb$y$3;
+            lanes$3$pad = cfb$pad$3;
+            lanes$3$invalid = cfb$invalid$3;
+            lanes$3$halo = cfb$halo$3;
+            lanes$3$sr = cfb$sr$3;
+            lanes$3$er = cfb$er$3;
+            lanes$3$base_x = cfb$base_x$3;
+            lanes$3$base_y = cfb$base_y$3;
+            lanes$3$face = cfb$face$3;
+            lanes$3$at_edge = cfb$at_edge$3;
+            lanes$3$dx_neg = cfb$dx_neg$3;
+            lanes$3$dx_mag = cfb$dx_mag$3;
+            lanes$3$dy_neg = cfb$dy_neg$3;
+            lanes$3$dy_mag = cfb$dy_mag$3;
+        end
         lanes$1$t0i1 = lanes$0$t0s0;
         lanes$1$t1i1 = lanes$0$t1s0;
         lanes$1$t1i2 = lanes$0$t1s1;

@@ -1,8 +1,7 @@
-module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -65,7 +64,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     
     // Stub signals
     reg  feed$clock;
-    reg  [15:0] feed$now;
     reg  feed$beat_valid;
     reg  [15:0] feed$value;
     reg  [15:0] feed$x;
@@ -170,7 +168,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     wire  [15:0] ctl$px_y;
     wire  [2:0] ctl$px_face;
     reg  taps$clock;
-    reg  [15:0] taps$now;
     reg  [15:0] taps$x;
     reg  [63:0] taps$res;
     reg  taps$res_beat;
@@ -279,7 +276,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Sub module instances
     top$lanes$0$feed feed(
         .clock(feed$clock),
-        .now(feed$now),
         .beat_valid(feed$beat_valid),
         .value(feed$value),
         .x(feed$x),
@@ -390,7 +386,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     );
     top$lanes$0$taps taps(
         .clock(taps$clock),
-        .now(taps$now),
         .x(taps$x),
         .res(taps$res),
         .res_beat(taps$res_beat),
@@ -506,7 +501,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Update code
     always @(*) begin
         feed$clock = clock;
-        feed$now = now;
         feed$beat_valid = beat_valid;
         feed$value = value;
         feed$x = x;
@@ -566,7 +560,6 @@ module top$lanes$0(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
         ctl$a = shader$a;
         ctl$sample_valid = shader$valid;
         taps$clock = clock;
-        taps$now = now;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
         taps$t0i1 = t0i1;
@@ -1962,11 +1955,10 @@ module top$lanes$0$ctl$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q
-module top$lanes$0$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -2024,23 +2016,8 @@ module top$lanes$0$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     
     // Stub signals
     reg  abc$clock;
-    reg  [15:0] abc$now;
-    reg  abc$valid;
     reg  [15:0] abc$value;
     reg  [15:0] abc$x;
-    reg  [15:0] abc$y;
-    reg  abc$pad;
-    reg  abc$invalid;
-    reg  abc$dx_neg;
-    reg  [15:0] abc$dx_mag;
-    reg  abc$dy_neg;
-    reg  [15:0] abc$dy_mag;
-    reg  abc$sr;
-    reg  abc$er;
-    reg  abc$at_edge;
-    reg  [2:0] abc$face;
-    reg  [15:0] abc$base_x;
-    reg  [15:0] abc$base_y;
     reg  [15:0] abc$from_left_xm;
     reg  [15:0] abc$from_left_ym;
     reg  [15:0] abc$from_left_zm;
@@ -2053,22 +2030,7 @@ module top$lanes$0$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     wire  [15:0] abc$to_left_xp = 'h0;
     wire  [15:0] abc$to_left_yp = 'h0;
     wire  [15:0] abc$to_left_zp = 'h0;
-    wire  abc$o_valid = 'h0;
     wire  [15:0] abc$o_value = 'h0;
-    wire  [15:0] abc$o_x = 'h0;
-    wire  [15:0] abc$o_y = 'h0;
-    wire  abc$o_pad = 'h0;
-    wire  abc$o_invalid = 'h0;
-    wire  abc$o_dx_neg = 'h0;
-    wire  [15:0] abc$o_dx_mag = 'h0;
-    wire  abc$o_dy_neg = 'h0;
-    wire  [15:0] abc$o_dy_mag = 'h0;
-    wire  abc$o_sr = 'h0;
-    wire  abc$o_er = 'h0;
-    wire  abc$o_edge = 'h0;
-    wire  [2:0] abc$o_face = 'h0;
-    wire  [15:0] abc$o_base_x = 'h0;
-    wire  [15:0] abc$o_base_y = 'h0;
     wire  abc$gx_neg = 'h0;
     wire  [15:0] abc$gx_mag = 'h0;
     wire  abc$gy_neg = 'h0;
@@ -2081,23 +2043,8 @@ module top$lanes$0$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     // Update code
     always @(*) begin
         abc$clock = clock;
-        abc$now = now;
-        abc$valid = beat_valid & ~halo;
         abc$value = value;
         abc$x = x;
-        abc$y = y;
-        abc$pad = pad;
-        abc$invalid = invalid;
-        abc$sr = sr;
-        abc$er = er;
-        abc$at_edge = at_edge;
-        abc$face = face;
-        abc$base_x = base_x;
-        abc$base_y = base_y;
-        abc$dx_neg = dx_neg;
-        abc$dx_mag = dx_mag;
-        abc$dy_neg = dy_neg;
-        abc$dy_mag = dy_mag;
         abc$from_left_xm = g_from_left_xm;
         abc$from_left_ym = g_from_left_ym;
         abc$from_left_zm = g_from_left_zm;
@@ -2117,49 +2064,33 @@ module top$lanes$0$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_valid = abc$o_valid;
             o_value = abc$o_value;
-            o_x = abc$o_x;
-            o_y = abc$o_y;
-            o_pad = abc$o_pad;
-            o_invalid = abc$o_invalid;
-            o_sr = abc$o_sr;
-            o_er = abc$o_er;
-            o_edge = abc$o_edge;
-            o_face = abc$o_face;
-            o_base_x = abc$o_base_x;
-            o_base_y = abc$o_base_y;
-            o_dx_neg = abc$o_dx_neg;
-            o_dx_mag = abc$o_dx_mag;
-            o_dy_neg = abc$o_dy_neg;
-            o_dy_mag = abc$o_dy_mag;
         end
         else begin
-            o_valid = beat_valid;
             o_value = value;
-            o_x = x;
-            o_y = y;
-            o_pad = pad;
-            o_invalid = invalid;
-            o_sr = sr;
-            o_er = er;
-            o_edge = at_edge;
-            o_face = face;
-            o_base_x = base_x;
-            o_base_y = base_y;
-            o_dx_neg = dx_neg;
-            o_dx_mag = dx_mag;
-            o_dy_neg = dy_neg;
-            o_dy_mag = dy_mag;
         end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
     end
     
 endmodule // top$lanes$0$feed
-module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -2222,7 +2153,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     
     // Stub signals
     reg  feed$clock;
-    reg  [15:0] feed$now;
     reg  feed$beat_valid;
     reg  [15:0] feed$value;
     reg  [15:0] feed$x;
@@ -2327,7 +2257,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     wire  [15:0] ctl$px_y;
     wire  [2:0] ctl$px_face;
     reg  taps$clock;
-    reg  [15:0] taps$now;
     reg  [15:0] taps$x;
     reg  [63:0] taps$res;
     reg  taps$res_beat;
@@ -2436,7 +2365,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Sub module instances
     top$lanes$1$feed feed(
         .clock(feed$clock),
-        .now(feed$now),
         .beat_valid(feed$beat_valid),
         .value(feed$value),
         .x(feed$x),
@@ -2547,7 +2475,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     );
     top$lanes$1$taps taps(
         .clock(taps$clock),
-        .now(taps$now),
         .x(taps$x),
         .res(taps$res),
         .res_beat(taps$res_beat),
@@ -2663,7 +2590,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Update code
     always @(*) begin
         feed$clock = clock;
-        feed$now = now;
         feed$beat_valid = beat_valid;
         feed$value = value;
         feed$x = x;
@@ -2723,7 +2649,6 @@ module top$lanes$1(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
         ctl$a = shader$a;
         ctl$sample_valid = shader$valid;
         taps$clock = clock;
-        taps$now = now;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
         taps$t0i1 = t0i1;
@@ -4119,11 +4044,10 @@ module top$lanes$1$ctl$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q
-module top$lanes$1$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -4181,23 +4105,8 @@ module top$lanes$1$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     
     // Stub signals
     reg  abc$clock;
-    reg  [15:0] abc$now;
-    reg  abc$valid;
     reg  [15:0] abc$value;
     reg  [15:0] abc$x;
-    reg  [15:0] abc$y;
-    reg  abc$pad;
-    reg  abc$invalid;
-    reg  abc$dx_neg;
-    reg  [15:0] abc$dx_mag;
-    reg  abc$dy_neg;
-    reg  [15:0] abc$dy_mag;
-    reg  abc$sr;
-    reg  abc$er;
-    reg  abc$at_edge;
-    reg  [2:0] abc$face;
-    reg  [15:0] abc$base_x;
-    reg  [15:0] abc$base_y;
     reg  [15:0] abc$from_left_xm;
     reg  [15:0] abc$from_left_ym;
     reg  [15:0] abc$from_left_zm;
@@ -4210,22 +4119,7 @@ module top$lanes$1$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     wire  [15:0] abc$to_left_xp = 'h0;
     wire  [15:0] abc$to_left_yp = 'h0;
     wire  [15:0] abc$to_left_zp = 'h0;
-    wire  abc$o_valid = 'h0;
     wire  [15:0] abc$o_value = 'h0;
-    wire  [15:0] abc$o_x = 'h0;
-    wire  [15:0] abc$o_y = 'h0;
-    wire  abc$o_pad = 'h0;
-    wire  abc$o_invalid = 'h0;
-    wire  abc$o_dx_neg = 'h0;
-    wire  [15:0] abc$o_dx_mag = 'h0;
-    wire  abc$o_dy_neg = 'h0;
-    wire  [15:0] abc$o_dy_mag = 'h0;
-    wire  abc$o_sr = 'h0;
-    wire  abc$o_er = 'h0;
-    wire  abc$o_edge = 'h0;
-    wire  [2:0] abc$o_face = 'h0;
-    wire  [15:0] abc$o_base_x = 'h0;
-    wire  [15:0] abc$o_base_y = 'h0;
     wire  abc$gx_neg = 'h0;
     wire  [15:0] abc$gx_mag = 'h0;
     wire  abc$gy_neg = 'h0;
@@ -4238,23 +4132,8 @@ module top$lanes$1$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     // Update code
     always @(*) begin
         abc$clock = clock;
-        abc$now = now;
-        abc$valid = beat_valid & ~halo;
         abc$value = value;
         abc$x = x;
-        abc$y = y;
-        abc$pad = pad;
-        abc$invalid = invalid;
-        abc$sr = sr;
-        abc$er = er;
-        abc$at_edge = at_edge;
-        abc$face = face;
-        abc$base_x = base_x;
-        abc$base_y = base_y;
-        abc$dx_neg = dx_neg;
-        abc$dx_mag = dx_mag;
-        abc$dy_neg = dy_neg;
-        abc$dy_mag = dy_mag;
         abc$from_left_xm = g_from_left_xm;
         abc$from_left_ym = g_from_left_ym;
         abc$from_left_zm = g_from_left_zm;
@@ -4274,49 +4153,33 @@ module top$lanes$1$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_valid = abc$o_valid;
             o_value = abc$o_value;
-            o_x = abc$o_x;
-            o_y = abc$o_y;
-            o_pad = abc$o_pad;
-            o_invalid = abc$o_invalid;
-            o_sr = abc$o_sr;
-            o_er = abc$o_er;
-            o_edge = abc$o_edge;
-            o_face = abc$o_face;
-            o_base_x = abc$o_base_x;
-            o_base_y = abc$o_base_y;
-            o_dx_neg = abc$o_dx_neg;
-            o_dx_mag = abc$o_dx_mag;
-            o_dy_neg = abc$o_dy_neg;
-            o_dy_mag = abc$o_dy_mag;
         end
         else begin
-            o_valid = beat_valid;
             o_value = value;
-            o_x = x;
-            o_y = y;
-            o_pad = pad;
-            o_invalid = invalid;
-            o_sr = sr;
-            o_er = er;
-            o_edge = at_edge;
-            o_face = face;
-            o_base_x = base_x;
-            o_base_y = base_y;
-            o_dx_neg = dx_neg;
-            o_dx_mag = dx_mag;
-            o_dy_neg = dy_neg;
-            o_dy_mag = dy_mag;
         end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
     end
     
 endmodule // top$lanes$1$feed
-module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$2(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -4379,7 +4242,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     
     // Stub signals
     reg  feed$clock;
-    reg  [15:0] feed$now;
     reg  feed$beat_valid;
     reg  [15:0] feed$value;
     reg  [15:0] feed$x;
@@ -4484,7 +4346,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     wire  [15:0] ctl$px_y;
     wire  [2:0] ctl$px_face;
     reg  taps$clock;
-    reg  [15:0] taps$now;
     reg  [15:0] taps$x;
     reg  [63:0] taps$res;
     reg  taps$res_beat;
@@ -4593,7 +4454,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Sub module instances
     top$lanes$2$feed feed(
         .clock(feed$clock),
-        .now(feed$now),
         .beat_valid(feed$beat_valid),
         .value(feed$value),
         .x(feed$x),
@@ -4704,7 +4564,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     );
     top$lanes$2$taps taps(
         .clock(taps$clock),
-        .now(taps$now),
         .x(taps$x),
         .res(taps$res),
         .res_beat(taps$res_beat),
@@ -4820,7 +4679,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Update code
     always @(*) begin
         feed$clock = clock;
-        feed$now = now;
         feed$beat_valid = beat_valid;
         feed$value = value;
         feed$x = x;
@@ -4880,7 +4738,6 @@ module top$lanes$2(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
         ctl$a = shader$a;
         ctl$sample_valid = shader$valid;
         taps$clock = clock;
-        taps$now = now;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
         taps$t0i1 = t0i1;
@@ -6276,11 +6133,10 @@ module top$lanes$2$ctl$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$y_q
-module top$lanes$2$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$2$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -6338,23 +6194,8 @@ module top$lanes$2$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     
     // Stub signals
     reg  abc$clock;
-    reg  [15:0] abc$now;
-    reg  abc$valid;
     reg  [15:0] abc$value;
     reg  [15:0] abc$x;
-    reg  [15:0] abc$y;
-    reg  abc$pad;
-    reg  abc$invalid;
-    reg  abc$dx_neg;
-    reg  [15:0] abc$dx_mag;
-    reg  abc$dy_neg;
-    reg  [15:0] abc$dy_mag;
-    reg  abc$sr;
-    reg  abc$er;
-    reg  abc$at_edge;
-    reg  [2:0] abc$face;
-    reg  [15:0] abc$base_x;
-    reg  [15:0] abc$base_y;
     reg  [15:0] abc$from_left_xm;
     reg  [15:0] abc$from_left_ym;
     reg  [15:0] abc$from_left_zm;
@@ -6367,22 +6208,7 @@ module top$lanes$2$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     wire  [15:0] abc$to_left_xp = 'h0;
     wire  [15:0] abc$to_left_yp = 'h0;
     wire  [15:0] abc$to_left_zp = 'h0;
-    wire  abc$o_valid = 'h0;
     wire  [15:0] abc$o_value = 'h0;
-    wire  [15:0] abc$o_x = 'h0;
-    wire  [15:0] abc$o_y = 'h0;
-    wire  abc$o_pad = 'h0;
-    wire  abc$o_invalid = 'h0;
-    wire  abc$o_dx_neg = 'h0;
-    wire  [15:0] abc$o_dx_mag = 'h0;
-    wire  abc$o_dy_neg = 'h0;
-    wire  [15:0] abc$o_dy_mag = 'h0;
-    wire  abc$o_sr = 'h0;
-    wire  abc$o_er = 'h0;
-    wire  abc$o_edge = 'h0;
-    wire  [2:0] abc$o_face = 'h0;
-    wire  [15:0] abc$o_base_x = 'h0;
-    wire  [15:0] abc$o_base_y = 'h0;
     wire  abc$gx_neg = 'h0;
     wire  [15:0] abc$gx_mag = 'h0;
     wire  abc$gy_neg = 'h0;
@@ -6395,23 +6221,8 @@ module top$lanes$2$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     // Update code
     always @(*) begin
         abc$clock = clock;
-        abc$now = now;
-        abc$valid = beat_valid & ~halo;
         abc$value = value;
         abc$x = x;
-        abc$y = y;
-        abc$pad = pad;
-        abc$invalid = invalid;
-        abc$sr = sr;
-        abc$er = er;
-        abc$at_edge = at_edge;
-        abc$face = face;
-        abc$base_x = base_x;
-        abc$base_y = base_y;
-        abc$dx_neg = dx_neg;
-        abc$dx_mag = dx_mag;
-        abc$dy_neg = dy_neg;
-        abc$dy_mag = dy_mag;
         abc$from_left_xm = g_from_left_xm;
         abc$from_left_ym = g_from_left_ym;
         abc$from_left_zm = g_from_left_zm;
@@ -6431,49 +6242,33 @@ module top$lanes$2$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_valid = abc$o_valid;
             o_value = abc$o_value;
-            o_x = abc$o_x;
-            o_y = abc$o_y;
-            o_pad = abc$o_pad;
-            o_invalid = abc$o_invalid;
-            o_sr = abc$o_sr;
-            o_er = abc$o_er;
-            o_edge = abc$o_edge;
-            o_face = abc$o_face;
-            o_base_x = abc$o_base_x;
-            o_base_y = abc$o_base_y;
-            o_dx_neg = abc$o_dx_neg;
-            o_dx_mag = abc$o_dx_mag;
-            o_dy_neg = abc$o_dy_neg;
-            o_dy_mag = abc$o_dy_mag;
         end
         else begin
-            o_valid = beat_valid;
             o_value = value;
-            o_x = x;
-            o_y = y;
-            o_pad = pad;
-            o_invalid = invalid;
-            o_sr = sr;
-            o_er = er;
-            o_edge = at_edge;
-            o_face = face;
-            o_base_x = base_x;
-            o_base_y = base_y;
-            o_dx_neg = dx_neg;
-            o_dx_mag = dx_mag;
-            o_dy_neg = dy_neg;
-            o_dy_mag = dy_mag;
         end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
     end
     
 endmodule // top$lanes$2$feed
-module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$3(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -6536,7 +6331,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     
     // Stub signals
     reg  feed$clock;
-    reg  [15:0] feed$now;
     reg  feed$beat_valid;
     reg  [15:0] feed$value;
     reg  [15:0] feed$x;
@@ -6641,7 +6435,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     wire  [15:0] ctl$px_y;
     wire  [2:0] ctl$px_face;
     reg  taps$clock;
-    reg  [15:0] taps$now;
     reg  [15:0] taps$x;
     reg  [63:0] taps$res;
     reg  taps$res_beat;
@@ -6750,7 +6543,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Sub module instances
     top$lanes$3$feed feed(
         .clock(feed$clock),
-        .now(feed$now),
         .beat_valid(feed$beat_valid),
         .value(feed$value),
         .x(feed$x),
@@ -6861,7 +6653,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     );
     top$lanes$3$taps taps(
         .clock(taps$clock),
-        .now(taps$now),
         .x(taps$x),
         .res(taps$res),
         .res_beat(taps$res_beat),
@@ -6977,7 +6768,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
     // Update code
     always @(*) begin
         feed$clock = clock;
-        feed$now = now;
         feed$beat_valid = beat_valid;
         feed$value = value;
         feed$x = x;
@@ -7037,7 +6827,6 @@ module top$lanes$3(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,
         ctl$a = shader$a;
         ctl$sample_valid = shader$valid;
         taps$clock = clock;
-        taps$now = now;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
         taps$t0i1 = t0i1;
@@ -8433,11 +8222,10 @@ module top$lanes$3$ctl$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$y_q
-module top$lanes$3$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+module top$lanes$3$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
     input wire  clock;
-    input wire  [15:0] now;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -8495,23 +8283,8 @@ module top$lanes$3$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     
     // Stub signals
     reg  abc$clock;
-    reg  [15:0] abc$now;
-    reg  abc$valid;
     reg  [15:0] abc$value;
     reg  [15:0] abc$x;
-    reg  [15:0] abc$y;
-    reg  abc$pad;
-    reg  abc$invalid;
-    reg  abc$dx_neg;
-    reg  [15:0] abc$dx_mag;
-    reg  abc$dy_neg;
-    reg  [15:0] abc$dy_mag;
-    reg  abc$sr;
-    reg  abc$er;
-    reg  abc$at_edge;
-    reg  [2:0] abc$face;
-    reg  [15:0] abc$base_x;
-    reg  [15:0] abc$base_y;
     reg  [15:0] abc$from_left_xm;
     reg  [15:0] abc$from_left_ym;
     reg  [15:0] abc$from_left_zm;
@@ -8524,22 +8297,7 @@ module top$lanes$3$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     wire  [15:0] abc$to_left_xp = 'h0;
     wire  [15:0] abc$to_left_yp = 'h0;
     wire  [15:0] abc$to_left_zp = 'h0;
-    wire  abc$o_valid = 'h0;
     wire  [15:0] abc$o_value = 'h0;
-    wire  [15:0] abc$o_x = 'h0;
-    wire  [15:0] abc$o_y = 'h0;
-    wire  abc$o_pad = 'h0;
-    wire  abc$o_invalid = 'h0;
-    wire  abc$o_dx_neg = 'h0;
-    wire  [15:0] abc$o_dx_mag = 'h0;
-    wire  abc$o_dy_neg = 'h0;
-    wire  [15:0] abc$o_dy_mag = 'h0;
-    wire  abc$o_sr = 'h0;
-    wire  abc$o_er = 'h0;
-    wire  abc$o_edge = 'h0;
-    wire  [2:0] abc$o_face = 'h0;
-    wire  [15:0] abc$o_base_x = 'h0;
-    wire  [15:0] abc$o_base_y = 'h0;
     wire  abc$gx_neg = 'h0;
     wire  [15:0] abc$gx_mag = 'h0;
     wire  abc$gy_neg = 'h0;
@@ -8552,23 +8310,8 @@ module top$lanes$3$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
     // Update code
     always @(*) begin
         abc$clock = clock;
-        abc$now = now;
-        abc$valid = beat_valid & ~halo;
         abc$value = value;
         abc$x = x;
-        abc$y = y;
-        abc$pad = pad;
-        abc$invalid = invalid;
-        abc$sr = sr;
-        abc$er = er;
-        abc$at_edge = at_edge;
-        abc$face = face;
-        abc$base_x = base_x;
-        abc$base_y = base_y;
-        abc$dx_neg = dx_neg;
-        abc$dx_mag = dx_mag;
-        abc$dy_neg = dy_neg;
-        abc$dy_mag = dy_mag;
         abc$from_left_xm = g_from_left_xm;
         abc$from_left_ym = g_from_left_ym;
         abc$from_left_zm = g_from_left_zm;
@@ -8588,58 +8331,43 @@ module top$lanes$3$feed(clock,now,beat_valid,value,x,y,pad,invalid,halo,sr,er,ba
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_valid = abc$o_valid;
             o_value = abc$o_value;
-            o_x = abc$o_x;
-            o_y = abc$o_y;
-            o_pad = abc$o_pad;
-            o_invalid = abc$o_invalid;
-            o_sr = abc$o_sr;
-            o_er = abc$o_er;
-            o_edge = abc$o_edge;
-            o_face = abc$o_face;
-            o_base_x = abc$o_base_x;
-            o_base_y = abc$o_base_y;
-            o_dx_neg = abc$o_dx_neg;
-            o_dx_mag = abc$o_dx_mag;
-            o_dy_neg = abc$o_dy_neg;
-            o_dy_mag = abc$o_dy_mag;
         end
         else begin
-            o_valid = beat_valid;
             o_value = value;
-            o_x = x;
-            o_y = y;
-            o_pad = pad;
-            o_invalid = invalid;
-            o_sr = sr;
-            o_er = er;
-            o_edge = at_edge;
-            o_face = face;
-            o_base_x = base_x;
-            o_base_y = base_y;
-            o_dx_neg = dx_neg;
-            o_dx_mag = dx_mag;
-            o_dy_neg = dy_neg;
-            o_dy_mag = dy_mag;
         end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
     end
     
 endmodule // top$lanes$3$feed
-module top$now(d,q,clock);
+module top$late_wait(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$now
+endmodule // top$late_wait

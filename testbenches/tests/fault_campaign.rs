@@ -116,8 +116,10 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
 
     let lut = "top$lanes$0$shader$lut";
     let lut_line = line_of(&verilog, lut, "12'hff:");
-    let tap0 = "top$lanes$0$taps$t0";
-    let offset = line_of(&verilog, tap0, "localparam  offset");
+    let rows = "top$lanes$0$taps$rows";
+    let pick0 = line_of(&verilog, rows, "localparam  pick$0");
+    // With a gradient unit the lanes' control comes from the late CFB.
+    let ctl = if config.gradient { "late" } else { "cfb" };
     let (used, other) = if config.taps_used[5] { (5, 7) } else { (7, 5) };
     let x_tap = match sweep.rays {
         golden_model::cube4l::plan::Rays::Parallel { dx, .. } if dx < 0 => 2,
@@ -149,23 +151,23 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         ),
         fault(
             "off-by-one delay",
-            "compositing-buffer tap 0 reads one beat late",
-            tap0,
-            &offset,
-            &edit_hex(&offset, |v| (v + 0xffff) & 0xffff),
+            "compositing-buffer tap 0 takes its value one clock late",
+            rows,
+            &pick0,
+            &pick0.replace(';', "0;"),
         ),
         fault(
             "stuck control bit",
             "SR stuck at 0 (lane 0)",
             "top",
-            "lanes$0$sr = cfb$sr$0;",
+            &format!("lanes$0$sr = {ctl}$sr$0;"),
             "lanes$0$sr = 1'b0;",
         ),
         fault(
             "stuck control bit",
             "ER stuck at 0 (lane 0)",
             "top",
-            "lanes$0$er = cfb$er$0;",
+            &format!("lanes$0$er = {ctl}$er$0;"),
             "lanes$0$er = 1'b0;",
         ),
         fault(
@@ -179,7 +181,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "stuck control bit",
             "invalid stuck at 1 (lane 0)",
             "top",
-            "lanes$0$invalid = cfb$invalid$0;",
+            &format!("lanes$0$invalid = {ctl}$invalid$0;"),
             "lanes$0$invalid = 1'b1;",
         ),
         fault(

@@ -20,8 +20,8 @@ pub use split::{
 };
 pub use width_clean::width_clean;
 
-/// Ring-buffer address bits of every build: enough for a 256² slice at
-/// p >= 2 (see `PipelineConfig::history_bits`, which refuses larger needs).
+/// Delay-line pointer bits of every build: enough for a 256² slice at any p
+/// (see `PipelineConfig::history_bits`, which refuses larger needs).
 pub const H: usize = 16;
 /// Address bits of an on-chip memory module: 2^16 voxels per module.
 pub const ON_CHIP_BITS: usize = 16;
@@ -124,6 +124,23 @@ pub fn export(
         });
     }
     Ok((designs, memory))
+}
+
+/// The pipelines' buffer memory (compositing-buffer history and gradient
+/// slices, not the voxel memory) against the least the scene needs, for the
+/// largest sweep's design (sweeps run one after another on one pipeline).
+pub fn buffer_memory(designs: &[SweepDesign]) -> serde_json::Value {
+    let c = designs
+        .iter()
+        .map(|d| &d.config)
+        .max_by_key(|c| c.buffer_bits())
+        .expect("a design per sweep");
+    let (bits, min) = (c.buffer_bits(), c.minimum_buffer_bits());
+    serde_json::json!({
+        "bits": bits,
+        "minimum_bits": min,
+        "ratio": (bits as f64 / min as f64 * 1000.0).round() / 1000.0,
+    })
 }
 
 /// Whether `out` may be replaced by an export: it does not exist, or it is
@@ -243,12 +260,7 @@ pub fn write_export(
                     "voxels_per_module": dims[0].div_ceil(p) * dims[1] * dims[2],
                     "module_address_bits": if memory == Memory::OnChip { config.cfb.memory_bits } else { 32 },
                 },
-                "tap_ring_address_bits": config.tap_bits(),
-                "gradient_ring_address_bits": if config.gradient {
-                    hdl::abc_gradient::AbcGradient::<H>::ring_bits(config.slice_beats, config.beam_beats)
-                } else {
-                    0
-                },
+                "buffer_memory": buffer_memory(&designs),
             },
             "units_left_out": names(&designs[0].left_out),
             "sweeps": sweeps,

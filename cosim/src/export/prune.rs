@@ -21,7 +21,7 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
     if !config.gradient {
         v.push(LeftOut {
             name: "abc_gradient",
-            instances: &["abc"],
+            instances: &["abc", "late"],
         });
     }
     if golden.reflectance.is_none() {
@@ -106,6 +106,12 @@ pub fn prune(verilog: &str, units: &[LeftOut]) -> Result<String, String> {
                 .is_some_and(|(_, leaf)| gone.contains(&leaf))
         })
         .map(|m| (m.name.clone(), module_ports(&m.text)))
+        .collect();
+    // A unit inside another removed unit goes with it.
+    let pruned: Vec<(String, Vec<(String, bool)>)> = pruned
+        .iter()
+        .filter(|(n, _)| !pruned.iter().any(|(p, _)| n.starts_with(&format!("{p}$"))))
+        .cloned()
         .collect();
     modules.retain(|m| {
         !pruned

@@ -47,8 +47,8 @@ pub fn stage_file(name: &str) -> &'static str {
     let parts: Vec<&str> = name.split('$').collect();
     match parts.as_slice() {
         ["top"] => "top.v",
-        ["top", "cfb", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
-        ["top", "cfb", ..] => "cfb.v",
+        ["top", "cfb" | "late", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
+        ["top", "cfb" | "late", ..] => "cfb.v",
         ["top", "lanes", _, "feed", "abc", ..] => "abc_gradient.v",
         ["top", "lanes", _, "shader", ..] => "shader.v",
         ["top", "lanes", _, "taps", ..] => "tap_network.v",
@@ -92,8 +92,15 @@ lint_off -rule DECLFILENAME -file "*compositor.v"
 // waveforms show them; the pipeline itself needs neither.
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$z'*"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Signal is not used: 'lanes$*$address'*"
-// Ring buffers and memory modules are as deep as the scene needs: they take
-// the pipeline's 16-bit addresses and use only the low address bits,
+// The late CFB, with a gradient unit, recomputes the control only: its voxel,
+// memory port and sweep status are unread.
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$value$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$ext_addr$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$busy'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$n_*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$bs'*"
+// Delay lines and memory modules are as deep as the scene needs: they take
+// the pipeline's 16-bit pointers and addresses and use only the low bits,
 lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
 lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_address'*"
 // and store only the bits the scene can set: the voxel bits of a voxel, and

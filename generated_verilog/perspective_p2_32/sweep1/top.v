@@ -31,6 +31,10 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     output reg  [63:0] res$0;
     output reg  [63:0] res$1;
     
+    // Constant declarations
+    localparam  late_delay = 'h201;
+    localparam  gradient = 1'b0;
+    
     // Stub signals
     reg  cfb$clock;
     reg  cfb$start;
@@ -81,7 +85,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] cfb$dy_mag$0;
     wire  [15:0] cfb$dy_mag$1;
     reg  lanes$0$clock;
-    reg  [15:0] lanes$0$now;
     reg  lanes$0$beat_valid;
     reg  [15:0] lanes$0$value;
     reg  [15:0] lanes$0$x;
@@ -142,7 +145,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$0$px_y;
     wire  [2:0] lanes$0$px_face;
     reg  lanes$1$clock;
-    reg  [15:0] lanes$1$now;
     reg  lanes$1$beat_valid;
     reg  [15:0] lanes$1$value;
     reg  [15:0] lanes$1$x;
@@ -202,9 +204,57 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$1$px_x;
     wire  [15:0] lanes$1$px_y;
     wire  [2:0] lanes$1$px_face;
-    reg  [15:0] now$d;
-    wire  [15:0] now$q;
-    reg  now$clock;
+    reg  late$clock;
+    reg  late$start;
+    wire  late$busy = 'h0;
+    reg  late$load_enable;
+    reg  [7:0] late$load_module;
+    reg  [15:0] late$load_address;
+    reg  [15:0] late$load_data;
+    wire  late$valid = 'h0;
+    wire  [15:0] late$n_s = 'h0;
+    wire  [15:0] late$n_beam = 'h0;
+    wire  [15:0] late$n_b = 'h0;
+    wire  late$bs = 'h0;
+    wire  [15:0] late$value$0 = 'h0;
+    wire  [15:0] late$value$1 = 'h0;
+    wire  [15:0] late$x$0 = 'h0;
+    wire  [15:0] late$x$1 = 'h0;
+    wire  [15:0] late$y$0 = 'h0;
+    wire  [15:0] late$y$1 = 'h0;
+    wire  late$pad$0 = 'h0;
+    wire  late$pad$1 = 'h0;
+    wire  late$sr$0 = 'h0;
+    wire  late$sr$1 = 'h0;
+    wire  late$er$0 = 'h0;
+    wire  late$er$1 = 'h0;
+    wire  [15:0] late$base_x$0 = 'h0;
+    wire  [15:0] late$base_x$1 = 'h0;
+    wire  [15:0] late$base_y$0 = 'h0;
+    wire  [15:0] late$base_y$1 = 'h0;
+    wire  [2:0] late$face$0 = 'h0;
+    wire  [2:0] late$face$1 = 'h0;
+    wire  late$at_edge$0 = 'h0;
+    wire  late$at_edge$1 = 'h0;
+    wire  late$invalid$0 = 'h0;
+    wire  late$invalid$1 = 'h0;
+    wire  late$halo$0 = 'h0;
+    wire  late$halo$1 = 'h0;
+    wire  [31:0] late$ext_addr$0 = 'h0;
+    wire  [31:0] late$ext_addr$1 = 'h0;
+    reg  [15:0] late$ext_data$0;
+    reg  [15:0] late$ext_data$1;
+    wire  late$dx_neg$0 = 'h0;
+    wire  late$dx_neg$1 = 'h0;
+    wire  [15:0] late$dx_mag$0 = 'h0;
+    wire  [15:0] late$dx_mag$1 = 'h0;
+    wire  late$dy_neg$0 = 'h0;
+    wire  late$dy_neg$1 = 'h0;
+    wire  [15:0] late$dy_mag$0 = 'h0;
+    wire  [15:0] late$dy_mag$1 = 'h0;
+    reg  [31:0] late_wait$d;
+    wire  [31:0] late_wait$q;
+    reg  late_wait$clock;
     
     // Sub module instances
     top$cfb cfb(
@@ -259,7 +309,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$0 lanes$0(
         .clock(lanes$0$clock),
-        .now(lanes$0$now),
         .beat_valid(lanes$0$beat_valid),
         .value(lanes$0$value),
         .x(lanes$0$x),
@@ -322,7 +371,6 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$1 lanes$1(
         .clock(lanes$1$clock),
-        .now(lanes$1$now),
         .beat_valid(lanes$1$beat_valid),
         .value(lanes$1$value),
         .x(lanes$1$x),
@@ -383,17 +431,16 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         .px_y(lanes$1$px_y),
         .px_face(lanes$1$px_face)
     );
-    top$now now(
-        .d(now$d),
-        .q(now$q),
-        .clock(now$clock)
+    top$late_wait late_wait(
+        .d(late_wait$d),
+        .q(late_wait$q),
+        .clock(late_wait$clock)
     );
     
     // Update code
     always @(*) begin
-        now$clock = clock;
-        now$d = now$q;
-        now$d = now$q + 'h1;
+        late_wait$clock = clock;
+        late_wait$d = late_wait$q;
         cfb$clock = clock;
         cfb$start = start;
         cfb$load_enable = load_enable;
@@ -405,9 +452,21 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         n_beam = cfb$n_beam;
         n_b = cfb$n_b;
         bs = cfb$bs;
+        late_wait$d = late_wait$q;
+        if (start & ~cfb$busy) begin
+            late_wait$d = late_delay;
+        end
+        else if (late_wait$q != 'h0) begin
+            late_wait$d = late_wait$q - 'h1;
+        end
+        late$clock = clock;
+        late$start = late_wait$q == 'h1;
+        late$load_enable = 1'b0;
+        late$load_module = 'h0;
+        late$load_address = 'h0;
+        late$load_data = 'h0;
+        late$ext_data$0 = 'h0;
         lanes$0$clock = clock;
-        lanes$0$now = now$q;
-        lanes$0$beat_valid = cfb$valid;
         cfb$ext_data$0 = ext_data$0;
         ext_addr$0 = cfb$ext_addr$0;
         px_valid$0 = lanes$0$px_valid;
@@ -418,24 +477,8 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$0 = lanes$0$res_valid;
         res$0 = lanes$0$res;
         lanes$0$value = cfb$value$0;
-        lanes$0$x = cfb$x$0;
-        lanes$0$y = cfb$y$0;
-        lanes$0$pad = cfb$pad$0;
-        lanes$0$invalid = cfb$invalid$0;
-        lanes$0$halo = cfb$halo$0;
-        lanes$0$sr = cfb$sr$0;
-        lanes$0$er = cfb$er$0;
-        lanes$0$base_x = cfb$base_x$0;
-        lanes$0$base_y = cfb$base_y$0;
-        lanes$0$face = cfb$face$0;
-        lanes$0$at_edge = cfb$at_edge$0;
-        lanes$0$dx_neg = cfb$dx_neg$0;
-        lanes$0$dx_mag = cfb$dx_mag$0;
-        lanes$0$dy_neg = cfb$dy_neg$0;
-        lanes$0$dy_mag = cfb$dy_mag$0;
+        late$ext_data$1 = 'h0;
         lanes$1$clock = clock;
-        lanes$1$now = now$q;
-        lanes$1$beat_valid = cfb$valid;
         cfb$ext_data$1 = ext_data$1;
         ext_addr$1 = cfb$ext_addr$1;
         px_valid$1 = lanes$1$px_valid;
@@ -446,21 +489,74 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         res_valid$1 = lanes$1$res_valid;
         res$1 = lanes$1$res;
         lanes$1$value = cfb$value$1;
-        lanes$1$x = cfb$x$1;
-        lanes$1$y = cfb$y$1;
-        lanes$1$pad = cfb$pad$1;
-        lanes$1$invalid = cfb$invalid$1;
-        lanes$1$halo = cfb$halo$1;
-        lanes$1$sr = cfb$sr$1;
-        lanes$1$er = cfb$er$1;
-        lanes$1$base_x = cfb$base_x$1;
-        lanes$1$base_y = cfb$base_y$1;
-        lanes$1$face = cfb$face$1;
-        lanes$1$at_edge = cfb$at_edge$1;
-        lanes$1$dx_neg = cfb$dx_neg$1;
-        lanes$1$dx_mag = cfb$dx_mag$1;
-        lanes$1$dy_neg = cfb$dy_neg$1;
-        lanes$1$dy_mag = cfb$dy_mag$1;
+        if (gradient) begin
+            lanes$0$beat_valid = late$valid;
+            lanes$0$x = late$x$0;
+            lanes$0$y = late$y$0;
+            lanes$0$pad = late$pad$0;
+            lanes$0$invalid = late$invalid$0;
+            lanes$0$halo = late$halo$0;
+            lanes$0$sr = late$sr$0;
+            lanes$0$er = late$er$0;
+            lanes$0$base_x = late$base_x$0;
+            lanes$0$base_y = late$base_y$0;
+            lanes$0$face = late$face$0;
+            lanes$0$at_edge = late$at_edge$0;
+            lanes$0$dx_neg = late$dx_neg$0;
+            lanes$0$dx_mag = late$dx_mag$0;
+            lanes$0$dy_neg = late$dy_neg$0;
+            lanes$0$dy_mag = late$dy_mag$0;
+            lanes$1$beat_valid = late$valid;
+            lanes$1$x = late$x$1;
+            lanes$1$y = late$y$1;
+            lanes$1$pad = late$pad$1;
+            lanes$1$invalid = late$invalid$1;
+            lanes$1$halo = late$halo$1;
+            lanes$1$sr = late$sr$1;
+            lanes$1$er = late$er$1;
+            lanes$1$base_x = late$base_x$1;
+            lanes$1$base_y = late$base_y$1;
+            lanes$1$face = late$face$1;
+            lanes$1$at_edge = late$at_edge$1;
+            lanes$1$dx_neg = late$dx_neg$1;
+            lanes$1$dx_mag = late$dx_mag$1;
+            lanes$1$dy_neg = late$dy_neg$1;
+            lanes$1$dy_mag = late$dy_mag$1;
+        end
+        else begin
+            lanes$0$beat_valid = cfb$valid;
+            lanes$0$x = cfb$x$0;
+            lanes$0$y = cfb$y$0;
+            lanes$0$pad = cfb$pad$0;
+            lanes$0$invalid = cfb$invalid$0;
+            lanes$0$halo = cfb$halo$0;
+            lanes$0$sr = cfb$sr$0;
+            lanes$0$er = cfb$er$0;
+            lanes$0$base_x = cfb$base_x$0;
+            lanes$0$base_y = cfb$base_y$0;
+            lanes$0$face = cfb$face$0;
+            lanes$0$at_edge = cfb$at_edge$0;
+            lanes$0$dx_neg = cfb$dx_neg$0;
+            lanes$0$dx_mag = cfb$dx_mag$0;
+            lanes$0$dy_neg = cfb$dy_neg$0;
+            lanes$0$dy_mag = cfb$dy_mag$0;
+            lanes$1$beat_valid = cfb$valid;
+            lanes$1$x = cfb$x$1;
+            lanes$1$y = cfb$y$1;
+            lanes$1$pad = cfb$pad$1;
+            lanes$1$invalid = cfb$invalid$1;
+            lanes$1$halo = cfb$halo$1;
+            lanes$1$sr = cfb$sr$1;
+            lanes$1$er = cfb$er$1;
+            lanes$1$base_x = cfb$base_x$1;
+            lanes$1$base_y = cfb$base_y$1;
+            lanes$1$face = cfb$face$1;
+            lanes$1$at_edge = cfb$at_edge$1;
+            lanes$1$dx_neg = cfb$dx_neg$1;
+            lanes$1$dx_mag = cfb$dx_mag$1;
+            lanes$1$dy_neg = cfb$dy_neg$1;
+            lanes$1$dy_mag = cfb$dy_mag$1;
+        end
         lanes$1$t0i1 = lanes$0$t0s0;
         lanes$1$t1i1 = lanes$0$t1s0;
         lanes$1$t1i2 = lanes$0$t1s1;
