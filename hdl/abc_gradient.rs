@@ -152,11 +152,6 @@ impl<const H: usize> AbcGradient<H> {
             .map(|l| l.memory_bits())
             .sum()
     }
-
-    /// Longest delay line of the chain, in clocks.
-    pub fn longest_line(s: u32, b: u32) -> u32 {
-        s - b
-    }
 }
 
 impl<const H: usize> Logic for AbcGradient<H> {

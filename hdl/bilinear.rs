@@ -11,9 +11,11 @@
 //!
 //! Two register stages, one voxel per clock. Every channel is 32 bits wide
 //! so that channel 0 can carry the X-ray sum (`rgba_bits + log2(depth)`
-//! bits); the difference is split into 16-bit halves for two 16x16
-//! multipliers, and where the inputs are 16-bit values the upper half is
-//! constant zero, so synthesis removes it.
+//! bits); for X-ray the difference is split into 16-bit halves for two
+//! 16x16 multipliers. Every other channel, and channel 0 in the other
+//! modes, holds values of at most 16 bits, whose difference has no upper
+//! half: those lerps are built with one multiplier (three per channel, the
+//! datapath's count).
 
 use rust_hdl::prelude::*;
 
@@ -30,6 +32,8 @@ struct WideLerp {
     pub y: Signal<Out, Bits<32>>,
     half: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
+    /// The difference can exceed 16 bits (X-ray's channel 0).
+    wide: Constant<Bit>,
     diff: Signal<Local, Bits<32>>,
     prod: Signal<Local, Bits<64>>,
     step_up: Signal<Local, Bits<32>>,
@@ -37,7 +41,7 @@ struct WideLerp {
 }
 
 impl WideLerp {
-    fn new(frac_bits: u32) -> WideLerp {
+    fn new(frac_bits: u32, wide: bool) -> WideLerp {
         WideLerp {
             a: Default::default(),
             b: Default::default(),
@@ -45,6 +49,7 @@ impl WideLerp {
             y: Default::default(),
             half: Constant::new((1u64 << (frac_bits - 1)).to_bits()),
             shift: Constant::new((frac_bits as u64).to_bits()),
+            wide: Constant::new(wide),
             diff: Default::default(),
             prod: Default::default(),
             step_up: Default::default(),
@@ -61,9 +66,12 @@ impl Logic for WideLerp {
         } else {
             self.diff.next = self.a.val() - self.b.val();
         }
-        self.prod.next = (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val())
-            << 16)
-            + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+        self.prod.next = bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+        if self.wide.val() {
+            self.prod.next =
+                (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val()) << 16)
+                    + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+        }
         self.step_up.next =
             bit_cast::<32, 64>((self.prod.val() + self.half.val()) >> self.shift.val());
         self.step_down.next =
@@ -96,7 +104,7 @@ struct WideChannel {
 }
 
 impl WideChannel {
-    fn new(frac_bits: u32) -> WideChannel {
+    fn new(frac_bits: u32, wide: bool) -> WideChannel {
         WideChannel {
             clock: Default::default(),
             c00: Default::default(),
@@ -106,9 +114,9 @@ impl WideChannel {
             wx: Default::default(),
             wy: Default::default(),
             y: Default::default(),
-            top: WideLerp::new(frac_bits),
-            bottom: WideLerp::new(frac_bits),
-            vertical: WideLerp::new(frac_bits),
+            top: WideLerp::new(frac_bits, wide),
+            bottom: WideLerp::new(frac_bits, wide),
+            vertical: WideLerp::new(frac_bits, wide),
             top_q: Default::default(),
             bottom_q: Default::default(),
             out_q: Default::default(),
@@ -155,7 +163,8 @@ pub struct Bilinear {
 }
 
 impl Bilinear {
-    pub fn new(frac_bits: u32) -> Bilinear {
+    /// `wide`: channel 0 carries X-ray's 32-bit sum.
+    pub fn new(frac_bits: u32, wide: bool) -> Bilinear {
         Bilinear {
             clock: Default::default(),
             c00: Default::default(),
@@ -166,7 +175,7 @@ impl Bilinear {
             wy: Default::default(),
             out: Default::default(),
             wy_q: Default::default(),
-            ch: std::array::from_fn(|_| WideChannel::new(frac_bits)),
+            ch: std::array::from_fn(|i| WideChannel::new(frac_bits, wide && i == 0)),
         }
     }
 }

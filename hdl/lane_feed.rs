@@ -80,6 +80,11 @@ pub struct LaneFeed<const H: usize> {
 }
 
 impl<const H: usize> LaneFeed<H> {
+    /// Bits of block RAM in the gradient unit.
+    pub fn memory_bits(&self) -> usize {
+        self.abc.memory_bits()
+    }
+
     pub fn new(c: &PipelineConfig) -> LaneFeed<H> {
         LaneFeed {
             clock: Default::default(),

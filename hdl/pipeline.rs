@@ -316,6 +316,11 @@ pub struct PipeLane<const H: usize> {
 }
 
 impl<const H: usize> PipeLane<H> {
+    /// Bits of block RAM in the lane's buffers, as built.
+    pub fn buffer_bits(&self) -> u64 {
+        (self.taps.memory_bits() + self.feed.memory_bits()) as u64
+    }
+
     fn new(c: &PipelineConfig, shader: Shader, mode: Mode) -> PipeLane<H> {
         PipeLane {
             clock: Default::default(),
@@ -383,7 +388,7 @@ impl<const H: usize> PipeLane<H> {
             ctl: Default::default(),
             taps: TapNetwork::new(c),
             cells: Select2x2::new(c, mode),
-            bilinear: Bilinear::new(c.frac_bits),
+            bilinear: Bilinear::new(c.frac_bits, mode == Mode::Xray),
             compositor: Compositor::new(mode, c.order, c.rgba_bits),
         }
     }
@@ -610,6 +615,12 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             ..config.cfb
         }));
         Ok(Self::with_lanes(config, lanes, cfb, late))
+    }
+
+    /// Bits of block RAM in the pipelines' buffers, as built (not the CFB's
+    /// voxel memory): `PipelineConfig::buffer_bits` counts them ahead.
+    pub fn buffer_bits(&self) -> u64 {
+        self.lanes.iter().map(|l| l.buffer_bits()).sum()
     }
 
     /// The pipeline around `lanes` and the two CFBs. rust-hdl's signals are

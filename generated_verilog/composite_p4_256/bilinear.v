@@ -254,6 +254,7 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -269,7 +270,10 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -326,6 +330,7 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -341,7 +346,10 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -381,6 +389,7 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -396,7 +405,10 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -513,6 +525,7 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -528,7 +541,10 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -585,6 +601,7 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -600,7 +617,10 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -640,6 +660,7 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -655,7 +676,10 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -772,6 +796,7 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -787,7 +812,10 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -844,6 +872,7 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -859,7 +888,10 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -899,6 +931,7 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -914,7 +947,10 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1031,6 +1067,7 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1046,7 +1083,10 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1103,6 +1143,7 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1118,7 +1159,10 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1158,6 +1202,7 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1173,7 +1218,10 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1458,6 +1506,7 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1473,7 +1522,10 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1530,6 +1582,7 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1545,7 +1598,10 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1585,6 +1641,7 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1600,7 +1657,10 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1717,6 +1777,7 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1732,7 +1793,10 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1789,6 +1853,7 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1804,7 +1869,10 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1844,6 +1912,7 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1859,7 +1928,10 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1976,6 +2048,7 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1991,7 +2064,10 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2048,6 +2124,7 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2063,7 +2140,10 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2103,6 +2183,7 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2118,7 +2199,10 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2235,6 +2319,7 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2250,7 +2335,10 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2307,6 +2395,7 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2322,7 +2411,10 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2362,6 +2454,7 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2377,7 +2470,10 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2662,6 +2758,7 @@ module top$lanes$2$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2677,7 +2774,10 @@ module top$lanes$2$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2734,6 +2834,7 @@ module top$lanes$2$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2749,7 +2850,10 @@ module top$lanes$2$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2789,6 +2893,7 @@ module top$lanes$2$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2804,7 +2909,10 @@ module top$lanes$2$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2921,6 +3029,7 @@ module top$lanes$2$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2936,7 +3045,10 @@ module top$lanes$2$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2993,6 +3105,7 @@ module top$lanes$2$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3008,7 +3121,10 @@ module top$lanes$2$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3048,6 +3164,7 @@ module top$lanes$2$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3063,7 +3180,10 @@ module top$lanes$2$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3180,6 +3300,7 @@ module top$lanes$2$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3195,7 +3316,10 @@ module top$lanes$2$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3252,6 +3376,7 @@ module top$lanes$2$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3267,7 +3392,10 @@ module top$lanes$2$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3307,6 +3435,7 @@ module top$lanes$2$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3322,7 +3451,10 @@ module top$lanes$2$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3439,6 +3571,7 @@ module top$lanes$2$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3454,7 +3587,10 @@ module top$lanes$2$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3511,6 +3647,7 @@ module top$lanes$2$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3526,7 +3663,10 @@ module top$lanes$2$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3566,6 +3706,7 @@ module top$lanes$2$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3581,7 +3722,10 @@ module top$lanes$2$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3866,6 +4010,7 @@ module top$lanes$3$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3881,7 +4026,10 @@ module top$lanes$3$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3938,6 +4086,7 @@ module top$lanes$3$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -3953,7 +4102,10 @@ module top$lanes$3$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -3993,6 +4145,7 @@ module top$lanes$3$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4008,7 +4161,10 @@ module top$lanes$3$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4125,6 +4281,7 @@ module top$lanes$3$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4140,7 +4297,10 @@ module top$lanes$3$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4197,6 +4357,7 @@ module top$lanes$3$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4212,7 +4373,10 @@ module top$lanes$3$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4252,6 +4416,7 @@ module top$lanes$3$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4267,7 +4432,10 @@ module top$lanes$3$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4384,6 +4552,7 @@ module top$lanes$3$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4399,7 +4568,10 @@ module top$lanes$3$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4456,6 +4628,7 @@ module top$lanes$3$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4471,7 +4644,10 @@ module top$lanes$3$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4511,6 +4687,7 @@ module top$lanes$3$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4526,7 +4703,10 @@ module top$lanes$3$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4643,6 +4823,7 @@ module top$lanes$3$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4658,7 +4839,10 @@ module top$lanes$3$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4715,6 +4899,7 @@ module top$lanes$3$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4730,7 +4915,10 @@ module top$lanes$3$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -4770,6 +4958,7 @@ module top$lanes$3$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -4785,7 +4974,10 @@ module top$lanes$3$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin

@@ -15,7 +15,8 @@ struct Vector {
     wy: u32,
 }
 
-fn run(frac: u32, max: u32) {
+/// Cells up to `max` (channel 0 up to `max0`, the X-ray sum when `wide`).
+fn run(frac: u32, max: u32, wide: bool, max0: u32) {
     let one = 1u32 << frac;
     let mut r = Vectors::new(5 + frac as u64);
     let vs: Vec<Vector> = (0..N)
@@ -27,7 +28,14 @@ fn run(frac: u32, max: u32) {
             };
             Vector {
                 cells: std::array::from_fn(|_| {
-                    std::array::from_fn(|_| if i % 9 == 0 { max } else { r.below(max) })
+                    std::array::from_fn(|c| {
+                        let m = if c == 0 { max0 } else { max };
+                        if i % 9 == 0 {
+                            m
+                        } else {
+                            r.below(m)
+                        }
+                    })
                 }),
                 wx: w(&mut r, 0),
                 wy: w(&mut r, 2),
@@ -54,7 +62,7 @@ fn run(frac: u32, max: u32) {
             )
         })
         .collect();
-    let mut uut = Bilinear::new(frac);
+    let mut uut = Bilinear::new(frac, wide);
     uut.connect_all();
     let mut sim = Simulation::new();
     sim.add_clock(5, |x: &mut Box<Bilinear>| x.clock.next = !x.clock.val());
@@ -89,7 +97,7 @@ fn run(frac: u32, max: u32) {
     });
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vcd");
     std::fs::create_dir_all(&dir).unwrap();
-    let vcd = dir.join(format!("bilinear_{frac}.vcd"));
+    let vcd = dir.join(format!("bilinear_{frac}_{wide}.vcd"));
     sim.run_traced(
         Box::new(uut),
         20 * (N + LATENCY) as u64 + 100,
@@ -100,16 +108,19 @@ fn run(frac: u32, max: u32) {
 
 #[test]
 fn bilinear_matches_golden_model() {
-    run(8, 255);
-    run(8, 65535);
-    run(12, 4095);
-    run(15, 32767);
+    run(8, 255, false, 255);
+    run(8, 65535, false, 65535);
+    run(12, 4095, false, 4095);
+    run(15, 32767, false, 32767);
+    // X-ray: a 24-bit sum in channel 0 needs both multipliers.
+    run(8, 255, true, (1 << 24) - 1);
+    run(12, 4095, true, (1 << 28) - 1);
 }
 
 #[test]
 fn bilinear_verilog_passes_yosys() {
     require_tool("yosys");
-    let mut uut = Bilinear::new(8);
+    let mut uut = Bilinear::new(8, true);
     uut.connect_all();
     yosys_validate("bilinear", &generate_verilog(&uut))
         .unwrap_or_else(|e| panic!("yosys rejects the bilinear unit: {e:?}"));

@@ -76,6 +76,11 @@ fn run_sweep<const P: usize>(
     let (base, results) = stream_results(vol, sweep, &golden, P);
     let config = PipelineConfig::new(sweep, vol.dims, P, &golden).unwrap();
     let mut uut = Pipeline::<P, A, H>::new(&config, &golden).unwrap();
+    assert_eq!(
+        uut.buffer_bits(),
+        config.buffer_bits(),
+        "{label}: buffer memory as built and as the manifest counts it"
+    );
     let mem = SkewedMemory::new(vol, P);
     assert!(mem.modules[0].len() <= 1 << A);
     uut.cfb.preload(&mem.modules);

@@ -254,6 +254,7 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -269,7 +270,10 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -326,6 +330,7 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -341,7 +346,10 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -381,6 +389,7 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -396,7 +405,10 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -513,6 +525,7 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -528,7 +541,10 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -585,6 +601,7 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -600,7 +617,10 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -640,6 +660,7 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -655,7 +676,10 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -772,6 +796,7 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -787,7 +812,10 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -844,6 +872,7 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -859,7 +888,10 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -899,6 +931,7 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -914,7 +947,10 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1031,6 +1067,7 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1046,7 +1083,10 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1103,6 +1143,7 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1118,7 +1159,10 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1158,6 +1202,7 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1173,7 +1218,10 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1458,6 +1506,7 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1473,7 +1522,10 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1530,6 +1582,7 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1545,7 +1598,10 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1585,6 +1641,7 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1600,7 +1657,10 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1717,6 +1777,7 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1732,7 +1793,10 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1789,6 +1853,7 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1804,7 +1869,10 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1844,6 +1912,7 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1859,7 +1928,10 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -1976,6 +2048,7 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -1991,7 +2064,10 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2048,6 +2124,7 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2063,7 +2140,10 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2103,6 +2183,7 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2118,7 +2199,10 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2235,6 +2319,7 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2250,7 +2335,10 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2307,6 +2395,7 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2322,7 +2411,10 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
@@ -2362,6 +2454,7 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
     // Constant declarations
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
     
     // Local signals
     reg  [31:0] diff;
@@ -2377,7 +2470,10 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
         else begin
             diff = a - b;
         end
-        prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
         step_up = 32'((prod + half) >> shift);
         step_down = 32'((prod + half - 'h1) >> shift);
         if (b >= a) begin
