@@ -9,8 +9,10 @@
 //! voxel (x, y, z) of lane k at beat t, was composited by lane
 //! k - 1 + e_x + e_y at beat t - S + e_y*B, one beat earlier or later when
 //! e_x crosses a partial-beam end (x mod P = 0 with e_x = -1, x mod P = P-1
-//! with e_x = +1). Each lane keeps its results in a ring buffer of block RAM
-//! (one copy per tap, one read port each). The nine taps of the 3x3 region
+//! with e_x = +1). Each lane keeps its results once, in a ring of block RAM
+//! read once, and beam-length delay lines and registers bring them to each
+//! tap's delay ([`crate::buffer_rows::BufferRows`], as Fig. 21's SFG reads
+//! the compositing FIFO once). The nine taps of the 3x3 region
 //! hop to the consuming lane through one register per neighbour link
 //! (m = 1 - e_x - e_y links; tap (+1, +1) takes one leftward link), and each
 //! tap keeps its previous value for the partial-beam case (the extension
@@ -20,7 +22,7 @@
 //!
 //! **Timing.** Shader input at T-1 (the CFB's output, or the gradient unit's a
 //! slice later), shader register at T, gather and bilinear T..T+2, compositor
-//! register at T+3, where the result is written to the ring buffer and, on
+//! register at T+3, where the result enters the lane's history and, on
 //! ER, goes out as a base-plane pixel. A tap needs delay > hops + 4, i.e.
 //! (n_y - 1) * b >= 9.
 //!
@@ -31,13 +33,18 @@
 //! the control delay line beside them ([`ControlDelay`], which also makes
 //! the pixel output).
 //!
+//! **Gradient control.** With a gradient unit the lanes' control comes from
+//! `late`, a second copy of the CFB's address generator without memory,
+//! started S + 1 clocks after the CFB, so the control of the voxel leaving
+//! the gradient unit is recomputed rather than stored a slice long.
+//!
 //! Units a scene does not need are built disabled, with empty tables and
-//! 2-word rings, and drive zero; `export::prune` removes them from the
-//! emitted Verilog (see `export::left_out`). The compositing-buffer rings are
-//! as deep as the longest tap delay and store only the bits the mode can set
-//! (`PipelineConfig::ring_fields`); for parallel views the five taps outside
-//! the 2x2 that the constant signs select get 2-word rings
-//! (`PipelineConfig::taps_used`).
+//! one-register delay lines, and drive zero; `export::prune` removes them
+//! from the emitted Verilog (see `export::left_out`). The delay lines are
+//! exactly as long as their delays and store only the bits the mode can set
+//! (`PipelineConfig::ring_fields`); when no tap the 2x2 selection can pick
+//! looks at row y - 1 (parallel views, `PipelineConfig::taps_used`), that
+//! row's beam-length line is a register.
 
 use crate::bilinear::Bilinear;
 use crate::cfb::{Cfb, CfbConfig};
@@ -98,8 +105,8 @@ pub struct PipelineConfig {
     pub ring_fields: Vec<(usize, usize)>,
     /// The taps (in `TAPS` order) that the 2x2 selection can pick: all for
     /// perspective views; for parallel views the four that the constant
-    /// signs of dx and dy select, fewer when dx or dy is 0. The others get
-    /// 2-word rings.
+    /// signs of dx and dy select, fewer when dx or dy is 0. The history
+    /// builds only the rows they need.
     pub taps_used: [bool; 9],
 }
 
@@ -269,7 +276,7 @@ pub struct PipeLane<const H: usize> {
     pub g_to_left_xp: Signal<Out, Bits<16>>,
     pub g_to_left_yp: Signal<Out, Bits<16>>,
     pub g_to_left_zp: Signal<Out, Bits<16>>,
-    /// Compositing-buffer taps: `tC s0` is tap C's ring-buffer read, `tC sJ`
+    /// Compositing-buffer taps: `tC s0` is tap C's value from the history, `tC sJ`
     /// its value after J links (passed on), `tC iJ` the input of its J-th
     /// link register (from lane k-1), `t8il` tap 8's leftward link (from k+1).
     pub t0s0: Signal<Out, Bits<64>>,
@@ -521,7 +528,7 @@ impl<const H: usize> Logic for PipeLane<H> {
             | (bit_cast::<64, 16>(self.compositor.out_g.val()) << 16)
             | (bit_cast::<64, 16>(self.compositor.out_b.val()) << 32)
             | (bit_cast::<64, 16>(self.compositor.out_a.val()) << 48);
-        // The result (T+3): into the taps' rings, and out with the pixel on ER.
+        // The result (T+3): into the history, and out with the pixel on ER.
         self.taps.res.next = self.res.val();
         self.taps.res_beat.next = self.ctl.res_beat.val();
         self.res_beat.next = self.ctl.res_beat.val();
@@ -534,7 +541,7 @@ impl<const H: usize> Logic for PipeLane<H> {
 }
 
 /// The whole Cube-4L pipeline: CFB and `P` pipelines (`A`-bit memory
-/// modules, `H`-bit ring buffers).
+/// modules, `H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
@@ -591,7 +598,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
         }
         if config.history_bits() > H {
             return Err(format!(
-                "the taps need {}-bit ring buffers, built with {H}",
+                "the buffers need {}-bit delay-line pointers, built with {H}",
                 config.history_bits()
             ));
         }
