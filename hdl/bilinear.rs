@@ -9,7 +9,10 @@
 //! lerp(a, b, w) = a + (((b - a) * w + 2^(f-1)) >> f)   (arithmetic shift)
 //! ```
 //!
-//! Two register stages, one voxel per clock. Every channel is 32 bits wide
+//! One voxel per clock with [`LATENCY`] clocks of latency, pipelined for
+//! speed: the cells and weights are registered on entry, and each lerp takes
+//! two clocks, its difference and product in the first (the multiplier's
+//! output register), the rounding shift and the sum in the second. Every channel is 32 bits wide
 //! so that channel 0 can carry the X-ray sum (`rgba_bits + log2(depth)`
 //! bits); for X-ray the difference is split into 16-bit halves for two
 //! 16x16 multipliers. Every other channel, and channel 0 in the other
@@ -19,16 +22,21 @@
 
 use rust_hdl::prelude::*;
 
-/// `lerp(a, b, w)` with `w` in `0..=2^frac`, combinational. In unsigned
+/// Clocks from the cells to the result.
+pub const LATENCY: usize = 5;
+
+/// `lerp(a, b, w)` with `w` in `0..=2^frac`, in two clocks. In unsigned
 /// form: for `b >= a`, `a + (((b - a) * w + 2^(f-1)) >> f)`; for `b < a`,
 /// `a - (((a - b) * w + 2^(f-1) - 1) >> f)` (the arithmetic shift of the
-/// golden model). The 32-bit difference's halves go through two 16x16
+/// golden model). A wide lerp's 32-bit difference goes through two 16x16
 /// multipliers, `d*w = (d_hi*w << 16) + d_lo*w`.
 #[derive(LogicBlock)]
 struct WideLerp {
+    pub clock: Signal<In, Clock>,
     pub a: Signal<In, Bits<32>>,
     pub b: Signal<In, Bits<32>>,
     pub w: Signal<In, Bits<16>>,
+    /// The lerp of the inputs two clocks back.
     pub y: Signal<Out, Bits<32>>,
     half: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
@@ -36,13 +44,19 @@ struct WideLerp {
     wide: Constant<Bit>,
     diff: Signal<Local, Bits<32>>,
     prod: Signal<Local, Bits<64>>,
+    /// First clock: `b >= a`, `a` and the product.
+    up_q: DFF<Bit>,
+    a_q: DFF<Bits<32>>,
+    prod_q: DFF<Bits<64>>,
     step_up: Signal<Local, Bits<32>>,
     step_down: Signal<Local, Bits<32>>,
+    y_q: DFF<Bits<32>>,
 }
 
 impl WideLerp {
     fn new(frac_bits: u32, wide: bool) -> WideLerp {
         WideLerp {
+            clock: Default::default(),
             a: Default::default(),
             b: Default::default(),
             w: Default::default(),
@@ -52,8 +66,12 @@ impl WideLerp {
             wide: Constant::new(wide),
             diff: Default::default(),
             prod: Default::default(),
+            up_q: Default::default(),
+            a_q: Default::default(),
+            prod_q: Default::default(),
             step_up: Default::default(),
             step_down: Default::default(),
+            y_q: Default::default(),
         }
     }
 }
@@ -61,6 +79,7 @@ impl WideLerp {
 impl Logic for WideLerp {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(self, clock, up_q, a_q, prod_q, y_q);
         if self.b.val() >= self.a.val() {
             self.diff.next = self.b.val() - self.a.val();
         } else {
@@ -72,19 +91,23 @@ impl Logic for WideLerp {
                 (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val()) << 16)
                     + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
         }
+        self.up_q.d.next = self.b.val() >= self.a.val();
+        self.a_q.d.next = self.a.val();
+        self.prod_q.d.next = self.prod.val();
         self.step_up.next =
-            bit_cast::<32, 64>((self.prod.val() + self.half.val()) >> self.shift.val());
+            bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val()) >> self.shift.val());
         self.step_down.next =
-            bit_cast::<32, 64>((self.prod.val() + self.half.val() - 1) >> self.shift.val());
-        if self.b.val() >= self.a.val() {
-            self.y.next = self.a.val() + self.step_up.val();
+            bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val() - 1) >> self.shift.val());
+        if self.up_q.q.val() {
+            self.y_q.d.next = self.a_q.q.val() + self.step_up.val();
         } else {
-            self.y.next = self.a.val() - self.step_down.val();
+            self.y_q.d.next = self.a_q.q.val() - self.step_down.val();
         }
+        self.y.next = self.y_q.q.val();
     }
 }
 
-/// One channel: two x lerps, a register, the y lerp, a register.
+/// One channel: the cells registered, two x lerps, the y lerp.
 #[derive(LogicBlock)]
 struct WideChannel {
     pub clock: Signal<In, Clock>,
@@ -92,15 +115,14 @@ struct WideChannel {
     pub c10: Signal<In, Bits<32>>,
     pub c01: Signal<In, Bits<32>>,
     pub c11: Signal<In, Bits<32>>,
+    /// The weights, already registered (`Bilinear` lines them up).
     pub wx: Signal<In, Bits<16>>,
     pub wy: Signal<In, Bits<16>>,
     pub y: Signal<Out, Bits<32>>,
     top: WideLerp,
     bottom: WideLerp,
     vertical: WideLerp,
-    top_q: DFF<Bits<32>>,
-    bottom_q: DFF<Bits<32>>,
-    out_q: DFF<Bits<32>>,
+    cells_q: [DFF<Bits<32>>; 4],
 }
 
 impl WideChannel {
@@ -117,9 +139,7 @@ impl WideChannel {
             top: WideLerp::new(frac_bits, wide),
             bottom: WideLerp::new(frac_bits, wide),
             vertical: WideLerp::new(frac_bits, wide),
-            top_q: Default::default(),
-            bottom_q: Default::default(),
-            out_q: Default::default(),
+            cells_q: Default::default(),
         }
     }
 }
@@ -127,26 +147,32 @@ impl WideChannel {
 impl Logic for WideChannel {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, top_q, bottom_q, out_q);
-        self.top.a.next = self.c00.val();
-        self.top.b.next = self.c10.val();
+        for i in 0..4 {
+            self.cells_q[i].clock.next = self.clock.val();
+        }
+        self.top.clock.next = self.clock.val();
+        self.bottom.clock.next = self.clock.val();
+        self.vertical.clock.next = self.clock.val();
+        self.cells_q[0].d.next = self.c00.val();
+        self.cells_q[1].d.next = self.c10.val();
+        self.cells_q[2].d.next = self.c01.val();
+        self.cells_q[3].d.next = self.c11.val();
+        self.top.a.next = self.cells_q[0].q.val();
+        self.top.b.next = self.cells_q[1].q.val();
         self.top.w.next = self.wx.val();
-        self.bottom.a.next = self.c01.val();
-        self.bottom.b.next = self.c11.val();
+        self.bottom.a.next = self.cells_q[2].q.val();
+        self.bottom.b.next = self.cells_q[3].q.val();
         self.bottom.w.next = self.wx.val();
-        self.top_q.d.next = self.top.y.val();
-        self.bottom_q.d.next = self.bottom.y.val();
-        self.vertical.a.next = self.top_q.q.val();
-        self.vertical.b.next = self.bottom_q.q.val();
+        self.vertical.a.next = self.top.y.val();
+        self.vertical.b.next = self.bottom.y.val();
         self.vertical.w.next = self.wy.val();
-        self.out_q.d.next = self.vertical.y.val();
-        self.y.next = self.out_q.q.val();
+        self.y.next = self.vertical.y.val();
     }
 }
 
 /// The bilinear datapath for RGBA (or an X-ray sum in channel 0): cells
 /// `cXY[channel]` where X/Y = 1 names the neighbour chosen by the sign of
-/// dx/dy; two clocks of latency.
+/// dx/dy; [`LATENCY`] clocks of latency.
 #[derive(LogicBlock)]
 pub struct Bilinear {
     pub clock: Signal<In, Clock>,
@@ -158,7 +184,9 @@ pub struct Bilinear {
     pub wx: Signal<In, Bits<16>>,
     pub wy: Signal<In, Bits<16>>,
     pub out: [Signal<Out, Bits<32>>; 4],
-    wy_q: DFF<Bits<16>>,
+    /// wx for the x lerps (one clock), wy for the y lerp (three).
+    wx_q: DFF<Bits<16>>,
+    wy_q: [DFF<Bits<16>>; 3],
     ch: [WideChannel; 4],
 }
 
@@ -174,6 +202,7 @@ impl Bilinear {
             wx: Default::default(),
             wy: Default::default(),
             out: Default::default(),
+            wx_q: Default::default(),
             wy_q: Default::default(),
             ch: std::array::from_fn(|i| WideChannel::new(frac_bits, wide && i == 0)),
         }
@@ -183,16 +212,22 @@ impl Bilinear {
 impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wy_q);
-        self.wy_q.d.next = self.wy.val();
+        dff_setup!(self, clock, wx_q);
+        for i in 0..3 {
+            self.wy_q[i].clock.next = self.clock.val();
+        }
+        self.wx_q.d.next = self.wx.val();
+        self.wy_q[0].d.next = self.wy.val();
+        self.wy_q[1].d.next = self.wy_q[0].q.val();
+        self.wy_q[2].d.next = self.wy_q[1].q.val();
         for i in 0..4 {
             self.ch[i].clock.next = self.clock.val();
             self.ch[i].c00.next = self.c00[i].val();
             self.ch[i].c10.next = self.c10[i].val();
             self.ch[i].c01.next = self.c01[i].val();
             self.ch[i].c11.next = self.c11[i].val();
-            self.ch[i].wx.next = self.wx.val();
-            self.ch[i].wy.next = self.wy_q.q.val();
+            self.ch[i].wx.next = self.wx_q.q.val();
+            self.ch[i].wy.next = self.wy_q[2].q.val();
             self.out[i].next = self.ch[i].y.val();
         }
     }

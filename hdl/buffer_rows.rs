@@ -4,36 +4,37 @@
 //! registers, instead of one ring copy with its own read port per tap.
 //!
 //! Tap (e_x, e_y), crossing h links, needs the lane's result from
-//! E = S - e_y*B - [e_x = 1] - h - 3 clocks back (`pipeline`'s tap delay,
-//! less its links and the three clocks from a beat's shader register to its
-//! result). Row e_y's taps lie within 4 clocks of R(e_y) = S - e_y*B - 7:
+//! E = S - e_y*B - [e_x = 1] - h - r clocks back (`pipeline`'s tap delay,
+//! less its links and the r = `RESULT_AT` clocks from a beat's shader
+//! register to its result). Row e_y's taps lie within 4 clocks of
+//! R(e_y) = S - e_y*B - r - 4:
 //! the ring delays the result R(+1), one beam-length line more gives R(0),
 //! another R(-1), and four registers per row give the rest. A scene whose
 //! taps never look at row -1 gets a register for that row's line.
 //!
-//! Memory: S - B - 7 words for the ring and 2B for the lines, where each tap
-//! used to keep its own ring of the next power of two above S + B.
+//! Memory: S - B - r - 4 words for the ring and 2B for the lines, where each
+//! tap used to keep its own ring of the next power of two above S + B.
 
 use crate::delay_line::DelayLine;
-use crate::pipeline::{PipelineConfig, TAPS};
+use crate::pipeline::{PipelineConfig, RESULT_AT, TAPS};
 use rust_hdl::prelude::*;
 
 /// The clocks a tap's value waits after the lane's result (`E` above).
 pub fn tap_wait(c: &PipelineConfig, tap: usize) -> u32 {
     let t = &c.taps[tap];
-    t.delay - t.hops - 3
+    t.delay - t.hops - RESULT_AT
 }
 
 /// Clocks from the result to row `e_y`'s first register (`R(e_y)`).
-fn row_wait(c: &PipelineConfig, ey: i32) -> u32 {
-    (c.slice_beats as i32 - ey * c.beam_beats as i32 - 7) as u32
+pub fn row_wait(c: &PipelineConfig, ey: i32) -> u32 {
+    (c.slice_beats as i32 - ey * c.beam_beats as i32) as u32 - RESULT_AT - 4
 }
 
 /// One lane's compositing-buffer history (`H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct BufferRows<const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// The lane's composited value (T+3) and its beat flag.
+    /// The lane's composited value (T + `RESULT_AT`) and its beat flag.
     pub res: Signal<In, Bits<64>>,
     pub res_beat: Signal<In, Bit>,
     /// Each tap's value (in `TAPS` order) as its ring read used to give it.

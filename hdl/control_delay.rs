@@ -1,11 +1,21 @@
 //! The control delay line of a Cube-4L pipeline (§3.5-3.7, Fig. 18): a
 //! beat's control travels beside its voxel, from the shader input (T-1) to
 //! the taps, the 2x2 selection and the bilinear unit (T) and on to the
-//! compositor's result (T+3), where it marks the result and, on ER, makes
-//! it a base-plane pixel; the shaded sample waits for the bilinear unit
-//! (T -> T+2).
+//! compositor's result (T+L+1, L the bilinear unit's latency), where it
+//! marks the result and, on ER, makes it a base-plane pixel; the shaded
+//! sample waits for the bilinear unit (T -> T+L).
 
+use crate::bilinear::LATENCY;
 use rust_hdl::prelude::*;
+
+/// Registers from the shader input to the result (T-1 -> T+L+1).
+const CONTROL: usize = LATENCY + 2;
+// `hdl_gen` needs literal loop bounds and indices: the update below is
+// written for L = 5.
+const _: () = assert!(
+    LATENCY == 5 && CONTROL == 7,
+    "update the literals in ControlDelay::update"
+);
 
 /// Control and sample registers of one lane.
 #[derive(LogicBlock, Default)]
@@ -39,13 +49,13 @@ pub struct ControlDelay {
     pub dx_mag_t: Signal<Out, Bits<16>>,
     pub dy_neg_t: Signal<Out, Bit>,
     pub dy_mag_t: Signal<Out, Bits<16>>,
-    /// The sample at T+2, as the compositor takes it.
+    /// The sample at T+L, as the compositor takes it.
     pub new_r: Signal<Out, Bits<16>>,
     pub new_g: Signal<Out, Bits<16>>,
     pub new_b: Signal<Out, Bits<16>>,
     pub new_a: Signal<Out, Bits<16>>,
     pub new_valid: Signal<Out, Bit>,
-    /// At T+3, beside the composited value: a beat, one that is not
+    /// At T+L+1, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
     pub res_valid: Signal<Out, Bit>,
@@ -53,7 +63,7 @@ pub struct ControlDelay {
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
     pub px_face: Signal<Out, Bits<3>>,
-    // Control from T-1 to T, and on to T+3.
+    // Control from T-1 to T, and on to T+L+1.
     x_q: DFF<Bits<16>>,
     y_q: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
@@ -61,25 +71,25 @@ pub struct ControlDelay {
     dxm_q: DFF<Bits<16>>,
     dyn_q: DFF<Bit>,
     dym_q: DFF<Bits<16>>,
-    v_q: [DFF<Bit>; 4],
-    er_q: [DFF<Bit>; 4],
-    pad_q: [DFF<Bit>; 4],
-    bx_q: [DFF<Bits<16>>; 4],
-    by_q: [DFF<Bits<16>>; 4],
-    face_q: [DFF<Bits<3>>; 4],
-    // The sample from T to T+2.
-    s_r: [DFF<Bits<16>>; 2],
-    s_g: [DFF<Bits<16>>; 2],
-    s_b: [DFF<Bits<16>>; 2],
-    s_a: [DFF<Bits<16>>; 2],
-    s_v: [DFF<Bit>; 2],
+    v_q: [DFF<Bit>; CONTROL],
+    er_q: [DFF<Bit>; CONTROL],
+    pad_q: [DFF<Bit>; CONTROL],
+    bx_q: [DFF<Bits<16>>; CONTROL],
+    by_q: [DFF<Bits<16>>; CONTROL],
+    face_q: [DFF<Bits<3>>; CONTROL],
+    // The sample from T to T+L.
+    s_r: [DFF<Bits<16>>; LATENCY],
+    s_g: [DFF<Bits<16>>; LATENCY],
+    s_b: [DFF<Bits<16>>; LATENCY],
+    s_a: [DFF<Bits<16>>; LATENCY],
+    s_v: [DFF<Bit>; LATENCY],
 }
 
 impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, x_q, y_q, sr_q, dxn_q, dxm_q, dyn_q, dym_q);
-        for i in 0..4 {
+        for i in 0..7 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -87,7 +97,7 @@ impl Logic for ControlDelay {
             self.by_q[i].clock.next = self.clock.val();
             self.face_q[i].clock.next = self.clock.val();
         }
-        for i in 0..2 {
+        for i in 0..5 {
             self.s_r[i].clock.next = self.clock.val();
             self.s_g[i].clock.next = self.clock.val();
             self.s_b[i].clock.next = self.clock.val();
@@ -109,14 +119,14 @@ impl Logic for ControlDelay {
         self.dx_mag_t.next = self.dxm_q.q.val();
         self.dy_neg_t.next = self.dyn_q.q.val();
         self.dy_mag_t.next = self.dym_q.q.val();
-        // T-1 -> T+3.
+        // T-1 -> T+L+1.
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();
         self.pad_q[0].d.next = self.pad.val();
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..4 {
+        for i in 1..7 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -124,27 +134,29 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[3].q.val();
-        self.res_valid.next = self.v_q[3].q.val() & !self.pad_q[3].q.val();
-        self.px_valid.next = self.v_q[3].q.val() & self.er_q[3].q.val() & !self.pad_q[3].q.val();
-        self.px_x.next = self.bx_q[3].q.val();
-        self.px_y.next = self.by_q[3].q.val();
-        self.px_face.next = self.face_q[3].q.val();
-        // The sample, T -> T+2.
+        self.res_beat.next = self.v_q[6].q.val();
+        self.res_valid.next = self.v_q[6].q.val() & !self.pad_q[6].q.val();
+        self.px_valid.next = self.v_q[6].q.val() & self.er_q[6].q.val() & !self.pad_q[6].q.val();
+        self.px_x.next = self.bx_q[6].q.val();
+        self.px_y.next = self.by_q[6].q.val();
+        self.px_face.next = self.face_q[6].q.val();
+        // The sample, T -> T+L.
         self.s_r[0].d.next = self.r.val();
         self.s_g[0].d.next = self.g.val();
         self.s_b[0].d.next = self.b.val();
         self.s_a[0].d.next = self.a.val();
         self.s_v[0].d.next = self.sample_valid.val();
-        self.s_r[1].d.next = self.s_r[0].q.val();
-        self.s_g[1].d.next = self.s_g[0].q.val();
-        self.s_b[1].d.next = self.s_b[0].q.val();
-        self.s_a[1].d.next = self.s_a[0].q.val();
-        self.s_v[1].d.next = self.s_v[0].q.val();
-        self.new_r.next = self.s_r[1].q.val();
-        self.new_g.next = self.s_g[1].q.val();
-        self.new_b.next = self.s_b[1].q.val();
-        self.new_a.next = self.s_a[1].q.val();
-        self.new_valid.next = self.s_v[1].q.val();
+        for i in 1..5 {
+            self.s_r[i].d.next = self.s_r[i - 1].q.val();
+            self.s_g[i].d.next = self.s_g[i - 1].q.val();
+            self.s_b[i].d.next = self.s_b[i - 1].q.val();
+            self.s_a[i].d.next = self.s_a[i - 1].q.val();
+            self.s_v[i].d.next = self.s_v[i - 1].q.val();
+        }
+        self.new_r.next = self.s_r[4].q.val();
+        self.new_g.next = self.s_g[4].q.val();
+        self.new_b.next = self.s_b[4].q.val();
+        self.new_a.next = self.s_a[4].q.val();
+        self.new_valid.next = self.s_v[4].q.val();
     }
 }

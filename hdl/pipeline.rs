@@ -21,10 +21,11 @@
 //! the start of a ray (SR), read as the reset value.
 //!
 //! **Timing.** Shader input at T-1 (the CFB's output, or the gradient unit's a
-//! slice later), shader register at T, gather and bilinear T..T+2, compositor
-//! register at T+3, where the result enters the lane's history and, on
-//! ER, goes out as a base-plane pixel. A tap needs delay > hops + 4, i.e.
-//! (n_y - 1) * b >= 9.
+//! slice later), shader register at T, gather at T, the bilinear unit
+//! T..T+L (`bilinear::LATENCY`, pipelined for speed), compositor register at
+//! T+L+1 ([`RESULT_AT`]), where the result enters the lane's history and, on
+//! ER, goes out as a base-plane pixel. The history's ring needs at least
+//! one word: (n_y - 1) * b >= L + 6.
 //!
 //! **Lane.** [`PipeLane`] wires its blocks in this order: the input
 //! selection ([`LaneFeed`], which holds the ABC gradient unit), the shader,
@@ -57,6 +58,17 @@ use crate::tap_network::TapNetwork;
 use golden_model::cube4l::plan::Sweep;
 use rust_hdl::prelude::*;
 use scene::Mode;
+
+/// Clocks from a beat's shader register (T) to its composited result.
+pub const RESULT_AT: u32 = crate::bilinear::LATENCY as u32 + 1;
+
+/// Clocks of a sweep beyond one beat per clock: the start register, the
+/// block-RAM read, the shader register and the bilinear unit's latency (the
+/// compositor register ends the last beat's own clock), and with a gradient
+/// unit one more (its output register).
+pub fn fill_clocks(gradient: bool) -> u64 {
+    3 + crate::bilinear::LATENCY as u64 + gradient as u64
+}
 
 /// The taps' `(e_x, e_y)` offsets, in the order of the lane's `t0..t8`.
 pub const TAPS: [(i32, i32); 9] = [
@@ -127,10 +139,11 @@ impl PipelineConfig {
         let pu = p as u32;
         let b = cfb.dims[0].div_ceil(pu);
         let s = cfb.dims[1] * b;
-        if (cfb.dims[1] - 1) * b < 9 {
+        if (cfb.dims[1] - 1) * b < RESULT_AT + 5 {
             return Err(format!(
-                "a slice of {} beams of {b} partial beams is too short for the compositing-buffer taps (need (n_y - 1) * b >= 9)",
-                cfb.dims[1]
+                "a slice of {} beams of {b} partial beams is too short for the compositing-buffer taps (need (n_y - 1) * b >= {})",
+                cfb.dims[1],
+                RESULT_AT + 5
             ));
         }
         let taps = TAPS.map(|(ex, ey)| {
@@ -189,7 +202,8 @@ impl PipelineConfig {
     /// the compositing-buffer ring or the gradient unit's.
     pub fn history_bits(&self) -> usize {
         let (s, b) = (self.slice_beats, self.beam_beats);
-        let longest = if self.gradient { s - b } else { s - b - 7 };
+        let ring = crate::buffer_rows::row_wait(self, 1);
+        let longest = if self.gradient { s - b } else { ring };
         crate::cfb::bits_for(longest as u64 + 1) as usize
     }
 
@@ -199,7 +213,8 @@ impl PipelineConfig {
     pub fn buffer_bits(&self) -> u64 {
         let (s, b) = (self.slice_beats as u64, self.beam_beats as u64);
         let row_minus = (0..9).any(|t| self.taps_used[t] && TAPS[t].1 == -1);
-        let history = (s - b - 7 + b + if row_minus { b } else { 0 }) * self.word_bits();
+        let ring = crate::buffer_rows::row_wait(self, 1) as u64;
+        let history = (ring + b + if row_minus { b } else { 0 }) * self.word_bits();
         let gradient = if self.gradient {
             (2 * s - 1) * self.voxel_bits as u64
         } else {
@@ -302,7 +317,7 @@ pub struct PipeLane<const H: usize> {
     pub t8s0: Signal<Out, Bits<64>>,
     pub t8i1: Signal<In, Bits<64>>,
     pub t8il: Signal<In, Bits<64>>,
-    /// The composited value of this lane's voxel (T+3): `res_beat` marks a
+    /// The composited value of this lane's voxel (T + `RESULT_AT`): `res_beat` marks a
     /// beat, `res_valid` one that is not padding.
     pub res_beat: Signal<Out, Bit>,
     pub res_valid: Signal<Out, Bit>,
@@ -446,7 +461,8 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.shader.gy_mag.next = self.feed.gy_mag.val();
         self.shader.gz_neg.next = self.feed.gz_neg.val();
         self.shader.gz_mag.next = self.feed.gz_mag.val();
-        // Control beside the voxel (T-1 to T and T+3), the sample T to T+2.
+        // Control beside the voxel (T-1 to T and the result), the sample T
+        // to T+L.
         self.ctl.clock.next = self.clock.val();
         self.ctl.valid.next = self.feed.o_valid.val();
         self.ctl.er.next = self.feed.o_er.val();
@@ -503,7 +519,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.cells.dx_mag.next = self.ctl.dx_mag_t.val();
         self.cells.dy_neg.next = self.ctl.dy_neg_t.val();
         self.cells.dy_mag.next = self.ctl.dy_mag_t.val();
-        // Bilinear unit (T..T+2).
+        // Bilinear unit (T..T+L).
         self.bilinear.clock.next = self.clock.val();
         for i in 0..4 {
             self.bilinear.c00[i].next = self.cells.c00[i].val();
@@ -513,7 +529,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         }
         self.bilinear.wx.next = self.ctl.dx_mag_t.val();
         self.bilinear.wy.next = self.ctl.dy_mag_t.val();
-        // Compositing unit (T+2 -> T+3).
+        // Compositing unit (T+L -> the result).
         self.compositor.clock.next = self.clock.val();
         self.compositor.acc_r.next = self.bilinear.out[0].val();
         self.compositor.acc_g.next = bit_cast::<16, 32>(self.bilinear.out[1].val());
@@ -528,7 +544,7 @@ impl<const H: usize> Logic for PipeLane<H> {
             | (bit_cast::<64, 16>(self.compositor.out_g.val()) << 16)
             | (bit_cast::<64, 16>(self.compositor.out_b.val()) << 32)
             | (bit_cast::<64, 16>(self.compositor.out_a.val()) << 48);
-        // The result (T+3): into the history, and out with the pixel on ER.
+        // The result: into the history, and out with the pixel on ER.
         self.taps.res.next = self.res.val();
         self.taps.res_beat.next = self.ctl.res_beat.val();
         self.res_beat.next = self.ctl.res_beat.val();

@@ -23,7 +23,7 @@ pub struct TapNetwork<const H: usize> {
     pub clock: Signal<In, Clock>,
     /// The voxel's x at T (for the partial-beam ends).
     pub x: Signal<In, Bits<16>>,
-    /// The lane's composited value (T+3) and its beat flag.
+    /// The lane's composited value (T + `RESULT_AT`) and its beat flag.
     pub res: Signal<In, Bits<64>>,
     pub res_beat: Signal<In, Bit>,
     /// The lane's link ports (see `PipeLane`).

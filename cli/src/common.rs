@@ -109,7 +109,7 @@ pub fn render_arch(
             let s = frame.stats;
             // The RTL's schedule: one voxel per pipeline per clock over each
             // sweep's slices, one slice more when the gradient unit is
-            // built, and 6 clocks of fill (what `cube sim` counts).
+            // built, and the pipeline's fill (what `cube sim` counts).
             let camera = scene.camera()?;
             let p = scene.hardware.pipelines;
             let clocks: usize = frame
@@ -117,9 +117,10 @@ pub fn render_arch(
                 .sweeps
                 .iter()
                 .map(|w| {
-                    let grad = golden_model::cube4l::shader::Shader::new(scene, &camera, w)
-                        .needs_gradient as usize;
-                    (w.z1 - w.z0 + 1 + grad) * w.dims[1] * w.dims[0].div_ceil(p) + 6
+                    let grad =
+                        golden_model::cube4l::shader::Shader::new(scene, &camera, w).needs_gradient;
+                    (w.z1 - w.z0 + 1 + grad as usize) * w.dims[1] * w.dims[0].div_ceil(p)
+                        + hdl::pipeline::fill_clocks(grad) as usize
                 })
                 .sum();
             Ok(Rendered {

@@ -515,7 +515,7 @@ fn merge(a: &mut Value, b: &Value) {
 
 /// Clocks per frame of a hardware method. Cube-4L: its RTL's schedule, one
 /// voxel per pipeline per clock over each sweep's slices, one more slice
-/// when the gradient unit is built, and 6 clocks of fill per sweep (the
+/// when the gradient unit is built, and the pipeline's fill per sweep (the
 /// count `cube sim` measures). Cube-3 has no RTL yet: its samples over its
 /// `p` units, one sample per unit per clock, with no overhead.
 fn clocks_of(arch: Arch, scene: &Scene, extra: &Value) -> u64 {

@@ -1204,7 +1204,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h3e8;
+    localparam  last = 16'h3e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -1323,7 +1323,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[1000:0];
+    reg [7:0] mem[997:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -3628,7 +3628,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h3e8;
+    localparam  last = 16'h3e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -3747,7 +3747,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[1000:0];
+    reg [7:0] mem[997:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -6052,7 +6052,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h3e8;
+    localparam  last = 16'h3e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -6171,7 +6171,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[1000:0];
+    reg [7:0] mem[997:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -8476,7 +8476,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h3e8;
+    localparam  last = 16'h3e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -8595,7 +8595,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[1000:0];
+    reg [7:0] mem[997:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};

@@ -1,5 +1,6 @@
 //! `hdl::bilinear` against `golden_model::cube4l::compositor::gather`, cycle by cycle
-//! in rust-hdl simulation (two clocks of latency); its Verilog passes yosys.
+//! in rust-hdl simulation (`bilinear::LATENCY` clocks); its Verilog passes
+//! yosys.
 
 use golden_model::cube4l::compositor::gather;
 use hdl::bilinear::Bilinear;
@@ -7,7 +8,7 @@ use rust_hdl::prelude::*;
 use testbenches::{require_tool, Vectors};
 
 const N: usize = 800;
-const LATENCY: usize = 2;
+use hdl::bilinear::LATENCY;
 
 struct Vector {
     cells: [[u32; 4]; 4],

@@ -253,12 +253,12 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 5 clocks of fill: the start register, the
-    // block-RAM read, the shader register and the two bilinear stages (the
-    // compositor register ends the last beat's own clock).
+    // One beat per clock plus 8 clocks of fill: the start register, the
+    // block-RAM read, the shader register and the bilinear unit's five
+    // stages (the compositor register ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 5,
+        ideal + 8,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }

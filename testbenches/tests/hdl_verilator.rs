@@ -146,7 +146,7 @@ fn engine_frame_matches_under_verilator() {
     assert_eq!(r.mismatches, 0, "first differences {:?}", r.first);
     // The view sweeps 256 slices of 256 beams of 110 voxels, padded to 112
     // for p = 4: one beat per clock is 256 * 256 * 28 clocks. Shading adds
-    // one slice (the ABC gradient's delay) and 6 clocks of fill.
+    // one slice (the ABC gradient's delay) and 9 clocks of fill.
     assert_eq!(r.ideal_cycles, 256 * 256 * 28);
-    assert_eq!(r.cycles, r.ideal_cycles + 256 * 28 + 6);
+    assert_eq!(r.cycles, r.ideal_cycles + 256 * 28 + 9);
 }

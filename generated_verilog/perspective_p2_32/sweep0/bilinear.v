@@ -26,9 +26,18 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wy_q$d;
-    wire  [15:0] wy_q$q;
-    reg  wy_q$clock;
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -63,10 +72,25 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$0$bilinear$wy_q wy_q(
-        .d(wy_q$d),
-        .q(wy_q$q),
-        .clock(wy_q$clock)
+    top$lanes$0$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$0$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$0$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$0$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
     );
     top$lanes$0$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -111,40 +135,46 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wy_q$clock = clock;
-        wy_q$d = wy_q$q;
-        wy_q$d = wy;
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx;
-        ch$0$wy = wy_q$q;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx;
-        ch$1$wy = wy_q$q;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx;
-        ch$2$wy = wy_q$q;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx;
-        ch$3$wy = wy_q$q;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
         out$3 = ch$3$y;
     end
     
@@ -162,90 +192,107 @@ module top$lanes$0$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$0$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$0$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$0$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$0$bilinear$ch$0$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$0$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$0$bilinear$ch$0$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$0$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$0$bilinear$ch$0$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$0$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$0$bilinear$ch$0
-module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
+module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -256,14 +303,58 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -274,18 +365,22 @@ module top$lanes$0$bilinear$ch$0$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$0$bottom
-module top$lanes$0$bilinear$ch$0$bottom_q(d,q,clock);
+module top$lanes$0$bilinear$ch$0$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -301,8 +396,42 @@ module top$lanes$0$bilinear$ch$0$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$0$bottom_q
-module top$lanes$0$bilinear$ch$0$out_q(d,q,clock);
+endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q
+module top$lanes$0$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$prod_q
+module top$lanes$0$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q
+module top$lanes$0$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -318,10 +447,79 @@ module top$lanes$0$bilinear$ch$0$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$0$out_q
-module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$0$bottom$y_q
+module top$lanes$0$bilinear$ch$0$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$0
+module top$lanes$0$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$1
+module top$lanes$0$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$2
+module top$lanes$0$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$3
+module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -332,14 +530,58 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -350,18 +592,22 @@ module top$lanes$0$bilinear$ch$0$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$0$top
-module top$lanes$0$bilinear$ch$0$top_q(d,q,clock);
+module top$lanes$0$bilinear$ch$0$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -377,10 +623,62 @@ module top$lanes$0$bilinear$ch$0$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$0$top_q
-module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$0$top$a_q
+module top$lanes$0$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$prod_q
+module top$lanes$0$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$up_q
+module top$lanes$0$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$y_q
+module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -391,14 +689,58 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -409,17 +751,89 @@ module top$lanes$0$bilinear$ch$0$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$0$vertical
+module top$lanes$0$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q
+module top$lanes$0$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$prod_q
+module top$lanes$0$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q
+module top$lanes$0$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$y_q
 module top$lanes$0$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -433,90 +847,107 @@ module top$lanes$0$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$1$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$0$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$0$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$0$bilinear$ch$1$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$0$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$0$bilinear$ch$1$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$0$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$0$bilinear$ch$1$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$0$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$0$bilinear$ch$1
-module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
+module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -527,14 +958,58 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -545,18 +1020,22 @@ module top$lanes$0$bilinear$ch$1$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$1$bottom
-module top$lanes$0$bilinear$ch$1$bottom_q(d,q,clock);
+module top$lanes$0$bilinear$ch$1$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -572,8 +1051,42 @@ module top$lanes$0$bilinear$ch$1$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$1$bottom_q
-module top$lanes$0$bilinear$ch$1$out_q(d,q,clock);
+endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q
+module top$lanes$0$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$prod_q
+module top$lanes$0$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q
+module top$lanes$0$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -589,10 +1102,79 @@ module top$lanes$0$bilinear$ch$1$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$1$out_q
-module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$1$bottom$y_q
+module top$lanes$0$bilinear$ch$1$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$0
+module top$lanes$0$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$1
+module top$lanes$0$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$2
+module top$lanes$0$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$3
+module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -603,14 +1185,58 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -621,18 +1247,22 @@ module top$lanes$0$bilinear$ch$1$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$1$top
-module top$lanes$0$bilinear$ch$1$top_q(d,q,clock);
+module top$lanes$0$bilinear$ch$1$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -648,10 +1278,62 @@ module top$lanes$0$bilinear$ch$1$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$1$top_q
-module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$1$top$a_q
+module top$lanes$0$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$prod_q
+module top$lanes$0$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$up_q
+module top$lanes$0$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$y_q
+module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -662,14 +1344,58 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -680,17 +1406,89 @@ module top$lanes$0$bilinear$ch$1$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$1$vertical
+module top$lanes$0$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q
+module top$lanes$0$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$prod_q
+module top$lanes$0$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q
+module top$lanes$0$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$y_q
 module top$lanes$0$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -704,90 +1502,107 @@ module top$lanes$0$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$2$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$0$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$0$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$0$bilinear$ch$2$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$0$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$0$bilinear$ch$2$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$0$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$0$bilinear$ch$2$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$0$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$0$bilinear$ch$2
-module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
+module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -798,14 +1613,58 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -816,18 +1675,22 @@ module top$lanes$0$bilinear$ch$2$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$2$bottom
-module top$lanes$0$bilinear$ch$2$bottom_q(d,q,clock);
+module top$lanes$0$bilinear$ch$2$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -843,8 +1706,42 @@ module top$lanes$0$bilinear$ch$2$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$2$bottom_q
-module top$lanes$0$bilinear$ch$2$out_q(d,q,clock);
+endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q
+module top$lanes$0$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$prod_q
+module top$lanes$0$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q
+module top$lanes$0$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -860,10 +1757,79 @@ module top$lanes$0$bilinear$ch$2$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$2$out_q
-module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$2$bottom$y_q
+module top$lanes$0$bilinear$ch$2$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$0
+module top$lanes$0$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$1
+module top$lanes$0$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$2
+module top$lanes$0$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$3
+module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -874,14 +1840,58 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -892,18 +1902,22 @@ module top$lanes$0$bilinear$ch$2$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$2$top
-module top$lanes$0$bilinear$ch$2$top_q(d,q,clock);
+module top$lanes$0$bilinear$ch$2$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -919,10 +1933,62 @@ module top$lanes$0$bilinear$ch$2$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$2$top_q
-module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$2$top$a_q
+module top$lanes$0$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$prod_q
+module top$lanes$0$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$up_q
+module top$lanes$0$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$y_q
+module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -933,14 +1999,58 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -951,17 +2061,89 @@ module top$lanes$0$bilinear$ch$2$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$2$vertical
+module top$lanes$0$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q
+module top$lanes$0$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$prod_q
+module top$lanes$0$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q
+module top$lanes$0$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$y_q
 module top$lanes$0$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -975,90 +2157,107 @@ module top$lanes$0$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$3$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$0$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$0$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$0$bilinear$ch$3$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$0$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$0$bilinear$ch$3$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$0$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$0$bilinear$ch$3$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$0$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$0$bilinear$ch$3
-module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
+module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1069,14 +2268,58 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1087,18 +2330,22 @@ module top$lanes$0$bilinear$ch$3$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$3$bottom
-module top$lanes$0$bilinear$ch$3$bottom_q(d,q,clock);
+module top$lanes$0$bilinear$ch$3$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1114,8 +2361,42 @@ module top$lanes$0$bilinear$ch$3$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$3$bottom_q
-module top$lanes$0$bilinear$ch$3$out_q(d,q,clock);
+endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q
+module top$lanes$0$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$prod_q
+module top$lanes$0$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q
+module top$lanes$0$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1131,10 +2412,79 @@ module top$lanes$0$bilinear$ch$3$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$3$out_q
-module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$3$bottom$y_q
+module top$lanes$0$bilinear$ch$3$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$0
+module top$lanes$0$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$1
+module top$lanes$0$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$2
+module top$lanes$0$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$3
+module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1145,14 +2495,58 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1163,18 +2557,22 @@ module top$lanes$0$bilinear$ch$3$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$3$top
-module top$lanes$0$bilinear$ch$3$top_q(d,q,clock);
+module top$lanes$0$bilinear$ch$3$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1190,10 +2588,62 @@ module top$lanes$0$bilinear$ch$3$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$ch$3$top_q
-module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
+endmodule // top$lanes$0$bilinear$ch$3$top$a_q
+module top$lanes$0$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$prod_q
+module top$lanes$0$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$up_q
+module top$lanes$0$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$y_q
+module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1204,14 +2654,58 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1222,18 +2716,90 @@ module top$lanes$0$bilinear$ch$3$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$0$bilinear$ch$3$vertical
-module top$lanes$0$bilinear$wy_q(d,q,clock);
+module top$lanes$0$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q
+module top$lanes$0$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$prod_q
+module top$lanes$0$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q
+module top$lanes$0$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$y_q
+module top$lanes$0$bilinear$wx_q(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1249,7 +2815,58 @@ module top$lanes$0$bilinear$wy_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$bilinear$wy_q
+endmodule // top$lanes$0$bilinear$wx_q
+module top$lanes$0$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$0
+module top$lanes$0$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$1
+module top$lanes$0$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$2
 module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -1278,9 +2895,18 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wy_q$d;
-    wire  [15:0] wy_q$q;
-    reg  wy_q$clock;
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -1315,10 +2941,25 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$1$bilinear$wy_q wy_q(
-        .d(wy_q$d),
-        .q(wy_q$q),
-        .clock(wy_q$clock)
+    top$lanes$1$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$1$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$1$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$1$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
     );
     top$lanes$1$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -1363,40 +3004,46 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wy_q$clock = clock;
-        wy_q$d = wy_q$q;
-        wy_q$d = wy;
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx;
-        ch$0$wy = wy_q$q;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx;
-        ch$1$wy = wy_q$q;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx;
-        ch$2$wy = wy_q$q;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx;
-        ch$3$wy = wy_q$q;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
         out$3 = ch$3$y;
     end
     
@@ -1414,90 +3061,107 @@ module top$lanes$1$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$0$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$1$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$1$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$1$bilinear$ch$0$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$1$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$1$bilinear$ch$0$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$1$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$1$bilinear$ch$0$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$1$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$1$bilinear$ch$0
-module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
+module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1508,14 +3172,58 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1526,18 +3234,22 @@ module top$lanes$1$bilinear$ch$0$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$0$bottom
-module top$lanes$1$bilinear$ch$0$bottom_q(d,q,clock);
+module top$lanes$1$bilinear$ch$0$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1553,8 +3265,42 @@ module top$lanes$1$bilinear$ch$0$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$0$bottom_q
-module top$lanes$1$bilinear$ch$0$out_q(d,q,clock);
+endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q
+module top$lanes$1$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$prod_q
+module top$lanes$1$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q
+module top$lanes$1$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1570,10 +3316,79 @@ module top$lanes$1$bilinear$ch$0$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$0$out_q
-module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$0$bottom$y_q
+module top$lanes$1$bilinear$ch$0$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$0
+module top$lanes$1$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$1
+module top$lanes$1$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$2
+module top$lanes$1$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$3
+module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1584,14 +3399,58 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1602,18 +3461,22 @@ module top$lanes$1$bilinear$ch$0$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$0$top
-module top$lanes$1$bilinear$ch$0$top_q(d,q,clock);
+module top$lanes$1$bilinear$ch$0$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1629,10 +3492,62 @@ module top$lanes$1$bilinear$ch$0$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$0$top_q
-module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$0$top$a_q
+module top$lanes$1$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$prod_q
+module top$lanes$1$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$up_q
+module top$lanes$1$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$y_q
+module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1643,14 +3558,58 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1661,17 +3620,89 @@ module top$lanes$1$bilinear$ch$0$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$0$vertical
+module top$lanes$1$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q
+module top$lanes$1$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$prod_q
+module top$lanes$1$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q
+module top$lanes$1$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$y_q
 module top$lanes$1$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -1685,90 +3716,107 @@ module top$lanes$1$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$1$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$1$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$1$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$1$bilinear$ch$1$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$1$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$1$bilinear$ch$1$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$1$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$1$bilinear$ch$1$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$1$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$1$bilinear$ch$1
-module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
+module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1779,14 +3827,58 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1797,18 +3889,22 @@ module top$lanes$1$bilinear$ch$1$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$1$bottom
-module top$lanes$1$bilinear$ch$1$bottom_q(d,q,clock);
+module top$lanes$1$bilinear$ch$1$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1824,8 +3920,42 @@ module top$lanes$1$bilinear$ch$1$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$1$bottom_q
-module top$lanes$1$bilinear$ch$1$out_q(d,q,clock);
+endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q
+module top$lanes$1$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$prod_q
+module top$lanes$1$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q
+module top$lanes$1$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1841,10 +3971,79 @@ module top$lanes$1$bilinear$ch$1$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$1$out_q
-module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$1$bottom$y_q
+module top$lanes$1$bilinear$ch$1$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$0
+module top$lanes$1$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$1
+module top$lanes$1$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$2
+module top$lanes$1$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$3
+module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1855,14 +4054,58 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1873,18 +4116,22 @@ module top$lanes$1$bilinear$ch$1$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$1$top
-module top$lanes$1$bilinear$ch$1$top_q(d,q,clock);
+module top$lanes$1$bilinear$ch$1$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1900,10 +4147,62 @@ module top$lanes$1$bilinear$ch$1$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$1$top_q
-module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$1$top$a_q
+module top$lanes$1$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$prod_q
+module top$lanes$1$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$up_q
+module top$lanes$1$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$y_q
+module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -1914,14 +4213,58 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -1932,17 +4275,89 @@ module top$lanes$1$bilinear$ch$1$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$1$vertical
+module top$lanes$1$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q
+module top$lanes$1$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$prod_q
+module top$lanes$1$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q
+module top$lanes$1$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$y_q
 module top$lanes$1$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -1956,90 +4371,107 @@ module top$lanes$1$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$2$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$1$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$1$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$1$bilinear$ch$2$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$1$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$1$bilinear$ch$2$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$1$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$1$bilinear$ch$2$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$1$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$1$bilinear$ch$2
-module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
+module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2050,14 +4482,58 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2068,18 +4544,22 @@ module top$lanes$1$bilinear$ch$2$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$2$bottom
-module top$lanes$1$bilinear$ch$2$bottom_q(d,q,clock);
+module top$lanes$1$bilinear$ch$2$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2095,8 +4575,42 @@ module top$lanes$1$bilinear$ch$2$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$2$bottom_q
-module top$lanes$1$bilinear$ch$2$out_q(d,q,clock);
+endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q
+module top$lanes$1$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$prod_q
+module top$lanes$1$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q
+module top$lanes$1$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2112,10 +4626,79 @@ module top$lanes$1$bilinear$ch$2$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$2$out_q
-module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$2$bottom$y_q
+module top$lanes$1$bilinear$ch$2$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$0
+module top$lanes$1$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$1
+module top$lanes$1$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$2
+module top$lanes$1$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$3
+module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2126,14 +4709,58 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2144,18 +4771,22 @@ module top$lanes$1$bilinear$ch$2$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$2$top
-module top$lanes$1$bilinear$ch$2$top_q(d,q,clock);
+module top$lanes$1$bilinear$ch$2$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2171,10 +4802,62 @@ module top$lanes$1$bilinear$ch$2$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$2$top_q
-module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$2$top$a_q
+module top$lanes$1$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$prod_q
+module top$lanes$1$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$up_q
+module top$lanes$1$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$y_q
+module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2185,14 +4868,58 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2203,17 +4930,89 @@ module top$lanes$1$bilinear$ch$2$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$2$vertical
+module top$lanes$1$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q
+module top$lanes$1$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$prod_q
+module top$lanes$1$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q
+module top$lanes$1$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$y_q
 module top$lanes$1$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
     
     // Module arguments
@@ -2227,90 +5026,107 @@ module top$lanes$1$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
     output reg  [31:0] y;
     
     // Stub signals
+    reg  top$clock;
     reg  [31:0] top$a;
     reg  [31:0] top$b;
     reg  [15:0] top$w;
     wire  [31:0] top$y;
+    reg  bottom$clock;
     reg  [31:0] bottom$a;
     reg  [31:0] bottom$b;
     reg  [15:0] bottom$w;
     wire  [31:0] bottom$y;
+    reg  vertical$clock;
     reg  [31:0] vertical$a;
     reg  [31:0] vertical$b;
     reg  [15:0] vertical$w;
     wire  [31:0] vertical$y;
-    reg  [31:0] top_q$d;
-    wire  [31:0] top_q$q;
-    reg  top_q$clock;
-    reg  [31:0] bottom_q$d;
-    wire  [31:0] bottom_q$q;
-    reg  bottom_q$clock;
-    reg  [31:0] out_q$d;
-    wire  [31:0] out_q$q;
-    reg  out_q$clock;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$3$top top(
+        .clock(top$clock),
         .a(top$a),
         .b(top$b),
         .w(top$w),
         .y(top$y)
     );
     top$lanes$1$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
         .a(bottom$a),
         .b(bottom$b),
         .w(bottom$w),
         .y(bottom$y)
     );
     top$lanes$1$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
         .a(vertical$a),
         .b(vertical$b),
         .w(vertical$w),
         .y(vertical$y)
     );
-    top$lanes$1$bilinear$ch$3$top_q top_q(
-        .d(top_q$d),
-        .q(top_q$q),
-        .clock(top_q$clock)
+    top$lanes$1$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
     );
-    top$lanes$1$bilinear$ch$3$bottom_q bottom_q(
-        .d(bottom_q$d),
-        .q(bottom_q$q),
-        .clock(bottom_q$clock)
+    top$lanes$1$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
     );
-    top$lanes$1$bilinear$ch$3$out_q out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
+    top$lanes$1$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
     );
     
     // Update code
     always @(*) begin
-        top_q$clock = clock;
-        bottom_q$clock = clock;
-        out_q$clock = clock;
-        top_q$d = top_q$q;
-        bottom_q$d = bottom_q$q;
-        out_q$d = out_q$q;
-        top$a = c00;
-        top$b = c10;
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
         top$w = wx;
-        bottom$a = c01;
-        bottom$b = c11;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
         bottom$w = wx;
-        top_q$d = top$y;
-        bottom_q$d = bottom$y;
-        vertical$a = top_q$q;
-        vertical$b = bottom_q$q;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
         vertical$w = wy;
-        out_q$d = vertical$y;
-        y = out_q$q;
+        y = vertical$y;
     end
     
 endmodule // top$lanes$1$bilinear$ch$3
-module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
+module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2321,14 +5137,58 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2339,18 +5199,22 @@ module top$lanes$1$bilinear$ch$3$bottom(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$3$bottom
-module top$lanes$1$bilinear$ch$3$bottom_q(d,q,clock);
+module top$lanes$1$bilinear$ch$3$bottom$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2366,8 +5230,42 @@ module top$lanes$1$bilinear$ch$3$bottom_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$3$bottom_q
-module top$lanes$1$bilinear$ch$3$out_q(d,q,clock);
+endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q
+module top$lanes$1$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$prod_q
+module top$lanes$1$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q
+module top$lanes$1$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2383,10 +5281,79 @@ module top$lanes$1$bilinear$ch$3$out_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$3$out_q
-module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$3$bottom$y_q
+module top$lanes$1$bilinear$ch$3$cells_q$0(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$0
+module top$lanes$1$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$1
+module top$lanes$1$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$2
+module top$lanes$1$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$3
+module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2397,14 +5364,58 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2415,18 +5426,22 @@ module top$lanes$1$bilinear$ch$3$top(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$3$top
-module top$lanes$1$bilinear$ch$3$top_q(d,q,clock);
+module top$lanes$1$bilinear$ch$3$top$a_q(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -2442,10 +5457,62 @@ module top$lanes$1$bilinear$ch$3$top_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$ch$3$top_q
-module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
+endmodule // top$lanes$1$bilinear$ch$3$top$a_q
+module top$lanes$1$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$prod_q
+module top$lanes$1$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$up_q
+module top$lanes$1$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$y_q
+module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [31:0] a;
     input wire  [31:0] b;
     input wire  [15:0] w;
@@ -2456,14 +5523,58 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
     
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
     // Local signals
     reg  [31:0] diff;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
     
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
     // Update code
     always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
         if (b >= a) begin
             diff = b - a;
         end
@@ -2474,18 +5585,90 @@ module top$lanes$1$bilinear$ch$3$vertical(a,b,w,y);
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
         end
-        step_up = 32'((prod + half) >> shift);
-        step_down = 32'((prod + half - 'h1) >> shift);
-        if (b >= a) begin
-            y = a + step_up;
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
         end
         else begin
-            y = a - step_down;
+            y_q$d = a_q$q - step_down;
         end
+        y = y_q$q;
     end
     
 endmodule // top$lanes$1$bilinear$ch$3$vertical
-module top$lanes$1$bilinear$wy_q(d,q,clock);
+module top$lanes$1$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q
+module top$lanes$1$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$prod_q
+module top$lanes$1$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q
+module top$lanes$1$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$y_q
+module top$lanes$1$bilinear$wx_q(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2501,4 +5684,55 @@ module top$lanes$1$bilinear$wy_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$bilinear$wy_q
+endmodule // top$lanes$1$bilinear$wx_q
+module top$lanes$1$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$0
+module top$lanes$1$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$1
+module top$lanes$1$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$2

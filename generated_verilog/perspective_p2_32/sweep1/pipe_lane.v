@@ -848,6 +848,15 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$3$d;
     wire  v_q$3$q;
     reg  v_q$3$clock;
+    reg  v_q$4$d;
+    wire  v_q$4$q;
+    reg  v_q$4$clock;
+    reg  v_q$5$d;
+    wire  v_q$5$q;
+    reg  v_q$5$clock;
+    reg  v_q$6$d;
+    wire  v_q$6$q;
+    reg  v_q$6$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -860,6 +869,15 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$3$d;
     wire  er_q$3$q;
     reg  er_q$3$clock;
+    reg  er_q$4$d;
+    wire  er_q$4$q;
+    reg  er_q$4$clock;
+    reg  er_q$5$d;
+    wire  er_q$5$q;
+    reg  er_q$5$clock;
+    reg  er_q$6$d;
+    wire  er_q$6$q;
+    reg  er_q$6$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -872,6 +890,15 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$3$d;
     wire  pad_q$3$q;
     reg  pad_q$3$clock;
+    reg  pad_q$4$d;
+    wire  pad_q$4$q;
+    reg  pad_q$4$clock;
+    reg  pad_q$5$d;
+    wire  pad_q$5$q;
+    reg  pad_q$5$clock;
+    reg  pad_q$6$d;
+    wire  pad_q$6$q;
+    reg  pad_q$6$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -884,6 +911,15 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$3$d;
     wire  [15:0] bx_q$3$q;
     reg  bx_q$3$clock;
+    reg  [15:0] bx_q$4$d;
+    wire  [15:0] bx_q$4$q;
+    reg  bx_q$4$clock;
+    reg  [15:0] bx_q$5$d;
+    wire  [15:0] bx_q$5$q;
+    reg  bx_q$5$clock;
+    reg  [15:0] bx_q$6$d;
+    wire  [15:0] bx_q$6$q;
+    reg  bx_q$6$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -896,6 +932,15 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$3$d;
     wire  [15:0] by_q$3$q;
     reg  by_q$3$clock;
+    reg  [15:0] by_q$4$d;
+    wire  [15:0] by_q$4$q;
+    reg  by_q$4$clock;
+    reg  [15:0] by_q$5$d;
+    wire  [15:0] by_q$5$q;
+    reg  by_q$5$clock;
+    reg  [15:0] by_q$6$d;
+    wire  [15:0] by_q$6$q;
+    reg  by_q$6$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -908,36 +953,90 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$3$d;
     wire  [2:0] face_q$3$q;
     reg  face_q$3$clock;
+    reg  [2:0] face_q$4$d;
+    wire  [2:0] face_q$4$q;
+    reg  face_q$4$clock;
+    reg  [2:0] face_q$5$d;
+    wire  [2:0] face_q$5$q;
+    reg  face_q$5$clock;
+    reg  [2:0] face_q$6$d;
+    wire  [2:0] face_q$6$q;
+    reg  face_q$6$clock;
     reg  [15:0] s_r$0$d;
     wire  [15:0] s_r$0$q;
     reg  s_r$0$clock;
     reg  [15:0] s_r$1$d;
     wire  [15:0] s_r$1$q;
     reg  s_r$1$clock;
+    reg  [15:0] s_r$2$d;
+    wire  [15:0] s_r$2$q;
+    reg  s_r$2$clock;
+    reg  [15:0] s_r$3$d;
+    wire  [15:0] s_r$3$q;
+    reg  s_r$3$clock;
+    reg  [15:0] s_r$4$d;
+    wire  [15:0] s_r$4$q;
+    reg  s_r$4$clock;
     reg  [15:0] s_g$0$d;
     wire  [15:0] s_g$0$q;
     reg  s_g$0$clock;
     reg  [15:0] s_g$1$d;
     wire  [15:0] s_g$1$q;
     reg  s_g$1$clock;
+    reg  [15:0] s_g$2$d;
+    wire  [15:0] s_g$2$q;
+    reg  s_g$2$clock;
+    reg  [15:0] s_g$3$d;
+    wire  [15:0] s_g$3$q;
+    reg  s_g$3$clock;
+    reg  [15:0] s_g$4$d;
+    wire  [15:0] s_g$4$q;
+    reg  s_g$4$clock;
     reg  [15:0] s_b$0$d;
     wire  [15:0] s_b$0$q;
     reg  s_b$0$clock;
     reg  [15:0] s_b$1$d;
     wire  [15:0] s_b$1$q;
     reg  s_b$1$clock;
+    reg  [15:0] s_b$2$d;
+    wire  [15:0] s_b$2$q;
+    reg  s_b$2$clock;
+    reg  [15:0] s_b$3$d;
+    wire  [15:0] s_b$3$q;
+    reg  s_b$3$clock;
+    reg  [15:0] s_b$4$d;
+    wire  [15:0] s_b$4$q;
+    reg  s_b$4$clock;
     reg  [15:0] s_a$0$d;
     wire  [15:0] s_a$0$q;
     reg  s_a$0$clock;
     reg  [15:0] s_a$1$d;
     wire  [15:0] s_a$1$q;
     reg  s_a$1$clock;
+    reg  [15:0] s_a$2$d;
+    wire  [15:0] s_a$2$q;
+    reg  s_a$2$clock;
+    reg  [15:0] s_a$3$d;
+    wire  [15:0] s_a$3$q;
+    reg  s_a$3$clock;
+    reg  [15:0] s_a$4$d;
+    wire  [15:0] s_a$4$q;
+    reg  s_a$4$clock;
     reg  s_v$0$d;
     wire  s_v$0$q;
     reg  s_v$0$clock;
     reg  s_v$1$d;
     wire  s_v$1$q;
     reg  s_v$1$clock;
+    reg  s_v$2$d;
+    wire  s_v$2$q;
+    reg  s_v$2$clock;
+    reg  s_v$3$d;
+    wire  s_v$3$q;
+    reg  s_v$3$clock;
+    reg  s_v$4$d;
+    wire  s_v$4$q;
+    reg  s_v$4$clock;
     
     // Sub module instances
     top$lanes$0$ctl$x_q x_q(
@@ -995,6 +1094,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$3$q),
         .clock(v_q$3$clock)
     );
+    top$lanes$0$ctl$v_q$4 v_q$4(
+        .d(v_q$4$d),
+        .q(v_q$4$q),
+        .clock(v_q$4$clock)
+    );
+    top$lanes$0$ctl$v_q$5 v_q$5(
+        .d(v_q$5$d),
+        .q(v_q$5$q),
+        .clock(v_q$5$clock)
+    );
+    top$lanes$0$ctl$v_q$6 v_q$6(
+        .d(v_q$6$d),
+        .q(v_q$6$q),
+        .clock(v_q$6$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1014,6 +1128,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$3$d),
         .q(er_q$3$q),
         .clock(er_q$3$clock)
+    );
+    top$lanes$0$ctl$er_q$4 er_q$4(
+        .d(er_q$4$d),
+        .q(er_q$4$q),
+        .clock(er_q$4$clock)
+    );
+    top$lanes$0$ctl$er_q$5 er_q$5(
+        .d(er_q$5$d),
+        .q(er_q$5$q),
+        .clock(er_q$5$clock)
+    );
+    top$lanes$0$ctl$er_q$6 er_q$6(
+        .d(er_q$6$d),
+        .q(er_q$6$q),
+        .clock(er_q$6$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1035,6 +1164,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$3$q),
         .clock(pad_q$3$clock)
     );
+    top$lanes$0$ctl$pad_q$4 pad_q$4(
+        .d(pad_q$4$d),
+        .q(pad_q$4$q),
+        .clock(pad_q$4$clock)
+    );
+    top$lanes$0$ctl$pad_q$5 pad_q$5(
+        .d(pad_q$5$d),
+        .q(pad_q$5$q),
+        .clock(pad_q$5$clock)
+    );
+    top$lanes$0$ctl$pad_q$6 pad_q$6(
+        .d(pad_q$6$d),
+        .q(pad_q$6$q),
+        .clock(pad_q$6$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1054,6 +1198,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$3$d),
         .q(bx_q$3$q),
         .clock(bx_q$3$clock)
+    );
+    top$lanes$0$ctl$bx_q$4 bx_q$4(
+        .d(bx_q$4$d),
+        .q(bx_q$4$q),
+        .clock(bx_q$4$clock)
+    );
+    top$lanes$0$ctl$bx_q$5 bx_q$5(
+        .d(bx_q$5$d),
+        .q(bx_q$5$q),
+        .clock(bx_q$5$clock)
+    );
+    top$lanes$0$ctl$bx_q$6 bx_q$6(
+        .d(bx_q$6$d),
+        .q(bx_q$6$q),
+        .clock(bx_q$6$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -1075,6 +1234,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$3$q),
         .clock(by_q$3$clock)
     );
+    top$lanes$0$ctl$by_q$4 by_q$4(
+        .d(by_q$4$d),
+        .q(by_q$4$q),
+        .clock(by_q$4$clock)
+    );
+    top$lanes$0$ctl$by_q$5 by_q$5(
+        .d(by_q$5$d),
+        .q(by_q$5$q),
+        .clock(by_q$5$clock)
+    );
+    top$lanes$0$ctl$by_q$6 by_q$6(
+        .d(by_q$6$d),
+        .q(by_q$6$q),
+        .clock(by_q$6$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -1095,6 +1269,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$3$q),
         .clock(face_q$3$clock)
     );
+    top$lanes$0$ctl$face_q$4 face_q$4(
+        .d(face_q$4$d),
+        .q(face_q$4$q),
+        .clock(face_q$4$clock)
+    );
+    top$lanes$0$ctl$face_q$5 face_q$5(
+        .d(face_q$5$d),
+        .q(face_q$5$q),
+        .clock(face_q$5$clock)
+    );
+    top$lanes$0$ctl$face_q$6 face_q$6(
+        .d(face_q$6$d),
+        .q(face_q$6$q),
+        .clock(face_q$6$clock)
+    );
     top$lanes$0$ctl$s_r$0 s_r$0(
         .d(s_r$0$d),
         .q(s_r$0$q),
@@ -1104,6 +1293,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_r$1$d),
         .q(s_r$1$q),
         .clock(s_r$1$clock)
+    );
+    top$lanes$0$ctl$s_r$2 s_r$2(
+        .d(s_r$2$d),
+        .q(s_r$2$q),
+        .clock(s_r$2$clock)
+    );
+    top$lanes$0$ctl$s_r$3 s_r$3(
+        .d(s_r$3$d),
+        .q(s_r$3$q),
+        .clock(s_r$3$clock)
+    );
+    top$lanes$0$ctl$s_r$4 s_r$4(
+        .d(s_r$4$d),
+        .q(s_r$4$q),
+        .clock(s_r$4$clock)
     );
     top$lanes$0$ctl$s_g$0 s_g$0(
         .d(s_g$0$d),
@@ -1115,6 +1319,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(s_g$1$q),
         .clock(s_g$1$clock)
     );
+    top$lanes$0$ctl$s_g$2 s_g$2(
+        .d(s_g$2$d),
+        .q(s_g$2$q),
+        .clock(s_g$2$clock)
+    );
+    top$lanes$0$ctl$s_g$3 s_g$3(
+        .d(s_g$3$d),
+        .q(s_g$3$q),
+        .clock(s_g$3$clock)
+    );
+    top$lanes$0$ctl$s_g$4 s_g$4(
+        .d(s_g$4$d),
+        .q(s_g$4$q),
+        .clock(s_g$4$clock)
+    );
     top$lanes$0$ctl$s_b$0 s_b$0(
         .d(s_b$0$d),
         .q(s_b$0$q),
@@ -1124,6 +1343,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_b$1$d),
         .q(s_b$1$q),
         .clock(s_b$1$clock)
+    );
+    top$lanes$0$ctl$s_b$2 s_b$2(
+        .d(s_b$2$d),
+        .q(s_b$2$q),
+        .clock(s_b$2$clock)
+    );
+    top$lanes$0$ctl$s_b$3 s_b$3(
+        .d(s_b$3$d),
+        .q(s_b$3$q),
+        .clock(s_b$3$clock)
+    );
+    top$lanes$0$ctl$s_b$4 s_b$4(
+        .d(s_b$4$d),
+        .q(s_b$4$q),
+        .clock(s_b$4$clock)
     );
     top$lanes$0$ctl$s_a$0 s_a$0(
         .d(s_a$0$d),
@@ -1135,6 +1369,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(s_a$1$q),
         .clock(s_a$1$clock)
     );
+    top$lanes$0$ctl$s_a$2 s_a$2(
+        .d(s_a$2$d),
+        .q(s_a$2$q),
+        .clock(s_a$2$clock)
+    );
+    top$lanes$0$ctl$s_a$3 s_a$3(
+        .d(s_a$3$d),
+        .q(s_a$3$q),
+        .clock(s_a$3$clock)
+    );
+    top$lanes$0$ctl$s_a$4 s_a$4(
+        .d(s_a$4$d),
+        .q(s_a$4$q),
+        .clock(s_a$4$clock)
+    );
     top$lanes$0$ctl$s_v$0 s_v$0(
         .d(s_v$0$d),
         .q(s_v$0$q),
@@ -1144,6 +1393,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_v$1$d),
         .q(s_v$1$q),
         .clock(s_v$1$clock)
+    );
+    top$lanes$0$ctl$s_v$2 s_v$2(
+        .d(s_v$2$d),
+        .q(s_v$2$q),
+        .clock(s_v$2$clock)
+    );
+    top$lanes$0$ctl$s_v$3 s_v$3(
+        .d(s_v$3$d),
+        .q(s_v$3$q),
+        .clock(s_v$3$clock)
+    );
+    top$lanes$0$ctl$s_v$4 s_v$4(
+        .d(s_v$4$d),
+        .q(s_v$4$q),
+        .clock(s_v$4$clock)
     );
     
     // Update code
@@ -1186,6 +1450,24 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$3$clock = clock;
         by_q$3$clock = clock;
         face_q$3$clock = clock;
+        v_q$4$clock = clock;
+        er_q$4$clock = clock;
+        pad_q$4$clock = clock;
+        bx_q$4$clock = clock;
+        by_q$4$clock = clock;
+        face_q$4$clock = clock;
+        v_q$5$clock = clock;
+        er_q$5$clock = clock;
+        pad_q$5$clock = clock;
+        bx_q$5$clock = clock;
+        by_q$5$clock = clock;
+        face_q$5$clock = clock;
+        v_q$6$clock = clock;
+        er_q$6$clock = clock;
+        pad_q$6$clock = clock;
+        bx_q$6$clock = clock;
+        by_q$6$clock = clock;
+        face_q$6$clock = clock;
         s_r$0$clock = clock;
         s_g$0$clock = clock;
         s_b$0$clock = clock;
@@ -1196,6 +1478,21 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         s_b$1$clock = clock;
         s_a$1$clock = clock;
         s_v$1$clock = clock;
+        s_r$2$clock = clock;
+        s_g$2$clock = clock;
+        s_b$2$clock = clock;
+        s_a$2$clock = clock;
+        s_v$2$clock = clock;
+        s_r$3$clock = clock;
+        s_g$3$clock = clock;
+        s_b$3$clock = clock;
+        s_a$3$clock = clock;
+        s_v$3$clock = clock;
+        s_r$4$clock = clock;
+        s_g$4$clock = clock;
+        s_b$4$clock = clock;
+        s_a$4$clock = clock;
+        s_v$4$clock = clock;
         x_q$d = x;
         y_q$d = y;
         sr_q$d = sr;
@@ -1234,12 +1531,30 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$3$d = bx_q$2$q;
         by_q$3$d = by_q$2$q;
         face_q$3$d = face_q$2$q;
-        res_beat = v_q$3$q;
-        res_valid = v_q$3$q & ~pad_q$3$q;
-        px_valid = v_q$3$q & er_q$3$q & ~pad_q$3$q;
-        px_x = bx_q$3$q;
-        px_y = by_q$3$q;
-        px_face = face_q$3$q;
+        v_q$4$d = v_q$3$q;
+        er_q$4$d = er_q$3$q;
+        pad_q$4$d = pad_q$3$q;
+        bx_q$4$d = bx_q$3$q;
+        by_q$4$d = by_q$3$q;
+        face_q$4$d = face_q$3$q;
+        v_q$5$d = v_q$4$q;
+        er_q$5$d = er_q$4$q;
+        pad_q$5$d = pad_q$4$q;
+        bx_q$5$d = bx_q$4$q;
+        by_q$5$d = by_q$4$q;
+        face_q$5$d = face_q$4$q;
+        v_q$6$d = v_q$5$q;
+        er_q$6$d = er_q$5$q;
+        pad_q$6$d = pad_q$5$q;
+        bx_q$6$d = bx_q$5$q;
+        by_q$6$d = by_q$5$q;
+        face_q$6$d = face_q$5$q;
+        res_beat = v_q$6$q;
+        res_valid = v_q$6$q & ~pad_q$6$q;
+        px_valid = v_q$6$q & er_q$6$q & ~pad_q$6$q;
+        px_x = bx_q$6$q;
+        px_y = by_q$6$q;
+        px_face = face_q$6$q;
         s_r$0$d = r;
         s_g$0$d = g;
         s_b$0$d = b;
@@ -1250,11 +1565,26 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         s_b$1$d = s_b$0$q;
         s_a$1$d = s_a$0$q;
         s_v$1$d = s_v$0$q;
-        new_r = s_r$1$q;
-        new_g = s_g$1$q;
-        new_b = s_b$1$q;
-        new_a = s_a$1$q;
-        new_valid = s_v$1$q;
+        s_r$2$d = s_r$1$q;
+        s_g$2$d = s_g$1$q;
+        s_b$2$d = s_b$1$q;
+        s_a$2$d = s_a$1$q;
+        s_v$2$d = s_v$1$q;
+        s_r$3$d = s_r$2$q;
+        s_g$3$d = s_g$2$q;
+        s_b$3$d = s_b$2$q;
+        s_a$3$d = s_a$2$q;
+        s_v$3$d = s_v$2$q;
+        s_r$4$d = s_r$3$q;
+        s_g$4$d = s_g$3$q;
+        s_b$4$d = s_b$3$q;
+        s_a$4$d = s_a$3$q;
+        s_v$4$d = s_v$3$q;
+        new_r = s_r$4$q;
+        new_g = s_g$4$q;
+        new_b = s_b$4$q;
+        new_a = s_a$4$q;
+        new_valid = s_v$4$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -1326,6 +1656,57 @@ module top$lanes$0$ctl$bx_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$3
+module top$lanes$0$ctl$bx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$4
+module top$lanes$0$ctl$bx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$5
+module top$lanes$0$ctl$bx_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$6
 module top$lanes$0$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -1394,6 +1775,57 @@ module top$lanes$0$ctl$by_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$3
+module top$lanes$0$ctl$by_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$4
+module top$lanes$0$ctl$by_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$5
+module top$lanes$0$ctl$by_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$6
 module top$lanes$0$ctl$dxm_q(d,q,clock);
     
     // Module arguments
@@ -1530,6 +1962,57 @@ module top$lanes$0$ctl$er_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$3
+module top$lanes$0$ctl$er_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$4
+module top$lanes$0$ctl$er_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$5
+module top$lanes$0$ctl$er_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$6
 module top$lanes$0$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -1598,6 +2081,57 @@ module top$lanes$0$ctl$face_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$3
+module top$lanes$0$ctl$face_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$4
+module top$lanes$0$ctl$face_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$5
+module top$lanes$0$ctl$face_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$6
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -1666,6 +2200,57 @@ module top$lanes$0$ctl$pad_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$3
+module top$lanes$0$ctl$pad_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$4
+module top$lanes$0$ctl$pad_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$5
+module top$lanes$0$ctl$pad_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$6
 module top$lanes$0$ctl$s_a$0(d,q,clock);
     
     // Module arguments
@@ -1700,6 +2285,57 @@ module top$lanes$0$ctl$s_a$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$s_a$1
+module top$lanes$0$ctl$s_a$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_a$2
+module top$lanes$0$ctl$s_a$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_a$3
+module top$lanes$0$ctl$s_a$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_a$4
 module top$lanes$0$ctl$s_b$0(d,q,clock);
     
     // Module arguments
@@ -1734,6 +2370,57 @@ module top$lanes$0$ctl$s_b$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$s_b$1
+module top$lanes$0$ctl$s_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_b$2
+module top$lanes$0$ctl$s_b$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_b$3
+module top$lanes$0$ctl$s_b$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_b$4
 module top$lanes$0$ctl$s_g$0(d,q,clock);
     
     // Module arguments
@@ -1768,6 +2455,57 @@ module top$lanes$0$ctl$s_g$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$s_g$1
+module top$lanes$0$ctl$s_g$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_g$2
+module top$lanes$0$ctl$s_g$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_g$3
+module top$lanes$0$ctl$s_g$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_g$4
 module top$lanes$0$ctl$s_r$0(d,q,clock);
     
     // Module arguments
@@ -1802,6 +2540,57 @@ module top$lanes$0$ctl$s_r$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$s_r$1
+module top$lanes$0$ctl$s_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_r$2
+module top$lanes$0$ctl$s_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_r$3
+module top$lanes$0$ctl$s_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_r$4
 module top$lanes$0$ctl$s_v$0(d,q,clock);
     
     // Module arguments
@@ -1836,6 +2625,57 @@ module top$lanes$0$ctl$s_v$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$s_v$1
+module top$lanes$0$ctl$s_v$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_v$2
+module top$lanes$0$ctl$s_v$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_v$3
+module top$lanes$0$ctl$s_v$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$s_v$4
 module top$lanes$0$ctl$sr_q(d,q,clock);
     
     // Module arguments
@@ -1921,6 +2761,57 @@ module top$lanes$0$ctl$v_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$3
+module top$lanes$0$ctl$v_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$4
+module top$lanes$0$ctl$v_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$5
+module top$lanes$0$ctl$v_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$6
 module top$lanes$0$ctl$x_q(d,q,clock);
     
     // Module arguments
@@ -2937,6 +3828,15 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$3$d;
     wire  v_q$3$q;
     reg  v_q$3$clock;
+    reg  v_q$4$d;
+    wire  v_q$4$q;
+    reg  v_q$4$clock;
+    reg  v_q$5$d;
+    wire  v_q$5$q;
+    reg  v_q$5$clock;
+    reg  v_q$6$d;
+    wire  v_q$6$q;
+    reg  v_q$6$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -2949,6 +3849,15 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$3$d;
     wire  er_q$3$q;
     reg  er_q$3$clock;
+    reg  er_q$4$d;
+    wire  er_q$4$q;
+    reg  er_q$4$clock;
+    reg  er_q$5$d;
+    wire  er_q$5$q;
+    reg  er_q$5$clock;
+    reg  er_q$6$d;
+    wire  er_q$6$q;
+    reg  er_q$6$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -2961,6 +3870,15 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$3$d;
     wire  pad_q$3$q;
     reg  pad_q$3$clock;
+    reg  pad_q$4$d;
+    wire  pad_q$4$q;
+    reg  pad_q$4$clock;
+    reg  pad_q$5$d;
+    wire  pad_q$5$q;
+    reg  pad_q$5$clock;
+    reg  pad_q$6$d;
+    wire  pad_q$6$q;
+    reg  pad_q$6$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -2973,6 +3891,15 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$3$d;
     wire  [15:0] bx_q$3$q;
     reg  bx_q$3$clock;
+    reg  [15:0] bx_q$4$d;
+    wire  [15:0] bx_q$4$q;
+    reg  bx_q$4$clock;
+    reg  [15:0] bx_q$5$d;
+    wire  [15:0] bx_q$5$q;
+    reg  bx_q$5$clock;
+    reg  [15:0] bx_q$6$d;
+    wire  [15:0] bx_q$6$q;
+    reg  bx_q$6$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -2985,6 +3912,15 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$3$d;
     wire  [15:0] by_q$3$q;
     reg  by_q$3$clock;
+    reg  [15:0] by_q$4$d;
+    wire  [15:0] by_q$4$q;
+    reg  by_q$4$clock;
+    reg  [15:0] by_q$5$d;
+    wire  [15:0] by_q$5$q;
+    reg  by_q$5$clock;
+    reg  [15:0] by_q$6$d;
+    wire  [15:0] by_q$6$q;
+    reg  by_q$6$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -2997,36 +3933,90 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$3$d;
     wire  [2:0] face_q$3$q;
     reg  face_q$3$clock;
+    reg  [2:0] face_q$4$d;
+    wire  [2:0] face_q$4$q;
+    reg  face_q$4$clock;
+    reg  [2:0] face_q$5$d;
+    wire  [2:0] face_q$5$q;
+    reg  face_q$5$clock;
+    reg  [2:0] face_q$6$d;
+    wire  [2:0] face_q$6$q;
+    reg  face_q$6$clock;
     reg  [15:0] s_r$0$d;
     wire  [15:0] s_r$0$q;
     reg  s_r$0$clock;
     reg  [15:0] s_r$1$d;
     wire  [15:0] s_r$1$q;
     reg  s_r$1$clock;
+    reg  [15:0] s_r$2$d;
+    wire  [15:0] s_r$2$q;
+    reg  s_r$2$clock;
+    reg  [15:0] s_r$3$d;
+    wire  [15:0] s_r$3$q;
+    reg  s_r$3$clock;
+    reg  [15:0] s_r$4$d;
+    wire  [15:0] s_r$4$q;
+    reg  s_r$4$clock;
     reg  [15:0] s_g$0$d;
     wire  [15:0] s_g$0$q;
     reg  s_g$0$clock;
     reg  [15:0] s_g$1$d;
     wire  [15:0] s_g$1$q;
     reg  s_g$1$clock;
+    reg  [15:0] s_g$2$d;
+    wire  [15:0] s_g$2$q;
+    reg  s_g$2$clock;
+    reg  [15:0] s_g$3$d;
+    wire  [15:0] s_g$3$q;
+    reg  s_g$3$clock;
+    reg  [15:0] s_g$4$d;
+    wire  [15:0] s_g$4$q;
+    reg  s_g$4$clock;
     reg  [15:0] s_b$0$d;
     wire  [15:0] s_b$0$q;
     reg  s_b$0$clock;
     reg  [15:0] s_b$1$d;
     wire  [15:0] s_b$1$q;
     reg  s_b$1$clock;
+    reg  [15:0] s_b$2$d;
+    wire  [15:0] s_b$2$q;
+    reg  s_b$2$clock;
+    reg  [15:0] s_b$3$d;
+    wire  [15:0] s_b$3$q;
+    reg  s_b$3$clock;
+    reg  [15:0] s_b$4$d;
+    wire  [15:0] s_b$4$q;
+    reg  s_b$4$clock;
     reg  [15:0] s_a$0$d;
     wire  [15:0] s_a$0$q;
     reg  s_a$0$clock;
     reg  [15:0] s_a$1$d;
     wire  [15:0] s_a$1$q;
     reg  s_a$1$clock;
+    reg  [15:0] s_a$2$d;
+    wire  [15:0] s_a$2$q;
+    reg  s_a$2$clock;
+    reg  [15:0] s_a$3$d;
+    wire  [15:0] s_a$3$q;
+    reg  s_a$3$clock;
+    reg  [15:0] s_a$4$d;
+    wire  [15:0] s_a$4$q;
+    reg  s_a$4$clock;
     reg  s_v$0$d;
     wire  s_v$0$q;
     reg  s_v$0$clock;
     reg  s_v$1$d;
     wire  s_v$1$q;
     reg  s_v$1$clock;
+    reg  s_v$2$d;
+    wire  s_v$2$q;
+    reg  s_v$2$clock;
+    reg  s_v$3$d;
+    wire  s_v$3$q;
+    reg  s_v$3$clock;
+    reg  s_v$4$d;
+    wire  s_v$4$q;
+    reg  s_v$4$clock;
     
     // Sub module instances
     top$lanes$1$ctl$x_q x_q(
@@ -3084,6 +4074,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$3$q),
         .clock(v_q$3$clock)
     );
+    top$lanes$1$ctl$v_q$4 v_q$4(
+        .d(v_q$4$d),
+        .q(v_q$4$q),
+        .clock(v_q$4$clock)
+    );
+    top$lanes$1$ctl$v_q$5 v_q$5(
+        .d(v_q$5$d),
+        .q(v_q$5$q),
+        .clock(v_q$5$clock)
+    );
+    top$lanes$1$ctl$v_q$6 v_q$6(
+        .d(v_q$6$d),
+        .q(v_q$6$q),
+        .clock(v_q$6$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -3103,6 +4108,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$3$d),
         .q(er_q$3$q),
         .clock(er_q$3$clock)
+    );
+    top$lanes$1$ctl$er_q$4 er_q$4(
+        .d(er_q$4$d),
+        .q(er_q$4$q),
+        .clock(er_q$4$clock)
+    );
+    top$lanes$1$ctl$er_q$5 er_q$5(
+        .d(er_q$5$d),
+        .q(er_q$5$q),
+        .clock(er_q$5$clock)
+    );
+    top$lanes$1$ctl$er_q$6 er_q$6(
+        .d(er_q$6$d),
+        .q(er_q$6$q),
+        .clock(er_q$6$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -3124,6 +4144,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$3$q),
         .clock(pad_q$3$clock)
     );
+    top$lanes$1$ctl$pad_q$4 pad_q$4(
+        .d(pad_q$4$d),
+        .q(pad_q$4$q),
+        .clock(pad_q$4$clock)
+    );
+    top$lanes$1$ctl$pad_q$5 pad_q$5(
+        .d(pad_q$5$d),
+        .q(pad_q$5$q),
+        .clock(pad_q$5$clock)
+    );
+    top$lanes$1$ctl$pad_q$6 pad_q$6(
+        .d(pad_q$6$d),
+        .q(pad_q$6$q),
+        .clock(pad_q$6$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -3143,6 +4178,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$3$d),
         .q(bx_q$3$q),
         .clock(bx_q$3$clock)
+    );
+    top$lanes$1$ctl$bx_q$4 bx_q$4(
+        .d(bx_q$4$d),
+        .q(bx_q$4$q),
+        .clock(bx_q$4$clock)
+    );
+    top$lanes$1$ctl$bx_q$5 bx_q$5(
+        .d(bx_q$5$d),
+        .q(bx_q$5$q),
+        .clock(bx_q$5$clock)
+    );
+    top$lanes$1$ctl$bx_q$6 bx_q$6(
+        .d(bx_q$6$d),
+        .q(bx_q$6$q),
+        .clock(bx_q$6$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -3164,6 +4214,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$3$q),
         .clock(by_q$3$clock)
     );
+    top$lanes$1$ctl$by_q$4 by_q$4(
+        .d(by_q$4$d),
+        .q(by_q$4$q),
+        .clock(by_q$4$clock)
+    );
+    top$lanes$1$ctl$by_q$5 by_q$5(
+        .d(by_q$5$d),
+        .q(by_q$5$q),
+        .clock(by_q$5$clock)
+    );
+    top$lanes$1$ctl$by_q$6 by_q$6(
+        .d(by_q$6$d),
+        .q(by_q$6$q),
+        .clock(by_q$6$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -3184,6 +4249,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$3$q),
         .clock(face_q$3$clock)
     );
+    top$lanes$1$ctl$face_q$4 face_q$4(
+        .d(face_q$4$d),
+        .q(face_q$4$q),
+        .clock(face_q$4$clock)
+    );
+    top$lanes$1$ctl$face_q$5 face_q$5(
+        .d(face_q$5$d),
+        .q(face_q$5$q),
+        .clock(face_q$5$clock)
+    );
+    top$lanes$1$ctl$face_q$6 face_q$6(
+        .d(face_q$6$d),
+        .q(face_q$6$q),
+        .clock(face_q$6$clock)
+    );
     top$lanes$1$ctl$s_r$0 s_r$0(
         .d(s_r$0$d),
         .q(s_r$0$q),
@@ -3193,6 +4273,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_r$1$d),
         .q(s_r$1$q),
         .clock(s_r$1$clock)
+    );
+    top$lanes$1$ctl$s_r$2 s_r$2(
+        .d(s_r$2$d),
+        .q(s_r$2$q),
+        .clock(s_r$2$clock)
+    );
+    top$lanes$1$ctl$s_r$3 s_r$3(
+        .d(s_r$3$d),
+        .q(s_r$3$q),
+        .clock(s_r$3$clock)
+    );
+    top$lanes$1$ctl$s_r$4 s_r$4(
+        .d(s_r$4$d),
+        .q(s_r$4$q),
+        .clock(s_r$4$clock)
     );
     top$lanes$1$ctl$s_g$0 s_g$0(
         .d(s_g$0$d),
@@ -3204,6 +4299,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(s_g$1$q),
         .clock(s_g$1$clock)
     );
+    top$lanes$1$ctl$s_g$2 s_g$2(
+        .d(s_g$2$d),
+        .q(s_g$2$q),
+        .clock(s_g$2$clock)
+    );
+    top$lanes$1$ctl$s_g$3 s_g$3(
+        .d(s_g$3$d),
+        .q(s_g$3$q),
+        .clock(s_g$3$clock)
+    );
+    top$lanes$1$ctl$s_g$4 s_g$4(
+        .d(s_g$4$d),
+        .q(s_g$4$q),
+        .clock(s_g$4$clock)
+    );
     top$lanes$1$ctl$s_b$0 s_b$0(
         .d(s_b$0$d),
         .q(s_b$0$q),
@@ -3213,6 +4323,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_b$1$d),
         .q(s_b$1$q),
         .clock(s_b$1$clock)
+    );
+    top$lanes$1$ctl$s_b$2 s_b$2(
+        .d(s_b$2$d),
+        .q(s_b$2$q),
+        .clock(s_b$2$clock)
+    );
+    top$lanes$1$ctl$s_b$3 s_b$3(
+        .d(s_b$3$d),
+        .q(s_b$3$q),
+        .clock(s_b$3$clock)
+    );
+    top$lanes$1$ctl$s_b$4 s_b$4(
+        .d(s_b$4$d),
+        .q(s_b$4$q),
+        .clock(s_b$4$clock)
     );
     top$lanes$1$ctl$s_a$0 s_a$0(
         .d(s_a$0$d),
@@ -3224,6 +4349,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(s_a$1$q),
         .clock(s_a$1$clock)
     );
+    top$lanes$1$ctl$s_a$2 s_a$2(
+        .d(s_a$2$d),
+        .q(s_a$2$q),
+        .clock(s_a$2$clock)
+    );
+    top$lanes$1$ctl$s_a$3 s_a$3(
+        .d(s_a$3$d),
+        .q(s_a$3$q),
+        .clock(s_a$3$clock)
+    );
+    top$lanes$1$ctl$s_a$4 s_a$4(
+        .d(s_a$4$d),
+        .q(s_a$4$q),
+        .clock(s_a$4$clock)
+    );
     top$lanes$1$ctl$s_v$0 s_v$0(
         .d(s_v$0$d),
         .q(s_v$0$q),
@@ -3233,6 +4373,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(s_v$1$d),
         .q(s_v$1$q),
         .clock(s_v$1$clock)
+    );
+    top$lanes$1$ctl$s_v$2 s_v$2(
+        .d(s_v$2$d),
+        .q(s_v$2$q),
+        .clock(s_v$2$clock)
+    );
+    top$lanes$1$ctl$s_v$3 s_v$3(
+        .d(s_v$3$d),
+        .q(s_v$3$q),
+        .clock(s_v$3$clock)
+    );
+    top$lanes$1$ctl$s_v$4 s_v$4(
+        .d(s_v$4$d),
+        .q(s_v$4$q),
+        .clock(s_v$4$clock)
     );
     
     // Update code
@@ -3275,6 +4430,24 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$3$clock = clock;
         by_q$3$clock = clock;
         face_q$3$clock = clock;
+        v_q$4$clock = clock;
+        er_q$4$clock = clock;
+        pad_q$4$clock = clock;
+        bx_q$4$clock = clock;
+        by_q$4$clock = clock;
+        face_q$4$clock = clock;
+        v_q$5$clock = clock;
+        er_q$5$clock = clock;
+        pad_q$5$clock = clock;
+        bx_q$5$clock = clock;
+        by_q$5$clock = clock;
+        face_q$5$clock = clock;
+        v_q$6$clock = clock;
+        er_q$6$clock = clock;
+        pad_q$6$clock = clock;
+        bx_q$6$clock = clock;
+        by_q$6$clock = clock;
+        face_q$6$clock = clock;
         s_r$0$clock = clock;
         s_g$0$clock = clock;
         s_b$0$clock = clock;
@@ -3285,6 +4458,21 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         s_b$1$clock = clock;
         s_a$1$clock = clock;
         s_v$1$clock = clock;
+        s_r$2$clock = clock;
+        s_g$2$clock = clock;
+        s_b$2$clock = clock;
+        s_a$2$clock = clock;
+        s_v$2$clock = clock;
+        s_r$3$clock = clock;
+        s_g$3$clock = clock;
+        s_b$3$clock = clock;
+        s_a$3$clock = clock;
+        s_v$3$clock = clock;
+        s_r$4$clock = clock;
+        s_g$4$clock = clock;
+        s_b$4$clock = clock;
+        s_a$4$clock = clock;
+        s_v$4$clock = clock;
         x_q$d = x;
         y_q$d = y;
         sr_q$d = sr;
@@ -3323,12 +4511,30 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$3$d = bx_q$2$q;
         by_q$3$d = by_q$2$q;
         face_q$3$d = face_q$2$q;
-        res_beat = v_q$3$q;
-        res_valid = v_q$3$q & ~pad_q$3$q;
-        px_valid = v_q$3$q & er_q$3$q & ~pad_q$3$q;
-        px_x = bx_q$3$q;
-        px_y = by_q$3$q;
-        px_face = face_q$3$q;
+        v_q$4$d = v_q$3$q;
+        er_q$4$d = er_q$3$q;
+        pad_q$4$d = pad_q$3$q;
+        bx_q$4$d = bx_q$3$q;
+        by_q$4$d = by_q$3$q;
+        face_q$4$d = face_q$3$q;
+        v_q$5$d = v_q$4$q;
+        er_q$5$d = er_q$4$q;
+        pad_q$5$d = pad_q$4$q;
+        bx_q$5$d = bx_q$4$q;
+        by_q$5$d = by_q$4$q;
+        face_q$5$d = face_q$4$q;
+        v_q$6$d = v_q$5$q;
+        er_q$6$d = er_q$5$q;
+        pad_q$6$d = pad_q$5$q;
+        bx_q$6$d = bx_q$5$q;
+        by_q$6$d = by_q$5$q;
+        face_q$6$d = face_q$5$q;
+        res_beat = v_q$6$q;
+        res_valid = v_q$6$q & ~pad_q$6$q;
+        px_valid = v_q$6$q & er_q$6$q & ~pad_q$6$q;
+        px_x = bx_q$6$q;
+        px_y = by_q$6$q;
+        px_face = face_q$6$q;
         s_r$0$d = r;
         s_g$0$d = g;
         s_b$0$d = b;
@@ -3339,11 +4545,26 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         s_b$1$d = s_b$0$q;
         s_a$1$d = s_a$0$q;
         s_v$1$d = s_v$0$q;
-        new_r = s_r$1$q;
-        new_g = s_g$1$q;
-        new_b = s_b$1$q;
-        new_a = s_a$1$q;
-        new_valid = s_v$1$q;
+        s_r$2$d = s_r$1$q;
+        s_g$2$d = s_g$1$q;
+        s_b$2$d = s_b$1$q;
+        s_a$2$d = s_a$1$q;
+        s_v$2$d = s_v$1$q;
+        s_r$3$d = s_r$2$q;
+        s_g$3$d = s_g$2$q;
+        s_b$3$d = s_b$2$q;
+        s_a$3$d = s_a$2$q;
+        s_v$3$d = s_v$2$q;
+        s_r$4$d = s_r$3$q;
+        s_g$4$d = s_g$3$q;
+        s_b$4$d = s_b$3$q;
+        s_a$4$d = s_a$3$q;
+        s_v$4$d = s_v$3$q;
+        new_r = s_r$4$q;
+        new_g = s_g$4$q;
+        new_b = s_b$4$q;
+        new_a = s_a$4$q;
+        new_valid = s_v$4$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -3415,6 +4636,57 @@ module top$lanes$1$ctl$bx_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$3
+module top$lanes$1$ctl$bx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$4
+module top$lanes$1$ctl$bx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$5
+module top$lanes$1$ctl$bx_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$6
 module top$lanes$1$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -3483,6 +4755,57 @@ module top$lanes$1$ctl$by_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$3
+module top$lanes$1$ctl$by_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$4
+module top$lanes$1$ctl$by_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$5
+module top$lanes$1$ctl$by_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$6
 module top$lanes$1$ctl$dxm_q(d,q,clock);
     
     // Module arguments
@@ -3619,6 +4942,57 @@ module top$lanes$1$ctl$er_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$3
+module top$lanes$1$ctl$er_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$4
+module top$lanes$1$ctl$er_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$5
+module top$lanes$1$ctl$er_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$6
 module top$lanes$1$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -3687,6 +5061,57 @@ module top$lanes$1$ctl$face_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$3
+module top$lanes$1$ctl$face_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$4
+module top$lanes$1$ctl$face_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$5
+module top$lanes$1$ctl$face_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$6
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -3755,6 +5180,57 @@ module top$lanes$1$ctl$pad_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$3
+module top$lanes$1$ctl$pad_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$4
+module top$lanes$1$ctl$pad_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$5
+module top$lanes$1$ctl$pad_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$6
 module top$lanes$1$ctl$s_a$0(d,q,clock);
     
     // Module arguments
@@ -3789,6 +5265,57 @@ module top$lanes$1$ctl$s_a$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$s_a$1
+module top$lanes$1$ctl$s_a$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_a$2
+module top$lanes$1$ctl$s_a$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_a$3
+module top$lanes$1$ctl$s_a$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_a$4
 module top$lanes$1$ctl$s_b$0(d,q,clock);
     
     // Module arguments
@@ -3823,6 +5350,57 @@ module top$lanes$1$ctl$s_b$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$s_b$1
+module top$lanes$1$ctl$s_b$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_b$2
+module top$lanes$1$ctl$s_b$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_b$3
+module top$lanes$1$ctl$s_b$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_b$4
 module top$lanes$1$ctl$s_g$0(d,q,clock);
     
     // Module arguments
@@ -3857,6 +5435,57 @@ module top$lanes$1$ctl$s_g$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$s_g$1
+module top$lanes$1$ctl$s_g$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_g$2
+module top$lanes$1$ctl$s_g$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_g$3
+module top$lanes$1$ctl$s_g$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_g$4
 module top$lanes$1$ctl$s_r$0(d,q,clock);
     
     // Module arguments
@@ -3891,6 +5520,57 @@ module top$lanes$1$ctl$s_r$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$s_r$1
+module top$lanes$1$ctl$s_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_r$2
+module top$lanes$1$ctl$s_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_r$3
+module top$lanes$1$ctl$s_r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_r$4
 module top$lanes$1$ctl$s_v$0(d,q,clock);
     
     // Module arguments
@@ -3925,6 +5605,57 @@ module top$lanes$1$ctl$s_v$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$s_v$1
+module top$lanes$1$ctl$s_v$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_v$2
+module top$lanes$1$ctl$s_v$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_v$3
+module top$lanes$1$ctl$s_v$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$s_v$4
 module top$lanes$1$ctl$sr_q(d,q,clock);
     
     // Module arguments
@@ -4010,6 +5741,57 @@ module top$lanes$1$ctl$v_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$3
+module top$lanes$1$ctl$v_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$4
+module top$lanes$1$ctl$v_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$5
+module top$lanes$1$ctl$v_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$6
 module top$lanes$1$ctl$x_q(d,q,clock);
     
     // Module arguments

@@ -1204,7 +1204,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h1e8;
+    localparam  last = 16'h1e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1323,7 +1323,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[488:0];
+    reg [31:0] mem[485:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};
@@ -3628,7 +3628,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 16'h1e8;
+    localparam  last = 16'h1e5;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -3747,7 +3747,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[488:0];
+    reg [31:0] mem[485:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};
