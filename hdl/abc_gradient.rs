@@ -32,6 +32,12 @@
 use crate::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
+/// The chain's delay lines, in clocks (`line_a` to `line_d`; a line of 1 is
+/// a register), for `s` beats per slice and `b` per beam.
+pub fn line_lengths(s: u32, b: u32) -> [u32; 4] {
+    [s - b - 1, b, b, s - b]
+}
+
 /// One pipeline's gradient unit (`H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct AbcGradient<const H: usize> {
@@ -93,6 +99,7 @@ impl<const H: usize> AbcGradient<H> {
     /// `voxel_bits`. Without `enabled` (a scene without gradients) the lines
     /// are registers.
     pub fn new(s: u32, b: u32, p: u32, voxel_bits: u32, enabled: bool) -> AbcGradient<H> {
+        let [a_len, b_len, c_len, d_len] = line_lengths(s, b);
         let line = |length: u32| {
             DelayLine::new(
                 if enabled { length as usize } else { 1 },
@@ -123,13 +130,13 @@ impl<const H: usize> AbcGradient<H> {
             gy_mag: Default::default(),
             gz_neg: Default::default(),
             gz_mag: Default::default(),
-            line_a: line(s - b - 1),
+            line_a: line(a_len),
             reg_yp: Default::default(),
-            line_b: line(b),
+            line_b: line(b_len),
             reg_xm: Default::default(),
             reg_c: Default::default(),
-            line_c: line(b),
-            line_d: line(s - b),
+            line_c: line(c_len),
+            line_d: line(d_len),
             hop_xm: Default::default(),
             hop_ym: Default::default(),
             hop_zm: Default::default(),

@@ -30,6 +30,13 @@ pub fn row_wait(c: &PipelineConfig, ey: i32) -> u32 {
     (c.slice_beats as i32 - ey * c.beam_beats as i32) as u32 - RESULT_AT - 4
 }
 
+/// The ring's and the two beam lines' lengths, in clocks: row y-1's line is
+/// a register (length 1) when no tap the 2x2 can select reads that row.
+pub fn line_lengths(c: &PipelineConfig) -> [u32; 3] {
+    let below = if c.reads_row_below() { c.beam_beats } else { 1 };
+    [row_wait(c, 1), c.beam_beats, below]
+}
+
 /// One lane's compositing-buffer history (`H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct BufferRows<const H: usize> {
@@ -59,15 +66,15 @@ impl<const H: usize> BufferRows<H> {
             .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo)
             .to_bits();
         let line = |length: u32| DelayLine::new(length as usize, &c.ring_fields, mask);
-        let row_minus = (0..9).any(|t| c.taps_used[t] && TAPS[t].1 == -1);
+        let [ring, beam0, beam1] = line_lengths(c);
         BufferRows {
             clock: Default::default(),
             res: Default::default(),
             res_beat: Default::default(),
             tap: Default::default(),
-            ring: line(row_wait(c, 1)),
-            beam0: line(c.beam_beats),
-            beam1: line(if row_minus { c.beam_beats } else { 1 }),
+            ring: line(ring),
+            beam0: line(beam0),
+            beam1: line(beam1),
             stage: Default::default(),
             cand: Default::default(),
             pick: std::array::from_fn(|t| {

@@ -198,29 +198,45 @@ impl PipelineConfig {
         self.ring_fields.iter().map(|f| f.1 as u64).sum()
     }
 
+    /// Whether a tap the 2x2 selection can pick reads row y - 1.
+    pub fn reads_row_below(&self) -> bool {
+        (0..9).any(|t| self.taps_used[t] && TAPS[t].1 == -1)
+    }
+
+    /// Every delay line of a lane, in clocks, with its word bits.
+    fn lines(&self) -> Vec<(u32, u64)> {
+        let mut v: Vec<(u32, u64)> = crate::buffer_rows::line_lengths(self)
+            .iter()
+            .map(|&l| (l, self.word_bits()))
+            .collect();
+        if self.gradient {
+            v.extend(
+                crate::abc_gradient::line_lengths(self.slice_beats, self.beam_beats)
+                    .iter()
+                    .map(|&l| (l, self.voxel_bits as u64)),
+            );
+        }
+        v
+    }
+
     /// Delay-line pointer bits (`H`) the build needs for its longest line,
     /// the compositing-buffer ring or the gradient unit's.
     pub fn history_bits(&self) -> usize {
-        let (s, b) = (self.slice_beats, self.beam_beats);
-        let ring = crate::buffer_rows::row_wait(self, 1);
-        let longest = if self.gradient { s - b } else { ring };
+        let longest = self.lines().iter().map(|l| l.0).max().unwrap_or(1);
         crate::cfb::bits_for(longest as u64 + 1) as usize
     }
 
     /// Bits of block RAM the pipelines' buffers hold (not the CFB's
     /// voxel memory), as built: per lane the compositing-buffer history and
-    /// the gradient unit's B and C slices.
+    /// the gradient unit's B and C slices (a line of 1 is a register).
     pub fn buffer_bits(&self) -> u64 {
-        let (s, b) = (self.slice_beats as u64, self.beam_beats as u64);
-        let row_minus = (0..9).any(|t| self.taps_used[t] && TAPS[t].1 == -1);
-        let ring = crate::buffer_rows::row_wait(self, 1) as u64;
-        let history = (ring + b + if row_minus { b } else { 0 }) * self.word_bits();
-        let gradient = if self.gradient {
-            (2 * s - 1) * self.voxel_bits as u64
-        } else {
-            0
-        };
-        self.p as u64 * (history + gradient)
+        let lane: u64 = self
+            .lines()
+            .iter()
+            .filter(|l| l.0 > 1)
+            .map(|&(l, bits)| l as u64 * bits)
+            .sum();
+        self.p as u64 * lane
     }
 
     /// The least the scene's buffers can hold (Tables 1 and 2 of the paper):

@@ -54,7 +54,7 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
             instances: &["div_x", "div_y"],
         });
     }
-    if !(0..9).any(|t| config.taps_used[t] && hdl::pipeline::TAPS[t].1 == -1) {
+    if !config.reads_row_below() {
         v.push(LeftOut {
             name: "compositing_buffer_row_y-1_line (a register)",
             instances: &[],
