@@ -18,6 +18,7 @@ pub mod gtkw;
 pub mod iverilog;
 pub mod pixel_log;
 pub mod sim;
+pub mod stage;
 pub mod synth;
 pub mod tool;
 pub mod vcd_diff;

@@ -1,0 +1,233 @@
+//! One stage's emitted Verilog on per-clock input vectors, under Icarus or
+//! Verilator: the stage testbenches drive the rust-hdl simulation and the
+//! Verilog with the same vectors and compare both with the golden model on
+//! every clock.
+//!
+//! The stage is rust-hdl's `top` module (`generate_verilog`). A generated
+//! Verilog testbench connects its ports in declaration order, reads one line
+//! of hexadecimal inputs per clock, sets them, raises the clock and, one
+//! time step later, writes every output as hexadecimal: the values a rust-hdl
+//! testbench reads after `wait_clock_cycle!`.
+
+use std::path::Path;
+use std::process::Command;
+
+/// A simulator for a stage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StageEngine {
+    Iverilog,
+    Verilator,
+}
+
+/// A port of the `top` module: name and width.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Port {
+    pub name: String,
+    pub bits: usize,
+    pub input: bool,
+}
+
+/// The ports of rust-hdl's `top` module in declaration order, without the
+/// clock.
+pub fn ports(verilog: &str) -> Result<Vec<Port>, String> {
+    let top = verilog
+        .split("\nmodule ")
+        .find(|m| m.starts_with("top("))
+        .or_else(|| {
+            verilog
+                .strip_prefix("module ")
+                .filter(|m| m.starts_with("top("))
+        })
+        .ok_or("no `module top(` in the stage's Verilog")?;
+    let header = &top[4..top.find(");").ok_or("unterminated port list")?];
+    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    let mut out = Vec::new();
+    for name in names.iter().filter(|n| **n != "clock") {
+        let decl = top
+            .lines()
+            .map(str::trim)
+            .find(|l| {
+                (l.starts_with("input ") || l.starts_with("output "))
+                    && l.trim_end_matches(';').ends_with(&format!(" {name}"))
+            })
+            .ok_or_else(|| format!("port {name}: no declaration"))?;
+        let bits = match decl.find('[') {
+            Some(i) => {
+                let msb = &decl[i + 1..decl.find(':').ok_or("bad range")?];
+                msb.parse::<usize>()
+                    .map_err(|e| format!("port {name}: {e}"))?
+                    + 1
+            }
+            None => 1,
+        };
+        out.push(Port {
+            name: name.to_string(),
+            bits,
+            input: decl.starts_with("input "),
+        });
+    }
+    Ok(out)
+}
+
+/// Run the stage for `vectors.len()` clocks; `vectors[t]` holds the inputs
+/// (in [`ports`] order, inputs only) set before clock edge `t`. Returns the
+/// outputs after each edge, `None` where a bit is unknown.
+pub fn run_stage(
+    engine: StageEngine,
+    verilog: &str,
+    vectors: &[Vec<u64>],
+) -> Result<Vec<Vec<Option<u64>>>, String> {
+    let ports = ports(verilog)?;
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cube-stage-{}-{run}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let result = (|| {
+        std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
+        std::fs::write(dir.join("tb.v"), testbench(&ports, vectors.len()))
+            .map_err(|e| e.to_string())?;
+        let lines: Vec<String> = vectors
+            .iter()
+            .map(|v| {
+                v.iter()
+                    .map(|x| format!("{x:x}"))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            })
+            .collect();
+        std::fs::write(dir.join("in.hex"), lines.join("\n") + "\n").map_err(|e| e.to_string())?;
+        simulate(engine, &dir)?;
+        let log = std::fs::read_to_string(dir.join("out.hex")).map_err(|e| e.to_string())?;
+        let outs = log
+            .lines()
+            .map(|l| {
+                l.split_whitespace()
+                    .map(|h| u64::from_str_radix(h, 16).ok())
+                    .collect()
+            })
+            .collect::<Vec<Vec<Option<u64>>>>();
+        if outs.len() != vectors.len() {
+            return Err(format!(
+                "the stage wrote {} clocks of {}",
+                outs.len(),
+                vectors.len()
+            ));
+        }
+        Ok(outs)
+    })();
+    let _ = std::fs::remove_dir_all(&dir);
+    result
+}
+
+fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
+    match engine {
+        StageEngine::Iverilog => {
+            crate::tool::run(
+                Command::new("iverilog")
+                    .args(["-g2012", "-o", "sim.vvp", "-s", "tb", "top.v", "tb.v"])
+                    .current_dir(dir),
+                "Icarus Verilog (iverilog)",
+            )?;
+            crate::tool::run(
+                Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
+                "Icarus Verilog (vvp)",
+            )?;
+        }
+        StageEngine::Verilator => {
+            crate::tool::run(
+                Command::new("verilator")
+                    .args([
+                        "--binary",
+                        "-j",
+                        "2",
+                        "-Wno-fatal",
+                        "-Wno-lint",
+                        "-Wno-style",
+                        "--top-module",
+                        "tb",
+                        "top.v",
+                        "tb.v",
+                    ])
+                    .current_dir(dir),
+                "Verilator",
+            )?;
+            crate::tool::run(
+                Command::new("obj_dir/Vtb").current_dir(dir),
+                "the Verilator model",
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The testbench: the stage's inputs as registers read from `in.hex`, its
+/// outputs written to `out.hex` after every rising edge.
+fn testbench(ports: &[Port], clocks: usize) -> String {
+    let decl = |p: &Port, kind: &str, i: usize| {
+        let range = if p.bits > 1 {
+            format!("[{}:0] ", p.bits - 1)
+        } else {
+            String::new()
+        };
+        format!("    {kind} {range}p{i};\n")
+    };
+    let mut v = String::from("`timescale 1ns/1ps\nmodule tb;\n    reg clock = 0;\n");
+    for (i, p) in ports.iter().enumerate() {
+        v += &decl(p, if p.input { "reg" } else { "wire" }, i);
+    }
+    let conns: Vec<String> = std::iter::once("clock".to_string())
+        .chain((0..ports.len()).map(|i| format!("p{i}")))
+        .collect();
+    v += &format!("    top uut({});\n", conns.join(", "));
+    let ins: Vec<usize> = (0..ports.len()).filter(|&i| ports[i].input).collect();
+    let outs: Vec<usize> = (0..ports.len()).filter(|&i| !ports[i].input).collect();
+    let fmt = |n: usize| vec!["%h"; n].join(" ");
+    let list = |ix: &[usize]| {
+        ix.iter()
+            .map(|i| format!("p{i}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    v += "    integer fin, fout, r, t;\n    initial begin\n";
+    v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
+    v += &format!("        for (t = 0; t < {clocks}; t = t + 1) begin\n");
+    if !ins.is_empty() {
+        v += &format!(
+            "            r = $fscanf(fin, \"{}\\n\", {});\n",
+            fmt(ins.len()),
+            list(&ins)
+        );
+    }
+    v += "            #5 clock = 1;\n";
+    v += &format!(
+        "            #1 $fwrite(fout, \"{}\\n\", {});\n",
+        fmt(outs.len()),
+        list(&outs)
+    );
+    v += "            #4 clock = 0;\n        end\n        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ports_in_declaration_order() {
+        let v = "// x\nmodule top(clock,a$0,flag,y);\n    input wire  clock;\n    input wire  [15:0] a$0;\n    input wire  flag;\n    output reg  [31:0] y;\nendmodule\n";
+        let p = ports(v).unwrap();
+        let want = |name: &str, bits, input| Port {
+            name: name.into(),
+            bits,
+            input,
+        };
+        assert_eq!(
+            p,
+            vec![
+                want("a$0", 16, true),
+                want("flag", 1, true),
+                want("y", 32, false)
+            ]
+        );
+    }
+}
