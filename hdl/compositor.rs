@@ -11,52 +11,12 @@
 //!
 //! The mode and order are fixed by the scene when the unit is built; the
 //! logic of the other modes is constant-folded away by synthesis.
-//! `mul(a, b) = round(a*b / M)` with `M = 2^rgba_bits - 1` is `unorm::MulUnorm`:
-//! one 16x16 multiplier per channel.
+//! The over operator is [`Over`], one 16x16 multiplier per channel.
 
-use crate::unorm::MulUnorm;
+use crate::over::Over;
 use golden_model::cube4l::plan::Order;
 use rust_hdl::prelude::*;
 use scene::Mode;
-
-/// `sat(front + mul(m - front_alpha, back))` for one channel, combinational.
-#[derive(LogicBlock)]
-struct OverChannel {
-    pub front: Signal<In, Bits<16>>,
-    pub back: Signal<In, Bits<16>>,
-    pub front_alpha: Signal<In, Bits<16>>,
-    pub result: Signal<Out, Bits<16>>,
-    m: Constant<Bits<16>>,
-    mul: MulUnorm,
-    sum: Signal<Local, Bits<32>>,
-}
-
-impl OverChannel {
-    fn new(rgba_bits: u32) -> OverChannel {
-        OverChannel {
-            m: Constant::new(((1u64 << rgba_bits) - 1).to_bits()),
-            mul: MulUnorm::new(rgba_bits),
-            front: Default::default(),
-            back: Default::default(),
-            front_alpha: Default::default(),
-            result: Default::default(),
-            sum: Default::default(),
-        }
-    }
-}
-
-impl Logic for OverChannel {
-    #[hdl_gen]
-    fn update(&mut self) {
-        self.mul.a.next = self.m.val() - self.front_alpha.val();
-        self.mul.b.next = self.back.val();
-        self.sum.next = bit_cast::<32, 16>(self.front.val()) + bit_cast::<32, 16>(self.mul.y.val());
-        self.result.next = bit_cast::<16, 32>(self.sum.val());
-        if self.sum.val() > bit_cast::<32, 16>(self.m.val()) {
-            self.result.next = self.m.val();
-        }
-    }
-}
 
 /// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
 /// channel r only and carry 0 in the others. Channel r is 32 bits wide for
@@ -82,10 +42,10 @@ pub struct Compositor {
     over: Constant<Bit>,
     mip: Constant<Bit>,
     minip: Constant<Bit>,
-    ch_r: OverChannel,
-    ch_g: OverChannel,
-    ch_b: OverChannel,
-    ch_a: OverChannel,
+    ch_r: Over,
+    ch_g: Over,
+    ch_b: Over,
+    ch_a: Over,
     reg_r: DFF<Bits<32>>,
     reg_g: DFF<Bits<16>>,
     reg_b: DFF<Bits<16>>,
@@ -113,10 +73,10 @@ impl Compositor {
             over: Constant::new(matches!(mode, Mode::Composite | Mode::FirstOpaque)),
             mip: Constant::new(mode == Mode::Mip),
             minip: Constant::new(mode == Mode::Minip),
-            ch_r: OverChannel::new(rgba_bits),
-            ch_g: OverChannel::new(rgba_bits),
-            ch_b: OverChannel::new(rgba_bits),
-            ch_a: OverChannel::new(rgba_bits),
+            ch_r: Over::new(rgba_bits),
+            ch_g: Over::new(rgba_bits),
+            ch_b: Over::new(rgba_bits),
+            ch_a: Over::new(rgba_bits),
             reg_r: Default::default(),
             reg_g: Default::default(),
             reg_b: Default::default(),

@@ -215,7 +215,7 @@ fn trilin_matches_golden_model_in_rust_hdl() {
 fn vectors(c: &Case, clocks: usize) -> Vec<Vec<u64>> {
     (0..clocks)
         .map(|t| {
-            let i = at(&c, t);
+            let i = at(c, t);
             let mut v: Vec<u64> = i.cell.iter().map(|r| r[0] as u64).collect();
             v.extend(i.cell.iter().map(|r| r[1] as u64));
             v.extend([i.w.offset, i.w.wx, i.w.wy].map(u64::from));
