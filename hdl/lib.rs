@@ -11,7 +11,9 @@
 //! here spawns a process or touches a file: the `cosim` crate exports,
 //! simulates and synthesizes these stages.
 
+pub mod abc_estimator;
 pub mod abc_gradient;
+pub mod abc_unit;
 pub mod bilinear;
 pub mod buffer_rows;
 pub mod buffer_tap;
@@ -24,6 +26,7 @@ pub mod lane_feed;
 pub mod lerp;
 pub mod over;
 pub mod pipeline;
+pub mod plane_taps;
 pub mod ram;
 pub mod rpc;
 pub mod rpc_node;

@@ -109,15 +109,15 @@ impl Logic for RpcNode {
         // both are valid and the back wins the comparison.
         self.take_back.next = !self.front_valid.val();
         if self.mip.val() & self.back_valid.val() & (self.back_r.val() > self.front_r.val()) {
-            self.take_back.next = true.into();
+            self.take_back.next = true;
         }
         if self.minip.val() & self.back_valid.val() & (self.back_r.val() < self.front_r.val()) {
-            self.take_back.next = true.into();
+            self.take_back.next = true;
         }
         self.reg_g.d.next = 0.into();
         self.reg_b.d.next = 0.into();
         self.reg_a.d.next = 0.into();
-        self.reg_valid.d.next = true.into();
+        self.reg_valid.d.next = true;
         if self.over.val() {
             self.reg_r.d.next = bit_cast::<32, 16>(self.ch_r.result.val());
             self.reg_g.d.next = self.ch_g.result.val();

@@ -4,10 +4,10 @@
 //! every clock.
 //!
 //! The stage is rust-hdl's `top` module (`generate_verilog`). A generated
-//! Verilog testbench connects its ports in declaration order, reads one line
-//! of hexadecimal inputs per clock, sets them, raises the clock and, one
-//! time step later, writes every output as hexadecimal: the values a rust-hdl
-//! testbench reads after `wait_clock_cycle!`.
+//! testbench (Verilog for Icarus, C++ for Verilator) reads one line of
+//! hexadecimal inputs per clock, sets them, raises the clock and then writes
+//! every output as hexadecimal: the values a rust-hdl testbench reads after
+//! `wait_clock_cycle!`.
 
 use std::path::Path;
 use std::process::Command;
@@ -86,6 +86,8 @@ pub fn run_stage(
         std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
         std::fs::write(dir.join("tb.v"), testbench(&ports, vectors.len()))
             .map_err(|e| e.to_string())?;
+        std::fs::write(dir.join("harness.cpp"), harness(&ports, vectors.len()))
+            .map_err(|e| e.to_string())?;
         let lines: Vec<String> = vectors
             .iter()
             .map(|v| {
@@ -137,22 +139,24 @@ fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
             crate::tool::run(
                 Command::new("verilator")
                     .args([
-                        "--binary",
+                        "--cc",
+                        "--exe",
+                        "--build",
                         "-j",
                         "2",
                         "-Wno-fatal",
                         "-Wno-lint",
                         "-Wno-style",
                         "--top-module",
-                        "tb",
+                        "top",
                         "top.v",
-                        "tb.v",
+                        "harness.cpp",
                     ])
                     .current_dir(dir),
                 "Verilator",
             )?;
             crate::tool::run(
-                Command::new("obj_dir/Vtb").current_dir(dir),
+                Command::new("obj_dir/Vtop").current_dir(dir),
                 "the Verilator model",
             )?;
         }
@@ -206,6 +210,33 @@ fn testbench(ports: &[Port], clocks: usize) -> String {
     );
     v += "            #4 clock = 0;\n        end\n        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
     v
+}
+
+/// The same testbench as C++ for Verilator: the model's ports are named
+/// as in Verilog with `$` escaped as `__024`.
+fn harness(ports: &[Port], clocks: usize) -> String {
+    let field = |p: &Port| format!("top->{}", p.name.replace('$', "__024"));
+    let mut c = String::from(
+        "#include \"Vtop.h\"\n#include \"verilated.h\"\n#include <cstdio>\n\nint main(int argc, char** argv) {\n    Verilated::commandArgs(argc, argv);\n    Vtop* top = new Vtop;\n    FILE* in = fopen(\"in.hex\", \"r\");\n    FILE* out = fopen(\"out.hex\", \"w\");\n    unsigned long long v;\n    top->clock = 0;\n    top->eval();\n",
+    );
+    c += &format!("    for (int t = 0; t < {clocks}; t++) {{\n");
+    for p in ports.iter().filter(|p| p.input) {
+        c += &format!(
+            "        if (fscanf(in, \"%llx\", &v) != 1) return 1;\n        {} = v;\n",
+            field(p)
+        );
+    }
+    c += "        top->eval();\n        top->clock = 1;\n        top->eval();\n";
+    let outs: Vec<&Port> = ports.iter().filter(|p| !p.input).collect();
+    for (i, p) in outs.iter().enumerate() {
+        let sep = if i + 1 == outs.len() { "\\n" } else { " " };
+        c += &format!(
+            "        fprintf(out, \"%llx{sep}\", (unsigned long long){});\n",
+            field(p)
+        );
+    }
+    c += "        top->clock = 0;\n        top->eval();\n    }\n    fclose(out);\n    delete top;\n    return 0;\n}\n";
+    c
 }
 
 #[cfg(test)]
