@@ -34,4 +34,5 @@ pub mod select2x2;
 pub mod shader;
 pub mod tap_network;
 pub mod trilin;
+pub mod trilin_lanes;
 pub mod unorm;

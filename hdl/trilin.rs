@@ -30,9 +30,16 @@ pub const LATENCY: usize = 7;
 #[derive(LogicBlock)]
 pub struct Trilin {
     pub clock: Signal<In, Clock>,
-    /// Rays A, B, C, D on plane `k` (front) and `k + 1` (back).
-    pub front: [Signal<In, Bits<16>>; 4],
-    pub back: [Signal<In, Bits<16>>; 4],
+    /// Rays A, B, C, D on plane `k` (`a0`, ...) and `k + 1` (`a1`, ...);
+    /// one signal each, so that a parent's array of units can drive them.
+    pub a0: Signal<In, Bits<16>>,
+    pub a1: Signal<In, Bits<16>>,
+    pub b0: Signal<In, Bits<16>>,
+    pub b1: Signal<In, Bits<16>>,
+    pub c0: Signal<In, Bits<16>>,
+    pub c1: Signal<In, Bits<16>>,
+    pub d0: Signal<In, Bits<16>>,
+    pub d1: Signal<In, Bits<16>>,
     /// The offset `O` and the template weights, `W` fractional bits.
     pub offset: Signal<In, Bits<16>>,
     pub wx: Signal<In, Bits<16>>,
@@ -59,8 +66,14 @@ impl Trilin {
         let lerp = || Lerp::new(weight_bits, wide);
         Trilin {
             clock: Default::default(),
-            front: Default::default(),
-            back: Default::default(),
+            a0: Default::default(),
+            a1: Default::default(),
+            b0: Default::default(),
+            b1: Default::default(),
+            c0: Default::default(),
+            c1: Default::default(),
+            d0: Default::default(),
+            d1: Default::default(),
             offset: Default::default(),
             wx: Default::default(),
             wy: Default::default(),
@@ -99,14 +112,14 @@ impl Logic for Trilin {
         self.vertical.clock.next = self.clock.val();
         // Entry registers, the voxels widened.
         // (hdl_gen does not substitute a loop index inside bit_cast.)
-        self.front_q[0].d.next = bit_cast::<32, 16>(self.front[0].val()) << self.widen.val();
-        self.back_q[0].d.next = bit_cast::<32, 16>(self.back[0].val()) << self.widen.val();
-        self.front_q[1].d.next = bit_cast::<32, 16>(self.front[1].val()) << self.widen.val();
-        self.back_q[1].d.next = bit_cast::<32, 16>(self.back[1].val()) << self.widen.val();
-        self.front_q[2].d.next = bit_cast::<32, 16>(self.front[2].val()) << self.widen.val();
-        self.back_q[2].d.next = bit_cast::<32, 16>(self.back[2].val()) << self.widen.val();
-        self.front_q[3].d.next = bit_cast::<32, 16>(self.front[3].val()) << self.widen.val();
-        self.back_q[3].d.next = bit_cast::<32, 16>(self.back[3].val()) << self.widen.val();
+        self.front_q[0].d.next = bit_cast::<32, 16>(self.a0.val()) << self.widen.val();
+        self.back_q[0].d.next = bit_cast::<32, 16>(self.a1.val()) << self.widen.val();
+        self.front_q[1].d.next = bit_cast::<32, 16>(self.b0.val()) << self.widen.val();
+        self.back_q[1].d.next = bit_cast::<32, 16>(self.b1.val()) << self.widen.val();
+        self.front_q[2].d.next = bit_cast::<32, 16>(self.c0.val()) << self.widen.val();
+        self.back_q[2].d.next = bit_cast::<32, 16>(self.c1.val()) << self.widen.val();
+        self.front_q[3].d.next = bit_cast::<32, 16>(self.d0.val()) << self.widen.val();
+        self.back_q[3].d.next = bit_cast::<32, 16>(self.d1.val()) << self.widen.val();
         self.offset_q.d.next = self.offset.val();
         self.wx_q[0].d.next = self.wx.val();
         self.wx_q[1].d.next = self.wx_q[0].q.val();

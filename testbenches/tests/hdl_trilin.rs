@@ -184,10 +184,10 @@ fn trilin_matches_golden_model_in_rust_hdl() {
             let mut x = sim.init()?;
             for t in 0..clocks {
                 let i = at(&tb, t);
-                for r in 0..4 {
-                    x.front[r].next = (i.cell[r][0] as u64).to_bits();
-                    x.back[r].next = (i.cell[r][1] as u64).to_bits();
-                }
+                let [[a0, a1], [b0, b1], [c0, c1], [d0, d1]] =
+                    i.cell.map(|r| r.map(|v| (v as u64).to_bits()));
+                (x.a0.next, x.a1.next, x.b0.next, x.b1.next) = (a0, a1, b0, b1);
+                (x.c0.next, x.c1.next, x.d0.next, x.d1.next) = (c0, c1, d0, d1);
                 x.offset.next = (i.w.offset as u64).to_bits();
                 x.wx.next = (i.w.wx as u64).to_bits();
                 x.wy.next = (i.w.wy as u64).to_bits();
@@ -210,14 +210,13 @@ fn trilin_matches_golden_model_in_rust_hdl() {
     }
 }
 
-/// The Verilog inputs of each clock, in port order: front[0..4],
-/// back[0..4], offset, wx, wy.
+/// The Verilog inputs of each clock, in port order: a0, a1, b0, ..., d1,
+/// offset, wx, wy.
 fn vectors(c: &Case, clocks: usize) -> Vec<Vec<u64>> {
     (0..clocks)
         .map(|t| {
             let i = at(c, t);
-            let mut v: Vec<u64> = i.cell.iter().map(|r| r[0] as u64).collect();
-            v.extend(i.cell.iter().map(|r| r[1] as u64));
+            let mut v: Vec<u64> = i.cell.iter().flatten().map(|&x| x as u64).collect();
             v.extend([i.w.offset, i.w.wx, i.w.wy].map(u64::from));
             v
         })
