@@ -46,6 +46,10 @@ pub struct Cube3Config {
     pub scanlines: usize,
     pub segments: usize,
     pub offset: u32,
+    /// Every sample sits on the grid (`View::on_grid`): the weights and the
+    /// offset are 0, so TRILIN's lerps pass their first voxel and synthesis
+    /// folds their arithmetic away.
+    pub on_grid: bool,
     pub weight_bits: u32,
     pub voxel_bits: u32,
     pub sample_frac: u32,
@@ -76,9 +80,6 @@ impl Cube3Config {
                 "the Cube-3 pipeline is built for MIP, MinIP and X-ray only so far, not {:?}",
                 shader.mode
             ));
-        }
-        if view.on_grid {
-            return Err("a view whose samples sit on the grid leaves TRILIN out, which the Cube-3 pipeline does not build yet".into());
         }
         if !matches!(p, 1 | 2 | 4 | 8) {
             return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)"));
@@ -119,6 +120,7 @@ impl Cube3Config {
             scanlines,
             segments: view.dims[2].div_ceil(p),
             offset: view.offset,
+            on_grid: view.on_grid,
             weight_bits: w,
             voxel_bits: widths.voxel_bits,
             sample_frac: widths.sample_frac(),

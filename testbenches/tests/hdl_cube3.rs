@@ -37,6 +37,7 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
     let shader = Shader::new(&s, &cam, view);
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
     let config = Cube3Config::new(view, &shader, p, v0, scanlines).unwrap();
+    assert_eq!(config.on_grid, name.contains("45 degrees"), "{name}");
     let (base, _) = render_view(&vol, view, &shader, Neighbourhood::N12, p);
     let (nk, g, r) = (view.dims[2], config.segments, config.rays);
     let (mut cur, mut next, mut want) = (vec![], vec![], vec![]);
@@ -91,6 +92,12 @@ fn cases(p: usize) -> Vec<Case> {
         case(
             "MinIP, ramp 10x12x11",
             &scene_json("ramp", [10, 12, 11], [-25.0, 10.0, 5.0], "minip"),
+            p,
+            2,
+        ),
+        case(
+            "MIP at exactly 45 degrees, phantom 12x12x10",
+            &scene_json("phantom", [12, 12, 10], [0.0, 45.0, 0.0], "mip"),
             p,
             2,
         ),
