@@ -5,10 +5,11 @@
 //! ([`Rpc`]), one segment of `P` samples per clock.
 //!
 //! **Streams.** The 2-DSBs of scanlines `v` and `v + 1` arrive as
-//! `trilin_lanes` describes, scanline after scanline from the clock after
-//! `start`: `S·R·G` clocks for `S` scanlines of `R` rays of `G` segments.
-//! The beam fetch that fills the buffers (CFB beams through the Fast Bus)
-//! is not part of this unit.
+//! `trilin_lanes` describes, scanline after scanline after `start`, one
+//! segment on each clock with `valid`: `S·R·G` segments for `S` scanlines of
+//! `R` rays of `G` segments, contiguous within a scanline (a pause between
+//! scanlines is allowed). [`crate::beam_fetch`] fills and reads the
+//! buffers.
 //!
 //! **Leaf stage.** Clock `t + trilin::LATENCY` for a cell taken at `t`: the
 //! control's inside bit, delayed beside the units, gates the sample. MIP and
@@ -150,8 +151,10 @@ impl Cube3Config {
 #[derive(LogicBlock)]
 pub struct Cube3<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// The streams start with the next clock.
+    /// Restart at the first segment of the first ray.
     pub start: Signal<In, Bit>,
+    /// A segment enters the streams this clock.
+    pub valid: Signal<In, Bit>,
     pub cur: [Signal<In, Bits<16>>; P],
     pub next: [Signal<In, Bits<16>>; P],
     /// A ray's base-plane pixel, in stream order.
@@ -185,7 +188,6 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         let control = RayControl::new(&Tables {
             segments: c.segments,
             rays: c.rays,
-            scanlines: c.scanlines,
             weights: &c.weights,
             bounds: &c.bounds,
         })?;
@@ -209,6 +211,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         Ok(Cube3 {
             clock: Default::default(),
             start: Default::default(),
+            valid: Default::default(),
             cur: std::array::from_fn(|_| Default::default()),
             next: std::array::from_fn(|_| Default::default()),
             done: Default::default(),
@@ -241,6 +244,7 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         self.lanes.clock.next = self.clock.val();
         self.rpc.clock.next = self.clock.val();
         self.control.start.next = self.start.val();
+        self.control.valid.next = self.valid.val();
         self.lanes.first.next = self.control.first.val();
         // The flags beside the units: inside bits 0-7, valid 8, first 9,
         // last 10.

@@ -3,9 +3,10 @@
 //! the template weights of each unit's sample, and whether the sample lies
 //! in the volume.
 //!
-//! **Counters.** From `start`, the stream counters step through `S`
-//! scanlines of `R` rays of `G` segments, one segment per clock; `first`
-//! marks a ray's first segment entering the 2-DSB streams. The units work
+//! **Counters.** From `start`, the stream counters step through scanlines
+//! of `R` rays of `G` segments, one step per `valid` segment (the streams
+//! may pause between scanlines); `first` marks a ray's first segment
+//! entering the 2-DSB streams. The units work
 //! on the ray that entered `trilin_lanes::cell_delay(G) = G + 1` clocks
 //! earlier, so their counters are the stream counters through a
 //! [`DelayLine`] of that length.
@@ -29,8 +30,11 @@ pub const SEGMENT_BITS: usize = 8;
 #[derive(LogicBlock)]
 pub struct RayControl<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// The streams start with the next clock.
+    /// Restart the counters at the first segment of the first ray.
     pub start: Signal<In, Bit>,
+    /// A segment enters the streams this clock (they may pause between
+    /// scanlines).
+    pub valid: Signal<In, Bit>,
     /// The entering segment starts a ray.
     pub first: Signal<Out, Bit>,
     /// At the units: their segment is valid / a ray's first / a ray's last.
@@ -43,8 +47,6 @@ pub struct RayControl<const P: usize, const H: usize> {
     pub in_volume: Signal<Out, Bits<8>>,
     last_segment: Constant<Bits<16>>,
     last_ray: Constant<Bits<16>>,
-    last_scanline: Constant<Bits<16>>,
-    running: DFF<Bit>,
     segment: DFF<Bits<16>>,
     ray: DFF<Bits<16>>,
     scanline: DFF<Bits<16>>,
@@ -67,7 +69,6 @@ pub struct RayControl<const P: usize, const H: usize> {
 pub struct Tables<'a> {
     pub segments: usize,
     pub rays: usize,
-    pub scanlines: usize,
     pub weights: &'a [[u32; 2]],
     pub bounds: &'a [[u32; 4]],
 }
@@ -90,6 +91,7 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
         Ok(RayControl {
             clock: Default::default(),
             start: Default::default(),
+            valid: Default::default(),
             first: Default::default(),
             unit_valid: Default::default(),
             unit_first: Default::default(),
@@ -99,8 +101,6 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             in_volume: Default::default(),
             last_segment: Constant::new(((t.segments - 1) as u64).to_bits()),
             last_ray: Constant::new(((t.rays - 1) as u64).to_bits()),
-            last_scanline: Constant::new(((t.scanlines - 1) as u64).to_bits()),
-            running: Default::default(),
             segment: Default::default(),
             ray: Default::default(),
             scanline: Default::default(),
@@ -132,11 +132,12 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
 impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, running, segment, ray, scanline);
+        dff_setup!(self, clock, segment, ray, scanline);
         self.late.clock.next = self.clock.val();
         self.late.write_enable.next = true;
-        // The stream counters: segment, ray, scanline.
-        if self.running.q.val() {
+        // The stream counters: segment, ray, scanline of the entering
+        // segment, stepped by each valid one.
+        if self.valid.val() {
             self.segment.d.next = self.segment.q.val() + 1;
             if self.segment.q.val() == self.last_segment.val() {
                 self.segment.d.next = 0.into();
@@ -144,23 +145,19 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
                 if self.ray.q.val() == self.last_ray.val() {
                     self.ray.d.next = 0.into();
                     self.scanline.d.next = self.scanline.q.val() + 1;
-                    if self.scanline.q.val() == self.last_scanline.val() {
-                        self.running.d.next = false;
-                    }
                 }
             }
         }
         if self.start.val() {
-            self.running.d.next = true;
             self.segment.d.next = 0.into();
             self.ray.d.next = 0.into();
             self.scanline.d.next = 0.into();
         }
-        self.first.next = self.running.q.val() & !self.segment.q.val().any();
+        self.first.next = self.valid.val() & !self.segment.q.val().any();
         self.late.data_in.next = bit_cast::<64, 16>(self.segment.q.val())
             | (bit_cast::<64, 16>(self.ray.q.val()) << 16)
             | (bit_cast::<64, 16>(self.scanline.q.val()) << 32);
-        if self.running.q.val() {
+        if self.valid.val() {
             self.late.data_in.next = bit_cast::<64, 16>(self.segment.q.val())
                 | (bit_cast::<64, 16>(self.ray.q.val()) << 16)
                 | (bit_cast::<64, 16>(self.scanline.q.val()) << 32)

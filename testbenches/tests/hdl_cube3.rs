@@ -173,14 +173,16 @@ impl Pixels<'_> {
     }
 }
 
-fn stream(c: &Case, t: usize) -> (bool, &[u32], &[u32]) {
+/// Clock `t`'s `start`, `valid` and streams: start at clock 0, the
+/// segments from clock 1.
+fn stream(c: &Case, t: usize) -> (bool, bool, &[u32], &[u32]) {
     let empty: &[u32] = &[0; 8][..c.config.p];
     match t
         .checked_sub(1)
         .and_then(|s| c.cur.get(s).zip(c.next.get(s)))
     {
-        Some((a, b)) => (false, a, b),
-        None => (t == 0, empty, empty),
+        Some((a, b)) => (false, true, a, b),
+        None => (t == 0, false, empty, empty),
     }
 }
 
@@ -200,8 +202,9 @@ fn rust_hdl_run<const P: usize>() {
                 errors: vec![],
             };
             for t in 0..n {
-                let (start, cur, next) = stream(&tb, t);
+                let (start, valid, cur, next) = stream(&tb, t);
                 x.start.next = start;
+                x.valid.next = valid;
                 for i in 0..P {
                     x.cur[i].next = (cur[i] as u64).to_bits();
                     x.next[i].next = (next[i] as u64).to_bits();
@@ -241,14 +244,15 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
     let ports = ports(verilog).unwrap();
     let vectors: Vec<Vec<u64>> = (0..clocks(c))
         .map(|t| {
-            let (start, cur, next) = stream(c, t);
+            let (start, valid, cur, next) = stream(c, t);
             ports
                 .iter()
                 .filter(|p| p.input)
                 .map(|p| match p.name.split_once('$') {
                     Some(("cur", i)) => cur[i.parse::<usize>().unwrap()] as u64,
                     Some((_, i)) => next[i.parse::<usize>().unwrap()] as u64,
-                    None => start as u64,
+                    None if p.name == "start" => start as u64,
+                    None => valid as u64,
                 })
                 .collect()
         })

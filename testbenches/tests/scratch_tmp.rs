@@ -2,7 +2,9 @@ use rust_hdl::prelude::*;
 #[test]
 fn dump() {
     for (deg, f) in [(45.0, "g45"), (40.0, "g40")] {
-        let s = testbenches::scene(&format!(r#"{{"volume": {{"builtin": "phantom", "dims": [12, 12, 10]}}, "view": {{"projection": "parallel", "rotate_deg": [0, {deg}, 0]}}, "mode": "mip", "image": [16, 16]}}"#));
+        let s = testbenches::scene(&format!(
+            r#"{{"volume": {{"builtin": "phantom", "dims": [12, 12, 10]}}, "view": {{"projection": "parallel", "rotate_deg": [0, {deg}, 0]}}, "mode": "mip", "image": [16, 16]}}"#
+        ));
         let cam = s.camera().unwrap();
         let plan = golden_model::cube3::plan::Plan::new(&s, &cam).unwrap();
         let view = &plan.views[0];
