@@ -14,6 +14,7 @@
 pub mod abc_estimator;
 pub mod abc_gradient;
 pub mod abc_unit;
+pub mod beam_fetch;
 pub mod bilinear;
 pub mod buffer_rows;
 pub mod buffer_tap;

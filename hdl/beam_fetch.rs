@@ -1,0 +1,558 @@
+//! Cube-3's beam fetch into the 2-D skewed buffers (§2, Fig. 2; §5, Fig.
+//! 12) for a parallel view: the CFB delivers the PRP of each scanline as
+//! beams, the Fast Bus aligns the discrete rays, and three 2-DSBs in turn
+//! take a PRP while the other two are read as the `cur` and `next` streams
+//! of [`crate::trilin_lanes`].
+//!
+//! **CFB.** `P` memory modules hold the volume in the view's traversal
+//! order `(x, y, k)`, skewed as Cube-4L's CFB: voxel `(x, y, k)` in module
+//! `(x + y + k) mod P` at address `x div P + y·b + k·b·n_y`, `b = ceil(n_x /
+//! P)`, so any `P` consecutive voxels of a beam lie in `P` different
+//! modules. (Cube-4L's CFB reads beams along the dataset's first axis in
+//! sweep order; the host loads this memory in the traversal order of the
+//! base plane instead, one beam per plane and chunk of `P` rays.)
+//!
+//! **Beams.** Scanline `v`'s PRP is beam `k` = the voxels `(X_k(u), Y_k(v),
+//! k)` for the stream's rays `u`, `X_k(u) = u + pos_x[k]`, `Y_k(v) = v +
+//! pos_y[k]` (the templates). One clock reads a chunk of `P` consecutive
+//! rays: module `m` reads the `x` of the chunk with `(x + y + k) mod P = m`;
+//! voxels outside the volume read 0. Planes `0 .. K_w` are written (`K_w =
+//! min(K + 1, G·P)`; plane `K`, behind the volume, is 0).
+//!
+//! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
+//! at address `r·G + k div P`, so a ray's `P` planes of a segment lie in `P`
+//! modules at one address. The voxel read by memory module `m` goes to
+//! 2-DSB module `(m - x_0 - y) mod P` (`x_0` the chunk's first `x`): one
+//! rotation of the `P` voxels per clock, by `(x_0 + y) mod P`. A voxel thus
+//! travels up to `P - 1` modules in a clock; between consecutive beams the
+//! rotation changes by `pos_x[k+1] - pos_x[k] + pos_y[k+1] - pos_y[k]`, at
+//! most 2 in a parallel view, which is all the Fast Bus of the paper shifts
+//! (the full rotation also serves every chunk without a shift register).
+//!
+//! **Reads.** Segment `s` of ray `r` reads address `r·G + s` of every module
+//! of the `cur` and `next` buffers; lane `i` takes module `(r + i) mod P`.
+//!
+//! **Schedule.** Scanline periods of `T` clocks: in period `j` the buffer
+//! `j mod 3` takes scanline `v_0 + j` (for `j <= S`) while, from period 2,
+//! scanlines `v_0 + j - 2` (`cur`) and `v_0 + j - 1` (`next`) are read, `R·G`
+//! segments on consecutive clocks, `valid` high. `T` is the longer of the
+//! writes (`K_w·ceil(R / P)` clocks and the read latency) and the reads
+//! (`R·G` and the read latency): [`BeamFetchConfig::period`].
+
+use crate::ram::DepthRam;
+use golden_model::cube3::plan::{Template, View};
+use rust_hdl::prelude::*;
+
+/// What the beam fetch is built from.
+#[derive(Debug, Clone)]
+pub struct BeamFetchConfig {
+    pub p: usize,
+    /// Traversal dims `[n_x, n_y, K]`.
+    pub dims: [usize; 3],
+    /// Stream rays `u0 .. u0 + rays` of scanlines `v0 .. v0 + scanlines`.
+    pub u0: i32,
+    pub v0: i32,
+    pub rays: usize,
+    pub scanlines: usize,
+    pub segments: usize,
+    /// `pos_x[k]`, `pos_y[k]` for `k` in `0 ..= K`.
+    pub pos_x: Vec<i32>,
+    pub pos_y: Vec<i32>,
+}
+
+impl BeamFetchConfig {
+    pub fn new(
+        view: &View,
+        p: usize,
+        u0: i32,
+        rays: usize,
+        v0: i32,
+        scanlines: usize,
+    ) -> Result<BeamFetchConfig, String> {
+        let (Template::Parallel { pos: px, .. }, Template::Parallel { pos: py, .. }) =
+            (&view.x, &view.y)
+        else {
+            return Err("the beam fetch is built for parallel views only so far".into());
+        };
+        Ok(BeamFetchConfig {
+            p,
+            dims: view.dims,
+            u0,
+            v0,
+            rays,
+            scanlines,
+            segments: view.dims[2].div_ceil(p),
+            pos_x: px.clone(),
+            pos_y: py.clone(),
+        })
+    }
+
+    /// Planes written per PRP.
+    pub fn planes_written(&self) -> usize {
+        (self.dims[2] + 1).min(self.segments * self.p)
+    }
+
+    /// Clocks of a scanline period.
+    pub fn period(&self) -> usize {
+        let writes = self.planes_written() * self.rays.div_ceil(self.p) + 1;
+        let reads = self.rays * self.segments + 1;
+        writes.max(reads)
+    }
+
+    /// Clocks from `start` to the last segment read: `S + 2` periods.
+    pub fn clocks(&self) -> usize {
+        (self.scanlines + 2) * self.period()
+    }
+
+    /// Words per memory module: `b·n_y·K`.
+    pub fn module_words(&self) -> usize {
+        let [nx, ny, nk] = self.dims;
+        nx.div_ceil(self.p) * ny * nk
+    }
+
+    /// The memory modules' contents for a volume in traversal order
+    /// (`voxel(x, y, k)`).
+    pub fn modules(&self, voxel: impl Fn(usize, usize, usize) -> u16) -> Vec<Vec<u16>> {
+        let [nx, ny, nk] = self.dims;
+        let b = nx.div_ceil(self.p);
+        let mut m = vec![vec![0u16; self.module_words()]; self.p];
+        for k in 0..nk {
+            for y in 0..ny {
+                for x in 0..nx {
+                    m[(x + y + k) % self.p][x / self.p + y * b + k * b * ny] = voxel(x, y, k);
+                }
+            }
+        }
+        m
+    }
+}
+
+/// The beam fetch for `P` lanes: `A`-bit memory and `B`-bit 2-DSB
+/// addresses.
+#[derive(LogicBlock)]
+pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
+    pub clock: Signal<In, Clock>,
+    pub start: Signal<In, Bit>,
+    /// A segment of `cur` and `next` is out this clock.
+    pub valid: Signal<Out, Bit>,
+    pub cur: [Signal<Out, Bits<16>>; P],
+    pub next: [Signal<Out, Bits<16>>; P],
+    memory: [DepthRam<Bits<16>, A>; P],
+    buffer0: [DepthRam<Bits<16>, B>; P],
+    buffer1: [DepthRam<Bits<16>, B>; P],
+    buffer2: [DepthRam<Bits<16>, B>; P],
+    pos_x: ROM<Bits<16>, 8>,
+    pos_y: ROM<Bits<16>, 8>,
+    schedule: Schedule,
+    /// The write side: this clock's beam and chunk, and per module the
+    /// voxel's x and whether it lies in the volume.
+    row: Signal<Local, Bits<16>>,
+    x0: Signal<Local, Bits<16>>,
+    base: Signal<Local, Bits<16>>,
+    xm: [Signal<Local, Bits<16>>; P],
+    inside: [Signal<Local, Bit>; P],
+    /// One clock later, with the memory's data.
+    inside_q: [DFF<Bit>; P],
+    rotate_q: DFF<Bits<16>>,
+    plane_q: DFF<Bits<16>>,
+    chunk_q: DFF<Bits<16>>,
+    write_q: DFF<Bit>,
+    buffer_q: DFF<Bits<2>>,
+    address: [Signal<Local, Bits<32>>; P],
+    ray: [Signal<Local, Bits<16>>; P],
+    value: [Signal<Local, Bits<16>>; P],
+    write_address: [Signal<Local, Bits<32>>; P],
+    read_address: Signal<Local, Bits<32>>,
+    /// The read side, one clock later: the rotation and the buffers.
+    read_q: DFF<Bit>,
+    lane_q: DFF<Bits<16>>,
+    cur_q: DFF<Bits<2>>,
+    next_q: DFF<Bits<2>>,
+    index: [Constant<Bits<16>>; P],
+    buffer_id: [Constant<Bits<2>>; 3],
+    one: Constant<Bits<16>>,
+    mask: Constant<Bits<16>>,
+    shift: Constant<Bits<16>>,
+    n_x: Constant<Bits<16>>,
+    n_y: Constant<Bits<16>>,
+    n_k: Constant<Bits<16>>,
+    row_words: Constant<Bits<16>>,
+    plane_words: Constant<Bits<16>>,
+    u0: Constant<Bits<16>>,
+    v0: Constant<Bits<16>>,
+    rays: Constant<Bits<16>>,
+    segments: Constant<Bits<16>>,
+}
+
+impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
+    pub fn new(c: &BeamFetchConfig) -> Result<BeamFetch<P, A, B>, String> {
+        let [nx, ny, nk] = c.dims;
+        let b = nx.div_ceil(P);
+        if c.p != P || !P.is_power_of_two() || P > 8 {
+            return Err(format!(
+                "hardware.pipelines {} unsupported (1, 2, 4 or 8)",
+                c.p
+            ));
+        }
+        if b * ny >= 1 << 16 || c.module_words() > 1 << A || c.rays * c.segments > 1 << B {
+            return Err(format!(
+                "a {nx}x{ny}x{nk} volume needs more memory than this build's {A}-bit modules and {B}-bit buffers"
+            ));
+        }
+        if nk + 1 > 256 {
+            return Err(format!("{nk} planes: the templates hold at most 255"));
+        }
+        let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
+        let rom = |v: &[i32]| -> ROM<Bits<16>, 8> {
+            v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
+        };
+        let ram = || DepthRam::with_words(c.module_words().max(2));
+        let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
+        Ok(BeamFetch {
+            clock: Default::default(),
+            start: Default::default(),
+            valid: Default::default(),
+            cur: std::array::from_fn(|_| Default::default()),
+            next: std::array::from_fn(|_| Default::default()),
+            memory: std::array::from_fn(|_| ram()),
+            buffer0: std::array::from_fn(|_| buffer()),
+            buffer1: std::array::from_fn(|_| buffer()),
+            buffer2: std::array::from_fn(|_| buffer()),
+            pos_x: rom(&c.pos_x),
+            pos_y: rom(&c.pos_y),
+            schedule: Schedule::new(c),
+            row: Default::default(),
+            x0: Default::default(),
+            base: Default::default(),
+            xm: std::array::from_fn(|_| Default::default()),
+            inside: std::array::from_fn(|_| Default::default()),
+            inside_q: std::array::from_fn(|_| Default::default()),
+            rotate_q: Default::default(),
+            plane_q: Default::default(),
+            chunk_q: Default::default(),
+            write_q: Default::default(),
+            buffer_q: Default::default(),
+            address: std::array::from_fn(|_| Default::default()),
+            ray: std::array::from_fn(|_| Default::default()),
+            value: std::array::from_fn(|_| Default::default()),
+            write_address: std::array::from_fn(|_| Default::default()),
+            read_address: Default::default(),
+            read_q: Default::default(),
+            lane_q: Default::default(),
+            cur_q: Default::default(),
+            next_q: Default::default(),
+            index: std::array::from_fn(|m| k(m as i64)),
+            buffer_id: std::array::from_fn(|b| Constant::new((b as u64).to_bits())),
+            one: k(1),
+            mask: k(P as i64 - 1),
+            shift: k(P.trailing_zeros() as i64),
+            n_x: k(nx as i64),
+            n_y: k(ny as i64),
+            n_k: k(nk as i64),
+            row_words: k(b as i64),
+            plane_words: k((b * ny) as i64),
+            u0: k(c.u0 as i64),
+            v0: k(c.v0 as i64),
+            rays: k(c.rays as i64),
+            segments: k(c.segments as i64),
+        })
+    }
+
+    /// Load the memory modules (`BeamFetchConfig::modules`).
+    pub fn preload(&mut self, modules: &[Vec<u16>]) {
+        for (m, words) in self.memory.iter_mut().zip(modules) {
+            m.preload(words.iter().map(|&w| (w as u64).to_bits()));
+        }
+    }
+}
+
+impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, rotate_q, plane_q, chunk_q, write_q, buffer_q, read_q, lane_q, cur_q,
+            next_q
+        );
+        self.schedule.clock.next = self.clock.val();
+        self.schedule.start.next = self.start.val();
+        // The beam's chunk: its row y, first x and skew.
+        self.pos_x.address.next = self.schedule.plane.val().get_bits::<8>(0);
+        self.pos_y.address.next = self.schedule.plane.val().get_bits::<8>(0);
+        self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
+        self.x0.next =
+            self.u0.val() + self.pos_x.data.val() + (self.schedule.chunk.val() << self.shift.val());
+        self.base.next =
+            (self.x0.val() + self.row.val() + self.schedule.plane.val()) & self.mask.val();
+        for m in 0..P {
+            self.memory[m].read_clock.next = self.clock.val();
+            self.memory[m].write_clock.next = self.clock.val();
+            self.memory[m].write_enable.next = false;
+            self.memory[m].write_address.next = 0.into();
+            self.memory[m].write_data.next = 0.into();
+            self.xm[m].next =
+                self.x0.val() + ((self.index[m].val() - self.base.val()) & self.mask.val());
+            self.inside[m].next = !self.xm[m].val().get_bit(15)
+                & (self.xm[m].val() < self.n_x.val())
+                & !self.row.val().get_bit(15)
+                & (self.row.val() < self.n_y.val())
+                & (self.schedule.plane.val() < self.n_k.val());
+            // (`* one` widens the column to 32 bits inside the loop.)
+            self.address[m].next = (self.xm[m].val() >> self.shift.val()) * self.one.val()
+                + self.row.val() * self.row_words.val()
+                + self.schedule.plane.val() * self.plane_words.val();
+            // Outside the volume the module reads word 0, and the voxel is 0.
+            self.memory[m].read_address.next = 0.into();
+            if self.inside[m].val() {
+                self.memory[m].read_address.next = self.address[m].val().get_bits::<A>(0);
+            }
+            self.inside_q[m].clock.next = self.clock.val();
+            self.inside_q[m].d.next = self.inside[m].val();
+        }
+        self.rotate_q.d.next = (self.x0.val() + self.row.val()) & self.mask.val();
+        self.plane_q.d.next = self.schedule.plane.val();
+        self.chunk_q.d.next = self.schedule.chunk.val();
+        self.write_q.d.next = self.schedule.writing.val();
+        self.buffer_q.d.next = self.schedule.write_buffer.val();
+        // The Fast Bus: 2-DSB module d takes memory module (d + x0 + y) mod
+        // P; ray r of plane k at address r*G + k div P.
+        for d in 0..P {
+            self.value[d].next = 0.into();
+            for m in 0..P {
+                if (((self.index[d].val() + self.rotate_q.q.val()) & self.mask.val())
+                    == self.index[m].val())
+                    & self.inside_q[m].q.val()
+                {
+                    self.value[d].next = self.memory[m].read_data.val();
+                }
+            }
+            self.ray[d].next = (self.chunk_q.q.val() << self.shift.val())
+                + ((self.index[d].val() - self.plane_q.q.val()) & self.mask.val());
+            self.write_address[d].next = self.ray[d].val() * self.segments.val()
+                + bit_cast::<32, 16>(self.plane_q.q.val() >> self.shift.val());
+            self.buffer0[d].write_clock.next = self.clock.val();
+            self.buffer1[d].write_clock.next = self.clock.val();
+            self.buffer2[d].write_clock.next = self.clock.val();
+            self.buffer0[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer1[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer2[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer0[d].write_data.next = self.value[d].val();
+            self.buffer1[d].write_data.next = self.value[d].val();
+            self.buffer2[d].write_data.next = self.value[d].val();
+            self.buffer0[d].write_enable.next = self.write_q.q.val()
+                & (self.ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[0].val());
+            self.buffer1[d].write_enable.next = self.write_q.q.val()
+                & (self.ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[1].val());
+            self.buffer2[d].write_enable.next = self.write_q.q.val()
+                & (self.ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[2].val());
+        }
+        // Reads: segment s of ray r at r*G + s in every module; lane i takes
+        // module (r + i) mod P a clock later.
+        self.read_address.next = 0.into();
+        if self.schedule.reading.val() {
+            self.read_address.next = self.schedule.ray.val() * self.segments.val()
+                + bit_cast::<32, 16>(self.schedule.segment.val());
+        }
+        self.read_q.d.next = self.schedule.reading.val();
+        self.lane_q.d.next = self.schedule.ray.val() & self.mask.val();
+        self.cur_q.d.next = self.schedule.cur_buffer.val();
+        self.next_q.d.next = self.schedule.next_buffer.val();
+        for m in 0..P {
+            self.buffer0[m].read_clock.next = self.clock.val();
+            self.buffer1[m].read_clock.next = self.clock.val();
+            self.buffer2[m].read_clock.next = self.clock.val();
+            self.buffer0[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+            self.buffer1[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+            self.buffer2[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+        }
+        for i in 0..P {
+            self.cur[i].next = 0.into();
+            self.next[i].next = 0.into();
+            for m in 0..P {
+                if ((self.index[i].val() + self.lane_q.q.val()) & self.mask.val())
+                    == self.index[m].val()
+                {
+                    if self.cur_q.q.val() == self.buffer_id[0].val() {
+                        self.cur[i].next = self.buffer0[m].read_data.val();
+                    }
+                    if self.cur_q.q.val() == self.buffer_id[1].val() {
+                        self.cur[i].next = self.buffer1[m].read_data.val();
+                    }
+                    if self.cur_q.q.val() == self.buffer_id[2].val() {
+                        self.cur[i].next = self.buffer2[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[0].val() {
+                        self.next[i].next = self.buffer0[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[1].val() {
+                        self.next[i].next = self.buffer1[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[2].val() {
+                        self.next[i].next = self.buffer2[m].read_data.val();
+                    }
+                }
+            }
+        }
+        self.valid.next = self.read_q.q.val();
+    }
+}
+
+/// The scanline periods: which plane and chunk are written, which ray and
+/// segment are read, and the buffers' roles.
+#[derive(LogicBlock)]
+struct Schedule {
+    pub clock: Signal<In, Clock>,
+    pub start: Signal<In, Bit>,
+    pub writing: Signal<Out, Bit>,
+    pub plane: Signal<Out, Bits<16>>,
+    pub chunk: Signal<Out, Bits<16>>,
+    pub period: Signal<Out, Bits<16>>,
+    pub write_buffer: Signal<Out, Bits<2>>,
+    pub reading: Signal<Out, Bit>,
+    pub ray: Signal<Out, Bits<16>>,
+    pub segment: Signal<Out, Bits<16>>,
+    pub cur_buffer: Signal<Out, Bits<2>>,
+    pub next_buffer: Signal<Out, Bits<2>>,
+    last_tick: Constant<Bits<16>>,
+    last_period: Constant<Bits<16>>,
+    last_write_period: Constant<Bits<16>>,
+    last_plane: Constant<Bits<16>>,
+    last_chunk: Constant<Bits<16>>,
+    last_ray: Constant<Bits<16>>,
+    last_segment: Constant<Bits<16>>,
+    first_read_period: Constant<Bits<16>>,
+    active: DFF<Bit>,
+    tick: DFF<Bits<16>>,
+    period_q: DFF<Bits<16>>,
+    plane_q: DFF<Bits<16>>,
+    chunk_q: DFF<Bits<16>>,
+    ray_q: DFF<Bits<16>>,
+    segment_q: DFF<Bits<16>>,
+    written: DFF<Bit>,
+    read: DFF<Bit>,
+    w_q: DFF<Bits<2>>,
+    c_q: DFF<Bits<2>>,
+    n_q: DFF<Bits<2>>,
+}
+
+impl Schedule {
+    fn new(c: &BeamFetchConfig) -> Schedule {
+        let k = |v: usize| Constant::new((v as u64).to_bits());
+        Schedule {
+            clock: Default::default(),
+            start: Default::default(),
+            writing: Default::default(),
+            plane: Default::default(),
+            chunk: Default::default(),
+            period: Default::default(),
+            write_buffer: Default::default(),
+            reading: Default::default(),
+            ray: Default::default(),
+            segment: Default::default(),
+            cur_buffer: Default::default(),
+            next_buffer: Default::default(),
+            last_tick: k(c.period() - 1),
+            last_period: k(c.scanlines + 1),
+            last_write_period: k(c.scanlines),
+            last_plane: k(c.planes_written() - 1),
+            last_chunk: k(c.rays.div_ceil(c.p) - 1),
+            last_ray: k(c.rays - 1),
+            last_segment: k(c.segments - 1),
+            first_read_period: k(2),
+            active: Default::default(),
+            tick: Default::default(),
+            period_q: Default::default(),
+            plane_q: Default::default(),
+            chunk_q: Default::default(),
+            ray_q: Default::default(),
+            segment_q: Default::default(),
+            written: Default::default(),
+            read: Default::default(),
+            w_q: Default::default(),
+            c_q: Default::default(),
+            n_q: Default::default(),
+        }
+    }
+}
+
+impl Logic for Schedule {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, active, tick, period_q, plane_q, chunk_q, ray_q, segment_q, written, read,
+            w_q, c_q, n_q
+        );
+        self.writing.next = self.active.q.val()
+            & !self.written.q.val()
+            & (self.period_q.q.val() <= self.last_write_period.val());
+        self.reading.next = self.active.q.val()
+            & !self.read.q.val()
+            & (self.period_q.q.val() >= self.first_read_period.val());
+        // Writes: chunk by chunk, plane by plane.
+        if self.writing.val() {
+            self.chunk_q.d.next = self.chunk_q.q.val() + 1;
+            if self.chunk_q.q.val() == self.last_chunk.val() {
+                self.chunk_q.d.next = 0.into();
+                self.plane_q.d.next = self.plane_q.q.val() + 1;
+                if self.plane_q.q.val() == self.last_plane.val() {
+                    self.written.d.next = true;
+                }
+            }
+        }
+        // Reads: segment by segment, ray by ray.
+        if self.reading.val() {
+            self.segment_q.d.next = self.segment_q.q.val() + 1;
+            if self.segment_q.q.val() == self.last_segment.val() {
+                self.segment_q.d.next = 0.into();
+                self.ray_q.d.next = self.ray_q.q.val() + 1;
+                if self.ray_q.q.val() == self.last_ray.val() {
+                    self.read.d.next = true;
+                }
+            }
+        }
+        // The period's end: the buffers rotate, the counters restart.
+        if self.active.q.val() {
+            self.tick.d.next = self.tick.q.val() + 1;
+            if self.tick.q.val() == self.last_tick.val() {
+                self.tick.d.next = 0.into();
+                self.period_q.d.next = self.period_q.q.val() + 1;
+                if self.period_q.q.val() == self.last_period.val() {
+                    self.active.d.next = false;
+                }
+                self.chunk_q.d.next = 0.into();
+                self.plane_q.d.next = 0.into();
+                self.segment_q.d.next = 0.into();
+                self.ray_q.d.next = 0.into();
+                self.written.d.next = false;
+                self.read.d.next = false;
+                self.c_q.d.next = self.n_q.q.val();
+                self.n_q.d.next = self.w_q.q.val();
+                self.w_q.d.next = self.c_q.q.val();
+            }
+        }
+        if self.start.val() {
+            self.active.d.next = true;
+            self.tick.d.next = 0.into();
+            self.period_q.d.next = 0.into();
+            self.chunk_q.d.next = 0.into();
+            self.plane_q.d.next = 0.into();
+            self.segment_q.d.next = 0.into();
+            self.ray_q.d.next = 0.into();
+            self.written.d.next = false;
+            self.read.d.next = false;
+            self.w_q.d.next = 0.into();
+            self.n_q.d.next = 2.into();
+            self.c_q.d.next = 1.into();
+        }
+        self.plane.next = self.plane_q.q.val();
+        self.chunk.next = self.chunk_q.q.val();
+        self.period.next = self.period_q.q.val();
+        self.write_buffer.next = self.w_q.q.val();
+        self.ray.next = self.ray_q.q.val();
+        self.segment.next = self.segment_q.q.val();
+        self.cur_buffer.next = self.c_q.q.val();
+        self.next_buffer.next = self.n_q.q.val();
+    }
+}

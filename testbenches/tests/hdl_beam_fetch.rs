@@ -1,0 +1,211 @@
+//! `hdl::beam_fetch::BeamFetch` against `golden_model::cube3::prp::fetch`:
+//! the volume in the skewed memory modules, the PRPs of consecutive
+//! scanlines fetched as beams through the Fast Bus into three rotating
+//! 2-DSBs, and the `cur` and `next` streams read from them must be the
+//! golden model's PRPs of scanlines `v` and `v + 1`, segment by segment, for
+//! p = 1, 2, 4 and 8 on oblique parallel views of non-cubic volumes, in
+//! rust-hdl simulation and under Icarus.
+
+use cosim::stage::{ports, run_stage, StageEngine};
+use golden_model::cube3::plan::Plan;
+use golden_model::cube3::prp;
+use hdl::beam_fetch::{BeamFetch, BeamFetchConfig};
+use rust_hdl::prelude::*;
+use scene::volume::Volume;
+use testbenches::{require_tool, run_sim, scene};
+
+const A: usize = 12;
+const B: usize = 10;
+
+pub struct Case {
+    name: String,
+    config: BeamFetchConfig,
+    modules: Vec<Vec<u16>>,
+    /// Per segment of the stream: `cur` and `next`, `None` for planes beyond
+    /// `K` (never read by a sample).
+    want: Vec<[Vec<Option<u32>>; 2]>,
+}
+
+fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
+    let s = scene(json);
+    let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
+    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let view = &plan.views[0];
+    let (u0, rays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
+    let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
+    let config = BeamFetchConfig::new(view, p, u0, rays, v0, scanlines).unwrap();
+    let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
+    let modules = config.modules(|x, y, k| {
+        let d = view.voxel(x as i32, y as i32, k).unwrap();
+        vol.data[index(d)] as u16
+    });
+    let nk = view.dims[2];
+    let mut want = Vec::new();
+    for vi in 0..scanlines {
+        let v = v0 + vi as i32;
+        let pc = prp::fetch(&vol, view, v, u0, rays);
+        let pn = prp::fetch(&vol, view, v + 1, u0, rays);
+        for r in 0..rays {
+            let u = u0 + r as i32;
+            for seg in 0..config.segments {
+                let lane = |b: &prp::Prp| {
+                    (0..p)
+                        .map(|i| seg * p + i)
+                        .map(|k| (k <= nk).then(|| b.at(u, k)))
+                        .collect()
+                };
+                want.push([lane(&pc), lane(&pn)]);
+            }
+        }
+    }
+    Case {
+        name: format!("{name}, p={p}"),
+        config,
+        modules,
+        want,
+    }
+}
+
+fn cases(p: usize) -> Vec<Case> {
+    let json = |vol: &str, dims: &str, rot: &str| {
+        format!(
+            r#"{{"volume": {{"builtin": "{vol}", "dims": {dims}}}, "view": {{"projection": "parallel", "rotate_deg": {rot}}},
+                "mode": "mip", "image": [16, 16]}}"#
+        )
+    };
+    vec![
+        case(
+            "phantom 14x11x9",
+            &json("phantom", "[14, 11, 9]", "[20, 35, 0]"),
+            p,
+            3,
+        ),
+        case(
+            "ramp 10x12x11, negative increments",
+            &json("ramp", "[10, 12, 11]", "[-25, -10, 5]"),
+            p,
+            2,
+        ),
+    ]
+}
+
+fn fetch<const P: usize>(c: &Case) -> BeamFetch<P, A, B> {
+    let mut uut = BeamFetch::<P, A, B>::new(&c.config).unwrap();
+    uut.preload(&c.modules);
+    uut.connect_all();
+    uut
+}
+
+/// Checks the segments in order as they come out.
+struct Segments<'a> {
+    case: &'a Case,
+    seen: usize,
+}
+
+impl Segments<'_> {
+    fn clock(&mut self, engine: &str, t: usize, valid: bool, got: [Vec<u32>; 2]) {
+        if !valid {
+            return;
+        }
+        let c = self.case;
+        let want = c.want.get(self.seen).unwrap_or_else(|| {
+            panic!(
+                "{}: {engine}: a segment beyond the stream at clock {t}",
+                c.name
+            )
+        });
+        for (b, name) in ["cur", "next"].iter().enumerate() {
+            for (i, w) in want[b].iter().enumerate() {
+                if let Some(w) = w {
+                    assert_eq!(
+                        got[b][i], *w,
+                        "{}: {engine}: first mismatch at clock {t}, segment {} of the stream, {name}[{i}]: rtl {} golden {w}",
+                        c.name, self.seen, got[b][i]
+                    );
+                }
+            }
+        }
+        self.seen += 1;
+    }
+
+    fn finish(&self) {
+        assert_eq!(
+            self.seen,
+            self.case.want.len(),
+            "{}: segments",
+            self.case.name
+        );
+    }
+}
+
+fn rust_hdl_run<const P: usize>() {
+    for c in cases(P) {
+        let uut = fetch::<P>(&c);
+        let clocks = c.config.clocks() + 4;
+        let case = std::sync::Arc::new(c);
+        let tb = case.clone();
+        let mut sim = Simulation::new();
+        sim.add_clock(5, |x: &mut Box<BeamFetch<P, A, B>>| {
+            x.clock.next = !x.clock.val()
+        });
+        sim.add_testbench(move |mut sim: Sim<BeamFetch<P, A, B>>| {
+            let mut x = sim.init()?;
+            let mut segments = Segments { case: &tb, seen: 0 };
+            for t in 0..clocks {
+                x.start.next = t == 0;
+                wait_clock_cycle!(sim, clock, x);
+                let got = [
+                    (0..P).map(|i| x.cur[i].val().to_u32()).collect(),
+                    (0..P).map(|i| x.next[i].val().to_u32()).collect(),
+                ];
+                segments.clock("rust-hdl", t, x.valid.val(), got);
+            }
+            segments.finish();
+            sim.done(x)
+        });
+        run_sim(
+            sim,
+            Box::new(uut),
+            10 * clocks as u64 + 100,
+            &format!("beam fetch {}", case.name),
+        );
+    }
+}
+
+#[test]
+fn beam_fetch_matches_golden_prps_in_rust_hdl() {
+    rust_hdl_run::<1>();
+    rust_hdl_run::<2>();
+    rust_hdl_run::<4>();
+    rust_hdl_run::<8>();
+}
+
+#[test]
+fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
+    require_tool("iverilog");
+    for c in cases(4) {
+        let verilog = generate_verilog(&fetch::<4>(&c));
+        let ports = ports(&verilog).unwrap();
+        let vectors: Vec<Vec<u64>> = (0..c.config.clocks() + 4)
+            .map(|t| vec![(t == 0) as u64])
+            .collect();
+        let outs = run_stage(StageEngine::Iverilog, &verilog, &vectors).unwrap();
+        let names: Vec<&str> = ports
+            .iter()
+            .filter(|p| !p.input)
+            .map(|p| p.name.as_str())
+            .collect();
+        let mut segments = Segments { case: &c, seen: 0 };
+        for (t, o) in outs.iter().enumerate() {
+            let get = |n: String| {
+                o[names.iter().position(|x| *x == n).unwrap()].map_or(u32::MAX, |v| v as u32)
+            };
+            let got = [
+                (0..4).map(|i| get(format!("cur${i}"))).collect(),
+                (0..4).map(|i| get(format!("next${i}"))).collect(),
+            ];
+            segments.clock("Icarus", t, get("valid".into()) == 1, got);
+        }
+        segments.finish();
+    }
+}
