@@ -22,6 +22,7 @@ pub mod cfb;
 pub mod compositor;
 pub mod control_delay;
 pub mod cube3;
+pub mod cube3_system;
 pub mod delay_line;
 pub mod divider;
 pub mod lane_feed;

@@ -2,6 +2,8 @@
 //! golden model and the reference, and drive the golden stages from the
 //! CFB's skewed voxel stream exactly as the hardware will receive it.
 
+pub mod cube3;
+
 use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
 use golden_model::cube4l::compositor::{composite, gather, reset_value};
 use golden_model::cube4l::gradient::central_difference;

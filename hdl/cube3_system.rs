@@ -1,0 +1,114 @@
+//! Cube-3 from the volume memory to the base plane (§5, Fig. 12): the
+//! [`BeamFetch`] (CFB, Fast Bus, 2-DSBs) feeding the [`Cube3`] pipeline
+//! (ray control, TRILIN, leaf stage, RPC), for a parallel view in MIP,
+//! MinIP or X-ray.
+//!
+//! After `start` the system fetches the PRPs of `S + 1` scanlines and puts
+//! out one `done` pixel per stream ray (`R` per scanline, in order), the
+//! last one [`Cube3SystemConfig::clocks`]` - 1` clocks later.
+
+use crate::beam_fetch::{BeamFetch, BeamFetchConfig};
+use crate::cube3::{Cube3, Cube3Config};
+use golden_model::cube3::plan::View;
+use golden_model::cube3::shade::Shader;
+use rust_hdl::prelude::*;
+
+/// Both halves' configurations, for the same stream.
+#[derive(Debug, Clone)]
+pub struct Cube3SystemConfig {
+    pub fetch: BeamFetchConfig,
+    pub pipeline: Cube3Config,
+}
+
+impl Cube3SystemConfig {
+    /// Scanlines `v0 .. v0 + scanlines` of `view`.
+    pub fn new(
+        view: &View,
+        shader: &Shader,
+        p: usize,
+        v0: i32,
+        scanlines: usize,
+    ) -> Result<Cube3SystemConfig, String> {
+        let pipeline = Cube3Config::new(view, shader, p, v0, scanlines)?;
+        let fetch = BeamFetchConfig::new(view, p, pipeline.u0, pipeline.rays, v0, scanlines)?;
+        Ok(Cube3SystemConfig { fetch, pipeline })
+    }
+
+    /// The clock the first segment enters the pipeline: the fetch reads
+    /// from its third period on (two PRPs in the buffers), a clock after
+    /// `start` registers and a clock after the read.
+    pub fn first_entry(&self) -> usize {
+        2 * self.fetch.period() + 2
+    }
+
+    /// Clocks from `start` (clock 0) to just after the last pixel: the
+    /// last scanline's last segment enters `R·G - 1` clocks after its
+    /// first, and leaves as a pixel `pixel_delay` clocks later.
+    pub fn clocks(&self) -> usize {
+        let c = &self.fetch;
+        let last_entry =
+            self.first_entry() + (c.scanlines - 1) * c.period() + c.rays * c.segments - 1;
+        last_entry + self.pipeline.pixel_delay() + 1
+    }
+}
+
+/// Cube-3 with `P` units: `A`-bit memory, `B`-bit 2-DSB and `H`-bit
+/// delay-line addresses.
+#[derive(LogicBlock)]
+pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: usize> {
+    pub clock: Signal<In, Clock>,
+    pub start: Signal<In, Bit>,
+    pub done: Signal<Out, Bit>,
+    pub pixel_r: Signal<Out, Bits<32>>,
+    pub pixel_g: Signal<Out, Bits<16>>,
+    pub pixel_b: Signal<Out, Bits<16>>,
+    pub pixel_a: Signal<Out, Bits<16>>,
+    pub has_sample: Signal<Out, Bit>,
+    fetch: BeamFetch<P, A, B>,
+    pipeline: Cube3<P, H>,
+}
+
+impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System<P, A, B, H> {
+    pub fn new(c: &Cube3SystemConfig) -> Result<Cube3System<P, A, B, H>, String> {
+        Ok(Cube3System {
+            clock: Default::default(),
+            start: Default::default(),
+            done: Default::default(),
+            pixel_r: Default::default(),
+            pixel_g: Default::default(),
+            pixel_b: Default::default(),
+            pixel_a: Default::default(),
+            has_sample: Default::default(),
+            fetch: BeamFetch::new(&c.fetch)?,
+            pipeline: Cube3::new(&c.pipeline)?,
+        })
+    }
+
+    /// Load the volume (`BeamFetchConfig::modules`).
+    pub fn preload(&mut self, modules: &[Vec<u16>]) {
+        self.fetch.preload(modules);
+    }
+}
+
+impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
+    for Cube3System<P, A, B, H>
+{
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.fetch.clock.next = self.clock.val();
+        self.pipeline.clock.next = self.clock.val();
+        self.fetch.start.next = self.start.val();
+        self.pipeline.start.next = self.start.val();
+        self.pipeline.valid.next = self.fetch.valid.val();
+        for i in 0..P {
+            self.pipeline.cur[i].next = self.fetch.cur[i].val();
+            self.pipeline.next[i].next = self.fetch.next[i].val();
+        }
+        self.done.next = self.pipeline.done.val();
+        self.pixel_r.next = self.pipeline.pixel_r.val();
+        self.pixel_g.next = self.pipeline.pixel_g.val();
+        self.pixel_b.next = self.pipeline.pixel_b.val();
+        self.pixel_a.next = self.pipeline.pixel_a.val();
+        self.has_sample.next = self.pipeline.has_sample.val();
+    }
+}
