@@ -21,10 +21,20 @@ enum Engine {
     Verilator,
 }
 
+/// The architecture simulated.
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum SimArch {
+    Cube4l,
+    /// Cube-3: parallel views in MIP, MinIP and X-ray so far.
+    Cube3,
+}
+
 #[derive(clap::Args)]
 pub struct SimArgs {
     #[arg(long)]
     scene: PathBuf,
+    #[arg(long, value_enum, default_value = "cube4l")]
+    arch: SimArch,
     #[arg(long, value_enum, default_value = "rust-hdl")]
     engine: Engine,
     /// Write the simulation's VCD (and a GTKWave .gtkw beside it).
@@ -40,6 +50,7 @@ pub struct SimArgs {
 pub fn run(args: SimArgs) -> Result<()> {
     let SimArgs {
         scene: scene_path,
+        arch,
         engine,
         vcd,
         out,
@@ -55,6 +66,9 @@ pub fn run(args: SimArgs) -> Result<()> {
     let cam = scene.camera()?;
     for path in [&out, &json_path].into_iter().flatten() {
         output::check_target(path)?;
+    }
+    if arch == SimArch::Cube3 {
+        return run_cube3(&scene_path, engine, vcd, out, json_path);
     }
     let vcd_tmp = match &vcd {
         Some(v) => {
@@ -140,6 +154,105 @@ pub fn run(args: SimArgs) -> Result<()> {
                 "cycles_per_second": cps,
                 "pipelines": scene.hardware.pipelines,
                 "units_left_out": r.left_out,
+            }),
+        )?;
+    }
+    if r.mismatches > 0 {
+        bail!(
+            "{} base-plane pixels differ from the golden model",
+            r.mismatches
+        );
+    }
+    Ok(())
+}
+
+/// `cube sim --arch cube3`: the Cube-3 system against the Cube-3 golden
+/// model, with the frame's clocks explained.
+fn run_cube3(
+    scene_path: &std::path::Path,
+    engine: cosim::sim::Engine,
+    vcd: Option<PathBuf>,
+    out: Option<PathBuf>,
+    json_path: Option<PathBuf>,
+) -> Result<()> {
+    let name = engine.name();
+    let (scene, vol) = load(scene_path)?;
+    let cam = scene.camera()?;
+    for path in [&out, &json_path].into_iter().flatten() {
+        output::check_target(path)?;
+    }
+    let vcd_tmp = match &vcd {
+        Some(v) => {
+            if let output::Target::Special = output::check_target(v)? {
+                bail!(
+                    "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
+                    v.display()
+                );
+            }
+            Some(v.with_extension("vcd.tmp"))
+        }
+        None => None,
+    };
+    let simulated = cosim::cube3_sim::simulate(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
+        .map_err(|e| anyhow::anyhow!("sim: {e}"))
+        .and_then(|r| {
+            if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
+                let gtkw_tmp = tmp.with_extension("gtkw");
+                let text = std::fs::read_to_string(&gtkw_tmp)?
+                    .replace(&tmp.display().to_string(), &v.display().to_string());
+                output::write_text(&v.with_extension("gtkw"), &text)?;
+                std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
+            }
+            Ok(r)
+        });
+    if let Some(tmp) = &vcd_tmp {
+        let _ = std::fs::remove_file(tmp);
+        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
+    }
+    let r = simulated?;
+    let c = r.clocks;
+    let cps = c.total as f64 / r.sim_seconds.max(1e-9);
+    println!(
+        "{name} (cube3): {} clocks, ideal n_x*n_y*n_z/p = {} ({:.2}x), {:.2} s ({:.0} clocks/s); {} base-plane pixels differ from the golden model",
+        c.total,
+        c.ideal,
+        c.total as f64 / c.ideal as f64,
+        r.seconds,
+        cps,
+        r.mismatches
+    );
+    println!(
+        "clocks: {} segments (R*S*G) + {} waiting for PRP writes + {} prologue - {} last wait + {} drain",
+        c.segments, c.idle, c.prologue, c.tail, c.drain
+    );
+    for m in &r.first {
+        println!("  {m}");
+    }
+    if let Some(o) = out {
+        let img = golden_model::cube3::warp(&r.frame, &cam, scene.mode);
+        write_png(&o, &img)?;
+    }
+    if let Some(j) = json_path {
+        write_json(
+            &j,
+            &json!({
+                "engine": name,
+                "arch": "cube3",
+                "scene": scene_path.display().to_string(),
+                "cycles": c.total,
+                "ideal_cycles": c.ideal,
+                "clocks": {
+                    "segments": c.segments,
+                    "idle": c.idle,
+                    "prologue": c.prologue,
+                    "tail": c.tail,
+                    "drain": c.drain,
+                },
+                "mismatches": r.mismatches,
+                "seconds": r.seconds,
+                "sim_seconds": r.sim_seconds,
+                "cycles_per_second": cps,
+                "pipelines": scene.hardware.pipelines,
             }),
         )?;
     }

@@ -8,24 +8,7 @@ use std::path::Path;
 /// taps, and pixel output. `top` is the design's scope in the VCD (`uut` for
 /// rust-hdl, `TOP.top` for Verilator).
 pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
-    let mut s = format!(
-        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
-        vcd.display()
-    );
-    let group = |s: &mut String, name: &str, sigs: Vec<String>| {
-        s.push_str(&format!("@800200\n-{name}\n@22\n"));
-        for sig in sigs {
-            s.push_str(&sig);
-            s.push('\n');
-        }
-        s.push_str(&format!("@1000200\n-{name}\n"));
-    };
-    let under = |prefix: &str, names: &[&str]| {
-        names
-            .iter()
-            .map(|n| format!("{prefix}.{n}"))
-            .collect::<Vec<_>>()
-    };
+    let mut s = header(vcd);
     s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
     group(
         &mut s,
@@ -93,6 +76,106 @@ pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
             ),
         );
     }
+    save(vcd, s)
+}
+
+/// The Cube-3 system's save file: the beam fetch's schedule and 2-DSB
+/// streams, the ray control, each TRILIN unit and its leaf, and the RPC's
+/// pixel out. `top` is the design's scope (`uut` for rust-hdl).
+pub fn write_gtkw_cube3(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
+    let mut s = header(vcd);
+    s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
+    let sch = format!("{top}.fetch.schedule");
+    group(
+        &mut s,
+        "Beam fetch",
+        under(
+            &sch,
+            &[
+                "writing",
+                "period[15:0]",
+                "plane[15:0]",
+                "chunk[15:0]",
+                "reading",
+                "ray[15:0]",
+                "segment[15:0]",
+            ],
+        ),
+    );
+    let mut streams = vec![format!("{top}.fetch.valid")];
+    for i in 0..p {
+        streams.push(format!("{top}.fetch.cur${i}[15:0]"));
+        streams.push(format!("{top}.fetch.next${i}[15:0]"));
+    }
+    group(&mut s, "2-DSB streams", streams);
+    let pipe = format!("{top}.pipeline");
+    group(
+        &mut s,
+        "Ray control",
+        under(
+            &format!("{pipe}.control"),
+            &[
+                "first",
+                "unit_valid",
+                "unit_first",
+                "unit_last",
+                "in_volume[7:0]",
+            ],
+        ),
+    );
+    for i in 0..p {
+        group(
+            &mut s,
+            &format!("TRILIN {i}"),
+            vec![
+                format!("{pipe}.lanes.wx${i}[15:0]"),
+                format!("{pipe}.lanes.wy${i}[15:0]"),
+                format!("{pipe}.lanes.sample${i}[31:0]"),
+                format!("{pipe}.leaf_q${i}.q[31:0]"),
+                format!("{pipe}.leaf_valid_q${i}.q"),
+            ],
+        );
+    }
+    group(
+        &mut s,
+        "RPC",
+        under(
+            &format!("{pipe}.rpc"),
+            &[
+                "first",
+                "last",
+                "done",
+                "pixel_r[31:0]",
+                "pixel_a[15:0]",
+                "has_sample",
+            ],
+        ),
+    );
+    save(vcd, s)
+}
+
+fn header(vcd: &Path) -> String {
+    format!(
+        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
+        vcd.display()
+    )
+}
+
+fn group(s: &mut String, name: &str, sigs: Vec<String>) {
+    s.push_str(&format!("@800200\n-{name}\n@22\n"));
+    for sig in sigs {
+        s.push_str(&sig);
+        s.push('\n');
+    }
+    s.push_str(&format!("@1000200\n-{name}\n"));
+}
+
+fn under(prefix: &str, names: &[&str]) -> Vec<String> {
+    names.iter().map(|n| format!("{prefix}.{n}")).collect()
+}
+
+/// Write the save file beside `vcd`, whole or not at all.
+fn save(vcd: &Path, s: String) -> std::io::Result<()> {
     let gtkw = vcd.with_extension("gtkw");
     let tmp = gtkw.with_extension("gtkw.tmp");
     std::fs::write(&tmp, s)?;

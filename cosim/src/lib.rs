@@ -13,6 +13,7 @@
 //! - [`tool`]: running an external tool, with a message naming the set-up
 //!   command when it is missing.
 
+pub mod cube3_sim;
 pub mod export;
 pub mod gtkw;
 pub mod iverilog;

@@ -77,17 +77,52 @@ pub fn run_stage(
     verilog: &str,
     vectors: &[Vec<u64>],
 ) -> Result<Vec<Vec<Option<u64>>>, String> {
+    let outs = run_stage_logged(engine, verilog, vectors, vectors.len(), None, None)?;
+    Ok(outs.into_iter().map(|(_, o)| o).collect())
+}
+
+/// Run the stage for `clocks` clocks, holding the last vector's inputs
+/// after `vectors` ends. With `when`, only the clocks where that one-bit
+/// output is 1 are logged. Returns `(clock, outputs)` per logged clock.
+/// `vcd` names a VCD of the whole design to write (scope `tb.uut` under
+/// Icarus, `TOP.top` under Verilator).
+pub fn run_stage_logged(
+    engine: StageEngine,
+    verilog: &str,
+    vectors: &[Vec<u64>],
+    clocks: usize,
+    when: Option<&str>,
+    vcd: Option<&Path>,
+) -> Result<Vec<(usize, Vec<Option<u64>>)>, String> {
     let ports = ports(verilog)?;
+    let outputs: Vec<&Port> = ports.iter().filter(|p| !p.input).collect();
+    let when = match when {
+        Some(w) => Some(
+            outputs
+                .iter()
+                .position(|p| p.name == w)
+                .ok_or_else(|| format!("the stage has no output {w}"))?,
+        ),
+        None => None,
+    };
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let dir = std::env::temp_dir().join(format!("cube-stage-{}-{run}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let result = (|| {
         std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
-        std::fs::write(dir.join("tb.v"), testbench(&ports, vectors.len()))
-            .map_err(|e| e.to_string())?;
-        std::fs::write(dir.join("harness.cpp"), harness(&ports, vectors.len()))
-            .map_err(|e| e.to_string())?;
+        let tb = Testbench {
+            ports: &ports,
+            vectors: vectors.len(),
+            clocks,
+            when,
+            trace: vcd.is_some(),
+        };
+        match engine {
+            StageEngine::Iverilog => std::fs::write(dir.join("tb.v"), tb.verilog()),
+            StageEngine::Verilator => std::fs::write(dir.join("harness.cpp"), tb.cpp()),
+        }
+        .map_err(|e| e.to_string())?;
         let lines: Vec<String> = vectors
             .iter()
             .map(|v| {
@@ -98,22 +133,23 @@ pub fn run_stage(
             })
             .collect();
         std::fs::write(dir.join("in.hex"), lines.join("\n") + "\n").map_err(|e| e.to_string())?;
-        simulate(engine, &dir)?;
+        simulate(engine, &dir, vcd.is_some())?;
+        if let Some(path) = vcd {
+            std::fs::copy(dir.join("trace.vcd"), path)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
         let log = std::fs::read_to_string(dir.join("out.hex")).map_err(|e| e.to_string())?;
-        let outs = log
-            .lines()
-            .map(|l| {
-                l.split_whitespace()
-                    .map(|h| u64::from_str_radix(h, 16).ok())
-                    .collect()
-            })
-            .collect::<Vec<Vec<Option<u64>>>>();
-        if outs.len() != vectors.len() {
-            return Err(format!(
-                "the stage wrote {} clocks of {}",
-                outs.len(),
-                vectors.len()
-            ));
+        let mut outs = Vec::new();
+        for l in log.lines() {
+            let mut words = l.split_whitespace();
+            let t = words
+                .next()
+                .and_then(|w| usize::from_str_radix(w, 16).ok())
+                .ok_or("a log line without its clock")?;
+            outs.push((t, words.map(|h| u64::from_str_radix(h, 16).ok()).collect()));
+        }
+        if when.is_none() && outs.len() != clocks {
+            return Err(format!("the stage wrote {} clocks of {clocks}", outs.len()));
         }
         Ok(outs)
     })();
@@ -121,7 +157,7 @@ pub fn run_stage(
     result
 }
 
-fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
+fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(), String> {
     match engine {
         StageEngine::Iverilog => {
             crate::tool::run(
@@ -144,6 +180,11 @@ fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
                         "--build",
                         "-j",
                         "2",
+                        // Every register starts at zero, as in rust-hdl.
+                        "--x-assign",
+                        "0",
+                        "--x-initial",
+                        "0",
                         "-Wno-fatal",
                         "-Wno-lint",
                         "-Wno-style",
@@ -152,6 +193,7 @@ fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
                         "top.v",
                         "harness.cpp",
                     ])
+                    .args(trace.then_some("--trace"))
                     .current_dir(dir),
                 "Verilator",
             )?;
@@ -164,79 +206,141 @@ fn simulate(engine: StageEngine, dir: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// The testbench: the stage's inputs as registers read from `in.hex`, its
-/// outputs written to `out.hex` after every rising edge.
-fn testbench(ports: &[Port], clocks: usize) -> String {
-    let decl = |p: &Port, kind: &str, i: usize| {
-        let range = if p.bits > 1 {
-            format!("[{}:0] ", p.bits - 1)
-        } else {
-            String::new()
-        };
-        format!("    {kind} {range}p{i};\n")
-    };
-    let mut v = String::from("`timescale 1ns/1ps\nmodule tb;\n    reg clock = 0;\n");
-    for (i, p) in ports.iter().enumerate() {
-        v += &decl(p, if p.input { "reg" } else { "wire" }, i);
-    }
-    let conns: Vec<String> = std::iter::once("clock".to_string())
-        .chain((0..ports.len()).map(|i| format!("p{i}")))
-        .collect();
-    v += &format!("    top uut({});\n", conns.join(", "));
-    let ins: Vec<usize> = (0..ports.len()).filter(|&i| ports[i].input).collect();
-    let outs: Vec<usize> = (0..ports.len()).filter(|&i| !ports[i].input).collect();
-    let fmt = |n: usize| vec!["%h"; n].join(" ");
-    let list = |ix: &[usize]| {
-        ix.iter()
-            .map(|i| format!("p{i}"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    v += "    integer fin, fout, r, t;\n    initial begin\n";
-    v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
-    v += &format!("        for (t = 0; t < {clocks}; t = t + 1) begin\n");
-    if !ins.is_empty() {
-        v += &format!(
-            "            r = $fscanf(fin, \"{}\\n\", {});\n",
-            fmt(ins.len()),
-            list(&ins)
-        );
-    }
-    v += "            #5 clock = 1;\n";
-    v += &format!(
-        "            #1 $fwrite(fout, \"{}\\n\", {});\n",
-        fmt(outs.len()),
-        list(&outs)
-    );
-    v += "            #4 clock = 0;\n        end\n        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
-    v
+/// The generated testbench: inputs from `in.hex`, one line per clock for
+/// `vectors` clocks (then held), and per logged clock a line of the clock
+/// and every output in hexadecimal in `out.hex`.
+struct Testbench<'a> {
+    ports: &'a [Port],
+    vectors: usize,
+    clocks: usize,
+    /// Log only where this output (an index among the outputs) is 1.
+    when: Option<usize>,
+    /// Dump every signal to `trace.vcd`.
+    trace: bool,
 }
 
-/// The same testbench as C++ for Verilator: the model's ports are named
-/// as in Verilog with `$` escaped as `__024`.
-fn harness(ports: &[Port], clocks: usize) -> String {
-    let field = |p: &Port| format!("top->{}", p.name.replace('$', "__024"));
-    let mut c = String::from(
-        "#include \"Vtop.h\"\n#include \"verilated.h\"\n#include <cstdio>\n\nint main(int argc, char** argv) {\n    Verilated::commandArgs(argc, argv);\n    Vtop* top = new Vtop;\n    FILE* in = fopen(\"in.hex\", \"r\");\n    FILE* out = fopen(\"out.hex\", \"w\");\n    unsigned long long v;\n    top->clock = 0;\n    top->eval();\n",
-    );
-    c += &format!("    for (int t = 0; t < {clocks}; t++) {{\n");
-    for p in ports.iter().filter(|p| p.input) {
-        c += &format!(
-            "        if (fscanf(in, \"%llx\", &v) != 1) return 1;\n        {} = v;\n",
-            field(p)
-        );
+impl Testbench<'_> {
+    fn inputs(&self) -> Vec<usize> {
+        (0..self.ports.len())
+            .filter(|&i| self.ports[i].input)
+            .collect()
     }
-    c += "        top->eval();\n        top->clock = 1;\n        top->eval();\n";
-    let outs: Vec<&Port> = ports.iter().filter(|p| !p.input).collect();
-    for (i, p) in outs.iter().enumerate() {
-        let sep = if i + 1 == outs.len() { "\\n" } else { " " };
-        c += &format!(
-            "        fprintf(out, \"%llx{sep}\", (unsigned long long){});\n",
-            field(p)
-        );
+
+    fn outputs(&self) -> Vec<usize> {
+        (0..self.ports.len())
+            .filter(|&i| !self.ports[i].input)
+            .collect()
     }
-    c += "        top->clock = 0;\n        top->eval();\n    }\n    fclose(out);\n    delete top;\n    return 0;\n}\n";
-    c
+
+    /// Verilog for Icarus: the stage's inputs as registers, its outputs
+    /// written one time step after each rising edge.
+    fn verilog(&self) -> String {
+        let decl = |p: &Port, kind: &str, i: usize| {
+            let range = if p.bits > 1 {
+                format!("[{}:0] ", p.bits - 1)
+            } else {
+                String::new()
+            };
+            format!("    {kind} {range}p{i};\n")
+        };
+        let mut v = String::from("`timescale 1ns/1ps\nmodule tb;\n    reg clock = 0;\n");
+        for (i, p) in self.ports.iter().enumerate() {
+            v += &decl(p, if p.input { "reg" } else { "wire" }, i);
+        }
+        let conns: Vec<String> = std::iter::once("clock".to_string())
+            .chain((0..self.ports.len()).map(|i| format!("p{i}")))
+            .collect();
+        v += &format!("    top uut({});\n", conns.join(", "));
+        let (ins, outs) = (self.inputs(), self.outputs());
+        let fmt = |n: usize| vec!["%h"; n].join(" ");
+        let list = |ix: &[usize]| {
+            ix.iter()
+                .map(|i| format!("p{i}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        v += "    integer fin, fout, r, t;\n    initial begin\n";
+        if self.trace {
+            v += "        $dumpfile(\"trace.vcd\");\n        $dumpvars(0, uut);\n";
+        }
+        v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
+        v += &format!(
+            "        for (t = 0; t < {}; t = t + 1) begin\n",
+            self.clocks
+        );
+        if !ins.is_empty() {
+            v += &format!(
+                "            if (t < {}) r = $fscanf(fin, \"{}\\n\", {});\n",
+                self.vectors,
+                fmt(ins.len()),
+                list(&ins)
+            );
+        }
+        v += "            #5 clock = 1;\n            #1;\n";
+        let when = self
+            .when
+            .map_or("1'b1".to_string(), |w| format!("p{}", outs[w]));
+        v += &format!(
+            "            if ({when}) $fwrite(fout, \"%h {}\\n\", t, {});\n",
+            fmt(outs.len()),
+            list(&outs)
+        );
+        v += "            #4 clock = 0;\n        end\n        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
+        v
+    }
+
+    /// The same testbench as C++ for Verilator: the model's ports are named
+    /// as in Verilog with `$` escaped as `__024`.
+    fn cpp(&self) -> String {
+        let field = |i: usize| format!("top->{}", self.ports[i].name.replace('$', "__024"));
+        let mut c = String::from(
+            "#include \"Vtop.h\"\n#include \"verilated.h\"\n#include <cstdio>\n\nint main(int argc, char** argv) {\n    Verilated::commandArgs(argc, argv);\n    Vtop* top = new Vtop;\n    FILE* in = fopen(\"in.hex\", \"r\");\n    FILE* out = fopen(\"out.hex\", \"w\");\n    unsigned long long v;\n",
+        );
+        // The trace: a dump after each evaluation, the rising edges at
+        // 10t + 5 (rust-hdl's clock of period 10).
+        if self.trace {
+            c = c.replace(
+                "#include <cstdio>",
+                "#include <cstdio>\n#include \"verilated_vcd_c.h\"",
+            );
+            c += "    Verilated::traceEverOn(true);\n    VerilatedVcdC* vcd = new VerilatedVcdC;\n    top->trace(vcd, 99);\n    vcd->open(\"trace.vcd\");\n";
+        }
+        let dump = |at: &str| {
+            if self.trace {
+                format!("        vcd->dump((vluint64_t)({at}));\n")
+            } else {
+                String::new()
+            }
+        };
+        c += "    top->clock = 0;\n    top->eval();\n";
+        c += &format!("    for (long t = 0; t < {}; t++) {{\n", self.clocks);
+        c += &format!("        if (t < {}) {{\n", self.vectors);
+        for i in self.inputs() {
+            c += &format!(
+                "            if (fscanf(in, \"%llx\", &v) != 1) return 1;\n            {} = v;\n",
+                field(i)
+            );
+        }
+        c += "        }\n        top->eval();\n";
+        c += &dump("10 * t");
+        c += "        top->clock = 1;\n        top->eval();\n";
+        c += &dump("10 * t + 5");
+        let outs = self.outputs();
+        let when = self.when.map_or("true".to_string(), |w| field(outs[w]));
+        c += &format!("        if ({when}) {{\n            fprintf(out, \"%lx\", t);\n");
+        for &i in &outs {
+            c += &format!(
+                "            fprintf(out, \" %llx\", (unsigned long long){});\n",
+                field(i)
+            );
+        }
+        c += "            fprintf(out, \"\\n\");\n        }\n        top->clock = 0;\n        top->eval();\n    }\n    fclose(out);\n";
+        if self.trace {
+            c += "    vcd->close();\n";
+        }
+        c += "    delete top;\n    return 0;\n}\n";
+        c
+    }
 }
 
 #[cfg(test)]
