@@ -70,39 +70,11 @@ pub fn run(args: SimArgs) -> Result<()> {
     if arch == SimArch::Cube3 {
         return run_cube3(&scene_path, engine, vcd, out, json_path);
     }
-    let vcd_tmp = match &vcd {
-        Some(v) => {
-            if let output::Target::Special = output::check_target(v)? {
-                bail!(
-                    "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
-                    v.display()
-                );
-            }
-            if let Some(dir) = v.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir)
-                    .with_context(|| format!("creating {}", dir.display()))?;
-            }
-            Some(v.with_extension("vcd.tmp"))
-        }
-        None => None,
-    };
+    let vcd_tmp = vcd_temp(&vcd)?;
     let simulated = cosim::sim::simulate_with(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
         .map_err(|e| anyhow::anyhow!("sim: {e}"))
-        .and_then(|r| {
-            if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
-                let gtkw_tmp = tmp.with_extension("gtkw");
-                let text = std::fs::read_to_string(&gtkw_tmp)?
-                    .replace(&tmp.display().to_string(), &v.display().to_string());
-                output::write_text(&v.with_extension("gtkw"), &text)?;
-                std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
-            }
-            Ok(r)
-        });
-    // Whatever happened, no temporary trace is left behind.
-    if let Some(tmp) = &vcd_tmp {
-        let _ = std::fs::remove_file(tmp);
-        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
-    }
+        .and_then(|r| keep_vcd(&vcd_tmp, &vcd).map(|()| r));
+    drop_vcd_temp(&vcd_tmp);
     let r = simulated?;
     let cps = if r.sim_seconds > 0.0 {
         r.cycles as f64 / r.sim_seconds
@@ -181,34 +153,11 @@ fn run_cube3(
     for path in [&out, &json_path].into_iter().flatten() {
         output::check_target(path)?;
     }
-    let vcd_tmp = match &vcd {
-        Some(v) => {
-            if let output::Target::Special = output::check_target(v)? {
-                bail!(
-                    "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
-                    v.display()
-                );
-            }
-            Some(v.with_extension("vcd.tmp"))
-        }
-        None => None,
-    };
+    let vcd_tmp = vcd_temp(&vcd)?;
     let simulated = cosim::cube3_sim::simulate(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
         .map_err(|e| anyhow::anyhow!("sim: {e}"))
-        .and_then(|r| {
-            if let (Some(tmp), Some(v)) = (&vcd_tmp, &vcd) {
-                let gtkw_tmp = tmp.with_extension("gtkw");
-                let text = std::fs::read_to_string(&gtkw_tmp)?
-                    .replace(&tmp.display().to_string(), &v.display().to_string());
-                output::write_text(&v.with_extension("gtkw"), &text)?;
-                std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
-            }
-            Ok(r)
-        });
-    if let Some(tmp) = &vcd_tmp {
-        let _ = std::fs::remove_file(tmp);
-        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
-    }
+        .and_then(|r| keep_vcd(&vcd_tmp, &vcd).map(|()| r));
+    drop_vcd_temp(&vcd_tmp);
     let r = simulated?;
     let c = r.clocks;
     let cps = c.total as f64 / r.sim_seconds.max(1e-9);
@@ -263,4 +212,39 @@ fn run_cube3(
         );
     }
     Ok(())
+}
+
+/// The temporary path the simulation traces to, beside `--vcd` (checked
+/// first: a VCD is written whole, never over a special file).
+fn vcd_temp(vcd: &Option<PathBuf>) -> Result<Option<PathBuf>> {
+    let Some(v) = vcd else { return Ok(None) };
+    if let output::Target::Special = output::check_target(v)? {
+        bail!(
+            "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
+            v.display()
+        );
+    }
+    if let Some(dir) = v.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    }
+    Ok(Some(v.with_extension("vcd.tmp")))
+}
+
+/// Move a finished trace and its `.gtkw` into place.
+fn keep_vcd(tmp: &Option<PathBuf>, vcd: &Option<PathBuf>) -> Result<()> {
+    if let (Some(tmp), Some(v)) = (tmp, vcd) {
+        let text = std::fs::read_to_string(tmp.with_extension("gtkw"))?
+            .replace(&tmp.display().to_string(), &v.display().to_string());
+        output::write_text(&v.with_extension("gtkw"), &text)?;
+        std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
+    }
+    Ok(())
+}
+
+/// Whatever happened, no temporary trace is left behind.
+fn drop_vcd_temp(tmp: &Option<PathBuf>) {
+    if let Some(tmp) = tmp {
+        let _ = std::fs::remove_file(tmp);
+        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
+    }
 }

@@ -81,6 +81,9 @@ pub fn run_stage(
     Ok(outs.into_iter().map(|(_, o)| o).collect())
 }
 
+/// A logged clock: its number and the outputs, `None` where unknown.
+pub type Logged = (usize, Vec<Option<u64>>);
+
 /// Run the stage for `clocks` clocks, holding the last vector's inputs
 /// after `vectors` ends. With `when`, only the clocks where that one-bit
 /// output is 1 are logged. Returns `(clock, outputs)` per logged clock.
@@ -93,7 +96,7 @@ pub fn run_stage_logged(
     clocks: usize,
     when: Option<&str>,
     vcd: Option<&Path>,
-) -> Result<Vec<(usize, Vec<Option<u64>>)>, String> {
+) -> Result<Vec<Logged>, String> {
     let ports = ports(verilog)?;
     let outputs: Vec<&Port> = ports.iter().filter(|p| !p.input).collect();
     let when = match when {

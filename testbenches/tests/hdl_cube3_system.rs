@@ -133,5 +133,8 @@ fn a_fault_in_the_cube3_system_verilog_is_caught() {
         1,
     );
     let errors = verilog_case::<4>(StageEngine::Iverilog, &c, &faulty);
-    assert!(!errors.is_empty(), "the faulty Cube-3 system went unnoticed");
+    assert!(
+        !errors.is_empty(),
+        "the faulty Cube-3 system went unnoticed"
+    );
 }
