@@ -142,6 +142,19 @@ pub fn simulate(
     engine: Engine,
     vcd: Option<&Path>,
 ) -> Result<Cube3Outcome, String> {
+    simulate_altered(scene, camera, vol, engine, vcd, &|v| v.to_string())
+}
+
+/// [`simulate`], with the emitted Verilog passed through `alter` before
+/// Icarus or Verilator runs it (fault injection).
+pub fn simulate_altered(
+    scene: &Scene,
+    camera: &Camera,
+    vol: &Volume,
+    engine: Engine,
+    vcd: Option<&Path>,
+    alter: &dyn Fn(&str) -> String,
+) -> Result<Cube3Outcome, String> {
     let n = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
     let golden = render(scene, camera, vol, n).map_err(|e| e.to_string())?;
     let designs: Vec<Design> = golden
@@ -180,8 +193,10 @@ pub fn simulate(
             (Engine::RustHdl, 2) => run::<2>(d, vcd)?,
             (Engine::RustHdl, 4) => run::<4>(d, vcd)?,
             (Engine::RustHdl, 8) => run::<8>(d, vcd)?,
-            (Engine::Iverilog, _) => run_verilog(d, StageEngine::Iverilog, vcd, "tb.uut")?,
-            (Engine::Verilator, _) => run_verilog(d, StageEngine::Verilator, vcd, "TOP.top")?,
+            (Engine::Iverilog, _) => run_verilog(d, StageEngine::Iverilog, vcd, "tb.uut", alter)?,
+            (Engine::Verilator, _) => {
+                run_verilog(d, StageEngine::Verilator, vcd, "TOP.top", alter)?
+            }
             _ => return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)")),
         };
         sim_seconds += started.elapsed().as_secs_f64();
@@ -263,7 +278,7 @@ fn run<const P: usize>(d: &Design, vcd: Option<&Path>) -> Result<Pixels, String>
 }
 
 /// The emitted Verilog of a base plane's design, its memory preloaded.
-pub fn verilog(d: &Cube3SystemConfig, modules: &[Vec<u16>]) -> Result<String, String> {
+fn verilog(d: &Cube3SystemConfig, modules: &[Vec<u16>]) -> Result<String, String> {
     fn emit<const P: usize>(c: &Cube3SystemConfig, m: &[Vec<u16>]) -> Result<String, String> {
         let mut uut = Cube3System::<P, A, B, H>::new(c)?;
         uut.preload(m);
@@ -286,8 +301,9 @@ fn run_verilog(
     engine: StageEngine,
     vcd: Option<&Path>,
     top: &str,
+    alter: &dyn Fn(&str) -> String,
 ) -> Result<Pixels, String> {
-    let v = verilog(&d.config, &d.modules)?;
+    let v = alter(&verilog(&d.config, &d.modules)?);
     let ports = crate::stage::ports(&v)?;
     let names: Vec<&str> = ports
         .iter()
