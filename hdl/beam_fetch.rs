@@ -4,7 +4,8 @@
 //! take a PRP while the other two are read as the `cur` and `next` streams
 //! of [`crate::trilin_lanes`].
 //!
-//! **CFB.** `P` memory modules hold the volume in the view's traversal
+//! **CFB.** `P` memory modules (on chip, or an external RAM through the
+//! `ext_*` ports) hold the volume in the view's traversal
 //! order `(x, y, k)`, skewed as Cube-4L's CFB: voxel `(x, y, k)` in module
 //! `(x + y + k) mod P` at address `x div P + y·b + k·b·n_y`, `b = ceil(n_x /
 //! P)`, so any `P` consecutive voxels of a beam lie in `P` different
@@ -43,6 +44,9 @@ use crate::ram::DepthRam;
 use golden_model::cube3::plan::{Template, View};
 use rust_hdl::prelude::*;
 
+/// Address bits of the template ROMs: up to 1023 planes.
+pub const PLANE_BITS: usize = 10;
+
 /// What the beam fetch is built from.
 #[derive(Debug, Clone)]
 pub struct BeamFetchConfig {
@@ -58,6 +62,8 @@ pub struct BeamFetchConfig {
     /// `pos_x[k]`, `pos_y[k]` for `k` in `0 ..= K`.
     pub pos_x: Vec<i32>,
     pub pos_y: Vec<i32>,
+    /// The volume lives in external memory, not in on-chip modules.
+    pub external: bool,
 }
 
 impl BeamFetchConfig {
@@ -84,6 +90,7 @@ impl BeamFetchConfig {
             segments: view.dims[2].div_ceil(p),
             pos_x: px.clone(),
             pos_y: py.clone(),
+            external: false,
         })
     }
 
@@ -137,12 +144,19 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     pub valid: Signal<Out, Bit>,
     pub cur: [Signal<Out, Bits<16>>; P],
     pub next: [Signal<Out, Bits<16>>; P],
+    /// External memory (`BeamFetchConfig::external`): each module's read
+    /// address, and its word one clock later, as a synchronous RAM answers.
+    pub ext_addr: [Signal<Out, Bits<32>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
+    external: Constant<Bit>,
+    /// The on-chip modules (two words each with external memory).
     memory: [DepthRam<Bits<16>, A>; P],
+    word: [Signal<Local, Bits<16>>; P],
     buffer0: [DepthRam<Bits<16>, B>; P],
     buffer1: [DepthRam<Bits<16>, B>; P],
     buffer2: [DepthRam<Bits<16>, B>; P],
-    pos_x: ROM<Bits<16>, 8>,
-    pos_y: ROM<Bits<16>, 8>,
+    pos_x: ROM<Bits<16>, PLANE_BITS>,
+    pos_y: ROM<Bits<16>, PLANE_BITS>,
     schedule: Schedule,
     /// The write side: this clock's beam and chunk, and per module the
     /// voxel's x and whether it lies in the volume.
@@ -194,19 +208,30 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
                 c.p
             ));
         }
-        if b * ny >= 1 << 16 || c.module_words() > 1 << A || c.rays * c.segments > 1 << B {
+        if b * ny >= 1 << 16
+            || (!c.external && c.module_words() > 1 << A)
+            || c.rays * c.segments > 1 << B
+        {
             return Err(format!(
                 "a {nx}x{ny}x{nk} volume needs more memory than this build's {A}-bit modules and {B}-bit buffers"
             ));
         }
-        if nk + 1 > 256 {
-            return Err(format!("{nk} planes: the templates hold at most 255"));
+        if nk >= 1 << PLANE_BITS {
+            return Err(format!(
+                "{nk} planes: the templates hold at most {}",
+                (1 << PLANE_BITS) - 1
+            ));
         }
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
-        let rom = |v: &[i32]| -> ROM<Bits<16>, 8> {
+        let rom = |v: &[i32]| -> ROM<Bits<16>, PLANE_BITS> {
             v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
         };
-        let ram = || DepthRam::with_words(c.module_words().max(2));
+        let words = if c.external {
+            2
+        } else {
+            c.module_words().max(2)
+        };
+        let ram = || DepthRam::with_words(words);
         let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
         Ok(BeamFetch {
             clock: Default::default(),
@@ -214,7 +239,11 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             valid: Default::default(),
             cur: std::array::from_fn(|_| Default::default()),
             next: std::array::from_fn(|_| Default::default()),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
+            external: Constant::new(c.external),
             memory: std::array::from_fn(|_| ram()),
+            word: std::array::from_fn(|_| Default::default()),
             buffer0: std::array::from_fn(|_| buffer()),
             buffer1: std::array::from_fn(|_| buffer()),
             buffer2: std::array::from_fn(|_| buffer()),
@@ -276,8 +305,8 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.schedule.clock.next = self.clock.val();
         self.schedule.start.next = self.start.val();
         // The beam's chunk: its row y, first x and skew.
-        self.pos_x.address.next = self.schedule.plane.val().get_bits::<8>(0);
-        self.pos_y.address.next = self.schedule.plane.val().get_bits::<8>(0);
+        self.pos_x.address.next = self.schedule.plane.val().get_bits::<PLANE_BITS>(0);
+        self.pos_y.address.next = self.schedule.plane.val().get_bits::<PLANE_BITS>(0);
         self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
         self.x0.next =
             self.u0.val() + self.pos_x.data.val() + (self.schedule.chunk.val() << self.shift.val());
@@ -302,8 +331,16 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 + self.schedule.plane.val() * self.plane_words.val();
             // Outside the volume the module reads word 0, and the voxel is 0.
             self.memory[m].read_address.next = 0.into();
-            if self.inside[m].val() {
+            self.ext_addr[m].next = 0.into();
+            if self.inside[m].val() & !self.external.val() {
                 self.memory[m].read_address.next = self.address[m].val().get_bits::<A>(0);
+            }
+            if self.inside[m].val() & self.external.val() {
+                self.ext_addr[m].next = self.address[m].val();
+            }
+            self.word[m].next = self.memory[m].read_data.val();
+            if self.external.val() {
+                self.word[m].next = self.ext_data[m].val();
             }
             self.inside_q[m].clock.next = self.clock.val();
             self.inside_q[m].d.next = self.inside[m].val();
@@ -322,7 +359,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                     == self.index[m].val())
                     & self.inside_q[m].q.val()
                 {
-                    self.value[d].next = self.memory[m].read_data.val();
+                    self.value[d].next = self.word[m].val();
                 }
             }
             self.ray[d].next = (self.chunk_q.q.val() << self.shift.val())

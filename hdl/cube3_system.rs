@@ -64,6 +64,9 @@ pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: 
     pub pixel_b: Signal<Out, Bits<16>>,
     pub pixel_a: Signal<Out, Bits<16>>,
     pub has_sample: Signal<Out, Bit>,
+    /// The external memory's ports (`BeamFetchConfig::external`).
+    pub ext_addr: [Signal<Out, Bits<32>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
     fetch: BeamFetch<P, A, B>,
     pipeline: Cube3<P, H>,
 }
@@ -79,6 +82,8 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System
             pixel_b: Default::default(),
             pixel_a: Default::default(),
             has_sample: Default::default(),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
             fetch: BeamFetch::new(&c.fetch)?,
             pipeline: Cube3::new(&c.pipeline)?,
         })
@@ -103,6 +108,8 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
         for i in 0..P {
             self.pipeline.cur[i].next = self.fetch.cur[i].val();
             self.pipeline.next[i].next = self.fetch.next[i].val();
+            self.ext_addr[i].next = self.fetch.ext_addr[i].val();
+            self.fetch.ext_data[i].next = self.ext_data[i].val();
         }
         self.done.next = self.pipeline.done.val();
         self.pixel_r.next = self.pipeline.pixel_r.val();

@@ -80,7 +80,9 @@ fn design(scene: &Scene, camera: &Camera, vol: &Volume, view: &View) -> Result<D
     let shader = Shader::new(scene, camera, view);
     let p = scene.hardware.pipelines;
     let height = (view.v[1] - view.v[0] + 1) as usize;
-    let config = Cube3SystemConfig::new(view, &shader, p, view.v[0], height)?;
+    let mut config = Cube3SystemConfig::new(view, &shader, p, view.v[0], height)?;
+    // Volumes beyond on-chip memory live in the external memory model.
+    config.fetch.external = config.fetch.module_words() > 1 << crate::export::ON_CHIP_BITS;
     let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
     let modules = config.fetch.modules(|x, y, k| {
         view.voxel(x as i32, y as i32, k)
@@ -187,6 +189,13 @@ pub fn simulate_altered(
     for (vi, (d, want)) in designs.iter().zip(&golden.bases).enumerate() {
         let started = Instant::now();
         let vcd = if vi == 0 { vcd } else { None };
+        if d.config.fetch.external && engine != Engine::Verilator {
+            return Err(format!(
+                "{} voxels per memory module exceed on-chip memory (2^{}); such volumes need the external memory model of --engine verilator",
+                d.config.fetch.module_words(),
+                crate::export::ON_CHIP_BITS
+            ));
+        }
         let p = d.config.pipeline.p;
         let pixels = match (engine, p) {
             (Engine::RustHdl, 1) => run::<1>(d, vcd)?,
@@ -281,7 +290,9 @@ fn run<const P: usize>(d: &Design, vcd: Option<&Path>) -> Result<Pixels, String>
 fn verilog(d: &Cube3SystemConfig, modules: &[Vec<u16>]) -> Result<String, String> {
     fn emit<const P: usize>(c: &Cube3SystemConfig, m: &[Vec<u16>]) -> Result<String, String> {
         let mut uut = Cube3System::<P, A, B, H>::new(c)?;
-        uut.preload(m);
+        if !c.fetch.external {
+            uut.preload(m);
+        }
         uut.connect_all();
         Ok(generate_verilog(&uut))
     }
@@ -310,13 +321,24 @@ fn run_verilog(
         .filter(|p| !p.input)
         .map(|p| p.name.as_str())
         .collect();
+    // `start` on the first clock; the external memory's data come from the
+    // harness.
+    let inputs: Vec<bool> = ports
+        .iter()
+        .filter(|p| p.input)
+        .map(|p| p.name == "start")
+        .collect();
+    let vectors: Vec<Vec<u64>> = [true, false]
+        .map(|first| inputs.iter().map(|&s| (s && first) as u64).collect())
+        .to_vec();
     let logged = run_stage_logged(
         engine,
         &v,
-        &[vec![1], vec![0]],
+        &vectors,
         d.config.clocks(),
         Some("done"),
         vcd,
+        d.config.fetch.external.then_some(&d.modules[..]),
     )?;
     if let Some(path) = vcd {
         write_gtkw_cube3(path, d.config.pipeline.p, top)

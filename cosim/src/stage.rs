@@ -77,7 +77,7 @@ pub fn run_stage(
     verilog: &str,
     vectors: &[Vec<u64>],
 ) -> Result<Vec<Vec<Option<u64>>>, String> {
-    let outs = run_stage_logged(engine, verilog, vectors, vectors.len(), None, None)?;
+    let outs = run_stage_logged(engine, verilog, vectors, vectors.len(), None, None, None)?;
     Ok(outs.into_iter().map(|(_, o)| o).collect())
 }
 
@@ -88,7 +88,10 @@ pub type Logged = (usize, Vec<Option<u64>>);
 /// after `vectors` ends. With `when`, only the clocks where that one-bit
 /// output is 1 are logged. Returns `(clock, outputs)` per logged clock.
 /// `vcd` names a VCD of the whole design to write (scope `tb.uut` under
-/// Icarus, `TOP.top` under Verilator).
+/// Icarus, `TOP.top` under Verilator). With `memory` (Verilator only), the
+/// harness is the external RAM of modules `ext_addr$m` / `ext_data$m`: the
+/// word at the address presented before a rising edge is on `ext_data$m`
+/// after it.
 pub fn run_stage_logged(
     engine: StageEngine,
     verilog: &str,
@@ -96,7 +99,11 @@ pub fn run_stage_logged(
     clocks: usize,
     when: Option<&str>,
     vcd: Option<&Path>,
+    memory: Option<&[Vec<u16>]>,
 ) -> Result<Vec<Logged>, String> {
+    if memory.is_some() && engine != StageEngine::Verilator {
+        return Err("the external memory model needs --engine verilator".into());
+    }
     let ports = ports(verilog)?;
     let outputs: Vec<&Port> = ports.iter().filter(|p| !p.input).collect();
     let when = match when {
@@ -120,7 +127,12 @@ pub fn run_stage_logged(
             clocks,
             when,
             trace: vcd.is_some(),
+            modules: memory.map_or(0, |m| m.len()),
         };
+        for (m, words) in memory.unwrap_or_default().iter().enumerate() {
+            let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+            std::fs::write(dir.join(format!("module{m}.bin")), bytes).map_err(|e| e.to_string())?;
+        }
         match engine {
             StageEngine::Iverilog => std::fs::write(dir.join("tb.v"), tb.verilog()),
             StageEngine::Verilator => std::fs::write(dir.join("harness.cpp"), tb.cpp()),
@@ -220,6 +232,8 @@ struct Testbench<'a> {
     when: Option<usize>,
     /// Dump every signal to `trace.vcd`.
     trace: bool,
+    /// External memory modules served from `module{m}.bin` (Verilator).
+    modules: usize,
 }
 
 impl Testbench<'_> {
@@ -315,6 +329,25 @@ impl Testbench<'_> {
                 String::new()
             }
         };
+        if self.modules > 0 {
+            c = c.replace("#include <cstdio>", "#include <cstdio>\n#include <vector>");
+            c += &format!("    std::vector<unsigned short> mem[{}];\n", self.modules);
+            c += &format!("    unsigned long long addr[{}] = {{0}};\n", self.modules);
+            c += &format!(
+                "    for (int m = 0; m < {}; m++) {{\n        char path[32];\n        snprintf(path, sizeof path, \"module%d.bin\", m);\n        FILE* f = fopen(path, \"rb\");\n        if (!f) return 2;\n        fseek(f, 0, SEEK_END);\n        long n = ftell(f) / 2;\n        fseek(f, 0, SEEK_SET);\n        mem[m].resize(n);\n        if (fread(mem[m].data(), 2, n, f) != (size_t)n) return 2;\n        fclose(f);\n    }}\n",
+                self.modules
+            );
+        }
+        let serve = |c: &mut String, what: &str| {
+            for m in 0..self.modules {
+                *c += &match what {
+                    "address" => format!("        addr[{m}] = top->ext_addr__024{m};\n"),
+                    _ => format!(
+                        "        top->ext_data__024{m} = addr[{m}] < mem[{m}].size() ? mem[{m}][addr[{m}]] : 0;\n"
+                    ),
+                };
+            }
+        };
         c += "    top->clock = 0;\n    top->eval();\n";
         c += &format!("    for (long t = 0; t < {}; t++) {{\n", self.clocks);
         c += &format!("        if (t < {}) {{\n", self.vectors);
@@ -326,7 +359,12 @@ impl Testbench<'_> {
         }
         c += "        }\n        top->eval();\n";
         c += &dump("10 * t");
+        serve(&mut c, "address");
         c += "        top->clock = 1;\n        top->eval();\n";
+        if self.modules > 0 {
+            serve(&mut c, "data");
+            c += "        top->eval();\n";
+        }
         c += &dump("10 * t + 5");
         let outs = self.outputs();
         let when = self.when.map_or("true".to_string(), |w| field(outs[w]));
