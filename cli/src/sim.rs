@@ -162,12 +162,14 @@ fn run_cube3(
     let c = r.clocks;
     let cps = c.total as f64 / r.sim_seconds.max(1e-9);
     println!(
-        "{name} (cube3): {} clocks, ideal n_x*n_y*n_z/p = {} ({:.2}x), {:.2} s ({:.0} clocks/s); {} base-plane pixels differ from the golden model",
+        "{name} (cube3): {} clocks, ideal n_x*n_y*n_z/p = {} ({:.2}x), {:.2} s in all ({:.2} s simulating, {:.0} clocks/s; {:.1} s building); {} base-plane pixels differ from the golden model",
         c.total,
         c.ideal,
         c.total as f64 / c.ideal as f64,
         r.seconds,
+        r.sim_seconds,
         cps,
+        r.build_seconds,
         r.mismatches
     );
     println!(
@@ -200,6 +202,7 @@ fn run_cube3(
                 "mismatches": r.mismatches,
                 "seconds": r.seconds,
                 "sim_seconds": r.sim_seconds,
+                "build_seconds": r.build_seconds,
                 "cycles_per_second": cps,
                 "pipelines": scene.hardware.pipelines,
             }),

@@ -67,7 +67,9 @@ pub struct Cube3Outcome {
     /// The first few mismatching pixels, described.
     pub first: Vec<String>,
     pub seconds: f64,
+    /// Simulating alone, and compiling the Verilog (Icarus, Verilator).
     pub sim_seconds: f64,
+    pub build_seconds: f64,
 }
 
 /// One base plane's design and contents.
@@ -185,7 +187,8 @@ pub fn simulate_altered(
         ));
     }
     let t = Instant::now();
-    let (mut bases, mut mismatches, mut first, mut sim_seconds) = (vec![], 0, vec![], 0.0);
+    let (mut bases, mut mismatches, mut first) = (vec![], 0, vec![]);
+    let (mut sim_seconds, mut build_seconds) = (0.0, 0.0);
     for (vi, (d, want)) in designs.iter().zip(&golden.bases).enumerate() {
         let started = Instant::now();
         let vcd = if vi == 0 { vcd } else { None };
@@ -197,18 +200,22 @@ pub fn simulate_altered(
             ));
         }
         let p = d.config.pipeline.p;
+        let mut built = 0.0;
         let pixels = match (engine, p) {
             (Engine::RustHdl, 1) => run::<1>(d, vcd)?,
             (Engine::RustHdl, 2) => run::<2>(d, vcd)?,
             (Engine::RustHdl, 4) => run::<4>(d, vcd)?,
             (Engine::RustHdl, 8) => run::<8>(d, vcd)?,
-            (Engine::Iverilog, _) => run_verilog(d, StageEngine::Iverilog, vcd, "tb.uut", alter)?,
+            (Engine::Iverilog, _) => {
+                run_verilog(d, StageEngine::Iverilog, vcd, "tb.uut", alter, &mut built)?
+            }
             (Engine::Verilator, _) => {
-                run_verilog(d, StageEngine::Verilator, vcd, "TOP.top", alter)?
+                run_verilog(d, StageEngine::Verilator, vcd, "TOP.top", alter, &mut built)?
             }
             _ => return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)")),
         };
-        sim_seconds += started.elapsed().as_secs_f64();
+        sim_seconds += started.elapsed().as_secs_f64() - built;
+        build_seconds += built;
         let base = place(&d.config, want, &pixels);
         for i in 0..want.pixels.len() {
             let (r, g) = (
@@ -237,6 +244,7 @@ pub fn simulate_altered(
         first,
         seconds: t.elapsed().as_secs_f64(),
         sim_seconds,
+        build_seconds,
     })
 }
 
@@ -313,6 +321,7 @@ fn run_verilog(
     vcd: Option<&Path>,
     top: &str,
     alter: &dyn Fn(&str) -> String,
+    build_seconds: &mut f64,
 ) -> Result<Pixels, String> {
     let v = alter(&verilog(&d.config, &d.modules)?);
     let ports = crate::stage::ports(&v)?;
@@ -344,7 +353,9 @@ fn run_verilog(
         write_gtkw_cube3(path, d.config.pipeline.p, top)
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
+    *build_seconds = logged.build_seconds;
     logged
+        .logged
         .iter()
         .map(|(t, o)| {
             let get = |n: &str| {

@@ -77,12 +77,21 @@ pub fn run_stage(
     verilog: &str,
     vectors: &[Vec<u64>],
 ) -> Result<Vec<Vec<Option<u64>>>, String> {
-    let outs = run_stage_logged(engine, verilog, vectors, vectors.len(), None, None, None)?;
-    Ok(outs.into_iter().map(|(_, o)| o).collect())
+    let run = run_stage_logged(engine, verilog, vectors, vectors.len(), None, None, None)?;
+    Ok(run.logged.into_iter().map(|(_, o)| o).collect())
 }
 
 /// A logged clock: its number and the outputs, `None` where unknown.
 pub type Logged = (usize, Vec<Option<u64>>);
+
+/// A stage run: its logged clocks, and the seconds spent compiling the
+/// Verilog and simulating it.
+#[derive(Debug, Clone)]
+pub struct StageRun {
+    pub logged: Vec<Logged>,
+    pub build_seconds: f64,
+    pub run_seconds: f64,
+}
 
 /// Run the stage for `clocks` clocks, holding the last vector's inputs
 /// after `vectors` ends. With `when`, only the clocks where that one-bit
@@ -100,7 +109,7 @@ pub fn run_stage_logged(
     when: Option<&str>,
     vcd: Option<&Path>,
     memory: Option<&[Vec<u16>]>,
-) -> Result<Vec<Logged>, String> {
+) -> Result<StageRun, String> {
     if memory.is_some() && engine != StageEngine::Verilator {
         return Err("the external memory model needs --engine verilator".into());
     }
@@ -148,7 +157,7 @@ pub fn run_stage_logged(
             })
             .collect();
         std::fs::write(dir.join("in.hex"), lines.join("\n") + "\n").map_err(|e| e.to_string())?;
-        simulate(engine, &dir, vcd.is_some())?;
+        let (build_seconds, run_seconds) = simulate(engine, &dir, vcd.is_some())?;
         if let Some(path) = vcd {
             std::fs::copy(dir.join("trace.vcd"), path)
                 .map_err(|e| format!("{}: {e}", path.display()))?;
@@ -166,13 +175,20 @@ pub fn run_stage_logged(
         if when.is_none() && outs.len() != clocks {
             return Err(format!("the stage wrote {} clocks of {clocks}", outs.len()));
         }
-        Ok(outs)
+        Ok(StageRun {
+            logged: outs,
+            build_seconds,
+            run_seconds,
+        })
     })();
     let _ = std::fs::remove_dir_all(&dir);
     result
 }
 
-fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(), String> {
+/// Compile and run; the seconds of each.
+fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(f64, f64), String> {
+    let started = std::time::Instant::now();
+    let build = |started: std::time::Instant| started.elapsed().as_secs_f64();
     match engine {
         StageEngine::Iverilog => {
             crate::tool::run(
@@ -181,10 +197,13 @@ fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(), String> 
                     .current_dir(dir),
                 "Icarus Verilog (iverilog)",
             )?;
+            let built = build(started);
+            let run = std::time::Instant::now();
             crate::tool::run(
                 Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
                 "Icarus Verilog (vvp)",
             )?;
+            Ok((built, run.elapsed().as_secs_f64()))
         }
         StageEngine::Verilator => {
             crate::tool::run(
@@ -212,13 +231,15 @@ fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(), String> 
                     .current_dir(dir),
                 "Verilator",
             )?;
+            let built = build(started);
+            let run = std::time::Instant::now();
             crate::tool::run(
                 Command::new("obj_dir/Vtop").current_dir(dir),
                 "the Verilator model",
             )?;
+            Ok((built, run.elapsed().as_secs_f64()))
         }
     }
-    Ok(())
 }
 
 /// The generated testbench: inputs from `in.hex`, one line per clock for

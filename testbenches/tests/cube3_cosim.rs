@@ -91,3 +91,25 @@ fn a_fault_in_the_emitted_verilog_is_caught_by_pixels_and_traces() {
     .unwrap();
     assert!(!cmp.equal(), "the trace comparison missed the fault");
 }
+
+#[test]
+fn the_engine_frame_runs_through_verilator_bit_exact() {
+    require_tool("verilator");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/engine_mip.json");
+    let s = scene::Scene::load(&path).unwrap();
+    let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
+        panic!(
+            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/test does it)."
+        )
+    });
+    let r = simulate(&s, &s.camera().unwrap(), &vol, Engine::Verilator, None).unwrap();
+    assert_eq!(r.mismatches, 0, "{:?}", r.first);
+    // 414 scanlines of 207 rays of 64 segments (K = 256, p = 4), periods
+    // of 13 313 clocks bound by the PRP writes (256 planes x 52 chunks).
+    let c = r.clocks;
+    assert_eq!(
+        (c.total, c.segments, c.idle, c.prologue, c.tail, c.drain),
+        (5_538_221, 5_484_672, 26_910, 26_628, 65, 76)
+    );
+    assert_eq!(c.ideal, 256 * 256 * 110 / 4);
+}
