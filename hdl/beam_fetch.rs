@@ -148,6 +148,12 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     /// address, and its word one clock later, as a synchronous RAM answers.
     pub ext_addr: [Signal<Out, Bits<32>>; P],
     pub ext_data: [Signal<In, Bits<16>>; P],
+    /// Loading on-chip memory: one word per clock into module
+    /// `load_module` (the host's order of `BeamFetchConfig::modules`).
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<32>>,
+    pub load_data: Signal<In, Bits<16>>,
     external: Constant<Bit>,
     /// The on-chip modules (two words each with external memory).
     memory: [DepthRam<Bits<16>, A>; P],
@@ -164,6 +170,7 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     x0: Signal<Local, Bits<16>>,
     base: Signal<Local, Bits<16>>,
     xm: [Signal<Local, Bits<16>>; P],
+    column: [Signal<Local, Bits<16>>; P],
     inside: [Signal<Local, Bit>; P],
     /// One clock later, with the memory's data.
     inside_q: [DFF<Bit>; P],
@@ -171,6 +178,7 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     plane_q: DFF<Bits<16>>,
     chunk_q: DFF<Bits<16>>,
     write_q: DFF<Bit>,
+    plane_segment: Signal<Local, Bits<16>>,
     buffer_q: DFF<Bits<2>>,
     address: [Signal<Local, Bits<32>>; P],
     ray: [Signal<Local, Bits<16>>; P],
@@ -183,6 +191,7 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     cur_q: DFF<Bits<2>>,
     next_q: DFF<Bits<2>>,
     index: [Constant<Bits<16>>; P],
+    module_id: [Constant<Bits<8>>; P],
     buffer_id: [Constant<Bits<2>>; 3],
     one: Constant<Bits<16>>,
     mask: Constant<Bits<16>>,
@@ -241,6 +250,10 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             next: std::array::from_fn(|_| Default::default()),
             ext_addr: std::array::from_fn(|_| Default::default()),
             ext_data: std::array::from_fn(|_| Default::default()),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
             external: Constant::new(c.external),
             memory: std::array::from_fn(|_| ram()),
             word: std::array::from_fn(|_| Default::default()),
@@ -254,12 +267,14 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             x0: Default::default(),
             base: Default::default(),
             xm: std::array::from_fn(|_| Default::default()),
+            column: std::array::from_fn(|_| Default::default()),
             inside: std::array::from_fn(|_| Default::default()),
             inside_q: std::array::from_fn(|_| Default::default()),
             rotate_q: Default::default(),
             plane_q: Default::default(),
             chunk_q: Default::default(),
             write_q: Default::default(),
+            plane_segment: Default::default(),
             buffer_q: Default::default(),
             address: std::array::from_fn(|_| Default::default()),
             ray: std::array::from_fn(|_| Default::default()),
@@ -271,6 +286,7 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             cur_q: Default::default(),
             next_q: Default::default(),
             index: std::array::from_fn(|m| k(m as i64)),
+            module_id: std::array::from_fn(|m| Constant::new((m as u64).to_bits())),
             buffer_id: std::array::from_fn(|b| Constant::new((b as u64).to_bits())),
             one: k(1),
             mask: k(P as i64 - 1),
@@ -315,9 +331,11 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         for m in 0..P {
             self.memory[m].read_clock.next = self.clock.val();
             self.memory[m].write_clock.next = self.clock.val();
-            self.memory[m].write_enable.next = false;
-            self.memory[m].write_address.next = 0.into();
-            self.memory[m].write_data.next = 0.into();
+            self.memory[m].write_enable.next = self.load_enable.val()
+                & (self.load_module.val() == self.module_id[m].val())
+                & !self.external.val();
+            self.memory[m].write_address.next = self.load_address.val().get_bits::<A>(0);
+            self.memory[m].write_data.next = self.load_data.val();
             self.xm[m].next =
                 self.x0.val() + ((self.index[m].val() - self.base.val()) & self.mask.val());
             self.inside[m].next = !self.xm[m].val().get_bit(15)
@@ -326,7 +344,8 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 & (self.row.val() < self.n_y.val())
                 & (self.schedule.plane.val() < self.n_k.val());
             // (`* one` widens the column to 32 bits inside the loop.)
-            self.address[m].next = (self.xm[m].val() >> self.shift.val()) * self.one.val()
+            self.column[m].next = self.xm[m].val() >> self.shift.val();
+            self.address[m].next = self.column[m].val() * self.one.val()
                 + self.row.val() * self.row_words.val()
                 + self.schedule.plane.val() * self.plane_words.val();
             // Outside the volume the module reads word 0, and the voxel is 0.
@@ -349,6 +368,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.plane_q.d.next = self.schedule.plane.val();
         self.chunk_q.d.next = self.schedule.chunk.val();
         self.write_q.d.next = self.schedule.writing.val();
+        self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
         self.buffer_q.d.next = self.schedule.write_buffer.val();
         // The Fast Bus: 2-DSB module d takes memory module (d + x0 + y) mod
         // P; ray r of plane k at address r*G + k div P.
@@ -365,7 +385,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             self.ray[d].next = (self.chunk_q.q.val() << self.shift.val())
                 + ((self.index[d].val() - self.plane_q.q.val()) & self.mask.val());
             self.write_address[d].next = self.ray[d].val() * self.segments.val()
-                + bit_cast::<32, 16>(self.plane_q.q.val() >> self.shift.val());
+                + bit_cast::<32, 16>(self.plane_segment.val());
             self.buffer0[d].write_clock.next = self.clock.val();
             self.buffer1[d].write_clock.next = self.clock.val();
             self.buffer2[d].write_clock.next = self.clock.val();

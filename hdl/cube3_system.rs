@@ -67,6 +67,11 @@ pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: 
     /// The external memory's ports (`BeamFetchConfig::external`).
     pub ext_addr: [Signal<Out, Bits<32>>; P],
     pub ext_data: [Signal<In, Bits<16>>; P],
+    /// Loading on-chip memory (`BeamFetch::load_*`).
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<32>>,
+    pub load_data: Signal<In, Bits<16>>,
     fetch: BeamFetch<P, A, B>,
     pipeline: Cube3<P, H>,
 }
@@ -84,6 +89,10 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System
             has_sample: Default::default(),
             ext_addr: std::array::from_fn(|_| Default::default()),
             ext_data: std::array::from_fn(|_| Default::default()),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
             fetch: BeamFetch::new(&c.fetch)?,
             pipeline: Cube3::new(&c.pipeline)?,
         })
@@ -103,6 +112,10 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
         self.fetch.clock.next = self.clock.val();
         self.pipeline.clock.next = self.clock.val();
         self.fetch.start.next = self.start.val();
+        self.fetch.load_enable.next = self.load_enable.val();
+        self.fetch.load_module.next = self.load_module.val();
+        self.fetch.load_address.next = self.load_address.val();
+        self.fetch.load_data.next = self.load_data.val();
         self.pipeline.start.next = self.start.val();
         self.pipeline.valid.next = self.fetch.valid.val();
         for i in 0..P {

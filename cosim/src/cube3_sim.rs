@@ -10,7 +10,7 @@
 
 use crate::gtkw::write_gtkw_cube3;
 use crate::sim::Engine;
-use crate::stage::{run_stage_logged, StageEngine};
+use crate::stage::{run_stage_logged, start_only, StageEngine};
 use golden_model::cube3::plan::View;
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{render, BasePlane, Frame};
@@ -332,14 +332,7 @@ fn run_verilog(
         .collect();
     // `start` on the first clock; the external memory's data come from the
     // harness.
-    let inputs: Vec<bool> = ports
-        .iter()
-        .filter(|p| p.input)
-        .map(|p| p.name == "start")
-        .collect();
-    let vectors: Vec<Vec<u64>> = [true, false]
-        .map(|first| inputs.iter().map(|&s| (s && first) as u64).collect())
-        .to_vec();
+    let vectors = vec![start_only(&ports, 0), start_only(&ports, 1)];
     let logged = run_stage_logged(
         engine,
         &v,

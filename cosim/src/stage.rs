@@ -81,6 +81,16 @@ pub fn run_stage(
     Ok(run.logged.into_iter().map(|(_, o)| o).collect())
 }
 
+/// The inputs of clock `t` for a design started by `start` at clock 0,
+/// every other input 0.
+pub fn start_only(ports: &[Port], t: usize) -> Vec<u64> {
+    ports
+        .iter()
+        .filter(|p| p.input)
+        .map(|p| (p.name == "start" && t == 0) as u64)
+        .collect()
+}
+
 /// A logged clock: its number and the outputs, `None` where unknown.
 pub type Logged = (usize, Vec<Option<u64>>);
 

@@ -6,7 +6,7 @@
 //! p = 1, 2, 4 and 8 on oblique parallel views of non-cubic volumes, in
 //! rust-hdl simulation and under Icarus.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::stage::{ports, run_stage, start_only, StageEngine};
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::prp;
 use hdl::beam_fetch::{BeamFetch, BeamFetchConfig};
@@ -187,7 +187,7 @@ fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
         let verilog = generate_verilog(&fetch::<4>(&c));
         let ports = ports(&verilog).unwrap();
         let vectors: Vec<Vec<u64>> = (0..c.config.clocks() + 4)
-            .map(|t| vec![(t == 0) as u64])
+            .map(|t| start_only(&ports, t))
             .collect();
         let outs = run_stage(StageEngine::Iverilog, &verilog, &vectors).unwrap();
         let names: Vec<&str> = ports

@@ -5,7 +5,7 @@
 //! views (one at exactly 45°) of non-cubic volumes, p = 1, 2, 4 and 8, in
 //! rust-hdl simulation and as emitted Verilog under Icarus and Verilator.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::stage::{ports, run_stage, start_only, StageEngine};
 use hdl::cube3_system::Cube3System;
 use rust_hdl::prelude::*;
 use testbenches::cube3::{cases, Case, Pixels};
@@ -77,7 +77,7 @@ fn cube3_system_matches_golden_base_plane_in_rust_hdl() {
 fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) -> Vec<String> {
     let ports = ports(verilog).unwrap();
     let vectors: Vec<Vec<u64>> = (0..c.config.clocks())
-        .map(|t| vec![(t == 0) as u64])
+        .map(|t| start_only(&ports, t))
         .collect();
     let outs = run_stage(engine, verilog, &vectors).unwrap();
     let names: Vec<&str> = ports
@@ -136,5 +136,59 @@ fn a_fault_in_the_cube3_system_verilog_is_caught() {
     assert!(
         !errors.is_empty(),
         "the faulty Cube-3 system went unnoticed"
+    );
+}
+
+/// The volume loaded through the load port, one word per clock, instead
+/// of preloaded: the same pixels.
+#[test]
+fn cube3_system_loads_its_memory_through_the_load_port() {
+    let c = cases(2).remove(0);
+    let mut uut = Cube3System::<2, A, B, H>::new(&c.config).unwrap();
+    uut.connect_all();
+    let words: Vec<(usize, usize, u16)> = c
+        .modules
+        .iter()
+        .enumerate()
+        .flat_map(|(m, ws)| ws.iter().enumerate().map(move |(a, &w)| (m, a, w)))
+        .collect();
+    let n = words.len() + c.config.clocks();
+    let case = std::sync::Arc::new(c);
+    let tb = case.clone();
+    let mut sim = Simulation::new();
+    sim.add_clock(5, |x: &mut Box<Cube3System<2, A, B, H>>| {
+        x.clock.next = !x.clock.val()
+    });
+    sim.add_testbench(move |mut sim: Sim<Cube3System<2, A, B, H>>| {
+        let mut x = sim.init()?;
+        for &(m, a, w) in &words {
+            x.load_enable.next = true;
+            x.load_module.next = (m as u64).to_bits();
+            x.load_address.next = (a as u64).to_bits();
+            x.load_data.next = (w as u64).to_bits();
+            wait_clock_cycle!(sim, clock, x);
+        }
+        x.load_enable.next = false;
+        let mut pixels = Pixels::new(&tb, first_pixel(&tb));
+        for t in 0..n - words.len() {
+            x.start.next = t == 0;
+            wait_clock_cycle!(sim, clock, x);
+            let px = [
+                x.pixel_r.val().to_u64(),
+                x.pixel_g.val().to_u64(),
+                x.pixel_b.val().to_u64(),
+                x.pixel_a.val().to_u64(),
+            ];
+            pixels.clock("rust-hdl", t, x.done.val(), px, x.has_sample.val());
+        }
+        let errors = pixels.finish();
+        assert!(errors.is_empty(), "{}", errors[0]);
+        sim.done(x)
+    });
+    run_sim(
+        sim,
+        Box::new(uut),
+        10 * n as u64 + 100,
+        "cube3 system load port",
     );
 }
