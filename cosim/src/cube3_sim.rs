@@ -12,7 +12,6 @@ use crate::gtkw::write_gtkw_cube3;
 use crate::sim::Engine;
 use crate::stage::{run_stage_logged, start_only, StageEngine};
 use golden_model::cube3::plan::View;
-use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{render, BasePlane, Frame};
 use hdl::cube3_system::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
@@ -21,11 +20,10 @@ use scene::{Camera, Scene};
 use std::path::Path;
 use std::time::Instant;
 
-/// Memory-module, 2-DSB and delay-line address bits of the simulated
-/// design.
-const A: usize = 22;
-const B: usize = 16;
-const H: usize = 9;
+/// Memory-module, 2-DSB and delay-line address bits: the export's.
+const A: usize = crate::export::ON_CHIP_BITS;
+const B: usize = crate::export::CUBE3_BUFFER_BITS;
+const H: usize = crate::export::CUBE3_LINE_BITS;
 
 /// Clock limits per engine, as for Cube-4L (`sim::MAX_*_BEATS`).
 fn limit(engine: Engine) -> u64 {
@@ -79,12 +77,7 @@ struct Design {
 }
 
 fn design(scene: &Scene, camera: &Camera, vol: &Volume, view: &View) -> Result<Design, String> {
-    let shader = Shader::new(scene, camera, view);
-    let p = scene.hardware.pipelines;
-    let height = (view.v[1] - view.v[0] + 1) as usize;
-    let mut config = Cube3SystemConfig::new(view, &shader, p, view.v[0], height)?;
-    // Volumes beyond on-chip memory live in the external memory model.
-    config.fetch.external = config.fetch.module_words() > 1 << crate::export::ON_CHIP_BITS;
+    let config = crate::export::cube3_config(scene, camera, view)?;
     let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
     let modules = config.fetch.modules(|x, y, k| {
         view.voxel(x as i32, y as i32, k)
@@ -294,25 +287,6 @@ fn run<const P: usize>(d: &Design, vcd: Option<&Path>) -> Result<Pixels, String>
     Ok(pixels)
 }
 
-/// The emitted Verilog of a base plane's design, its memory preloaded.
-fn verilog(d: &Cube3SystemConfig, modules: &[Vec<u16>]) -> Result<String, String> {
-    fn emit<const P: usize>(c: &Cube3SystemConfig, m: &[Vec<u16>]) -> Result<String, String> {
-        let mut uut = Cube3System::<P, A, B, H>::new(c)?;
-        if !c.fetch.external {
-            uut.preload(m);
-        }
-        uut.connect_all();
-        Ok(generate_verilog(&uut))
-    }
-    match d.pipeline.p {
-        1 => emit::<1>(d, modules),
-        2 => emit::<2>(d, modules),
-        4 => emit::<4>(d, modules),
-        8 => emit::<8>(d, modules),
-        p => Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)")),
-    }
-}
-
 /// Run the emitted Verilog; `vcd` gets the trace and a `.gtkw` for the
 /// design's scope `top`.
 fn run_verilog(
@@ -323,7 +297,7 @@ fn run_verilog(
     alter: &dyn Fn(&str) -> String,
     build_seconds: &mut f64,
 ) -> Result<Pixels, String> {
-    let v = alter(&verilog(&d.config, &d.modules)?);
+    let v = alter(&crate::export::cube3_verilog(&d.config, Some(&d.modules))?);
     let ports = crate::stage::ports(&v)?;
     let names: Vec<&str> = ports
         .iter()

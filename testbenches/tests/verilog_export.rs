@@ -10,21 +10,40 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// The committed configurations: (name, scene path).
+/// The committed configurations: (name, scene path), Cube-4L's in
+/// `scenes/verilog/`, Cube-3's in `scenes/verilog/cube3/` (named
+/// `cube3/NAME`, as their directories under `generated_verilog/`).
 fn configs() -> Vec<(String, PathBuf)> {
-    let mut v: Vec<(String, PathBuf)> = std::fs::read_dir(root().join("scenes/verilog"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .map(|p| (p.file_stem().unwrap().to_string_lossy().to_string(), p))
-        .collect();
-    v.sort();
-    assert!(
-        v.len() >= 3,
-        "scenes/verilog holds {} configurations",
-        v.len()
+    let scenes = |dir: &str, prefix: &str| -> Vec<(String, PathBuf)> {
+        let mut v: Vec<(String, PathBuf)> = std::fs::read_dir(root().join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "json"))
+            .map(|p| {
+                (
+                    format!("{prefix}{}", p.file_stem().unwrap().to_string_lossy()),
+                    p,
+                )
+            })
+            .collect();
+        v.sort();
+        v
+    };
+    let (cube4l, cube3) = (
+        scenes("scenes/verilog", ""),
+        scenes("scenes/verilog/cube3", "cube3/"),
     );
-    v
+    assert!(
+        cube4l.len() >= 3,
+        "scenes/verilog holds {} configurations",
+        cube4l.len()
+    );
+    assert!(
+        cube3.len() >= 2,
+        "scenes/verilog/cube3 holds {} configurations",
+        cube3.len()
+    );
+    cube4l.into_iter().chain(cube3).collect()
 }
 
 /// Every file under `dir`, relative to it, sorted.
@@ -52,9 +71,16 @@ fn committed_verilog_is_fresh() {
         let scene = Scene::load(&scene_path).unwrap();
         let cam = scene.camera().unwrap();
         let fresh = tmp.path().join(&name);
-        let file = format!("{name}.json");
-        cosim::export::write_export(&file, &scene, &cam, scene.volume.render_dims(), &fresh)
-            .unwrap();
+        let dims = scene.volume.render_dims();
+        match name.strip_prefix("cube3/") {
+            Some(n) => {
+                cosim::export::write_cube3_export(&format!("{n}.json"), &scene, &cam, dims, &fresh)
+            }
+            None => {
+                cosim::export::write_export(&format!("{name}.json"), &scene, &cam, dims, &fresh)
+            }
+        }
+        .unwrap();
         let committed = root().join("generated_verilog").join(&name);
         let stale = "generated_verilog is stale: run scripts/generate-verilog";
         assert_eq!(
@@ -91,7 +117,12 @@ fn designs() -> Vec<(PathBuf, Vec<String>)> {
         let m: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
                 .unwrap();
-        for s in m["sweeps"].as_array().unwrap() {
+        let key = if name.starts_with("cube3/") {
+            "base_planes"
+        } else {
+            "sweeps"
+        };
+        for s in m[key].as_array().unwrap() {
             let files = s["files"]
                 .as_array()
                 .unwrap()
@@ -132,20 +163,25 @@ fn committed_verilog_lints_clean() {
 #[test]
 fn lint_without_waivers_flags_exactly_the_waived_rules() {
     require_tool("verilator");
-    let (dir, files) = designs()
-        .into_iter()
-        .find(|(d, _)| d.ends_with("mip_p4_64/."))
-        .unwrap();
-    let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into()];
-    args.extend(files);
-    let (ok, log) = run(&dir, "verilator", &args);
-    assert!(!ok, "lint passed without its waivers");
-    for line in log.lines().filter(|l| l.starts_with("%Warning-")) {
-        let rule = &line["%Warning-".len()..line.find(':').unwrap()];
-        assert!(
-            cosim::export::LINT_WAIVERS.contains(&format!("-rule {rule} ")),
-            "an unwaived warning: {line}"
-        );
+    for (design, waivers) in [
+        ("mip_p4_64/.", cosim::export::LINT_WAIVERS),
+        ("cube3/mip_p4_32/.", cosim::export::CUBE3_LINT_WAIVERS),
+    ] {
+        let (dir, files) = designs()
+            .into_iter()
+            .find(|(d, _)| d.ends_with(design))
+            .unwrap();
+        let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into()];
+        args.extend(files);
+        let (ok, log) = run(&dir, "verilator", &args);
+        assert!(!ok, "{design}: lint passed without its waivers");
+        for line in log.lines().filter(|l| l.starts_with("%Warning-")) {
+            let rule = &line["%Warning-".len()..line.find(':').unwrap()];
+            assert!(
+                waivers.contains(&format!("-rule {rule} ")),
+                "{design}: an unwaived warning: {line}"
+            );
+        }
     }
 }
 

@@ -10,13 +10,20 @@ use hdl::pipeline::{Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
 use scene::{Camera, Scene};
 
+mod cube3;
 mod prune;
 mod split;
 mod width_clean;
 
+pub use cube3::{
+    cube3_config, cube3_left_out, cube3_verilog, write_cube3_export, CUBE3_BUFFER_BITS,
+    CUBE3_LINE_BITS,
+};
+
 pub use prune::{left_out, names, prune, LeftOut};
 pub use split::{
-    lint_waivers, split_modules, stage_file, write_stage_files, Module, LINT_WAIVERS, STAGE_FILES,
+    cube3_stage_file, lint_waivers, split_modules, stage_file, write_stage_files, Layout, Module,
+    CUBE3, CUBE3_LINT_WAIVERS, CUBE3_STAGE_FILES, CUBE4L, LINT_WAIVERS, STAGE_FILES,
 };
 pub use width_clean::width_clean;
 
@@ -164,6 +171,7 @@ fn replaceable(out: &std::path::Path) -> Result<(), String> {
             } else {
                 kind.is_file()
                     && (STAGE_FILES.contains(&name.as_str())
+                        || CUBE3_STAGE_FILES.contains(&name.as_str())
                         || name == "lint.vlt"
                         || (top && name == "manifest.json"))
             };
@@ -200,21 +208,8 @@ pub fn write_export(
 ) -> Result<serde_json::Value, String> {
     replaceable(out)?;
     let (designs, memory) = export(scene, camera, dims)?;
-    let parent = match out.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    let leaf = out
-        .file_name()
-        .ok_or_else(|| format!("{} is not a directory path", out.display()))?
-        .to_string_lossy()
-        .to_string();
-    let io = |e: std::io::Error| format!("{}: {e}", out.display());
-    std::fs::create_dir_all(&parent).map_err(io)?;
-    let tmp = parent.join(format!(".{leaf}.tmp{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&tmp);
-    let result = (|| {
-        std::fs::create_dir_all(&tmp).map_err(io)?;
+    write_dir(out, |tmp| {
+        let io = |e: std::io::Error| format!("{}: {e}", out.display());
         let mut sweeps = Vec::new();
         for (i, d) in designs.iter().enumerate() {
             let sub = if designs.len() == 1 {
@@ -224,7 +219,7 @@ pub fn write_export(
             };
             let dir = tmp.join(&sub);
             std::fs::create_dir_all(&dir).map_err(io)?;
-            let files = write_stage_files(&dir, &d.verilog, &d.left_out).map_err(io)?;
+            let files = write_stage_files(&dir, &d.verilog, &d.left_out, &CUBE4L).map_err(io)?;
             let s = &d.sweep;
             let rays = match s.rays {
                 Rays::Parallel { dx, dy } => serde_json::json!({"parallel": {"dx": dx, "dy": dy}}),
@@ -266,6 +261,35 @@ pub fn write_export(
             "sweeps": sweeps,
             "lint": "verilator --lint-only -Wall lint.vlt <files>",
         });
+        Ok(manifest)
+    })
+}
+
+/// Build the export directory `out` through `fill` (given a fresh directory
+/// beside `out`, it writes the files and returns the manifest, which goes to
+/// `manifest.json`), then rename it over `out`: written whole or not at
+/// all. `out` must be replaceable (see [`replaceable`]).
+pub(crate) fn write_dir(
+    out: &std::path::Path,
+    fill: impl FnOnce(&std::path::Path) -> Result<serde_json::Value, String>,
+) -> Result<serde_json::Value, String> {
+    replaceable(out)?;
+    let parent = match out.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    let leaf = out
+        .file_name()
+        .ok_or_else(|| format!("{} is not a directory path", out.display()))?
+        .to_string_lossy()
+        .to_string();
+    let io = |e: std::io::Error| format!("{}: {e}", out.display());
+    std::fs::create_dir_all(&parent).map_err(io)?;
+    let tmp = parent.join(format!(".{leaf}.tmp{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    let result = (|| {
+        std::fs::create_dir_all(&tmp).map_err(io)?;
+        let manifest = fill(&tmp)?;
         let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
         std::fs::write(tmp.join("manifest.json"), text).map_err(io)?;
         let old = parent.join(format!(".{leaf}.old{}", std::process::id()));

@@ -116,10 +116,93 @@ lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
 lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
 "#;
 
+/// How an architecture's emitted design is laid out in files: the stage
+/// files in reading order, the file of each module, and the lint waivers
+/// every design of it needs.
+#[derive(Debug, Clone, Copy)]
+pub struct Layout {
+    pub files: &'static [&'static str],
+    pub stage_file: fn(&str) -> &'static str,
+    pub waivers: &'static str,
+}
+
+/// Cube-4L's pipelines.
+pub const CUBE4L: Layout = Layout {
+    files: &STAGE_FILES,
+    stage_file,
+    waivers: LINT_WAIVERS,
+};
+
+/// The file (one per stage) of a Cube-3 system's module.
+pub fn cube3_stage_file(name: &str) -> &'static str {
+    let parts: Vec<&str> = name.split('$').collect();
+    match parts.as_slice() {
+        ["top"] => "top.v",
+        ["top", "fetch", ..] => "beam_fetch.v",
+        ["top", "pipeline", "control", ..] => "ray_control.v",
+        ["top", "pipeline", "lanes", "units", ..] => "trilin.v",
+        ["top", "pipeline", "lanes", ..] => "trilin_lanes.v",
+        ["top", "pipeline", "rpc", ..] => "rpc.v",
+        _ => "cube3.v",
+    }
+}
+
+/// The Cube-3 stage files, top first.
+pub const CUBE3_STAGE_FILES: [&str; 7] = [
+    "top.v",
+    "beam_fetch.v",
+    "ray_control.v",
+    "trilin_lanes.v",
+    "trilin.v",
+    "cube3.v",
+    "rpc.v",
+];
+
+/// The Cube-3 system's waivers, each narrow and explained as Cube-4L's.
+pub const CUBE3_LINT_WAIVERS: &str = r#"`verilator_config
+// rust-hdl names every module by its instance path, as in top$fetch$schedule,
+// and the kit groups one stage's modules per file, so only top.v can carry
+// its module's name.
+lint_off -rule DECLFILENAME -file "*beam_fetch.v"
+lint_off -rule DECLFILENAME -file "*ray_control.v"
+lint_off -rule DECLFILENAME -file "*trilin_lanes.v"
+lint_off -rule DECLFILENAME -file "*trilin.v"
+lint_off -rule DECLFILENAME -file "*cube3.v"
+lint_off -rule DECLFILENAME -file "*rpc.v"
+// Memory modules, 2-DSBs and delay lines are as deep as the scene needs:
+// they take wide addresses and use only the low bits,
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_address'*"
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_address$*"
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'load_address'*"
+// and the opacity table, as long as the scene's, takes the low bits of a
+// unit's opacity row.
+lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'row$*"
+// The ray control's delayed word carries segment, ray, scanline and valid
+// in 64 bits; the bits above valid are spare.
+lint_off -rule UNUSEDSIGNAL -file "*ray_control.v" -match "*Bits of signal are not used: 'late$data_out'*"
+// The inside bits have one lane bit per unit of up to 8; with fewer units
+// the lane bits above them are unused.
+lint_off -rule UNUSEDPARAM -file "*ray_control.v" -match "*Parameter is not used: 'lane_bit$*"
+lint_off -rule UNUSEDPARAM -file "*cube3.v" -match "*Parameter is not used: 'lane_bit$*"
+// One flag word rides beside the units: the leaf stage takes its inside
+// bits, the RPC one clock later its valid, first and last bits;
+lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'flags_q$7$q'*"
+// and after the accumulator only the last-segment flag is read.
+lint_off -rule UNUSEDSIGNAL -file "*rpc.v" -match "*Bits of signal are not used: 'node_flags_q$*$q'*"
+"#;
+
+/// Cube-3 systems.
+pub const CUBE3: Layout = Layout {
+    files: &CUBE3_STAGE_FILES,
+    stage_file: cube3_stage_file,
+    waivers: CUBE3_LINT_WAIVERS,
+};
+
 /// Verilator waivers for a design with `units` pruned: the inputs its
 /// parents still compute for the removed instances are unread.
-pub fn lint_waivers(units: &[LeftOut]) -> String {
-    let mut s = LINT_WAIVERS.to_string();
+pub fn lint_waivers(units: &[LeftOut], layout: &Layout) -> String {
+    let mut s = layout.waivers.to_string();
     let instances: Vec<&str> = units
         .iter()
         .flat_map(|u| u.instances.iter().copied())
@@ -141,21 +224,22 @@ pub fn write_stage_files(
     dir: &std::path::Path,
     verilog: &str,
     units: &[LeftOut],
+    layout: &Layout,
 ) -> std::io::Result<Vec<String>> {
     let mut texts: std::collections::BTreeMap<&str, String> = Default::default();
     for m in split_modules(verilog) {
         texts
-            .entry(stage_file(&m.name))
+            .entry((layout.stage_file)(&m.name))
             .or_default()
             .push_str(&m.text);
     }
     let mut names = Vec::new();
-    for f in STAGE_FILES {
+    for f in layout.files {
         if let Some(t) = texts.get(f) {
             std::fs::write(dir.join(f), t)?;
             names.push(f.to_string());
         }
     }
-    std::fs::write(dir.join("lint.vlt"), lint_waivers(units))?;
+    std::fs::write(dir.join("lint.vlt"), lint_waivers(units, layout))?;
     Ok(names)
 }

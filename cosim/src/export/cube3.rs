@@ -1,0 +1,153 @@
+//! Verilog export of a Cube-3 system (`hdl::cube3_system`): the emitted
+//! design made width-clean, the units the scene does not need pruned, one
+//! file per stage ([`CUBE3`]) with lint waivers, and a manifest.
+
+use super::{
+    names, prune, width_clean, write_dir, write_stage_files, LeftOut, CUBE3, ON_CHIP_BITS,
+};
+use golden_model::cube3::plan::Plan;
+use golden_model::cube3::shade::Shader;
+use hdl::cube3_system::{Cube3System, Cube3SystemConfig};
+use rust_hdl::prelude::*;
+use scene::{Camera, Mode, Scene};
+
+/// 2-DSB and delay-line address bits of every Cube-3 build.
+pub const CUBE3_BUFFER_BITS: usize = 16;
+pub const CUBE3_LINE_BITS: usize = 9;
+
+/// The units a Cube-3 system leaves out for its scene.
+pub fn cube3_left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
+    let mut v = vec![
+        LeftOut {
+            name: "abc_shading_units (MIP, MinIP and X-ray take no gradient)",
+            instances: &[],
+        },
+        LeftOut {
+            name: "de-fanning (a parallel view's beams shift as a whole)",
+            instances: &[],
+        },
+    ];
+    if !matches!(c.pipeline.mode, Mode::Composite | Mode::FirstOpaque) {
+        v.push(LeftOut {
+            name: "rpc_over_operator_multipliers",
+            instances: &["ch_r", "ch_g", "ch_b", "ch_a"],
+        });
+    }
+    if c.pipeline.opacity.is_none() {
+        v.push(LeftOut {
+            name: "opacity_table (X-ray only)",
+            instances: &["opacity"],
+        });
+    }
+    if c.pipeline.on_grid {
+        v.push(LeftOut {
+            name: "trilin_arithmetic (samples on the grid: zero weights, folded by synthesis)",
+            instances: &[],
+        });
+    }
+    v
+}
+
+/// The Verilog of a Cube-3 system with its unneeded units pruned;
+/// `preload` initialises on-chip memory (simulation only).
+pub fn cube3_verilog(
+    c: &Cube3SystemConfig,
+    preload: Option<&[Vec<u16>]>,
+) -> Result<String, String> {
+    const A: usize = ON_CHIP_BITS;
+    const B: usize = CUBE3_BUFFER_BITS;
+    const H: usize = CUBE3_LINE_BITS;
+    fn emit<const P: usize>(
+        c: &Cube3SystemConfig,
+        preload: Option<&[Vec<u16>]>,
+    ) -> Result<String, String> {
+        let mut uut = Cube3System::<P, A, B, H>::new(c)?;
+        if let Some(m) = preload.filter(|_| !c.fetch.external) {
+            uut.preload(m);
+        }
+        uut.connect_all();
+        prune(&width_clean(&generate_verilog(&uut)), &cube3_left_out(c))
+    }
+    match c.pipeline.p {
+        1 => emit::<1>(c, preload),
+        2 => emit::<2>(c, preload),
+        4 => emit::<4>(c, preload),
+        8 => emit::<8>(c, preload),
+        p => Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)")),
+    }
+}
+
+/// The Cube-3 system of the scene's base plane (parallel views: one),
+/// the whole base plane, its memory external beyond 2^16 voxels a module.
+pub fn cube3_config(
+    scene: &Scene,
+    camera: &Camera,
+    view: &golden_model::cube3::plan::View,
+) -> Result<Cube3SystemConfig, String> {
+    let shader = Shader::new(scene, camera, view);
+    let height = (view.v[1] - view.v[0] + 1) as usize;
+    let mut c = Cube3SystemConfig::new(view, &shader, scene.hardware.pipelines, view.v[0], height)?;
+    c.fetch.external = c.fetch.module_words() > 1 << ON_CHIP_BITS;
+    Ok(c)
+}
+
+/// Export the scene's Cube-3 system into `out` (written whole or not at
+/// all): the stage files, `lint.vlt` and `manifest.json`.
+pub fn write_cube3_export(
+    name: &str,
+    scene: &Scene,
+    camera: &Camera,
+    dims: [usize; 3],
+    out: &std::path::Path,
+) -> Result<serde_json::Value, String> {
+    let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+    let [view] = plan.views.as_slice() else {
+        return Err(format!(
+            "the Cube-3 export builds one base plane (parallel views), not {}",
+            plan.views.len()
+        ));
+    };
+    let c = cube3_config(scene, camera, view)?;
+    let verilog = cube3_verilog(&c, None)?;
+    let units = cube3_left_out(&c);
+    write_dir(out, |tmp| {
+        let files = write_stage_files(tmp, &verilog, &units, &CUBE3)
+            .map_err(|e| format!("{}: {e}", out.display()))?;
+        let (f, p) = (&c.fetch, &c.pipeline);
+        let hw = scene.hardware;
+        Ok(serde_json::json!({
+            "scene": name,
+            "architecture": "cube3",
+            "generator": format!("cube {} with rust-hdl 0.46", env!("CARGO_PKG_VERSION")),
+            "top": "top",
+            "parameters": {
+                "pipelines": p.p,
+                "volume_dims": dims,
+                "traversal_dims": f.dims,
+                "voxel_bits": hw.voxel_bits,
+                "frac_bits": hw.frac_bits,
+                "sample_bits": p.voxel_bits + p.sample_frac,
+                "rgba_bits": hw.rgba_bits,
+                "mode": format!("{:?}", scene.mode),
+                "offset": p.offset,
+                "rays": f.rays,
+                "scanlines": f.scanlines,
+                "segments_per_ray": f.segments,
+                "period_clocks": f.period(),
+                "frame_clocks": c.clocks(),
+                "memory": {
+                    "kind": if f.external { "external" } else { "on-chip" },
+                    "voxels_per_module": f.module_words(),
+                    "module_address_bits": if f.external { 32 } else { ON_CHIP_BITS },
+                },
+                "buffers": {
+                    "two_d_skewed_buffers": 3,
+                    "words_per_buffer_module": f.rays * f.segments,
+                },
+            },
+            "units_left_out": names(&units),
+            "base_planes": [{"dir": ".", "files": files}],
+            "lint": "verilator --lint-only -Wall lint.vlt <files>",
+        }))
+    })
+}

@@ -1,0 +1,1058 @@
+module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  start;
+    input wire  valid;
+    input wire  [15:0] cur$0;
+    input wire  [15:0] cur$1;
+    input wire  [15:0] next$0;
+    input wire  [15:0] next$1;
+    output reg  done;
+    output reg  [31:0] pixel_r;
+    output reg  [15:0] pixel_g;
+    output reg  [15:0] pixel_b;
+    output reg  [15:0] pixel_a;
+    output reg  has_sample;
+    
+    // Constant declarations
+    localparam  xray = 1'b1;
+    localparam  half = 'h8;
+    localparam  frac = 8'h4;
+    localparam  row_shift = 8'h0;
+    localparam  lane_bit$0 = 16'h1;
+    localparam  lane_bit$1 = 16'h2;
+    localparam  lane_bit$2 = 16'h4;
+    localparam  lane_bit$3 = 16'h8;
+    localparam  lane_bit$4 = 16'h10;
+    localparam  lane_bit$5 = 16'h20;
+    localparam  lane_bit$6 = 16'h40;
+    localparam  lane_bit$7 = 16'h80;
+    
+    // Stub signals
+    reg  control$clock;
+    reg  control$start;
+    reg  control$valid;
+    wire  control$first;
+    wire  control$unit_valid;
+    wire  control$unit_first;
+    wire  control$unit_last;
+    wire  [15:0] control$wx$0;
+    wire  [15:0] control$wx$1;
+    wire  [15:0] control$wy$0;
+    wire  [15:0] control$wy$1;
+    wire  [7:0] control$in_volume;
+    reg  lanes$clock;
+    reg  [15:0] lanes$cur$0;
+    reg  [15:0] lanes$cur$1;
+    reg  [15:0] lanes$next$0;
+    reg  [15:0] lanes$next$1;
+    reg  lanes$first;
+    reg  [15:0] lanes$wx$0;
+    reg  [15:0] lanes$wx$1;
+    reg  [15:0] lanes$wy$0;
+    reg  [15:0] lanes$wy$1;
+    wire  [31:0] lanes$sample$0;
+    wire  [31:0] lanes$sample$1;
+    reg  [15:0] flags_q$0$d;
+    wire  [15:0] flags_q$0$q;
+    reg  flags_q$0$clock;
+    reg  [15:0] flags_q$1$d;
+    wire  [15:0] flags_q$1$q;
+    reg  flags_q$1$clock;
+    reg  [15:0] flags_q$2$d;
+    wire  [15:0] flags_q$2$q;
+    reg  flags_q$2$clock;
+    reg  [15:0] flags_q$3$d;
+    wire  [15:0] flags_q$3$q;
+    reg  flags_q$3$clock;
+    reg  [15:0] flags_q$4$d;
+    wire  [15:0] flags_q$4$q;
+    reg  flags_q$4$clock;
+    reg  [15:0] flags_q$5$d;
+    wire  [15:0] flags_q$5$q;
+    reg  flags_q$5$clock;
+    reg  [15:0] flags_q$6$d;
+    wire  [15:0] flags_q$6$q;
+    reg  flags_q$6$clock;
+    reg  [15:0] flags_q$7$d;
+    wire  [15:0] flags_q$7$q;
+    reg  flags_q$7$clock;
+    reg  [11:0] opacity$0$address;
+    wire  [31:0] opacity$0$data;
+    reg  [11:0] opacity$1$address;
+    wire  [31:0] opacity$1$data;
+    reg  [31:0] leaf_q$0$d;
+    wire  [31:0] leaf_q$0$q;
+    reg  leaf_q$0$clock;
+    reg  [31:0] leaf_q$1$d;
+    wire  [31:0] leaf_q$1$q;
+    reg  leaf_q$1$clock;
+    reg  leaf_valid_q$0$d;
+    wire  leaf_valid_q$0$q;
+    reg  leaf_valid_q$0$clock;
+    reg  leaf_valid_q$1$d;
+    wire  leaf_valid_q$1$q;
+    reg  leaf_valid_q$1$clock;
+    reg  rpc$clock;
+    reg  [31:0] rpc$leaf_r$0;
+    reg  [31:0] rpc$leaf_r$1;
+    reg  [15:0] rpc$leaf_g$0;
+    reg  [15:0] rpc$leaf_g$1;
+    reg  [15:0] rpc$leaf_b$0;
+    reg  [15:0] rpc$leaf_b$1;
+    reg  [15:0] rpc$leaf_a$0;
+    reg  [15:0] rpc$leaf_a$1;
+    reg  rpc$leaf_valid$0;
+    reg  rpc$leaf_valid$1;
+    reg  rpc$first;
+    reg  rpc$last;
+    wire  rpc$done;
+    wire  [31:0] rpc$pixel_r;
+    wire  [15:0] rpc$pixel_g;
+    wire  [15:0] rpc$pixel_b;
+    wire  [15:0] rpc$pixel_a;
+    wire  rpc$has_sample;
+    
+    // Local signals
+    reg  [31:0] row$0;
+    reg  [31:0] row$1;
+    
+    // Sub module instances
+    top$pipeline$control control(
+        .clock(control$clock),
+        .start(control$start),
+        .valid(control$valid),
+        .first(control$first),
+        .unit_valid(control$unit_valid),
+        .unit_first(control$unit_first),
+        .unit_last(control$unit_last),
+        .wx$0(control$wx$0),
+        .wx$1(control$wx$1),
+        .wy$0(control$wy$0),
+        .wy$1(control$wy$1),
+        .in_volume(control$in_volume)
+    );
+    top$pipeline$lanes lanes(
+        .clock(lanes$clock),
+        .cur$0(lanes$cur$0),
+        .cur$1(lanes$cur$1),
+        .next$0(lanes$next$0),
+        .next$1(lanes$next$1),
+        .first(lanes$first),
+        .wx$0(lanes$wx$0),
+        .wx$1(lanes$wx$1),
+        .wy$0(lanes$wy$0),
+        .wy$1(lanes$wy$1),
+        .sample$0(lanes$sample$0),
+        .sample$1(lanes$sample$1)
+    );
+    top$pipeline$flags_q$0 flags_q$0(
+        .d(flags_q$0$d),
+        .q(flags_q$0$q),
+        .clock(flags_q$0$clock)
+    );
+    top$pipeline$flags_q$1 flags_q$1(
+        .d(flags_q$1$d),
+        .q(flags_q$1$q),
+        .clock(flags_q$1$clock)
+    );
+    top$pipeline$flags_q$2 flags_q$2(
+        .d(flags_q$2$d),
+        .q(flags_q$2$q),
+        .clock(flags_q$2$clock)
+    );
+    top$pipeline$flags_q$3 flags_q$3(
+        .d(flags_q$3$d),
+        .q(flags_q$3$q),
+        .clock(flags_q$3$clock)
+    );
+    top$pipeline$flags_q$4 flags_q$4(
+        .d(flags_q$4$d),
+        .q(flags_q$4$q),
+        .clock(flags_q$4$clock)
+    );
+    top$pipeline$flags_q$5 flags_q$5(
+        .d(flags_q$5$d),
+        .q(flags_q$5$q),
+        .clock(flags_q$5$clock)
+    );
+    top$pipeline$flags_q$6 flags_q$6(
+        .d(flags_q$6$d),
+        .q(flags_q$6$q),
+        .clock(flags_q$6$clock)
+    );
+    top$pipeline$flags_q$7 flags_q$7(
+        .d(flags_q$7$d),
+        .q(flags_q$7$q),
+        .clock(flags_q$7$clock)
+    );
+    top$pipeline$opacity$0 opacity$0(
+        .address(opacity$0$address),
+        .data(opacity$0$data)
+    );
+    top$pipeline$opacity$1 opacity$1(
+        .address(opacity$1$address),
+        .data(opacity$1$data)
+    );
+    top$pipeline$leaf_q$0 leaf_q$0(
+        .d(leaf_q$0$d),
+        .q(leaf_q$0$q),
+        .clock(leaf_q$0$clock)
+    );
+    top$pipeline$leaf_q$1 leaf_q$1(
+        .d(leaf_q$1$d),
+        .q(leaf_q$1$q),
+        .clock(leaf_q$1$clock)
+    );
+    top$pipeline$leaf_valid_q$0 leaf_valid_q$0(
+        .d(leaf_valid_q$0$d),
+        .q(leaf_valid_q$0$q),
+        .clock(leaf_valid_q$0$clock)
+    );
+    top$pipeline$leaf_valid_q$1 leaf_valid_q$1(
+        .d(leaf_valid_q$1$d),
+        .q(leaf_valid_q$1$q),
+        .clock(leaf_valid_q$1$clock)
+    );
+    top$pipeline$rpc rpc(
+        .clock(rpc$clock),
+        .leaf_r$0(rpc$leaf_r$0),
+        .leaf_r$1(rpc$leaf_r$1),
+        .leaf_g$0(rpc$leaf_g$0),
+        .leaf_g$1(rpc$leaf_g$1),
+        .leaf_b$0(rpc$leaf_b$0),
+        .leaf_b$1(rpc$leaf_b$1),
+        .leaf_a$0(rpc$leaf_a$0),
+        .leaf_a$1(rpc$leaf_a$1),
+        .leaf_valid$0(rpc$leaf_valid$0),
+        .leaf_valid$1(rpc$leaf_valid$1),
+        .first(rpc$first),
+        .last(rpc$last),
+        .done(rpc$done),
+        .pixel_r(rpc$pixel_r),
+        .pixel_g(rpc$pixel_g),
+        .pixel_b(rpc$pixel_b),
+        .pixel_a(rpc$pixel_a),
+        .has_sample(rpc$has_sample)
+    );
+    
+    // Update code
+    always @(*) begin
+        control$clock = clock;
+        lanes$clock = clock;
+        rpc$clock = clock;
+        control$start = start;
+        control$valid = valid;
+        lanes$first = control$first;
+        flags_q$0$clock = clock;
+        flags_q$1$clock = clock;
+        flags_q$2$clock = clock;
+        flags_q$3$clock = clock;
+        flags_q$4$clock = clock;
+        flags_q$5$clock = clock;
+        flags_q$6$clock = clock;
+        flags_q$7$clock = clock;
+        flags_q$0$d = 16'(control$in_volume) | (16'(control$unit_valid) << 'h8) | (16'(control$unit_first) << 'h9) | (16'(control$unit_last) << 'ha);
+        flags_q$1$d = flags_q$0$q;
+        flags_q$2$d = flags_q$1$q;
+        flags_q$3$d = flags_q$2$q;
+        flags_q$4$d = flags_q$3$q;
+        flags_q$5$d = flags_q$4$q;
+        flags_q$6$d = flags_q$5$q;
+        flags_q$7$d = flags_q$6$q;
+        lanes$cur$0 = cur$0;
+        lanes$next$0 = next$0;
+        lanes$wx$0 = control$wx$0;
+        lanes$wy$0 = control$wy$0;
+        leaf_q$0$clock = clock;
+        leaf_valid_q$0$clock = clock;
+        row$0 = (lanes$sample$0 >> frac) >> row_shift;
+        opacity$0$address = row$0[('h0)+:(12)];
+        leaf_valid_q$0$d = |(flags_q$6$q & lane_bit$0);
+        leaf_q$0$d = 'h0;
+        if (|(flags_q$6$q & lane_bit$0)) begin
+            leaf_q$0$d = (lanes$sample$0 + half) >> frac;
+            if (xray) begin
+                leaf_q$0$d = opacity$0$data;
+            end
+        end
+        rpc$leaf_r$0 = leaf_q$0$q;
+        rpc$leaf_g$0 = 'h0;
+        rpc$leaf_b$0 = 'h0;
+        rpc$leaf_a$0 = 'h0;
+        rpc$leaf_valid$0 = leaf_valid_q$0$q;
+        lanes$cur$1 = cur$1;
+        lanes$next$1 = next$1;
+        lanes$wx$1 = control$wx$1;
+        lanes$wy$1 = control$wy$1;
+        leaf_q$1$clock = clock;
+        leaf_valid_q$1$clock = clock;
+        row$1 = (lanes$sample$1 >> frac) >> row_shift;
+        opacity$1$address = row$1[('h0)+:(12)];
+        leaf_valid_q$1$d = |(flags_q$6$q & lane_bit$1);
+        leaf_q$1$d = 'h0;
+        if (|(flags_q$6$q & lane_bit$1)) begin
+            leaf_q$1$d = (lanes$sample$1 + half) >> frac;
+            if (xray) begin
+                leaf_q$1$d = opacity$1$data;
+            end
+        end
+        rpc$leaf_r$1 = leaf_q$1$q;
+        rpc$leaf_g$1 = 'h0;
+        rpc$leaf_b$1 = 'h0;
+        rpc$leaf_a$1 = 'h0;
+        rpc$leaf_valid$1 = leaf_valid_q$1$q;
+        rpc$first = flags_q$7$q['h9] & flags_q$7$q['h8];
+        rpc$last = flags_q$7$q['ha] & flags_q$7$q['h8];
+        done = rpc$done;
+        pixel_r = rpc$pixel_r;
+        pixel_g = rpc$pixel_g;
+        pixel_b = rpc$pixel_b;
+        pixel_a = rpc$pixel_a;
+        has_sample = rpc$has_sample;
+    end
+    
+endmodule // top$pipeline
+module top$pipeline$flags_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$0
+module top$pipeline$flags_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$1
+module top$pipeline$flags_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$2
+module top$pipeline$flags_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$3
+module top$pipeline$flags_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$4
+module top$pipeline$flags_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$5
+module top$pipeline$flags_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$6
+module top$pipeline$flags_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_q$7
+module top$pipeline$leaf_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$leaf_q$0
+module top$pipeline$leaf_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$leaf_q$1
+module top$pipeline$leaf_valid_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$leaf_valid_q$0
+module top$pipeline$leaf_valid_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$leaf_valid_q$1
+module top$pipeline$opacity$0(address,data);
+    
+    // Module arguments
+    input wire  [11:0] address;
+    output reg  [31:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        12'h0: data = 'h0;
+      12'h1: data = 'h0;
+      12'h2: data = 'h0;
+      12'h3: data = 'h0;
+      12'h4: data = 'h0;
+      12'h5: data = 'h0;
+      12'h6: data = 'h0;
+      12'h7: data = 'h0;
+      12'h8: data = 'h0;
+      12'h9: data = 'h0;
+      12'ha: data = 'h0;
+      12'hb: data = 'h0;
+      12'hc: data = 'h0;
+      12'hd: data = 'h0;
+      12'he: data = 'h0;
+      12'hf: data = 'h0;
+      12'h10: data = 'h0;
+      12'h11: data = 'h0;
+      12'h12: data = 'h0;
+      12'h13: data = 'h0;
+      12'h14: data = 'h0;
+      12'h15: data = 'h0;
+      12'h16: data = 'h0;
+      12'h17: data = 'h0;
+      12'h18: data = 'h0;
+      12'h19: data = 'h0;
+      12'h1a: data = 'h0;
+      12'h1b: data = 'h0;
+      12'h1c: data = 'h0;
+      12'h1d: data = 'h0;
+      12'h1e: data = 'h0;
+      12'h1f: data = 'h0;
+      12'h20: data = 'h0;
+      12'h21: data = 'h0;
+      12'h22: data = 'h0;
+      12'h23: data = 'h0;
+      12'h24: data = 'h0;
+      12'h25: data = 'h0;
+      12'h26: data = 'h0;
+      12'h27: data = 'h0;
+      12'h28: data = 'h0;
+      12'h29: data = 'h0;
+      12'h2a: data = 'h0;
+      12'h2b: data = 'h0;
+      12'h2c: data = 'h0;
+      12'h2d: data = 'h0;
+      12'h2e: data = 'h0;
+      12'h2f: data = 'h0;
+      12'h30: data = 'h0;
+      12'h31: data = 'h0;
+      12'h32: data = 'h0;
+      12'h33: data = 'h0;
+      12'h34: data = 'h0;
+      12'h35: data = 'h0;
+      12'h36: data = 'h0;
+      12'h37: data = 'h0;
+      12'h38: data = 'h0;
+      12'h39: data = 'h0;
+      12'h3a: data = 'h0;
+      12'h3b: data = 'h0;
+      12'h3c: data = 'h0;
+      12'h3d: data = 'h0;
+      12'h3e: data = 'h0;
+      12'h3f: data = 'h0;
+      12'h40: data = 'h0;
+      12'h41: data = 'h0;
+      12'h42: data = 'h0;
+      12'h43: data = 'h0;
+      12'h44: data = 'h0;
+      12'h45: data = 'h0;
+      12'h46: data = 'h0;
+      12'h47: data = 'h0;
+      12'h48: data = 'h0;
+      12'h49: data = 'h0;
+      12'h4a: data = 'h0;
+      12'h4b: data = 'h0;
+      12'h4c: data = 'h0;
+      12'h4d: data = 'h0;
+      12'h4e: data = 'h0;
+      12'h4f: data = 'h0;
+      12'h50: data = 'h0;
+      12'h51: data = 'ha;
+      12'h52: data = 'h13;
+      12'h53: data = 'h1d;
+      12'h54: data = 'h26;
+      12'h55: data = 'h30;
+      12'h56: data = 'h39;
+      12'h57: data = 'h43;
+      12'h58: data = 'h4d;
+      12'h59: data = 'h56;
+      12'h5a: data = 'h60;
+      12'h5b: data = 'h69;
+      12'h5c: data = 'h73;
+      12'h5d: data = 'h7c;
+      12'h5e: data = 'h86;
+      12'h5f: data = 'h8f;
+      12'h60: data = 'h99;
+      12'h61: data = 'ha3;
+      12'h62: data = 'hac;
+      12'h63: data = 'hb6;
+      12'h64: data = 'hbf;
+      12'h65: data = 'hbf;
+      12'h66: data = 'hbf;
+      12'h67: data = 'hbf;
+      12'h68: data = 'hbf;
+      12'h69: data = 'hbf;
+      12'h6a: data = 'hbf;
+      12'h6b: data = 'hbf;
+      12'h6c: data = 'hbf;
+      12'h6d: data = 'hbf;
+      12'h6e: data = 'hbf;
+      12'h6f: data = 'hbf;
+      12'h70: data = 'hbf;
+      12'h71: data = 'hbf;
+      12'h72: data = 'hbf;
+      12'h73: data = 'hbf;
+      12'h74: data = 'hbf;
+      12'h75: data = 'hbf;
+      12'h76: data = 'hbf;
+      12'h77: data = 'hbf;
+      12'h78: data = 'hbf;
+      12'h79: data = 'hbf;
+      12'h7a: data = 'hbf;
+      12'h7b: data = 'hbf;
+      12'h7c: data = 'hbf;
+      12'h7d: data = 'hbf;
+      12'h7e: data = 'hbf;
+      12'h7f: data = 'hbf;
+      12'h80: data = 'hbf;
+      12'h81: data = 'hbf;
+      12'h82: data = 'hbf;
+      12'h83: data = 'hbf;
+      12'h84: data = 'hbf;
+      12'h85: data = 'hbf;
+      12'h86: data = 'hbf;
+      12'h87: data = 'hbf;
+      12'h88: data = 'hbf;
+      12'h89: data = 'hbf;
+      12'h8a: data = 'hbf;
+      12'h8b: data = 'hbf;
+      12'h8c: data = 'hbf;
+      12'h8d: data = 'hbf;
+      12'h8e: data = 'hbf;
+      12'h8f: data = 'hbf;
+      12'h90: data = 'hbf;
+      12'h91: data = 'hbf;
+      12'h92: data = 'hbf;
+      12'h93: data = 'hbf;
+      12'h94: data = 'hbf;
+      12'h95: data = 'hbf;
+      12'h96: data = 'hbf;
+      12'h97: data = 'hbf;
+      12'h98: data = 'hbf;
+      12'h99: data = 'hbf;
+      12'h9a: data = 'hbf;
+      12'h9b: data = 'hbf;
+      12'h9c: data = 'hbf;
+      12'h9d: data = 'hbf;
+      12'h9e: data = 'hbf;
+      12'h9f: data = 'hbf;
+      12'ha0: data = 'hbf;
+      12'ha1: data = 'hbf;
+      12'ha2: data = 'hbf;
+      12'ha3: data = 'hbf;
+      12'ha4: data = 'hbf;
+      12'ha5: data = 'hbf;
+      12'ha6: data = 'hbf;
+      12'ha7: data = 'hbf;
+      12'ha8: data = 'hbf;
+      12'ha9: data = 'hbf;
+      12'haa: data = 'hbf;
+      12'hab: data = 'hbf;
+      12'hac: data = 'hbf;
+      12'had: data = 'hbf;
+      12'hae: data = 'hbf;
+      12'haf: data = 'hbf;
+      12'hb0: data = 'hbf;
+      12'hb1: data = 'hbf;
+      12'hb2: data = 'hbf;
+      12'hb3: data = 'hbf;
+      12'hb4: data = 'hbf;
+      12'hb5: data = 'hbf;
+      12'hb6: data = 'hbf;
+      12'hb7: data = 'hbf;
+      12'hb8: data = 'hbf;
+      12'hb9: data = 'hbf;
+      12'hba: data = 'hbf;
+      12'hbb: data = 'hbf;
+      12'hbc: data = 'hbf;
+      12'hbd: data = 'hbf;
+      12'hbe: data = 'hbf;
+      12'hbf: data = 'hbf;
+      12'hc0: data = 'hbf;
+      12'hc1: data = 'hbf;
+      12'hc2: data = 'hbf;
+      12'hc3: data = 'hbf;
+      12'hc4: data = 'hbf;
+      12'hc5: data = 'hbf;
+      12'hc6: data = 'hbf;
+      12'hc7: data = 'hbf;
+      12'hc8: data = 'hbf;
+      12'hc9: data = 'hbf;
+      12'hca: data = 'hbf;
+      12'hcb: data = 'hbf;
+      12'hcc: data = 'hbf;
+      12'hcd: data = 'hbf;
+      12'hce: data = 'hbf;
+      12'hcf: data = 'hbf;
+      12'hd0: data = 'hbf;
+      12'hd1: data = 'hbf;
+      12'hd2: data = 'hbf;
+      12'hd3: data = 'hbf;
+      12'hd4: data = 'hbf;
+      12'hd5: data = 'hbf;
+      12'hd6: data = 'hbf;
+      12'hd7: data = 'hbf;
+      12'hd8: data = 'hbf;
+      12'hd9: data = 'hbf;
+      12'hda: data = 'hbf;
+      12'hdb: data = 'hbf;
+      12'hdc: data = 'hbf;
+      12'hdd: data = 'hbf;
+      12'hde: data = 'hbf;
+      12'hdf: data = 'hbf;
+      12'he0: data = 'hbf;
+      12'he1: data = 'hbf;
+      12'he2: data = 'hbf;
+      12'he3: data = 'hbf;
+      12'he4: data = 'hbf;
+      12'he5: data = 'hbf;
+      12'he6: data = 'hbf;
+      12'he7: data = 'hbf;
+      12'he8: data = 'hbf;
+      12'he9: data = 'hbf;
+      12'hea: data = 'hbf;
+      12'heb: data = 'hbf;
+      12'hec: data = 'hbf;
+      12'hed: data = 'hbf;
+      12'hee: data = 'hbf;
+      12'hef: data = 'hbf;
+      12'hf0: data = 'hbf;
+      12'hf1: data = 'hbf;
+      12'hf2: data = 'hbf;
+      12'hf3: data = 'hbf;
+      12'hf4: data = 'hbf;
+      12'hf5: data = 'hbf;
+      12'hf6: data = 'hbf;
+      12'hf7: data = 'hbf;
+      12'hf8: data = 'hbf;
+      12'hf9: data = 'hbf;
+      12'hfa: data = 'hbf;
+      12'hfb: data = 'hbf;
+      12'hfc: data = 'hbf;
+      12'hfd: data = 'hbf;
+      12'hfe: data = 'hbf;
+      12'hff: data = 'hbf;
+      default: data = 'h0;
+    endcase
+            
+endmodule // top$pipeline$opacity$0
+module top$pipeline$opacity$1(address,data);
+    
+    // Module arguments
+    input wire  [11:0] address;
+    output reg  [31:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        12'h0: data = 'h0;
+      12'h1: data = 'h0;
+      12'h2: data = 'h0;
+      12'h3: data = 'h0;
+      12'h4: data = 'h0;
+      12'h5: data = 'h0;
+      12'h6: data = 'h0;
+      12'h7: data = 'h0;
+      12'h8: data = 'h0;
+      12'h9: data = 'h0;
+      12'ha: data = 'h0;
+      12'hb: data = 'h0;
+      12'hc: data = 'h0;
+      12'hd: data = 'h0;
+      12'he: data = 'h0;
+      12'hf: data = 'h0;
+      12'h10: data = 'h0;
+      12'h11: data = 'h0;
+      12'h12: data = 'h0;
+      12'h13: data = 'h0;
+      12'h14: data = 'h0;
+      12'h15: data = 'h0;
+      12'h16: data = 'h0;
+      12'h17: data = 'h0;
+      12'h18: data = 'h0;
+      12'h19: data = 'h0;
+      12'h1a: data = 'h0;
+      12'h1b: data = 'h0;
+      12'h1c: data = 'h0;
+      12'h1d: data = 'h0;
+      12'h1e: data = 'h0;
+      12'h1f: data = 'h0;
+      12'h20: data = 'h0;
+      12'h21: data = 'h0;
+      12'h22: data = 'h0;
+      12'h23: data = 'h0;
+      12'h24: data = 'h0;
+      12'h25: data = 'h0;
+      12'h26: data = 'h0;
+      12'h27: data = 'h0;
+      12'h28: data = 'h0;
+      12'h29: data = 'h0;
+      12'h2a: data = 'h0;
+      12'h2b: data = 'h0;
+      12'h2c: data = 'h0;
+      12'h2d: data = 'h0;
+      12'h2e: data = 'h0;
+      12'h2f: data = 'h0;
+      12'h30: data = 'h0;
+      12'h31: data = 'h0;
+      12'h32: data = 'h0;
+      12'h33: data = 'h0;
+      12'h34: data = 'h0;
+      12'h35: data = 'h0;
+      12'h36: data = 'h0;
+      12'h37: data = 'h0;
+      12'h38: data = 'h0;
+      12'h39: data = 'h0;
+      12'h3a: data = 'h0;
+      12'h3b: data = 'h0;
+      12'h3c: data = 'h0;
+      12'h3d: data = 'h0;
+      12'h3e: data = 'h0;
+      12'h3f: data = 'h0;
+      12'h40: data = 'h0;
+      12'h41: data = 'h0;
+      12'h42: data = 'h0;
+      12'h43: data = 'h0;
+      12'h44: data = 'h0;
+      12'h45: data = 'h0;
+      12'h46: data = 'h0;
+      12'h47: data = 'h0;
+      12'h48: data = 'h0;
+      12'h49: data = 'h0;
+      12'h4a: data = 'h0;
+      12'h4b: data = 'h0;
+      12'h4c: data = 'h0;
+      12'h4d: data = 'h0;
+      12'h4e: data = 'h0;
+      12'h4f: data = 'h0;
+      12'h50: data = 'h0;
+      12'h51: data = 'ha;
+      12'h52: data = 'h13;
+      12'h53: data = 'h1d;
+      12'h54: data = 'h26;
+      12'h55: data = 'h30;
+      12'h56: data = 'h39;
+      12'h57: data = 'h43;
+      12'h58: data = 'h4d;
+      12'h59: data = 'h56;
+      12'h5a: data = 'h60;
+      12'h5b: data = 'h69;
+      12'h5c: data = 'h73;
+      12'h5d: data = 'h7c;
+      12'h5e: data = 'h86;
+      12'h5f: data = 'h8f;
+      12'h60: data = 'h99;
+      12'h61: data = 'ha3;
+      12'h62: data = 'hac;
+      12'h63: data = 'hb6;
+      12'h64: data = 'hbf;
+      12'h65: data = 'hbf;
+      12'h66: data = 'hbf;
+      12'h67: data = 'hbf;
+      12'h68: data = 'hbf;
+      12'h69: data = 'hbf;
+      12'h6a: data = 'hbf;
+      12'h6b: data = 'hbf;
+      12'h6c: data = 'hbf;
+      12'h6d: data = 'hbf;
+      12'h6e: data = 'hbf;
+      12'h6f: data = 'hbf;
+      12'h70: data = 'hbf;
+      12'h71: data = 'hbf;
+      12'h72: data = 'hbf;
+      12'h73: data = 'hbf;
+      12'h74: data = 'hbf;
+      12'h75: data = 'hbf;
+      12'h76: data = 'hbf;
+      12'h77: data = 'hbf;
+      12'h78: data = 'hbf;
+      12'h79: data = 'hbf;
+      12'h7a: data = 'hbf;
+      12'h7b: data = 'hbf;
+      12'h7c: data = 'hbf;
+      12'h7d: data = 'hbf;
+      12'h7e: data = 'hbf;
+      12'h7f: data = 'hbf;
+      12'h80: data = 'hbf;
+      12'h81: data = 'hbf;
+      12'h82: data = 'hbf;
+      12'h83: data = 'hbf;
+      12'h84: data = 'hbf;
+      12'h85: data = 'hbf;
+      12'h86: data = 'hbf;
+      12'h87: data = 'hbf;
+      12'h88: data = 'hbf;
+      12'h89: data = 'hbf;
+      12'h8a: data = 'hbf;
+      12'h8b: data = 'hbf;
+      12'h8c: data = 'hbf;
+      12'h8d: data = 'hbf;
+      12'h8e: data = 'hbf;
+      12'h8f: data = 'hbf;
+      12'h90: data = 'hbf;
+      12'h91: data = 'hbf;
+      12'h92: data = 'hbf;
+      12'h93: data = 'hbf;
+      12'h94: data = 'hbf;
+      12'h95: data = 'hbf;
+      12'h96: data = 'hbf;
+      12'h97: data = 'hbf;
+      12'h98: data = 'hbf;
+      12'h99: data = 'hbf;
+      12'h9a: data = 'hbf;
+      12'h9b: data = 'hbf;
+      12'h9c: data = 'hbf;
+      12'h9d: data = 'hbf;
+      12'h9e: data = 'hbf;
+      12'h9f: data = 'hbf;
+      12'ha0: data = 'hbf;
+      12'ha1: data = 'hbf;
+      12'ha2: data = 'hbf;
+      12'ha3: data = 'hbf;
+      12'ha4: data = 'hbf;
+      12'ha5: data = 'hbf;
+      12'ha6: data = 'hbf;
+      12'ha7: data = 'hbf;
+      12'ha8: data = 'hbf;
+      12'ha9: data = 'hbf;
+      12'haa: data = 'hbf;
+      12'hab: data = 'hbf;
+      12'hac: data = 'hbf;
+      12'had: data = 'hbf;
+      12'hae: data = 'hbf;
+      12'haf: data = 'hbf;
+      12'hb0: data = 'hbf;
+      12'hb1: data = 'hbf;
+      12'hb2: data = 'hbf;
+      12'hb3: data = 'hbf;
+      12'hb4: data = 'hbf;
+      12'hb5: data = 'hbf;
+      12'hb6: data = 'hbf;
+      12'hb7: data = 'hbf;
+      12'hb8: data = 'hbf;
+      12'hb9: data = 'hbf;
+      12'hba: data = 'hbf;
+      12'hbb: data = 'hbf;
+      12'hbc: data = 'hbf;
+      12'hbd: data = 'hbf;
+      12'hbe: data = 'hbf;
+      12'hbf: data = 'hbf;
+      12'hc0: data = 'hbf;
+      12'hc1: data = 'hbf;
+      12'hc2: data = 'hbf;
+      12'hc3: data = 'hbf;
+      12'hc4: data = 'hbf;
+      12'hc5: data = 'hbf;
+      12'hc6: data = 'hbf;
+      12'hc7: data = 'hbf;
+      12'hc8: data = 'hbf;
+      12'hc9: data = 'hbf;
+      12'hca: data = 'hbf;
+      12'hcb: data = 'hbf;
+      12'hcc: data = 'hbf;
+      12'hcd: data = 'hbf;
+      12'hce: data = 'hbf;
+      12'hcf: data = 'hbf;
+      12'hd0: data = 'hbf;
+      12'hd1: data = 'hbf;
+      12'hd2: data = 'hbf;
+      12'hd3: data = 'hbf;
+      12'hd4: data = 'hbf;
+      12'hd5: data = 'hbf;
+      12'hd6: data = 'hbf;
+      12'hd7: data = 'hbf;
+      12'hd8: data = 'hbf;
+      12'hd9: data = 'hbf;
+      12'hda: data = 'hbf;
+      12'hdb: data = 'hbf;
+      12'hdc: data = 'hbf;
+      12'hdd: data = 'hbf;
+      12'hde: data = 'hbf;
+      12'hdf: data = 'hbf;
+      12'he0: data = 'hbf;
+      12'he1: data = 'hbf;
+      12'he2: data = 'hbf;
+      12'he3: data = 'hbf;
+      12'he4: data = 'hbf;
+      12'he5: data = 'hbf;
+      12'he6: data = 'hbf;
+      12'he7: data = 'hbf;
+      12'he8: data = 'hbf;
+      12'he9: data = 'hbf;
+      12'hea: data = 'hbf;
+      12'heb: data = 'hbf;
+      12'hec: data = 'hbf;
+      12'hed: data = 'hbf;
+      12'hee: data = 'hbf;
+      12'hef: data = 'hbf;
+      12'hf0: data = 'hbf;
+      12'hf1: data = 'hbf;
+      12'hf2: data = 'hbf;
+      12'hf3: data = 'hbf;
+      12'hf4: data = 'hbf;
+      12'hf5: data = 'hbf;
+      12'hf6: data = 'hbf;
+      12'hf7: data = 'hbf;
+      12'hf8: data = 'hbf;
+      12'hf9: data = 'hbf;
+      12'hfa: data = 'hbf;
+      12'hfb: data = 'hbf;
+      12'hfc: data = 'hbf;
+      12'hfd: data = 'hbf;
+      12'hfe: data = 'hbf;
+      12'hff: data = 'hbf;
+      default: data = 'h0;
+    endcase
+            
+endmodule // top$pipeline$opacity$1
