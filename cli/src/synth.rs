@@ -23,10 +23,20 @@ enum SynthTarget {
     Generic,
 }
 
+/// The architecture synthesized.
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum SynthArch {
+    Cube4l,
+    /// Cube-3: parallel views in MIP, MinIP and X-ray so far.
+    Cube3,
+}
+
 #[derive(clap::Args)]
 pub struct SynthArgs {
     #[arg(long)]
     scene: PathBuf,
+    #[arg(long, value_enum, default_value = "cube4l")]
+    arch: SynthArch,
     #[arg(long, value_enum, default_value = "ice40")]
     target: SynthTarget,
     #[arg(long)]
@@ -39,6 +49,7 @@ pub struct SynthArgs {
 pub fn run(args: SynthArgs) -> Result<()> {
     let SynthArgs {
         scene: scene_path,
+        arch,
         target,
         json: json_path,
         no_pnr,
@@ -62,6 +73,9 @@ pub fn run(args: SynthArgs) -> Result<()> {
         .context("creating a temporary directory for yosys")?;
     let dir = work.path().join("design");
     let name = scene_name(&scene_path);
+    if arch == SynthArch::Cube3 {
+        return run_cube3(&name, &scene, &dir, target, pnr, json_path);
+    }
     let result = (|| {
         let m = cosim::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &dir)
             .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
@@ -203,6 +217,112 @@ pub fn run(args: SynthArgs) -> Result<()> {
                 })),
                 "pnr_seconds": r.pnr_seconds,
                 "projected": projection,
+                "units_left_out": m["units_left_out"],
+                "parameters": m["parameters"],
+            }),
+        )?;
+    }
+    Ok(())
+}
+
+/// `cube synth --arch cube3`: the scene's Cube-3 system, its resources, the
+/// 2-DSBs' bits, and with place and route the fmax and this scene's frame
+/// rate.
+fn run_cube3(
+    name: &str,
+    scene: &Scene,
+    dir: &std::path::Path,
+    target: Target,
+    pnr: bool,
+    json_path: Option<PathBuf>,
+) -> Result<()> {
+    let cam = scene.camera()?;
+    let m = cosim::export::write_cube3_export(name, scene, &cam, scene.volume.render_dims(), dir)
+        .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+    let files: Vec<String> = m["base_planes"][0]["files"]
+        .as_array()
+        .context("manifest files")?
+        .iter()
+        .filter_map(|f| f.as_str().map(String::from))
+        .collect();
+    let r = synthesize(dir, &files, target, pnr).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+    let p = scene.hardware.pipelines as u64;
+    let par = &m["parameters"];
+    println!(
+        "{} (cube3): {} cells, {} LUTs, {} flip-flops, {} block RAMs, {} DSPs ({:.1} s); per unit {:.1} LUTs, {:.1} DSPs",
+        target.name(),
+        r.cells,
+        r.luts,
+        r.flip_flops,
+        r.block_rams,
+        r.dsps,
+        r.synth_seconds,
+        r.luts as f64 / p as f64,
+        r.dsps as f64 / p as f64
+    );
+    let words = par["buffers"]["words_per_buffer_module"]
+        .as_u64()
+        .unwrap_or(0);
+    let dsb_bits = 3 * p * words * 16;
+    println!(
+        "2-DSBs: 3 x {p} modules x {words} words of 16 bits = {dsb_bits} bits; RAM primitives after synthesis: {} bits ({} voxel memory)",
+        r.ram_bits,
+        par["memory"]["kind"].as_str().unwrap_or("?")
+    );
+    let frame = par["frame_clocks"].as_u64().unwrap_or(0);
+    if let (Some(part), Some(f)) = (r.part, r.fmax_mhz) {
+        println!(
+            "nextpnr ({part}): fmax {f:.2} MHz; this scene's frame, {frame} clocks: {:.2} frames/s",
+            f * 1e6 / frame as f64
+        );
+        if let Some(t) = &r.timing {
+            println!(
+                "  critical path: {} ({}) -> {} ({}), {} cells, {:.2} ns logic + {:.2} ns routing",
+                t.from.cell,
+                t.from.stage,
+                t.to.cell,
+                t.to.stage,
+                t.cells.len(),
+                t.logic_ns,
+                t.routing_ns
+            );
+        }
+    } else if r.fits == Some(false) {
+        println!(
+            "does not fit an {}: no place and route",
+            r.part.unwrap_or("?")
+        );
+    }
+    if let Some(j) = json_path {
+        write_json(
+            &j,
+            &json!({
+                "scene": name,
+                "architecture": "cube3",
+                "target": target.name(),
+                "pipelines": p,
+                "cells": r.cells,
+                "luts": r.luts,
+                "flip_flops": r.flip_flops,
+                "block_rams": r.block_rams,
+                "dsps": r.dsps,
+                "cell_types": r.cell_types,
+                "dsb_bits": dsb_bits,
+                "ram_primitive_bits": r.ram_bits,
+                "synth_seconds": r.synth_seconds,
+                "part": r.part,
+                "fits": r.fits,
+                "fmax_mhz": r.fmax_mhz,
+                "critical_path": r.timing.as_ref().map(|t| json!({
+                    "from": {"cell": t.from.cell, "stage": t.from.stage},
+                    "to": {"cell": t.to.cell, "stage": t.to.stage},
+                    "cells": t.cells.len(),
+                    "logic_ns": t.logic_ns,
+                    "routing_ns": t.routing_ns,
+                })),
+                "pnr_seconds": r.pnr_seconds,
+                "frame_clocks": frame,
+                "frames_per_second": r.fmax_mhz.map(|f| f * 1e6 / frame as f64),
                 "units_left_out": m["units_left_out"],
                 "parameters": m["parameters"],
             }),

@@ -52,7 +52,8 @@ pub struct Timing {
 }
 
 /// The stage of a cell, from the instance path nextpnr names it by
-/// (`lanes$0.bilinear.ch$0...`), as the stage files group them.
+/// (`lanes$0.bilinear.ch$0...`; Cube-3: `pipeline.lanes.units$1...`), as the
+/// stage files group them.
 pub fn stage_of(cell: &str) -> &'static str {
     let parts: Vec<&str> = cell.split(['.', '$']).collect();
     let after_lane = |i: usize| parts.get(i).copied().unwrap_or("");
@@ -70,6 +71,15 @@ pub fn stage_of(cell: &str) -> &'static str {
             "compositor" => "compositor",
             "ctl" => "control_delay",
             _ => "pipe_lane",
+        },
+        // Cube-3's system.
+        "fetch" => "beam_fetch",
+        "pipeline" => match after_lane(1) {
+            "control" => "ray_control",
+            "lanes" if after_lane(2) == "units" => "trilin",
+            "lanes" => "trilin_lanes",
+            "rpc" => "rpc",
+            _ => "cube3",
         },
         _ => "top",
     }
