@@ -3,6 +3,7 @@
 //! base-plane pixels, and the pixel checker shared by the pipeline's and the
 //! whole system's testbenches.
 
+use cosim::stage::{ports, run_stage, StageEngine};
 use golden_model::cube3::plan::{Neighbourhood, Plan};
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{prp, render_view};
@@ -173,4 +174,36 @@ impl Pixels<'_> {
         }
         self.errors
     }
+}
+
+/// Run a design's Verilog on `vectors` and check the pixels on its `done`,
+/// `pixel_*` and `has_sample` outputs, the first due on clock `first`;
+/// the mismatches.
+pub fn verilog_pixels(
+    engine: StageEngine,
+    c: &Case,
+    verilog: &str,
+    vectors: &[Vec<u64>],
+    first: usize,
+) -> Vec<String> {
+    let outs = run_stage(engine, verilog, vectors).unwrap();
+    let names: Vec<String> = ports(verilog)
+        .unwrap()
+        .into_iter()
+        .filter(|p| !p.input)
+        .map(|p| p.name)
+        .collect();
+    let mut pixels = Pixels::new(c, first);
+    for (t, o) in outs.iter().enumerate() {
+        let get = |n: &str| o[names.iter().position(|x| x == n).unwrap()].unwrap_or(u64::MAX);
+        let px = ["pixel_r", "pixel_g", "pixel_b", "pixel_a"].map(get);
+        pixels.clock(
+            &format!("{engine:?}"),
+            t,
+            get("done") == 1,
+            px,
+            get("has_sample") == 1,
+        );
+    }
+    pixels.finish()
 }

@@ -73,7 +73,7 @@ fn a_fault_in_the_emitted_verilog_is_caught_by_pixels_and_traces() {
     simulate(&s, &cam, &vol, Engine::RustHdl, Some(&rust_vcd)).unwrap();
     // The RPC's accumulator forgets a ray's first segment: it starts from
     // the previous ray's value instead of the identity.
-    let site = "if (root_flags[32'h0]) begin";
+    let site = "if (root_flags['h0]) begin";
     let faulty = simulate_altered(&s, &cam, &vol, Engine::Verilator, Some(&faulty_vcd), &|v| {
         assert!(v.contains(site), "the fault site exists");
         v.replacen(site, "if (1'b0) begin", 1)

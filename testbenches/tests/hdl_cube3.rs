@@ -6,10 +6,10 @@
 //! as emitted Verilog under Icarus and Verilator. The 2-DSB streams are the
 //! golden model's PRPs (`prp::fetch`), as the beam fetch would fill them.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::stage::{ports, StageEngine};
 use hdl::cube3::Cube3;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, Case, Pixels};
+use testbenches::cube3::{cases, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
 const H: usize = 8;
@@ -111,25 +111,7 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
                 .collect()
         })
         .collect();
-    let outs = run_stage(engine, verilog, &vectors).unwrap();
-    let names: Vec<&str> = ports
-        .iter()
-        .filter(|p| !p.input)
-        .map(|p| p.name.as_str())
-        .collect();
-    let mut pixels = Pixels::new(c, first_pixel(c));
-    for (t, o) in outs.iter().enumerate() {
-        let get = |n: &str| o[names.iter().position(|x| *x == n).unwrap()].unwrap_or(u64::MAX);
-        let px = ["pixel_r", "pixel_g", "pixel_b", "pixel_a"].map(get);
-        pixels.clock(
-            &format!("{engine:?}"),
-            t,
-            get("done") == 1,
-            px,
-            get("has_sample") == 1,
-        );
-    }
-    pixels.finish()
+    verilog_pixels(engine, c, verilog, &vectors, first_pixel(c))
 }
 
 fn check<const P: usize>(engine: StageEngine) {

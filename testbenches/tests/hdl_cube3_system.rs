@@ -5,10 +5,10 @@
 //! views (one at exactly 45°) of non-cubic volumes, p = 1, 2, 4 and 8, in
 //! rust-hdl simulation and as emitted Verilog under Icarus and Verilator.
 
-use cosim::stage::{ports, run_stage, start_only, StageEngine};
+use cosim::stage::{ports, start_only, StageEngine};
 use hdl::cube3_system::Cube3System;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, Case, Pixels};
+use testbenches::cube3::{cases, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
 const A: usize = 12;
@@ -79,25 +79,7 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
     let vectors: Vec<Vec<u64>> = (0..c.config.clocks())
         .map(|t| start_only(&ports, t))
         .collect();
-    let outs = run_stage(engine, verilog, &vectors).unwrap();
-    let names: Vec<&str> = ports
-        .iter()
-        .filter(|p| !p.input)
-        .map(|p| p.name.as_str())
-        .collect();
-    let mut pixels = Pixels::new(c, first_pixel(c));
-    for (t, o) in outs.iter().enumerate() {
-        let get = |n: &str| o[names.iter().position(|x| *x == n).unwrap()].unwrap_or(u64::MAX);
-        let px = ["pixel_r", "pixel_g", "pixel_b", "pixel_a"].map(get);
-        pixels.clock(
-            &format!("{engine:?}"),
-            t,
-            get("done") == 1,
-            px,
-            get("has_sample") == 1,
-        );
-    }
-    pixels.finish()
+    verilog_pixels(engine, c, verilog, &vectors, first_pixel(c))
 }
 
 fn check<const P: usize>(engine: StageEngine) {
