@@ -1,15 +1,25 @@
-//! Synthesizable rust-hdl descriptions of the Cube-4L pipeline stages, one
-//! stage per file, each matched bit for bit against the golden model in
-//! `golden_model` by the testbenches: [`cfb`] (skewed memory, address
-//! generator, control bits) with the perspective [`divider`],
-//! [`abc_gradient`], [`shader`], the bilinear unit ([`bilinear`]),
-//! [`compositor`], and [`pipeline`], which joins p pipelines by
-//! nearest-neighbour links. A pipeline's lane adds [`lane_feed`] (input
-//! selection), [`tap_network`] (the compositing-buffer taps, each a
-//! [`buffer_tap`]), [`select2x2`] and [`control_delay`]. [`ram`] is block RAM
-//! as deep as the scene needs, [`unorm`] the exact unorm multiplier. Nothing
-//! here spawns a process or touches a file: the `cosim` crate exports,
-//! simulates and synthesizes these stages.
+//! Synthesizable rust-hdl descriptions of the Cube-4L and Cube-3 stages,
+//! one stage per file, each matched bit for bit against the golden model in
+//! `golden_model` by the testbenches.
+//!
+//! Cube-4L: [`cfb`] (skewed memory, address generator, control bits) with
+//! the perspective [`divider`], [`abc_gradient`], [`shader`], the bilinear
+//! unit ([`bilinear`]), [`compositor`], and [`pipeline`], which joins p
+//! pipelines by nearest-neighbour links. A pipeline's lane adds
+//! [`lane_feed`] (input selection), [`tap_network`] (the compositing-buffer
+//! taps, each a [`buffer_tap`], over [`buffer_rows`]), [`select2x2`] and
+//! [`control_delay`].
+//!
+//! Cube-3: [`beam_fetch`] (CFB, Fast Bus, 2-DSBs), [`trilin_lanes`] and
+//! [`trilin`], [`ray_control`], the ABC gradient lanes ([`abc_unit`],
+//! [`abc_estimator`], [`plane_taps`]), the Ray Projection Cone ([`rpc`],
+//! [`rpc_node`]), [`cube3`] (pipeline and leaf stage) and [`cube3_system`]
+//! (memory to base-plane pixels).
+//!
+//! Shared: [`lerp`], [`over`], [`delay_line`], [`ram`] (block RAM as deep as
+//! the scene needs), [`unorm`] (the exact unorm multiplier). Nothing here
+//! spawns a process or touches a file: the `cosim` crate exports, simulates
+//! and synthesizes these stages.
 
 pub mod abc_estimator;
 pub mod abc_gradient;
