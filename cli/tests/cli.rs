@@ -870,3 +870,62 @@ fn tradeoff_writes_rows_and_an_undominated_front_independent_of_threads() {
         "user data"
     );
 }
+
+#[test]
+fn cube3_sim_verilog_and_their_refusals() {
+    let d = tempfile::tempdir().unwrap();
+    let mip = write(
+        d.path(),
+        "mip.json",
+        r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "parallel", "rotate_deg": [25, 35, 0]},
+            "mode": "mip", "hardware": {"pipelines": 2}}"#,
+    );
+    let o = cube(
+        &[
+            "sim", "--arch", "cube3", "--scene", &mip, "--json", "s.json",
+        ],
+        d.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = read_json(&d.path().join("s.json"));
+    assert_eq!(
+        (s["arch"].as_str(), s["mismatches"].as_u64()),
+        (Some("cube3"), Some(0))
+    );
+    let c = &s["clocks"];
+    let part = |k: &str| c[k].as_u64().unwrap();
+    assert_eq!(
+        s["cycles"].as_u64().unwrap(),
+        part("segments") + part("idle") + part("prologue") - part("tail") + part("drain")
+    );
+    let o = cube(
+        &["verilog", "--arch", "cube3", "--scene", &mip, "--out", "v"],
+        d.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for f in [
+        "top.v",
+        "beam_fetch.v",
+        "trilin.v",
+        "rpc.v",
+        "lint.vlt",
+        "manifest.json",
+    ] {
+        assert!(d.path().join("v").join(f).exists(), "{f} missing");
+    }
+    let composite = write(
+        d.path(),
+        "c.json",
+        r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "parallel", "rotate_deg": [25, 35, 0]},
+            "mode": "composite", "hardware": {"pipelines": 2}}"#,
+    );
+    for cmd in ["sim", "verilog"] {
+        assert_clean_error(
+            &cube(
+                &[cmd, "--arch", "cube3", "--scene", &composite, "--out", "w"],
+                d.path(),
+            ),
+            "MIP, MinIP and X-ray only so far",
+        );
+    }
+}
