@@ -43,6 +43,7 @@
 use crate::ram::DepthRam;
 use golden_model::cube3::plan::{Template, View};
 use rust_hdl::prelude::*;
+use scene::volume::Volume;
 
 /// Address bits of the template ROMs: up to 1023 planes.
 pub const PLANE_BITS: usize = 10;
@@ -117,16 +118,19 @@ impl BeamFetchConfig {
         nx.div_ceil(self.p) * ny * nk
     }
 
-    /// The memory modules' contents for a volume in traversal order
-    /// (`voxel(x, y, k)`).
-    pub fn modules(&self, voxel: impl Fn(usize, usize, usize) -> u16) -> Vec<Vec<u16>> {
+    /// The memory modules' contents: `vol` in `view`'s traversal order,
+    /// skewed.
+    pub fn modules(&self, vol: &Volume, view: &View) -> Vec<Vec<u16>> {
         let [nx, ny, nk] = self.dims;
         let b = nx.div_ceil(self.p);
         let mut m = vec![vec![0u16; self.module_words()]; self.p];
         for k in 0..nk {
             for y in 0..ny {
                 for x in 0..nx {
-                    m[(x + y + k) % self.p][x / self.p + y * b + k * b * ny] = voxel(x, y, k);
+                    let [u, v, w] = view
+                        .voxel(x as i32, y as i32, k)
+                        .expect("a traversal voxel inside the volume");
+                    m[(x + y + k) % self.p][x / self.p + y * b + k * b * ny] = vol.get(u, v, w);
                 }
             }
         }

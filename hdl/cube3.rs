@@ -24,7 +24,7 @@
 //! the last ray of each scanline has no right neighbour in its buffer and
 //! its pixel is not a base-plane pixel.
 
-use crate::ray_control::{RayControl, Tables};
+use crate::ray_control::RayControl;
 use crate::rpc::Rpc;
 use crate::trilin_lanes::TrilinLanes;
 use golden_model::cube3::plan::{sample_pos, Template, View};
@@ -55,7 +55,9 @@ pub struct Cube3Config {
     pub voxel_bits: u32,
     pub sample_frac: u32,
     pub rgba_bits: u32,
-    /// Per plane `k`: `[wx, wy]` and the inside bounds (see `ray_control`).
+    /// Per plane `k`: the weights `[wx, wy]` and the inside bounds
+    /// `[ray_lo, ray_hi, scanline_lo, scanline_hi]` (inclusive stream
+    /// indices; empty as lo > hi).
     pub weights: Vec<[u32; 2]>,
     pub bounds: Vec<[u32; 4]>,
     /// X-ray: the opacity table and its row shift.
@@ -185,12 +187,7 @@ pub struct Cube3<const P: usize, const H: usize> {
 impl<const P: usize, const H: usize> Cube3<P, H> {
     pub fn new(c: &Cube3Config) -> Result<Cube3<P, H>, String> {
         assert_eq!(c.p, P, "the configuration's p");
-        let control = RayControl::new(&Tables {
-            segments: c.segments,
-            rays: c.rays,
-            weights: &c.weights,
-            bounds: &c.bounds,
-        })?;
+        let control = RayControl::new(c)?;
         let lanes = TrilinLanes::new(
             c.segments,
             c.offset,

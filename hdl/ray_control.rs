@@ -20,6 +20,7 @@
 //! found by the golden model's own test on every ray and scanline of the
 //! stream ([`Cube3Config`](crate::cube3::Cube3Config)).
 
+use crate::cube3::Cube3Config;
 use crate::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
@@ -63,18 +64,10 @@ pub struct RayControl<const P: usize, const H: usize> {
     valid_flag: Constant<Bits<64>>,
 }
 
-/// What the ray control is built from: per plane `k`, the weights `[wx,
-/// wy]` and the inside bounds `[ray_lo, ray_hi, scanline_lo,
-/// scanline_hi]` (inclusive, as stream indices; empty when lo > hi).
-pub struct Tables<'a> {
-    pub segments: usize,
-    pub rays: usize,
-    pub weights: &'a [[u32; 2]],
-    pub bounds: &'a [[u32; 4]],
-}
-
 impl<const P: usize, const H: usize> RayControl<P, H> {
-    pub fn new(t: &Tables) -> Result<RayControl<P, H>, String> {
+    /// From the pipeline's weights and inside bounds per plane
+    /// (`Cube3Config::weights`, `bounds`).
+    pub fn new(t: &Cube3Config) -> Result<RayControl<P, H>, String> {
         if P > 8 || t.segments > 1 << SEGMENT_BITS || t.segments + 1 >= 1 << H {
             return Err(format!("rays of {} segments are too long", t.segments));
         }

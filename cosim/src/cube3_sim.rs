@@ -78,11 +78,7 @@ struct Design {
 
 fn design(scene: &Scene, camera: &Camera, vol: &Volume, view: &View) -> Result<Design, String> {
     let config = crate::export::cube3_config(scene, camera, view)?;
-    let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
-    let modules = config.fetch.modules(|x, y, k| {
-        view.voxel(x as i32, y as i32, k)
-            .map_or(0, |d| vol.data[index(d)])
-    });
+    let modules = config.fetch.modules(vol, view);
     Ok(Design { config, modules })
 }
 

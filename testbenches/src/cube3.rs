@@ -36,11 +36,7 @@ pub fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
     let system = Cube3SystemConfig::new(view, &shader, p, v0, scanlines).unwrap();
     let config = &system.pipeline;
     assert_eq!(config.on_grid, name.contains("45 degrees"), "{name}");
-    let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
-    let modules = system.fetch.modules(|x, y, k| {
-        let d = view.voxel(x as i32, y as i32, k).unwrap();
-        vol.data[index(d)]
-    });
+    let modules = system.fetch.modules(&vol, view);
     let (base, _) = render_view(&vol, view, &shader, Neighbourhood::N12, p);
     let (nk, g, r) = (view.dims[2], config.segments, config.rays);
     let (mut cur, mut next, mut want) = (vec![], vec![], vec![]);

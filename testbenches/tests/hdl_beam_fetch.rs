@@ -34,11 +34,7 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
     let (u0, rays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
     let config = BeamFetchConfig::new(view, p, u0, rays, v0, scanlines).unwrap();
-    let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
-    let modules = config.modules(|x, y, k| {
-        let d = view.voxel(x as i32, y as i32, k).unwrap();
-        vol.data[index(d)] as u16
-    });
+    let modules = config.modules(&vol, view);
     let nk = view.dims[2];
     let mut want = Vec::new();
     for vi in 0..scanlines {

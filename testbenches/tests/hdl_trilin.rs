@@ -51,12 +51,7 @@ fn view_case(name: &str, json: &str, lines: i32) -> Case {
         for i in 0..rays - 1 {
             let u = pu0 + i as i32;
             for k in 0..view.dims[2] {
-                let cell = [
-                    [cur.at(u, k), cur.at(u, k + 1)],
-                    [cur.at(u + 1, k), cur.at(u + 1, k + 1)],
-                    [next.at(u, k), next.at(u, k + 1)],
-                    [next.at(u + 1, k), next.at(u + 1, k + 1)],
-                ];
+                let cell = trilin::cell(&cur, &next, u, k);
                 let w = trilin::Weights {
                     offset: view.offset,
                     wx: view.x.weight(u, k),

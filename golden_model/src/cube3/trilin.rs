@@ -73,6 +73,17 @@ impl SamplePlane {
     }
 }
 
+/// The eight voxels of sample `k` of ray `u`: rays A, B from the 2-D
+/// buffer of scanline `v` (`cur`), C, D from that of `v + 1` (`next`).
+pub fn cell(cur: &Prp, next: &Prp, u: i32, k: usize) -> Cell {
+    [
+        [cur.at(u, k), cur.at(u, k + 1)],
+        [cur.at(u + 1, k), cur.at(u + 1, k + 1)],
+        [next.at(u, k), next.at(u, k + 1)],
+        [next.at(u + 1, k), next.at(u + 1, k + 1)],
+    ]
+}
+
 /// Interpolate the plane of scanline `v` from the 2-D buffers of `v` and
 /// `v + 1`, for rays `cur.u0..cur.u0 + cur.rays - 1`.
 pub fn plane(view: &View, v: i32, cur: &Prp, next: &Prp, sample_frac: u32) -> SamplePlane {
@@ -86,18 +97,12 @@ pub fn plane(view: &View, v: i32, cur: &Prp, next: &Prp, sample_frac: u32) -> Sa
             data.push(if view.on_grid {
                 cur.at(u, k) << sample_frac
             } else {
-                let cell = [
-                    [cur.at(u, k), cur.at(u, k + 1)],
-                    [cur.at(u + 1, k), cur.at(u + 1, k + 1)],
-                    [next.at(u, k), next.at(u, k + 1)],
-                    [next.at(u + 1, k), next.at(u + 1, k + 1)],
-                ];
                 let w = Weights {
                     offset: view.offset,
                     wx: view.x.weight(u, k),
                     wy: view.y.weight(v, k),
                 };
-                interpolate(&cell, w, wb, sample_frac)
+                interpolate(&cell(cur, next, u, k), w, wb, sample_frac)
             });
         }
     }
