@@ -472,11 +472,11 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.shader.invalid.next = self.feed.o_invalid.val();
         self.shader.at_edge.next = self.feed.o_edge.val();
         self.shader.gx_neg.next = self.feed.gx_neg.val();
-        self.shader.gx_mag.next = self.feed.gx_mag.val();
+        self.shader.gx_mag.next = bit_cast::<32, 16>(self.feed.gx_mag.val());
         self.shader.gy_neg.next = self.feed.gy_neg.val();
-        self.shader.gy_mag.next = self.feed.gy_mag.val();
+        self.shader.gy_mag.next = bit_cast::<32, 16>(self.feed.gy_mag.val());
         self.shader.gz_neg.next = self.feed.gz_neg.val();
-        self.shader.gz_mag.next = self.feed.gz_mag.val();
+        self.shader.gz_mag.next = bit_cast::<32, 16>(self.feed.gz_mag.val());
         // Control beside the voxel (T-1 to T and the result), the sample T
         // to T+L.
         self.ctl.clock.next = self.clock.val();

@@ -22,7 +22,7 @@
 
 use crate::unorm::MulUnorm;
 use golden_model::fixed::max_of;
-use golden_model::lut::NORMAL_BITS;
+use golden_model::lut::{ColourLut, OpacityLut, ReflectanceMap, NORMAL_BITS};
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -31,8 +31,9 @@ pub const LUT_INDEX_BITS: usize = 12;
 /// Reflectance-map index bits: three 5-bit components.
 pub const REFLECTANCE_BITS: usize = 15;
 
-/// `floor(sqrt(n))` of a 35-bit `n`, digit by digit (shifts, compares and
-/// subtracts; no multiplier), combinational.
+/// `floor(sqrt(n))` of an `n` below `2^62`, digit by digit (shifts,
+/// compares and subtracts; no multiplier), combinational. The leading
+/// digits of a smaller `n` are no-ops, which synthesis folds away.
 #[derive(LogicBlock)]
 struct IntSqrt {
     pub n: Signal<In, Bits<64>>,
@@ -63,12 +64,12 @@ impl Logic for IntSqrt {
     fn update(&mut self) {
         self.op.next = self.n.val();
         self.res.next = 0.into();
-        for i in 0..18 {
-            self.trial.next = self.res.val() + (bit_cast::<64, 1>(1.into()) << (34 - 2 * i));
+        for i in 0..31 {
+            self.trial.next = self.res.val() + (bit_cast::<64, 1>(1.into()) << (60 - 2 * i));
             if self.op.val() >= self.trial.val() {
                 self.op.next = self.op.val() - self.trial.val();
                 self.res.next =
-                    (self.res.val() >> 1) + (bit_cast::<64, 1>(1.into()) << (34 - 2 * i));
+                    (self.res.val() >> 1) + (bit_cast::<64, 1>(1.into()) << (60 - 2 * i));
             } else {
                 self.res.next = self.res.val() >> 1;
             }
@@ -80,6 +81,44 @@ impl Logic for IntSqrt {
     }
 }
 
+/// `m²` of a magnitude below `2^31`, from 16x16 multipliers. Without
+/// `wide` the magnitude has 16 bits and the upper products read 0, for
+/// synthesis to remove.
+#[derive(LogicBlock)]
+struct Square {
+    pub m: Signal<In, Bits<32>>,
+    pub y: Signal<Out, Bits<64>>,
+    wide: Constant<Bit>,
+    hi: Signal<Local, Bits<16>>,
+    lo: Signal<Local, Bits<16>>,
+}
+
+impl Square {
+    fn new(wide: bool) -> Square {
+        Square {
+            m: Default::default(),
+            y: Default::default(),
+            wide: Constant::new(wide),
+            hi: Default::default(),
+            lo: Default::default(),
+        }
+    }
+}
+
+impl Logic for Square {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.lo.next = self.m.val().get_bits::<16>(0);
+        self.hi.next = 0.into();
+        if self.wide.val() {
+            self.hi.next = self.m.val().get_bits::<16>(16);
+        }
+        self.y.next = (bit_cast::<64, 32>(self.hi.val() * self.hi.val()) << 32)
+            + (bit_cast::<64, 32>(self.hi.val() * self.lo.val()) << 17)
+            + bit_cast::<64, 32>(self.lo.val() * self.lo.val());
+    }
+}
+
 #[derive(LogicBlock)]
 pub struct Shader {
     pub clock: Signal<In, Clock>,
@@ -87,11 +126,11 @@ pub struct Shader {
     pub invalid: Signal<In, Bit>,
     pub at_edge: Signal<In, Bit>,
     pub gx_neg: Signal<In, Bit>,
-    pub gx_mag: Signal<In, Bits<16>>,
+    pub gx_mag: Signal<In, Bits<32>>,
     pub gy_neg: Signal<In, Bit>,
-    pub gy_mag: Signal<In, Bits<16>>,
+    pub gy_mag: Signal<In, Bits<32>>,
     pub gz_neg: Signal<In, Bit>,
-    pub gz_mag: Signal<In, Bits<16>>,
+    pub gz_mag: Signal<In, Bits<32>>,
     /// Registered sample: `[r, g, b, a]`, or the intensity in `r` for MIP/MinIP.
     pub r: Signal<Out, Bits<16>>,
     pub g: Signal<Out, Bits<16>>,
@@ -106,9 +145,9 @@ pub struct Shader {
     /// without gradient opacity).
     alpha_gm: ROM<Bits<16>, 16>,
     sqrt: IntSqrt,
-    sq_x: Signal<Local, Bits<32>>,
-    sq_y: Signal<Local, Bits<32>>,
-    sq_z: Signal<Local, Bits<32>>,
+    sq_x: Square,
+    sq_y: Square,
+    sq_z: Square,
     gm_bin: Signal<Local, Bits<32>>,
     row: Signal<Local, Bits<LUT_INDEX_BITS>>,
     gm_on: Constant<Bit>,
@@ -126,7 +165,9 @@ pub struct Shader {
     lit_g: MulUnorm,
     lit_b: MulUnorm,
     alpha: Signal<Local, Bits<16>>,
-    m: Signal<Local, Bits<16>>,
+    m: Signal<Local, Bits<32>>,
+    /// `bit_len[i] = i + 1`.
+    bit_len: [Constant<Bits<8>>; 32],
     bl: Signal<Local, Bits<8>>,
     s: Signal<Local, Bits<8>>,
     half: Signal<Local, Bits<32>>,
@@ -148,10 +189,65 @@ pub struct Shader {
     valid_q: DFF<Bit>,
 }
 
+/// What a shader is built from: the golden model's tables, Cube-4L's or
+/// Cube-3's, and the units its scene needs.
+pub struct Tables<'a> {
+    pub mode: Mode,
+    pub rgba_bits: u32,
+    pub colour: Option<&'a ColourLut>,
+    pub opacity: Option<&'a OpacityLut>,
+    pub reflectance: Option<&'a ReflectanceMap>,
+    /// Gradients are used: the edge rule applies.
+    pub needs_gradient: bool,
+    pub threshold: u32,
+    /// Right shift of the gradient magnitude before the opacity LUT's own
+    /// (Cube-3: the sample's fractional bits).
+    pub magnitude_shift: u32,
+    /// Gradient magnitudes may exceed 16 bits.
+    pub wide: bool,
+}
+
 impl Shader {
-    /// Build from the golden model's shader of the same sweep; `Err` for the
-    /// parts not built in hardware yet.
+    /// Build from the golden model's shader of the same sweep.
     pub fn new(golden: &golden_model::cube4l::shader::Shader) -> Result<Shader, String> {
+        Shader::build(&Tables {
+            mode: golden.mode,
+            rgba_bits: golden.rgba_bits,
+            colour: golden.colour.as_ref(),
+            opacity: golden.opacity.as_ref(),
+            reflectance: golden.reflectance.as_ref(),
+            needs_gradient: golden.needs_gradient,
+            threshold: golden.threshold,
+            magnitude_shift: 0,
+            wide: false,
+        })
+    }
+
+    /// Cube-3's shading for the samples of `golden` (`cube3::shade`): the
+    /// value is the sample's integer part `s >> F`, the gradient the ABC
+    /// unit's word (at most 31 bits), its magnitude shifted by `F` more.
+    pub fn for_cube3(golden: &golden_model::cube3::shade::Shader) -> Result<Shader, String> {
+        let w = golden.widths;
+        if w.gradient_bits > 31 {
+            return Err(format!(
+                "cube3.gradient_bits {} unsupported by the shader (at most 31)",
+                w.gradient_bits
+            ));
+        }
+        Shader::build(&Tables {
+            mode: golden.mode,
+            rgba_bits: w.rgba_bits,
+            colour: golden.colour.as_ref(),
+            opacity: golden.opacity.as_ref(),
+            reflectance: golden.reflectance.as_ref(),
+            needs_gradient: golden.needs_gradient,
+            threshold: golden.threshold,
+            magnitude_shift: w.sample_frac(),
+            wide: w.gradient_bits > 17,
+        })
+    }
+
+    fn build(golden: &Tables) -> Result<Shader, String> {
         assert_eq!(
             NORMAL_BITS, 5,
             "the RTL normal quantizer is built for 5-bit components"
@@ -163,7 +259,7 @@ impl Shader {
         );
         let scalar = matches!(golden.mode, Mode::Mip | Mode::Minip);
         let m = max_of(golden.rgba_bits);
-        let (entries, shift): (Vec<u64>, u32) = match (&golden.colour, &golden.opacity) {
+        let (entries, shift): (Vec<u64>, u32) = match (golden.colour, golden.opacity) {
             (Some(c), Some(o)) => (
                 c.table
                     .iter()
@@ -191,8 +287,8 @@ impl Shader {
             _ => (Vec::new(), 0),
         };
         let lut: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
-        let gm_shift = golden.opacity.as_ref().and_then(|o| o.gm_shift);
-        let alpha_gm: ROM<Bits<16>, 16> = match (&golden.opacity, gm_shift) {
+        let gm_shift = golden.opacity.and_then(|o| o.gm_shift).map(|s| s + golden.magnitude_shift);
+        let alpha_gm: ROM<Bits<16>, 16> = match (golden.opacity, gm_shift) {
             (Some(o), Some(_)) => o
                 .table
                 .iter()
@@ -212,7 +308,7 @@ impl Shader {
                 .into(),
             _ => Vec::<Bits<16>>::new().into_iter().into(),
         };
-        let reflectance: ROM<Bits<32>, REFLECTANCE_BITS> = match &golden.reflectance {
+        let reflectance: ROM<Bits<32>, REFLECTANCE_BITS> = match golden.reflectance {
             Some(r) => r
                 .table
                 .iter()
@@ -243,9 +339,9 @@ impl Shader {
             reflectance,
             alpha_gm,
             sqrt: IntSqrt::new(gm_shift.is_some()),
-            sq_x: Default::default(),
-            sq_y: Default::default(),
-            sq_z: Default::default(),
+            sq_x: Square::new(golden.wide),
+            sq_y: Square::new(golden.wide),
+            sq_z: Square::new(golden.wide),
             gm_bin: Default::default(),
             row: Default::default(),
             gm_on: Constant::new(gm_shift.is_some()),
@@ -264,6 +360,7 @@ impl Shader {
             lit_b: MulUnorm::enabled(golden.rgba_bits, colour),
             alpha: Default::default(),
             m: Default::default(),
+            bit_len: std::array::from_fn(|i| Constant::new((i as u64 + 1).to_bits())),
             bl: Default::default(),
             s: Default::default(),
             half: Default::default(),
@@ -295,12 +392,10 @@ impl Logic for Shader {
         self.lut.address.next = self.row.val();
         self.alpha.next = bit_cast::<16, 64>(self.lut.data.val() >> 48);
         // Gradient magnitude and the two-dimensional opacity LUT.
-        self.sq_x.next = self.gx_mag.val() * self.gx_mag.val();
-        self.sq_y.next = self.gy_mag.val() * self.gy_mag.val();
-        self.sq_z.next = self.gz_mag.val() * self.gz_mag.val();
-        self.sqrt.n.next = bit_cast::<64, 32>(self.sq_x.val())
-            + bit_cast::<64, 32>(self.sq_y.val())
-            + bit_cast::<64, 32>(self.sq_z.val());
+        self.sq_x.m.next = self.gx_mag.val();
+        self.sq_y.m.next = self.gy_mag.val();
+        self.sq_z.m.next = self.gz_mag.val();
+        self.sqrt.n.next = self.sq_x.y.val() + self.sq_y.y.val() + self.sq_z.y.val();
         self.gm_bin.next = self.sqrt.root.val() >> self.gm_shift.val();
         if self.gm_bin.val() > 15 {
             self.gm_bin.next = 15.into();
@@ -322,53 +417,10 @@ impl Logic for Shader {
             self.m.next = self.gz_mag.val();
         }
         self.bl.next = 0.into();
-        if self.m.val() >= 1 {
-            self.bl.next = 1.into();
-        }
-        if self.m.val() >= 2 {
-            self.bl.next = 2.into();
-        }
-        if self.m.val() >= 4 {
-            self.bl.next = 3.into();
-        }
-        if self.m.val() >= 8 {
-            self.bl.next = 4.into();
-        }
-        if self.m.val() >= 16 {
-            self.bl.next = 5.into();
-        }
-        if self.m.val() >= 32 {
-            self.bl.next = 6.into();
-        }
-        if self.m.val() >= 64 {
-            self.bl.next = 7.into();
-        }
-        if self.m.val() >= 128 {
-            self.bl.next = 8.into();
-        }
-        if self.m.val() >= 256 {
-            self.bl.next = 9.into();
-        }
-        if self.m.val() >= 512 {
-            self.bl.next = 10.into();
-        }
-        if self.m.val() >= 1024 {
-            self.bl.next = 11.into();
-        }
-        if self.m.val() >= 2048 {
-            self.bl.next = 12.into();
-        }
-        if self.m.val() >= 4096 {
-            self.bl.next = 13.into();
-        }
-        if self.m.val() >= 8192 {
-            self.bl.next = 14.into();
-        }
-        if self.m.val() >= 16384 {
-            self.bl.next = 15.into();
-        }
-        if self.m.val() >= 32768 {
-            self.bl.next = 16.into();
+        for i in 0..32 {
+            if self.m.val().get_bit(i) {
+                self.bl.next = self.bit_len[i].val();
+            }
         }
         self.s.next = 0.into();
         if self.bl.val() > 4 {
@@ -378,20 +430,20 @@ impl Logic for Shader {
         if self.s.val() > 0 {
             self.half.next = (bit_cast::<32, 16>(1.into()) << self.s.val()) >> 1;
         }
-        self.qx.next = (bit_cast::<32, 16>(self.gx_mag.val()) + self.half.val()) >> self.s.val();
+        self.qx.next = (self.gx_mag.val() + self.half.val()) >> self.s.val();
         if self.gx_neg.val() & (self.s.val() > 0) {
             self.qx.next =
-                (bit_cast::<32, 16>(self.gx_mag.val()) + self.half.val() - 1) >> self.s.val();
+                (self.gx_mag.val() + self.half.val() - 1) >> self.s.val();
         }
-        self.qy.next = (bit_cast::<32, 16>(self.gy_mag.val()) + self.half.val()) >> self.s.val();
+        self.qy.next = (self.gy_mag.val() + self.half.val()) >> self.s.val();
         if self.gy_neg.val() & (self.s.val() > 0) {
             self.qy.next =
-                (bit_cast::<32, 16>(self.gy_mag.val()) + self.half.val() - 1) >> self.s.val();
+                (self.gy_mag.val() + self.half.val() - 1) >> self.s.val();
         }
-        self.qz.next = (bit_cast::<32, 16>(self.gz_mag.val()) + self.half.val()) >> self.s.val();
+        self.qz.next = (self.gz_mag.val() + self.half.val()) >> self.s.val();
         if self.gz_neg.val() & (self.s.val() > 0) {
             self.qz.next =
-                (bit_cast::<32, 16>(self.gz_mag.val()) + self.half.val() - 1) >> self.s.val();
+                (self.gz_mag.val() + self.half.val() - 1) >> self.s.val();
         }
         if self.qx.val() > 15 {
             self.qx.next = 15.into();

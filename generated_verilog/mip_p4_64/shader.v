@@ -6,11 +6,11 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  invalid;
     input wire  at_edge;
     input wire  gx_neg;
-    input wire  [15:0] gx_mag;
+    input wire  [31:0] gx_mag;
     input wire  gy_neg;
-    input wire  [15:0] gy_mag;
+    input wire  [31:0] gy_mag;
     input wire  gz_neg;
-    input wire  [15:0] gz_mag;
+    input wire  [31:0] gz_mag;
     output reg  [15:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
@@ -26,6 +26,38 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
+    localparam  bit_len$0 = 8'h1;
+    localparam  bit_len$1 = 8'h2;
+    localparam  bit_len$2 = 8'h3;
+    localparam  bit_len$3 = 8'h4;
+    localparam  bit_len$4 = 8'h5;
+    localparam  bit_len$5 = 8'h6;
+    localparam  bit_len$6 = 8'h7;
+    localparam  bit_len$7 = 8'h8;
+    localparam  bit_len$8 = 8'h9;
+    localparam  bit_len$9 = 8'ha;
+    localparam  bit_len$10 = 8'hb;
+    localparam  bit_len$11 = 8'hc;
+    localparam  bit_len$12 = 8'hd;
+    localparam  bit_len$13 = 8'he;
+    localparam  bit_len$14 = 8'hf;
+    localparam  bit_len$15 = 8'h10;
+    localparam  bit_len$16 = 8'h11;
+    localparam  bit_len$17 = 8'h12;
+    localparam  bit_len$18 = 8'h13;
+    localparam  bit_len$19 = 8'h14;
+    localparam  bit_len$20 = 8'h15;
+    localparam  bit_len$21 = 8'h16;
+    localparam  bit_len$22 = 8'h17;
+    localparam  bit_len$23 = 8'h18;
+    localparam  bit_len$24 = 8'h19;
+    localparam  bit_len$25 = 8'h1a;
+    localparam  bit_len$26 = 8'h1b;
+    localparam  bit_len$27 = 8'h1c;
+    localparam  bit_len$28 = 8'h1d;
+    localparam  bit_len$29 = 8'h1e;
+    localparam  bit_len$30 = 8'h1f;
+    localparam  bit_len$31 = 8'h20;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -36,6 +68,12 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root = 'h0;
+    reg  [31:0] sq_x$m;
+    wire  [63:0] sq_x$y;
+    reg  [31:0] sq_y$m;
+    wire  [63:0] sq_y$y;
+    reg  [31:0] sq_z$m;
+    wire  [63:0] sq_z$y;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
@@ -71,13 +109,10 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] sq_x;
-    reg  [31:0] sq_y;
-    reg  [31:0] sq_z;
     reg  [31:0] gm_bin;
     reg  [11:0] row;
     reg  [15:0] alpha;
-    reg  [15:0] m;
+    reg  [31:0] m;
     reg  [7:0] bl;
     reg  [7:0] s;
     reg  [31:0] half;
@@ -94,6 +129,18 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$0$shader$sq_x sq_x(
+        .m(sq_x$m),
+        .y(sq_x$y)
+    );
+    top$lanes$0$shader$sq_y sq_y(
+        .m(sq_y$m),
+        .y(sq_y$y)
+    );
+    top$lanes$0$shader$sq_z sq_z(
+        .m(sq_z$m),
+        .y(sq_z$y)
+    );
     top$lanes$0$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -135,10 +182,10 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         row = 12'(value >> shift);
         lut$address = row;
         alpha = 16'(lut$data >> 'h30);
-        sq_x = gx_mag * gx_mag;
-        sq_y = gy_mag * gy_mag;
-        sq_z = gz_mag * gz_mag;
-        sqrt$n = 64'(sq_x) + 64'(sq_y) + 64'(sq_z);
+        sq_x$m = gx_mag;
+        sq_y$m = gy_mag;
+        sq_z$m = gz_mag;
+        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
         gm_bin = sqrt$root >> gm_shift;
         if (gm_bin > 'hf) begin
             gm_bin = 'hf;
@@ -158,53 +205,101 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             m = gz_mag;
         end
         bl = 'h0;
-        if (m >= 'h1) begin
-            bl = 'h1;
+        if (m[0]) begin
+            bl = bit_len$0;
         end
-        if (m >= 'h2) begin
-            bl = 'h2;
+        if (m[1]) begin
+            bl = bit_len$1;
         end
-        if (m >= 'h4) begin
-            bl = 'h3;
+        if (m[2]) begin
+            bl = bit_len$2;
         end
-        if (m >= 'h8) begin
-            bl = 'h4;
+        if (m[3]) begin
+            bl = bit_len$3;
         end
-        if (m >= 'h10) begin
-            bl = 'h5;
+        if (m[4]) begin
+            bl = bit_len$4;
         end
-        if (m >= 'h20) begin
-            bl = 'h6;
+        if (m[5]) begin
+            bl = bit_len$5;
         end
-        if (m >= 'h40) begin
-            bl = 'h7;
+        if (m[6]) begin
+            bl = bit_len$6;
         end
-        if (m >= 'h80) begin
-            bl = 'h8;
+        if (m[7]) begin
+            bl = bit_len$7;
         end
-        if (m >= 'h100) begin
-            bl = 'h9;
+        if (m[8]) begin
+            bl = bit_len$8;
         end
-        if (m >= 'h200) begin
-            bl = 'ha;
+        if (m[9]) begin
+            bl = bit_len$9;
         end
-        if (m >= 'h400) begin
-            bl = 'hb;
+        if (m[10]) begin
+            bl = bit_len$10;
         end
-        if (m >= 'h800) begin
-            bl = 'hc;
+        if (m[11]) begin
+            bl = bit_len$11;
         end
-        if (m >= 'h1000) begin
-            bl = 'hd;
+        if (m[12]) begin
+            bl = bit_len$12;
         end
-        if (m >= 'h2000) begin
-            bl = 'he;
+        if (m[13]) begin
+            bl = bit_len$13;
         end
-        if (m >= 'h4000) begin
-            bl = 'hf;
+        if (m[14]) begin
+            bl = bit_len$14;
         end
-        if (m >= 'h8000) begin
-            bl = 'h10;
+        if (m[15]) begin
+            bl = bit_len$15;
+        end
+        if (m[16]) begin
+            bl = bit_len$16;
+        end
+        if (m[17]) begin
+            bl = bit_len$17;
+        end
+        if (m[18]) begin
+            bl = bit_len$18;
+        end
+        if (m[19]) begin
+            bl = bit_len$19;
+        end
+        if (m[20]) begin
+            bl = bit_len$20;
+        end
+        if (m[21]) begin
+            bl = bit_len$21;
+        end
+        if (m[22]) begin
+            bl = bit_len$22;
+        end
+        if (m[23]) begin
+            bl = bit_len$23;
+        end
+        if (m[24]) begin
+            bl = bit_len$24;
+        end
+        if (m[25]) begin
+            bl = bit_len$25;
+        end
+        if (m[26]) begin
+            bl = bit_len$26;
+        end
+        if (m[27]) begin
+            bl = bit_len$27;
+        end
+        if (m[28]) begin
+            bl = bit_len$28;
+        end
+        if (m[29]) begin
+            bl = bit_len$29;
+        end
+        if (m[30]) begin
+            bl = bit_len$30;
+        end
+        if (m[31]) begin
+            bl = bit_len$31;
         end
         s = 'h0;
         if (bl > 'h4) begin
@@ -214,17 +309,17 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (s > 'h0) begin
             half = (32'('h1) << s) >> 'h1;
         end
-        qx = (32'(gx_mag) + half) >> s;
+        qx = (gx_mag + half) >> s;
         if (gx_neg & (s > 'h0)) begin
-            qx = (32'(gx_mag) + half - 'h1) >> s;
+            qx = (gx_mag + half - 'h1) >> s;
         end
-        qy = (32'(gy_mag) + half) >> s;
+        qy = (gy_mag + half) >> s;
         if (gy_neg & (s > 'h0)) begin
-            qy = (32'(gy_mag) + half - 'h1) >> s;
+            qy = (gy_mag + half - 'h1) >> s;
         end
-        qz = (32'(gz_mag) + half) >> s;
+        qz = (gz_mag + half) >> s;
         if (gz_neg & (s > 'h0)) begin
-            qz = (32'(gz_mag) + half - 'h1) >> s;
+            qz = (gz_mag + half - 'h1) >> s;
         end
         if (qx > 'hf) begin
             qx = 'hf;
@@ -376,6 +471,78 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
+module top$lanes$0$shader$sq_x(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$0$shader$sq_x
+module top$lanes$0$shader$sq_y(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$0$shader$sq_y
+module top$lanes$0$shader$sq_z(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$0$shader$sq_z
 module top$lanes$0$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -401,11 +568,11 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  invalid;
     input wire  at_edge;
     input wire  gx_neg;
-    input wire  [15:0] gx_mag;
+    input wire  [31:0] gx_mag;
     input wire  gy_neg;
-    input wire  [15:0] gy_mag;
+    input wire  [31:0] gy_mag;
     input wire  gz_neg;
-    input wire  [15:0] gz_mag;
+    input wire  [31:0] gz_mag;
     output reg  [15:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
@@ -421,6 +588,38 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
+    localparam  bit_len$0 = 8'h1;
+    localparam  bit_len$1 = 8'h2;
+    localparam  bit_len$2 = 8'h3;
+    localparam  bit_len$3 = 8'h4;
+    localparam  bit_len$4 = 8'h5;
+    localparam  bit_len$5 = 8'h6;
+    localparam  bit_len$6 = 8'h7;
+    localparam  bit_len$7 = 8'h8;
+    localparam  bit_len$8 = 8'h9;
+    localparam  bit_len$9 = 8'ha;
+    localparam  bit_len$10 = 8'hb;
+    localparam  bit_len$11 = 8'hc;
+    localparam  bit_len$12 = 8'hd;
+    localparam  bit_len$13 = 8'he;
+    localparam  bit_len$14 = 8'hf;
+    localparam  bit_len$15 = 8'h10;
+    localparam  bit_len$16 = 8'h11;
+    localparam  bit_len$17 = 8'h12;
+    localparam  bit_len$18 = 8'h13;
+    localparam  bit_len$19 = 8'h14;
+    localparam  bit_len$20 = 8'h15;
+    localparam  bit_len$21 = 8'h16;
+    localparam  bit_len$22 = 8'h17;
+    localparam  bit_len$23 = 8'h18;
+    localparam  bit_len$24 = 8'h19;
+    localparam  bit_len$25 = 8'h1a;
+    localparam  bit_len$26 = 8'h1b;
+    localparam  bit_len$27 = 8'h1c;
+    localparam  bit_len$28 = 8'h1d;
+    localparam  bit_len$29 = 8'h1e;
+    localparam  bit_len$30 = 8'h1f;
+    localparam  bit_len$31 = 8'h20;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -431,6 +630,12 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root = 'h0;
+    reg  [31:0] sq_x$m;
+    wire  [63:0] sq_x$y;
+    reg  [31:0] sq_y$m;
+    wire  [63:0] sq_y$y;
+    reg  [31:0] sq_z$m;
+    wire  [63:0] sq_z$y;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
@@ -466,13 +671,10 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] sq_x;
-    reg  [31:0] sq_y;
-    reg  [31:0] sq_z;
     reg  [31:0] gm_bin;
     reg  [11:0] row;
     reg  [15:0] alpha;
-    reg  [15:0] m;
+    reg  [31:0] m;
     reg  [7:0] bl;
     reg  [7:0] s;
     reg  [31:0] half;
@@ -489,6 +691,18 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$1$shader$sq_x sq_x(
+        .m(sq_x$m),
+        .y(sq_x$y)
+    );
+    top$lanes$1$shader$sq_y sq_y(
+        .m(sq_y$m),
+        .y(sq_y$y)
+    );
+    top$lanes$1$shader$sq_z sq_z(
+        .m(sq_z$m),
+        .y(sq_z$y)
+    );
     top$lanes$1$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -530,10 +744,10 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         row = 12'(value >> shift);
         lut$address = row;
         alpha = 16'(lut$data >> 'h30);
-        sq_x = gx_mag * gx_mag;
-        sq_y = gy_mag * gy_mag;
-        sq_z = gz_mag * gz_mag;
-        sqrt$n = 64'(sq_x) + 64'(sq_y) + 64'(sq_z);
+        sq_x$m = gx_mag;
+        sq_y$m = gy_mag;
+        sq_z$m = gz_mag;
+        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
         gm_bin = sqrt$root >> gm_shift;
         if (gm_bin > 'hf) begin
             gm_bin = 'hf;
@@ -553,53 +767,101 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             m = gz_mag;
         end
         bl = 'h0;
-        if (m >= 'h1) begin
-            bl = 'h1;
+        if (m[0]) begin
+            bl = bit_len$0;
         end
-        if (m >= 'h2) begin
-            bl = 'h2;
+        if (m[1]) begin
+            bl = bit_len$1;
         end
-        if (m >= 'h4) begin
-            bl = 'h3;
+        if (m[2]) begin
+            bl = bit_len$2;
         end
-        if (m >= 'h8) begin
-            bl = 'h4;
+        if (m[3]) begin
+            bl = bit_len$3;
         end
-        if (m >= 'h10) begin
-            bl = 'h5;
+        if (m[4]) begin
+            bl = bit_len$4;
         end
-        if (m >= 'h20) begin
-            bl = 'h6;
+        if (m[5]) begin
+            bl = bit_len$5;
         end
-        if (m >= 'h40) begin
-            bl = 'h7;
+        if (m[6]) begin
+            bl = bit_len$6;
         end
-        if (m >= 'h80) begin
-            bl = 'h8;
+        if (m[7]) begin
+            bl = bit_len$7;
         end
-        if (m >= 'h100) begin
-            bl = 'h9;
+        if (m[8]) begin
+            bl = bit_len$8;
         end
-        if (m >= 'h200) begin
-            bl = 'ha;
+        if (m[9]) begin
+            bl = bit_len$9;
         end
-        if (m >= 'h400) begin
-            bl = 'hb;
+        if (m[10]) begin
+            bl = bit_len$10;
         end
-        if (m >= 'h800) begin
-            bl = 'hc;
+        if (m[11]) begin
+            bl = bit_len$11;
         end
-        if (m >= 'h1000) begin
-            bl = 'hd;
+        if (m[12]) begin
+            bl = bit_len$12;
         end
-        if (m >= 'h2000) begin
-            bl = 'he;
+        if (m[13]) begin
+            bl = bit_len$13;
         end
-        if (m >= 'h4000) begin
-            bl = 'hf;
+        if (m[14]) begin
+            bl = bit_len$14;
         end
-        if (m >= 'h8000) begin
-            bl = 'h10;
+        if (m[15]) begin
+            bl = bit_len$15;
+        end
+        if (m[16]) begin
+            bl = bit_len$16;
+        end
+        if (m[17]) begin
+            bl = bit_len$17;
+        end
+        if (m[18]) begin
+            bl = bit_len$18;
+        end
+        if (m[19]) begin
+            bl = bit_len$19;
+        end
+        if (m[20]) begin
+            bl = bit_len$20;
+        end
+        if (m[21]) begin
+            bl = bit_len$21;
+        end
+        if (m[22]) begin
+            bl = bit_len$22;
+        end
+        if (m[23]) begin
+            bl = bit_len$23;
+        end
+        if (m[24]) begin
+            bl = bit_len$24;
+        end
+        if (m[25]) begin
+            bl = bit_len$25;
+        end
+        if (m[26]) begin
+            bl = bit_len$26;
+        end
+        if (m[27]) begin
+            bl = bit_len$27;
+        end
+        if (m[28]) begin
+            bl = bit_len$28;
+        end
+        if (m[29]) begin
+            bl = bit_len$29;
+        end
+        if (m[30]) begin
+            bl = bit_len$30;
+        end
+        if (m[31]) begin
+            bl = bit_len$31;
         end
         s = 'h0;
         if (bl > 'h4) begin
@@ -609,17 +871,17 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (s > 'h0) begin
             half = (32'('h1) << s) >> 'h1;
         end
-        qx = (32'(gx_mag) + half) >> s;
+        qx = (gx_mag + half) >> s;
         if (gx_neg & (s > 'h0)) begin
-            qx = (32'(gx_mag) + half - 'h1) >> s;
+            qx = (gx_mag + half - 'h1) >> s;
         end
-        qy = (32'(gy_mag) + half) >> s;
+        qy = (gy_mag + half) >> s;
         if (gy_neg & (s > 'h0)) begin
-            qy = (32'(gy_mag) + half - 'h1) >> s;
+            qy = (gy_mag + half - 'h1) >> s;
         end
-        qz = (32'(gz_mag) + half) >> s;
+        qz = (gz_mag + half) >> s;
         if (gz_neg & (s > 'h0)) begin
-            qz = (32'(gz_mag) + half - 'h1) >> s;
+            qz = (gz_mag + half - 'h1) >> s;
         end
         if (qx > 'hf) begin
             qx = 'hf;
@@ -771,6 +1033,78 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
+module top$lanes$1$shader$sq_x(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$1$shader$sq_x
+module top$lanes$1$shader$sq_y(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$1$shader$sq_y
+module top$lanes$1$shader$sq_z(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$1$shader$sq_z
 module top$lanes$1$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -796,11 +1130,11 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  invalid;
     input wire  at_edge;
     input wire  gx_neg;
-    input wire  [15:0] gx_mag;
+    input wire  [31:0] gx_mag;
     input wire  gy_neg;
-    input wire  [15:0] gy_mag;
+    input wire  [31:0] gy_mag;
     input wire  gz_neg;
-    input wire  [15:0] gz_mag;
+    input wire  [31:0] gz_mag;
     output reg  [15:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
@@ -816,6 +1150,38 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
+    localparam  bit_len$0 = 8'h1;
+    localparam  bit_len$1 = 8'h2;
+    localparam  bit_len$2 = 8'h3;
+    localparam  bit_len$3 = 8'h4;
+    localparam  bit_len$4 = 8'h5;
+    localparam  bit_len$5 = 8'h6;
+    localparam  bit_len$6 = 8'h7;
+    localparam  bit_len$7 = 8'h8;
+    localparam  bit_len$8 = 8'h9;
+    localparam  bit_len$9 = 8'ha;
+    localparam  bit_len$10 = 8'hb;
+    localparam  bit_len$11 = 8'hc;
+    localparam  bit_len$12 = 8'hd;
+    localparam  bit_len$13 = 8'he;
+    localparam  bit_len$14 = 8'hf;
+    localparam  bit_len$15 = 8'h10;
+    localparam  bit_len$16 = 8'h11;
+    localparam  bit_len$17 = 8'h12;
+    localparam  bit_len$18 = 8'h13;
+    localparam  bit_len$19 = 8'h14;
+    localparam  bit_len$20 = 8'h15;
+    localparam  bit_len$21 = 8'h16;
+    localparam  bit_len$22 = 8'h17;
+    localparam  bit_len$23 = 8'h18;
+    localparam  bit_len$24 = 8'h19;
+    localparam  bit_len$25 = 8'h1a;
+    localparam  bit_len$26 = 8'h1b;
+    localparam  bit_len$27 = 8'h1c;
+    localparam  bit_len$28 = 8'h1d;
+    localparam  bit_len$29 = 8'h1e;
+    localparam  bit_len$30 = 8'h1f;
+    localparam  bit_len$31 = 8'h20;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -826,6 +1192,12 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root = 'h0;
+    reg  [31:0] sq_x$m;
+    wire  [63:0] sq_x$y;
+    reg  [31:0] sq_y$m;
+    wire  [63:0] sq_y$y;
+    reg  [31:0] sq_z$m;
+    wire  [63:0] sq_z$y;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
@@ -861,13 +1233,10 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] sq_x;
-    reg  [31:0] sq_y;
-    reg  [31:0] sq_z;
     reg  [31:0] gm_bin;
     reg  [11:0] row;
     reg  [15:0] alpha;
-    reg  [15:0] m;
+    reg  [31:0] m;
     reg  [7:0] bl;
     reg  [7:0] s;
     reg  [31:0] half;
@@ -884,6 +1253,18 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$2$shader$sq_x sq_x(
+        .m(sq_x$m),
+        .y(sq_x$y)
+    );
+    top$lanes$2$shader$sq_y sq_y(
+        .m(sq_y$m),
+        .y(sq_y$y)
+    );
+    top$lanes$2$shader$sq_z sq_z(
+        .m(sq_z$m),
+        .y(sq_z$y)
+    );
     top$lanes$2$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -925,10 +1306,10 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         row = 12'(value >> shift);
         lut$address = row;
         alpha = 16'(lut$data >> 'h30);
-        sq_x = gx_mag * gx_mag;
-        sq_y = gy_mag * gy_mag;
-        sq_z = gz_mag * gz_mag;
-        sqrt$n = 64'(sq_x) + 64'(sq_y) + 64'(sq_z);
+        sq_x$m = gx_mag;
+        sq_y$m = gy_mag;
+        sq_z$m = gz_mag;
+        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
         gm_bin = sqrt$root >> gm_shift;
         if (gm_bin > 'hf) begin
             gm_bin = 'hf;
@@ -948,53 +1329,101 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             m = gz_mag;
         end
         bl = 'h0;
-        if (m >= 'h1) begin
-            bl = 'h1;
+        if (m[0]) begin
+            bl = bit_len$0;
         end
-        if (m >= 'h2) begin
-            bl = 'h2;
+        if (m[1]) begin
+            bl = bit_len$1;
         end
-        if (m >= 'h4) begin
-            bl = 'h3;
+        if (m[2]) begin
+            bl = bit_len$2;
         end
-        if (m >= 'h8) begin
-            bl = 'h4;
+        if (m[3]) begin
+            bl = bit_len$3;
         end
-        if (m >= 'h10) begin
-            bl = 'h5;
+        if (m[4]) begin
+            bl = bit_len$4;
         end
-        if (m >= 'h20) begin
-            bl = 'h6;
+        if (m[5]) begin
+            bl = bit_len$5;
         end
-        if (m >= 'h40) begin
-            bl = 'h7;
+        if (m[6]) begin
+            bl = bit_len$6;
         end
-        if (m >= 'h80) begin
-            bl = 'h8;
+        if (m[7]) begin
+            bl = bit_len$7;
         end
-        if (m >= 'h100) begin
-            bl = 'h9;
+        if (m[8]) begin
+            bl = bit_len$8;
         end
-        if (m >= 'h200) begin
-            bl = 'ha;
+        if (m[9]) begin
+            bl = bit_len$9;
         end
-        if (m >= 'h400) begin
-            bl = 'hb;
+        if (m[10]) begin
+            bl = bit_len$10;
         end
-        if (m >= 'h800) begin
-            bl = 'hc;
+        if (m[11]) begin
+            bl = bit_len$11;
         end
-        if (m >= 'h1000) begin
-            bl = 'hd;
+        if (m[12]) begin
+            bl = bit_len$12;
         end
-        if (m >= 'h2000) begin
-            bl = 'he;
+        if (m[13]) begin
+            bl = bit_len$13;
         end
-        if (m >= 'h4000) begin
-            bl = 'hf;
+        if (m[14]) begin
+            bl = bit_len$14;
         end
-        if (m >= 'h8000) begin
-            bl = 'h10;
+        if (m[15]) begin
+            bl = bit_len$15;
+        end
+        if (m[16]) begin
+            bl = bit_len$16;
+        end
+        if (m[17]) begin
+            bl = bit_len$17;
+        end
+        if (m[18]) begin
+            bl = bit_len$18;
+        end
+        if (m[19]) begin
+            bl = bit_len$19;
+        end
+        if (m[20]) begin
+            bl = bit_len$20;
+        end
+        if (m[21]) begin
+            bl = bit_len$21;
+        end
+        if (m[22]) begin
+            bl = bit_len$22;
+        end
+        if (m[23]) begin
+            bl = bit_len$23;
+        end
+        if (m[24]) begin
+            bl = bit_len$24;
+        end
+        if (m[25]) begin
+            bl = bit_len$25;
+        end
+        if (m[26]) begin
+            bl = bit_len$26;
+        end
+        if (m[27]) begin
+            bl = bit_len$27;
+        end
+        if (m[28]) begin
+            bl = bit_len$28;
+        end
+        if (m[29]) begin
+            bl = bit_len$29;
+        end
+        if (m[30]) begin
+            bl = bit_len$30;
+        end
+        if (m[31]) begin
+            bl = bit_len$31;
         end
         s = 'h0;
         if (bl > 'h4) begin
@@ -1004,17 +1433,17 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (s > 'h0) begin
             half = (32'('h1) << s) >> 'h1;
         end
-        qx = (32'(gx_mag) + half) >> s;
+        qx = (gx_mag + half) >> s;
         if (gx_neg & (s > 'h0)) begin
-            qx = (32'(gx_mag) + half - 'h1) >> s;
+            qx = (gx_mag + half - 'h1) >> s;
         end
-        qy = (32'(gy_mag) + half) >> s;
+        qy = (gy_mag + half) >> s;
         if (gy_neg & (s > 'h0)) begin
-            qy = (32'(gy_mag) + half - 'h1) >> s;
+            qy = (gy_mag + half - 'h1) >> s;
         end
-        qz = (32'(gz_mag) + half) >> s;
+        qz = (gz_mag + half) >> s;
         if (gz_neg & (s > 'h0)) begin
-            qz = (32'(gz_mag) + half - 'h1) >> s;
+            qz = (gz_mag + half - 'h1) >> s;
         end
         if (qx > 'hf) begin
             qx = 'hf;
@@ -1166,6 +1595,78 @@ module top$lanes$2$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$r_q
+module top$lanes$2$shader$sq_x(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$2$shader$sq_x
+module top$lanes$2$shader$sq_y(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$2$shader$sq_y
+module top$lanes$2$shader$sq_z(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$2$shader$sq_z
 module top$lanes$2$shader$valid_q(d,q,clock);
     
     // Module arguments
@@ -1191,11 +1692,11 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  invalid;
     input wire  at_edge;
     input wire  gx_neg;
-    input wire  [15:0] gx_mag;
+    input wire  [31:0] gx_mag;
     input wire  gy_neg;
-    input wire  [15:0] gy_mag;
+    input wire  [31:0] gy_mag;
     input wire  gz_neg;
-    input wire  [15:0] gz_mag;
+    input wire  [31:0] gz_mag;
     output reg  [15:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
@@ -1211,6 +1712,38 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
+    localparam  bit_len$0 = 8'h1;
+    localparam  bit_len$1 = 8'h2;
+    localparam  bit_len$2 = 8'h3;
+    localparam  bit_len$3 = 8'h4;
+    localparam  bit_len$4 = 8'h5;
+    localparam  bit_len$5 = 8'h6;
+    localparam  bit_len$6 = 8'h7;
+    localparam  bit_len$7 = 8'h8;
+    localparam  bit_len$8 = 8'h9;
+    localparam  bit_len$9 = 8'ha;
+    localparam  bit_len$10 = 8'hb;
+    localparam  bit_len$11 = 8'hc;
+    localparam  bit_len$12 = 8'hd;
+    localparam  bit_len$13 = 8'he;
+    localparam  bit_len$14 = 8'hf;
+    localparam  bit_len$15 = 8'h10;
+    localparam  bit_len$16 = 8'h11;
+    localparam  bit_len$17 = 8'h12;
+    localparam  bit_len$18 = 8'h13;
+    localparam  bit_len$19 = 8'h14;
+    localparam  bit_len$20 = 8'h15;
+    localparam  bit_len$21 = 8'h16;
+    localparam  bit_len$22 = 8'h17;
+    localparam  bit_len$23 = 8'h18;
+    localparam  bit_len$24 = 8'h19;
+    localparam  bit_len$25 = 8'h1a;
+    localparam  bit_len$26 = 8'h1b;
+    localparam  bit_len$27 = 8'h1c;
+    localparam  bit_len$28 = 8'h1d;
+    localparam  bit_len$29 = 8'h1e;
+    localparam  bit_len$30 = 8'h1f;
+    localparam  bit_len$31 = 8'h20;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -1221,6 +1754,12 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     wire  [15:0] alpha_gm$data = 'h0;
     reg  [63:0] sqrt$n;
     wire  [31:0] sqrt$root = 'h0;
+    reg  [31:0] sq_x$m;
+    wire  [63:0] sq_x$y;
+    reg  [31:0] sq_y$m;
+    wire  [63:0] sq_y$y;
+    reg  [31:0] sq_z$m;
+    wire  [63:0] sq_z$y;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
@@ -1256,13 +1795,10 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] sq_x;
-    reg  [31:0] sq_y;
-    reg  [31:0] sq_z;
     reg  [31:0] gm_bin;
     reg  [11:0] row;
     reg  [15:0] alpha;
-    reg  [15:0] m;
+    reg  [31:0] m;
     reg  [7:0] bl;
     reg  [7:0] s;
     reg  [31:0] half;
@@ -1279,6 +1815,18 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$3$shader$sq_x sq_x(
+        .m(sq_x$m),
+        .y(sq_x$y)
+    );
+    top$lanes$3$shader$sq_y sq_y(
+        .m(sq_y$m),
+        .y(sq_y$y)
+    );
+    top$lanes$3$shader$sq_z sq_z(
+        .m(sq_z$m),
+        .y(sq_z$y)
+    );
     top$lanes$3$shader$r_q r_q(
         .d(r_q$d),
         .q(r_q$q),
@@ -1320,10 +1868,10 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         row = 12'(value >> shift);
         lut$address = row;
         alpha = 16'(lut$data >> 'h30);
-        sq_x = gx_mag * gx_mag;
-        sq_y = gy_mag * gy_mag;
-        sq_z = gz_mag * gz_mag;
-        sqrt$n = 64'(sq_x) + 64'(sq_y) + 64'(sq_z);
+        sq_x$m = gx_mag;
+        sq_y$m = gy_mag;
+        sq_z$m = gz_mag;
+        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
         gm_bin = sqrt$root >> gm_shift;
         if (gm_bin > 'hf) begin
             gm_bin = 'hf;
@@ -1343,53 +1891,101 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             m = gz_mag;
         end
         bl = 'h0;
-        if (m >= 'h1) begin
-            bl = 'h1;
+        if (m[0]) begin
+            bl = bit_len$0;
         end
-        if (m >= 'h2) begin
-            bl = 'h2;
+        if (m[1]) begin
+            bl = bit_len$1;
         end
-        if (m >= 'h4) begin
-            bl = 'h3;
+        if (m[2]) begin
+            bl = bit_len$2;
         end
-        if (m >= 'h8) begin
-            bl = 'h4;
+        if (m[3]) begin
+            bl = bit_len$3;
         end
-        if (m >= 'h10) begin
-            bl = 'h5;
+        if (m[4]) begin
+            bl = bit_len$4;
         end
-        if (m >= 'h20) begin
-            bl = 'h6;
+        if (m[5]) begin
+            bl = bit_len$5;
         end
-        if (m >= 'h40) begin
-            bl = 'h7;
+        if (m[6]) begin
+            bl = bit_len$6;
         end
-        if (m >= 'h80) begin
-            bl = 'h8;
+        if (m[7]) begin
+            bl = bit_len$7;
         end
-        if (m >= 'h100) begin
-            bl = 'h9;
+        if (m[8]) begin
+            bl = bit_len$8;
         end
-        if (m >= 'h200) begin
-            bl = 'ha;
+        if (m[9]) begin
+            bl = bit_len$9;
         end
-        if (m >= 'h400) begin
-            bl = 'hb;
+        if (m[10]) begin
+            bl = bit_len$10;
         end
-        if (m >= 'h800) begin
-            bl = 'hc;
+        if (m[11]) begin
+            bl = bit_len$11;
         end
-        if (m >= 'h1000) begin
-            bl = 'hd;
+        if (m[12]) begin
+            bl = bit_len$12;
         end
-        if (m >= 'h2000) begin
-            bl = 'he;
+        if (m[13]) begin
+            bl = bit_len$13;
         end
-        if (m >= 'h4000) begin
-            bl = 'hf;
+        if (m[14]) begin
+            bl = bit_len$14;
         end
-        if (m >= 'h8000) begin
-            bl = 'h10;
+        if (m[15]) begin
+            bl = bit_len$15;
+        end
+        if (m[16]) begin
+            bl = bit_len$16;
+        end
+        if (m[17]) begin
+            bl = bit_len$17;
+        end
+        if (m[18]) begin
+            bl = bit_len$18;
+        end
+        if (m[19]) begin
+            bl = bit_len$19;
+        end
+        if (m[20]) begin
+            bl = bit_len$20;
+        end
+        if (m[21]) begin
+            bl = bit_len$21;
+        end
+        if (m[22]) begin
+            bl = bit_len$22;
+        end
+        if (m[23]) begin
+            bl = bit_len$23;
+        end
+        if (m[24]) begin
+            bl = bit_len$24;
+        end
+        if (m[25]) begin
+            bl = bit_len$25;
+        end
+        if (m[26]) begin
+            bl = bit_len$26;
+        end
+        if (m[27]) begin
+            bl = bit_len$27;
+        end
+        if (m[28]) begin
+            bl = bit_len$28;
+        end
+        if (m[29]) begin
+            bl = bit_len$29;
+        end
+        if (m[30]) begin
+            bl = bit_len$30;
+        end
+        if (m[31]) begin
+            bl = bit_len$31;
         end
         s = 'h0;
         if (bl > 'h4) begin
@@ -1399,17 +1995,17 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (s > 'h0) begin
             half = (32'('h1) << s) >> 'h1;
         end
-        qx = (32'(gx_mag) + half) >> s;
+        qx = (gx_mag + half) >> s;
         if (gx_neg & (s > 'h0)) begin
-            qx = (32'(gx_mag) + half - 'h1) >> s;
+            qx = (gx_mag + half - 'h1) >> s;
         end
-        qy = (32'(gy_mag) + half) >> s;
+        qy = (gy_mag + half) >> s;
         if (gy_neg & (s > 'h0)) begin
-            qy = (32'(gy_mag) + half - 'h1) >> s;
+            qy = (gy_mag + half - 'h1) >> s;
         end
-        qz = (32'(gz_mag) + half) >> s;
+        qz = (gz_mag + half) >> s;
         if (gz_neg & (s > 'h0)) begin
-            qz = (32'(gz_mag) + half - 'h1) >> s;
+            qz = (gz_mag + half - 'h1) >> s;
         end
         if (qx > 'hf) begin
             qx = 'hf;
@@ -1561,6 +2157,78 @@ module top$lanes$3$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$r_q
+module top$lanes$3$shader$sq_x(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$3$shader$sq_x
+module top$lanes$3$shader$sq_y(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$3$shader$sq_y
+module top$lanes$3$shader$sq_z(m,y);
+    
+    // Module arguments
+    input wire  [31:0] m;
+    output reg  [63:0] y;
+    
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
+    // Local signals
+    reg  [15:0] hi;
+    reg  [15:0] lo;
+    
+    // Update code
+    always @(*) begin
+        lo = m[('h0)+:(16)];
+        hi = 'h0;
+        if (wide) begin
+            hi = m[('h10)+:(16)];
+        end
+        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    end
+    
+endmodule // top$lanes$3$shader$sq_z
 module top$lanes$3$shader$valid_q(d,q,clock);
     
     // Module arguments
