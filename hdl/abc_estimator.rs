@@ -27,6 +27,7 @@ use rust_hdl::prelude::*;
 
 /// Clocks from the neighbourhood to the gradient word.
 pub const LATENCY: usize = 5;
+const LAST: usize = LATENCY - 1;
 
 /// `clamp(v, -lim, lim)` of a 64-bit two's-complement word, as 32 bits.
 #[derive(LogicBlock)]
@@ -132,6 +133,9 @@ pub struct AbcEstimator {
     pub dx_mag: Signal<In, Bits<16>>,
     pub dy_neg: Signal<In, Bit>,
     pub dy_mag: Signal<In, Bits<16>>,
+    /// The centre `S(0, 0, 0)`, and the same leaving with its gradient.
+    pub centre: Signal<In, Bits<32>>,
+    pub sample: Signal<Out, Bits<32>>,
     /// `2∇` in traversal axes, sample units, saturated.
     pub gx: Signal<Out, Bits<32>>,
     pub gy: Signal<Out, Bits<32>>,
@@ -182,6 +186,7 @@ pub struct AbcEstimator {
     gx_out: DFF<Bits<32>>,
     gy_out: DFF<Bits<32>>,
     gz_out: DFF<Bits<32>>,
+    centre_q: [DFF<Bits<32>>; LATENCY],
 }
 
 impl AbcEstimator {
@@ -217,6 +222,8 @@ impl AbcEstimator {
             dx_mag: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
+            centre: Default::default(),
+            sample: Default::default(),
             gx: Default::default(),
             gy: Default::default(),
             gz: Default::default(),
@@ -261,6 +268,7 @@ impl AbcEstimator {
             gx_out: Default::default(),
             gy_out: Default::default(),
             gz_out: Default::default(),
+            centre_q: Default::default(),
         }
     }
 }
@@ -269,6 +277,18 @@ impl Logic for AbcEstimator {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, px_q, py_q, gx_out, gy_out, gz_out);
+        for i in 0..LATENCY {
+            self.centre_q[i].clock.next = self.clock.val();
+        }
+        self.centre_q[0].d.next = self.centre.val();
+        for i in 1..LATENCY {
+            self.centre_q[i].d.next = self.centre_q[i - 1].q.val();
+        }
+        // The last register (a loop: rust-hdl's Verilog generator takes an
+        // array index from loop variables and literals only).
+        for i in LAST..LATENCY {
+            self.sample.next = self.centre_q[i].q.val();
+        }
         for i in 0..4 {
             self.gx_q[i].clock.next = self.clock.val();
             self.gy_q[i].clock.next = self.clock.val();

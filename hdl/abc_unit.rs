@@ -4,19 +4,21 @@
 //! `golden_model::cube3::abc::gradient` (6- or 12-neighbourhood).
 //!
 //! **Stream.** Sample planes arrive scanline after scanline, ray after ray
-//! (`R` rays of a scanline), each ray as `G = ceil(K / P)` segments on
-//! consecutive clocks, lane `i` holding sample `s·P + i` of segment `s`. So
-//! the sample of ray `u ± 1` is `G` clocks away in the same lane, that of
-//! scanline `v ± 1` is `R·G` clocks away, and sample `k ± 1` is in the
+//! (`R` rays of a scanline, a scanline every `T >= R·G` clocks), each ray
+//! as `G = ceil(K / P)` segments on consecutive clocks, lane `i` holding
+//! sample `s·P + i` of segment `s`. So the sample of ray `u ± 1` is `G`
+//! clocks away in the same lane, that of scanline `v ± 1` is `T` clocks
+//! away, and sample `k ± 1` is in the
 //! neighbouring lane, or, across a segment boundary, in lane `0` one clock
 //! later or lane `P - 1` one clock earlier.
 //!
 //! **Taps.** Each lane keeps its stream in a [`PlaneTaps`] (two sample
 //! planes and two rays of memory: the above and current planes while the
 //! below one arrives). The centre of the neighbourhood is tap `(1, 1, 1)`,
-//! [`centre`]` = R·G + G + 1` clocks after its sample came in; the lanes'
+//! [`centre`]` = T + G + 1` clocks after its sample came in; the lanes'
 //! taps are wired to each [`AbcEstimator`] as its `S(i, j, 0)` and `S(i, j, ±1)`, and its
-//! gradient word leaves `abc_estimator::LATENCY` clocks later. The centre
+//! gradient word leaves `abc_estimator::LATENCY` clocks later, beside the
+//! centre sample (`sample`). The centre
 //! ray's increments `DX`, `DY` come in with the centre (the ray control).
 //!
 //! Where a neighbour lies outside the scanline's rays or the ray's samples
@@ -28,8 +30,8 @@ use crate::plane_taps::PlaneTaps;
 use rust_hdl::prelude::*;
 
 /// Clocks from a sample's entry to its neighbourhood's centre tap.
-pub fn centre(rays: usize, segments: usize) -> usize {
-    rays * segments + segments + 1
+pub fn centre(scanline: usize, segments: usize) -> usize {
+    scanline + segments + 1
 }
 
 /// `P` lanes of gradient estimation, `H`-bit delay-line pointers.
@@ -42,6 +44,8 @@ pub struct AbcUnit<const P: usize, const H: usize> {
     pub dx_mag: Signal<In, Bits<16>>,
     pub dy_neg: Signal<In, Bit>,
     pub dy_mag: Signal<In, Bits<16>>,
+    /// The centre sample leaving with its gradient.
+    pub centre: [Signal<Out, Bits<32>>; P],
     pub gx: [Signal<Out, Bits<32>>; P],
     pub gy: [Signal<Out, Bits<32>>; P],
     pub gz: [Signal<Out, Bits<32>>; P],
@@ -57,10 +61,10 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
     const P: usize = P;
     const P_END: usize = P + 1;
 
-    /// For `rays` rays of `segments` clocks per scanline; `n12`: the
+    /// For a scanline every `scanline` clocks and rays of `segments`; `n12`: the
     /// 12-neighbourhood, else the 6.
     pub fn new(
-        rays: usize,
+        scanline: usize,
         segments: usize,
         n12: bool,
         weight_bits: u32,
@@ -69,7 +73,7 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
     ) -> Result<AbcUnit<P, H>, String> {
         let mut lanes = Vec::with_capacity(P);
         for _ in 0..P {
-            lanes.push(PlaneTaps::new(rays, segments)?);
+            lanes.push(PlaneTaps::new(scanline, segments)?);
         }
         Ok(AbcUnit {
             clock: Default::default(),
@@ -78,6 +82,7 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
             dx_mag: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
+            centre: std::array::from_fn(|_| Default::default()),
             gx: std::array::from_fn(|_| Default::default()),
             gy: std::array::from_fn(|_| Default::default()),
             gz: std::array::from_fn(|_| Default::default()),
@@ -111,6 +116,8 @@ impl<const P: usize, const H: usize> Logic for AbcUnit<P, H> {
             self.estimators[i].dx_mag.next = self.dx_mag.val();
             self.estimators[i].dy_neg.next = self.dy_neg.val();
             self.estimators[i].dy_mag.next = self.dy_mag.val();
+            self.estimators[i].centre.next = self.lanes[i].t111.val();
+            self.centre[i].next = self.estimators[i].sample.val();
             self.gx[i].next = self.estimators[i].gx.val();
             self.gy[i].next = self.estimators[i].gy.val();
             self.gz[i].next = self.estimators[i].gz.val();

@@ -1,29 +1,32 @@
 //! One lane's sample-plane history for Cube-3's ABC gradients (§4; §5,
 //! Fig. 12: the above, current and below sample planes): the lane's sample
 //! stream delayed through a chain of [`DelayLine`]s, with a tap at every
-//! delay `a·R·G + b·G + c` for `a, b, c` in `0..3`.
+//! delay `a·T + b·G + c` for `a, b, c` in `0..3`.
 //!
-//! `G` is the clocks of a ray (its segments) and `R` the rays of a
-//! scanline, so tap `(a, b, c)` holds, for the sample at the centre `(1, 1,
+//! `G` is the clocks of a ray (its segments) and `T` the clocks from a
+//! scanline's first segment to the next scanline's (`R·G` for `R` rays,
+//! and more where the streams pause between scanlines), so tap `(a, b, c)`
+//! holds, for the sample at the centre `(1, 1,
 //! 1)`, the same lane's sample of scanline `v + 1 - a`, ray `u + 1 - b`, one
 //! segment later (`c = 0`), the same (`c = 1`) or earlier (`c = 2`). Each
 //! triple `c = 0, 1, 2` is a register pair; between triples the lines are
-//! `G - 2` clocks long, and `R·G - 2G - 2` from one scanline to the next, so
+//! `G - 2` clocks long, and `T - 2G - 2` from one scanline to the next, so
 //! the lane stores two sample planes and two rays beside its registers.
 
 use crate::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
-/// The chain's delay lines, in clocks, for `rays` rays of `segments`
-/// clocks: within a scanline and from scanline to scanline.
-pub fn line_lengths(rays: usize, segments: usize) -> Result<[usize; 8], String> {
-    let (r, g) = (rays, segments);
-    if g < 3 || r * g < 2 * g + 3 {
+/// The chain's delay lines, in clocks, for scanlines every `scanline`
+/// clocks and rays of `segments` clocks: within a scanline and from
+/// scanline to scanline.
+pub fn line_lengths(scanline: usize, segments: usize) -> Result<[usize; 8], String> {
+    let (t, g) = (scanline, segments);
+    if g < 3 || t < 2 * g + 3 {
         return Err(format!(
-            "the ABC unit needs rays of at least 3 clocks and scanlines of more than 2 rays and 2 clocks: {r} rays of {g} clocks"
+            "the ABC unit needs rays of at least 3 clocks and scanlines of more than 2 rays and 2 clocks: scanlines of {t} clocks, rays of {g}"
         ));
     }
-    let (ray, line) = (g - 2, r * g - 2 * g - 2);
+    let (ray, line) = (g - 2, t - 2 * g - 2);
     Ok([ray, ray, line, ray, ray, line, ray, ray])
 }
 
@@ -69,8 +72,8 @@ pub struct PlaneTaps<const H: usize> {
 }
 
 impl<const H: usize> PlaneTaps<H> {
-    pub fn new(rays: usize, segments: usize) -> Result<PlaneTaps<H>, String> {
-        let lengths = line_lengths(rays, segments)?;
+    pub fn new(scanline: usize, segments: usize) -> Result<PlaneTaps<H>, String> {
+        let lengths = line_lengths(scanline, segments)?;
         if let Some(l) = lengths.iter().find(|&&l| l >= 1 << H) {
             return Err(format!(
                 "a sample-plane line of {l} clocks needs more than {H} pointer bits"

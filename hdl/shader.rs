@@ -287,7 +287,10 @@ impl Shader {
             _ => (Vec::new(), 0),
         };
         let lut: ROM<Bits<64>, LUT_INDEX_BITS> = entries.into_iter().map(|e| e.to_bits()).into();
-        let gm_shift = golden.opacity.and_then(|o| o.gm_shift).map(|s| s + golden.magnitude_shift);
+        let gm_shift = golden
+            .opacity
+            .and_then(|o| o.gm_shift)
+            .map(|s| s + golden.magnitude_shift);
         let alpha_gm: ROM<Bits<16>, 16> = match (golden.opacity, gm_shift) {
             (Some(o), Some(_)) => o
                 .table
@@ -432,18 +435,15 @@ impl Logic for Shader {
         }
         self.qx.next = (self.gx_mag.val() + self.half.val()) >> self.s.val();
         if self.gx_neg.val() & (self.s.val() > 0) {
-            self.qx.next =
-                (self.gx_mag.val() + self.half.val() - 1) >> self.s.val();
+            self.qx.next = (self.gx_mag.val() + self.half.val() - 1) >> self.s.val();
         }
         self.qy.next = (self.gy_mag.val() + self.half.val()) >> self.s.val();
         if self.gy_neg.val() & (self.s.val() > 0) {
-            self.qy.next =
-                (self.gy_mag.val() + self.half.val() - 1) >> self.s.val();
+            self.qy.next = (self.gy_mag.val() + self.half.val() - 1) >> self.s.val();
         }
         self.qz.next = (self.gz_mag.val() + self.half.val()) >> self.s.val();
         if self.gz_neg.val() & (self.s.val() > 0) {
-            self.qz.next =
-                (self.gz_mag.val() + self.half.val() - 1) >> self.s.val();
+            self.qz.next = (self.gz_mag.val() + self.half.val() - 1) >> self.s.val();
         }
         if self.qx.val() > 15 {
             self.qx.next = 15.into();

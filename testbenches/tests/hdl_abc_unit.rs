@@ -153,7 +153,7 @@ fn cases(p: usize) -> Vec<Case> {
 
 fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
     let mut uut = AbcUnit::<P, H>::new(
-        c.rays,
+        c.rays * c.segments,
         c.segments,
         c.n12,
         c.weight_bits,
@@ -168,7 +168,7 @@ fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
 /// Clocks to run, the clock whose inputs hold the centre of input clock
 /// `t` (`t + centre`), and the clock whose outputs are its gradient.
 fn timing(c: &Case) -> (usize, usize) {
-    let d = centre(c.rays, c.segments);
+    let d = centre(c.rays * c.segments, c.segments);
     (c.clocks.len() + d + LATENCY, d)
 }
 
@@ -232,6 +232,14 @@ fn rust_hdl_run<const P: usize>() {
                             let got =
                                 [&x.gx[i], &x.gy[i], &x.gz[i]].map(|s| s.val().to_u32() as i32);
                             compare(&tb, "rust-hdl", t, i, got, *w);
+                            // The centre sample leaves with its gradient.
+                            let s = tb.clocks[t + 1 - d - LATENCY].samples[i];
+                            let centre = x.centre[i].val().to_u32();
+                            assert_eq!(
+                                centre, s,
+                                "{}: rust-hdl: clock {t}, lane {i}: centre sample {centre}, not {s}",
+                                tb.name
+                            );
                         }
                     }
                 }
