@@ -51,6 +51,9 @@ pub struct AbcUnit<const P: usize, const H: usize> {
     pub gz: [Signal<Out, Bits<32>>; P],
     lanes: [PlaneTaps<H>; P],
     estimators: [AbcEstimator; P],
+    /// Without it the outputs read 0, as in emitted Verilog that leaves the
+    /// unit out (`export::prune`).
+    enabled: Constant<Bit>,
 }
 
 impl<const P: usize, const H: usize> AbcUnit<P, H> {
@@ -71,6 +74,33 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
         sample_bits: u32,
         gradient_bits: u32,
     ) -> Result<AbcUnit<P, H>, String> {
+        AbcUnit::build(
+            scanline,
+            segments,
+            n12,
+            weight_bits,
+            sample_bits,
+            gradient_bits,
+            true,
+        )
+    }
+
+    /// The unit of a scene that takes no gradient: outputs 0, shortest
+    /// lines.
+    pub fn left_out(segments: usize) -> Result<AbcUnit<P, H>, String> {
+        let g = segments.max(3);
+        AbcUnit::build(2 * g + 3, g, false, 8, 8, 9, false)
+    }
+
+    fn build(
+        scanline: usize,
+        segments: usize,
+        n12: bool,
+        weight_bits: u32,
+        sample_bits: u32,
+        gradient_bits: u32,
+        enabled: bool,
+    ) -> Result<AbcUnit<P, H>, String> {
         let mut lanes = Vec::with_capacity(P);
         for _ in 0..P {
             lanes.push(PlaneTaps::new(scanline, segments)?);
@@ -90,6 +120,7 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
             estimators: std::array::from_fn(|_| {
                 AbcEstimator::new(n12, weight_bits, gradient_bits, sample_bits > 16)
             }),
+            enabled: Constant::new(enabled),
         })
     }
 
@@ -117,10 +148,16 @@ impl<const P: usize, const H: usize> Logic for AbcUnit<P, H> {
             self.estimators[i].dy_neg.next = self.dy_neg.val();
             self.estimators[i].dy_mag.next = self.dy_mag.val();
             self.estimators[i].centre.next = self.lanes[i].t111.val();
-            self.centre[i].next = self.estimators[i].sample.val();
-            self.gx[i].next = self.estimators[i].gx.val();
-            self.gy[i].next = self.estimators[i].gy.val();
-            self.gz[i].next = self.estimators[i].gz.val();
+            self.centre[i].next = 0.into();
+            self.gx[i].next = 0.into();
+            self.gy[i].next = 0.into();
+            self.gz[i].next = 0.into();
+            if self.enabled.val() {
+                self.centre[i].next = self.estimators[i].sample.val();
+                self.gx[i].next = self.estimators[i].gx.val();
+                self.gy[i].next = self.estimators[i].gy.val();
+                self.gz[i].next = self.estimators[i].gz.val();
+            }
         }
         // Plane k + 1: the next lane, and lane 0 one clock later for the last.
         for i in 0..Self::LAST {

@@ -1,34 +1,51 @@
 //! The Cube-3 pipeline (§5, Fig. 12) from the 2-D skewed buffers to the
-//! base-plane pixels, for a parallel view in the modes that need no
-//! gradient (MIP, MinIP, X-ray): the [`RayControl`], `P` TRILIN units fed by
-//! [`TrilinLanes`], one leaf stage per unit, and the Ray Projection Cone
-//! ([`Rpc`]), one segment of `P` samples per clock.
+//! base-plane pixels, for a parallel view in every mode: the
+//! [`RayControl`], `P` TRILIN units fed by [`TrilinLanes`], the ABC units
+//! ([`AbcUnit`]: gradients, then one [`Shader`] a unit) or a leaf stage,
+//! and the Ray Projection Cone ([`Rpc`]), one segment of `P` samples per
+//! clock.
 //!
 //! **Streams.** The 2-DSBs of scanlines `v` and `v + 1` arrive as
 //! `trilin_lanes` describes, scanline after scanline after `start`, one
 //! segment on each clock with `valid`: `S·R·G` segments for `S` scanlines of
-//! `R` rays of `G` segments, contiguous within a scanline (a pause between
-//! scanlines is allowed). [`crate::beam_fetch`] fills and reads the
-//! buffers.
+//! `R` rays of `G` segments, contiguous within a scanline. A pause between
+//! scanlines is allowed; with gradients every scanline must start
+//! [`Cube3Config::scanline_clocks`] after the one before, as the beam
+//! fetch's periods do. [`crate::beam_fetch`] fills and reads the buffers.
 //!
-//! **Leaf stage.** Clock `t + trilin::LATENCY` for a cell taken at `t`: the
-//! control's inside bit, delayed beside the units, gates the sample. MIP and
-//! MinIP: the sample rounded to voxel bits, `(s + 2^(F-1)) >> F`, valid when
-//! inside. X-ray: the opacity table at `(s >> F) >> shift` (a ROM per unit).
-//! Outside the volume a leaf is 0 (and invalid: the golden model's empty
-//! leaf). Registered, then the RPC's leaves.
+//! **Leaf stage** (MIP, MinIP, X-ray; no ABC unit or shader). Clock `t +
+//! trilin::LATENCY` for a cell taken at `t`: the control's inside bit,
+//! delayed beside the units, gates the sample. MIP and MinIP: the sample
+//! rounded to voxel bits, `(s + 2^(F-1)) >> F`, valid when inside. X-ray:
+//! the opacity table at `(s >> F) >> shift` (a ROM per unit). Outside the
+//! volume a leaf is 0 (and invalid: the golden model's empty leaf).
+//! Registered, then the RPC's leaves.
+//!
+//! **ABC units** (composite, first-opaque). With gradients (shading or
+//! gradient opacity) each unit's samples go through the [`AbcUnit`]: the
+//! sample and its gradient leave `abc_unit::centre + abc_estimator::LATENCY`
+//! clocks later, and the flags (inside and inner bits, valid, first, last)
+//! wait as long in a delay line. The stream then carries one scanline more
+//! on either side (the above plane of the first, the below plane of the
+//! last). The [`Shader`] (Cube-4L's, built from Cube-3's tables:
+//! `cube3::shade`) takes the value `s >> F`, `invalid` = outside the volume
+//! and `at_edge` = outside the inner box, and registers the RPC's leaf.
+//! Without gradients the shader takes the TRILIN sample directly.
 //!
 //! **Pixels.** Every ray of the stream leaves as one `done` pulse, in
-//! stream order, `cell_delay + trilin::LATENCY + 1 + rpc::latency(P)`
-//! clocks after its last segment entered ([`Cube3Config::pixel_delay`]);
-//! the last ray of each scanline has no right neighbour in its buffer and
-//! its pixel is not a base-plane pixel.
+//! stream order, [`Cube3Config::pixel_delay`] clocks after its last segment
+//! entered; the last ray of each scanline has no right neighbour in its
+//! buffer and its pixel is not a base-plane pixel, nor are those of the
+//! halo scanlines.
 
+use crate::abc_unit::AbcUnit;
+use crate::delay_line::DelayLine;
 use crate::ray_control::RayControl;
 use crate::rpc::Rpc;
+use crate::shader::Shader;
 use crate::trilin_lanes::TrilinLanes;
-use golden_model::cube3::plan::{sample_pos, Template, View};
-use golden_model::cube3::shade::Shader;
+use golden_model::cube3::plan::{sample_pos, Neighbourhood, Template, View};
+use golden_model::cube3::shade::Shader as Shading;
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -40,12 +57,17 @@ pub const OPACITY_BITS: usize = 12;
 pub struct Cube3Config {
     pub p: usize,
     pub mode: Mode,
-    /// Stream rays `u0 .. u0 + rays` of scanlines `v0 .. v0 + scanlines`.
+    /// Stream rays `u0 .. u0 + rays` of scanlines `v0 .. v0 + scanlines`;
+    /// the first and last `halo` scanlines only feed the gradients.
     pub u0: i32,
     pub v0: i32,
     pub rays: usize,
     pub scanlines: usize,
+    pub halo: usize,
     pub segments: usize,
+    /// Clocks from one scanline's first segment to the next one's (the
+    /// ABC unit's sample-plane distance).
+    pub scanline_clocks: usize,
     pub offset: u32,
     /// Every sample sits on the grid (`View::on_grid`): the weights and the
     /// offset are 0, so TRILIN's lerps pass their first voxel and synthesis
@@ -55,20 +77,40 @@ pub struct Cube3Config {
     pub voxel_bits: u32,
     pub sample_frac: u32,
     pub rgba_bits: u32,
-    /// Per plane `k`: the weights `[wx, wy]` and the inside bounds
-    /// `[ray_lo, ray_hi, scanline_lo, scanline_hi]` (inclusive stream
-    /// indices; empty as lo > hi).
+    /// Per plane `k`: the weights `[wx, wy]`, the inside bounds `[ray_lo,
+    /// ray_hi, scanline_lo, scanline_hi]` (inclusive stream indices; empty
+    /// as lo > hi) and, with gradients, the inner box's.
     pub weights: Vec<[u32; 2]>,
     pub bounds: Vec<[u32; 4]>,
+    pub inner: Vec<[u32; 4]>,
     /// X-ray: the opacity table and its row shift.
     pub opacity: Option<(Vec<u32>, u32)>,
+    /// Composite and first-opaque: the golden model's shading tables.
+    pub shading: Option<Shading>,
+    /// With gradients: the ABC units' build.
+    pub abc: Option<AbcConfig>,
+}
+
+/// What the ABC units are built from.
+#[derive(Debug, Clone)]
+pub struct AbcConfig {
+    /// The 12-neighbourhood, else the 6.
+    pub n12: bool,
+    /// Every ray's increments (a parallel view's are all the same).
+    pub dx: i32,
+    pub dy: i32,
+    pub sample_bits: u32,
+    pub gradient_bits: u32,
 }
 
 impl Cube3Config {
-    /// The pipeline of `view` for scanlines `v0 .. v0 + scanlines`.
+    /// The pipeline of `view` for the pixels of scanlines `v0 .. v0 +
+    /// scanlines`, with the gradients of neighbourhood `n` where the scene
+    /// needs them.
     pub fn new(
         view: &View,
-        shader: &Shader,
+        shader: &Shading,
+        n: Neighbourhood,
         p: usize,
         v0: i32,
         scanlines: usize,
@@ -78,20 +120,37 @@ impl Cube3Config {
         else {
             return Err("the Cube-3 pipeline is built for parallel views only so far".into());
         };
-        if shader.needs_gradient || matches!(shader.mode, Mode::Composite | Mode::FirstOpaque) {
-            return Err(format!(
-                "the Cube-3 pipeline is built for MIP, MinIP and X-ray only so far, not {:?}",
-                shader.mode
-            ));
-        }
         if !matches!(p, 1 | 2 | 4 | 8) {
             return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)"));
         }
+        let widths = shader.widths;
+        let abc = match (shader.needs_gradient, n) {
+            (false, _) => None,
+            (true, Neighbourhood::N6 | Neighbourhood::N12) => {
+                if dx.unsigned_abs() >= 1 << 16 || dy.unsigned_abs() >= 1 << 16 {
+                    return Err("ray increments beyond 16 bits".into());
+                }
+                Some(AbcConfig {
+                    n12: n == Neighbourhood::N12,
+                    dx: *dx,
+                    dy: *dy,
+                    sample_bits: widths.sample_bits,
+                    gradient_bits: widths.gradient_bits,
+                })
+            }
+            (true, n) => {
+                return Err(format!(
+                    "cube3.gradient {n:?} is not built in hardware (the 6 or the 12)"
+                ))
+            }
+        };
+        let halo = abc.is_some() as usize;
+        let (v0, scanlines) = (v0 - halo as i32, scanlines + 2 * halo);
         let w = view.weight_bits;
         let [nx, ny, nk] = view.dims.map(|n| n as i64);
         let u0 = view.u[0] - 1;
         let rays = (view.u[1] - view.u[0] + 4) as usize;
-        let within = |q: i64, hi: i64| q >= 0 && q <= hi << w;
+        let within = |q: i64, lo: i64, hi: i64| q >= lo << w && q <= hi << w;
         // Stream indices `i` in `0..n` where `ok(i)`: an interval (positions
         // are linear in the ray), or empty as [1, 0].
         let interval = |n: usize, ok: &dyn Fn(i64) -> bool| {
@@ -102,18 +161,23 @@ impl Cube3Config {
                 _ => Err("the inside test is not an interval of rays".to_string()),
             }
         };
-        let mut bounds = Vec::new();
-        for k in 0..nk as usize {
-            let zq = ((k as i64) << w) + view.offset as i64;
-            let r = interval(rays, &|r| {
-                within(zq, nk - 1) && within(sample_pos(u0 + r as i32, k, *dx, w), nx - 1)
-            })?;
-            let v = interval(scanlines, &|s| {
-                within(sample_pos(v0 + s as i32, k, *dy, w), ny - 1)
-            })?;
-            bounds.push([r[0], r[1], v[0], v[1]]);
-        }
-        let widths = shader.widths;
+        // The box `[m, n - 1 - m]` of every axis, plane by plane.
+        let boxed = |m: i64| -> Result<Vec<[u32; 4]>, String> {
+            (0..nk as usize)
+                .map(|k| {
+                    let zq = ((k as i64) << w) + view.offset as i64;
+                    let r = interval(rays, &|r| {
+                        within(zq, m, nk - 1 - m)
+                            && within(sample_pos(u0 + r as i32, k, *dx, w), m, nx - 1 - m)
+                    })?;
+                    let v = interval(scanlines, &|s| {
+                        within(sample_pos(v0 + s as i32, k, *dy, w), m, ny - 1 - m)
+                    })?;
+                    Ok([r[0], r[1], v[0], v[1]])
+                })
+                .collect()
+        };
+        let segments = view.dims[2].div_ceil(p);
         Ok(Cube3Config {
             p,
             mode: shader.mode,
@@ -121,7 +185,9 @@ impl Cube3Config {
             v0,
             rays,
             scanlines,
-            segments: view.dims[2].div_ceil(p),
+            halo,
+            segments,
+            scanline_clocks: rays * segments,
             offset: view.offset,
             on_grid: view.on_grid,
             weight_bits: w,
@@ -131,11 +197,15 @@ impl Cube3Config {
             weights: (0..view.dims[2])
                 .map(|k| [view.x.weight(0, k), view.y.weight(0, k)])
                 .collect(),
-            bounds,
+            bounds: boxed(0)?,
+            inner: if abc.is_some() { boxed(1)? } else { vec![] },
             opacity: (shader.mode == Mode::Xray).then(|| {
                 let o = shader.opacity.as_ref().expect("X-ray has an opacity table");
                 (o.table.clone(), o.shift)
             }),
+            shading: matches!(shader.mode, Mode::Composite | Mode::FirstOpaque)
+                .then(|| shader.clone()),
+            abc,
         })
     }
 
@@ -143,9 +213,22 @@ impl Cube3Config {
     pub fn pixel_delay(&self) -> usize {
         crate::trilin_lanes::cell_delay(self.segments)
             + crate::trilin::LATENCY
+            + self.abc_delay()
             + 1
             + crate::rpc::latency(self.p)
             - 1
+    }
+
+    /// Clocks from a sample leaving TRILIN to it and its gradient leaving
+    /// the ABC unit (0 without gradients).
+    pub fn abc_delay(&self) -> usize {
+        match self.abc {
+            Some(_) => {
+                crate::abc_unit::centre(self.scanline_clocks, self.segments)
+                    + crate::abc_estimator::LATENCY
+            }
+            None => 0,
+        }
     }
 }
 
@@ -168,19 +251,38 @@ pub struct Cube3<const P: usize, const H: usize> {
     pub has_sample: Signal<Out, Bit>,
     control: RayControl<P, H>,
     lanes: TrilinLanes<P, H>,
-    /// `[inside bits, valid, first, last]` from the units to the leaf
-    /// stage (`trilin::LATENCY` clocks) and to the RPC (one more).
-    flags_q: [DFF<Bits<16>>; 8],
+    /// `[inside bits, valid, first, last, inner bits]` (bits 0-7, 8, 9, 10,
+    /// 16-23) from the units to the leaf stage (`trilin::LATENCY` clocks),
+    /// through the ABC delay (`flags_line`), and to the RPC (one more).
+    flags_q: [DFF<Bits<32>>; 7],
+    flags_line: DelayLine<Bits<32>, H>,
+    leaf_flags: Signal<Local, Bits<32>>,
+    rpc_flags_q: DFF<Bits<32>>,
+    gradients: Constant<Bit>,
+    shaded: Constant<Bit>,
     xray: Constant<Bit>,
     half: Constant<Bits<32>>,
     frac: Constant<Bits<8>>,
     row_shift: Constant<Bits<8>>,
-    lane_bit: [Constant<Bits<16>>; 8],
+    lane_bit: [Constant<Bits<32>>; 8],
+    inner_bit: [Constant<Bits<32>>; 8],
     /// X-ray: each unit's opacity row and table.
     row: [Signal<Local, Bits<32>>; P],
     opacity: [ROM<Bits<32>, OPACITY_BITS>; P],
     leaf_q: [DFF<Bits<32>>; P],
     leaf_valid_q: [DFF<Bit>; P],
+    /// The ABC units: the gradients, then the shaders.
+    abc: AbcUnit<P, H>,
+    dx_neg: Constant<Bit>,
+    dx_mag: Constant<Bits<16>>,
+    dy_neg: Constant<Bit>,
+    dy_mag: Constant<Bits<16>>,
+    /// The shaders' value `s >> F` and gradient.
+    index: [Signal<Local, Bits<32>>; P],
+    gx: [Signal<Local, Bits<32>>; P],
+    gy: [Signal<Local, Bits<32>>; P],
+    gz: [Signal<Local, Bits<32>>; P],
+    shade: [Shader; P],
     rpc: Rpc<P>,
 }
 
@@ -205,6 +307,32 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         let rom = || -> ROM<Bits<32>, OPACITY_BITS> {
             table.iter().map(|&v| (v as u64).to_bits()).into()
         };
+        let abc_delay = c.abc_delay();
+        if abc_delay >= 1 << H {
+            return Err(format!(
+                "the ABC delay of {abc_delay} clocks needs more than {H} pointer bits"
+            ));
+        }
+        let abc = match &c.abc {
+            Some(a) => AbcUnit::new(
+                c.scanline_clocks,
+                c.segments,
+                a.n12,
+                c.weight_bits,
+                a.sample_bits,
+                a.gradient_bits,
+            )?,
+            None => AbcUnit::left_out(c.segments)?,
+        };
+        let (dx, dy) = c.abc.as_ref().map_or((0, 0), |a| (a.dx, a.dy));
+        let shader = || match &c.shading {
+            Some(s) => Shader::for_cube3(s),
+            None => Ok(Shader::left_out()),
+        };
+        let mut shade = Vec::with_capacity(P);
+        for _ in 0..P {
+            shade.push(shader()?);
+        }
         Ok(Cube3 {
             clock: Default::default(),
             start: Default::default(),
@@ -220,15 +348,35 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             control,
             lanes,
             flags_q: Default::default(),
+            flags_line: DelayLine::new(
+                abc_delay.max(1),
+                &[(0, 11), (16, 8)],
+                0x00ff_07ffu64.to_bits(),
+            ),
+            leaf_flags: Default::default(),
+            rpc_flags_q: Default::default(),
+            gradients: Constant::new(c.abc.is_some()),
+            shaded: Constant::new(c.shading.is_some()),
             xray: Constant::new(c.mode == Mode::Xray),
             half: Constant::new(((1u64 << c.sample_frac) >> 1).to_bits()),
             frac: Constant::new((c.sample_frac as u64).to_bits()),
             row_shift: Constant::new((shift as u64).to_bits()),
             lane_bit: std::array::from_fn(|i| Constant::new((1u64 << i).to_bits())),
+            inner_bit: std::array::from_fn(|i| Constant::new((1u64 << (16 + i)).to_bits())),
             row: std::array::from_fn(|_| Default::default()),
             opacity: std::array::from_fn(|_| rom()),
             leaf_q: std::array::from_fn(|_| Default::default()),
             leaf_valid_q: std::array::from_fn(|_| Default::default()),
+            abc,
+            dx_neg: Constant::new(dx < 0),
+            dx_mag: Constant::new((dx.unsigned_abs() as u64).to_bits()),
+            dy_neg: Constant::new(dy < 0),
+            dy_mag: Constant::new((dy.unsigned_abs() as u64).to_bits()),
+            index: std::array::from_fn(|_| Default::default()),
+            gx: std::array::from_fn(|_| Default::default()),
+            gy: std::array::from_fn(|_| Default::default()),
+            gz: std::array::from_fn(|_| Default::default()),
+            shade: shade.try_into().ok().expect("P shaders"),
             rpc: Rpc::new(c.mode, c.rgba_bits, c.voxel_bits),
         })
     }
@@ -239,27 +387,43 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
     fn update(&mut self) {
         self.control.clock.next = self.clock.val();
         self.lanes.clock.next = self.clock.val();
+        self.abc.clock.next = self.clock.val();
         self.rpc.clock.next = self.clock.val();
+        self.flags_line.clock.next = self.clock.val();
+        self.rpc_flags_q.clock.next = self.clock.val();
         self.control.start.next = self.start.val();
         self.control.valid.next = self.valid.val();
         self.lanes.first.next = self.control.first.val();
-        // The flags beside the units: inside bits 0-7, valid 8, first 9,
-        // last 10.
-        for j in 0..8 {
+        // The flags beside the units.
+        for j in 0..7 {
             self.flags_q[j].clock.next = self.clock.val();
         }
-        self.flags_q[0].d.next = bit_cast::<16, 8>(self.control.in_volume.val())
-            | (bit_cast::<16, 1>(self.control.unit_valid.val().into()) << 8)
-            | (bit_cast::<16, 1>(self.control.unit_first.val().into()) << 9)
-            | (bit_cast::<16, 1>(self.control.unit_last.val().into()) << 10);
-        for j in 1..8 {
+        self.flags_q[0].d.next = bit_cast::<32, 8>(self.control.in_volume.val())
+            | (bit_cast::<32, 1>(self.control.unit_valid.val().into()) << 8)
+            | (bit_cast::<32, 1>(self.control.unit_first.val().into()) << 9)
+            | (bit_cast::<32, 1>(self.control.unit_last.val().into()) << 10)
+            | (bit_cast::<32, 8>(self.control.in_inner.val()) << 16);
+        for j in 1..7 {
             self.flags_q[j].d.next = self.flags_q[j - 1].q.val();
         }
+        // With gradients the flags wait for the ABC units.
+        self.flags_line.write_enable.next = true;
+        self.flags_line.data_in.next = self.flags_q[6].q.val();
+        self.leaf_flags.next = self.flags_q[6].q.val();
+        if self.gradients.val() {
+            self.leaf_flags.next = self.flags_line.data_out.val();
+        }
+        self.rpc_flags_q.d.next = self.leaf_flags.val();
+        self.abc.dx_neg.next = self.dx_neg.val();
+        self.abc.dx_mag.next = self.dx_mag.val();
+        self.abc.dy_neg.next = self.dy_neg.val();
+        self.abc.dy_mag.next = self.dy_mag.val();
         for i in 0..P {
             self.lanes.cur[i].next = self.cur[i].val();
             self.lanes.next[i].next = self.next[i].val();
             self.lanes.wx[i].next = self.control.wx[i].val();
             self.lanes.wy[i].next = self.control.wy[i].val();
+            self.abc.sample[i].next = self.lanes.sample[i].val();
             // The leaf stage, trilin::LATENCY clocks after the cell.
             self.leaf_q[i].clock.next = self.clock.val();
             self.leaf_valid_q[i].clock.next = self.clock.val();
@@ -275,16 +439,53 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
                     self.leaf_q[i].d.next = self.opacity[i].data.val();
                 }
             }
+            // The shaders: the sample and its gradient (zero without).
+            self.index[i].next = self.lanes.sample[i].val() >> self.frac.val();
+            self.gx[i].next = 0.into();
+            self.gy[i].next = 0.into();
+            self.gz[i].next = 0.into();
+            if self.gradients.val() {
+                self.index[i].next = self.abc.centre[i].val() >> self.frac.val();
+                self.gx[i].next = self.abc.gx[i].val();
+                self.gy[i].next = self.abc.gy[i].val();
+                self.gz[i].next = self.abc.gz[i].val();
+            }
+            self.shade[i].clock.next = self.clock.val();
+            self.shade[i].value.next = self.index[i].val().get_bits::<16>(0);
+            self.shade[i].invalid.next = !(self.leaf_flags.val() & self.lane_bit[i].val()).any();
+            self.shade[i].at_edge.next = !(self.leaf_flags.val() & self.inner_bit[i].val()).any();
+            self.shade[i].gx_neg.next = self.gx[i].val().get_bit(31);
+            self.shade[i].gx_mag.next = self.gx[i].val();
+            if self.gx[i].val().get_bit(31) {
+                self.shade[i].gx_mag.next = !self.gx[i].val() + 1;
+            }
+            self.shade[i].gy_neg.next = self.gy[i].val().get_bit(31);
+            self.shade[i].gy_mag.next = self.gy[i].val();
+            if self.gy[i].val().get_bit(31) {
+                self.shade[i].gy_mag.next = !self.gy[i].val() + 1;
+            }
+            self.shade[i].gz_neg.next = self.gz[i].val().get_bit(31);
+            self.shade[i].gz_mag.next = self.gz[i].val();
+            if self.gz[i].val().get_bit(31) {
+                self.shade[i].gz_mag.next = !self.gz[i].val() + 1;
+            }
             self.rpc.leaf_r[i].next = self.leaf_q[i].q.val();
             self.rpc.leaf_g[i].next = 0.into();
             self.rpc.leaf_b[i].next = 0.into();
             self.rpc.leaf_a[i].next = 0.into();
             self.rpc.leaf_valid[i].next = self.leaf_valid_q[i].q.val();
+            if self.shaded.val() {
+                self.rpc.leaf_r[i].next = self.shade[i].r.val();
+                self.rpc.leaf_g[i].next = self.shade[i].g.val();
+                self.rpc.leaf_b[i].next = self.shade[i].b.val();
+                self.rpc.leaf_a[i].next = self.shade[i].a.val();
+                self.rpc.leaf_valid[i].next = self.shade[i].valid.val();
+            }
         }
         self.rpc.first.next =
-            self.flags_q[7].q.val().get_bit(9) & self.flags_q[7].q.val().get_bit(8);
+            self.rpc_flags_q.q.val().get_bit(9) & self.rpc_flags_q.q.val().get_bit(8);
         self.rpc.last.next =
-            self.flags_q[7].q.val().get_bit(10) & self.flags_q[7].q.val().get_bit(8);
+            self.rpc_flags_q.q.val().get_bit(10) & self.rpc_flags_q.q.val().get_bit(8);
         self.done.next = self.rpc.done.val();
         self.pixel_r.next = self.rpc.pixel_r.val();
         self.pixel_g.next = self.rpc.pixel_g.val();

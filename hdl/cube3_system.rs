@@ -1,15 +1,17 @@
 //! Cube-3 from the volume memory to the base plane (§5, Fig. 12): the
 //! [`BeamFetch`] (CFB, Fast Bus, 2-DSBs) feeding the [`Cube3`] pipeline
-//! (ray control, TRILIN, leaf stage, RPC), for a parallel view in MIP,
-//! MinIP or X-ray.
+//! (ray control, TRILIN, ABC units or leaf stage, RPC), for a parallel
+//! view in every mode.
 //!
-//! After `start` the system fetches the PRPs of `S + 1` scanlines and puts
-//! out one `done` pixel per stream ray (`R` per scanline, in order), the
-//! last one [`Cube3SystemConfig::clocks`]` - 1` clocks later.
+//! After `start` the system fetches the PRPs of `S + 1` stream scanlines
+//! and puts out one `done` pixel per stream ray (`R` per scanline, in
+//! order), the last one [`Cube3SystemConfig::clocks`]` - 1` clocks later.
+//! The stream's scanlines are a fetch period apart, which the ABC units'
+//! sample-plane lines are built for.
 
 use crate::beam_fetch::{BeamFetch, BeamFetchConfig};
 use crate::cube3::{Cube3, Cube3Config};
-use golden_model::cube3::plan::View;
+use golden_model::cube3::plan::{Neighbourhood, View};
 use golden_model::cube3::shade::Shader;
 use rust_hdl::prelude::*;
 
@@ -21,16 +23,26 @@ pub struct Cube3SystemConfig {
 }
 
 impl Cube3SystemConfig {
-    /// Scanlines `v0 .. v0 + scanlines` of `view`.
+    /// The pixels of scanlines `v0 .. v0 + scanlines` of `view`
+    /// (`Cube3Config::new`).
     pub fn new(
         view: &View,
         shader: &Shader,
+        n: Neighbourhood,
         p: usize,
         v0: i32,
         scanlines: usize,
     ) -> Result<Cube3SystemConfig, String> {
-        let pipeline = Cube3Config::new(view, shader, p, v0, scanlines)?;
-        let fetch = BeamFetchConfig::new(view, p, pipeline.u0, pipeline.rays, v0, scanlines)?;
+        let mut pipeline = Cube3Config::new(view, shader, n, p, v0, scanlines)?;
+        let fetch = BeamFetchConfig::new(
+            view,
+            p,
+            pipeline.u0,
+            pipeline.rays,
+            pipeline.v0,
+            pipeline.scanlines,
+        )?;
+        pipeline.scanline_clocks = fetch.period();
         Ok(Cube3SystemConfig { fetch, pipeline })
     }
 

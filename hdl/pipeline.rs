@@ -493,7 +493,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.dx_mag.next = self.feed.o_dx_mag.val();
         self.ctl.dy_neg.next = self.feed.o_dy_neg.val();
         self.ctl.dy_mag.next = self.feed.o_dy_mag.val();
-        self.ctl.r.next = self.shader.r.val();
+        self.ctl.r.next = bit_cast::<16, 32>(self.shader.r.val());
         self.ctl.g.next = self.shader.g.val();
         self.ctl.b.next = self.shader.b.val();
         self.ctl.a.next = self.shader.a.val();

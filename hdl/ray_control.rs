@@ -18,7 +18,10 @@
 //! point, likewise `y`, and `0 <= k + O <= K - 1`) is, for each `k`, an
 //! interval of rays and one of scanlines: lane `i`'s bounds ROM holds them,
 //! found by the golden model's own test on every ray and scanline of the
-//! stream ([`Cube3Config`](crate::cube3::Cube3Config)).
+//! stream ([`Cube3Config`](crate::cube3::Cube3Config)). The inner box
+//! (`1 <= ... <= n - 2`, where a gradient's neighbourhood stays in the
+//! volume) has its own bounds ROM; it is empty, and folded away, for
+//! scenes without gradients.
 
 use crate::cube3::Cube3Config;
 use crate::delay_line::DelayLine;
@@ -46,6 +49,7 @@ pub struct RayControl<const P: usize, const H: usize> {
     pub wx: [Signal<Out, Bits<16>>; P],
     pub wy: [Signal<Out, Bits<16>>; P],
     pub in_volume: Signal<Out, Bits<8>>,
+    pub in_inner: Signal<Out, Bits<8>>,
     last_segment: Constant<Bits<16>>,
     last_ray: Constant<Bits<16>>,
     segment: DFF<Bits<16>>,
@@ -58,8 +62,10 @@ pub struct RayControl<const P: usize, const H: usize> {
     unit_scanline: Signal<Local, Bits<16>>,
     weights: [ROM<Bits<32>, SEGMENT_BITS>; P],
     bounds: [ROM<Bits<64>, SEGMENT_BITS>; P],
-    /// Lane i's inside bit in place (`lane_bit[i] = 1 << i`).
+    inner: [ROM<Bits<64>, SEGMENT_BITS>; P],
+    /// Lane i's inside and inner bits in place (`lane_bit[i] = 1 << i`).
     lane_in: [Signal<Local, Bits<8>>; 8],
+    lane_inner: [Signal<Local, Bits<8>>; 8],
     lane_bit: [Constant<Bits<8>>; 8],
     valid_flag: Constant<Bits<64>>,
 }
@@ -77,9 +83,14 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
                 .get(k)
                 .map_or(0, |[x, y]| *x as u64 | (*y as u64) << 16)
         };
-        let bound = |k: usize| {
-            let [rl, rh, vl, vh] = t.bounds.get(k).copied().unwrap_or([1, 0, 1, 0]);
+        let bound = |b: &[[u32; 4]], k: usize| {
+            let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
             rl as u64 | (rh as u64) << 16 | (vl as u64) << 32 | (vh as u64) << 48
+        };
+        let rom = |b: &[[u32; 4]], i: usize| -> ROM<Bits<64>, SEGMENT_BITS> {
+            (0..segments)
+                .map(|s| bound(b, s * P + i).to_bits::<64>())
+                .into()
         };
         Ok(RayControl {
             clock: Default::default(),
@@ -92,6 +103,7 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             wx: std::array::from_fn(|_| Default::default()),
             wy: std::array::from_fn(|_| Default::default()),
             in_volume: Default::default(),
+            in_inner: Default::default(),
             last_segment: Constant::new(((t.segments - 1) as u64).to_bits()),
             last_ray: Constant::new(((t.rays - 1) as u64).to_bits()),
             segment: Default::default(),
@@ -110,12 +122,10 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
                     .map(|s| weight(s * P + i).to_bits::<32>())
                     .into()
             }),
-            bounds: std::array::from_fn(|i| {
-                (0..segments)
-                    .map(|s| bound(s * P + i).to_bits::<64>())
-                    .into()
-            }),
+            bounds: std::array::from_fn(|i| rom(&t.bounds, i)),
+            inner: std::array::from_fn(|i| rom(&t.inner, i)),
             lane_in: Default::default(),
+            lane_inner: Default::default(),
             lane_bit: std::array::from_fn(|i| Constant::new((1u64 << i).to_bits())),
             valid_flag: Constant::new((1u64 << 48).to_bits()),
         })
@@ -167,6 +177,7 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             & (self.unit_segment.val() == self.last_segment.val());
         for i in 0..8 {
             self.lane_in[i].next = 0.into();
+            self.lane_inner[i].next = 0.into();
         }
         for i in 0..P {
             self.weights[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
@@ -180,6 +191,14 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             {
                 self.lane_in[i].next = self.lane_bit[i].val();
             }
+            self.inner[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
+            if (self.unit_ray.val() >= self.inner[i].data.val().get_bits::<16>(0))
+                & (self.unit_ray.val() <= self.inner[i].data.val().get_bits::<16>(16))
+                & (self.unit_scanline.val() >= self.inner[i].data.val().get_bits::<16>(32))
+                & (self.unit_scanline.val() <= self.inner[i].data.val().get_bits::<16>(48))
+            {
+                self.lane_inner[i].next = self.lane_bit[i].val();
+            }
         }
         self.in_volume.next = self.lane_in[0].val()
             | self.lane_in[1].val()
@@ -189,5 +208,13 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             | self.lane_in[5].val()
             | self.lane_in[6].val()
             | self.lane_in[7].val();
+        self.in_inner.next = self.lane_inner[0].val()
+            | self.lane_inner[1].val()
+            | self.lane_inner[2].val()
+            | self.lane_inner[3].val()
+            | self.lane_inner[4].val()
+            | self.lane_inner[5].val()
+            | self.lane_inner[6].val()
+            | self.lane_inner[7].val();
     }
 }

@@ -131,8 +131,9 @@ pub struct Shader {
     pub gy_mag: Signal<In, Bits<32>>,
     pub gz_neg: Signal<In, Bit>,
     pub gz_mag: Signal<In, Bits<32>>,
-    /// Registered sample: `[r, g, b, a]`, or the intensity in `r` for MIP/MinIP.
-    pub r: Signal<Out, Bits<16>>,
+    /// Registered sample: `[r, g, b, a]`, or the intensity in `r` for
+    /// MIP/MinIP (`r` as wide as Cube-3's RPC leaves).
+    pub r: Signal<Out, Bits<32>>,
     pub g: Signal<Out, Bits<16>>,
     pub b: Signal<Out, Bits<16>>,
     pub a: Signal<Out, Bits<16>>,
@@ -187,6 +188,9 @@ pub struct Shader {
     b_q: DFF<Bits<16>>,
     a_q: DFF<Bits<16>>,
     valid_q: DFF<Bit>,
+    /// Without it the outputs read 0, as in emitted Verilog that leaves the
+    /// shader out (`export::prune`).
+    enabled: Constant<Bit>,
 }
 
 /// What a shader is built from: the golden model's tables, Cube-4L's or
@@ -245,6 +249,24 @@ impl Shader {
             magnitude_shift: w.sample_frac(),
             wide: w.gradient_bits > 17,
         })
+    }
+
+    /// The shader of a scene that shades nothing: no tables, outputs 0.
+    pub fn left_out() -> Shader {
+        let mut s = Shader::build(&Tables {
+            mode: Mode::Mip,
+            rgba_bits: 8,
+            colour: None,
+            opacity: None,
+            reflectance: None,
+            needs_gradient: false,
+            threshold: 0,
+            magnitude_shift: 0,
+            wide: false,
+        })
+        .expect("an empty shader");
+        s.enabled = Constant::new(false);
+        s
     }
 
     fn build(golden: &Tables) -> Result<Shader, String> {
@@ -383,6 +405,7 @@ impl Shader {
             b_q: Default::default(),
             a_q: Default::default(),
             valid_q: Default::default(),
+            enabled: Constant::new(true),
         })
     }
 }
@@ -524,10 +547,17 @@ impl Logic for Shader {
         if self.xray.val() {
             self.valid_q.d.next = true;
         }
-        self.r.next = self.r_q.q.val();
-        self.g.next = self.g_q.q.val();
-        self.b.next = self.b_q.q.val();
-        self.a.next = self.a_q.q.val();
-        self.valid.next = self.valid_q.q.val();
+        self.r.next = 0.into();
+        self.g.next = 0.into();
+        self.b.next = 0.into();
+        self.a.next = 0.into();
+        self.valid.next = false;
+        if self.enabled.val() {
+            self.r.next = bit_cast::<32, 16>(self.r_q.q.val());
+            self.g.next = self.g_q.q.val();
+            self.b.next = self.b_q.q.val();
+            self.a.next = self.a_q.q.val();
+            self.valid.next = self.valid_q.q.val();
+        }
     }
 }

@@ -273,7 +273,8 @@ fn run<const P: usize>(d: &Design, vcd: Option<&Path>) -> Result<Pixels, String>
             let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
             sim.run_traced(Box::new(uut), limit, f)
                 .map_err(|e| format!("simulation: {e:?}"))?;
-            write_gtkw_cube3(path, P, "uut").map_err(|e| format!("{}: {e}", path.display()))?;
+            write_gtkw_cube3(path, &d.config.pipeline, "uut")
+                .map_err(|e| format!("{}: {e}", path.display()))?;
         }
         None => sim
             .run(Box::new(uut), limit)
@@ -313,7 +314,7 @@ fn run_verilog(
         d.config.fetch.external.then_some(&d.modules[..]),
     )?;
     if let Some(path) = vcd {
-        write_gtkw_cube3(path, d.config.pipeline.p, top)
+        write_gtkw_cube3(path, &d.config.pipeline, top)
             .map_err(|e| format!("{}: {e}", path.display()))?;
     }
     *build_seconds = logged.build_seconds;

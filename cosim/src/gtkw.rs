@@ -82,7 +82,8 @@ pub fn write_gtkw(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
 /// The Cube-3 system's save file: the beam fetch's schedule and 2-DSB
 /// streams, the ray control, each TRILIN unit and its leaf, and the RPC's
 /// pixel out. `top` is the design's scope (`uut` for rust-hdl).
-pub fn write_gtkw_cube3(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> {
+pub fn write_gtkw_cube3(vcd: &Path, c: &hdl::cube3::Cube3Config, top: &str) -> std::io::Result<()> {
+    let p = c.p;
     let mut s = header(vcd);
     s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));
     let sch = format!("{top}.fetch.schedule");
@@ -124,17 +125,28 @@ pub fn write_gtkw_cube3(vcd: &Path, p: usize, top: &str) -> std::io::Result<()> 
         ),
     );
     for i in 0..p {
-        group(
-            &mut s,
-            &format!("TRILIN {i}"),
-            vec![
-                format!("{pipe}.lanes.wx${i}[15:0]"),
-                format!("{pipe}.lanes.wy${i}[15:0]"),
-                format!("{pipe}.lanes.sample${i}[31:0]"),
-                format!("{pipe}.leaf_q${i}.q[31:0]"),
-                format!("{pipe}.leaf_valid_q${i}.q"),
-            ],
-        );
+        let mut sigs = vec![
+            format!("{pipe}.lanes.wx${i}[15:0]"),
+            format!("{pipe}.lanes.wy${i}[15:0]"),
+            format!("{pipe}.lanes.sample${i}[31:0]"),
+        ];
+        if c.shading.is_none() {
+            sigs.push(format!("{pipe}.leaf_q${i}.q[31:0]"));
+            sigs.push(format!("{pipe}.leaf_valid_q${i}.q"));
+        }
+        group(&mut s, &format!("TRILIN {i}"), sigs);
+        if c.shading.is_some() {
+            let mut sigs = vec![];
+            if c.abc.is_some() {
+                for g in ["centre", "gx", "gy", "gz"] {
+                    sigs.push(format!("{pipe}.abc.{g}${i}[31:0]"));
+                }
+            }
+            for o in ["r[31:0]", "g[15:0]", "b[15:0]", "a[15:0]", "valid"] {
+                sigs.push(format!("{pipe}.shade${i}.{o}"));
+            }
+            group(&mut s, &format!("ABC unit {i}"), sigs);
+        }
     }
     group(
         &mut s,

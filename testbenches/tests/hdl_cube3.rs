@@ -1,18 +1,19 @@
 //! `hdl::cube3::Cube3`, the Cube-3 pipeline from the 2-D skewed buffers to
 //! the base plane, against the golden model's base plane
 //! (`golden_model::cube3::render_view`), pixel by pixel and on the clock
-//! `Cube3Config::pixel_delay` predicts: MIP, MinIP and X-ray on parallel
-//! views of non-cubic volumes, p = 1, 2, 4 and 8, in rust-hdl simulation and
+//! `Cube3Config::pixel_delay` predicts: every mode on parallel views of
+//! non-cubic volumes (composite and first-opaque through the ABC units with
+//! the 6 and the 12), p = 1, 2, 4 and 8, in rust-hdl simulation and
 //! as emitted Verilog under Icarus and Verilator. The 2-DSB streams are the
 //! golden model's PRPs (`prp::fetch`), as the beam fetch would fill them.
 
 use cosim::stage::{ports, StageEngine};
 use hdl::cube3::Cube3;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, verilog_pixels, Case, Pixels};
+use testbenches::cube3::{cases, emitted_verilog, engine_cases, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
-const H: usize = 8;
+const H: usize = 10;
 
 fn pipeline<const P: usize>(c: &Case) -> Cube3<P, H> {
     let mut uut = Cube3::<P, H>::new(&c.config.pipeline).unwrap();
@@ -22,7 +23,8 @@ fn pipeline<const P: usize>(c: &Case) -> Cube3<P, H> {
 
 /// Clocks to run: `start`, the streams, and the last pixel's delay.
 fn clocks(c: &Case) -> usize {
-    1 + c.cur.len() + c.config.pipeline.pixel_delay() + 2
+    let p = &c.config.pipeline;
+    1 + (p.scanlines - 1) * p.scanline_clocks + p.rays * p.segments + p.pixel_delay() + 2
 }
 
 /// Ray 0's last segment enters at clock G (start at clock 0, the first
@@ -32,13 +34,17 @@ fn first_pixel(c: &Case) -> usize {
 }
 
 /// Clock `t`'s `start`, `valid` and streams: start at clock 0, the
-/// segments from clock 1.
+/// segments from clock 1, a scanline every `scanline_clocks` (the fetch's
+/// period: pauses between scanlines).
 fn stream(c: &Case, t: usize) -> (bool, bool, &[u32], &[u32]) {
-    let empty: &[u32] = &[0; 8][..c.config.pipeline.p];
-    match t
-        .checked_sub(1)
-        .and_then(|s| c.cur.get(s).zip(c.next.get(s)))
-    {
+    let p = &c.config.pipeline;
+    let empty: &[u32] = &[0; 8][..p.p];
+    let rg = p.rays * p.segments;
+    let segment = t.checked_sub(1).and_then(|s| {
+        let (line, at) = (s / p.scanline_clocks, s % p.scanline_clocks);
+        (at < rg).then_some(line * rg + at)
+    });
+    match segment.and_then(|s| c.cur.get(s).zip(c.next.get(s))) {
         Some((a, b)) => (false, true, a, b),
         None => (t == 0, false, empty, empty),
     }
@@ -115,8 +121,8 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
 }
 
 fn check<const P: usize>(engine: StageEngine) {
-    for c in cases(P) {
-        let errors = verilog_case::<P>(engine, &c, &generate_verilog(&pipeline::<P>(&c)));
+    for c in engine_cases(P, engine) {
+        let errors = verilog_case::<P>(engine, &c, &emitted_verilog(&c, &pipeline::<P>(&c)));
         assert!(errors.is_empty(), "{}", errors[0]);
     }
 }
@@ -138,7 +144,7 @@ fn cube3_verilog_matches_golden_base_plane_under_verilator() {
 fn a_fault_in_the_cube3_verilog_is_caught() {
     require_tool("iverilog");
     let c = cases(2).remove(0);
-    let verilog = generate_verilog(&pipeline::<2>(&c));
+    let verilog = emitted_verilog(&c, &pipeline::<2>(&c));
     // Unit 0's leaf stage takes the inside bits of the previous clock's
     // cell.
     let site = "(flags_q$6$q & lane_bit$0)";

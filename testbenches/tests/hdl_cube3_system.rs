@@ -8,12 +8,12 @@
 use cosim::stage::{ports, start_only, StageEngine};
 use hdl::cube3_system::Cube3System;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, verilog_pixels, Case, Pixels};
+use testbenches::cube3::{cases, emitted_verilog, engine_cases, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
 const A: usize = 12;
 const B: usize = 10;
-const H: usize = 8;
+const H: usize = 10;
 
 fn system<const P: usize>(c: &Case) -> Cube3System<P, A, B, H> {
     let mut uut = Cube3System::<P, A, B, H>::new(&c.config).unwrap();
@@ -83,8 +83,8 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
 }
 
 fn check<const P: usize>(engine: StageEngine) {
-    for c in cases(P) {
-        let errors = verilog_case::<P>(engine, &c, &generate_verilog(&system::<P>(&c)));
+    for c in engine_cases(P, engine) {
+        let errors = verilog_case::<P>(engine, &c, &emitted_verilog(&c, &system::<P>(&c)));
         assert!(errors.is_empty(), "{}", errors[0]);
     }
 }
@@ -105,7 +105,7 @@ fn cube3_system_verilog_matches_golden_base_plane_under_verilator() {
 fn a_fault_in_the_cube3_system_verilog_is_caught() {
     require_tool("iverilog");
     let c = cases(4).remove(0);
-    let verilog = generate_verilog(&system::<4>(&c));
+    let verilog = emitted_verilog(&c, &system::<4>(&c));
     // The Fast Bus rotates one module too far for 2-DSB module 1.
     let site = "if ((((index$1 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin";
     assert!(verilog.contains(site), "the fault site exists");

@@ -11,35 +11,62 @@ use hdl::cube3_system::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
 use scene::{Camera, Mode, Scene};
 
-/// 2-DSB and delay-line address bits of every Cube-3 build.
+/// 2-DSB and delay-line address bits of every Cube-3 build (the ABC
+/// units' sample-plane lines are a scanline period long: 13 313 clocks for
+/// the engine at p = 4).
 pub const CUBE3_BUFFER_BITS: usize = 16;
-pub const CUBE3_LINE_BITS: usize = 9;
+pub const CUBE3_LINE_BITS: usize = 16;
 
 /// The units a Cube-3 system leaves out for its scene.
 pub fn cube3_left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
-    let mut v = vec![
-        LeftOut {
-            name: "abc_shading_units (MIP, MinIP and X-ray take no gradient)",
-            instances: &[],
-        },
-        LeftOut {
-            name: "de-fanning (a parallel view's beams shift as a whole)",
-            instances: &[],
-        },
-    ];
-    if !matches!(c.pipeline.mode, Mode::Composite | Mode::FirstOpaque) {
+    let p = &c.pipeline;
+    let mut v = vec![LeftOut {
+        name: "de-fanning (a parallel view's beams shift as a whole)",
+        instances: &[],
+    }];
+    if p.abc.is_none() {
+        v.push(LeftOut {
+            name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
+            instances: &["abc"],
+        });
+    }
+    match &p.shading {
+        None => v.push(LeftOut {
+            name: "shaders (MIP, MinIP and X-ray take the leaf stage)",
+            instances: &["shade$*"],
+        }),
+        Some(s) => {
+            v.push(LeftOut {
+                name: "leaf_stage (composite and first-opaque take the shaders; disabled by constants, for synthesis to remove)",
+                instances: &[],
+            });
+            if s.reflectance.is_none() {
+                v.push(LeftOut {
+                    name: "reflectance_map",
+                    instances: &["reflectance"],
+                });
+            }
+            if s.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+                v.push(LeftOut {
+                    name: "gradient_opacity_lut_and_magnitude",
+                    instances: &["alpha_gm", "sqrt"],
+                });
+            }
+        }
+    }
+    if !matches!(p.mode, Mode::Composite | Mode::FirstOpaque) {
         v.push(LeftOut {
             name: "rpc_over_operator_multipliers",
             instances: &["ch_r", "ch_g", "ch_b", "ch_a"],
         });
     }
-    if c.pipeline.opacity.is_none() {
+    if p.opacity.is_none() {
         v.push(LeftOut {
             name: "opacity_table (X-ray only)",
             instances: &["opacity"],
         });
     }
-    if c.pipeline.on_grid {
+    if p.on_grid {
         v.push(LeftOut {
             name: "trilin_arithmetic (samples on the grid: zero weights, folded by synthesis)",
             instances: &[],
@@ -86,7 +113,15 @@ pub fn cube3_config(
 ) -> Result<Cube3SystemConfig, String> {
     let shader = Shader::new(scene, camera, view);
     let height = (view.v[1] - view.v[0] + 1) as usize;
-    let mut c = Cube3SystemConfig::new(view, &shader, scene.hardware.pipelines, view.v[0], height)?;
+    let n = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
+    let mut c = Cube3SystemConfig::new(
+        view,
+        &shader,
+        n,
+        scene.hardware.pipelines,
+        view.v[0],
+        height,
+    )?;
     c.fetch.external = c.fetch.module_words() > 1 << ON_CHIP_BITS;
     Ok(c)
 }

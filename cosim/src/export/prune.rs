@@ -9,8 +9,9 @@ use hdl::pipeline::PipelineConfig;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LeftOut {
     pub name: &'static str,
-    /// Its instance names, under their parents; the emitted Verilog has no
-    /// such instance (see [`prune`]). Empty for units that stay in the
+    /// Its instance names, under their parents (`u$*`: every element of
+    /// the array `u`); the emitted Verilog has no such instance (see
+    /// [`prune`]). Empty for units that stay in the
     /// Verilog, disabled by constants, for synthesis to remove.
     pub instances: &'static [&'static str],
 }
@@ -63,6 +64,22 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
     v
 }
 
+/// The parent and instance name of module `name` when it is a unit in
+/// `gone`: `…$u` for `u`, or an element `…$u$3` of an array for `u$*`.
+fn unit_instance<'a>(name: &'a str, gone: &[&str]) -> Option<(&'a str, &'a str)> {
+    let (parent, leaf) = name.rsplit_once('$')?;
+    if gone.contains(&leaf) {
+        return Some((parent, leaf));
+    }
+    if !leaf.is_empty() && leaf.bytes().all(|b| b.is_ascii_digit()) {
+        let (outer, array) = parent.rsplit_once('$')?;
+        if gone.iter().any(|g| g.strip_suffix("$*") == Some(array)) {
+            return Some((outer, &name[outer.len() + 1..]));
+        }
+    }
+    None
+}
+
 /// The names of `units`, for reports.
 pub fn names(units: &[LeftOut]) -> Vec<&'static str> {
     units.iter().map(|u| u.name).collect()
@@ -102,11 +119,7 @@ pub fn prune(verilog: &str, units: &[LeftOut]) -> Result<String, String> {
     let mut modules = split_modules(verilog);
     let pruned: Vec<(String, Vec<(String, bool)>)> = modules
         .iter()
-        .filter(|m| {
-            m.name
-                .rsplit_once('$')
-                .is_some_and(|(_, leaf)| gone.contains(&leaf))
-        })
+        .filter(|m| unit_instance(&m.name, &gone).is_some())
         .map(|m| (m.name.clone(), module_ports(&m.text)))
         .collect();
     // A unit inside another removed unit goes with it.
@@ -121,7 +134,7 @@ pub fn prune(verilog: &str, units: &[LeftOut]) -> Result<String, String> {
             .any(|(p, _)| m.name == *p || m.name.starts_with(&format!("{p}$")))
     });
     for (name, ports) in &pruned {
-        let (parent, instance) = name.rsplit_once('$').expect("a sub-module");
+        let (parent, instance) = unit_instance(name, &gone).expect("a pruned unit");
         let m = modules
             .iter_mut()
             .find(|m| m.name == parent)
@@ -202,5 +215,24 @@ mod tests {
                 .collect::<Vec<_>>()
                 .join("\n")
         );
+    }
+
+    #[test]
+    fn prune_removes_every_element_of_an_array() {
+        let toy = TOY
+            .replace("top$u u(", "top$u$0 u$0(")
+            .replace("u$y", "u$0$y")
+            .replace("u$a", "u$0$a")
+            .replace("module top$u(", "module top$u$0(")
+            .replace("endmodule // top$u\n", "endmodule // top$u$0\n")
+            .replace("top$u$v v(", "top$u$0$v v(")
+            .replace("module top$u$v(", "module top$u$0$v(");
+        let unit = LeftOut {
+            name: "u",
+            instances: &["u$*"],
+        };
+        let v = prune(&toy, &[unit]).unwrap();
+        assert_eq!(split_modules(&v).len(), 1, "{v}");
+        assert!(v.contains("wire  [3:0] u$0$y = 'h0;"), "{v}");
     }
 }

@@ -143,17 +143,21 @@ pub fn cube3_stage_file(name: &str) -> &'static str {
         ["top", "pipeline", "lanes", "units", ..] => "trilin.v",
         ["top", "pipeline", "lanes", ..] => "trilin_lanes.v",
         ["top", "pipeline", "rpc", ..] => "rpc.v",
+        ["top", "pipeline", "abc", ..] => "abc_unit.v",
+        ["top", "pipeline", "shade", ..] => "shader.v",
         _ => "cube3.v",
     }
 }
 
 /// The Cube-3 stage files, top first.
-pub const CUBE3_STAGE_FILES: [&str; 7] = [
+pub const CUBE3_STAGE_FILES: [&str; 9] = [
     "top.v",
     "beam_fetch.v",
     "ray_control.v",
     "trilin_lanes.v",
     "trilin.v",
+    "abc_unit.v",
+    "shader.v",
     "cube3.v",
     "rpc.v",
 ];
@@ -169,6 +173,8 @@ lint_off -rule DECLFILENAME -file "*trilin_lanes.v"
 lint_off -rule DECLFILENAME -file "*trilin.v"
 lint_off -rule DECLFILENAME -file "*cube3.v"
 lint_off -rule DECLFILENAME -file "*rpc.v"
+lint_off -rule DECLFILENAME -file "*abc_unit.v"
+lint_off -rule DECLFILENAME -file "*shader.v"
 // Memory modules, 2-DSBs and delay lines are as deep as the scene needs:
 // they take wide addresses and use only the low bits,
 lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'read_address'*"
@@ -181,15 +187,26 @@ lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not use
 // The ray control's delayed word carries segment, ray, scanline and valid
 // in 64 bits; the bits above valid are spare.
 lint_off -rule UNUSEDSIGNAL -file "*ray_control.v" -match "*Bits of signal are not used: 'late$data_out'*"
-// The inside bits have one lane bit per unit of up to 8; with fewer units
-// the lane bits above them are unused.
+// The inside and inner bits have one lane bit per unit of up to 8; with
+// fewer units the lane bits above them are unused.
 lint_off -rule UNUSEDPARAM -file "*ray_control.v" -match "*Parameter is not used: 'lane_bit$*"
 lint_off -rule UNUSEDPARAM -file "*cube3.v" -match "*Parameter is not used: 'lane_bit$*"
-// One flag word rides beside the units: the leaf stage takes its inside
-// bits, the RPC one clock later its valid, first and last bits;
-lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'flags_q$7$q'*"
+lint_off -rule UNUSEDPARAM -file "*cube3.v" -match "*Parameter is not used: 'inner_bit$*"
+// One flag word rides beside the units: the leaf stage or the shaders take
+// its inside and inner bits, the RPC one clock later its valid, first and
+// last bits;
+lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'rpc_flags_q$q'*"
+// its delay line through the ABC units stores only those bits;
+lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'write_data'*"
 // and after the accumulator only the last-segment flag is read.
 lint_off -rule UNUSEDSIGNAL -file "*rpc.v" -match "*Bits of signal are not used: 'node_flags_q$*$q'*"
+// The shaders' value is the sample's integer part, voxel bits wide: the
+// top bits of s >> F are zero.
+lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'index$*"
+// Each lane's sample-plane history offers all 27 taps; the neighbouring
+// lanes read their middle ones (plane k), and only the first and the last
+// lane's taps of the next and previous segment cross to the other end.
+lint_off -rule UNUSEDSIGNAL -file "*abc_unit.v" -match "*Signal is not used: 'lanes$*$t*"
 "#;
 
 /// Cube-3 systems.

@@ -1,4 +1,4 @@
-module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3,in_volume);
+module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3,in_volume,in_inner);
     
     // Module arguments
     input wire  clock;
@@ -17,6 +17,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     output reg  [15:0] wy$2;
     output reg  [15:0] wy$3;
     output reg  [7:0] in_volume;
+    output reg  [7:0] in_inner;
     
     // Constant declarations
     localparam  last_segment = 16'h7;
@@ -61,6 +62,14 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     wire  [63:0] bounds$2$data;
     reg  [7:0] bounds$3$address;
     wire  [63:0] bounds$3$data;
+    reg  [7:0] inner$0$address;
+    wire  [63:0] inner$0$data;
+    reg  [7:0] inner$1$address;
+    wire  [63:0] inner$1$data;
+    reg  [7:0] inner$2$address;
+    wire  [63:0] inner$2$data;
+    reg  [7:0] inner$3$address;
+    wire  [63:0] inner$3$data;
     
     // Local signals
     reg  [15:0] unit_segment;
@@ -74,6 +83,14 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     reg  [7:0] lane_in$5;
     reg  [7:0] lane_in$6;
     reg  [7:0] lane_in$7;
+    reg  [7:0] lane_inner$0;
+    reg  [7:0] lane_inner$1;
+    reg  [7:0] lane_inner$2;
+    reg  [7:0] lane_inner$3;
+    reg  [7:0] lane_inner$4;
+    reg  [7:0] lane_inner$5;
+    reg  [7:0] lane_inner$6;
+    reg  [7:0] lane_inner$7;
     
     // Sub module instances
     top$pipeline$control$segment segment(
@@ -129,6 +146,22 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         .address(bounds$3$address),
         .data(bounds$3$data)
     );
+    top$pipeline$control$inner$0 inner$0(
+        .address(inner$0$address),
+        .data(inner$0$data)
+    );
+    top$pipeline$control$inner$1 inner$1(
+        .address(inner$1$address),
+        .data(inner$1$data)
+    );
+    top$pipeline$control$inner$2 inner$2(
+        .address(inner$2$address),
+        .data(inner$2$data)
+    );
+    top$pipeline$control$inner$3 inner$3(
+        .address(inner$3$address),
+        .data(inner$3$data)
+    );
     
     // Update code
     always @(*) begin
@@ -168,19 +201,31 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         unit_first = late$data_out['h30] & ~|unit_segment;
         unit_last = late$data_out['h30] & (unit_segment == last_segment);
         lane_in$0 = 'h0;
+        lane_inner$0 = 'h0;
         lane_in$1 = 'h0;
+        lane_inner$1 = 'h0;
         lane_in$2 = 'h0;
+        lane_inner$2 = 'h0;
         lane_in$3 = 'h0;
+        lane_inner$3 = 'h0;
         lane_in$4 = 'h0;
+        lane_inner$4 = 'h0;
         lane_in$5 = 'h0;
+        lane_inner$5 = 'h0;
         lane_in$6 = 'h0;
+        lane_inner$6 = 'h0;
         lane_in$7 = 'h0;
+        lane_inner$7 = 'h0;
         weights$0$address = unit_segment[('h0)+:(8)];
         bounds$0$address = unit_segment[('h0)+:(8)];
         wx$0 = weights$0$data[('h0)+:(16)];
         wy$0 = weights$0$data[('h10)+:(16)];
         if ((unit_ray >= bounds$0$data[('h0)+:(16)]) & (unit_ray <= bounds$0$data[('h10)+:(16)]) & (unit_scanline >= bounds$0$data[('h20)+:(16)]) & (unit_scanline <= bounds$0$data[('h30)+:(16)])) begin
             lane_in$0 = lane_bit$0;
+        end
+        inner$0$address = unit_segment[('h0)+:(8)];
+        if ((unit_ray >= inner$0$data[('h0)+:(16)]) & (unit_ray <= inner$0$data[('h10)+:(16)]) & (unit_scanline >= inner$0$data[('h20)+:(16)]) & (unit_scanline <= inner$0$data[('h30)+:(16)])) begin
+            lane_inner$0 = lane_bit$0;
         end
         weights$1$address = unit_segment[('h0)+:(8)];
         bounds$1$address = unit_segment[('h0)+:(8)];
@@ -189,12 +234,20 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= bounds$1$data[('h0)+:(16)]) & (unit_ray <= bounds$1$data[('h10)+:(16)]) & (unit_scanline >= bounds$1$data[('h20)+:(16)]) & (unit_scanline <= bounds$1$data[('h30)+:(16)])) begin
             lane_in$1 = lane_bit$1;
         end
+        inner$1$address = unit_segment[('h0)+:(8)];
+        if ((unit_ray >= inner$1$data[('h0)+:(16)]) & (unit_ray <= inner$1$data[('h10)+:(16)]) & (unit_scanline >= inner$1$data[('h20)+:(16)]) & (unit_scanline <= inner$1$data[('h30)+:(16)])) begin
+            lane_inner$1 = lane_bit$1;
+        end
         weights$2$address = unit_segment[('h0)+:(8)];
         bounds$2$address = unit_segment[('h0)+:(8)];
         wx$2 = weights$2$data[('h0)+:(16)];
         wy$2 = weights$2$data[('h10)+:(16)];
         if ((unit_ray >= bounds$2$data[('h0)+:(16)]) & (unit_ray <= bounds$2$data[('h10)+:(16)]) & (unit_scanline >= bounds$2$data[('h20)+:(16)]) & (unit_scanline <= bounds$2$data[('h30)+:(16)])) begin
             lane_in$2 = lane_bit$2;
+        end
+        inner$2$address = unit_segment[('h0)+:(8)];
+        if ((unit_ray >= inner$2$data[('h0)+:(16)]) & (unit_ray <= inner$2$data[('h10)+:(16)]) & (unit_scanline >= inner$2$data[('h20)+:(16)]) & (unit_scanline <= inner$2$data[('h30)+:(16)])) begin
+            lane_inner$2 = lane_bit$2;
         end
         weights$3$address = unit_segment[('h0)+:(8)];
         bounds$3$address = unit_segment[('h0)+:(8)];
@@ -203,7 +256,12 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= bounds$3$data[('h0)+:(16)]) & (unit_ray <= bounds$3$data[('h10)+:(16)]) & (unit_scanline >= bounds$3$data[('h20)+:(16)]) & (unit_scanline <= bounds$3$data[('h30)+:(16)])) begin
             lane_in$3 = lane_bit$3;
         end
+        inner$3$address = unit_segment[('h0)+:(8)];
+        if ((unit_ray >= inner$3$data[('h0)+:(16)]) & (unit_ray <= inner$3$data[('h10)+:(16)]) & (unit_scanline >= inner$3$data[('h20)+:(16)]) & (unit_scanline <= inner$3$data[('h30)+:(16)])) begin
+            lane_inner$3 = lane_bit$3;
+        end
         in_volume = lane_in$0 | lane_in$1 | lane_in$2 | lane_in$3 | lane_in$4 | lane_in$5 | lane_in$6 | lane_in$7;
+        in_inner = lane_inner$0 | lane_inner$1 | lane_inner$2 | lane_inner$3 | lane_inner$4 | lane_inner$5 | lane_inner$6 | lane_inner$7;
     end
     
 endmodule // top$pipeline$control
@@ -291,6 +349,90 @@ module top$pipeline$control$bounds$3(address,data);
     endcase
             
 endmodule // top$pipeline$control$bounds$3
+module top$pipeline$control$inner$0(address,data);
+    
+    // Module arguments
+    input wire  [7:0] address;
+    output reg  [63:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        8'h0: data = 64'h100000001;
+      8'h1: data = 64'h100000001;
+      8'h2: data = 64'h100000001;
+      8'h3: data = 64'h100000001;
+      8'h4: data = 64'h100000001;
+      8'h5: data = 64'h100000001;
+      8'h6: data = 64'h100000001;
+      8'h7: data = 64'h100000001;
+      default: data = 64'h0;
+    endcase
+            
+endmodule // top$pipeline$control$inner$0
+module top$pipeline$control$inner$1(address,data);
+    
+    // Module arguments
+    input wire  [7:0] address;
+    output reg  [63:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        8'h0: data = 64'h100000001;
+      8'h1: data = 64'h100000001;
+      8'h2: data = 64'h100000001;
+      8'h3: data = 64'h100000001;
+      8'h4: data = 64'h100000001;
+      8'h5: data = 64'h100000001;
+      8'h6: data = 64'h100000001;
+      8'h7: data = 64'h100000001;
+      default: data = 64'h0;
+    endcase
+            
+endmodule // top$pipeline$control$inner$1
+module top$pipeline$control$inner$2(address,data);
+    
+    // Module arguments
+    input wire  [7:0] address;
+    output reg  [63:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        8'h0: data = 64'h100000001;
+      8'h1: data = 64'h100000001;
+      8'h2: data = 64'h100000001;
+      8'h3: data = 64'h100000001;
+      8'h4: data = 64'h100000001;
+      8'h5: data = 64'h100000001;
+      8'h6: data = 64'h100000001;
+      8'h7: data = 64'h100000001;
+      default: data = 64'h0;
+    endcase
+            
+endmodule // top$pipeline$control$inner$2
+module top$pipeline$control$inner$3(address,data);
+    
+    // Module arguments
+    input wire  [7:0] address;
+    output reg  [63:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        8'h0: data = 64'h100000001;
+      8'h1: data = 64'h100000001;
+      8'h2: data = 64'h100000001;
+      8'h3: data = 64'h100000001;
+      8'h4: data = 64'h100000001;
+      8'h5: data = 64'h100000001;
+      8'h6: data = 64'h100000001;
+      8'h7: data = 64'h100000001;
+      default: data = 64'h0;
+    endcase
+            
+endmodule // top$pipeline$control$inner$3
 module top$pipeline$control$late(clock,data_in,write_enable,data_out);
     
     // Module arguments
@@ -300,27 +442,27 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
     output reg  [63:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b1000;
+    localparam  last = 16'h8;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [63:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$control$late$ram ram(
@@ -393,13 +535,13 @@ endmodule // top$pipeline$control$late$one
 module top$pipeline$control$late$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -410,10 +552,10 @@ endmodule // top$pipeline$control$late$ptr
 module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [63:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [63:0] write_data;
     input wire  write_enable;

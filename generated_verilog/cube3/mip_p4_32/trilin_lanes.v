@@ -625,27 +625,27 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$0$ram ram(
@@ -718,13 +718,13 @@ endmodule // top$pipeline$lanes$cur_line$0$one
 module top$pipeline$lanes$cur_line$0$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -735,10 +735,10 @@ endmodule // top$pipeline$lanes$cur_line$0$ptr
 module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -765,27 +765,27 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$1$ram ram(
@@ -858,13 +858,13 @@ endmodule // top$pipeline$lanes$cur_line$1$one
 module top$pipeline$lanes$cur_line$1$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -875,10 +875,10 @@ endmodule // top$pipeline$lanes$cur_line$1$ptr
 module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -905,27 +905,27 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$2$ram ram(
@@ -998,13 +998,13 @@ endmodule // top$pipeline$lanes$cur_line$2$one
 module top$pipeline$lanes$cur_line$2$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1015,10 +1015,10 @@ endmodule // top$pipeline$lanes$cur_line$2$ptr
 module top$pipeline$lanes$cur_line$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -1045,27 +1045,27 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$3$ram ram(
@@ -1138,13 +1138,13 @@ endmodule // top$pipeline$lanes$cur_line$3$one
 module top$pipeline$lanes$cur_line$3$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1155,10 +1155,10 @@ endmodule // top$pipeline$lanes$cur_line$3$ptr
 module top$pipeline$lanes$cur_line$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -1321,27 +1321,27 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$0$ram ram(
@@ -1414,13 +1414,13 @@ endmodule // top$pipeline$lanes$next_line$0$one
 module top$pipeline$lanes$next_line$0$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1431,10 +1431,10 @@ endmodule // top$pipeline$lanes$next_line$0$ptr
 module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -1461,27 +1461,27 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$1$ram ram(
@@ -1554,13 +1554,13 @@ endmodule // top$pipeline$lanes$next_line$1$one
 module top$pipeline$lanes$next_line$1$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1571,10 +1571,10 @@ endmodule // top$pipeline$lanes$next_line$1$ptr
 module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -1601,27 +1601,27 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$2$ram ram(
@@ -1694,13 +1694,13 @@ endmodule // top$pipeline$lanes$next_line$2$one
 module top$pipeline$lanes$next_line$2$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1711,10 +1711,10 @@ endmodule // top$pipeline$lanes$next_line$2$ptr
 module top$pipeline$lanes$next_line$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -1741,27 +1741,27 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b110;
+    localparam  last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$3$ram ram(
@@ -1834,13 +1834,13 @@ endmodule // top$pipeline$lanes$next_line$3$one
 module top$pipeline$lanes$next_line$3$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -1851,10 +1851,10 @@ endmodule // top$pipeline$lanes$next_line$3$ptr
 module top$pipeline$lanes$next_line$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;

@@ -16,18 +16,32 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     output reg  has_sample;
     
     // Constant declarations
+    localparam  gradients = 1'b0;
+    localparam  shaded = 1'b0;
     localparam  xray = 1'b1;
     localparam  half = 'h8;
     localparam  frac = 8'h4;
     localparam  row_shift = 8'h0;
-    localparam  lane_bit$0 = 16'h1;
-    localparam  lane_bit$1 = 16'h2;
-    localparam  lane_bit$2 = 16'h4;
-    localparam  lane_bit$3 = 16'h8;
-    localparam  lane_bit$4 = 16'h10;
-    localparam  lane_bit$5 = 16'h20;
-    localparam  lane_bit$6 = 16'h40;
-    localparam  lane_bit$7 = 16'h80;
+    localparam  lane_bit$0 = 'h1;
+    localparam  lane_bit$1 = 'h2;
+    localparam  lane_bit$2 = 'h4;
+    localparam  lane_bit$3 = 'h8;
+    localparam  lane_bit$4 = 'h10;
+    localparam  lane_bit$5 = 'h20;
+    localparam  lane_bit$6 = 'h40;
+    localparam  lane_bit$7 = 'h80;
+    localparam  inner_bit$0 = 'h10000;
+    localparam  inner_bit$1 = 'h20000;
+    localparam  inner_bit$2 = 'h40000;
+    localparam  inner_bit$3 = 'h80000;
+    localparam  inner_bit$4 = 'h100000;
+    localparam  inner_bit$5 = 'h200000;
+    localparam  inner_bit$6 = 'h400000;
+    localparam  inner_bit$7 = 'h800000;
+    localparam  dx_neg = 1'b0;
+    localparam  dx_mag = 16'h0;
+    localparam  dy_neg = 1'b0;
+    localparam  dy_mag = 16'h0;
     
     // Stub signals
     reg  control$clock;
@@ -42,6 +56,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     wire  [15:0] control$wy$0;
     wire  [15:0] control$wy$1;
     wire  [7:0] control$in_volume;
+    wire  [7:0] control$in_inner;
     reg  lanes$clock;
     reg  [15:0] lanes$cur$0;
     reg  [15:0] lanes$cur$1;
@@ -54,30 +69,34 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     reg  [15:0] lanes$wy$1;
     wire  [31:0] lanes$sample$0;
     wire  [31:0] lanes$sample$1;
-    reg  [15:0] flags_q$0$d;
-    wire  [15:0] flags_q$0$q;
+    reg  [31:0] flags_q$0$d;
+    wire  [31:0] flags_q$0$q;
     reg  flags_q$0$clock;
-    reg  [15:0] flags_q$1$d;
-    wire  [15:0] flags_q$1$q;
+    reg  [31:0] flags_q$1$d;
+    wire  [31:0] flags_q$1$q;
     reg  flags_q$1$clock;
-    reg  [15:0] flags_q$2$d;
-    wire  [15:0] flags_q$2$q;
+    reg  [31:0] flags_q$2$d;
+    wire  [31:0] flags_q$2$q;
     reg  flags_q$2$clock;
-    reg  [15:0] flags_q$3$d;
-    wire  [15:0] flags_q$3$q;
+    reg  [31:0] flags_q$3$d;
+    wire  [31:0] flags_q$3$q;
     reg  flags_q$3$clock;
-    reg  [15:0] flags_q$4$d;
-    wire  [15:0] flags_q$4$q;
+    reg  [31:0] flags_q$4$d;
+    wire  [31:0] flags_q$4$q;
     reg  flags_q$4$clock;
-    reg  [15:0] flags_q$5$d;
-    wire  [15:0] flags_q$5$q;
+    reg  [31:0] flags_q$5$d;
+    wire  [31:0] flags_q$5$q;
     reg  flags_q$5$clock;
-    reg  [15:0] flags_q$6$d;
-    wire  [15:0] flags_q$6$q;
+    reg  [31:0] flags_q$6$d;
+    wire  [31:0] flags_q$6$q;
     reg  flags_q$6$clock;
-    reg  [15:0] flags_q$7$d;
-    wire  [15:0] flags_q$7$q;
-    reg  flags_q$7$clock;
+    reg  flags_line$clock;
+    reg  [31:0] flags_line$data_in;
+    reg  flags_line$write_enable;
+    wire  [31:0] flags_line$data_out;
+    reg  [31:0] rpc_flags_q$d;
+    wire  [31:0] rpc_flags_q$q;
+    reg  rpc_flags_q$clock;
     reg  [11:0] opacity$0$address;
     wire  [31:0] opacity$0$data;
     reg  [11:0] opacity$1$address;
@@ -94,6 +113,51 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     reg  leaf_valid_q$1$d;
     wire  leaf_valid_q$1$q;
     reg  leaf_valid_q$1$clock;
+    reg  abc$clock;
+    reg  [31:0] abc$sample$0;
+    reg  [31:0] abc$sample$1;
+    reg  abc$dx_neg;
+    reg  [15:0] abc$dx_mag;
+    reg  abc$dy_neg;
+    reg  [15:0] abc$dy_mag;
+    wire  [31:0] abc$centre$0 = 'h0;
+    wire  [31:0] abc$centre$1 = 'h0;
+    wire  [31:0] abc$gx$0 = 'h0;
+    wire  [31:0] abc$gx$1 = 'h0;
+    wire  [31:0] abc$gy$0 = 'h0;
+    wire  [31:0] abc$gy$1 = 'h0;
+    wire  [31:0] abc$gz$0 = 'h0;
+    wire  [31:0] abc$gz$1 = 'h0;
+    reg  shade$0$clock;
+    reg  [15:0] shade$0$value;
+    reg  shade$0$invalid;
+    reg  shade$0$at_edge;
+    reg  shade$0$gx_neg;
+    reg  [31:0] shade$0$gx_mag;
+    reg  shade$0$gy_neg;
+    reg  [31:0] shade$0$gy_mag;
+    reg  shade$0$gz_neg;
+    reg  [31:0] shade$0$gz_mag;
+    wire  [31:0] shade$0$r = 'h0;
+    wire  [15:0] shade$0$g = 'h0;
+    wire  [15:0] shade$0$b = 'h0;
+    wire  [15:0] shade$0$a = 'h0;
+    wire  shade$0$valid = 'h0;
+    reg  shade$1$clock;
+    reg  [15:0] shade$1$value;
+    reg  shade$1$invalid;
+    reg  shade$1$at_edge;
+    reg  shade$1$gx_neg;
+    reg  [31:0] shade$1$gx_mag;
+    reg  shade$1$gy_neg;
+    reg  [31:0] shade$1$gy_mag;
+    reg  shade$1$gz_neg;
+    reg  [31:0] shade$1$gz_mag;
+    wire  [31:0] shade$1$r = 'h0;
+    wire  [15:0] shade$1$g = 'h0;
+    wire  [15:0] shade$1$b = 'h0;
+    wire  [15:0] shade$1$a = 'h0;
+    wire  shade$1$valid = 'h0;
     reg  rpc$clock;
     reg  [31:0] rpc$leaf_r$0;
     reg  [31:0] rpc$leaf_r$1;
@@ -115,8 +179,17 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     wire  rpc$has_sample;
     
     // Local signals
+    reg  [31:0] leaf_flags;
     reg  [31:0] row$0;
     reg  [31:0] row$1;
+    reg  [31:0] index$0;
+    reg  [31:0] index$1;
+    reg  [31:0] gx$0;
+    reg  [31:0] gx$1;
+    reg  [31:0] gy$0;
+    reg  [31:0] gy$1;
+    reg  [31:0] gz$0;
+    reg  [31:0] gz$1;
     
     // Sub module instances
     top$pipeline$control control(
@@ -131,7 +204,8 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         .wx$1(control$wx$1),
         .wy$0(control$wy$0),
         .wy$1(control$wy$1),
-        .in_volume(control$in_volume)
+        .in_volume(control$in_volume),
+        .in_inner(control$in_inner)
     );
     top$pipeline$lanes lanes(
         .clock(lanes$clock),
@@ -182,10 +256,16 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         .q(flags_q$6$q),
         .clock(flags_q$6$clock)
     );
-    top$pipeline$flags_q$7 flags_q$7(
-        .d(flags_q$7$d),
-        .q(flags_q$7$q),
-        .clock(flags_q$7$clock)
+    top$pipeline$flags_line flags_line(
+        .clock(flags_line$clock),
+        .data_in(flags_line$data_in),
+        .write_enable(flags_line$write_enable),
+        .data_out(flags_line$data_out)
+    );
+    top$pipeline$rpc_flags_q rpc_flags_q(
+        .d(rpc_flags_q$d),
+        .q(rpc_flags_q$q),
+        .clock(rpc_flags_q$clock)
     );
     top$pipeline$opacity$0 opacity$0(
         .address(opacity$0$address),
@@ -241,7 +321,10 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     always @(*) begin
         control$clock = clock;
         lanes$clock = clock;
+        abc$clock = clock;
         rpc$clock = clock;
+        flags_line$clock = clock;
+        rpc_flags_q$clock = clock;
         control$start = start;
         control$valid = valid;
         lanes$first = control$first;
@@ -252,19 +335,29 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         flags_q$4$clock = clock;
         flags_q$5$clock = clock;
         flags_q$6$clock = clock;
-        flags_q$7$clock = clock;
-        flags_q$0$d = 16'(control$in_volume) | (16'(control$unit_valid) << 'h8) | (16'(control$unit_first) << 'h9) | (16'(control$unit_last) << 'ha);
+        flags_q$0$d = 32'(control$in_volume) | (32'(control$unit_valid) << 'h8) | (32'(control$unit_first) << 'h9) | (32'(control$unit_last) << 'ha) | (32'(control$in_inner) << 'h10);
         flags_q$1$d = flags_q$0$q;
         flags_q$2$d = flags_q$1$q;
         flags_q$3$d = flags_q$2$q;
         flags_q$4$d = flags_q$3$q;
         flags_q$5$d = flags_q$4$q;
         flags_q$6$d = flags_q$5$q;
-        flags_q$7$d = flags_q$6$q;
+        flags_line$write_enable = 1'b1;
+        flags_line$data_in = flags_q$6$q;
+        leaf_flags = flags_q$6$q;
+        if (gradients) begin
+            leaf_flags = flags_line$data_out;
+        end
+        rpc_flags_q$d = leaf_flags;
+        abc$dx_neg = dx_neg;
+        abc$dx_mag = dx_mag;
+        abc$dy_neg = dy_neg;
+        abc$dy_mag = dy_mag;
         lanes$cur$0 = cur$0;
         lanes$next$0 = next$0;
         lanes$wx$0 = control$wx$0;
         lanes$wy$0 = control$wy$0;
+        abc$sample$0 = lanes$sample$0;
         leaf_q$0$clock = clock;
         leaf_valid_q$0$clock = clock;
         row$0 = (lanes$sample$0 >> frac) >> row_shift;
@@ -277,15 +370,52 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
                 leaf_q$0$d = opacity$0$data;
             end
         end
+        index$0 = lanes$sample$0 >> frac;
+        gx$0 = 'h0;
+        gy$0 = 'h0;
+        gz$0 = 'h0;
+        if (gradients) begin
+            index$0 = abc$centre$0 >> frac;
+            gx$0 = abc$gx$0;
+            gy$0 = abc$gy$0;
+            gz$0 = abc$gz$0;
+        end
+        shade$0$clock = clock;
+        shade$0$value = index$0[('h0)+:(16)];
+        shade$0$invalid = ~|(leaf_flags & lane_bit$0);
+        shade$0$at_edge = ~|(leaf_flags & inner_bit$0);
+        shade$0$gx_neg = gx$0['h1f];
+        shade$0$gx_mag = gx$0;
+        if (gx$0['h1f]) begin
+            shade$0$gx_mag = ~gx$0 + 'h1;
+        end
+        shade$0$gy_neg = gy$0['h1f];
+        shade$0$gy_mag = gy$0;
+        if (gy$0['h1f]) begin
+            shade$0$gy_mag = ~gy$0 + 'h1;
+        end
+        shade$0$gz_neg = gz$0['h1f];
+        shade$0$gz_mag = gz$0;
+        if (gz$0['h1f]) begin
+            shade$0$gz_mag = ~gz$0 + 'h1;
+        end
         rpc$leaf_r$0 = leaf_q$0$q;
         rpc$leaf_g$0 = 'h0;
         rpc$leaf_b$0 = 'h0;
         rpc$leaf_a$0 = 'h0;
         rpc$leaf_valid$0 = leaf_valid_q$0$q;
+        if (shaded) begin
+            rpc$leaf_r$0 = shade$0$r;
+            rpc$leaf_g$0 = shade$0$g;
+            rpc$leaf_b$0 = shade$0$b;
+            rpc$leaf_a$0 = shade$0$a;
+            rpc$leaf_valid$0 = shade$0$valid;
+        end
         lanes$cur$1 = cur$1;
         lanes$next$1 = next$1;
         lanes$wx$1 = control$wx$1;
         lanes$wy$1 = control$wy$1;
+        abc$sample$1 = lanes$sample$1;
         leaf_q$1$clock = clock;
         leaf_valid_q$1$clock = clock;
         row$1 = (lanes$sample$1 >> frac) >> row_shift;
@@ -298,13 +428,49 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
                 leaf_q$1$d = opacity$1$data;
             end
         end
+        index$1 = lanes$sample$1 >> frac;
+        gx$1 = 'h0;
+        gy$1 = 'h0;
+        gz$1 = 'h0;
+        if (gradients) begin
+            index$1 = abc$centre$1 >> frac;
+            gx$1 = abc$gx$1;
+            gy$1 = abc$gy$1;
+            gz$1 = abc$gz$1;
+        end
+        shade$1$clock = clock;
+        shade$1$value = index$1[('h0)+:(16)];
+        shade$1$invalid = ~|(leaf_flags & lane_bit$1);
+        shade$1$at_edge = ~|(leaf_flags & inner_bit$1);
+        shade$1$gx_neg = gx$1['h1f];
+        shade$1$gx_mag = gx$1;
+        if (gx$1['h1f]) begin
+            shade$1$gx_mag = ~gx$1 + 'h1;
+        end
+        shade$1$gy_neg = gy$1['h1f];
+        shade$1$gy_mag = gy$1;
+        if (gy$1['h1f]) begin
+            shade$1$gy_mag = ~gy$1 + 'h1;
+        end
+        shade$1$gz_neg = gz$1['h1f];
+        shade$1$gz_mag = gz$1;
+        if (gz$1['h1f]) begin
+            shade$1$gz_mag = ~gz$1 + 'h1;
+        end
         rpc$leaf_r$1 = leaf_q$1$q;
         rpc$leaf_g$1 = 'h0;
         rpc$leaf_b$1 = 'h0;
         rpc$leaf_a$1 = 'h0;
         rpc$leaf_valid$1 = leaf_valid_q$1$q;
-        rpc$first = flags_q$7$q['h9] & flags_q$7$q['h8];
-        rpc$last = flags_q$7$q['ha] & flags_q$7$q['h8];
+        if (shaded) begin
+            rpc$leaf_r$1 = shade$1$r;
+            rpc$leaf_g$1 = shade$1$g;
+            rpc$leaf_b$1 = shade$1$b;
+            rpc$leaf_a$1 = shade$1$a;
+            rpc$leaf_valid$1 = shade$1$valid;
+        end
+        rpc$first = rpc_flags_q$q['h9] & rpc_flags_q$q['h8];
+        rpc$last = rpc_flags_q$q['ha] & rpc_flags_q$q['h8];
         done = rpc$done;
         pixel_r = rpc$pixel_r;
         pixel_g = rpc$pixel_g;
@@ -314,7 +480,106 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     end
     
 endmodule // top$pipeline
-module top$pipeline$flags_q$0(d,q,clock);
+module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h1;
+    localparam  single = 1'b1;
+    localparam  mask = 'hff07ff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$flags_line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$flags_line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$flags_line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$pipeline$flags_line
+module top$pipeline$flags_line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_line$one
+module top$pipeline$flags_line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -324,6 +589,47 @@ module top$pipeline$flags_q$0(d,q,clock);
     // Update code (custom)
     initial begin
        q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_line$ptr
+module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [18:0] mem[1:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[0:0]][18:11], 5'd0, mem[read_address[0:0]][10:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[0:0]] <= {write_data[23:16], write_data[10:0]};
+       end
+    end
+endmodule // top$pipeline$flags_line$ram
+module top$pipeline$flags_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -334,13 +640,13 @@ endmodule // top$pipeline$flags_q$0
 module top$pipeline$flags_q$1(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -351,13 +657,13 @@ endmodule // top$pipeline$flags_q$1
 module top$pipeline$flags_q$2(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -368,13 +674,13 @@ endmodule // top$pipeline$flags_q$2
 module top$pipeline$flags_q$3(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -385,13 +691,13 @@ endmodule // top$pipeline$flags_q$3
 module top$pipeline$flags_q$4(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -402,13 +708,13 @@ endmodule // top$pipeline$flags_q$4
 module top$pipeline$flags_q$5(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -419,13 +725,13 @@ endmodule // top$pipeline$flags_q$5
 module top$pipeline$flags_q$6(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 'h0;
     end
     
     always @(posedge clock) begin
@@ -433,23 +739,6 @@ module top$pipeline$flags_q$6(d,q,clock);
     end
           
 endmodule // top$pipeline$flags_q$6
-module top$pipeline$flags_q$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$flags_q$7
 module top$pipeline$leaf_q$0(d,q,clock);
     
     // Module arguments
@@ -1056,3 +1345,20 @@ module top$pipeline$opacity$1(address,data);
     endcase
             
 endmodule // top$pipeline$opacity$1
+module top$pipeline$rpc_flags_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$rpc_flags_q

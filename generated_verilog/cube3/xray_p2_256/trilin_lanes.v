@@ -333,27 +333,27 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b1111110;
+    localparam  last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$0$ram ram(
@@ -426,13 +426,13 @@ endmodule // top$pipeline$lanes$cur_line$0$one
 module top$pipeline$lanes$cur_line$0$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -443,10 +443,10 @@ endmodule // top$pipeline$lanes$cur_line$0$ptr
 module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -473,27 +473,27 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b1111110;
+    localparam  last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$cur_line$1$ram ram(
@@ -566,13 +566,13 @@ endmodule // top$pipeline$lanes$cur_line$1$one
 module top$pipeline$lanes$cur_line$1$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -583,10 +583,10 @@ endmodule // top$pipeline$lanes$cur_line$1$ptr
 module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -681,27 +681,27 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b1111110;
+    localparam  last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$0$ram ram(
@@ -774,13 +774,13 @@ endmodule // top$pipeline$lanes$next_line$0$one
 module top$pipeline$lanes$next_line$0$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -791,10 +791,10 @@ endmodule // top$pipeline$lanes$next_line$0$ptr
 module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;
@@ -821,27 +821,27 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
     output reg  [15:0] data_out;
     
     // Constant declarations
-    localparam  last = 9'b1111110;
+    localparam  last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
     // Stub signals
-    reg  [8:0] ram$read_address;
+    reg  [15:0] ram$read_address;
     reg  ram$read_clock;
     wire  [15:0] ram$read_data;
-    reg  [8:0] ram$write_address;
+    reg  [15:0] ram$write_address;
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
-    reg  [8:0] ptr$d;
-    wire  [8:0] ptr$q;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
     reg  ptr$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
-    reg  [8:0] next;
+    reg  [15:0] next;
     
     // Sub module instances
     top$pipeline$lanes$next_line$1$ram ram(
@@ -914,13 +914,13 @@ endmodule // top$pipeline$lanes$next_line$1$one
 module top$pipeline$lanes$next_line$1$ptr(d,q,clock);
     
     // Module arguments
-    input wire  [8:0] d;
-    output reg  [8:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 9'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -931,10 +931,10 @@ endmodule // top$pipeline$lanes$next_line$1$ptr
 module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
-    input wire  [8:0] read_address;
+    input wire  [15:0] read_address;
     input wire  read_clock;
     output reg  [15:0] read_data;
-    input wire  [8:0] write_address;
+    input wire  [15:0] write_address;
     input wire  write_clock;
     input wire  [15:0] write_data;
     input wire  write_enable;

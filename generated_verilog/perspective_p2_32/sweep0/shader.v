@@ -11,7 +11,7 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  [31:0] gy_mag;
     input wire  gz_neg;
     input wire  [31:0] gz_mag;
-    output reg  [15:0] r;
+    output reg  [31:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
     output reg  [15:0] a;
@@ -58,6 +58,7 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -429,11 +430,18 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = r_q$q;
-        g = g_q$q;
-        b = b_q$q;
-        a = a_q$q;
-        valid = valid_q$q;
+        r = 'h0;
+        g = 'h0;
+        b = 'h0;
+        a = 'h0;
+        valid = 1'b0;
+        if (enabled) begin
+            r = 32'(r_q$q);
+            g = g_q$q;
+            b = b_q$q;
+            a = a_q$q;
+            valid = valid_q$q;
+        end
     end
     
 endmodule // top$lanes$0$shader
@@ -1026,7 +1034,7 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     input wire  [31:0] gy_mag;
     input wire  gz_neg;
     input wire  [31:0] gz_mag;
-    output reg  [15:0] r;
+    output reg  [31:0] r;
     output reg  [15:0] g;
     output reg  [15:0] b;
     output reg  [15:0] a;
@@ -1073,6 +1081,7 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [11:0] lut$address;
@@ -1444,11 +1453,18 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = r_q$q;
-        g = g_q$q;
-        b = b_q$q;
-        a = a_q$q;
-        valid = valid_q$q;
+        r = 'h0;
+        g = 'h0;
+        b = 'h0;
+        a = 'h0;
+        valid = 1'b0;
+        if (enabled) begin
+            r = 32'(r_q$q);
+            g = g_q$q;
+            b = b_q$q;
+            a = a_q$q;
+            valid = valid_q$q;
+        end
     end
     
 endmodule // top$lanes$1$shader

@@ -125,7 +125,7 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     reg  [31:0] shader$gy_mag;
     reg  shader$gz_neg;
     reg  [31:0] shader$gz_mag;
-    wire  [15:0] shader$r;
+    wire  [31:0] shader$r;
     wire  [15:0] shader$g;
     wire  [15:0] shader$b;
     wire  [15:0] shader$a;
@@ -554,7 +554,7 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
-        ctl$r = shader$r;
+        ctl$r = 16'(shader$r);
         ctl$g = shader$g;
         ctl$b = shader$b;
         ctl$a = shader$a;
@@ -3105,7 +3105,7 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     reg  [31:0] shader$gy_mag;
     reg  shader$gz_neg;
     reg  [31:0] shader$gz_mag;
-    wire  [15:0] shader$r;
+    wire  [31:0] shader$r;
     wire  [15:0] shader$g;
     wire  [15:0] shader$b;
     wire  [15:0] shader$a;
@@ -3534,7 +3534,7 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
-        ctl$r = shader$r;
+        ctl$r = 16'(shader$r);
         ctl$g = shader$g;
         ctl$b = shader$b;
         ctl$a = shader$a;

@@ -1,0 +1,2178 @@
+module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,next$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,load_enable,load_module,load_address,load_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  start;
+    output reg  valid;
+    output reg  [15:0] cur$0;
+    output reg  [15:0] cur$1;
+    output reg  [15:0] cur$2;
+    output reg  [15:0] cur$3;
+    output reg  [15:0] next$0;
+    output reg  [15:0] next$1;
+    output reg  [15:0] next$2;
+    output reg  [15:0] next$3;
+    output reg  [31:0] ext_addr$0;
+    output reg  [31:0] ext_addr$1;
+    output reg  [31:0] ext_addr$2;
+    output reg  [31:0] ext_addr$3;
+    input wire  [15:0] ext_data$0;
+    input wire  [15:0] ext_data$1;
+    input wire  [15:0] ext_data$2;
+    input wire  [15:0] ext_data$3;
+    input wire  load_enable;
+    input wire  [7:0] load_module;
+    input wire  [31:0] load_address;
+    input wire  [15:0] load_data;
+    
+    // Constant declarations
+    localparam  external = 1'b0;
+    localparam  index$0 = 16'h0;
+    localparam  index$1 = 16'h1;
+    localparam  index$2 = 16'h2;
+    localparam  index$3 = 16'h3;
+    localparam  module_id$0 = 8'h0;
+    localparam  module_id$1 = 8'h1;
+    localparam  module_id$2 = 8'h2;
+    localparam  module_id$3 = 8'h3;
+    localparam  buffer_id$0 = 2'b0;
+    localparam  buffer_id$1 = 2'b1;
+    localparam  buffer_id$2 = 2'b10;
+    localparam  one = 16'h1;
+    localparam  mask = 16'h3;
+    localparam  shift = 16'h2;
+    localparam  n_x = 16'h14;
+    localparam  n_y = 16'h12;
+    localparam  n_k = 16'h10;
+    localparam  row_words = 16'h5;
+    localparam  plane_words = 16'h5a;
+    localparam  u0 = 16'hfff3;
+    localparam  v0 = 16'hfffe;
+    localparam  rays = 16'h24;
+    localparam  segments = 16'h4;
+    
+    // Stub signals
+    reg  [15:0] memory$0$read_address;
+    reg  memory$0$read_clock;
+    wire  [15:0] memory$0$read_data;
+    reg  [15:0] memory$0$write_address;
+    reg  memory$0$write_clock;
+    reg  [15:0] memory$0$write_data;
+    reg  memory$0$write_enable;
+    reg  [15:0] memory$1$read_address;
+    reg  memory$1$read_clock;
+    wire  [15:0] memory$1$read_data;
+    reg  [15:0] memory$1$write_address;
+    reg  memory$1$write_clock;
+    reg  [15:0] memory$1$write_data;
+    reg  memory$1$write_enable;
+    reg  [15:0] memory$2$read_address;
+    reg  memory$2$read_clock;
+    wire  [15:0] memory$2$read_data;
+    reg  [15:0] memory$2$write_address;
+    reg  memory$2$write_clock;
+    reg  [15:0] memory$2$write_data;
+    reg  memory$2$write_enable;
+    reg  [15:0] memory$3$read_address;
+    reg  memory$3$read_clock;
+    wire  [15:0] memory$3$read_data;
+    reg  [15:0] memory$3$write_address;
+    reg  memory$3$write_clock;
+    reg  [15:0] memory$3$write_data;
+    reg  memory$3$write_enable;
+    reg  [15:0] buffer0$0$read_address;
+    reg  buffer0$0$read_clock;
+    wire  [15:0] buffer0$0$read_data;
+    reg  [15:0] buffer0$0$write_address;
+    reg  buffer0$0$write_clock;
+    reg  [15:0] buffer0$0$write_data;
+    reg  buffer0$0$write_enable;
+    reg  [15:0] buffer0$1$read_address;
+    reg  buffer0$1$read_clock;
+    wire  [15:0] buffer0$1$read_data;
+    reg  [15:0] buffer0$1$write_address;
+    reg  buffer0$1$write_clock;
+    reg  [15:0] buffer0$1$write_data;
+    reg  buffer0$1$write_enable;
+    reg  [15:0] buffer0$2$read_address;
+    reg  buffer0$2$read_clock;
+    wire  [15:0] buffer0$2$read_data;
+    reg  [15:0] buffer0$2$write_address;
+    reg  buffer0$2$write_clock;
+    reg  [15:0] buffer0$2$write_data;
+    reg  buffer0$2$write_enable;
+    reg  [15:0] buffer0$3$read_address;
+    reg  buffer0$3$read_clock;
+    wire  [15:0] buffer0$3$read_data;
+    reg  [15:0] buffer0$3$write_address;
+    reg  buffer0$3$write_clock;
+    reg  [15:0] buffer0$3$write_data;
+    reg  buffer0$3$write_enable;
+    reg  [15:0] buffer1$0$read_address;
+    reg  buffer1$0$read_clock;
+    wire  [15:0] buffer1$0$read_data;
+    reg  [15:0] buffer1$0$write_address;
+    reg  buffer1$0$write_clock;
+    reg  [15:0] buffer1$0$write_data;
+    reg  buffer1$0$write_enable;
+    reg  [15:0] buffer1$1$read_address;
+    reg  buffer1$1$read_clock;
+    wire  [15:0] buffer1$1$read_data;
+    reg  [15:0] buffer1$1$write_address;
+    reg  buffer1$1$write_clock;
+    reg  [15:0] buffer1$1$write_data;
+    reg  buffer1$1$write_enable;
+    reg  [15:0] buffer1$2$read_address;
+    reg  buffer1$2$read_clock;
+    wire  [15:0] buffer1$2$read_data;
+    reg  [15:0] buffer1$2$write_address;
+    reg  buffer1$2$write_clock;
+    reg  [15:0] buffer1$2$write_data;
+    reg  buffer1$2$write_enable;
+    reg  [15:0] buffer1$3$read_address;
+    reg  buffer1$3$read_clock;
+    wire  [15:0] buffer1$3$read_data;
+    reg  [15:0] buffer1$3$write_address;
+    reg  buffer1$3$write_clock;
+    reg  [15:0] buffer1$3$write_data;
+    reg  buffer1$3$write_enable;
+    reg  [15:0] buffer2$0$read_address;
+    reg  buffer2$0$read_clock;
+    wire  [15:0] buffer2$0$read_data;
+    reg  [15:0] buffer2$0$write_address;
+    reg  buffer2$0$write_clock;
+    reg  [15:0] buffer2$0$write_data;
+    reg  buffer2$0$write_enable;
+    reg  [15:0] buffer2$1$read_address;
+    reg  buffer2$1$read_clock;
+    wire  [15:0] buffer2$1$read_data;
+    reg  [15:0] buffer2$1$write_address;
+    reg  buffer2$1$write_clock;
+    reg  [15:0] buffer2$1$write_data;
+    reg  buffer2$1$write_enable;
+    reg  [15:0] buffer2$2$read_address;
+    reg  buffer2$2$read_clock;
+    wire  [15:0] buffer2$2$read_data;
+    reg  [15:0] buffer2$2$write_address;
+    reg  buffer2$2$write_clock;
+    reg  [15:0] buffer2$2$write_data;
+    reg  buffer2$2$write_enable;
+    reg  [15:0] buffer2$3$read_address;
+    reg  buffer2$3$read_clock;
+    wire  [15:0] buffer2$3$read_data;
+    reg  [15:0] buffer2$3$write_address;
+    reg  buffer2$3$write_clock;
+    reg  [15:0] buffer2$3$write_data;
+    reg  buffer2$3$write_enable;
+    reg  [9:0] pos_x$address;
+    wire  [15:0] pos_x$data;
+    reg  [9:0] pos_y$address;
+    wire  [15:0] pos_y$data;
+    reg  schedule$clock;
+    reg  schedule$start;
+    wire  schedule$writing;
+    wire  [15:0] schedule$plane;
+    wire  [15:0] schedule$chunk;
+    wire  [15:0] schedule$period;
+    wire  [1:0] schedule$write_buffer;
+    wire  schedule$reading;
+    wire  [15:0] schedule$ray;
+    wire  [15:0] schedule$segment;
+    wire  [1:0] schedule$cur_buffer;
+    wire  [1:0] schedule$next_buffer;
+    reg  inside_q$0$d;
+    wire  inside_q$0$q;
+    reg  inside_q$0$clock;
+    reg  inside_q$1$d;
+    wire  inside_q$1$q;
+    reg  inside_q$1$clock;
+    reg  inside_q$2$d;
+    wire  inside_q$2$q;
+    reg  inside_q$2$clock;
+    reg  inside_q$3$d;
+    wire  inside_q$3$q;
+    reg  inside_q$3$clock;
+    reg  [15:0] rotate_q$d;
+    wire  [15:0] rotate_q$q;
+    reg  rotate_q$clock;
+    reg  [15:0] plane_q$d;
+    wire  [15:0] plane_q$q;
+    reg  plane_q$clock;
+    reg  [15:0] chunk_q$d;
+    wire  [15:0] chunk_q$q;
+    reg  chunk_q$clock;
+    reg  write_q$d;
+    wire  write_q$q;
+    reg  write_q$clock;
+    reg  [1:0] buffer_q$d;
+    wire  [1:0] buffer_q$q;
+    reg  buffer_q$clock;
+    reg  read_q$d;
+    wire  read_q$q;
+    reg  read_q$clock;
+    reg  [15:0] lane_q$d;
+    wire  [15:0] lane_q$q;
+    reg  lane_q$clock;
+    reg  [1:0] cur_q$d;
+    wire  [1:0] cur_q$q;
+    reg  cur_q$clock;
+    reg  [1:0] next_q$d;
+    wire  [1:0] next_q$q;
+    reg  next_q$clock;
+    
+    // Local signals
+    reg  [15:0] word$0;
+    reg  [15:0] word$1;
+    reg  [15:0] word$2;
+    reg  [15:0] word$3;
+    reg  [15:0] row;
+    reg  [15:0] x0;
+    reg  [15:0] base;
+    reg  [15:0] xm$0;
+    reg  [15:0] xm$1;
+    reg  [15:0] xm$2;
+    reg  [15:0] xm$3;
+    reg  [15:0] column$0;
+    reg  [15:0] column$1;
+    reg  [15:0] column$2;
+    reg  [15:0] column$3;
+    reg  inside$0;
+    reg  inside$1;
+    reg  inside$2;
+    reg  inside$3;
+    reg  [15:0] plane_segment;
+    reg  [31:0] address$0;
+    reg  [31:0] address$1;
+    reg  [31:0] address$2;
+    reg  [31:0] address$3;
+    reg  [15:0] ray$0;
+    reg  [15:0] ray$1;
+    reg  [15:0] ray$2;
+    reg  [15:0] ray$3;
+    reg  [15:0] value$0;
+    reg  [15:0] value$1;
+    reg  [15:0] value$2;
+    reg  [15:0] value$3;
+    reg  [31:0] write_address$0;
+    reg  [31:0] write_address$1;
+    reg  [31:0] write_address$2;
+    reg  [31:0] write_address$3;
+    reg  [31:0] read_address;
+    
+    // Sub module instances
+    top$fetch$memory$0 memory$0(
+        .read_address(memory$0$read_address),
+        .read_clock(memory$0$read_clock),
+        .read_data(memory$0$read_data),
+        .write_address(memory$0$write_address),
+        .write_clock(memory$0$write_clock),
+        .write_data(memory$0$write_data),
+        .write_enable(memory$0$write_enable)
+    );
+    top$fetch$memory$1 memory$1(
+        .read_address(memory$1$read_address),
+        .read_clock(memory$1$read_clock),
+        .read_data(memory$1$read_data),
+        .write_address(memory$1$write_address),
+        .write_clock(memory$1$write_clock),
+        .write_data(memory$1$write_data),
+        .write_enable(memory$1$write_enable)
+    );
+    top$fetch$memory$2 memory$2(
+        .read_address(memory$2$read_address),
+        .read_clock(memory$2$read_clock),
+        .read_data(memory$2$read_data),
+        .write_address(memory$2$write_address),
+        .write_clock(memory$2$write_clock),
+        .write_data(memory$2$write_data),
+        .write_enable(memory$2$write_enable)
+    );
+    top$fetch$memory$3 memory$3(
+        .read_address(memory$3$read_address),
+        .read_clock(memory$3$read_clock),
+        .read_data(memory$3$read_data),
+        .write_address(memory$3$write_address),
+        .write_clock(memory$3$write_clock),
+        .write_data(memory$3$write_data),
+        .write_enable(memory$3$write_enable)
+    );
+    top$fetch$buffer0$0 buffer0$0(
+        .read_address(buffer0$0$read_address),
+        .read_clock(buffer0$0$read_clock),
+        .read_data(buffer0$0$read_data),
+        .write_address(buffer0$0$write_address),
+        .write_clock(buffer0$0$write_clock),
+        .write_data(buffer0$0$write_data),
+        .write_enable(buffer0$0$write_enable)
+    );
+    top$fetch$buffer0$1 buffer0$1(
+        .read_address(buffer0$1$read_address),
+        .read_clock(buffer0$1$read_clock),
+        .read_data(buffer0$1$read_data),
+        .write_address(buffer0$1$write_address),
+        .write_clock(buffer0$1$write_clock),
+        .write_data(buffer0$1$write_data),
+        .write_enable(buffer0$1$write_enable)
+    );
+    top$fetch$buffer0$2 buffer0$2(
+        .read_address(buffer0$2$read_address),
+        .read_clock(buffer0$2$read_clock),
+        .read_data(buffer0$2$read_data),
+        .write_address(buffer0$2$write_address),
+        .write_clock(buffer0$2$write_clock),
+        .write_data(buffer0$2$write_data),
+        .write_enable(buffer0$2$write_enable)
+    );
+    top$fetch$buffer0$3 buffer0$3(
+        .read_address(buffer0$3$read_address),
+        .read_clock(buffer0$3$read_clock),
+        .read_data(buffer0$3$read_data),
+        .write_address(buffer0$3$write_address),
+        .write_clock(buffer0$3$write_clock),
+        .write_data(buffer0$3$write_data),
+        .write_enable(buffer0$3$write_enable)
+    );
+    top$fetch$buffer1$0 buffer1$0(
+        .read_address(buffer1$0$read_address),
+        .read_clock(buffer1$0$read_clock),
+        .read_data(buffer1$0$read_data),
+        .write_address(buffer1$0$write_address),
+        .write_clock(buffer1$0$write_clock),
+        .write_data(buffer1$0$write_data),
+        .write_enable(buffer1$0$write_enable)
+    );
+    top$fetch$buffer1$1 buffer1$1(
+        .read_address(buffer1$1$read_address),
+        .read_clock(buffer1$1$read_clock),
+        .read_data(buffer1$1$read_data),
+        .write_address(buffer1$1$write_address),
+        .write_clock(buffer1$1$write_clock),
+        .write_data(buffer1$1$write_data),
+        .write_enable(buffer1$1$write_enable)
+    );
+    top$fetch$buffer1$2 buffer1$2(
+        .read_address(buffer1$2$read_address),
+        .read_clock(buffer1$2$read_clock),
+        .read_data(buffer1$2$read_data),
+        .write_address(buffer1$2$write_address),
+        .write_clock(buffer1$2$write_clock),
+        .write_data(buffer1$2$write_data),
+        .write_enable(buffer1$2$write_enable)
+    );
+    top$fetch$buffer1$3 buffer1$3(
+        .read_address(buffer1$3$read_address),
+        .read_clock(buffer1$3$read_clock),
+        .read_data(buffer1$3$read_data),
+        .write_address(buffer1$3$write_address),
+        .write_clock(buffer1$3$write_clock),
+        .write_data(buffer1$3$write_data),
+        .write_enable(buffer1$3$write_enable)
+    );
+    top$fetch$buffer2$0 buffer2$0(
+        .read_address(buffer2$0$read_address),
+        .read_clock(buffer2$0$read_clock),
+        .read_data(buffer2$0$read_data),
+        .write_address(buffer2$0$write_address),
+        .write_clock(buffer2$0$write_clock),
+        .write_data(buffer2$0$write_data),
+        .write_enable(buffer2$0$write_enable)
+    );
+    top$fetch$buffer2$1 buffer2$1(
+        .read_address(buffer2$1$read_address),
+        .read_clock(buffer2$1$read_clock),
+        .read_data(buffer2$1$read_data),
+        .write_address(buffer2$1$write_address),
+        .write_clock(buffer2$1$write_clock),
+        .write_data(buffer2$1$write_data),
+        .write_enable(buffer2$1$write_enable)
+    );
+    top$fetch$buffer2$2 buffer2$2(
+        .read_address(buffer2$2$read_address),
+        .read_clock(buffer2$2$read_clock),
+        .read_data(buffer2$2$read_data),
+        .write_address(buffer2$2$write_address),
+        .write_clock(buffer2$2$write_clock),
+        .write_data(buffer2$2$write_data),
+        .write_enable(buffer2$2$write_enable)
+    );
+    top$fetch$buffer2$3 buffer2$3(
+        .read_address(buffer2$3$read_address),
+        .read_clock(buffer2$3$read_clock),
+        .read_data(buffer2$3$read_data),
+        .write_address(buffer2$3$write_address),
+        .write_clock(buffer2$3$write_clock),
+        .write_data(buffer2$3$write_data),
+        .write_enable(buffer2$3$write_enable)
+    );
+    top$fetch$pos_x pos_x(
+        .address(pos_x$address),
+        .data(pos_x$data)
+    );
+    top$fetch$pos_y pos_y(
+        .address(pos_y$address),
+        .data(pos_y$data)
+    );
+    top$fetch$schedule schedule(
+        .clock(schedule$clock),
+        .start(schedule$start),
+        .writing(schedule$writing),
+        .plane(schedule$plane),
+        .chunk(schedule$chunk),
+        .period(schedule$period),
+        .write_buffer(schedule$write_buffer),
+        .reading(schedule$reading),
+        .ray(schedule$ray),
+        .segment(schedule$segment),
+        .cur_buffer(schedule$cur_buffer),
+        .next_buffer(schedule$next_buffer)
+    );
+    top$fetch$inside_q$0 inside_q$0(
+        .d(inside_q$0$d),
+        .q(inside_q$0$q),
+        .clock(inside_q$0$clock)
+    );
+    top$fetch$inside_q$1 inside_q$1(
+        .d(inside_q$1$d),
+        .q(inside_q$1$q),
+        .clock(inside_q$1$clock)
+    );
+    top$fetch$inside_q$2 inside_q$2(
+        .d(inside_q$2$d),
+        .q(inside_q$2$q),
+        .clock(inside_q$2$clock)
+    );
+    top$fetch$inside_q$3 inside_q$3(
+        .d(inside_q$3$d),
+        .q(inside_q$3$q),
+        .clock(inside_q$3$clock)
+    );
+    top$fetch$rotate_q rotate_q(
+        .d(rotate_q$d),
+        .q(rotate_q$q),
+        .clock(rotate_q$clock)
+    );
+    top$fetch$plane_q plane_q(
+        .d(plane_q$d),
+        .q(plane_q$q),
+        .clock(plane_q$clock)
+    );
+    top$fetch$chunk_q chunk_q(
+        .d(chunk_q$d),
+        .q(chunk_q$q),
+        .clock(chunk_q$clock)
+    );
+    top$fetch$write_q write_q(
+        .d(write_q$d),
+        .q(write_q$q),
+        .clock(write_q$clock)
+    );
+    top$fetch$buffer_q buffer_q(
+        .d(buffer_q$d),
+        .q(buffer_q$q),
+        .clock(buffer_q$clock)
+    );
+    top$fetch$read_q read_q(
+        .d(read_q$d),
+        .q(read_q$q),
+        .clock(read_q$clock)
+    );
+    top$fetch$lane_q lane_q(
+        .d(lane_q$d),
+        .q(lane_q$q),
+        .clock(lane_q$clock)
+    );
+    top$fetch$cur_q cur_q(
+        .d(cur_q$d),
+        .q(cur_q$q),
+        .clock(cur_q$clock)
+    );
+    top$fetch$next_q next_q(
+        .d(next_q$d),
+        .q(next_q$q),
+        .clock(next_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        rotate_q$clock = clock;
+        plane_q$clock = clock;
+        chunk_q$clock = clock;
+        write_q$clock = clock;
+        buffer_q$clock = clock;
+        read_q$clock = clock;
+        lane_q$clock = clock;
+        cur_q$clock = clock;
+        next_q$clock = clock;
+        rotate_q$d = rotate_q$q;
+        plane_q$d = plane_q$q;
+        chunk_q$d = chunk_q$q;
+        write_q$d = write_q$q;
+        buffer_q$d = buffer_q$q;
+        read_q$d = read_q$q;
+        lane_q$d = lane_q$q;
+        cur_q$d = cur_q$q;
+        next_q$d = next_q$q;
+        schedule$clock = clock;
+        schedule$start = start;
+        pos_x$address = schedule$plane[('h0)+:(10)];
+        pos_y$address = schedule$plane[('h0)+:(10)];
+        row = v0 + schedule$period + pos_y$data;
+        x0 = u0 + pos_x$data + (schedule$chunk << shift);
+        base = (x0 + row + schedule$plane) & mask;
+        memory$0$read_clock = clock;
+        memory$0$write_clock = clock;
+        memory$0$write_enable = load_enable & (load_module == module_id$0) & ~external;
+        memory$0$write_address = load_address[('h0)+:(16)];
+        memory$0$write_data = load_data;
+        xm$0 = x0 + ((index$0 - base) & mask);
+        inside$0 = ~xm$0['hf] & (xm$0 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
+        column$0 = xm$0 >> shift;
+        address$0 = column$0 * one + row * row_words + schedule$plane * plane_words;
+        memory$0$read_address = 'h0;
+        ext_addr$0 = 'h0;
+        if (inside$0 & ~external) begin
+            memory$0$read_address = address$0[('h0)+:(16)];
+        end
+        if (inside$0 & external) begin
+            ext_addr$0 = address$0;
+        end
+        word$0 = memory$0$read_data;
+        if (external) begin
+            word$0 = ext_data$0;
+        end
+        inside_q$0$clock = clock;
+        inside_q$0$d = inside$0;
+        memory$1$read_clock = clock;
+        memory$1$write_clock = clock;
+        memory$1$write_enable = load_enable & (load_module == module_id$1) & ~external;
+        memory$1$write_address = load_address[('h0)+:(16)];
+        memory$1$write_data = load_data;
+        xm$1 = x0 + ((index$1 - base) & mask);
+        inside$1 = ~xm$1['hf] & (xm$1 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
+        column$1 = xm$1 >> shift;
+        address$1 = column$1 * one + row * row_words + schedule$plane * plane_words;
+        memory$1$read_address = 'h0;
+        ext_addr$1 = 'h0;
+        if (inside$1 & ~external) begin
+            memory$1$read_address = address$1[('h0)+:(16)];
+        end
+        if (inside$1 & external) begin
+            ext_addr$1 = address$1;
+        end
+        word$1 = memory$1$read_data;
+        if (external) begin
+            word$1 = ext_data$1;
+        end
+        inside_q$1$clock = clock;
+        inside_q$1$d = inside$1;
+        memory$2$read_clock = clock;
+        memory$2$write_clock = clock;
+        memory$2$write_enable = load_enable & (load_module == module_id$2) & ~external;
+        memory$2$write_address = load_address[('h0)+:(16)];
+        memory$2$write_data = load_data;
+        xm$2 = x0 + ((index$2 - base) & mask);
+        inside$2 = ~xm$2['hf] & (xm$2 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
+        column$2 = xm$2 >> shift;
+        address$2 = column$2 * one + row * row_words + schedule$plane * plane_words;
+        memory$2$read_address = 'h0;
+        ext_addr$2 = 'h0;
+        if (inside$2 & ~external) begin
+            memory$2$read_address = address$2[('h0)+:(16)];
+        end
+        if (inside$2 & external) begin
+            ext_addr$2 = address$2;
+        end
+        word$2 = memory$2$read_data;
+        if (external) begin
+            word$2 = ext_data$2;
+        end
+        inside_q$2$clock = clock;
+        inside_q$2$d = inside$2;
+        memory$3$read_clock = clock;
+        memory$3$write_clock = clock;
+        memory$3$write_enable = load_enable & (load_module == module_id$3) & ~external;
+        memory$3$write_address = load_address[('h0)+:(16)];
+        memory$3$write_data = load_data;
+        xm$3 = x0 + ((index$3 - base) & mask);
+        inside$3 = ~xm$3['hf] & (xm$3 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
+        column$3 = xm$3 >> shift;
+        address$3 = column$3 * one + row * row_words + schedule$plane * plane_words;
+        memory$3$read_address = 'h0;
+        ext_addr$3 = 'h0;
+        if (inside$3 & ~external) begin
+            memory$3$read_address = address$3[('h0)+:(16)];
+        end
+        if (inside$3 & external) begin
+            ext_addr$3 = address$3;
+        end
+        word$3 = memory$3$read_data;
+        if (external) begin
+            word$3 = ext_data$3;
+        end
+        inside_q$3$clock = clock;
+        inside_q$3$d = inside$3;
+        rotate_q$d = (x0 + row) & mask;
+        plane_q$d = schedule$plane;
+        chunk_q$d = schedule$chunk;
+        write_q$d = schedule$writing;
+        plane_segment = plane_q$q >> shift;
+        buffer_q$d = schedule$write_buffer;
+        value$0 = 'h0;
+        if ((((index$0 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
+            value$0 = word$0;
+        end
+        if ((((index$0 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
+            value$0 = word$1;
+        end
+        if ((((index$0 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
+            value$0 = word$2;
+        end
+        if ((((index$0 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
+            value$0 = word$3;
+        end
+        ray$0 = (chunk_q$q << shift) + ((index$0 - plane_q$q) & mask);
+        write_address$0 = ray$0 * segments + 32'(plane_segment);
+        buffer0$0$write_clock = clock;
+        buffer1$0$write_clock = clock;
+        buffer2$0$write_clock = clock;
+        buffer0$0$write_address = write_address$0[('h0)+:(16)];
+        buffer1$0$write_address = write_address$0[('h0)+:(16)];
+        buffer2$0$write_address = write_address$0[('h0)+:(16)];
+        buffer0$0$write_data = value$0;
+        buffer1$0$write_data = value$0;
+        buffer2$0$write_data = value$0;
+        buffer0$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$2);
+        value$1 = 'h0;
+        if ((((index$1 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
+            value$1 = word$0;
+        end
+        if ((((index$1 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
+            value$1 = word$1;
+        end
+        if ((((index$1 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
+            value$1 = word$2;
+        end
+        if ((((index$1 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
+            value$1 = word$3;
+        end
+        ray$1 = (chunk_q$q << shift) + ((index$1 - plane_q$q) & mask);
+        write_address$1 = ray$1 * segments + 32'(plane_segment);
+        buffer0$1$write_clock = clock;
+        buffer1$1$write_clock = clock;
+        buffer2$1$write_clock = clock;
+        buffer0$1$write_address = write_address$1[('h0)+:(16)];
+        buffer1$1$write_address = write_address$1[('h0)+:(16)];
+        buffer2$1$write_address = write_address$1[('h0)+:(16)];
+        buffer0$1$write_data = value$1;
+        buffer1$1$write_data = value$1;
+        buffer2$1$write_data = value$1;
+        buffer0$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$2);
+        value$2 = 'h0;
+        if ((((index$2 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
+            value$2 = word$0;
+        end
+        if ((((index$2 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
+            value$2 = word$1;
+        end
+        if ((((index$2 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
+            value$2 = word$2;
+        end
+        if ((((index$2 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
+            value$2 = word$3;
+        end
+        ray$2 = (chunk_q$q << shift) + ((index$2 - plane_q$q) & mask);
+        write_address$2 = ray$2 * segments + 32'(plane_segment);
+        buffer0$2$write_clock = clock;
+        buffer1$2$write_clock = clock;
+        buffer2$2$write_clock = clock;
+        buffer0$2$write_address = write_address$2[('h0)+:(16)];
+        buffer1$2$write_address = write_address$2[('h0)+:(16)];
+        buffer2$2$write_address = write_address$2[('h0)+:(16)];
+        buffer0$2$write_data = value$2;
+        buffer1$2$write_data = value$2;
+        buffer2$2$write_data = value$2;
+        buffer0$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$2);
+        value$3 = 'h0;
+        if ((((index$3 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
+            value$3 = word$0;
+        end
+        if ((((index$3 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
+            value$3 = word$1;
+        end
+        if ((((index$3 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
+            value$3 = word$2;
+        end
+        if ((((index$3 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
+            value$3 = word$3;
+        end
+        ray$3 = (chunk_q$q << shift) + ((index$3 - plane_q$q) & mask);
+        write_address$3 = ray$3 * segments + 32'(plane_segment);
+        buffer0$3$write_clock = clock;
+        buffer1$3$write_clock = clock;
+        buffer2$3$write_clock = clock;
+        buffer0$3$write_address = write_address$3[('h0)+:(16)];
+        buffer1$3$write_address = write_address$3[('h0)+:(16)];
+        buffer2$3$write_address = write_address$3[('h0)+:(16)];
+        buffer0$3$write_data = value$3;
+        buffer1$3$write_data = value$3;
+        buffer2$3$write_data = value$3;
+        buffer0$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$2);
+        read_address = 'h0;
+        if (schedule$reading) begin
+            read_address = schedule$ray * segments + 32'(schedule$segment);
+        end
+        read_q$d = schedule$reading;
+        lane_q$d = schedule$ray & mask;
+        cur_q$d = schedule$cur_buffer;
+        next_q$d = schedule$next_buffer;
+        buffer0$0$read_clock = clock;
+        buffer1$0$read_clock = clock;
+        buffer2$0$read_clock = clock;
+        buffer0$0$read_address = read_address[('h0)+:(16)];
+        buffer1$0$read_address = read_address[('h0)+:(16)];
+        buffer2$0$read_address = read_address[('h0)+:(16)];
+        buffer0$1$read_clock = clock;
+        buffer1$1$read_clock = clock;
+        buffer2$1$read_clock = clock;
+        buffer0$1$read_address = read_address[('h0)+:(16)];
+        buffer1$1$read_address = read_address[('h0)+:(16)];
+        buffer2$1$read_address = read_address[('h0)+:(16)];
+        buffer0$2$read_clock = clock;
+        buffer1$2$read_clock = clock;
+        buffer2$2$read_clock = clock;
+        buffer0$2$read_address = read_address[('h0)+:(16)];
+        buffer1$2$read_address = read_address[('h0)+:(16)];
+        buffer2$2$read_address = read_address[('h0)+:(16)];
+        buffer0$3$read_clock = clock;
+        buffer1$3$read_clock = clock;
+        buffer2$3$read_clock = clock;
+        buffer0$3$read_address = read_address[('h0)+:(16)];
+        buffer1$3$read_address = read_address[('h0)+:(16)];
+        buffer2$3$read_address = read_address[('h0)+:(16)];
+        cur$0 = 'h0;
+        next$0 = 'h0;
+        if (((index$0 + lane_q$q) & mask) == index$0) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$0 = buffer0$0$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$0 = buffer1$0$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$0 = buffer2$0$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$0 = buffer0$0$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$0 = buffer1$0$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$0 = buffer2$0$read_data;
+            end
+        end
+        if (((index$0 + lane_q$q) & mask) == index$1) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$0 = buffer0$1$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$0 = buffer1$1$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$0 = buffer2$1$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$0 = buffer0$1$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$0 = buffer1$1$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$0 = buffer2$1$read_data;
+            end
+        end
+        if (((index$0 + lane_q$q) & mask) == index$2) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$0 = buffer0$2$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$0 = buffer1$2$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$0 = buffer2$2$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$0 = buffer0$2$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$0 = buffer1$2$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$0 = buffer2$2$read_data;
+            end
+        end
+        if (((index$0 + lane_q$q) & mask) == index$3) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$0 = buffer0$3$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$0 = buffer1$3$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$0 = buffer2$3$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$0 = buffer0$3$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$0 = buffer1$3$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$0 = buffer2$3$read_data;
+            end
+        end
+        cur$1 = 'h0;
+        next$1 = 'h0;
+        if (((index$1 + lane_q$q) & mask) == index$0) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$1 = buffer0$0$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$1 = buffer1$0$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$1 = buffer2$0$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$1 = buffer0$0$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$1 = buffer1$0$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$1 = buffer2$0$read_data;
+            end
+        end
+        if (((index$1 + lane_q$q) & mask) == index$1) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$1 = buffer0$1$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$1 = buffer1$1$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$1 = buffer2$1$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$1 = buffer0$1$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$1 = buffer1$1$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$1 = buffer2$1$read_data;
+            end
+        end
+        if (((index$1 + lane_q$q) & mask) == index$2) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$1 = buffer0$2$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$1 = buffer1$2$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$1 = buffer2$2$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$1 = buffer0$2$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$1 = buffer1$2$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$1 = buffer2$2$read_data;
+            end
+        end
+        if (((index$1 + lane_q$q) & mask) == index$3) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$1 = buffer0$3$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$1 = buffer1$3$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$1 = buffer2$3$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$1 = buffer0$3$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$1 = buffer1$3$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$1 = buffer2$3$read_data;
+            end
+        end
+        cur$2 = 'h0;
+        next$2 = 'h0;
+        if (((index$2 + lane_q$q) & mask) == index$0) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$2 = buffer0$0$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$2 = buffer1$0$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$2 = buffer2$0$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$2 = buffer0$0$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$2 = buffer1$0$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$2 = buffer2$0$read_data;
+            end
+        end
+        if (((index$2 + lane_q$q) & mask) == index$1) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$2 = buffer0$1$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$2 = buffer1$1$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$2 = buffer2$1$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$2 = buffer0$1$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$2 = buffer1$1$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$2 = buffer2$1$read_data;
+            end
+        end
+        if (((index$2 + lane_q$q) & mask) == index$2) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$2 = buffer0$2$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$2 = buffer1$2$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$2 = buffer2$2$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$2 = buffer0$2$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$2 = buffer1$2$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$2 = buffer2$2$read_data;
+            end
+        end
+        if (((index$2 + lane_q$q) & mask) == index$3) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$2 = buffer0$3$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$2 = buffer1$3$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$2 = buffer2$3$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$2 = buffer0$3$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$2 = buffer1$3$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$2 = buffer2$3$read_data;
+            end
+        end
+        cur$3 = 'h0;
+        next$3 = 'h0;
+        if (((index$3 + lane_q$q) & mask) == index$0) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$3 = buffer0$0$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$3 = buffer1$0$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$3 = buffer2$0$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$3 = buffer0$0$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$3 = buffer1$0$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$3 = buffer2$0$read_data;
+            end
+        end
+        if (((index$3 + lane_q$q) & mask) == index$1) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$3 = buffer0$1$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$3 = buffer1$1$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$3 = buffer2$1$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$3 = buffer0$1$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$3 = buffer1$1$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$3 = buffer2$1$read_data;
+            end
+        end
+        if (((index$3 + lane_q$q) & mask) == index$2) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$3 = buffer0$2$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$3 = buffer1$2$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$3 = buffer2$2$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$3 = buffer0$2$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$3 = buffer1$2$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$3 = buffer2$2$read_data;
+            end
+        end
+        if (((index$3 + lane_q$q) & mask) == index$3) begin
+            if (cur_q$q == buffer_id$0) begin
+                cur$3 = buffer0$3$read_data;
+            end
+            if (cur_q$q == buffer_id$1) begin
+                cur$3 = buffer1$3$read_data;
+            end
+            if (cur_q$q == buffer_id$2) begin
+                cur$3 = buffer2$3$read_data;
+            end
+            if (next_q$q == buffer_id$0) begin
+                next$3 = buffer0$3$read_data;
+            end
+            if (next_q$q == buffer_id$1) begin
+                next$3 = buffer1$3$read_data;
+            end
+            if (next_q$q == buffer_id$2) begin
+                next$3 = buffer2$3$read_data;
+            end
+        end
+        valid = read_q$q;
+    end
+    
+endmodule // top$fetch
+module top$fetch$buffer0$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer0$0
+module top$fetch$buffer0$1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer0$1
+module top$fetch$buffer0$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer0$2
+module top$fetch$buffer0$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer0$3
+module top$fetch$buffer1$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer1$0
+module top$fetch$buffer1$1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer1$1
+module top$fetch$buffer1$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer1$2
+module top$fetch$buffer1$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer1$3
+module top$fetch$buffer2$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer2$0
+module top$fetch$buffer2$1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer2$1
+module top$fetch$buffer2$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer2$2
+module top$fetch$buffer2$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[143:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[7:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$buffer2$3
+module top$fetch$buffer_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$buffer_q
+module top$fetch$chunk_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$chunk_q
+module top$fetch$cur_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$cur_q
+module top$fetch$inside_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$inside_q$0
+module top$fetch$inside_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$inside_q$1
+module top$fetch$inside_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$inside_q$2
+module top$fetch$inside_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$inside_q$3
+module top$fetch$lane_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$lane_q
+module top$fetch$memory$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[1439:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[10:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[10:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$memory$0
+module top$fetch$memory$1(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[1439:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[10:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[10:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$memory$1
+module top$fetch$memory$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[1439:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[10:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[10:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$memory$2
+module top$fetch$memory$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem[1439:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[10:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[10:0]] <= write_data;
+       end
+    end
+endmodule // top$fetch$memory$3
+module top$fetch$next_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$next_q
+module top$fetch$plane_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$plane_q
+module top$fetch$pos_x(address,data);
+    
+    // Module arguments
+    input wire  [9:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        10'b0: data = 16'h0;
+      10'b1: data = 16'h0;
+      10'b10: data = 16'h1;
+      10'b11: data = 16'h2;
+      10'b100: data = 16'h3;
+      10'b101: data = 16'h3;
+      10'b110: data = 16'h4;
+      10'b111: data = 16'h5;
+      10'b1000: data = 16'h6;
+      10'b1001: data = 16'h6;
+      10'b1010: data = 16'h7;
+      10'b1011: data = 16'h8;
+      10'b1100: data = 16'h9;
+      10'b1101: data = 16'ha;
+      10'b1110: data = 16'ha;
+      10'b1111: data = 16'hb;
+      10'b10000: data = 16'hc;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$fetch$pos_x
+module top$fetch$pos_y(address,data);
+    
+    // Module arguments
+    input wire  [9:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        10'b0: data = 16'h0;
+      10'b1: data = 16'hffff;
+      10'b10: data = 16'hffff;
+      10'b11: data = 16'hfffe;
+      10'b100: data = 16'hfffe;
+      10'b101: data = 16'hfffd;
+      10'b110: data = 16'hfffd;
+      10'b111: data = 16'hfffc;
+      10'b1000: data = 16'hfffc;
+      10'b1001: data = 16'hfffb;
+      10'b1010: data = 16'hfffb;
+      10'b1011: data = 16'hfffa;
+      10'b1100: data = 16'hfffa;
+      10'b1101: data = 16'hfff9;
+      10'b1110: data = 16'hfff9;
+      10'b1111: data = 16'hfff9;
+      10'b10000: data = 16'hfff8;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$fetch$pos_y
+module top$fetch$read_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$read_q
+module top$fetch$rotate_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$rotate_q
+module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,reading,ray,segment,cur_buffer,next_buffer);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  start;
+    output reg  writing;
+    output reg  [15:0] plane;
+    output reg  [15:0] chunk;
+    output reg  [15:0] period;
+    output reg  [1:0] write_buffer;
+    output reg  reading;
+    output reg  [15:0] ray;
+    output reg  [15:0] segment;
+    output reg  [1:0] cur_buffer;
+    output reg  [1:0] next_buffer;
+    
+    // Constant declarations
+    localparam  last_tick = 16'h90;
+    localparam  last_period = 16'h1d;
+    localparam  last_write_period = 16'h1c;
+    localparam  last_plane = 16'hf;
+    localparam  last_chunk = 16'h8;
+    localparam  last_ray = 16'h23;
+    localparam  last_segment = 16'h3;
+    localparam  first_read_period = 16'h2;
+    
+    // Stub signals
+    reg  active$d;
+    wire  active$q;
+    reg  active$clock;
+    reg  [15:0] tick$d;
+    wire  [15:0] tick$q;
+    reg  tick$clock;
+    reg  [15:0] period_q$d;
+    wire  [15:0] period_q$q;
+    reg  period_q$clock;
+    reg  [15:0] plane_q$d;
+    wire  [15:0] plane_q$q;
+    reg  plane_q$clock;
+    reg  [15:0] chunk_q$d;
+    wire  [15:0] chunk_q$q;
+    reg  chunk_q$clock;
+    reg  [15:0] ray_q$d;
+    wire  [15:0] ray_q$q;
+    reg  ray_q$clock;
+    reg  [15:0] segment_q$d;
+    wire  [15:0] segment_q$q;
+    reg  segment_q$clock;
+    reg  written$d;
+    wire  written$q;
+    reg  written$clock;
+    reg  read$d;
+    wire  read$q;
+    reg  read$clock;
+    reg  [1:0] w_q$d;
+    wire  [1:0] w_q$q;
+    reg  w_q$clock;
+    reg  [1:0] c_q$d;
+    wire  [1:0] c_q$q;
+    reg  c_q$clock;
+    reg  [1:0] n_q$d;
+    wire  [1:0] n_q$q;
+    reg  n_q$clock;
+    
+    // Sub module instances
+    top$fetch$schedule$active active(
+        .d(active$d),
+        .q(active$q),
+        .clock(active$clock)
+    );
+    top$fetch$schedule$tick tick(
+        .d(tick$d),
+        .q(tick$q),
+        .clock(tick$clock)
+    );
+    top$fetch$schedule$period_q period_q(
+        .d(period_q$d),
+        .q(period_q$q),
+        .clock(period_q$clock)
+    );
+    top$fetch$schedule$plane_q plane_q(
+        .d(plane_q$d),
+        .q(plane_q$q),
+        .clock(plane_q$clock)
+    );
+    top$fetch$schedule$chunk_q chunk_q(
+        .d(chunk_q$d),
+        .q(chunk_q$q),
+        .clock(chunk_q$clock)
+    );
+    top$fetch$schedule$ray_q ray_q(
+        .d(ray_q$d),
+        .q(ray_q$q),
+        .clock(ray_q$clock)
+    );
+    top$fetch$schedule$segment_q segment_q(
+        .d(segment_q$d),
+        .q(segment_q$q),
+        .clock(segment_q$clock)
+    );
+    top$fetch$schedule$written written(
+        .d(written$d),
+        .q(written$q),
+        .clock(written$clock)
+    );
+    top$fetch$schedule$read read(
+        .d(read$d),
+        .q(read$q),
+        .clock(read$clock)
+    );
+    top$fetch$schedule$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$fetch$schedule$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
+    top$fetch$schedule$n_q n_q(
+        .d(n_q$d),
+        .q(n_q$q),
+        .clock(n_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        active$clock = clock;
+        tick$clock = clock;
+        period_q$clock = clock;
+        plane_q$clock = clock;
+        chunk_q$clock = clock;
+        ray_q$clock = clock;
+        segment_q$clock = clock;
+        written$clock = clock;
+        read$clock = clock;
+        w_q$clock = clock;
+        c_q$clock = clock;
+        n_q$clock = clock;
+        active$d = active$q;
+        tick$d = tick$q;
+        period_q$d = period_q$q;
+        plane_q$d = plane_q$q;
+        chunk_q$d = chunk_q$q;
+        ray_q$d = ray_q$q;
+        segment_q$d = segment_q$q;
+        written$d = written$q;
+        read$d = read$q;
+        w_q$d = w_q$q;
+        c_q$d = c_q$q;
+        n_q$d = n_q$q;
+        writing = active$q & ~written$q & (period_q$q <= last_write_period);
+        reading = active$q & ~read$q & (period_q$q >= first_read_period);
+        if (writing) begin
+            chunk_q$d = chunk_q$q + 'h1;
+            if (chunk_q$q == last_chunk) begin
+                chunk_q$d = 'h0;
+                plane_q$d = plane_q$q + 'h1;
+                if (plane_q$q == last_plane) begin
+                    written$d = 1'b1;
+                end
+            end
+        end
+        if (reading) begin
+            segment_q$d = segment_q$q + 'h1;
+            if (segment_q$q == last_segment) begin
+                segment_q$d = 'h0;
+                ray_q$d = ray_q$q + 'h1;
+                if (ray_q$q == last_ray) begin
+                    read$d = 1'b1;
+                end
+            end
+        end
+        if (active$q) begin
+            tick$d = tick$q + 'h1;
+            if (tick$q == last_tick) begin
+                tick$d = 'h0;
+                period_q$d = period_q$q + 'h1;
+                if (period_q$q == last_period) begin
+                    active$d = 1'b0;
+                end
+                chunk_q$d = 'h0;
+                plane_q$d = 'h0;
+                segment_q$d = 'h0;
+                ray_q$d = 'h0;
+                written$d = 1'b0;
+                read$d = 1'b0;
+                c_q$d = n_q$q;
+                n_q$d = w_q$q;
+                w_q$d = c_q$q;
+            end
+        end
+        if (start) begin
+            active$d = 1'b1;
+            tick$d = 'h0;
+            period_q$d = 'h0;
+            chunk_q$d = 'h0;
+            plane_q$d = 'h0;
+            segment_q$d = 'h0;
+            ray_q$d = 'h0;
+            written$d = 1'b0;
+            read$d = 1'b0;
+            w_q$d = 'h0;
+            n_q$d = 'h2;
+            c_q$d = 'h1;
+        end
+        plane = plane_q$q;
+        chunk = chunk_q$q;
+        period = period_q$q;
+        write_buffer = w_q$q;
+        ray = ray_q$q;
+        segment = segment_q$q;
+        cur_buffer = c_q$q;
+        next_buffer = n_q$q;
+    end
+    
+endmodule // top$fetch$schedule
+module top$fetch$schedule$active(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$active
+module top$fetch$schedule$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$c_q
+module top$fetch$schedule$chunk_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$chunk_q
+module top$fetch$schedule$n_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$n_q
+module top$fetch$schedule$period_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$period_q
+module top$fetch$schedule$plane_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$plane_q
+module top$fetch$schedule$ray_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$ray_q
+module top$fetch$schedule$read(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$read
+module top$fetch$schedule$segment_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$segment_q
+module top$fetch$schedule$tick(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$tick
+module top$fetch$schedule$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$w_q
+module top$fetch$schedule$written(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$written
+module top$fetch$write_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$write_q
