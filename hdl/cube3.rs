@@ -139,9 +139,10 @@ impl Cube3Config {
                 })
             }
             (true, n) => {
+                let count = if n == Neighbourhood::N10 { 10 } else { 26 };
                 return Err(format!(
-                    "cube3.gradient {n:?} is not built in hardware (the 6 or the 12)"
-                ))
+                    "cube3.gradient {count} is not built in hardware (the 6 or the 12)"
+                ));
             }
         };
         let halo = abc.is_some() as usize;

@@ -13,8 +13,9 @@
 //! Cube-3: [`beam_fetch`] (CFB, Fast Bus, 2-DSBs), [`trilin_lanes`] and
 //! [`trilin`], [`ray_control`], the ABC gradient lanes ([`abc_unit`],
 //! [`abc_estimator`], [`plane_taps`]), the Ray Projection Cone ([`rpc`],
-//! [`rpc_node`]), [`cube3`] (pipeline and leaf stage) and [`cube3_system`]
-//! (memory to base-plane pixels).
+//! [`rpc_node`]), [`cube3`] (pipeline, leaf stage, and the ABC units'
+//! shaders: Cube-4L's [`shader`]) and [`cube3_system`] (memory to
+//! base-plane pixels).
 //!
 //! Shared: [`lerp`], [`over`], [`delay_line`], [`ram`] (block RAM as deep as
 //! the scene needs), [`unorm`] (the exact unorm multiplier). Nothing here

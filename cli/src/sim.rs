@@ -25,7 +25,7 @@ enum Engine {
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum SimArch {
     Cube4l,
-    /// Cube-3: parallel views in MIP, MinIP and X-ray so far.
+    /// Cube-3: parallel views in every mode (perspective not built yet).
     Cube3,
 }
 

@@ -27,7 +27,7 @@ enum SynthTarget {
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum SynthArch {
     Cube4l,
-    /// Cube-3: parallel views in MIP, MinIP and X-ray so far.
+    /// Cube-3: parallel views in every mode (perspective not built yet).
     Cube3,
 }
 

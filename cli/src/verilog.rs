@@ -11,7 +11,7 @@ use std::path::PathBuf;
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 enum VerilogArch {
     Cube4l,
-    /// Cube-3: parallel views in MIP, MinIP and X-ray so far.
+    /// Cube-3: parallel views in every mode (perspective not built yet).
     Cube3,
 }
 

@@ -913,19 +913,31 @@ fn cube3_sim_verilog_and_their_refusals() {
     ] {
         assert!(d.path().join("v").join(f).exists(), "{f} missing");
     }
-    let composite = write(
+    // What the RTL does not build: the 26-neighbourhood, perspective views.
+    let n26 = write(
         d.path(),
         "c.json",
         r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "parallel", "rotate_deg": [25, 35, 0]},
-            "mode": "composite", "hardware": {"pipelines": 2}}"#,
+            "mode": "composite", "hardware": {"pipelines": 2}, "cube3": {"gradient": 26}}"#,
+    );
+    let perspective = write(
+        d.path(),
+        "p.json",
+        r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "perspective", "eye": [4.5, 4, -12], "fov_deg": 40},
+            "mode": "mip", "hardware": {"pipelines": 2}}"#,
     );
     for cmd in ["sim", "verilog"] {
-        assert_clean_error(
-            &cube(
-                &[cmd, "--arch", "cube3", "--scene", &composite, "--out", "w"],
-                d.path(),
-            ),
-            "MIP, MinIP and X-ray only so far",
-        );
+        for (scene, why) in [
+            (&n26, "is not built in hardware (the 6 or the 12)"),
+            (&perspective, "parallel views only so far"),
+        ] {
+            assert_clean_error(
+                &cube(
+                    &[cmd, "--arch", "cube3", "--scene", scene, "--out", "w"],
+                    d.path(),
+                ),
+                why,
+            );
+        }
     }
 }
