@@ -210,6 +210,13 @@ impl Cube3Config {
         })
     }
 
+    /// Clocks from the first segment entering the streams to just after
+    /// the last: a scanline every `scanline_clocks`, the last one's `R·G`
+    /// segments.
+    pub fn stream_clocks(&self) -> usize {
+        (self.scanlines - 1) * self.scanline_clocks + self.rays * self.segments
+    }
+
     /// Clocks from a ray's last segment entering the streams to its pixel.
     pub fn pixel_delay(&self) -> usize {
         crate::trilin_lanes::cell_delay(self.segments)

@@ -57,9 +57,7 @@ impl Cube3SystemConfig {
     /// last scanline's last segment enters `R·G - 1` clocks after its
     /// first, and leaves as a pixel `pixel_delay` clocks later.
     pub fn clocks(&self) -> usize {
-        let c = &self.fetch;
-        let last_entry =
-            self.first_entry() + (c.scanlines - 1) * c.period() + c.rays * c.segments - 1;
+        let last_entry = self.first_entry() + self.pipeline.stream_clocks() - 1;
         last_entry + self.pipeline.pixel_delay() + 1
     }
 }

@@ -24,7 +24,7 @@ fn pipeline<const P: usize>(c: &Case) -> Cube3<P, H> {
 /// Clocks to run: `start`, the streams, and the last pixel's delay.
 fn clocks(c: &Case) -> usize {
     let p = &c.config.pipeline;
-    1 + (p.scanlines - 1) * p.scanline_clocks + p.rays * p.segments + p.pixel_delay() + 2
+    1 + p.stream_clocks() + p.pixel_delay() + 2
 }
 
 /// Ray 0's last segment enters at clock G (start at clock 0, the first
