@@ -1,34 +1,49 @@
-//! Cube-3's beam fetch into the 2-D skewed buffers (§2, Fig. 2; §5, Fig.
-//! 12) for a parallel view: the CFB delivers the PRP of each scanline as
-//! beams, the Fast Bus aligns the discrete rays, and three 2-DSBs in turn
-//! take a PRP while the other two are read as the `cur` and `next` streams
-//! of [`crate::trilin_lanes`].
+//! Cube-3's beam fetch into the 2-D skewed buffers (§2, Figs. 2 and 3; §5,
+//! Fig. 12): the CFB delivers the PRP of each scanline as beams, the Fast
+//! Bus shears (parallel) or de-fans (perspective) them so that each
+//! discrete ray becomes a row, and three 2-DSBs in turn take a PRP while
+//! the other two are read as the `cur` and `next` streams of
+//! [`crate::trilin_lanes`].
 //!
 //! **CFB.** `P` memory modules (on chip, or an external RAM through the
 //! `ext_*` ports) hold the volume in the view's traversal
 //! order `(x, y, k)`, skewed as Cube-4L's CFB: voxel `(x, y, k)` in module
 //! `(x + y + k) mod P` at address `x div P + y·b + k·b·n_y`, `b = ceil(n_x /
-//! P)`, so any `P` consecutive voxels of a beam lie in `P` different
-//! modules. (Cube-4L's CFB reads beams along the dataset's first axis in
-//! sweep order; the host loads this memory in the traversal order of the
-//! base plane instead, one beam per plane and chunk of `P` rays.)
+//! P)`, so any `P` voxels of a beam within `P` consecutive `x` lie in `P`
+//! different modules. (Cube-4L's CFB reads beams along the dataset's first
+//! axis in sweep order; the host loads this memory in the traversal order
+//! of the base plane instead.)
 //!
 //! **Beams.** Scanline `v`'s PRP is beam `k` = the voxels `(X_k(u), Y_k(v),
-//! k)` for the stream's rays `u`, `X_k(u) = u + pos_x[k]`, `Y_k(v) = v +
-//! pos_y[k]` (the templates). One clock reads a chunk of `P` consecutive
-//! rays: module `m` reads the `x` of the chunk with `(x + y + k) mod P = m`;
-//! voxels outside the volume read 0. Planes `0 .. K_w` are written (`K_w =
-//! min(K + 1, G·P)`; plane `K`, behind the volume, is 0).
+//! k)` for the stream's rays `u` (the templates). Each clock reads a group
+//! of up to `P` consecutive rays of one beam, through `P` lanes: lane `j`
+//! reads ray `r + j` at `x_j = X_k(u_0 + r + j)`, from module `(x_j + y +
+//! k) mod P`; voxels outside the volume read 0. Planes `0 .. K_w` are
+//! written (`K_w = min(K + 1, G·P)`; plane `K`, behind the volume, is 0).
+//!
+//! - *Parallel* (a shear): `X_k(u) = u + pos_x[k]`, so every group is a
+//!   chunk of `P` rays whose `x_j = x_0 + j` are consecutive:
+//!   `K_w·ceil(R / P)` clocks a PRP, from counters and one ROM entry a
+//!   plane.
+//! - *Perspective* (de-fanning, Fig. 3): the rays diverge from the eye, so
+//!   `X_k` grows by one or more from ray to ray and voxels between them are
+//!   not fetched. A group is as many rays (up to `P`) as have their `x`
+//!   within `P` consecutive voxels, which makes it conflict-free; the
+//!   host lists the groups of every plane ([`Group`]) and ROMs hold them,
+//!   one entry a clock, with `Y_k(v)` by scanline and plane. A PRP takes as
+//!   many clocks as groups.
 //!
 //! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
 //! at address `r·G + k div P`, so a ray's `P` planes of a segment lie in `P`
-//! modules at one address. The voxel read by memory module `m` goes to
-//! 2-DSB module `(m - x_0 - y) mod P` (`x_0` the chunk's first `x`): one
-//! rotation of the `P` voxels per clock, by `(x_0 + y) mod P`. A voxel thus
-//! travels up to `P - 1` modules in a clock; between consecutive beams the
-//! rotation changes by `pos_x[k+1] - pos_x[k] + pos_y[k+1] - pos_y[k]`, at
-//! most 2 in a parallel view, which is all the Fast Bus of the paper shifts
-//! (the full rotation also serves every chunk without a shift register).
+//! modules at one address. Memory module `m` takes the address of the lane
+//! whose voxel it holds, and one clock later 2-DSB module `d` takes the
+//! word of the lane whose ray it stores: a voxel may travel from any module
+//! to any other in a clock (a `P`-way crossbar each way). In a parallel
+//! view both are rotations, by `(x_0 + y + k) mod P` and `(r + k) mod P`;
+//! between consecutive beams the first changes by `pos_x[k+1] - pos_x[k] +
+//! pos_y[k+1] - pos_y[k] + 1`, the shift of the paper's Fast Bus. A
+//! perspective view's lanes land in modules in any order, hence the
+//! crossbar.
 //!
 //! **Reads.** Segment `s` of ray `r` reads address `r·G + s` of every module
 //! of the `cur` and `next` buffers; lane `i` takes module `(r + i) mod P`.
@@ -37,16 +52,28 @@
 //! `j mod 3` takes scanline `v_0 + j` (for `j <= S`) while, from period 2,
 //! scanlines `v_0 + j - 2` (`cur`) and `v_0 + j - 1` (`next`) are read, `R·G`
 //! segments on consecutive clocks, `valid` high. `T` is the longer of the
-//! writes (`K_w·ceil(R / P)` clocks and the read latency) and the reads
-//! (`R·G` and the read latency): [`BeamFetchConfig::period`].
+//! writes (the groups, and the read latency) and the reads (`R·G` and the
+//! read latency): [`BeamFetchConfig::period`].
 
 use crate::ram::DepthRam;
 use golden_model::cube3::plan::{Template, View};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
 
-/// Address bits of the template ROMs: up to 1023 planes.
+/// Address bits of the parallel template ROM: up to 1023 planes.
 pub const PLANE_BITS: usize = 10;
+/// Address bits of the perspective group and row ROMs.
+pub const GROUP_BITS: usize = 16;
+
+/// One clock of a perspective PRP's writes: plane `plane`, stream rays
+/// `ray .. ray + x.len()` at beam positions `x` (increasing, within `P`
+/// consecutive voxels).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Group {
+    pub plane: usize,
+    pub ray: usize,
+    pub x: Vec<i32>,
+}
 
 /// What the beam fetch is built from.
 #[derive(Debug, Clone)]
@@ -60,9 +87,13 @@ pub struct BeamFetchConfig {
     pub rays: usize,
     pub scanlines: usize,
     pub segments: usize,
-    /// `pos_x[k]`, `pos_y[k]` for `k` in `0 ..= K`.
+    /// Parallel: `pos_x[k]`, `pos_y[k]` for `k` in `0 ..= K`. Perspective:
+    /// `pos_y[j·(K + 1) + k] = Y_k(v_0 + j) - v_0 - j` for the written
+    /// scanlines `j` in `0 ..= S`, and `pos_x` is empty.
     pub pos_x: Vec<i32>,
     pub pos_y: Vec<i32>,
+    /// Perspective: the groups of every written plane, in order.
+    pub groups: Vec<Group>,
     /// The volume lives in external memory, not in on-chip modules.
     pub external: bool,
 }
@@ -76,12 +107,7 @@ impl BeamFetchConfig {
         v0: i32,
         scanlines: usize,
     ) -> Result<BeamFetchConfig, String> {
-        let (Template::Parallel { pos: px, .. }, Template::Parallel { pos: py, .. }) =
-            (&view.x, &view.y)
-        else {
-            return Err("the beam fetch is built for parallel views only so far".into());
-        };
-        Ok(BeamFetchConfig {
+        let mut c = BeamFetchConfig {
             p,
             dims: view.dims,
             u0,
@@ -89,10 +115,71 @@ impl BeamFetchConfig {
             rays,
             scanlines,
             segments: view.dims[2].div_ceil(p),
-            pos_x: px.clone(),
-            pos_y: py.clone(),
+            pos_x: vec![],
+            pos_y: vec![],
+            groups: vec![],
             external: false,
-        })
+        };
+        match (&view.x, &view.y) {
+            (Template::Parallel { pos: px, .. }, Template::Parallel { pos: py, .. }) => {
+                c.pos_x = px.clone();
+                c.pos_y = py.clone();
+            }
+            (Template::Perspective { lo, d, .. }, Template::Perspective { lo: vlo, d: vd, .. }) => {
+                let covers = |lo: i32, n: usize, first: i32, count: usize| {
+                    first >= lo && first + count as i32 <= lo + n as i32
+                };
+                if !covers(*lo, d.len(), u0, rays) || !covers(*vlo, vd.len(), v0, scanlines + 1) {
+                    return Err(
+                        "the stream's rays or scanlines lie outside the view's templates".into(),
+                    );
+                }
+                let nk = view.dims[2];
+                c.pos_y = (0..=scanlines as i32)
+                    .flat_map(|j| (0..=nk).map(move |k| (j, k)))
+                    .map(|(j, k)| view.y.pos(v0 + j, k) - v0 - j)
+                    .collect();
+                for k in 0..c.planes_written() {
+                    let x = |r: usize| view.x.pos(u0 + r as i32, k);
+                    let mut r = 0;
+                    while r < rays {
+                        let mut n = 1;
+                        while n < p && r + n < rays && x(r + n) - x(r) < p as i32 {
+                            if x(r + n) <= x(r + n - 1) {
+                                return Err(format!(
+                                    "plane {k}: rays {} and {} do not diverge",
+                                    u0 + (r + n - 1) as i32,
+                                    u0 + (r + n) as i32
+                                ));
+                            }
+                            n += 1;
+                        }
+                        c.groups.push(Group {
+                            plane: k,
+                            ray: r,
+                            x: (r..r + n).map(x).collect(),
+                        });
+                        r += n;
+                    }
+                }
+            }
+            _ => return Err("a view's templates are both parallel or both perspective".into()),
+        }
+        Ok(c)
+    }
+
+    /// A perspective view: the groups and rows come from ROMs.
+    pub fn perspective(&self) -> bool {
+        !self.groups.is_empty()
+    }
+
+    /// Clocks of a PRP's writes.
+    pub fn write_clocks(&self) -> usize {
+        if self.perspective() {
+            self.groups.len()
+        } else {
+            self.planes_written() * self.rays.div_ceil(self.p)
+        }
     }
 
     /// Planes written per PRP.
@@ -102,7 +189,7 @@ impl BeamFetchConfig {
 
     /// Clocks of a scanline period.
     pub fn period(&self) -> usize {
-        let writes = self.planes_written() * self.rays.div_ceil(self.p) + 1;
+        let writes = self.write_clocks() + 1;
         let reads = self.rays * self.segments + 1;
         writes.max(reads)
     }
@@ -165,28 +252,49 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     buffer0: [DepthRam<Bits<16>, B>; P],
     buffer1: [DepthRam<Bits<16>, B>; P],
     buffer2: [DepthRam<Bits<16>, B>; P],
+    /// Parallel: the templates by plane.
     pos_x: ROM<Bits<16>, PLANE_BITS>,
-    pos_y: ROM<Bits<16>, PLANE_BITS>,
+    /// `Y_k(v) - v` by plane (parallel), or by scanline and plane at
+    /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`).
+    pos_y: ROM<Bits<16>, GROUP_BITS>,
+    row_stride: Constant<Bits<16>>,
+    row_entry: Signal<Local, Bits<32>>,
+    /// Perspective: each group's `[plane, first ray]` and its lanes' `x`
+    /// (bit 16: the lane holds a ray).
+    perspective: Constant<Bit>,
+    groups: ROM<Bits<32>, GROUP_BITS>,
+    group_x: [ROM<Bits<32>, GROUP_BITS>; P],
     schedule: Schedule,
-    /// The write side: this clock's beam and chunk, and per module the
-    /// voxel's x and whether it lies in the volume.
+    /// The write side: this clock's plane, row and first ray, and per lane
+    /// its ray, voxel `x`, module, address and whether it holds a ray and
+    /// lies in the volume.
+    plane: Signal<Local, Bits<16>>,
     row: Signal<Local, Bits<16>>,
+    first_ray: Signal<Local, Bits<16>>,
     x0: Signal<Local, Bits<16>>,
-    base: Signal<Local, Bits<16>>,
-    xm: [Signal<Local, Bits<16>>; P],
-    column: [Signal<Local, Bits<16>>; P],
-    inside: [Signal<Local, Bit>; P],
+    lane_ray: [Signal<Local, Bits<16>>; P],
+    lane_x: [Signal<Local, Bits<16>>; P],
+    lane_holds: [Signal<Local, Bit>; P],
+    lane_inside: [Signal<Local, Bit>; P],
+    lane_module: [Signal<Local, Bits<16>>; P],
+    lane_address: [Signal<Local, Bits<32>>; P],
+    /// Per memory module: the address it reads, and whether it reads.
+    address: [Signal<Local, Bits<32>>; P],
+    reads: [Signal<Local, Bit>; P],
     /// One clock later, with the memory's data.
+    holds_q: [DFF<Bit>; P],
     inside_q: [DFF<Bit>; P],
-    rotate_q: DFF<Bits<16>>,
+    module_q: [DFF<Bits<16>>; P],
+    ray_q: [DFF<Bits<16>>; P],
     plane_q: DFF<Bits<16>>,
-    chunk_q: DFF<Bits<16>>,
     write_q: DFF<Bit>,
     plane_segment: Signal<Local, Bits<16>>,
     buffer_q: DFF<Bits<2>>,
-    address: [Signal<Local, Bits<32>>; P],
-    ray: [Signal<Local, Bits<16>>; P],
     value: [Signal<Local, Bits<16>>; P],
+    /// Per 2-DSB module: the lane's word, ray and whether one is written.
+    dsb_data: [Signal<Local, Bits<16>>; P],
+    dsb_ray: [Signal<Local, Bits<16>>; P],
+    dsb_write: [Signal<Local, Bit>; P],
     write_address: [Signal<Local, Bits<32>>; P],
     read_address: Signal<Local, Bits<32>>,
     /// The read side, one clock later: the rotation and the buffers.
@@ -235,10 +343,17 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
                 (1 << PLANE_BITS) - 1
             ));
         }
+        if c.groups.len() > 1 << GROUP_BITS || c.pos_y.len() > 1 << GROUP_BITS {
+            return Err(format!(
+                "{} groups of rays and {} rows: the perspective templates hold at most 2^{GROUP_BITS}",
+                c.groups.len(),
+                c.pos_y.len()
+            ));
+        }
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
-        let rom = |v: &[i32]| -> ROM<Bits<16>, PLANE_BITS> {
+        fn rom16<const N: usize>(v: &[i32]) -> ROM<Bits<16>, N> {
             v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
-        };
+        }
         let words = if c.external {
             2
         } else {
@@ -246,6 +361,16 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
         };
         let ram = || DepthRam::with_words(words);
         let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
+        let group_x = |j: usize| -> ROM<Bits<32>, GROUP_BITS> {
+            c.groups
+                .iter()
+                .map(|g| {
+                    g.x.get(j)
+                        .map_or(0, |&x| (x as u64 & 0xffff) | 1 << 16)
+                        .to_bits()
+                })
+                .into()
+        };
         Ok(BeamFetch {
             clock: Default::default(),
             start: Default::default(),
@@ -264,25 +389,42 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             buffer0: std::array::from_fn(|_| buffer()),
             buffer1: std::array::from_fn(|_| buffer()),
             buffer2: std::array::from_fn(|_| buffer()),
-            pos_x: rom(&c.pos_x),
-            pos_y: rom(&c.pos_y),
+            pos_x: rom16(&c.pos_x),
+            pos_y: rom16(&c.pos_y),
+            row_entry: Default::default(),
+            row_stride: k(if c.perspective() { nk as i64 + 1 } else { 0 }),
+            perspective: Constant::new(c.perspective()),
+            groups: c
+                .groups
+                .iter()
+                .map(|g| (g.plane as u64 | (g.ray as u64) << 16).to_bits())
+                .into(),
+            group_x: std::array::from_fn(group_x),
             schedule: Schedule::new(c),
+            plane: Default::default(),
             row: Default::default(),
+            first_ray: Default::default(),
             x0: Default::default(),
-            base: Default::default(),
-            xm: std::array::from_fn(|_| Default::default()),
-            column: std::array::from_fn(|_| Default::default()),
-            inside: std::array::from_fn(|_| Default::default()),
+            lane_ray: std::array::from_fn(|_| Default::default()),
+            lane_x: std::array::from_fn(|_| Default::default()),
+            lane_holds: std::array::from_fn(|_| Default::default()),
+            lane_inside: std::array::from_fn(|_| Default::default()),
+            lane_module: std::array::from_fn(|_| Default::default()),
+            lane_address: std::array::from_fn(|_| Default::default()),
+            address: std::array::from_fn(|_| Default::default()),
+            reads: std::array::from_fn(|_| Default::default()),
+            holds_q: std::array::from_fn(|_| Default::default()),
             inside_q: std::array::from_fn(|_| Default::default()),
-            rotate_q: Default::default(),
+            module_q: std::array::from_fn(|_| Default::default()),
+            ray_q: std::array::from_fn(|_| Default::default()),
             plane_q: Default::default(),
-            chunk_q: Default::default(),
             write_q: Default::default(),
             plane_segment: Default::default(),
             buffer_q: Default::default(),
-            address: std::array::from_fn(|_| Default::default()),
-            ray: std::array::from_fn(|_| Default::default()),
             value: std::array::from_fn(|_| Default::default()),
+            dsb_data: std::array::from_fn(|_| Default::default()),
+            dsb_ray: std::array::from_fn(|_| Default::default()),
+            dsb_write: std::array::from_fn(|_| Default::default()),
             write_address: std::array::from_fn(|_| Default::default()),
             read_address: Default::default(),
             read_q: Default::default(),
@@ -318,21 +460,66 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
 impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, rotate_q, plane_q, chunk_q, write_q, buffer_q, read_q, lane_q, cur_q,
-            next_q
-        );
+        dff_setup!(self, clock, plane_q, write_q, buffer_q, read_q, lane_q, cur_q, next_q);
         self.schedule.clock.next = self.clock.val();
         self.schedule.start.next = self.start.val();
-        // The beam's chunk: its row y, first x and skew.
-        self.pos_x.address.next = self.schedule.plane.val().get_bits::<PLANE_BITS>(0);
-        self.pos_y.address.next = self.schedule.plane.val().get_bits::<PLANE_BITS>(0);
+        // This clock's group: a parallel chunk from the counters, or a
+        // perspective group from the ROMs (the schedule's chunk counts
+        // groups).
+        self.groups.address.next = self.schedule.chunk.val();
+        self.plane.next = self.schedule.plane.val();
+        self.first_ray.next = self.schedule.chunk.val() << self.shift.val();
+        if self.perspective.val() {
+            self.plane.next = self.groups.data.val().get_bits::<16>(0);
+            self.first_ray.next = self.groups.data.val().get_bits::<16>(16);
+        }
+        self.pos_x.address.next = self.plane.val().get_bits::<PLANE_BITS>(0);
+        self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
+            + bit_cast::<32, 16>(self.plane.val());
+        self.pos_y.address.next = self.row_entry.val().get_bits::<GROUP_BITS>(0);
         self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
-        self.x0.next =
-            self.u0.val() + self.pos_x.data.val() + (self.schedule.chunk.val() << self.shift.val());
-        self.base.next =
-            (self.x0.val() + self.row.val() + self.schedule.plane.val()) & self.mask.val();
+        self.x0.next = self.u0.val() + self.pos_x.data.val() + self.first_ray.val();
+        for j in 0..P {
+            self.group_x[j].address.next = self.schedule.chunk.val();
+            self.lane_ray[j].next = self.first_ray.val() + self.index[j].val();
+            self.lane_x[j].next = self.x0.val() + self.index[j].val();
+            self.lane_holds[j].next = true;
+            if self.perspective.val() {
+                self.lane_x[j].next = self.group_x[j].data.val().get_bits::<16>(0);
+                self.lane_holds[j].next = self.group_x[j].data.val().get_bit(16);
+            }
+            self.lane_inside[j].next = self.lane_holds[j].val()
+                & !self.lane_x[j].val().get_bit(15)
+                & (self.lane_x[j].val() < self.n_x.val())
+                & !self.row.val().get_bit(15)
+                & (self.row.val() < self.n_y.val())
+                & (self.plane.val() < self.n_k.val());
+            self.lane_module[j].next =
+                (self.lane_x[j].val() + self.row.val() + self.plane.val()) & self.mask.val();
+            // (`* one` widens the column to 32 bits inside the loop.)
+            self.lane_address[j].next = (self.lane_x[j].val() >> self.shift.val()) * self.one.val()
+                + self.row.val() * self.row_words.val()
+                + self.plane.val() * self.plane_words.val();
+            self.holds_q[j].clock.next = self.clock.val();
+            self.inside_q[j].clock.next = self.clock.val();
+            self.module_q[j].clock.next = self.clock.val();
+            self.ray_q[j].clock.next = self.clock.val();
+            self.holds_q[j].d.next = self.lane_holds[j].val();
+            self.inside_q[j].d.next = self.lane_inside[j].val();
+            self.module_q[j].d.next = self.lane_module[j].val();
+            self.ray_q[j].d.next = self.lane_ray[j].val();
+        }
+        // Lanes to memory modules: each module reads the voxel of the lane
+        // in it (at most one: the lanes' x lie within P consecutive).
         for m in 0..P {
+            self.address[m].next = 0.into();
+            self.reads[m].next = false;
+            for j in 0..P {
+                if self.lane_inside[j].val() & (self.lane_module[j].val() == self.index[m].val()) {
+                    self.address[m].next = self.lane_address[j].val();
+                    self.reads[m].next = true;
+                }
+            }
             self.memory[m].read_clock.next = self.clock.val();
             self.memory[m].write_clock.next = self.clock.val();
             self.memory[m].write_enable.next = self.load_enable.val()
@@ -340,55 +527,49 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 & !self.external.val();
             self.memory[m].write_address.next = self.load_address.val().get_bits::<A>(0);
             self.memory[m].write_data.next = self.load_data.val();
-            self.xm[m].next =
-                self.x0.val() + ((self.index[m].val() - self.base.val()) & self.mask.val());
-            self.inside[m].next = !self.xm[m].val().get_bit(15)
-                & (self.xm[m].val() < self.n_x.val())
-                & !self.row.val().get_bit(15)
-                & (self.row.val() < self.n_y.val())
-                & (self.schedule.plane.val() < self.n_k.val());
-            // (`* one` widens the column to 32 bits inside the loop.)
-            self.column[m].next = self.xm[m].val() >> self.shift.val();
-            self.address[m].next = self.column[m].val() * self.one.val()
-                + self.row.val() * self.row_words.val()
-                + self.schedule.plane.val() * self.plane_words.val();
             // Outside the volume the module reads word 0, and the voxel is 0.
             self.memory[m].read_address.next = 0.into();
             self.ext_addr[m].next = 0.into();
-            if self.inside[m].val() & !self.external.val() {
+            if self.reads[m].val() & !self.external.val() {
                 self.memory[m].read_address.next = self.address[m].val().get_bits::<A>(0);
             }
-            if self.inside[m].val() & self.external.val() {
+            if self.reads[m].val() & self.external.val() {
                 self.ext_addr[m].next = self.address[m].val();
             }
             self.word[m].next = self.memory[m].read_data.val();
             if self.external.val() {
                 self.word[m].next = self.ext_data[m].val();
             }
-            self.inside_q[m].clock.next = self.clock.val();
-            self.inside_q[m].d.next = self.inside[m].val();
         }
-        self.rotate_q.d.next = (self.x0.val() + self.row.val()) & self.mask.val();
-        self.plane_q.d.next = self.schedule.plane.val();
-        self.chunk_q.d.next = self.schedule.chunk.val();
+        self.plane_q.d.next = self.plane.val();
         self.write_q.d.next = self.schedule.writing.val();
         self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
         self.buffer_q.d.next = self.schedule.write_buffer.val();
-        // The Fast Bus: 2-DSB module d takes memory module (d + x0 + y) mod
-        // P; ray r of plane k at address r*G + k div P.
-        for d in 0..P {
-            self.value[d].next = 0.into();
+        // Memory modules back to lanes, and lanes to 2-DSB modules: ray r
+        // of plane k to module (r + k) mod P at address r*G + k div P.
+        for j in 0..P {
+            self.value[j].next = 0.into();
             for m in 0..P {
-                if (((self.index[d].val() + self.rotate_q.q.val()) & self.mask.val())
-                    == self.index[m].val())
-                    & self.inside_q[m].q.val()
-                {
-                    self.value[d].next = self.word[m].val();
+                if self.inside_q[j].q.val() & (self.module_q[j].q.val() == self.index[m].val()) {
+                    self.value[j].next = self.word[m].val();
                 }
             }
-            self.ray[d].next = (self.chunk_q.q.val() << self.shift.val())
-                + ((self.index[d].val() - self.plane_q.q.val()) & self.mask.val());
-            self.write_address[d].next = self.ray[d].val() * self.segments.val()
+        }
+        for d in 0..P {
+            self.dsb_data[d].next = 0.into();
+            self.dsb_ray[d].next = 0.into();
+            self.dsb_write[d].next = false;
+            for j in 0..P {
+                if self.holds_q[j].q.val()
+                    & (((self.ray_q[j].q.val() + self.plane_q.q.val()) & self.mask.val())
+                        == self.index[d].val())
+                {
+                    self.dsb_data[d].next = self.value[j].val();
+                    self.dsb_ray[d].next = self.ray_q[j].q.val();
+                    self.dsb_write[d].next = true;
+                }
+            }
+            self.write_address[d].next = self.dsb_ray[d].val() * self.segments.val()
                 + bit_cast::<32, 16>(self.plane_segment.val());
             self.buffer0[d].write_clock.next = self.clock.val();
             self.buffer1[d].write_clock.next = self.clock.val();
@@ -396,17 +577,20 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             self.buffer0[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
             self.buffer1[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
             self.buffer2[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
-            self.buffer0[d].write_data.next = self.value[d].val();
-            self.buffer1[d].write_data.next = self.value[d].val();
-            self.buffer2[d].write_data.next = self.value[d].val();
+            self.buffer0[d].write_data.next = self.dsb_data[d].val();
+            self.buffer1[d].write_data.next = self.dsb_data[d].val();
+            self.buffer2[d].write_data.next = self.dsb_data[d].val();
             self.buffer0[d].write_enable.next = self.write_q.q.val()
-                & (self.ray[d].val() < self.rays.val())
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[0].val());
             self.buffer1[d].write_enable.next = self.write_q.q.val()
-                & (self.ray[d].val() < self.rays.val())
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[1].val());
             self.buffer2[d].write_enable.next = self.write_q.q.val()
-                & (self.ray[d].val() < self.rays.val())
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[2].val());
         }
         // Reads: segment s of ray r at r*G + s in every module; lane i takes
@@ -517,8 +701,17 @@ impl Schedule {
             last_tick: k(c.period() - 1),
             last_period: k(c.scanlines + 1),
             last_write_period: k(c.scanlines),
-            last_plane: k(c.planes_written() - 1),
-            last_chunk: k(c.rays.div_ceil(c.p) - 1),
+            // A perspective PRP counts its groups as the chunks of one plane.
+            last_plane: k(if c.perspective() {
+                0
+            } else {
+                c.planes_written() - 1
+            }),
+            last_chunk: k(if c.perspective() {
+                c.groups.len() - 1
+            } else {
+                c.rays.div_ceil(c.p) - 1
+            }),
             last_ray: k(c.rays - 1),
             last_segment: k(c.segments - 1),
             first_read_period: k(2),

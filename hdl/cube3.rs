@@ -77,10 +77,21 @@ pub struct Cube3Config {
     pub voxel_bits: u32,
     pub sample_frac: u32,
     pub rgba_bits: u32,
-    /// Per plane `k`: the weights `[wx, wy]`, the inside bounds `[ray_lo,
-    /// ray_hi, scanline_lo, scanline_hi]` (inclusive stream indices; empty
-    /// as lo > hi) and, with gradients, the inner box's.
-    pub weights: Vec<[u32; 2]>,
+    /// A perspective view: the templates, the increments and the cast
+    /// rays differ from ray to ray.
+    pub perspective: bool,
+    /// The template weights: `wx[r·K + k]` of stream ray `r` and `wy[j·K +
+    /// k]` of stream scanline `j` (perspective), or `wx[k]`, `wy[k]`
+    /// (parallel).
+    pub wx: Vec<u32>,
+    pub wy: Vec<u32>,
+    /// The rays and scanlines cast on this base plane `[ray_lo, ray_hi,
+    /// scanline_lo, scanline_hi]` (inclusive stream indices): a perspective
+    /// ray beyond 45° belongs to another base plane.
+    pub cast: [u32; 4],
+    /// Per plane `k`: the inside bounds `[ray_lo, ray_hi, scanline_lo,
+    /// scanline_hi]` (inclusive stream indices; empty as lo > hi) and, with
+    /// gradients, the inner box's.
     pub bounds: Vec<[u32; 4]>,
     pub inner: Vec<[u32; 4]>,
     /// X-ray: the opacity table and its row shift.
@@ -96,9 +107,10 @@ pub struct Cube3Config {
 pub struct AbcConfig {
     /// The 12-neighbourhood, else the 6.
     pub n12: bool,
-    /// Every ray's increments (a parallel view's are all the same).
-    pub dx: i32,
-    pub dy: i32,
+    /// The increments `DX` of each stream ray and `DY` of each stream
+    /// scanline (perspective), or the one of a parallel view.
+    pub dx: Vec<i32>,
+    pub dy: Vec<i32>,
     pub sample_bits: u32,
     pub gradient_bits: u32,
 }
@@ -115,29 +127,52 @@ impl Cube3Config {
         v0: i32,
         scanlines: usize,
     ) -> Result<Cube3Config, String> {
-        let (Template::Parallel { d: dx, .. }, Template::Parallel { d: dy, .. }) =
-            (&view.x, &view.y)
-        else {
-            return Err("the Cube-3 pipeline is built for parallel views only so far".into());
-        };
         if !matches!(p, 1 | 2 | 4 | 8) {
             return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)"));
         }
         let widths = shader.widths;
+        let perspective = matches!(view.x, Template::Perspective { .. });
+        let halo = shader.needs_gradient as usize;
+        let (v0, scanlines) = (v0 - halo as i32, scanlines + 2 * halo);
+        let u0 = view.u[0] - 1;
+        let rays = (view.u[1] - view.u[0] + 4) as usize;
+        // The stream's rays and scanlines, each within its template.
+        let stream = |t: &Template, first: i32, n: usize, what: &str| {
+            let lines: Vec<i32> = (first..first + n as i32).collect();
+            if let Template::Perspective { lo, d, .. } = t {
+                let span = *lo..*lo + d.len() as i32;
+                if let Some(bad) = lines.iter().find(|l| !span.contains(l)) {
+                    return Err(format!(
+                        "{what} {bad} lies outside the view's templates ({}..={})",
+                        span.start,
+                        span.end - 1
+                    ));
+                }
+            }
+            Ok(lines)
+        };
+        let ray_u = stream(&view.x, u0, rays, "ray")?;
+        let line_v = stream(&view.y, v0, scanlines, "scanline")?;
+        let increments = |t: &Template, lines: &[i32]| -> Result<Vec<i32>, String> {
+            let d: Vec<i32> = if perspective {
+                lines.iter().map(|&l| t.d(l)).collect()
+            } else {
+                vec![t.d(0)]
+            };
+            match d.iter().any(|d| d.unsigned_abs() >= 1 << 16) {
+                true => Err("ray increments beyond 16 bits".into()),
+                false => Ok(d),
+            }
+        };
         let abc = match (shader.needs_gradient, n) {
             (false, _) => None,
-            (true, Neighbourhood::N6 | Neighbourhood::N12) => {
-                if dx.unsigned_abs() >= 1 << 16 || dy.unsigned_abs() >= 1 << 16 {
-                    return Err("ray increments beyond 16 bits".into());
-                }
-                Some(AbcConfig {
-                    n12: n == Neighbourhood::N12,
-                    dx: *dx,
-                    dy: *dy,
-                    sample_bits: widths.sample_bits,
-                    gradient_bits: widths.gradient_bits,
-                })
-            }
+            (true, Neighbourhood::N6 | Neighbourhood::N12) => Some(AbcConfig {
+                n12: n == Neighbourhood::N12,
+                dx: increments(&view.x, &ray_u)?,
+                dy: increments(&view.y, &line_v)?,
+                sample_bits: widths.sample_bits,
+                gradient_bits: widths.gradient_bits,
+            }),
             (true, n) => {
                 let count = if n == Neighbourhood::N10 { 10 } else { 26 };
                 return Err(format!(
@@ -145,12 +180,8 @@ impl Cube3Config {
                 ));
             }
         };
-        let halo = abc.is_some() as usize;
-        let (v0, scanlines) = (v0 - halo as i32, scanlines + 2 * halo);
         let w = view.weight_bits;
         let [nx, ny, nk] = view.dims.map(|n| n as i64);
-        let u0 = view.u[0] - 1;
-        let rays = (view.u[1] - view.u[0] + 4) as usize;
         let within = |q: i64, lo: i64, hi: i64| q >= lo << w && q <= hi << w;
         // Stream indices `i` in `0..n` where `ok(i)`: an interval (positions
         // are linear in the ray), or empty as [1, 0].
@@ -168,16 +199,32 @@ impl Cube3Config {
                 .map(|k| {
                     let zq = ((k as i64) << w) + view.offset as i64;
                     let r = interval(rays, &|r| {
+                        let u = ray_u[r as usize];
                         within(zq, m, nk - 1 - m)
-                            && within(sample_pos(u0 + r as i32, k, *dx, w), m, nx - 1 - m)
+                            && within(sample_pos(u, k, view.x.d(u), w), m, nx - 1 - m)
                     })?;
                     let v = interval(scanlines, &|s| {
-                        within(sample_pos(v0 + s as i32, k, *dy, w), m, ny - 1 - m)
+                        let v = line_v[s as usize];
+                        within(sample_pos(v, k, view.y.d(v), w), m, ny - 1 - m)
                     })?;
                     Ok([r[0], r[1], v[0], v[1]])
                 })
                 .collect()
         };
+        // Weights of every (perspective) or one (parallel) ray and
+        // scanline, plane by plane.
+        let weights = |t: &Template, lines: &[i32]| -> Vec<u32> {
+            let lines = if perspective { lines } else { &lines[..1] };
+            lines
+                .iter()
+                .flat_map(|&l| (0..view.dims[2]).map(move |k| t.weight(l, k)))
+                .collect()
+        };
+        let one = 1u32 << w;
+        let cast_x = interval(rays, &|r| view.x.d(ray_u[r as usize]).unsigned_abs() <= one)?;
+        let cast_y = interval(scanlines, &|s| {
+            view.y.d(line_v[s as usize]).unsigned_abs() <= one
+        })?;
         let segments = view.dims[2].div_ceil(p);
         Ok(Cube3Config {
             p,
@@ -195,9 +242,10 @@ impl Cube3Config {
             voxel_bits: widths.voxel_bits,
             sample_frac: widths.sample_frac(),
             rgba_bits: widths.rgba_bits,
-            weights: (0..view.dims[2])
-                .map(|k| [view.x.weight(0, k), view.y.weight(0, k)])
-                .collect(),
+            perspective,
+            wx: weights(&view.x, &ray_u),
+            wy: weights(&view.y, &line_v),
+            cast: [cast_x[0], cast_x[1], cast_y[0], cast_y[1]],
             bounds: boxed(0)?,
             inner: if abc.is_some() { boxed(1)? } else { vec![] },
             opacity: (shader.mode == Mode::Xray).then(|| {
@@ -208,6 +256,25 @@ impl Cube3Config {
                 .then(|| shader.clone()),
             abc,
         })
+    }
+
+    /// Rays with their own `wx` template: every stream ray (perspective) or
+    /// one.
+    pub fn wx_rays(&self) -> usize {
+        if self.perspective {
+            self.rays
+        } else {
+            1
+        }
+    }
+
+    /// Scanlines with their own `wy` template.
+    pub fn wy_scanlines(&self) -> usize {
+        if self.perspective {
+            self.scanlines
+        } else {
+            1
+        }
     }
 
     /// Clocks from the first segment entering the streams to just after
@@ -259,13 +326,18 @@ pub struct Cube3<const P: usize, const H: usize> {
     pub has_sample: Signal<Out, Bit>,
     control: RayControl<P, H>,
     lanes: TrilinLanes<P, H>,
-    /// `[inside bits, valid, first, last, inner bits]` (bits 0-7, 8, 9, 10,
-    /// 16-23) from the units to the leaf stage (`trilin::LATENCY` clocks),
+    /// `[inside bits, valid, first, last, cast, inner bits]` (bits 0-7, 8,
+    /// 9, 10, 11, 16-23) from the units to the leaf stage (`trilin::LATENCY` clocks),
     /// through the ABC delay (`flags_line`), and to the RPC (one more).
     flags_q: [DFF<Bits<32>>; 7],
     flags_line: DelayLine<Bits<32>, H>,
     leaf_flags: Signal<Local, Bits<32>>,
     rpc_flags_q: DFF<Bits<32>>,
+    /// The cast bits of the rays in the RPC (bit `latency - 1` is the
+    /// pixel's): an uncast ray's pixel is 0 without a sample.
+    cast_q: DFF<Bits<8>>,
+    cast_bit: Constant<Bits<8>>,
+    pixel_cast: Signal<Local, Bit>,
     gradients: Constant<Bit>,
     shaded: Constant<Bit>,
     xray: Constant<Bit>,
@@ -281,10 +353,6 @@ pub struct Cube3<const P: usize, const H: usize> {
     leaf_valid_q: [DFF<Bit>; P],
     /// The ABC units: the gradients, then the shaders.
     abc: AbcUnit<P, H>,
-    dx_neg: Constant<Bit>,
-    dx_mag: Constant<Bits<16>>,
-    dy_neg: Constant<Bit>,
-    dy_mag: Constant<Bits<16>>,
     /// The shaders' value `s >> F` and gradient.
     index: [Signal<Local, Bits<32>>; P],
     gx: [Signal<Local, Bits<32>>; P],
@@ -332,7 +400,6 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             )?,
             None => AbcUnit::left_out(c.segments)?,
         };
-        let (dx, dy) = c.abc.as_ref().map_or((0, 0), |a| (a.dx, a.dy));
         let shader = || match &c.shading {
             Some(s) => Shader::for_cube3(s),
             None => Ok(Shader::left_out()),
@@ -358,11 +425,14 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             flags_q: Default::default(),
             flags_line: DelayLine::new(
                 abc_delay.max(1),
-                &[(0, 11), (16, 8)],
-                0x00ff_07ffu64.to_bits(),
+                &[(0, 12), (16, 8)],
+                0x00ff_0fffu64.to_bits(),
             ),
             leaf_flags: Default::default(),
             rpc_flags_q: Default::default(),
+            cast_q: Default::default(),
+            cast_bit: Constant::new((1u64 << (crate::rpc::latency(P) - 1)).to_bits()),
+            pixel_cast: Default::default(),
             gradients: Constant::new(c.abc.is_some()),
             shaded: Constant::new(c.shading.is_some()),
             xray: Constant::new(c.mode == Mode::Xray),
@@ -376,10 +446,6 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             leaf_q: std::array::from_fn(|_| Default::default()),
             leaf_valid_q: std::array::from_fn(|_| Default::default()),
             abc,
-            dx_neg: Constant::new(dx < 0),
-            dx_mag: Constant::new((dx.unsigned_abs() as u64).to_bits()),
-            dy_neg: Constant::new(dy < 0),
-            dy_mag: Constant::new((dy.unsigned_abs() as u64).to_bits()),
             index: std::array::from_fn(|_| Default::default()),
             gx: std::array::from_fn(|_| Default::default()),
             gy: std::array::from_fn(|_| Default::default()),
@@ -399,6 +465,7 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         self.rpc.clock.next = self.clock.val();
         self.flags_line.clock.next = self.clock.val();
         self.rpc_flags_q.clock.next = self.clock.val();
+        self.cast_q.clock.next = self.clock.val();
         self.control.start.next = self.start.val();
         self.control.valid.next = self.valid.val();
         self.lanes.first.next = self.control.first.val();
@@ -410,6 +477,7 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
             | (bit_cast::<32, 1>(self.control.unit_valid.val().into()) << 8)
             | (bit_cast::<32, 1>(self.control.unit_first.val().into()) << 9)
             | (bit_cast::<32, 1>(self.control.unit_last.val().into()) << 10)
+            | (bit_cast::<32, 1>(self.control.unit_cast.val().into()) << 11)
             | (bit_cast::<32, 8>(self.control.in_inner.val()) << 16);
         for j in 1..7 {
             self.flags_q[j].d.next = self.flags_q[j - 1].q.val();
@@ -422,10 +490,10 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
             self.leaf_flags.next = self.flags_line.data_out.val();
         }
         self.rpc_flags_q.d.next = self.leaf_flags.val();
-        self.abc.dx_neg.next = self.dx_neg.val();
-        self.abc.dx_mag.next = self.dx_mag.val();
-        self.abc.dy_neg.next = self.dy_neg.val();
-        self.abc.dy_mag.next = self.dy_mag.val();
+        self.abc.dx_neg.next = self.control.dx_neg.val();
+        self.abc.dx_mag.next = self.control.dx_mag.val();
+        self.abc.dy_neg.next = self.control.dy_neg.val();
+        self.abc.dy_mag.next = self.control.dy_mag.val();
         for i in 0..P {
             self.lanes.cur[i].next = self.cur[i].val();
             self.lanes.next[i].next = self.next[i].val();
@@ -494,11 +562,21 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
             self.rpc_flags_q.q.val().get_bit(9) & self.rpc_flags_q.q.val().get_bit(8);
         self.rpc.last.next =
             self.rpc_flags_q.q.val().get_bit(10) & self.rpc_flags_q.q.val().get_bit(8);
+        self.cast_q.d.next = (self.cast_q.q.val() << 1)
+            | bit_cast::<8, 1>(self.rpc_flags_q.q.val().get_bit(11).into());
+        self.pixel_cast.next = (self.cast_q.q.val() & self.cast_bit.val()).any();
         self.done.next = self.rpc.done.val();
-        self.pixel_r.next = self.rpc.pixel_r.val();
-        self.pixel_g.next = self.rpc.pixel_g.val();
-        self.pixel_b.next = self.rpc.pixel_b.val();
-        self.pixel_a.next = self.rpc.pixel_a.val();
-        self.has_sample.next = self.rpc.has_sample.val();
+        self.pixel_r.next = 0.into();
+        self.pixel_g.next = 0.into();
+        self.pixel_b.next = 0.into();
+        self.pixel_a.next = 0.into();
+        self.has_sample.next = false;
+        if self.pixel_cast.val() {
+            self.pixel_r.next = self.rpc.pixel_r.val();
+            self.pixel_g.next = self.rpc.pixel_g.val();
+            self.pixel_b.next = self.rpc.pixel_b.val();
+            self.pixel_a.next = self.rpc.pixel_a.val();
+            self.has_sample.next = self.rpc.has_sample.val();
+        }
     }
 }

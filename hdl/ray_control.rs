@@ -1,7 +1,8 @@
-//! Cube-3's ray control for a parallel view (§2, §3; §5, Fig. 12): which
-//! ray, scanline and segment the 2-DSB streams and the TRILIN units are at,
-//! the template weights of each unit's sample, and whether the sample lies
-//! in the volume.
+//! Cube-3's ray control (§2, §3; §5, Fig. 12): which ray, scanline and
+//! segment the 2-DSB streams and the TRILIN units are at, the template
+//! weights of each unit's sample, whether the sample lies in the volume,
+//! whether the ray is cast on this base plane, and the increments of the
+//! ABC units' centre ray.
 //!
 //! **Counters.** From `start`, the stream counters step through scanlines
 //! of `R` rays of `G` segments, one step per `valid` segment (the streams
@@ -12,23 +13,41 @@
 //! [`DelayLine`] of that length.
 //!
 //! **Templates.** A parallel view's weights depend only on the plane
-//! (`plan::Template::Parallel`): lane `i`'s weight ROM holds `wx(k)`,
-//! `wy(k)` of `k = s·P + i` at address `s`. Whether sample `k` of ray `u`,
-//! scanline `v` lies in the volume (`0 <= u + k·dx <= n_x - 1` in fixed
-//! point, likewise `y`, and `0 <= k + O <= K - 1`) is, for each `k`, an
-//! interval of rays and one of scanlines: lane `i`'s bounds ROM holds them,
-//! found by the golden model's own test on every ray and scanline of the
-//! stream ([`Cube3Config`](crate::cube3::Cube3Config)). The inner box
-//! (`1 <= ... <= n - 2`, where a gradient's neighbourhood stays in the
-//! volume) has its own bounds ROM; it is empty, and folded away, for
-//! scenes without gradients.
+//! (`plan::Template::Parallel`): lane `i`'s `wx` ROM holds `wx(k)` of `k =
+//! s·P + i` at address `s`. A perspective view's depend on the ray too (the
+//! paper's n² template entries): `wx(u, k)` at address `r·G + s` for stream
+//! ray `r`; `wy` likewise by scanline. (The stride `G` is 0 for a parallel
+//! view, and the multiplier folds away.) Whether sample `k` of ray `u`,
+//! scanline `v` lies in the volume (`0 <= u·2^W + k·DX(u) <= (n_x - 1)·2^W`,
+//! likewise `y`, and `0 <= k + O <= K - 1`) is, for each `k`, an interval
+//! of rays and one of scanlines (the positions grow with the ray in either
+//! projection): lane `i`'s bounds ROM holds them, found by the golden
+//! model's own test on every ray and scanline of the stream
+//! ([`Cube3Config`](crate::cube3::Cube3Config)). The inner box (`1 <= ...
+//! <= n - 2`, where a gradient's neighbourhood stays in the volume) has its
+//! own bounds ROM; it is empty, and folded away, for scenes without
+//! gradients.
+//!
+//! **Cast rays.** A perspective ray steeper than 45° (`|DX| > 2^W`)
+//! belongs to another base plane: `unit_cast` is low for it, an interval of
+//! rays and one of scanlines. Every parallel ray is cast.
+//!
+//! **Increments.** The ABC units take the increments `DX(u)`, `DY(v)` of
+//! the ray at their centre tap, which came in `abc_unit::centre(T, G) = T
+//! + G + 1` clocks before the sample now entering them: the units' counters
+//! a further `trilin::LATENCY + G + 1` clocks late (a second delay line)
+//! name the centre's ray, and its scanline is one less (the scanlines
+//! enter every `T` clocks). ROMs by ray and scanline hold the increments; a
+//! parallel view's one entry is read at address 0.
 
 use crate::cube3::Cube3Config;
 use crate::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
-/// Address bits of the per-lane ROMs: up to 256 segments a ray.
+/// Address bits of the per-lane bounds ROMs: up to 256 segments a ray.
 pub const SEGMENT_BITS: usize = 8;
+/// Address bits of the template ROMs: up to 2^16 weights a lane.
+pub const TEMPLATE_BITS: usize = 16;
 
 /// The ray control for `P` lanes (`H`-bit delay-line pointer).
 #[derive(LogicBlock)]
@@ -45,11 +64,18 @@ pub struct RayControl<const P: usize, const H: usize> {
     pub unit_valid: Signal<Out, Bit>,
     pub unit_first: Signal<Out, Bit>,
     pub unit_last: Signal<Out, Bit>,
+    /// The units' ray is cast on this base plane.
+    pub unit_cast: Signal<Out, Bit>,
     /// Each unit's weights and whether its sample is inside (bit `i`).
     pub wx: [Signal<Out, Bits<16>>; P],
     pub wy: [Signal<Out, Bits<16>>; P],
     pub in_volume: Signal<Out, Bits<8>>,
     pub in_inner: Signal<Out, Bits<8>>,
+    /// The increments of the ABC units' centre ray, sign and magnitude.
+    pub dx_neg: Signal<Out, Bit>,
+    pub dx_mag: Signal<Out, Bits<16>>,
+    pub dy_neg: Signal<Out, Bit>,
+    pub dy_mag: Signal<Out, Bits<16>>,
     last_segment: Constant<Bits<16>>,
     last_ray: Constant<Bits<16>>,
     segment: DFF<Bits<16>>,
@@ -60,7 +86,24 @@ pub struct RayControl<const P: usize, const H: usize> {
     unit_segment: Signal<Local, Bits<16>>,
     unit_ray: Signal<Local, Bits<16>>,
     unit_scanline: Signal<Local, Bits<16>>,
-    weights: [ROM<Bits<32>, SEGMENT_BITS>; P],
+    wx_rom: [ROM<Bits<16>, TEMPLATE_BITS>; P],
+    wy_rom: [ROM<Bits<16>, TEMPLATE_BITS>; P],
+    /// `G` for a perspective view's per-ray templates, else 0.
+    stride: Constant<Bits<16>>,
+    wx_entry: Signal<Local, Bits<32>>,
+    wy_entry: Signal<Local, Bits<32>>,
+    /// Cast rays and scanlines `[lo, hi]`, inclusive.
+    cast_ray_lo: Constant<Bits<16>>,
+    cast_ray_hi: Constant<Bits<16>>,
+    cast_line_lo: Constant<Bits<16>>,
+    cast_line_hi: Constant<Bits<16>>,
+    /// The centre's `[ray, scanline]`, and its increments (sign in bit 16).
+    centre_line: DelayLine<Bits<32>, H>,
+    centre_ray: Signal<Local, Bits<16>>,
+    centre_scanline: Signal<Local, Bits<16>>,
+    per_ray: Constant<Bit>,
+    dx_rom: ROM<Bits<32>, TEMPLATE_BITS>,
+    dy_rom: ROM<Bits<32>, TEMPLATE_BITS>,
     bounds: [ROM<Bits<64>, SEGMENT_BITS>; P],
     inner: [ROM<Bits<64>, SEGMENT_BITS>; P],
     /// Lane i's inside and inner bits in place (`lane_bit[i] = 1 << i`).
@@ -71,18 +114,44 @@ pub struct RayControl<const P: usize, const H: usize> {
 }
 
 impl<const P: usize, const H: usize> RayControl<P, H> {
-    /// From the pipeline's weights and inside bounds per plane
-    /// (`Cube3Config::weights`, `bounds`).
+    /// From the pipeline's templates and inside bounds per plane
+    /// (`Cube3Config::wx`, `wy`, `bounds`, `cast`, `abc`).
     pub fn new(t: &Cube3Config) -> Result<RayControl<P, H>, String> {
-        if P > 8 || t.segments > 1 << SEGMENT_BITS || t.segments + 1 >= 1 << H {
-            return Err(format!("rays of {} segments are too long", t.segments));
-        }
         let segments = t.segments;
-        let weight = |k: usize| {
-            t.weights
-                .get(k)
-                .map_or(0, |[x, y]| *x as u64 | (*y as u64) << 16)
+        let centre_delay = crate::trilin::LATENCY + segments + 1;
+        if P > 8 || segments > 1 << SEGMENT_BITS || centre_delay >= 1 << H {
+            return Err(format!("rays of {segments} segments are too long"));
+        }
+        let nk = t.wx.len() / t.wx_rays();
+        if t.wx_rays() * segments > 1 << TEMPLATE_BITS
+            || t.wy_scanlines() * segments > 1 << TEMPLATE_BITS
+        {
+            return Err(format!(
+                "{} rays and {} scanlines of {segments} segments: the templates hold at most 2^{TEMPLATE_BITS} weights a unit",
+                t.rays, t.scanlines
+            ));
+        }
+        // Lane i's template ROM: weight k = s·P + i of ray (scanline) r at
+        // r·G + s.
+        let template = |w: &[u32], lines: usize, i: usize| -> ROM<Bits<16>, TEMPLATE_BITS> {
+            (0..lines * segments)
+                .map(|a| {
+                    let (r, k) = (a / segments, (a % segments) * P + i);
+                    let v = if k < nk { w[r * nk + k] } else { 0 };
+                    (v as u64).to_bits()
+                })
+                .into()
         };
+        let increments = |d: &[i32]| -> ROM<Bits<32>, TEMPLATE_BITS> {
+            d.iter()
+                .map(|&d| ((d.unsigned_abs() as u64) | ((d < 0) as u64) << 16).to_bits())
+                .into()
+        };
+        let (dx, dy) = t
+            .abc
+            .as_ref()
+            .map_or((vec![0], vec![0]), |a| (a.dx.clone(), a.dy.clone()));
+        let k = |v: u32| Constant::new((v as u64).to_bits());
         let bound = |b: &[[u32; 4]], k: usize| {
             let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
             rl as u64 | (rh as u64) << 16 | (vl as u64) << 32 | (vh as u64) << 48
@@ -100,10 +169,15 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             unit_valid: Default::default(),
             unit_first: Default::default(),
             unit_last: Default::default(),
+            unit_cast: Default::default(),
             wx: std::array::from_fn(|_| Default::default()),
             wy: std::array::from_fn(|_| Default::default()),
             in_volume: Default::default(),
             in_inner: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
             last_segment: Constant::new(((t.segments - 1) as u64).to_bits()),
             last_ray: Constant::new(((t.rays - 1) as u64).to_bits()),
             segment: Default::default(),
@@ -117,11 +191,25 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             unit_segment: Default::default(),
             unit_ray: Default::default(),
             unit_scanline: Default::default(),
-            weights: std::array::from_fn(|i| {
-                (0..segments)
-                    .map(|s| weight(s * P + i).to_bits::<32>())
-                    .into()
-            }),
+            wx_rom: std::array::from_fn(|i| template(&t.wx, t.wx_rays(), i)),
+            wy_rom: std::array::from_fn(|i| template(&t.wy, t.wy_scanlines(), i)),
+            stride: k(if t.perspective { segments as u32 } else { 0 }),
+            wx_entry: Default::default(),
+            wy_entry: Default::default(),
+            cast_ray_lo: k(t.cast[0]),
+            cast_ray_hi: k(t.cast[1]),
+            cast_line_lo: k(t.cast[2]),
+            cast_line_hi: k(t.cast[3]),
+            centre_line: DelayLine::new(
+                if t.perspective { centre_delay } else { 1 },
+                &[],
+                u32::MAX.to_bits(),
+            ),
+            centre_ray: Default::default(),
+            centre_scanline: Default::default(),
+            per_ray: Constant::new(t.perspective),
+            dx_rom: increments(&dx),
+            dy_rom: increments(&dy),
             bounds: std::array::from_fn(|i| rom(&t.bounds, i)),
             inner: std::array::from_fn(|i| rom(&t.inner, i)),
             lane_in: Default::default(),
@@ -138,6 +226,8 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
         dff_setup!(self, clock, segment, ray, scanline);
         self.late.clock.next = self.clock.val();
         self.late.write_enable.next = true;
+        self.centre_line.clock.next = self.clock.val();
+        self.centre_line.write_enable.next = true;
         // The stream counters: segment, ray, scanline of the entering
         // segment, stepped by each valid one.
         if self.valid.val() {
@@ -175,15 +265,41 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             self.late.data_out.val().get_bit(48) & !self.unit_segment.val().any();
         self.unit_last.next = self.late.data_out.val().get_bit(48)
             & (self.unit_segment.val() == self.last_segment.val());
+        self.unit_cast.next = !self.per_ray.val()
+            | ((self.unit_ray.val() >= self.cast_ray_lo.val())
+                & (self.unit_ray.val() <= self.cast_ray_hi.val())
+                & (self.unit_scanline.val() >= self.cast_line_lo.val())
+                & (self.unit_scanline.val() <= self.cast_line_hi.val()));
+        // The ABC units' centre ray, and its increments.
+        self.centre_line.data_in.next = bit_cast::<32, 16>(self.unit_ray.val())
+            | (bit_cast::<32, 16>(self.unit_scanline.val()) << 16);
+        self.centre_ray.next = 0.into();
+        self.centre_scanline.next = 0.into();
+        if self.per_ray.val() {
+            self.centre_ray.next = self.centre_line.data_out.val().get_bits::<16>(0);
+            self.centre_scanline.next = self.centre_line.data_out.val().get_bits::<16>(16) - 1;
+        }
+        self.dx_rom.address.next = self.centre_ray.val();
+        self.dy_rom.address.next = self.centre_scanline.val();
+        self.dx_neg.next = self.dx_rom.data.val().get_bit(16);
+        self.dx_mag.next = self.dx_rom.data.val().get_bits::<16>(0);
+        self.dy_neg.next = self.dy_rom.data.val().get_bit(16);
+        self.dy_mag.next = self.dy_rom.data.val().get_bits::<16>(0);
+        // The templates' rows of the units' ray and scanline.
+        self.wx_entry.next =
+            self.unit_ray.val() * self.stride.val() + bit_cast::<32, 16>(self.unit_segment.val());
+        self.wy_entry.next = self.unit_scanline.val() * self.stride.val()
+            + bit_cast::<32, 16>(self.unit_segment.val());
         for i in 0..8 {
             self.lane_in[i].next = 0.into();
             self.lane_inner[i].next = 0.into();
         }
         for i in 0..P {
-            self.weights[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
+            self.wx_rom[i].address.next = self.wx_entry.val().get_bits::<TEMPLATE_BITS>(0);
+            self.wy_rom[i].address.next = self.wy_entry.val().get_bits::<TEMPLATE_BITS>(0);
             self.bounds[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
-            self.wx[i].next = self.weights[i].data.val().get_bits::<16>(0);
-            self.wy[i].next = self.weights[i].data.val().get_bits::<16>(16);
+            self.wx[i].next = self.wx_rom[i].data.val();
+            self.wy[i].next = self.wy_rom[i].data.val();
             if (self.unit_ray.val() >= self.bounds[i].data.val().get_bits::<16>(0))
                 & (self.unit_ray.val() <= self.bounds[i].data.val().get_bits::<16>(16))
                 & (self.unit_scanline.val() >= self.bounds[i].data.val().get_bits::<16>(32))

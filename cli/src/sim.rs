@@ -25,7 +25,8 @@ enum Engine {
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum SimArch {
     Cube4l,
-    /// Cube-3: parallel views in every mode (perspective not built yet).
+    /// Cube-3: parallel and perspective views in every mode (the 6 or the
+    /// 12 gradient neighbourhood).
     Cube3,
 }
 
@@ -205,6 +206,7 @@ fn run_cube3(
                 "build_seconds": r.build_seconds,
                 "cycles_per_second": cps,
                 "pipelines": scene.hardware.pipelines,
+                "base_planes": r.frame.bases.len(),
             }),
         )?;
     }

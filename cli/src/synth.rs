@@ -27,7 +27,8 @@ enum SynthTarget {
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum SynthArch {
     Cube4l,
-    /// Cube-3: parallel views in every mode (perspective not built yet).
+    /// Cube-3: parallel and perspective views in every mode (the 6 or the
+    /// 12 gradient neighbourhood).
     Cube3,
 }
 
@@ -239,13 +240,17 @@ fn run_cube3(
     let cam = scene.camera()?;
     let m = cosim::export::write_cube3_export(name, scene, &cam, scene.volume.render_dims(), dir)
         .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
-    let files: Vec<String> = m["base_planes"][0]["files"]
+    // A perspective view's base planes are systems of one build, but for
+    // their ROMs' contents: the first stands for them.
+    let first = &m["base_planes"][0];
+    let files: Vec<String> = first["files"]
         .as_array()
         .context("manifest files")?
         .iter()
         .filter_map(|f| f.as_str().map(String::from))
         .collect();
-    let r = synthesize(dir, &files, target, pnr).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+    let sub = dir.join(first["dir"].as_str().unwrap_or("."));
+    let r = synthesize(&sub, &files, target, pnr).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
     let p = scene.hardware.pipelines as u64;
     let par = &m["parameters"];
     println!(

@@ -11,7 +11,8 @@ use std::path::PathBuf;
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 enum VerilogArch {
     Cube4l,
-    /// Cube-3: parallel views in every mode (perspective not built yet).
+    /// Cube-3: parallel and perspective views in every mode (the 6 or the
+    /// 12 gradient neighbourhood).
     Cube3,
 }
 

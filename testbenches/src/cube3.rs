@@ -1,9 +1,11 @@
 //! The Cube-3 pipeline's test cases: parallel views in every mode (exactly
 //! 45° among them; composite and first-opaque with the 6- and the
 //! 12-neighbourhood, shaded, with gradient opacity and without gradients)
-//! with the golden model's 2-DSB streams and base-plane pixels, and the
-//! pixel checker shared by the pipeline's and the whole system's
-//! testbenches.
+//! and perspective views (close eyes whose rays diverge and pass 45°, a
+//! second base plane; MinIP, X-ray, composite with the 12 and first-opaque
+//! with the 6), with the golden model's 2-DSB streams and base-plane
+//! pixels, and the pixel checker shared by the pipeline's and the whole
+//! system's testbenches.
 
 use cosim::stage::{ports, run_stage, StageEngine};
 use golden_model::cube3::plan::Plan;
@@ -28,11 +30,16 @@ pub struct Case {
 }
 
 pub fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
+    case_in_view(name, json, p, scanlines, 0)
+}
+
+/// A case on base plane `vi` of the scene's plan.
+pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usize) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
     let cam = s.camera().unwrap();
     let plan = Plan::new(&s, &cam).unwrap();
-    let view = &plan.views[0];
+    let view = &plan.views[vi];
     let shader = Shader::new(&s, &cam, view);
     let n = golden_model::cube3::neighbourhood(&s, None).unwrap();
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
@@ -71,6 +78,14 @@ pub fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
         }
     }
     assert!(want.iter().filter(|w| w.is_some()).count() > 10);
+    if config.perspective {
+        // Some ray of the stream's pixels is beyond 45° (uncast) and some
+        // is cast.
+        let cast = want.iter().flatten().filter(|(_, c)| *c).count();
+        let uncast = (config.u0..config.u0 + r as i32)
+            .any(|u| view.x.d(u).unsigned_abs() > 1 << view.weight_bits);
+        assert!(cast > 10 && uncast, "{name}: cast {cast}, uncast {uncast}");
+    }
     Case {
         name: format!("{name}, p={p}"),
         config: system,
@@ -87,8 +102,19 @@ fn scene_json(volume: &str, dims: [usize; 3], rotate: [f64; 3], mode: &str) -> S
 
 /// A scene with `more` JSON members.
 fn scene_with(volume: &str, dims: [usize; 3], rotate: [f64; 3], mode: &str, more: &str) -> String {
+    let view = format!(r#"{{"projection": "parallel", "rotate_deg": {rotate:?}}}"#);
+    scene_json_view(volume, dims, &view, mode, more)
+}
+
+/// A perspective scene: the eye at `eye`, a 60° field of view.
+fn perspective(volume: &str, dims: [usize; 3], eye: [f64; 3], mode: &str, more: &str) -> String {
+    let view = format!(r#"{{"projection": "perspective", "eye": {eye:?}, "fov_deg": 60}}"#);
+    scene_json_view(volume, dims, &view, mode, more)
+}
+
+fn scene_json_view(volume: &str, dims: [usize; 3], view: &str, mode: &str, more: &str) -> String {
     format!(
-        r#"{{"volume": {{"builtin": "{volume}", "dims": {dims:?}}}, "view": {{"projection": "parallel", "rotate_deg": {rotate:?}}},
+        r#"{{"volume": {{"builtin": "{volume}", "dims": {dims:?}}}, "view": {view},
             "mode": "{mode}", "image": [16, 16]{more}}}"#
     )
 }
@@ -138,6 +164,46 @@ pub fn cases(p: usize) -> Vec<Case> {
                 "sphere",
                 [10, 11, 17],
                 [-25.0, 15.0, 0.0],
+                "first_opaque",
+                r#", "cube3": {"gradient": 6}, "shading": {"enabled": false},
+                "transfer": {"opacity": [[0, 0.0], [40, 0.0], [200, 1.0], [255, 1.0]],
+                             "color": [[0, 1.0, 1.0, 1.0], [255, 0.8, 0.4, 0.2]],
+                             "gradient_opacity": [[0, 0.2], [30, 1.0]], "opaque_threshold": 0.5}"#,
+            ),
+            p,
+            2,
+        ),
+        case(
+            "perspective MinIP, close eye, phantom 12x10x9",
+            &perspective("phantom", [12, 10, 9], [5.5, 4.5, -3.0], "minip", ""),
+            p,
+            2,
+        ),
+        case(
+            "perspective X-ray, close eye, ramp 10x11x9",
+            &perspective("ramp", [10, 11, 9], [4.0, 6.0, -3.5], "xray", ""),
+            p,
+            2,
+        ),
+        case_in_view(
+            "perspective composite, shaded, the 12-neighbourhood, second base plane, sphere 9x11x17",
+            &scene_json_view(
+                "sphere",
+                [9, 11, 17],
+                r#"{"projection": "perspective", "eye": [-14, -6, -14], "target": [4, 5, 4.5], "fov_deg": 70}"#,
+                "composite",
+                "",
+            ),
+            p,
+            2,
+            1,
+        ),
+        case(
+            "perspective first-opaque, gradient opacity, the 6-neighbourhood, sphere 11x10x17",
+            &perspective(
+                "sphere",
+                [11, 10, 17],
+                [5.0, 4.5, -3.0],
                 "first_opaque",
                 r#", "cube3": {"gradient": 6}, "shading": {"enabled": false},
                 "transfer": {"opacity": [[0, 0.0], [40, 0.0], [200, 1.0], [255, 1.0]],

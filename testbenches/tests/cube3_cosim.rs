@@ -115,23 +115,38 @@ fn the_engine_frame_runs_through_verilator_bit_exact() {
 }
 
 /// Composite through the ABC units (the 12-neighbourhood, shaded) and
-/// first-opaque (the 6, gradient opacity): rust-hdl and Verilator equal the
-/// golden model on the same clocks, and their traces agree.
+/// first-opaque (the 6, gradient opacity), and a perspective composite
+/// view of two base planes (the first one's traces): rust-hdl and
+/// Verilator equal the golden model on the same clocks, and their traces
+/// agree.
 #[test]
 fn the_abc_units_match_the_golden_model_in_rust_hdl_and_verilator() {
     require_tool("verilator");
-    for (name, mode, more) in [
-        ("composite", "composite", r#""cube3": {"gradient": 12}"#),
+    const PARALLEL: &str = r#"{"projection": "parallel", "rotate_deg": [25, 35, 0]}"#;
+    for (name, mode, view, more) in [
+        (
+            "composite",
+            "composite",
+            PARALLEL,
+            r#""cube3": {"gradient": 12}"#,
+        ),
         (
             "first_opaque",
             "first_opaque",
+            PARALLEL,
             r#""cube3": {"gradient": 6}, "transfer": {"opacity": [[0, 0.0], [60, 0.0], [200, 1.0], [255, 1.0]],
                 "color": [[0, 1.0, 1.0, 1.0], [255, 0.8, 0.5, 0.3]], "gradient_opacity": [[0, 0.3], [40, 1.0]]}"#,
+        ),
+        (
+            "perspective_composite",
+            "composite",
+            r#"{"projection": "perspective", "eye": [-12, -5, -12], "target": [4.5, 4, 3.5], "fov_deg": 60}"#,
+            r#""cube3": {"gradient": 12}"#,
         ),
     ] {
         let s = scene(&format!(
             r#"{{"volume": {{"builtin": "phantom", "dims": [10, 9, 8]}},
-            "view": {{"projection": "parallel", "rotate_deg": [25, 35, 0]}},
+            "view": {view},
             "mode": "{mode}", "image": [32, 32], "hardware": {{"pipelines": 2}}, {more}}}"#
         ));
         let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
@@ -145,6 +160,8 @@ fn the_abc_units_match_the_golden_model_in_rust_hdl_and_verilator() {
         for (engine, r) in [("rust-hdl", &rust), ("Verilator", &verilator)] {
             assert_eq!(r.mismatches, 0, "{name}: {engine}: {:?}", r.first);
         }
+        let planes = if view == PARALLEL { 1 } else { 2 };
+        assert_eq!(rust.frame.bases.len(), planes, "{name}: base planes");
         assert_eq!(
             verilator.clocks, rust.clocks,
             "{name}: the same clock count"

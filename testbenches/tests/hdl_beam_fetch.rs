@@ -3,8 +3,10 @@
 //! scanlines fetched as beams through the Fast Bus into three rotating
 //! 2-DSBs, and the `cur` and `next` streams read from them must be the
 //! golden model's PRPs of scanlines `v` and `v + 1`, segment by segment, for
-//! p = 1, 2, 4 and 8 on oblique parallel views of non-cubic volumes, in
-//! rust-hdl simulation and under Icarus.
+//! p = 1, 2, 4 and 8 on oblique parallel views of non-cubic volumes (the
+//! shear) and close perspective eyes (de-fanning: rays that diverge by more
+//! than a voxel a plane, some beyond 45°), in rust-hdl simulation and under
+//! Icarus.
 
 use cosim::stage::{ports, run_stage, start_only, StageEngine};
 use golden_model::cube3::plan::Plan;
@@ -30,12 +32,28 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
     let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
-    let view = &plan.views[0];
+    let view = &plan.views[plan.views.len() - 1];
     let (u0, rays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
     let config = BeamFetchConfig::new(view, p, u0, rays, v0, scanlines).unwrap();
     let modules = config.modules(&vol, view);
     let nk = view.dims[2];
+    if name.contains("perspective") {
+        // De-fanning: neighbouring rays more than a voxel apart on some
+        // plane, and some ray beyond 45° (not cast on this base plane).
+        let apart = (u0..u0 + rays as i32 - 1)
+            .any(|u| (0..nk).any(|k| view.x.pos(u + 1, k) - view.x.pos(u, k) > 1));
+        assert!(apart, "{name}: no diverging rays");
+        assert!(
+            (u0..u0 + rays as i32).any(|u| view.x.d(u).unsigned_abs() > 1 << view.weight_bits),
+            "{name}: every ray within 45°"
+        );
+        assert_eq!(
+            plan.views.len(),
+            1 + name.contains("second") as usize,
+            "{name}"
+        );
+    }
     let mut want = Vec::new();
     for vi in 0..scanlines {
         let v = v0 + vi as i32;
@@ -79,6 +97,20 @@ fn cases(p: usize) -> Vec<Case> {
         case(
             "ramp 10x12x11, negative increments",
             &json("ramp", "[10, 12, 11]", "[-25, -10, 5]"),
+            p,
+            2,
+        ),
+        case(
+            "perspective, close eye, phantom 12x10x9",
+            r#"{"volume": {"builtin": "phantom", "dims": [12, 10, 9]}, "view": {"projection": "perspective", "eye": [5.5, 4.5, -3], "fov_deg": 60},
+                "mode": "mip", "image": [16, 16]}"#,
+            p,
+            3,
+        ),
+        case(
+            "perspective, off-axis eye, second base plane, ramp 9x11x10",
+            r#"{"volume": {"builtin": "ramp", "dims": [9, 11, 10]}, "view": {"projection": "perspective", "eye": [-14, -6, -14], "target": [4, 5, 4.5], "fov_deg": 70},
+                "mode": "mip", "image": [16, 16]}"#,
             p,
             2,
         ),

@@ -106,12 +106,12 @@ fn a_fault_in_the_cube3_system_verilog_is_caught() {
     require_tool("iverilog");
     let c = cases(4).remove(0);
     let verilog = emitted_verilog(&c, &system::<4>(&c));
-    // The Fast Bus rotates one module too far for 2-DSB module 1.
-    let site = "if ((((index$1 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin";
+    // The Fast Bus sends lane 1's voxel one 2-DSB module too far.
+    let site = "if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$0)) begin";
     assert!(verilog.contains(site), "the fault site exists");
     let faulty = verilog.replacen(
         site,
-        "if ((((index$1 + rotate_q$q + 16'h1) & mask) == index$0) & inside_q$0$q) begin",
+        "if (holds_q$1$q & (((ray_q$1$q + plane_q$q + 16'h1) & mask) == index$0)) begin",
         1,
     );
     let errors = verilog_case::<4>(StageEngine::Iverilog, &c, &faulty);

@@ -20,10 +20,13 @@ pub const CUBE3_LINE_BITS: usize = 16;
 /// The units a Cube-3 system leaves out for its scene.
 pub fn cube3_left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
     let p = &c.pipeline;
-    let mut v = vec![LeftOut {
-        name: "de-fanning (a parallel view's beams shift as a whole)",
-        instances: &[],
-    }];
+    let mut v = vec![];
+    if !p.perspective {
+        v.push(LeftOut {
+            name: "de-fanning (a parallel view's beams shift as a whole: no group ROMs, one template entry a plane)",
+            instances: &["groups", "group_x$*"],
+        });
+    }
     if p.abc.is_none() {
         v.push(LeftOut {
             name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
@@ -104,7 +107,7 @@ pub fn cube3_verilog(
     }
 }
 
-/// The Cube-3 system of the scene's base plane (parallel views: one),
+/// The Cube-3 system of one of the scene's base planes,
 /// the whole base plane, its memory external beyond 2^16 voxels a module.
 pub fn cube3_config(
     scene: &Scene,
@@ -126,8 +129,11 @@ pub fn cube3_config(
     Ok(c)
 }
 
-/// Export the scene's Cube-3 system into `out` (written whole or not at
-/// all): the stage files, `lint.vlt` and `manifest.json`.
+/// Export the scene's Cube-3 systems into `out` (written whole or not at
+/// all): the stage files and `lint.vlt` of each base plane (in
+/// `base_plane{i}` when a perspective view needs several) and
+/// `manifest.json`, whose `parameters` are the first base plane's but for
+/// `frame_clocks`, the frame's.
 pub fn write_cube3_export(
     name: &str,
     scene: &Scene,
@@ -136,18 +142,47 @@ pub fn write_cube3_export(
     out: &std::path::Path,
 ) -> Result<serde_json::Value, String> {
     let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
-    let [view] = plan.views.as_slice() else {
-        return Err(format!(
-            "the Cube-3 export builds one base plane (parallel views), not {}",
-            plan.views.len()
-        ));
-    };
-    let c = cube3_config(scene, camera, view)?;
-    let verilog = cube3_verilog(&c, None)?;
-    let units = cube3_left_out(&c);
+    let configs: Vec<Cube3SystemConfig> = plan
+        .views
+        .iter()
+        .map(|v| cube3_config(scene, camera, v))
+        .collect::<Result<_, _>>()?;
+    let verilog: Vec<String> = configs
+        .iter()
+        .map(|c| cube3_verilog(c, None))
+        .collect::<Result<_, _>>()?;
+    let c = &configs[0];
+    let units = cube3_left_out(c);
     write_dir(out, |tmp| {
-        let files = write_stage_files(tmp, &verilog, &units, &CUBE3)
-            .map_err(|e| format!("{}: {e}", out.display()))?;
+        let io = |e: std::io::Error| format!("{}: {e}", out.display());
+        let mut bases = Vec::new();
+        for (i, (c, v)) in configs.iter().zip(&verilog).enumerate() {
+            // One system per base plane: the templates and the memory's
+            // traversal order are the view's.
+            let sub = if configs.len() == 1 {
+                ".".to_string()
+            } else {
+                format!("base_plane{i}")
+            };
+            let dir = tmp.join(&sub);
+            std::fs::create_dir_all(&dir).map_err(io)?;
+            let files = write_stage_files(&dir, v, &cube3_left_out(c), &CUBE3).map_err(io)?;
+            let view = &plan.views[i];
+            let axis = ["u", "v", "w"][view.perm[2]];
+            bases.push(serde_json::json!({
+                "dir": sub,
+                "files": files,
+                "axis": axis,
+                "towards_positive": view.positive,
+                "projection": if c.pipeline.perspective { "perspective" } else { "parallel" },
+                "traversal_dims": c.fetch.dims,
+                "offset": c.pipeline.offset,
+                "rays": c.fetch.rays,
+                "scanlines": c.fetch.scanlines,
+                "period_clocks": c.fetch.period(),
+                "clocks": c.clocks(),
+            }));
+        }
         let (f, p) = (&c.fetch, &c.pipeline);
         let hw = scene.hardware;
         Ok(serde_json::json!({
@@ -169,7 +204,7 @@ pub fn write_cube3_export(
                 "scanlines": f.scanlines,
                 "segments_per_ray": f.segments,
                 "period_clocks": f.period(),
-                "frame_clocks": c.clocks(),
+                "frame_clocks": configs.iter().map(|c| c.clocks()).sum::<usize>(),
                 "memory": {
                     "kind": if f.external { "external" } else { "on-chip" },
                     "voxels_per_module": f.module_words(),
@@ -181,7 +216,7 @@ pub fn write_cube3_export(
                 },
             },
             "units_left_out": names(&units),
-            "base_planes": [{"dir": ".", "files": files}],
+            "base_planes": bases,
             "lint": "verilator --lint-only -Wall lint.vlt <files>",
         }))
     })
