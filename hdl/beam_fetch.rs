@@ -252,31 +252,22 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     buffer0: [DepthRam<Bits<16>, B>; P],
     buffer1: [DepthRam<Bits<16>, B>; P],
     buffer2: [DepthRam<Bits<16>, B>; P],
-    /// Parallel: the templates by plane.
-    pos_x: ROM<Bits<16>, PLANE_BITS>,
+    /// This clock's group of rays.
+    group: Groups<P>,
     /// `Y_k(v) - v` by plane (parallel), or by scanline and plane at
     /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`).
-    pos_y: ROM<Bits<16>, GROUP_BITS>,
+    pos_y: ROM<Bits<16>, 32>,
     row_stride: Constant<Bits<16>>,
     row_entry: Signal<Local, Bits<32>>,
-    /// Perspective: each group's `[plane, first ray]` and its lanes' `x`
-    /// (bit 16: the lane holds a ray).
-    perspective: Constant<Bit>,
-    groups: ROM<Bits<32>, GROUP_BITS>,
-    group_x: [ROM<Bits<32>, GROUP_BITS>; P],
     schedule: Schedule,
     /// The write side: this clock's plane, row and first ray, and per lane
     /// its ray, voxel `x`, module, address and whether it holds a ray and
     /// lies in the volume.
-    plane: Signal<Local, Bits<16>>,
     row: Signal<Local, Bits<16>>,
-    first_ray: Signal<Local, Bits<16>>,
-    x0: Signal<Local, Bits<16>>,
     lane_ray: [Signal<Local, Bits<16>>; P],
-    lane_x: [Signal<Local, Bits<16>>; P],
-    lane_holds: [Signal<Local, Bit>; P],
     lane_inside: [Signal<Local, Bit>; P],
     lane_module: [Signal<Local, Bits<16>>; P],
+    lane_column: [Signal<Local, Bits<16>>; P],
     lane_address: [Signal<Local, Bits<32>>; P],
     /// Per memory module: the address it reads, and whether it reads.
     address: [Signal<Local, Bits<32>>; P],
@@ -313,7 +304,6 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     n_k: Constant<Bits<16>>,
     row_words: Constant<Bits<16>>,
     plane_words: Constant<Bits<16>>,
-    u0: Constant<Bits<16>>,
     v0: Constant<Bits<16>>,
     rays: Constant<Bits<16>>,
     segments: Constant<Bits<16>>,
@@ -361,16 +351,6 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
         };
         let ram = || DepthRam::with_words(words);
         let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
-        let group_x = |j: usize| -> ROM<Bits<32>, GROUP_BITS> {
-            c.groups
-                .iter()
-                .map(|g| {
-                    g.x.get(j)
-                        .map_or(0, |&x| (x as u64 & 0xffff) | 1 << 16)
-                        .to_bits()
-                })
-                .into()
-        };
         Ok(BeamFetch {
             clock: Default::default(),
             start: Default::default(),
@@ -389,27 +369,16 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             buffer0: std::array::from_fn(|_| buffer()),
             buffer1: std::array::from_fn(|_| buffer()),
             buffer2: std::array::from_fn(|_| buffer()),
-            pos_x: rom16(&c.pos_x),
+            group: Groups::new(c),
             pos_y: rom16(&c.pos_y),
             row_entry: Default::default(),
             row_stride: k(if c.perspective() { nk as i64 + 1 } else { 0 }),
-            perspective: Constant::new(c.perspective()),
-            groups: c
-                .groups
-                .iter()
-                .map(|g| (g.plane as u64 | (g.ray as u64) << 16).to_bits())
-                .into(),
-            group_x: std::array::from_fn(group_x),
             schedule: Schedule::new(c),
-            plane: Default::default(),
             row: Default::default(),
-            first_ray: Default::default(),
-            x0: Default::default(),
             lane_ray: std::array::from_fn(|_| Default::default()),
-            lane_x: std::array::from_fn(|_| Default::default()),
-            lane_holds: std::array::from_fn(|_| Default::default()),
             lane_inside: std::array::from_fn(|_| Default::default()),
             lane_module: std::array::from_fn(|_| Default::default()),
+            lane_column: std::array::from_fn(|_| Default::default()),
             lane_address: std::array::from_fn(|_| Default::default()),
             address: std::array::from_fn(|_| Default::default()),
             reads: std::array::from_fn(|_| Default::default()),
@@ -442,7 +411,6 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             n_k: k(nk as i64),
             row_words: k(b as i64),
             plane_words: k((b * ny) as i64),
-            u0: k(c.u0 as i64),
             v0: k(c.v0 as i64),
             rays: k(c.rays as i64),
             segments: k(c.segments as i64),
@@ -463,48 +431,33 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         dff_setup!(self, clock, plane_q, write_q, buffer_q, read_q, lane_q, cur_q, next_q);
         self.schedule.clock.next = self.clock.val();
         self.schedule.start.next = self.start.val();
-        // This clock's group: a parallel chunk from the counters, or a
-        // perspective group from the ROMs (the schedule's chunk counts
-        // groups).
-        self.groups.address.next = self.schedule.chunk.val();
-        self.plane.next = self.schedule.plane.val();
-        self.first_ray.next = self.schedule.chunk.val() << self.shift.val();
-        if self.perspective.val() {
-            self.plane.next = self.groups.data.val().get_bits::<16>(0);
-            self.first_ray.next = self.groups.data.val().get_bits::<16>(16);
-        }
-        self.pos_x.address.next = self.plane.val().get_bits::<PLANE_BITS>(0);
+        // This clock's group of rays, and its beam's row.
+        self.group.chunk.next = self.schedule.chunk.val();
+        self.group.plane_count.next = self.schedule.plane.val();
         self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
-            + bit_cast::<32, 16>(self.plane.val());
-        self.pos_y.address.next = self.row_entry.val().get_bits::<GROUP_BITS>(0);
+            + bit_cast::<32, 16>(self.group.plane.val());
+        self.pos_y.address.next = self.row_entry.val();
         self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
-        self.x0.next = self.u0.val() + self.pos_x.data.val() + self.first_ray.val();
         for j in 0..P {
-            self.group_x[j].address.next = self.schedule.chunk.val();
-            self.lane_ray[j].next = self.first_ray.val() + self.index[j].val();
-            self.lane_x[j].next = self.x0.val() + self.index[j].val();
-            self.lane_holds[j].next = true;
-            if self.perspective.val() {
-                self.lane_x[j].next = self.group_x[j].data.val().get_bits::<16>(0);
-                self.lane_holds[j].next = self.group_x[j].data.val().get_bit(16);
-            }
-            self.lane_inside[j].next = self.lane_holds[j].val()
-                & !self.lane_x[j].val().get_bit(15)
-                & (self.lane_x[j].val() < self.n_x.val())
+            self.lane_ray[j].next = self.group.first_ray.val() + self.index[j].val();
+            self.lane_inside[j].next = self.group.holds[j].val()
+                & !self.group.x[j].val().get_bit(15)
+                & (self.group.x[j].val() < self.n_x.val())
                 & !self.row.val().get_bit(15)
                 & (self.row.val() < self.n_y.val())
-                & (self.plane.val() < self.n_k.val());
+                & (self.group.plane.val() < self.n_k.val());
             self.lane_module[j].next =
-                (self.lane_x[j].val() + self.row.val() + self.plane.val()) & self.mask.val();
+                (self.group.x[j].val() + self.row.val() + self.group.plane.val()) & self.mask.val();
             // (`* one` widens the column to 32 bits inside the loop.)
-            self.lane_address[j].next = (self.lane_x[j].val() >> self.shift.val()) * self.one.val()
+            self.lane_column[j].next = self.group.x[j].val() >> self.shift.val();
+            self.lane_address[j].next = self.lane_column[j].val() * self.one.val()
                 + self.row.val() * self.row_words.val()
-                + self.plane.val() * self.plane_words.val();
+                + self.group.plane.val() * self.plane_words.val();
             self.holds_q[j].clock.next = self.clock.val();
             self.inside_q[j].clock.next = self.clock.val();
             self.module_q[j].clock.next = self.clock.val();
             self.ray_q[j].clock.next = self.clock.val();
-            self.holds_q[j].d.next = self.lane_holds[j].val();
+            self.holds_q[j].d.next = self.group.holds[j].val();
             self.inside_q[j].d.next = self.lane_inside[j].val();
             self.module_q[j].d.next = self.lane_module[j].val();
             self.ray_q[j].d.next = self.lane_ray[j].val();
@@ -541,7 +494,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 self.word[m].next = self.ext_data[m].val();
             }
         }
-        self.plane_q.d.next = self.plane.val();
+        self.plane_q.d.next = self.group.plane.val();
         self.write_q.d.next = self.schedule.writing.val();
         self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
         self.buffer_q.d.next = self.schedule.write_buffer.val();
@@ -641,6 +594,99 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             }
         }
         self.valid.next = self.read_q.q.val();
+    }
+}
+
+/// This clock's group of rays, at most `P`: a parallel chunk from the
+/// schedule's counters (`P` rays from `chunk·P`, `x` from the plane's
+/// template), or a perspective group from the ROMs (the schedule's chunk
+/// counts groups): its plane, first ray and each lane's `x` and whether it
+/// holds a ray.
+#[derive(LogicBlock)]
+struct Groups<const P: usize> {
+    pub chunk: Signal<In, Bits<16>>,
+    pub plane_count: Signal<In, Bits<16>>,
+    pub plane: Signal<Out, Bits<16>>,
+    pub first_ray: Signal<Out, Bits<16>>,
+    pub x: [Signal<Out, Bits<16>>; P],
+    pub holds: [Signal<Out, Bit>; P],
+    perspective: Constant<Bit>,
+    /// Parallel: `pos_x` by plane, and the chunk's first ray and `x`.
+    pos_x: ROM<Bits<16>, PLANE_BITS>,
+    chunk_ray: Signal<Local, Bits<16>>,
+    x0: Signal<Local, Bits<16>>,
+    /// Perspective: each group's `[plane, first ray]` and its lanes' `x`
+    /// (bit 16: the lane holds a ray).
+    groups: ROM<Bits<32>, GROUP_BITS>,
+    group_x: [ROM<Bits<17>, GROUP_BITS>; P],
+    index: [Constant<Bits<16>>; P],
+    shift: Constant<Bits<16>>,
+    u0: Constant<Bits<16>>,
+}
+
+impl<const P: usize> Groups<P> {
+    fn new(c: &BeamFetchConfig) -> Groups<P> {
+        let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
+        let group_x = |j: usize| -> ROM<Bits<17>, GROUP_BITS> {
+            c.groups
+                .iter()
+                .map(|g| {
+                    g.x.get(j)
+                        .map_or(0, |&x| (x as u64 & 0xffff) | 1 << 16)
+                        .to_bits()
+                })
+                .into()
+        };
+        Groups {
+            chunk: Default::default(),
+            plane_count: Default::default(),
+            plane: Default::default(),
+            first_ray: Default::default(),
+            x: std::array::from_fn(|_| Default::default()),
+            holds: std::array::from_fn(|_| Default::default()),
+            perspective: Constant::new(c.perspective()),
+            pos_x: c
+                .pos_x
+                .iter()
+                .map(|&x| ((x as u64) & 0xffff).to_bits())
+                .into(),
+            chunk_ray: Default::default(),
+            x0: Default::default(),
+            groups: c
+                .groups
+                .iter()
+                .map(|g| (g.plane as u64 | (g.ray as u64) << 16).to_bits())
+                .into(),
+            group_x: std::array::from_fn(group_x),
+            index: std::array::from_fn(|j| k(j as i64)),
+            shift: k(P.trailing_zeros() as i64),
+            u0: k(c.u0 as i64),
+        }
+    }
+}
+
+impl<const P: usize> Logic for Groups<P> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.pos_x.address.next = self.plane_count.val().get_bits::<PLANE_BITS>(0);
+        self.groups.address.next = self.chunk.val();
+        self.chunk_ray.next = self.chunk.val() << self.shift.val();
+        self.x0.next = self.u0.val() + self.pos_x.data.val() + self.chunk_ray.val();
+        self.plane.next = self.plane_count.val();
+        self.first_ray.next = self.chunk_ray.val();
+        if self.perspective.val() {
+            self.plane.next = self.groups.data.val().get_bits::<16>(0);
+            self.first_ray.next = self.groups.data.val().get_bits::<16>(16);
+        }
+        for j in 0..P {
+            self.group_x[j].address.next = self.chunk.val();
+            self.x[j].next = self.x0.val() + self.index[j].val();
+            self.holds[j].next = true;
+            if self.perspective.val() {
+                self.x[j].next = self.group_x[j].data.val().get_bits::<16>(0);
+                self.holds[j].next = self.group_x[j].data.val().get_bit(16);
+            }
+        }
     }
 }
 

@@ -1,5 +1,5 @@
 //! The Cube-3 pipeline (§5, Fig. 12) from the 2-D skewed buffers to the
-//! base-plane pixels, for a parallel view in every mode: the
+//! base-plane pixels, for a parallel or perspective view in every mode: the
 //! [`RayControl`], `P` TRILIN units fed by [`TrilinLanes`], the ABC units
 //! ([`AbcUnit`]: gradients, then one [`Shader`] a unit) or a leaf stage,
 //! and the Ray Projection Cone ([`Rpc`]), one segment of `P` samples per
@@ -225,6 +225,9 @@ impl Cube3Config {
         let cast_y = interval(scanlines, &|s| {
             view.y.d(line_v[s as usize]).unsigned_abs() <= one
         })?;
+        if cast_x[0] > cast_x[1] || cast_y[0] > cast_y[1] {
+            return Err("no ray of the stream is cast on this base plane".into());
+        }
         let segments = view.dims[2].div_ceil(p);
         Ok(Cube3Config {
             p,

@@ -1,7 +1,7 @@
 //! Cube-3 from the volume memory to the base plane (§5, Fig. 12): the
 //! [`BeamFetch`] (CFB, Fast Bus, 2-DSBs) feeding the [`Cube3`] pipeline
-//! (ray control, TRILIN, ABC units or leaf stage, RPC), for a parallel
-//! view in every mode.
+//! (ray control, TRILIN, ABC units or leaf stage, RPC), for one base plane
+//! of a parallel or perspective view in every mode.
 //!
 //! After `start` the system fetches the PRPs of `S + 1` stream scanlines
 //! and puts out one `done` pixel per stream ray (`R` per scanline, in

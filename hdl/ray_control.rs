@@ -86,24 +86,15 @@ pub struct RayControl<const P: usize, const H: usize> {
     unit_segment: Signal<Local, Bits<16>>,
     unit_ray: Signal<Local, Bits<16>>,
     unit_scanline: Signal<Local, Bits<16>>,
-    wx_rom: [ROM<Bits<16>, TEMPLATE_BITS>; P],
-    wy_rom: [ROM<Bits<16>, TEMPLATE_BITS>; P],
-    /// `G` for a perspective view's per-ray templates, else 0.
-    stride: Constant<Bits<16>>,
-    wx_entry: Signal<Local, Bits<32>>,
-    wy_entry: Signal<Local, Bits<32>>,
+    templates: Templates<P>,
     /// Cast rays and scanlines `[lo, hi]`, inclusive.
+    /// (`x - lo <= hi - lo`, wrapping: one unsigned compare.)
     cast_ray_lo: Constant<Bits<16>>,
-    cast_ray_hi: Constant<Bits<16>>,
+    cast_ray_span: Constant<Bits<16>>,
     cast_line_lo: Constant<Bits<16>>,
-    cast_line_hi: Constant<Bits<16>>,
-    /// The centre's `[ray, scanline]`, and its increments (sign in bit 16).
-    centre_line: DelayLine<Bits<32>, H>,
-    centre_ray: Signal<Local, Bits<16>>,
-    centre_scanline: Signal<Local, Bits<16>>,
+    cast_line_span: Constant<Bits<16>>,
     per_ray: Constant<Bit>,
-    dx_rom: ROM<Bits<32>, TEMPLATE_BITS>,
-    dy_rom: ROM<Bits<32>, TEMPLATE_BITS>,
+    increments: Increments<H>,
     bounds: [ROM<Bits<64>, SEGMENT_BITS>; P],
     inner: [ROM<Bits<64>, SEGMENT_BITS>; P],
     /// Lane i's inside and inner bits in place (`lane_bit[i] = 1 << i`).
@@ -122,7 +113,6 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
         if P > 8 || segments > 1 << SEGMENT_BITS || centre_delay >= 1 << H {
             return Err(format!("rays of {segments} segments are too long"));
         }
-        let nk = t.wx.len() / t.wx_rays();
         if t.wx_rays() * segments > 1 << TEMPLATE_BITS
             || t.wy_scanlines() * segments > 1 << TEMPLATE_BITS
         {
@@ -131,26 +121,6 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
                 t.rays, t.scanlines
             ));
         }
-        // Lane i's template ROM: weight k = s·P + i of ray (scanline) r at
-        // r·G + s.
-        let template = |w: &[u32], lines: usize, i: usize| -> ROM<Bits<16>, TEMPLATE_BITS> {
-            (0..lines * segments)
-                .map(|a| {
-                    let (r, k) = (a / segments, (a % segments) * P + i);
-                    let v = if k < nk { w[r * nk + k] } else { 0 };
-                    (v as u64).to_bits()
-                })
-                .into()
-        };
-        let increments = |d: &[i32]| -> ROM<Bits<32>, TEMPLATE_BITS> {
-            d.iter()
-                .map(|&d| ((d.unsigned_abs() as u64) | ((d < 0) as u64) << 16).to_bits())
-                .into()
-        };
-        let (dx, dy) = t
-            .abc
-            .as_ref()
-            .map_or((vec![0], vec![0]), |a| (a.dx.clone(), a.dy.clone()));
         let k = |v: u32| Constant::new((v as u64).to_bits());
         let bound = |b: &[[u32; 4]], k: usize| {
             let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
@@ -191,25 +161,13 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             unit_segment: Default::default(),
             unit_ray: Default::default(),
             unit_scanline: Default::default(),
-            wx_rom: std::array::from_fn(|i| template(&t.wx, t.wx_rays(), i)),
-            wy_rom: std::array::from_fn(|i| template(&t.wy, t.wy_scanlines(), i)),
-            stride: k(if t.perspective { segments as u32 } else { 0 }),
-            wx_entry: Default::default(),
-            wy_entry: Default::default(),
+            templates: Templates::new(t),
             cast_ray_lo: k(t.cast[0]),
-            cast_ray_hi: k(t.cast[1]),
+            cast_ray_span: k(t.cast[1].wrapping_sub(t.cast[0])),
             cast_line_lo: k(t.cast[2]),
-            cast_line_hi: k(t.cast[3]),
-            centre_line: DelayLine::new(
-                if t.perspective { centre_delay } else { 1 },
-                &[],
-                u32::MAX.to_bits(),
-            ),
-            centre_ray: Default::default(),
-            centre_scanline: Default::default(),
+            cast_line_span: k(t.cast[3].wrapping_sub(t.cast[2])),
             per_ray: Constant::new(t.perspective),
-            dx_rom: increments(&dx),
-            dy_rom: increments(&dy),
+            increments: Increments::new(t, centre_delay),
             bounds: std::array::from_fn(|i| rom(&t.bounds, i)),
             inner: std::array::from_fn(|i| rom(&t.inner, i)),
             lane_in: Default::default(),
@@ -226,8 +184,7 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
         dff_setup!(self, clock, segment, ray, scanline);
         self.late.clock.next = self.clock.val();
         self.late.write_enable.next = true;
-        self.centre_line.clock.next = self.clock.val();
-        self.centre_line.write_enable.next = true;
+        self.increments.clock.next = self.clock.val();
         // The stream counters: segment, ray, scanline of the entering
         // segment, stepped by each valid one.
         if self.valid.val() {
@@ -266,40 +223,26 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
         self.unit_last.next = self.late.data_out.val().get_bit(48)
             & (self.unit_segment.val() == self.last_segment.val());
         self.unit_cast.next = !self.per_ray.val()
-            | ((self.unit_ray.val() >= self.cast_ray_lo.val())
-                & (self.unit_ray.val() <= self.cast_ray_hi.val())
-                & (self.unit_scanline.val() >= self.cast_line_lo.val())
-                & (self.unit_scanline.val() <= self.cast_line_hi.val()));
-        // The ABC units' centre ray, and its increments.
-        self.centre_line.data_in.next = bit_cast::<32, 16>(self.unit_ray.val())
-            | (bit_cast::<32, 16>(self.unit_scanline.val()) << 16);
-        self.centre_ray.next = 0.into();
-        self.centre_scanline.next = 0.into();
-        if self.per_ray.val() {
-            self.centre_ray.next = self.centre_line.data_out.val().get_bits::<16>(0);
-            self.centre_scanline.next = self.centre_line.data_out.val().get_bits::<16>(16) - 1;
-        }
-        self.dx_rom.address.next = self.centre_ray.val();
-        self.dy_rom.address.next = self.centre_scanline.val();
-        self.dx_neg.next = self.dx_rom.data.val().get_bit(16);
-        self.dx_mag.next = self.dx_rom.data.val().get_bits::<16>(0);
-        self.dy_neg.next = self.dy_rom.data.val().get_bit(16);
-        self.dy_mag.next = self.dy_rom.data.val().get_bits::<16>(0);
-        // The templates' rows of the units' ray and scanline.
-        self.wx_entry.next =
-            self.unit_ray.val() * self.stride.val() + bit_cast::<32, 16>(self.unit_segment.val());
-        self.wy_entry.next = self.unit_scanline.val() * self.stride.val()
-            + bit_cast::<32, 16>(self.unit_segment.val());
+            | (((self.unit_ray.val() - self.cast_ray_lo.val()) <= self.cast_ray_span.val())
+                & ((self.unit_scanline.val() - self.cast_line_lo.val())
+                    <= self.cast_line_span.val()));
+        self.increments.ray.next = self.unit_ray.val();
+        self.increments.scanline.next = self.unit_scanline.val();
+        self.dx_neg.next = self.increments.dx_neg.val();
+        self.dx_mag.next = self.increments.dx_mag.val();
+        self.dy_neg.next = self.increments.dy_neg.val();
+        self.dy_mag.next = self.increments.dy_mag.val();
+        self.templates.ray.next = self.unit_ray.val();
+        self.templates.scanline.next = self.unit_scanline.val();
+        self.templates.segment.next = self.unit_segment.val();
         for i in 0..8 {
             self.lane_in[i].next = 0.into();
             self.lane_inner[i].next = 0.into();
         }
         for i in 0..P {
-            self.wx_rom[i].address.next = self.wx_entry.val().get_bits::<TEMPLATE_BITS>(0);
-            self.wy_rom[i].address.next = self.wy_entry.val().get_bits::<TEMPLATE_BITS>(0);
             self.bounds[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
-            self.wx[i].next = self.wx_rom[i].data.val();
-            self.wy[i].next = self.wy_rom[i].data.val();
+            self.wx[i].next = self.templates.wx[i].val();
+            self.wy[i].next = self.templates.wy[i].val();
             if (self.unit_ray.val() >= self.bounds[i].data.val().get_bits::<16>(0))
                 & (self.unit_ray.val() <= self.bounds[i].data.val().get_bits::<16>(16))
                 & (self.unit_scanline.val() >= self.bounds[i].data.val().get_bits::<16>(32))
@@ -332,5 +275,142 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             | self.lane_inner[5].val()
             | self.lane_inner[6].val()
             | self.lane_inner[7].val();
+    }
+}
+
+/// The increments of the ABC units' centre ray: the units' ray and
+/// scanline through a delay line to the centre (perspective), then ROMs by
+/// ray and scanline (sign in bit 16); a parallel view's one entry at
+/// address 0 (the mask clears the address).
+#[derive(LogicBlock)]
+struct Increments<const H: usize> {
+    pub clock: Signal<In, Clock>,
+    pub ray: Signal<In, Bits<16>>,
+    pub scanline: Signal<In, Bits<16>>,
+    pub dx_neg: Signal<Out, Bit>,
+    pub dx_mag: Signal<Out, Bits<16>>,
+    pub dy_neg: Signal<Out, Bit>,
+    pub dy_mag: Signal<Out, Bits<16>>,
+    centre_line: DelayLine<Bits<32>, H>,
+    mask: Constant<Bits<16>>,
+    dx_address: Signal<Local, Bits<16>>,
+    dy_address: Signal<Local, Bits<16>>,
+    dx_rom: ROM<Bits<17>, TEMPLATE_BITS>,
+    dy_rom: ROM<Bits<17>, TEMPLATE_BITS>,
+}
+
+impl<const H: usize> Increments<H> {
+    fn new(t: &Cube3Config, centre_delay: usize) -> Increments<H> {
+        let rom = |d: &[i32]| -> ROM<Bits<17>, TEMPLATE_BITS> {
+            d.iter()
+                .map(|&d| ((d.unsigned_abs() as u64) | ((d < 0) as u64) << 16).to_bits())
+                .into()
+        };
+        let (dx, dy) = t
+            .abc
+            .as_ref()
+            .map_or((vec![0], vec![0]), |a| (a.dx.clone(), a.dy.clone()));
+        Increments {
+            clock: Default::default(),
+            ray: Default::default(),
+            scanline: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
+            centre_line: DelayLine::new(
+                if t.perspective { centre_delay } else { 1 },
+                &[],
+                u32::MAX.to_bits(),
+            ),
+            mask: Constant::new((if t.perspective { 0xffffu64 } else { 0 }).to_bits()),
+            dx_address: Default::default(),
+            dy_address: Default::default(),
+            dx_rom: rom(&dx),
+            dy_rom: rom(&dy),
+        }
+    }
+}
+
+impl<const H: usize> Logic for Increments<H> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.centre_line.clock.next = self.clock.val();
+        self.centre_line.write_enable.next = true;
+        self.centre_line.data_in.next =
+            bit_cast::<32, 16>(self.ray.val()) | (bit_cast::<32, 16>(self.scanline.val()) << 16);
+        // The centre's scanline is one before the delayed one.
+        self.dx_address.next = self.centre_line.data_out.val().get_bits::<16>(0) & self.mask.val();
+        self.dy_address.next =
+            (self.centre_line.data_out.val().get_bits::<16>(16) - 1) & self.mask.val();
+        self.dx_rom.address.next = self.dx_address.val();
+        self.dy_rom.address.next = self.dy_address.val();
+        self.dx_neg.next = self.dx_rom.data.val().get_bit(16);
+        self.dx_mag.next = self.dx_rom.data.val().get_bits::<16>(0);
+        self.dy_neg.next = self.dy_rom.data.val().get_bit(16);
+        self.dy_mag.next = self.dy_rom.data.val().get_bits::<16>(0);
+    }
+}
+
+/// The template weights of each unit's sample: lane `i`'s ROMs hold weight
+/// `k = s·P + i` of ray (scanline) `r` at `r·stride + s`, `stride = G` for
+/// a perspective view's per-ray templates, 0 for a parallel view's one.
+#[derive(LogicBlock)]
+struct Templates<const P: usize> {
+    pub ray: Signal<In, Bits<16>>,
+    pub scanline: Signal<In, Bits<16>>,
+    pub segment: Signal<In, Bits<16>>,
+    pub wx: [Signal<Out, Bits<16>>; P],
+    pub wy: [Signal<Out, Bits<16>>; P],
+    stride: Constant<Bits<16>>,
+    wx_entry: Signal<Local, Bits<32>>,
+    wy_entry: Signal<Local, Bits<32>>,
+    wx_rom: [ROM<Bits<16>, 32>; P],
+    wy_rom: [ROM<Bits<16>, 32>; P],
+}
+
+impl<const P: usize> Templates<P> {
+    fn new(t: &Cube3Config) -> Templates<P> {
+        let segments = t.segments;
+        let nk = t.wx.len() / t.wx_rays();
+        // Lane i's template ROM: weight k = s·P + i of ray (scanline) r at
+        // r·G + s.
+        let template = |w: &[u32], lines: usize, i: usize| -> ROM<Bits<16>, 32> {
+            (0..lines * segments)
+                .map(|a| {
+                    let (r, k) = (a / segments, (a % segments) * P + i);
+                    let v = if k < nk { w[r * nk + k] } else { 0 };
+                    (v as u64).to_bits()
+                })
+                .into()
+        };
+        Templates {
+            ray: Default::default(),
+            scanline: Default::default(),
+            segment: Default::default(),
+            wx: std::array::from_fn(|_| Default::default()),
+            wy: std::array::from_fn(|_| Default::default()),
+            stride: Constant::new(((if t.perspective { segments } else { 0 }) as u64).to_bits()),
+            wx_entry: Default::default(),
+            wy_entry: Default::default(),
+            wx_rom: std::array::from_fn(|i| template(&t.wx, t.wx_rays(), i)),
+            wy_rom: std::array::from_fn(|i| template(&t.wy, t.wy_scanlines(), i)),
+        }
+    }
+}
+
+impl<const P: usize> Logic for Templates<P> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.wx_entry.next =
+            self.ray.val() * self.stride.val() + bit_cast::<32, 16>(self.segment.val());
+        self.wy_entry.next =
+            self.scanline.val() * self.stride.val() + bit_cast::<32, 16>(self.segment.val());
+        for i in 0..P {
+            self.wx_rom[i].address.next = self.wx_entry.val();
+            self.wy_rom[i].address.next = self.wy_entry.val();
+            self.wx[i].next = self.wx_rom[i].data.val();
+            self.wy[i].next = self.wy_rom[i].data.val();
+        }
     }
 }

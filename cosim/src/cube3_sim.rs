@@ -5,9 +5,9 @@
 //! logging only the clocks with a pixel). The volume is preloaded into the
 //! memory modules in each base plane's traversal order.
 //!
-//! Built so far: parallel views in every mode (the 6- or the
-//! 12-neighbourhood where gradients are used); perspective views and the
-//! 10 and 26 get one line naming what the RTL does not build yet.
+//! Built: parallel and perspective views in every mode (the 6- or the
+//! 12-neighbourhood where gradients are used), a system per base plane;
+//! the 10 and 26 get one line naming what the RTL does not build.
 
 use crate::gtkw::write_gtkw_cube3;
 use crate::sim::Engine;

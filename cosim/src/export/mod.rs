@@ -152,8 +152,8 @@ pub fn buffer_memory(designs: &[SweepDesign]) -> serde_json::Value {
 
 /// Whether `out` may be replaced by an export: it does not exist, or it is
 /// a directory holding only what an export writes (stage files,
-/// `lint.vlt`, `manifest.json`, `sweep<i>/` of the same). Anything else is a
-/// user's, and is never deleted.
+/// `lint.vlt`, `manifest.json`, `sweep<i>/` or `base_plane<i>/` of the
+/// same). Anything else is a user's, and is never deleted.
 fn replaceable(out: &std::path::Path) -> Result<(), String> {
     fn check(dir: &std::path::Path, top: bool) -> Result<(), String> {
         let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
@@ -164,10 +164,10 @@ fn replaceable(out: &std::path::Path) -> Result<(), String> {
                 .file_type()
                 .map_err(|e| format!("{}: {e}", dir.display()))?;
             let ours = if kind.is_dir() {
-                top && name
-                    .strip_prefix("sweep")
-                    .is_some_and(|i| !i.is_empty() && i.bytes().all(|b| b.is_ascii_digit()))
-                    && check(&entry.path(), false).is_ok()
+                top && ["sweep", "base_plane"].iter().any(|p| {
+                    name.strip_prefix(p)
+                        .is_some_and(|i| !i.is_empty() && i.bytes().all(|b| b.is_ascii_digit()))
+                }) && check(&entry.path(), false).is_ok()
             } else {
                 kind.is_file()
                     && (STAGE_FILES.contains(&name.as_str())

@@ -27,6 +27,7 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     
     // Constant declarations
     localparam  external = 1'b0;
+    localparam  row_stride = 16'h0;
     localparam  index$0 = 16'h0;
     localparam  index$1 = 16'h1;
     localparam  index$2 = 16'h2;
@@ -46,7 +47,6 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     localparam  n_k = 16'h10;
     localparam  row_words = 16'h5;
     localparam  plane_words = 16'h5a;
-    localparam  u0 = 16'hfff3;
     localparam  v0 = 16'hfffe;
     localparam  rays = 16'h24;
     localparam  segments = 16'h4;
@@ -164,9 +164,19 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     reg  buffer2$3$write_clock;
     reg  [15:0] buffer2$3$write_data;
     reg  buffer2$3$write_enable;
-    reg  [9:0] pos_x$address;
-    wire  [15:0] pos_x$data;
-    reg  [9:0] pos_y$address;
+    reg  [15:0] group$chunk;
+    reg  [15:0] group$plane_count;
+    wire  [15:0] group$plane;
+    wire  [15:0] group$first_ray;
+    wire  [15:0] group$x$0;
+    wire  [15:0] group$x$1;
+    wire  [15:0] group$x$2;
+    wire  [15:0] group$x$3;
+    wire  group$holds$0;
+    wire  group$holds$1;
+    wire  group$holds$2;
+    wire  group$holds$3;
+    reg  [31:0] pos_y$address;
     wire  [15:0] pos_y$data;
     reg  schedule$clock;
     reg  schedule$start;
@@ -180,6 +190,18 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     wire  [15:0] schedule$segment;
     wire  [1:0] schedule$cur_buffer;
     wire  [1:0] schedule$next_buffer;
+    reg  holds_q$0$d;
+    wire  holds_q$0$q;
+    reg  holds_q$0$clock;
+    reg  holds_q$1$d;
+    wire  holds_q$1$q;
+    reg  holds_q$1$clock;
+    reg  holds_q$2$d;
+    wire  holds_q$2$q;
+    reg  holds_q$2$clock;
+    reg  holds_q$3$d;
+    wire  holds_q$3$q;
+    reg  holds_q$3$clock;
     reg  inside_q$0$d;
     wire  inside_q$0$q;
     reg  inside_q$0$clock;
@@ -192,15 +214,33 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     reg  inside_q$3$d;
     wire  inside_q$3$q;
     reg  inside_q$3$clock;
-    reg  [15:0] rotate_q$d;
-    wire  [15:0] rotate_q$q;
-    reg  rotate_q$clock;
+    reg  [15:0] module_q$0$d;
+    wire  [15:0] module_q$0$q;
+    reg  module_q$0$clock;
+    reg  [15:0] module_q$1$d;
+    wire  [15:0] module_q$1$q;
+    reg  module_q$1$clock;
+    reg  [15:0] module_q$2$d;
+    wire  [15:0] module_q$2$q;
+    reg  module_q$2$clock;
+    reg  [15:0] module_q$3$d;
+    wire  [15:0] module_q$3$q;
+    reg  module_q$3$clock;
+    reg  [15:0] ray_q$0$d;
+    wire  [15:0] ray_q$0$q;
+    reg  ray_q$0$clock;
+    reg  [15:0] ray_q$1$d;
+    wire  [15:0] ray_q$1$q;
+    reg  ray_q$1$clock;
+    reg  [15:0] ray_q$2$d;
+    wire  [15:0] ray_q$2$q;
+    reg  ray_q$2$clock;
+    reg  [15:0] ray_q$3$d;
+    wire  [15:0] ray_q$3$q;
+    reg  ray_q$3$clock;
     reg  [15:0] plane_q$d;
     wire  [15:0] plane_q$q;
     reg  plane_q$clock;
-    reg  [15:0] chunk_q$d;
-    wire  [15:0] chunk_q$q;
-    reg  chunk_q$clock;
     reg  write_q$d;
     wire  write_q$q;
     reg  write_q$clock;
@@ -225,34 +265,53 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     reg  [15:0] word$1;
     reg  [15:0] word$2;
     reg  [15:0] word$3;
+    reg  [31:0] row_entry;
     reg  [15:0] row;
-    reg  [15:0] x0;
-    reg  [15:0] base;
-    reg  [15:0] xm$0;
-    reg  [15:0] xm$1;
-    reg  [15:0] xm$2;
-    reg  [15:0] xm$3;
-    reg  [15:0] column$0;
-    reg  [15:0] column$1;
-    reg  [15:0] column$2;
-    reg  [15:0] column$3;
-    reg  inside$0;
-    reg  inside$1;
-    reg  inside$2;
-    reg  inside$3;
-    reg  [15:0] plane_segment;
+    reg  [15:0] lane_ray$0;
+    reg  [15:0] lane_ray$1;
+    reg  [15:0] lane_ray$2;
+    reg  [15:0] lane_ray$3;
+    reg  lane_inside$0;
+    reg  lane_inside$1;
+    reg  lane_inside$2;
+    reg  lane_inside$3;
+    reg  [15:0] lane_module$0;
+    reg  [15:0] lane_module$1;
+    reg  [15:0] lane_module$2;
+    reg  [15:0] lane_module$3;
+    reg  [15:0] lane_column$0;
+    reg  [15:0] lane_column$1;
+    reg  [15:0] lane_column$2;
+    reg  [15:0] lane_column$3;
+    reg  [31:0] lane_address$0;
+    reg  [31:0] lane_address$1;
+    reg  [31:0] lane_address$2;
+    reg  [31:0] lane_address$3;
     reg  [31:0] address$0;
     reg  [31:0] address$1;
     reg  [31:0] address$2;
     reg  [31:0] address$3;
-    reg  [15:0] ray$0;
-    reg  [15:0] ray$1;
-    reg  [15:0] ray$2;
-    reg  [15:0] ray$3;
+    reg  reads$0;
+    reg  reads$1;
+    reg  reads$2;
+    reg  reads$3;
+    reg  [15:0] plane_segment;
     reg  [15:0] value$0;
     reg  [15:0] value$1;
     reg  [15:0] value$2;
     reg  [15:0] value$3;
+    reg  [15:0] dsb_data$0;
+    reg  [15:0] dsb_data$1;
+    reg  [15:0] dsb_data$2;
+    reg  [15:0] dsb_data$3;
+    reg  [15:0] dsb_ray$0;
+    reg  [15:0] dsb_ray$1;
+    reg  [15:0] dsb_ray$2;
+    reg  [15:0] dsb_ray$3;
+    reg  dsb_write$0;
+    reg  dsb_write$1;
+    reg  dsb_write$2;
+    reg  dsb_write$3;
     reg  [31:0] write_address$0;
     reg  [31:0] write_address$1;
     reg  [31:0] write_address$2;
@@ -404,9 +463,19 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
         .write_data(buffer2$3$write_data),
         .write_enable(buffer2$3$write_enable)
     );
-    top$fetch$pos_x pos_x(
-        .address(pos_x$address),
-        .data(pos_x$data)
+    top$fetch$group group(
+        .chunk(group$chunk),
+        .plane_count(group$plane_count),
+        .plane(group$plane),
+        .first_ray(group$first_ray),
+        .x$0(group$x$0),
+        .x$1(group$x$1),
+        .x$2(group$x$2),
+        .x$3(group$x$3),
+        .holds$0(group$holds$0),
+        .holds$1(group$holds$1),
+        .holds$2(group$holds$2),
+        .holds$3(group$holds$3)
     );
     top$fetch$pos_y pos_y(
         .address(pos_y$address),
@@ -425,6 +494,26 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
         .segment(schedule$segment),
         .cur_buffer(schedule$cur_buffer),
         .next_buffer(schedule$next_buffer)
+    );
+    top$fetch$holds_q$0 holds_q$0(
+        .d(holds_q$0$d),
+        .q(holds_q$0$q),
+        .clock(holds_q$0$clock)
+    );
+    top$fetch$holds_q$1 holds_q$1(
+        .d(holds_q$1$d),
+        .q(holds_q$1$q),
+        .clock(holds_q$1$clock)
+    );
+    top$fetch$holds_q$2 holds_q$2(
+        .d(holds_q$2$d),
+        .q(holds_q$2$q),
+        .clock(holds_q$2$clock)
+    );
+    top$fetch$holds_q$3 holds_q$3(
+        .d(holds_q$3$d),
+        .q(holds_q$3$q),
+        .clock(holds_q$3$clock)
     );
     top$fetch$inside_q$0 inside_q$0(
         .d(inside_q$0$d),
@@ -446,20 +535,50 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
         .q(inside_q$3$q),
         .clock(inside_q$3$clock)
     );
-    top$fetch$rotate_q rotate_q(
-        .d(rotate_q$d),
-        .q(rotate_q$q),
-        .clock(rotate_q$clock)
+    top$fetch$module_q$0 module_q$0(
+        .d(module_q$0$d),
+        .q(module_q$0$q),
+        .clock(module_q$0$clock)
+    );
+    top$fetch$module_q$1 module_q$1(
+        .d(module_q$1$d),
+        .q(module_q$1$q),
+        .clock(module_q$1$clock)
+    );
+    top$fetch$module_q$2 module_q$2(
+        .d(module_q$2$d),
+        .q(module_q$2$q),
+        .clock(module_q$2$clock)
+    );
+    top$fetch$module_q$3 module_q$3(
+        .d(module_q$3$d),
+        .q(module_q$3$q),
+        .clock(module_q$3$clock)
+    );
+    top$fetch$ray_q$0 ray_q$0(
+        .d(ray_q$0$d),
+        .q(ray_q$0$q),
+        .clock(ray_q$0$clock)
+    );
+    top$fetch$ray_q$1 ray_q$1(
+        .d(ray_q$1$d),
+        .q(ray_q$1$q),
+        .clock(ray_q$1$clock)
+    );
+    top$fetch$ray_q$2 ray_q$2(
+        .d(ray_q$2$d),
+        .q(ray_q$2$q),
+        .clock(ray_q$2$clock)
+    );
+    top$fetch$ray_q$3 ray_q$3(
+        .d(ray_q$3$d),
+        .q(ray_q$3$q),
+        .clock(ray_q$3$clock)
     );
     top$fetch$plane_q plane_q(
         .d(plane_q$d),
         .q(plane_q$q),
         .clock(plane_q$clock)
-    );
-    top$fetch$chunk_q chunk_q(
-        .d(chunk_q$d),
-        .q(chunk_q$q),
-        .clock(chunk_q$clock)
     );
     top$fetch$write_q write_q(
         .d(write_q$d),
@@ -494,18 +613,14 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
     
     // Update code
     always @(*) begin
-        rotate_q$clock = clock;
         plane_q$clock = clock;
-        chunk_q$clock = clock;
         write_q$clock = clock;
         buffer_q$clock = clock;
         read_q$clock = clock;
         lane_q$clock = clock;
         cur_q$clock = clock;
         next_q$clock = clock;
-        rotate_q$d = rotate_q$q;
         plane_q$d = plane_q$q;
-        chunk_q$d = chunk_q$q;
         write_q$d = write_q$q;
         buffer_q$d = buffer_q$q;
         read_q$d = read_q$q;
@@ -514,217 +629,403 @@ module top$fetch(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,
         next_q$d = next_q$q;
         schedule$clock = clock;
         schedule$start = start;
-        pos_x$address = schedule$plane[('h0)+:(10)];
-        pos_y$address = schedule$plane[('h0)+:(10)];
+        group$chunk = schedule$chunk;
+        group$plane_count = schedule$plane;
+        row_entry = schedule$period * row_stride + 32'(group$plane);
+        pos_y$address = row_entry;
         row = v0 + schedule$period + pos_y$data;
-        x0 = u0 + pos_x$data + (schedule$chunk << shift);
-        base = (x0 + row + schedule$plane) & mask;
+        lane_ray$0 = group$first_ray + index$0;
+        lane_inside$0 = group$holds$0 & ~group$x$0['hf] & (group$x$0 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
+        lane_module$0 = (group$x$0 + row + group$plane) & mask;
+        lane_column$0 = group$x$0 >> shift;
+        lane_address$0 = lane_column$0 * one + row * row_words + group$plane * plane_words;
+        holds_q$0$clock = clock;
+        inside_q$0$clock = clock;
+        module_q$0$clock = clock;
+        ray_q$0$clock = clock;
+        holds_q$0$d = group$holds$0;
+        inside_q$0$d = lane_inside$0;
+        module_q$0$d = lane_module$0;
+        ray_q$0$d = lane_ray$0;
+        lane_ray$1 = group$first_ray + index$1;
+        lane_inside$1 = group$holds$1 & ~group$x$1['hf] & (group$x$1 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
+        lane_module$1 = (group$x$1 + row + group$plane) & mask;
+        lane_column$1 = group$x$1 >> shift;
+        lane_address$1 = lane_column$1 * one + row * row_words + group$plane * plane_words;
+        holds_q$1$clock = clock;
+        inside_q$1$clock = clock;
+        module_q$1$clock = clock;
+        ray_q$1$clock = clock;
+        holds_q$1$d = group$holds$1;
+        inside_q$1$d = lane_inside$1;
+        module_q$1$d = lane_module$1;
+        ray_q$1$d = lane_ray$1;
+        lane_ray$2 = group$first_ray + index$2;
+        lane_inside$2 = group$holds$2 & ~group$x$2['hf] & (group$x$2 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
+        lane_module$2 = (group$x$2 + row + group$plane) & mask;
+        lane_column$2 = group$x$2 >> shift;
+        lane_address$2 = lane_column$2 * one + row * row_words + group$plane * plane_words;
+        holds_q$2$clock = clock;
+        inside_q$2$clock = clock;
+        module_q$2$clock = clock;
+        ray_q$2$clock = clock;
+        holds_q$2$d = group$holds$2;
+        inside_q$2$d = lane_inside$2;
+        module_q$2$d = lane_module$2;
+        ray_q$2$d = lane_ray$2;
+        lane_ray$3 = group$first_ray + index$3;
+        lane_inside$3 = group$holds$3 & ~group$x$3['hf] & (group$x$3 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
+        lane_module$3 = (group$x$3 + row + group$plane) & mask;
+        lane_column$3 = group$x$3 >> shift;
+        lane_address$3 = lane_column$3 * one + row * row_words + group$plane * plane_words;
+        holds_q$3$clock = clock;
+        inside_q$3$clock = clock;
+        module_q$3$clock = clock;
+        ray_q$3$clock = clock;
+        holds_q$3$d = group$holds$3;
+        inside_q$3$d = lane_inside$3;
+        module_q$3$d = lane_module$3;
+        ray_q$3$d = lane_ray$3;
+        address$0 = 'h0;
+        reads$0 = 1'b0;
+        if (lane_inside$0 & (lane_module$0 == index$0)) begin
+            address$0 = lane_address$0;
+            reads$0 = 1'b1;
+        end
+        if (lane_inside$1 & (lane_module$1 == index$0)) begin
+            address$0 = lane_address$1;
+            reads$0 = 1'b1;
+        end
+        if (lane_inside$2 & (lane_module$2 == index$0)) begin
+            address$0 = lane_address$2;
+            reads$0 = 1'b1;
+        end
+        if (lane_inside$3 & (lane_module$3 == index$0)) begin
+            address$0 = lane_address$3;
+            reads$0 = 1'b1;
+        end
         memory$0$read_clock = clock;
         memory$0$write_clock = clock;
         memory$0$write_enable = load_enable & (load_module == module_id$0) & ~external;
         memory$0$write_address = load_address[('h0)+:(16)];
         memory$0$write_data = load_data;
-        xm$0 = x0 + ((index$0 - base) & mask);
-        inside$0 = ~xm$0['hf] & (xm$0 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
-        column$0 = xm$0 >> shift;
-        address$0 = column$0 * one + row * row_words + schedule$plane * plane_words;
         memory$0$read_address = 'h0;
         ext_addr$0 = 'h0;
-        if (inside$0 & ~external) begin
+        if (reads$0 & ~external) begin
             memory$0$read_address = address$0[('h0)+:(16)];
         end
-        if (inside$0 & external) begin
+        if (reads$0 & external) begin
             ext_addr$0 = address$0;
         end
         word$0 = memory$0$read_data;
         if (external) begin
             word$0 = ext_data$0;
         end
-        inside_q$0$clock = clock;
-        inside_q$0$d = inside$0;
+        address$1 = 'h0;
+        reads$1 = 1'b0;
+        if (lane_inside$0 & (lane_module$0 == index$1)) begin
+            address$1 = lane_address$0;
+            reads$1 = 1'b1;
+        end
+        if (lane_inside$1 & (lane_module$1 == index$1)) begin
+            address$1 = lane_address$1;
+            reads$1 = 1'b1;
+        end
+        if (lane_inside$2 & (lane_module$2 == index$1)) begin
+            address$1 = lane_address$2;
+            reads$1 = 1'b1;
+        end
+        if (lane_inside$3 & (lane_module$3 == index$1)) begin
+            address$1 = lane_address$3;
+            reads$1 = 1'b1;
+        end
         memory$1$read_clock = clock;
         memory$1$write_clock = clock;
         memory$1$write_enable = load_enable & (load_module == module_id$1) & ~external;
         memory$1$write_address = load_address[('h0)+:(16)];
         memory$1$write_data = load_data;
-        xm$1 = x0 + ((index$1 - base) & mask);
-        inside$1 = ~xm$1['hf] & (xm$1 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
-        column$1 = xm$1 >> shift;
-        address$1 = column$1 * one + row * row_words + schedule$plane * plane_words;
         memory$1$read_address = 'h0;
         ext_addr$1 = 'h0;
-        if (inside$1 & ~external) begin
+        if (reads$1 & ~external) begin
             memory$1$read_address = address$1[('h0)+:(16)];
         end
-        if (inside$1 & external) begin
+        if (reads$1 & external) begin
             ext_addr$1 = address$1;
         end
         word$1 = memory$1$read_data;
         if (external) begin
             word$1 = ext_data$1;
         end
-        inside_q$1$clock = clock;
-        inside_q$1$d = inside$1;
+        address$2 = 'h0;
+        reads$2 = 1'b0;
+        if (lane_inside$0 & (lane_module$0 == index$2)) begin
+            address$2 = lane_address$0;
+            reads$2 = 1'b1;
+        end
+        if (lane_inside$1 & (lane_module$1 == index$2)) begin
+            address$2 = lane_address$1;
+            reads$2 = 1'b1;
+        end
+        if (lane_inside$2 & (lane_module$2 == index$2)) begin
+            address$2 = lane_address$2;
+            reads$2 = 1'b1;
+        end
+        if (lane_inside$3 & (lane_module$3 == index$2)) begin
+            address$2 = lane_address$3;
+            reads$2 = 1'b1;
+        end
         memory$2$read_clock = clock;
         memory$2$write_clock = clock;
         memory$2$write_enable = load_enable & (load_module == module_id$2) & ~external;
         memory$2$write_address = load_address[('h0)+:(16)];
         memory$2$write_data = load_data;
-        xm$2 = x0 + ((index$2 - base) & mask);
-        inside$2 = ~xm$2['hf] & (xm$2 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
-        column$2 = xm$2 >> shift;
-        address$2 = column$2 * one + row * row_words + schedule$plane * plane_words;
         memory$2$read_address = 'h0;
         ext_addr$2 = 'h0;
-        if (inside$2 & ~external) begin
+        if (reads$2 & ~external) begin
             memory$2$read_address = address$2[('h0)+:(16)];
         end
-        if (inside$2 & external) begin
+        if (reads$2 & external) begin
             ext_addr$2 = address$2;
         end
         word$2 = memory$2$read_data;
         if (external) begin
             word$2 = ext_data$2;
         end
-        inside_q$2$clock = clock;
-        inside_q$2$d = inside$2;
+        address$3 = 'h0;
+        reads$3 = 1'b0;
+        if (lane_inside$0 & (lane_module$0 == index$3)) begin
+            address$3 = lane_address$0;
+            reads$3 = 1'b1;
+        end
+        if (lane_inside$1 & (lane_module$1 == index$3)) begin
+            address$3 = lane_address$1;
+            reads$3 = 1'b1;
+        end
+        if (lane_inside$2 & (lane_module$2 == index$3)) begin
+            address$3 = lane_address$2;
+            reads$3 = 1'b1;
+        end
+        if (lane_inside$3 & (lane_module$3 == index$3)) begin
+            address$3 = lane_address$3;
+            reads$3 = 1'b1;
+        end
         memory$3$read_clock = clock;
         memory$3$write_clock = clock;
         memory$3$write_enable = load_enable & (load_module == module_id$3) & ~external;
         memory$3$write_address = load_address[('h0)+:(16)];
         memory$3$write_data = load_data;
-        xm$3 = x0 + ((index$3 - base) & mask);
-        inside$3 = ~xm$3['hf] & (xm$3 < n_x) & ~row['hf] & (row < n_y) & (schedule$plane < n_k);
-        column$3 = xm$3 >> shift;
-        address$3 = column$3 * one + row * row_words + schedule$plane * plane_words;
         memory$3$read_address = 'h0;
         ext_addr$3 = 'h0;
-        if (inside$3 & ~external) begin
+        if (reads$3 & ~external) begin
             memory$3$read_address = address$3[('h0)+:(16)];
         end
-        if (inside$3 & external) begin
+        if (reads$3 & external) begin
             ext_addr$3 = address$3;
         end
         word$3 = memory$3$read_data;
         if (external) begin
             word$3 = ext_data$3;
         end
-        inside_q$3$clock = clock;
-        inside_q$3$d = inside$3;
-        rotate_q$d = (x0 + row) & mask;
-        plane_q$d = schedule$plane;
-        chunk_q$d = schedule$chunk;
+        plane_q$d = group$plane;
         write_q$d = schedule$writing;
         plane_segment = plane_q$q >> shift;
         buffer_q$d = schedule$write_buffer;
         value$0 = 'h0;
-        if ((((index$0 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
+        if (inside_q$0$q & (module_q$0$q == index$0)) begin
             value$0 = word$0;
         end
-        if ((((index$0 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
+        if (inside_q$0$q & (module_q$0$q == index$1)) begin
             value$0 = word$1;
         end
-        if ((((index$0 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
+        if (inside_q$0$q & (module_q$0$q == index$2)) begin
             value$0 = word$2;
         end
-        if ((((index$0 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
+        if (inside_q$0$q & (module_q$0$q == index$3)) begin
             value$0 = word$3;
         end
-        ray$0 = (chunk_q$q << shift) + ((index$0 - plane_q$q) & mask);
-        write_address$0 = ray$0 * segments + 32'(plane_segment);
+        value$1 = 'h0;
+        if (inside_q$1$q & (module_q$1$q == index$0)) begin
+            value$1 = word$0;
+        end
+        if (inside_q$1$q & (module_q$1$q == index$1)) begin
+            value$1 = word$1;
+        end
+        if (inside_q$1$q & (module_q$1$q == index$2)) begin
+            value$1 = word$2;
+        end
+        if (inside_q$1$q & (module_q$1$q == index$3)) begin
+            value$1 = word$3;
+        end
+        value$2 = 'h0;
+        if (inside_q$2$q & (module_q$2$q == index$0)) begin
+            value$2 = word$0;
+        end
+        if (inside_q$2$q & (module_q$2$q == index$1)) begin
+            value$2 = word$1;
+        end
+        if (inside_q$2$q & (module_q$2$q == index$2)) begin
+            value$2 = word$2;
+        end
+        if (inside_q$2$q & (module_q$2$q == index$3)) begin
+            value$2 = word$3;
+        end
+        value$3 = 'h0;
+        if (inside_q$3$q & (module_q$3$q == index$0)) begin
+            value$3 = word$0;
+        end
+        if (inside_q$3$q & (module_q$3$q == index$1)) begin
+            value$3 = word$1;
+        end
+        if (inside_q$3$q & (module_q$3$q == index$2)) begin
+            value$3 = word$2;
+        end
+        if (inside_q$3$q & (module_q$3$q == index$3)) begin
+            value$3 = word$3;
+        end
+        dsb_data$0 = 'h0;
+        dsb_ray$0 = 'h0;
+        dsb_write$0 = 1'b0;
+        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$0)) begin
+            dsb_data$0 = value$0;
+            dsb_ray$0 = ray_q$0$q;
+            dsb_write$0 = 1'b1;
+        end
+        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$0)) begin
+            dsb_data$0 = value$1;
+            dsb_ray$0 = ray_q$1$q;
+            dsb_write$0 = 1'b1;
+        end
+        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$0)) begin
+            dsb_data$0 = value$2;
+            dsb_ray$0 = ray_q$2$q;
+            dsb_write$0 = 1'b1;
+        end
+        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$0)) begin
+            dsb_data$0 = value$3;
+            dsb_ray$0 = ray_q$3$q;
+            dsb_write$0 = 1'b1;
+        end
+        write_address$0 = dsb_ray$0 * segments + 32'(plane_segment);
         buffer0$0$write_clock = clock;
         buffer1$0$write_clock = clock;
         buffer2$0$write_clock = clock;
         buffer0$0$write_address = write_address$0[('h0)+:(16)];
         buffer1$0$write_address = write_address$0[('h0)+:(16)];
         buffer2$0$write_address = write_address$0[('h0)+:(16)];
-        buffer0$0$write_data = value$0;
-        buffer1$0$write_data = value$0;
-        buffer2$0$write_data = value$0;
-        buffer0$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$0$write_enable = write_q$q & (ray$0 < rays) & (buffer_q$q == buffer_id$2);
-        value$1 = 'h0;
-        if ((((index$1 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
-            value$1 = word$0;
+        buffer0$0$write_data = dsb_data$0;
+        buffer1$0$write_data = dsb_data$0;
+        buffer2$0$write_data = dsb_data$0;
+        buffer0$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$2);
+        dsb_data$1 = 'h0;
+        dsb_ray$1 = 'h0;
+        dsb_write$1 = 1'b0;
+        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$1)) begin
+            dsb_data$1 = value$0;
+            dsb_ray$1 = ray_q$0$q;
+            dsb_write$1 = 1'b1;
         end
-        if ((((index$1 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
-            value$1 = word$1;
+        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$1)) begin
+            dsb_data$1 = value$1;
+            dsb_ray$1 = ray_q$1$q;
+            dsb_write$1 = 1'b1;
         end
-        if ((((index$1 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
-            value$1 = word$2;
+        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$1)) begin
+            dsb_data$1 = value$2;
+            dsb_ray$1 = ray_q$2$q;
+            dsb_write$1 = 1'b1;
         end
-        if ((((index$1 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
-            value$1 = word$3;
+        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$1)) begin
+            dsb_data$1 = value$3;
+            dsb_ray$1 = ray_q$3$q;
+            dsb_write$1 = 1'b1;
         end
-        ray$1 = (chunk_q$q << shift) + ((index$1 - plane_q$q) & mask);
-        write_address$1 = ray$1 * segments + 32'(plane_segment);
+        write_address$1 = dsb_ray$1 * segments + 32'(plane_segment);
         buffer0$1$write_clock = clock;
         buffer1$1$write_clock = clock;
         buffer2$1$write_clock = clock;
         buffer0$1$write_address = write_address$1[('h0)+:(16)];
         buffer1$1$write_address = write_address$1[('h0)+:(16)];
         buffer2$1$write_address = write_address$1[('h0)+:(16)];
-        buffer0$1$write_data = value$1;
-        buffer1$1$write_data = value$1;
-        buffer2$1$write_data = value$1;
-        buffer0$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$1$write_enable = write_q$q & (ray$1 < rays) & (buffer_q$q == buffer_id$2);
-        value$2 = 'h0;
-        if ((((index$2 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
-            value$2 = word$0;
+        buffer0$1$write_data = dsb_data$1;
+        buffer1$1$write_data = dsb_data$1;
+        buffer2$1$write_data = dsb_data$1;
+        buffer0$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$2);
+        dsb_data$2 = 'h0;
+        dsb_ray$2 = 'h0;
+        dsb_write$2 = 1'b0;
+        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$2)) begin
+            dsb_data$2 = value$0;
+            dsb_ray$2 = ray_q$0$q;
+            dsb_write$2 = 1'b1;
         end
-        if ((((index$2 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
-            value$2 = word$1;
+        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$2)) begin
+            dsb_data$2 = value$1;
+            dsb_ray$2 = ray_q$1$q;
+            dsb_write$2 = 1'b1;
         end
-        if ((((index$2 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
-            value$2 = word$2;
+        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$2)) begin
+            dsb_data$2 = value$2;
+            dsb_ray$2 = ray_q$2$q;
+            dsb_write$2 = 1'b1;
         end
-        if ((((index$2 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
-            value$2 = word$3;
+        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$2)) begin
+            dsb_data$2 = value$3;
+            dsb_ray$2 = ray_q$3$q;
+            dsb_write$2 = 1'b1;
         end
-        ray$2 = (chunk_q$q << shift) + ((index$2 - plane_q$q) & mask);
-        write_address$2 = ray$2 * segments + 32'(plane_segment);
+        write_address$2 = dsb_ray$2 * segments + 32'(plane_segment);
         buffer0$2$write_clock = clock;
         buffer1$2$write_clock = clock;
         buffer2$2$write_clock = clock;
         buffer0$2$write_address = write_address$2[('h0)+:(16)];
         buffer1$2$write_address = write_address$2[('h0)+:(16)];
         buffer2$2$write_address = write_address$2[('h0)+:(16)];
-        buffer0$2$write_data = value$2;
-        buffer1$2$write_data = value$2;
-        buffer2$2$write_data = value$2;
-        buffer0$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$2$write_enable = write_q$q & (ray$2 < rays) & (buffer_q$q == buffer_id$2);
-        value$3 = 'h0;
-        if ((((index$3 + rotate_q$q) & mask) == index$0) & inside_q$0$q) begin
-            value$3 = word$0;
+        buffer0$2$write_data = dsb_data$2;
+        buffer1$2$write_data = dsb_data$2;
+        buffer2$2$write_data = dsb_data$2;
+        buffer0$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$2);
+        dsb_data$3 = 'h0;
+        dsb_ray$3 = 'h0;
+        dsb_write$3 = 1'b0;
+        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$3)) begin
+            dsb_data$3 = value$0;
+            dsb_ray$3 = ray_q$0$q;
+            dsb_write$3 = 1'b1;
         end
-        if ((((index$3 + rotate_q$q) & mask) == index$1) & inside_q$1$q) begin
-            value$3 = word$1;
+        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$3)) begin
+            dsb_data$3 = value$1;
+            dsb_ray$3 = ray_q$1$q;
+            dsb_write$3 = 1'b1;
         end
-        if ((((index$3 + rotate_q$q) & mask) == index$2) & inside_q$2$q) begin
-            value$3 = word$2;
+        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$3)) begin
+            dsb_data$3 = value$2;
+            dsb_ray$3 = ray_q$2$q;
+            dsb_write$3 = 1'b1;
         end
-        if ((((index$3 + rotate_q$q) & mask) == index$3) & inside_q$3$q) begin
-            value$3 = word$3;
+        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$3)) begin
+            dsb_data$3 = value$3;
+            dsb_ray$3 = ray_q$3$q;
+            dsb_write$3 = 1'b1;
         end
-        ray$3 = (chunk_q$q << shift) + ((index$3 - plane_q$q) & mask);
-        write_address$3 = ray$3 * segments + 32'(plane_segment);
+        write_address$3 = dsb_ray$3 * segments + 32'(plane_segment);
         buffer0$3$write_clock = clock;
         buffer1$3$write_clock = clock;
         buffer2$3$write_clock = clock;
         buffer0$3$write_address = write_address$3[('h0)+:(16)];
         buffer1$3$write_address = write_address$3[('h0)+:(16)];
         buffer2$3$write_address = write_address$3[('h0)+:(16)];
-        buffer0$3$write_data = value$3;
-        buffer1$3$write_data = value$3;
-        buffer2$3$write_data = value$3;
-        buffer0$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$3$write_enable = write_q$q & (ray$3 < rays) & (buffer_q$q == buffer_id$2);
+        buffer0$3$write_data = dsb_data$3;
+        buffer1$3$write_data = dsb_data$3;
+        buffer2$3$write_data = dsb_data$3;
+        buffer0$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$0);
+        buffer1$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$1);
+        buffer2$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$2);
         read_address = 'h0;
         if (schedule$reading) begin
             read_address = schedule$ray * segments + 32'(schedule$segment);
@@ -1394,23 +1695,6 @@ module top$fetch$buffer_q(d,q,clock);
     end
           
 endmodule // top$fetch$buffer_q
-module top$fetch$chunk_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$chunk_q
 module top$fetch$cur_q(d,q,clock);
     
     // Module arguments
@@ -1428,6 +1712,196 @@ module top$fetch$cur_q(d,q,clock);
     end
           
 endmodule // top$fetch$cur_q
+module top$fetch$group(chunk,plane_count,plane,first_ray,x$0,x$1,x$2,x$3,holds$0,holds$1,holds$2,holds$3);
+    
+    // Module arguments
+    input wire  [15:0] chunk;
+    input wire  [15:0] plane_count;
+    output reg  [15:0] plane;
+    output reg  [15:0] first_ray;
+    output reg  [15:0] x$0;
+    output reg  [15:0] x$1;
+    output reg  [15:0] x$2;
+    output reg  [15:0] x$3;
+    output reg  holds$0;
+    output reg  holds$1;
+    output reg  holds$2;
+    output reg  holds$3;
+    
+    // Constant declarations
+    localparam  perspective = 1'b0;
+    localparam  index$0 = 16'h0;
+    localparam  index$1 = 16'h1;
+    localparam  index$2 = 16'h2;
+    localparam  index$3 = 16'h3;
+    localparam  shift = 16'h2;
+    localparam  u0 = 16'hfff3;
+    
+    // Stub signals
+    reg  [9:0] pos_x$address;
+    wire  [15:0] pos_x$data;
+    reg  [15:0] groups$address;
+    wire  [31:0] groups$data = 'h0;
+    reg  [15:0] group_x$0$address;
+    wire  [16:0] group_x$0$data = 'h0;
+    reg  [15:0] group_x$1$address;
+    wire  [16:0] group_x$1$data = 'h0;
+    reg  [15:0] group_x$2$address;
+    wire  [16:0] group_x$2$data = 'h0;
+    reg  [15:0] group_x$3$address;
+    wire  [16:0] group_x$3$data = 'h0;
+    
+    // Local signals
+    reg  [15:0] chunk_ray;
+    reg  [15:0] x0;
+    
+    // Sub module instances
+    top$fetch$group$pos_x pos_x(
+        .address(pos_x$address),
+        .data(pos_x$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        pos_x$address = plane_count[('h0)+:(10)];
+        groups$address = chunk;
+        chunk_ray = chunk << shift;
+        x0 = u0 + pos_x$data + chunk_ray;
+        plane = plane_count;
+        first_ray = chunk_ray;
+        if (perspective) begin
+            plane = groups$data[('h0)+:(16)];
+            first_ray = groups$data[('h10)+:(16)];
+        end
+        group_x$0$address = chunk;
+        x$0 = x0 + index$0;
+        holds$0 = 1'b1;
+        if (perspective) begin
+            x$0 = group_x$0$data[('h0)+:(16)];
+            holds$0 = group_x$0$data['h10];
+        end
+        group_x$1$address = chunk;
+        x$1 = x0 + index$1;
+        holds$1 = 1'b1;
+        if (perspective) begin
+            x$1 = group_x$1$data[('h0)+:(16)];
+            holds$1 = group_x$1$data['h10];
+        end
+        group_x$2$address = chunk;
+        x$2 = x0 + index$2;
+        holds$2 = 1'b1;
+        if (perspective) begin
+            x$2 = group_x$2$data[('h0)+:(16)];
+            holds$2 = group_x$2$data['h10];
+        end
+        group_x$3$address = chunk;
+        x$3 = x0 + index$3;
+        holds$3 = 1'b1;
+        if (perspective) begin
+            x$3 = group_x$3$data[('h0)+:(16)];
+            holds$3 = group_x$3$data['h10];
+        end
+    end
+    
+endmodule // top$fetch$group
+module top$fetch$group$pos_x(address,data);
+    
+    // Module arguments
+    input wire  [9:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        10'b0: data = 16'h0;
+      10'b1: data = 16'h0;
+      10'b10: data = 16'h1;
+      10'b11: data = 16'h2;
+      10'b100: data = 16'h3;
+      10'b101: data = 16'h3;
+      10'b110: data = 16'h4;
+      10'b111: data = 16'h5;
+      10'b1000: data = 16'h6;
+      10'b1001: data = 16'h6;
+      10'b1010: data = 16'h7;
+      10'b1011: data = 16'h8;
+      10'b1100: data = 16'h9;
+      10'b1101: data = 16'ha;
+      10'b1110: data = 16'ha;
+      10'b1111: data = 16'hb;
+      10'b10000: data = 16'hc;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$fetch$group$pos_x
+module top$fetch$holds_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_q$0
+module top$fetch$holds_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_q$1
+module top$fetch$holds_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_q$2
+module top$fetch$holds_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_q$3
 module top$fetch$inside_q$0(d,q,clock);
     
     // Module arguments
@@ -1609,6 +2083,74 @@ module top$fetch$memory$3(read_address,read_clock,read_data,write_address,write_
        end
     end
 endmodule // top$fetch$memory$3
+module top$fetch$module_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$module_q$0
+module top$fetch$module_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$module_q$1
+module top$fetch$module_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$module_q$2
+module top$fetch$module_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$module_q$3
 module top$fetch$next_q(d,q,clock);
     
     // Module arguments
@@ -1643,66 +2185,104 @@ module top$fetch$plane_q(d,q,clock);
     end
           
 endmodule // top$fetch$plane_q
-module top$fetch$pos_x(address,data);
-    
-    // Module arguments
-    input wire  [9:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    always @*
-    case (address)
-        10'b0: data = 16'h0;
-      10'b1: data = 16'h0;
-      10'b10: data = 16'h1;
-      10'b11: data = 16'h2;
-      10'b100: data = 16'h3;
-      10'b101: data = 16'h3;
-      10'b110: data = 16'h4;
-      10'b111: data = 16'h5;
-      10'b1000: data = 16'h6;
-      10'b1001: data = 16'h6;
-      10'b1010: data = 16'h7;
-      10'b1011: data = 16'h8;
-      10'b1100: data = 16'h9;
-      10'b1101: data = 16'ha;
-      10'b1110: data = 16'ha;
-      10'b1111: data = 16'hb;
-      10'b10000: data = 16'hc;
-      default: data = 16'h0;
-    endcase
-            
-endmodule // top$fetch$pos_x
 module top$fetch$pos_y(address,data);
     
     // Module arguments
-    input wire  [9:0] address;
+    input wire  [31:0] address;
     output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        10'b0: data = 16'h0;
-      10'b1: data = 16'hffff;
-      10'b10: data = 16'hffff;
-      10'b11: data = 16'hfffe;
-      10'b100: data = 16'hfffe;
-      10'b101: data = 16'hfffd;
-      10'b110: data = 16'hfffd;
-      10'b111: data = 16'hfffc;
-      10'b1000: data = 16'hfffc;
-      10'b1001: data = 16'hfffb;
-      10'b1010: data = 16'hfffb;
-      10'b1011: data = 16'hfffa;
-      10'b1100: data = 16'hfffa;
-      10'b1101: data = 16'hfff9;
-      10'b1110: data = 16'hfff9;
-      10'b1111: data = 16'hfff9;
-      10'b10000: data = 16'hfff8;
+        'h0: data = 16'h0;
+      'h1: data = 16'hffff;
+      'h2: data = 16'hffff;
+      'h3: data = 16'hfffe;
+      'h4: data = 16'hfffe;
+      'h5: data = 16'hfffd;
+      'h6: data = 16'hfffd;
+      'h7: data = 16'hfffc;
+      'h8: data = 16'hfffc;
+      'h9: data = 16'hfffb;
+      'ha: data = 16'hfffb;
+      'hb: data = 16'hfffa;
+      'hc: data = 16'hfffa;
+      'hd: data = 16'hfff9;
+      'he: data = 16'hfff9;
+      'hf: data = 16'hfff9;
+      'h10: data = 16'hfff8;
       default: data = 16'h0;
     endcase
             
 endmodule // top$fetch$pos_y
+module top$fetch$ray_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$ray_q$0
+module top$fetch$ray_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$ray_q$1
+module top$fetch$ray_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$ray_q$2
+module top$fetch$ray_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$ray_q$3
 module top$fetch$read_q(d,q,clock);
     
     // Module arguments
@@ -1720,23 +2300,6 @@ module top$fetch$read_q(d,q,clock);
     end
           
 endmodule // top$fetch$read_q
-module top$fetch$rotate_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$rotate_q
 module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,reading,ray,segment,cur_buffer,next_buffer);
     
     // Module arguments

@@ -1,4 +1,4 @@
-module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3,in_volume,in_inner);
+module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,unit_cast,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3,in_volume,in_inner,dx_neg,dx_mag,dy_neg,dy_mag);
     
     // Module arguments
     input wire  clock;
@@ -8,6 +8,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     output reg  unit_valid;
     output reg  unit_first;
     output reg  unit_last;
+    output reg  unit_cast;
     output reg  [15:0] wx$0;
     output reg  [15:0] wx$1;
     output reg  [15:0] wx$2;
@@ -18,10 +19,19 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     output reg  [15:0] wy$3;
     output reg  [7:0] in_volume;
     output reg  [7:0] in_inner;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
     
     // Constant declarations
     localparam  last_segment = 16'h3;
     localparam  last_ray = 16'h23;
+    localparam  cast_ray_lo = 16'h0;
+    localparam  cast_ray_span = 16'h23;
+    localparam  cast_line_lo = 16'h0;
+    localparam  cast_line_span = 16'h1b;
+    localparam  per_ray = 1'b0;
     localparam  lane_bit$0 = 8'h1;
     localparam  lane_bit$1 = 8'h2;
     localparam  lane_bit$2 = 8'h4;
@@ -46,14 +56,24 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     reg  [63:0] late$data_in;
     reg  late$write_enable;
     wire  [63:0] late$data_out;
-    reg  [7:0] weights$0$address;
-    wire  [31:0] weights$0$data;
-    reg  [7:0] weights$1$address;
-    wire  [31:0] weights$1$data;
-    reg  [7:0] weights$2$address;
-    wire  [31:0] weights$2$data;
-    reg  [7:0] weights$3$address;
-    wire  [31:0] weights$3$data;
+    reg  [15:0] templates$ray;
+    reg  [15:0] templates$scanline;
+    reg  [15:0] templates$segment;
+    wire  [15:0] templates$wx$0;
+    wire  [15:0] templates$wx$1;
+    wire  [15:0] templates$wx$2;
+    wire  [15:0] templates$wx$3;
+    wire  [15:0] templates$wy$0;
+    wire  [15:0] templates$wy$1;
+    wire  [15:0] templates$wy$2;
+    wire  [15:0] templates$wy$3;
+    reg  increments$clock;
+    reg  [15:0] increments$ray;
+    reg  [15:0] increments$scanline;
+    wire  increments$dx_neg;
+    wire  [15:0] increments$dx_mag;
+    wire  increments$dy_neg;
+    wire  [15:0] increments$dy_mag;
     reg  [7:0] bounds$0$address;
     wire  [63:0] bounds$0$data;
     reg  [7:0] bounds$1$address;
@@ -114,21 +134,27 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         .write_enable(late$write_enable),
         .data_out(late$data_out)
     );
-    top$pipeline$control$weights$0 weights$0(
-        .address(weights$0$address),
-        .data(weights$0$data)
+    top$pipeline$control$templates templates(
+        .ray(templates$ray),
+        .scanline(templates$scanline),
+        .segment(templates$segment),
+        .wx$0(templates$wx$0),
+        .wx$1(templates$wx$1),
+        .wx$2(templates$wx$2),
+        .wx$3(templates$wx$3),
+        .wy$0(templates$wy$0),
+        .wy$1(templates$wy$1),
+        .wy$2(templates$wy$2),
+        .wy$3(templates$wy$3)
     );
-    top$pipeline$control$weights$1 weights$1(
-        .address(weights$1$address),
-        .data(weights$1$data)
-    );
-    top$pipeline$control$weights$2 weights$2(
-        .address(weights$2$address),
-        .data(weights$2$data)
-    );
-    top$pipeline$control$weights$3 weights$3(
-        .address(weights$3$address),
-        .data(weights$3$data)
+    top$pipeline$control$increments increments(
+        .clock(increments$clock),
+        .ray(increments$ray),
+        .scanline(increments$scanline),
+        .dx_neg(increments$dx_neg),
+        .dx_mag(increments$dx_mag),
+        .dy_neg(increments$dy_neg),
+        .dy_mag(increments$dy_mag)
     );
     top$pipeline$control$bounds$0 bounds$0(
         .address(bounds$0$address),
@@ -173,6 +199,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         scanline$d = scanline$q;
         late$clock = clock;
         late$write_enable = 1'b1;
+        increments$clock = clock;
         if (valid) begin
             segment$d = segment$q + 'h1;
             if (segment$q == last_segment) begin
@@ -200,6 +227,16 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         unit_valid = late$data_out['h30];
         unit_first = late$data_out['h30] & ~|unit_segment;
         unit_last = late$data_out['h30] & (unit_segment == last_segment);
+        unit_cast = ~per_ray | (((unit_ray - cast_ray_lo) <= cast_ray_span) & ((unit_scanline - cast_line_lo) <= cast_line_span));
+        increments$ray = unit_ray;
+        increments$scanline = unit_scanline;
+        dx_neg = increments$dx_neg;
+        dx_mag = increments$dx_mag;
+        dy_neg = increments$dy_neg;
+        dy_mag = increments$dy_mag;
+        templates$ray = unit_ray;
+        templates$scanline = unit_scanline;
+        templates$segment = unit_segment;
         lane_in$0 = 'h0;
         lane_inner$0 = 'h0;
         lane_in$1 = 'h0;
@@ -216,10 +253,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         lane_inner$6 = 'h0;
         lane_in$7 = 'h0;
         lane_inner$7 = 'h0;
-        weights$0$address = unit_segment[('h0)+:(8)];
         bounds$0$address = unit_segment[('h0)+:(8)];
-        wx$0 = weights$0$data[('h0)+:(16)];
-        wy$0 = weights$0$data[('h10)+:(16)];
+        wx$0 = templates$wx$0;
+        wy$0 = templates$wy$0;
         if ((unit_ray >= bounds$0$data[('h0)+:(16)]) & (unit_ray <= bounds$0$data[('h10)+:(16)]) & (unit_scanline >= bounds$0$data[('h20)+:(16)]) & (unit_scanline <= bounds$0$data[('h30)+:(16)])) begin
             lane_in$0 = lane_bit$0;
         end
@@ -227,10 +263,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= inner$0$data[('h0)+:(16)]) & (unit_ray <= inner$0$data[('h10)+:(16)]) & (unit_scanline >= inner$0$data[('h20)+:(16)]) & (unit_scanline <= inner$0$data[('h30)+:(16)])) begin
             lane_inner$0 = lane_bit$0;
         end
-        weights$1$address = unit_segment[('h0)+:(8)];
         bounds$1$address = unit_segment[('h0)+:(8)];
-        wx$1 = weights$1$data[('h0)+:(16)];
-        wy$1 = weights$1$data[('h10)+:(16)];
+        wx$1 = templates$wx$1;
+        wy$1 = templates$wy$1;
         if ((unit_ray >= bounds$1$data[('h0)+:(16)]) & (unit_ray <= bounds$1$data[('h10)+:(16)]) & (unit_scanline >= bounds$1$data[('h20)+:(16)]) & (unit_scanline <= bounds$1$data[('h30)+:(16)])) begin
             lane_in$1 = lane_bit$1;
         end
@@ -238,10 +273,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= inner$1$data[('h0)+:(16)]) & (unit_ray <= inner$1$data[('h10)+:(16)]) & (unit_scanline >= inner$1$data[('h20)+:(16)]) & (unit_scanline <= inner$1$data[('h30)+:(16)])) begin
             lane_inner$1 = lane_bit$1;
         end
-        weights$2$address = unit_segment[('h0)+:(8)];
         bounds$2$address = unit_segment[('h0)+:(8)];
-        wx$2 = weights$2$data[('h0)+:(16)];
-        wy$2 = weights$2$data[('h10)+:(16)];
+        wx$2 = templates$wx$2;
+        wy$2 = templates$wy$2;
         if ((unit_ray >= bounds$2$data[('h0)+:(16)]) & (unit_ray <= bounds$2$data[('h10)+:(16)]) & (unit_scanline >= bounds$2$data[('h20)+:(16)]) & (unit_scanline <= bounds$2$data[('h30)+:(16)])) begin
             lane_in$2 = lane_bit$2;
         end
@@ -249,10 +283,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= inner$2$data[('h0)+:(16)]) & (unit_ray <= inner$2$data[('h10)+:(16)]) & (unit_scanline >= inner$2$data[('h20)+:(16)]) & (unit_scanline <= inner$2$data[('h30)+:(16)])) begin
             lane_inner$2 = lane_bit$2;
         end
-        weights$3$address = unit_segment[('h0)+:(8)];
         bounds$3$address = unit_segment[('h0)+:(8)];
-        wx$3 = weights$3$data[('h0)+:(16)];
-        wy$3 = weights$3$data[('h10)+:(16)];
+        wx$3 = templates$wx$3;
+        wy$3 = templates$wy$3;
         if ((unit_ray >= bounds$3$data[('h0)+:(16)]) & (unit_ray <= bounds$3$data[('h10)+:(16)]) & (unit_scanline >= bounds$3$data[('h20)+:(16)]) & (unit_scanline <= bounds$3$data[('h30)+:(16)])) begin
             lane_in$3 = lane_bit$3;
         end
@@ -333,6 +366,234 @@ module top$pipeline$control$bounds$3(address,data);
     endcase
             
 endmodule // top$pipeline$control$bounds$3
+module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,dy_mag);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] ray;
+    input wire  [15:0] scanline;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
+    
+    // Constant declarations
+    localparam  mask = 16'h0;
+    
+    // Stub signals
+    reg  centre_line$clock;
+    reg  [31:0] centre_line$data_in;
+    reg  centre_line$write_enable;
+    wire  [31:0] centre_line$data_out;
+    reg  [15:0] dx_rom$address;
+    wire  [16:0] dx_rom$data;
+    reg  [15:0] dy_rom$address;
+    wire  [16:0] dy_rom$data;
+    
+    // Local signals
+    reg  [15:0] dx_address;
+    reg  [15:0] dy_address;
+    
+    // Sub module instances
+    top$pipeline$control$increments$centre_line centre_line(
+        .clock(centre_line$clock),
+        .data_in(centre_line$data_in),
+        .write_enable(centre_line$write_enable),
+        .data_out(centre_line$data_out)
+    );
+    top$pipeline$control$increments$dx_rom dx_rom(
+        .address(dx_rom$address),
+        .data(dx_rom$data)
+    );
+    top$pipeline$control$increments$dy_rom dy_rom(
+        .address(dy_rom$address),
+        .data(dy_rom$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        centre_line$clock = clock;
+        centre_line$write_enable = 1'b1;
+        centre_line$data_in = 32'(ray) | (32'(scanline) << 'h10);
+        dx_address = centre_line$data_out[('h0)+:(16)] & mask;
+        dy_address = (centre_line$data_out[('h10)+:(16)] - 'h1) & mask;
+        dx_rom$address = dx_address;
+        dy_rom$address = dy_address;
+        dx_neg = dx_rom$data['h10];
+        dx_mag = dx_rom$data[('h0)+:(16)];
+        dy_neg = dy_rom$data['h10];
+        dy_mag = dy_rom$data[('h0)+:(16)];
+    end
+    
+endmodule // top$pipeline$control$increments
+module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h1;
+    localparam  single = 1'b1;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$control$increments$centre_line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$control$increments$centre_line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$control$increments$centre_line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$pipeline$control$increments$centre_line
+module top$pipeline$control$increments$centre_line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$centre_line$one
+module top$pipeline$control$increments$centre_line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$centre_line$ptr
+module top$pipeline$control$increments$centre_line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [31:0] mem[1:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[0:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[0:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$control$increments$centre_line$ram
+module top$pipeline$control$increments$dx_rom(address,data);
+    
+    // Module arguments
+    input wire  [15:0] address;
+    output reg  [16:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        16'h0: data = 17'b11000110;
+      default: data = 17'b0;
+    endcase
+            
+endmodule // top$pipeline$control$increments$dx_rom
+module top$pipeline$control$increments$dy_rom(address,data);
+    
+    // Module arguments
+    input wire  [15:0] address;
+    output reg  [16:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        16'h0: data = 17'b10000000001110111;
+      default: data = 17'b0;
+    endcase
+            
+endmodule // top$pipeline$control$increments$dy_rom
 module top$pipeline$control$inner$0(address,data);
     
     // Module arguments
@@ -592,71 +853,236 @@ module top$pipeline$control$segment(d,q,clock);
     end
           
 endmodule // top$pipeline$control$segment
-module top$pipeline$control$weights$0(address,data);
+module top$pipeline$control$templates(ray,scanline,segment,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [15:0] ray;
+    input wire  [15:0] scanline;
+    input wire  [15:0] segment;
+    output reg  [15:0] wx$0;
+    output reg  [15:0] wx$1;
+    output reg  [15:0] wx$2;
+    output reg  [15:0] wx$3;
+    output reg  [15:0] wy$0;
+    output reg  [15:0] wy$1;
+    output reg  [15:0] wy$2;
+    output reg  [15:0] wy$3;
+    
+    // Constant declarations
+    localparam  stride = 16'h0;
+    
+    // Stub signals
+    reg  [31:0] wx_rom$0$address;
+    wire  [15:0] wx_rom$0$data;
+    reg  [31:0] wx_rom$1$address;
+    wire  [15:0] wx_rom$1$data;
+    reg  [31:0] wx_rom$2$address;
+    wire  [15:0] wx_rom$2$data;
+    reg  [31:0] wx_rom$3$address;
+    wire  [15:0] wx_rom$3$data;
+    reg  [31:0] wy_rom$0$address;
+    wire  [15:0] wy_rom$0$data;
+    reg  [31:0] wy_rom$1$address;
+    wire  [15:0] wy_rom$1$data;
+    reg  [31:0] wy_rom$2$address;
+    wire  [15:0] wy_rom$2$data;
+    reg  [31:0] wy_rom$3$address;
+    wire  [15:0] wy_rom$3$data;
+    
+    // Local signals
+    reg  [31:0] wx_entry;
+    reg  [31:0] wy_entry;
+    
+    // Sub module instances
+    top$pipeline$control$templates$wx_rom$0 wx_rom$0(
+        .address(wx_rom$0$address),
+        .data(wx_rom$0$data)
+    );
+    top$pipeline$control$templates$wx_rom$1 wx_rom$1(
+        .address(wx_rom$1$address),
+        .data(wx_rom$1$data)
+    );
+    top$pipeline$control$templates$wx_rom$2 wx_rom$2(
+        .address(wx_rom$2$address),
+        .data(wx_rom$2$data)
+    );
+    top$pipeline$control$templates$wx_rom$3 wx_rom$3(
+        .address(wx_rom$3$address),
+        .data(wx_rom$3$data)
+    );
+    top$pipeline$control$templates$wy_rom$0 wy_rom$0(
+        .address(wy_rom$0$address),
+        .data(wy_rom$0$data)
+    );
+    top$pipeline$control$templates$wy_rom$1 wy_rom$1(
+        .address(wy_rom$1$address),
+        .data(wy_rom$1$data)
+    );
+    top$pipeline$control$templates$wy_rom$2 wy_rom$2(
+        .address(wy_rom$2$address),
+        .data(wy_rom$2$data)
+    );
+    top$pipeline$control$templates$wy_rom$3 wy_rom$3(
+        .address(wy_rom$3$address),
+        .data(wy_rom$3$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_entry = ray * stride + 32'(segment);
+        wy_entry = scanline * stride + 32'(segment);
+        wx_rom$0$address = wx_entry;
+        wy_rom$0$address = wy_entry;
+        wx$0 = wx_rom$0$data;
+        wy$0 = wy_rom$0$data;
+        wx_rom$1$address = wx_entry;
+        wy_rom$1$address = wy_entry;
+        wx$1 = wx_rom$1$data;
+        wy$1 = wy_rom$1$data;
+        wx_rom$2$address = wx_entry;
+        wy_rom$2$address = wy_entry;
+        wx$2 = wx_rom$2$data;
+        wy$2 = wy_rom$2$data;
+        wx_rom$3$address = wx_entry;
+        wy_rom$3$address = wy_entry;
+        wx$3 = wx_rom$3$data;
+        wy$3 = wy_rom$3$data;
+    end
+    
+endmodule // top$pipeline$control$templates
+module top$pipeline$control$templates$wx_rom$0(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h220000;
-      8'h1: data = 'h460018;
-      8'h2: data = 'h6a0030;
-      8'h3: data = 'h8e0026;
-      default: data = 'h0;
+        'h0: data = 16'h0;
+      'h1: data = 16'h18;
+      'h2: data = 16'h30;
+      'h3: data = 16'h26;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$0
-module top$pipeline$control$weights$1(address,data);
+endmodule // top$pipeline$control$templates$wx_rom$0
+module top$pipeline$control$templates$wx_rom$1(address,data);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h8900a4;
-      8'h1: data = 'had00bc;
-      8'h2: data = 'hd100d4;
-      8'h3: data = 'hf5000e;
-      default: data = 'h0;
+        'h0: data = 16'ha4;
+      'h1: data = 16'hbc;
+      'h2: data = 16'hd4;
+      'h3: data = 16'he;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$1
-module top$pipeline$control$weights$2(address,data);
+endmodule // top$pipeline$control$templates$wx_rom$1
+module top$pipeline$control$templates$wx_rom$2(address,data);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h34006a;
-      8'h1: data = 'h580082;
-      8'h2: data = 'h7c009a;
-      8'h3: data = 'h7e00b2;
-      default: data = 'h0;
+        'h0: data = 16'h6a;
+      'h1: data = 16'h82;
+      'h2: data = 16'h9a;
+      'h3: data = 16'hb2;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$2
-module top$pipeline$control$weights$3(address,data);
+endmodule // top$pipeline$control$templates$wx_rom$2
+module top$pipeline$control$templates$wx_rom$3(address,data);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h9b0030;
-      8'h1: data = 'hbf0048;
-      8'h2: data = 'he30060;
-      8'h3: data = 'h290078;
-      default: data = 'h0;
+        'h0: data = 16'h30;
+      'h1: data = 16'h48;
+      'h2: data = 16'h60;
+      'h3: data = 16'h78;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$3
+endmodule // top$pipeline$control$templates$wx_rom$3
+module top$pipeline$control$templates$wy_rom$0(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h22;
+      'h1: data = 16'h46;
+      'h2: data = 16'h6a;
+      'h3: data = 16'h8e;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$0
+module top$pipeline$control$templates$wy_rom$1(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h89;
+      'h1: data = 16'had;
+      'h2: data = 16'hd1;
+      'h3: data = 16'hf5;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$1
+module top$pipeline$control$templates$wy_rom$2(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h34;
+      'h1: data = 16'h58;
+      'h2: data = 16'h7c;
+      'h3: data = 16'h7e;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$2
+module top$pipeline$control$templates$wy_rom$3(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h9b;
+      'h1: data = 16'hbf;
+      'h2: data = 16'he3;
+      'h3: data = 16'h29;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$3

@@ -20,6 +20,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     output reg  has_sample;
     
     // Constant declarations
+    localparam  cast_bit = 8'h8;
     localparam  gradients = 1'b0;
     localparam  shaded = 1'b0;
     localparam  xray = 1'b0;
@@ -42,10 +43,6 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     localparam  inner_bit$5 = 'h200000;
     localparam  inner_bit$6 = 'h400000;
     localparam  inner_bit$7 = 'h800000;
-    localparam  dx_neg = 1'b0;
-    localparam  dx_mag = 16'h0;
-    localparam  dy_neg = 1'b0;
-    localparam  dy_mag = 16'h0;
     
     // Stub signals
     reg  control$clock;
@@ -55,6 +52,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     wire  control$unit_valid;
     wire  control$unit_first;
     wire  control$unit_last;
+    wire  control$unit_cast;
     wire  [15:0] control$wx$0;
     wire  [15:0] control$wx$1;
     wire  [15:0] control$wx$2;
@@ -65,6 +63,10 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     wire  [15:0] control$wy$3;
     wire  [7:0] control$in_volume;
     wire  [7:0] control$in_inner;
+    wire  control$dx_neg;
+    wire  [15:0] control$dx_mag;
+    wire  control$dy_neg;
+    wire  [15:0] control$dy_mag;
     reg  lanes$clock;
     reg  [15:0] lanes$cur$0;
     reg  [15:0] lanes$cur$1;
@@ -115,6 +117,9 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     reg  [31:0] rpc_flags_q$d;
     wire  [31:0] rpc_flags_q$q;
     reg  rpc_flags_q$clock;
+    reg  [7:0] cast_q$d;
+    wire  [7:0] cast_q$q;
+    reg  cast_q$clock;
     reg  [11:0] opacity$0$address;
     wire  [31:0] opacity$0$data;
     reg  [11:0] opacity$1$address;
@@ -264,6 +269,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
     
     // Local signals
     reg  [31:0] leaf_flags;
+    reg  pixel_cast;
     reg  [31:0] row$0;
     reg  [31:0] row$1;
     reg  [31:0] row$2;
@@ -294,6 +300,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         .unit_valid(control$unit_valid),
         .unit_first(control$unit_first),
         .unit_last(control$unit_last),
+        .unit_cast(control$unit_cast),
         .wx$0(control$wx$0),
         .wx$1(control$wx$1),
         .wx$2(control$wx$2),
@@ -303,7 +310,11 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         .wy$2(control$wy$2),
         .wy$3(control$wy$3),
         .in_volume(control$in_volume),
-        .in_inner(control$in_inner)
+        .in_inner(control$in_inner),
+        .dx_neg(control$dx_neg),
+        .dx_mag(control$dx_mag),
+        .dy_neg(control$dy_neg),
+        .dy_mag(control$dy_mag)
     );
     top$pipeline$lanes lanes(
         .clock(lanes$clock),
@@ -374,6 +385,11 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         .d(rpc_flags_q$d),
         .q(rpc_flags_q$q),
         .clock(rpc_flags_q$clock)
+    );
+    top$pipeline$cast_q cast_q(
+        .d(cast_q$d),
+        .q(cast_q$q),
+        .clock(cast_q$clock)
     );
     top$pipeline$opacity$0 opacity$0(
         .address(opacity$0$address),
@@ -471,6 +487,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         rpc$clock = clock;
         flags_line$clock = clock;
         rpc_flags_q$clock = clock;
+        cast_q$clock = clock;
         control$start = start;
         control$valid = valid;
         lanes$first = control$first;
@@ -481,7 +498,7 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         flags_q$4$clock = clock;
         flags_q$5$clock = clock;
         flags_q$6$clock = clock;
-        flags_q$0$d = 32'(control$in_volume) | (32'(control$unit_valid) << 'h8) | (32'(control$unit_first) << 'h9) | (32'(control$unit_last) << 'ha) | (32'(control$in_inner) << 'h10);
+        flags_q$0$d = 32'(control$in_volume) | (32'(control$unit_valid) << 'h8) | (32'(control$unit_first) << 'h9) | (32'(control$unit_last) << 'ha) | (32'(control$unit_cast) << 'hb) | (32'(control$in_inner) << 'h10);
         flags_q$1$d = flags_q$0$q;
         flags_q$2$d = flags_q$1$q;
         flags_q$3$d = flags_q$2$q;
@@ -495,10 +512,10 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
             leaf_flags = flags_line$data_out;
         end
         rpc_flags_q$d = leaf_flags;
-        abc$dx_neg = dx_neg;
-        abc$dx_mag = dx_mag;
-        abc$dy_neg = dy_neg;
-        abc$dy_mag = dy_mag;
+        abc$dx_neg = control$dx_neg;
+        abc$dx_mag = control$dx_mag;
+        abc$dy_neg = control$dy_neg;
+        abc$dy_mag = control$dy_mag;
         lanes$cur$0 = cur$0;
         lanes$next$0 = next$0;
         lanes$wx$0 = control$wx$0;
@@ -733,15 +750,41 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next
         end
         rpc$first = rpc_flags_q$q['h9] & rpc_flags_q$q['h8];
         rpc$last = rpc_flags_q$q['ha] & rpc_flags_q$q['h8];
+        cast_q$d = (cast_q$q << 'h1) | 8'(rpc_flags_q$q['hb]);
+        pixel_cast = |(cast_q$q & cast_bit);
         done = rpc$done;
-        pixel_r = rpc$pixel_r;
-        pixel_g = rpc$pixel_g;
-        pixel_b = rpc$pixel_b;
-        pixel_a = rpc$pixel_a;
-        has_sample = rpc$has_sample;
+        pixel_r = 'h0;
+        pixel_g = 'h0;
+        pixel_b = 'h0;
+        pixel_a = 'h0;
+        has_sample = 1'b0;
+        if (pixel_cast) begin
+            pixel_r = rpc$pixel_r;
+            pixel_g = rpc$pixel_g;
+            pixel_b = rpc$pixel_b;
+            pixel_a = rpc$pixel_a;
+            has_sample = rpc$has_sample;
+        end
     end
     
 endmodule // top$pipeline
+module top$pipeline$cast_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$cast_q
 module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
     
     // Module arguments
@@ -753,7 +796,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
     // Constant declarations
     localparam  last = 16'h1;
     localparam  single = 1'b1;
-    localparam  mask = 'hff07ff;
+    localparam  mask = 'hff0fff;
     
     // Stub signals
     reg  [15:0] ram$read_address;
@@ -870,15 +913,15 @@ module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_addre
     input wire  write_enable;
     
     // Update code (custom)
-    reg [18:0] mem[1:0];
+    reg [19:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[0:0]][18:11], 5'd0, mem[read_address[0:0]][10:0]};
+       read_data <= {8'd0, mem[read_address[0:0]][19:12], 4'd0, mem[read_address[0:0]][11:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[0:0]] <= {write_data[23:16], write_data[10:0]};
+          mem[write_address[0:0]] <= {write_data[23:16], write_data[11:0]};
        end
     end
 endmodule // top$pipeline$flags_line$ram

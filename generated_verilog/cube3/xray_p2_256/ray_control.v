@@ -1,4 +1,4 @@
-module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,wx$0,wx$1,wy$0,wy$1,in_volume,in_inner);
+module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_last,unit_cast,wx$0,wx$1,wy$0,wy$1,in_volume,in_inner,dx_neg,dx_mag,dy_neg,dy_mag);
     
     // Module arguments
     input wire  clock;
@@ -8,16 +8,26 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     output reg  unit_valid;
     output reg  unit_first;
     output reg  unit_last;
+    output reg  unit_cast;
     output reg  [15:0] wx$0;
     output reg  [15:0] wx$1;
     output reg  [15:0] wy$0;
     output reg  [15:0] wy$1;
     output reg  [7:0] in_volume;
     output reg  [7:0] in_inner;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
     
     // Constant declarations
     localparam  last_segment = 16'h7f;
     localparam  last_ray = 16'hce;
+    localparam  cast_ray_lo = 16'h0;
+    localparam  cast_ray_span = 16'hce;
+    localparam  cast_line_lo = 16'h0;
+    localparam  cast_line_span = 16'h19d;
+    localparam  per_ray = 1'b0;
     localparam  lane_bit$0 = 8'h1;
     localparam  lane_bit$1 = 8'h2;
     localparam  lane_bit$2 = 8'h4;
@@ -42,10 +52,20 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     reg  [63:0] late$data_in;
     reg  late$write_enable;
     wire  [63:0] late$data_out;
-    reg  [7:0] weights$0$address;
-    wire  [31:0] weights$0$data;
-    reg  [7:0] weights$1$address;
-    wire  [31:0] weights$1$data;
+    reg  [15:0] templates$ray;
+    reg  [15:0] templates$scanline;
+    reg  [15:0] templates$segment;
+    wire  [15:0] templates$wx$0;
+    wire  [15:0] templates$wx$1;
+    wire  [15:0] templates$wy$0;
+    wire  [15:0] templates$wy$1;
+    reg  increments$clock;
+    reg  [15:0] increments$ray;
+    reg  [15:0] increments$scanline;
+    wire  increments$dx_neg;
+    wire  [15:0] increments$dx_mag;
+    wire  increments$dy_neg;
+    wire  [15:0] increments$dy_mag;
     reg  [7:0] bounds$0$address;
     wire  [63:0] bounds$0$data;
     reg  [7:0] bounds$1$address;
@@ -98,13 +118,23 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         .write_enable(late$write_enable),
         .data_out(late$data_out)
     );
-    top$pipeline$control$weights$0 weights$0(
-        .address(weights$0$address),
-        .data(weights$0$data)
+    top$pipeline$control$templates templates(
+        .ray(templates$ray),
+        .scanline(templates$scanline),
+        .segment(templates$segment),
+        .wx$0(templates$wx$0),
+        .wx$1(templates$wx$1),
+        .wy$0(templates$wy$0),
+        .wy$1(templates$wy$1)
     );
-    top$pipeline$control$weights$1 weights$1(
-        .address(weights$1$address),
-        .data(weights$1$data)
+    top$pipeline$control$increments increments(
+        .clock(increments$clock),
+        .ray(increments$ray),
+        .scanline(increments$scanline),
+        .dx_neg(increments$dx_neg),
+        .dx_mag(increments$dx_mag),
+        .dy_neg(increments$dy_neg),
+        .dy_mag(increments$dy_mag)
     );
     top$pipeline$control$bounds$0 bounds$0(
         .address(bounds$0$address),
@@ -133,6 +163,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         scanline$d = scanline$q;
         late$clock = clock;
         late$write_enable = 1'b1;
+        increments$clock = clock;
         if (valid) begin
             segment$d = segment$q + 'h1;
             if (segment$q == last_segment) begin
@@ -160,6 +191,16 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         unit_valid = late$data_out['h30];
         unit_first = late$data_out['h30] & ~|unit_segment;
         unit_last = late$data_out['h30] & (unit_segment == last_segment);
+        unit_cast = ~per_ray | (((unit_ray - cast_ray_lo) <= cast_ray_span) & ((unit_scanline - cast_line_lo) <= cast_line_span));
+        increments$ray = unit_ray;
+        increments$scanline = unit_scanline;
+        dx_neg = increments$dx_neg;
+        dx_mag = increments$dx_mag;
+        dy_neg = increments$dy_neg;
+        dy_mag = increments$dy_mag;
+        templates$ray = unit_ray;
+        templates$scanline = unit_scanline;
+        templates$segment = unit_segment;
         lane_in$0 = 'h0;
         lane_inner$0 = 'h0;
         lane_in$1 = 'h0;
@@ -176,10 +217,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         lane_inner$6 = 'h0;
         lane_in$7 = 'h0;
         lane_inner$7 = 'h0;
-        weights$0$address = unit_segment[('h0)+:(8)];
         bounds$0$address = unit_segment[('h0)+:(8)];
-        wx$0 = weights$0$data[('h0)+:(16)];
-        wy$0 = weights$0$data[('h10)+:(16)];
+        wx$0 = templates$wx$0;
+        wy$0 = templates$wy$0;
         if ((unit_ray >= bounds$0$data[('h0)+:(16)]) & (unit_ray <= bounds$0$data[('h10)+:(16)]) & (unit_scanline >= bounds$0$data[('h20)+:(16)]) & (unit_scanline <= bounds$0$data[('h30)+:(16)])) begin
             lane_in$0 = lane_bit$0;
         end
@@ -187,10 +227,9 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         if ((unit_ray >= inner$0$data[('h0)+:(16)]) & (unit_ray <= inner$0$data[('h10)+:(16)]) & (unit_scanline >= inner$0$data[('h20)+:(16)]) & (unit_scanline <= inner$0$data[('h30)+:(16)])) begin
             lane_inner$0 = lane_bit$0;
         end
-        weights$1$address = unit_segment[('h0)+:(8)];
         bounds$1$address = unit_segment[('h0)+:(8)];
-        wx$1 = weights$1$data[('h0)+:(16)];
-        wy$1 = weights$1$data[('h10)+:(16)];
+        wx$1 = templates$wx$1;
+        wy$1 = templates$wy$1;
         if ((unit_ray >= bounds$1$data[('h0)+:(16)]) & (unit_ray <= bounds$1$data[('h10)+:(16)]) & (unit_scanline >= bounds$1$data[('h20)+:(16)]) & (unit_scanline <= bounds$1$data[('h30)+:(16)])) begin
             lane_in$1 = lane_bit$1;
         end
@@ -485,6 +524,234 @@ module top$pipeline$control$bounds$1(address,data);
     endcase
             
 endmodule // top$pipeline$control$bounds$1
+module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,dy_mag);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] ray;
+    input wire  [15:0] scanline;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
+    
+    // Constant declarations
+    localparam  mask = 16'h0;
+    
+    // Stub signals
+    reg  centre_line$clock;
+    reg  [31:0] centre_line$data_in;
+    reg  centre_line$write_enable;
+    wire  [31:0] centre_line$data_out;
+    reg  [15:0] dx_rom$address;
+    wire  [16:0] dx_rom$data;
+    reg  [15:0] dy_rom$address;
+    wire  [16:0] dy_rom$data;
+    
+    // Local signals
+    reg  [15:0] dx_address;
+    reg  [15:0] dy_address;
+    
+    // Sub module instances
+    top$pipeline$control$increments$centre_line centre_line(
+        .clock(centre_line$clock),
+        .data_in(centre_line$data_in),
+        .write_enable(centre_line$write_enable),
+        .data_out(centre_line$data_out)
+    );
+    top$pipeline$control$increments$dx_rom dx_rom(
+        .address(dx_rom$address),
+        .data(dx_rom$data)
+    );
+    top$pipeline$control$increments$dy_rom dy_rom(
+        .address(dy_rom$address),
+        .data(dy_rom$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        centre_line$clock = clock;
+        centre_line$write_enable = 1'b1;
+        centre_line$data_in = 32'(ray) | (32'(scanline) << 'h10);
+        dx_address = centre_line$data_out[('h0)+:(16)] & mask;
+        dy_address = (centre_line$data_out[('h10)+:(16)] - 'h1) & mask;
+        dx_rom$address = dx_address;
+        dy_rom$address = dy_address;
+        dx_neg = dx_rom$data['h10];
+        dx_mag = dx_rom$data[('h0)+:(16)];
+        dy_neg = dy_rom$data['h10];
+        dy_mag = dy_rom$data[('h0)+:(16)];
+    end
+    
+endmodule // top$pipeline$control$increments
+module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    
+    // Constant declarations
+    localparam  last = 16'h1;
+    localparam  single = 1'b1;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$control$increments$centre_line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$control$increments$centre_line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$control$increments$centre_line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        ptr$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        next = ptr$q + 'h1;
+        if (ptr$q == last) begin
+            next = 'h0;
+        end
+        ptr$d = next;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = next;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single) begin
+            data_out = one$q;
+        end
+        else begin
+            data_out = ram$read_data;
+        end
+    end
+    
+endmodule // top$pipeline$control$increments$centre_line
+module top$pipeline$control$increments$centre_line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$centre_line$one
+module top$pipeline$control$increments$centre_line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$centre_line$ptr
+module top$pipeline$control$increments$centre_line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [31:0] mem[1:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[0:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[0:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$control$increments$centre_line$ram
+module top$pipeline$control$increments$dx_rom(address,data);
+    
+    // Module arguments
+    input wire  [15:0] address;
+    output reg  [16:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        16'h0: data = 17'b0;
+      default: data = 17'b0;
+    endcase
+            
+endmodule // top$pipeline$control$increments$dx_rom
+module top$pipeline$control$increments$dy_rom(address,data);
+    
+    // Module arguments
+    input wire  [15:0] address;
+    output reg  [16:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        16'h0: data = 17'b0;
+      default: data = 17'b0;
+    endcase
+            
+endmodule // top$pipeline$control$increments$dy_rom
 module top$pipeline$control$inner$0(address,data);
     
     // Module arguments
@@ -958,285 +1225,628 @@ module top$pipeline$control$segment(d,q,clock);
     end
           
 endmodule // top$pipeline$control$segment
-module top$pipeline$control$weights$0(address,data);
+module top$pipeline$control$templates(ray,scanline,segment,wx$0,wx$1,wy$0,wy$1);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [15:0] ray;
+    input wire  [15:0] scanline;
+    input wire  [15:0] segment;
+    output reg  [15:0] wx$0;
+    output reg  [15:0] wx$1;
+    output reg  [15:0] wy$0;
+    output reg  [15:0] wy$1;
+    
+    // Constant declarations
+    localparam  stride = 16'h0;
+    
+    // Stub signals
+    reg  [31:0] wx_rom$0$address;
+    wire  [15:0] wx_rom$0$data;
+    reg  [31:0] wx_rom$1$address;
+    wire  [15:0] wx_rom$1$data;
+    reg  [31:0] wy_rom$0$address;
+    wire  [15:0] wy_rom$0$data;
+    reg  [31:0] wy_rom$1$address;
+    wire  [15:0] wy_rom$1$data;
+    
+    // Local signals
+    reg  [31:0] wx_entry;
+    reg  [31:0] wy_entry;
+    
+    // Sub module instances
+    top$pipeline$control$templates$wx_rom$0 wx_rom$0(
+        .address(wx_rom$0$address),
+        .data(wx_rom$0$data)
+    );
+    top$pipeline$control$templates$wx_rom$1 wx_rom$1(
+        .address(wx_rom$1$address),
+        .data(wx_rom$1$data)
+    );
+    top$pipeline$control$templates$wy_rom$0 wy_rom$0(
+        .address(wy_rom$0$address),
+        .data(wy_rom$0$data)
+    );
+    top$pipeline$control$templates$wy_rom$1 wy_rom$1(
+        .address(wy_rom$1$address),
+        .data(wy_rom$1$data)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_entry = ray * stride + 32'(segment);
+        wy_entry = scanline * stride + 32'(segment);
+        wx_rom$0$address = wx_entry;
+        wy_rom$0$address = wy_entry;
+        wx$0 = wx_rom$0$data;
+        wy$0 = wy_rom$0$data;
+        wx_rom$1$address = wx_entry;
+        wy_rom$1$address = wy_entry;
+        wx$1 = wx_rom$1$data;
+        wy$1 = wy_rom$1$data;
+    end
+    
+endmodule // top$pipeline$control$templates
+module top$pipeline$control$templates$wx_rom$0(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h5d;
-      8'h1: data = 'h3a00a3;
-      8'h2: data = 'h17008c;
-      8'h3: data = 'h5100d2;
-      8'h4: data = 'h8b0075;
-      8'h5: data = 'h22005e;
-      8'h6: data = 'h5c00a4;
-      8'h7: data = 'h3900ea;
-      8'h8: data = 'h73008d;
-      8'h9: data = 'ha0076;
-      8'ha: data = 'h4400bc;
-      8'hb: data = 'h21005f;
-      8'hc: data = 'h5b00a5;
-      8'hd: data = 'h95008e;
-      8'he: data = 'h2c00d4;
-      8'hf: data = 'h90077;
-      8'h10: data = 'h430060;
-      8'h11: data = 'h7d00a6;
-      8'h12: data = 'h1400ec;
-      8'h13: data = 'h4e008f;
-      8'h14: data = 'h2b0078;
-      8'h15: data = 'h6500be;
-      8'h16: data = 'h9f0061;
-      8'h17: data = 'h3600a7;
-      8'h18: data = 'h130090;
-      8'h19: data = 'h4d00d6;
-      8'h1a: data = 'h870079;
-      8'h1b: data = 'h1e0062;
-      8'h1c: data = 'h5800a8;
-      8'h1d: data = 'h3500ee;
-      8'h1e: data = 'h6f0091;
-      8'h1f: data = 'h6007a;
-      8'h20: data = 'h4000c0;
-      8'h21: data = 'h1d0063;
-      8'h22: data = 'h5700a9;
-      8'h23: data = 'h910092;
-      8'h24: data = 'h2800d8;
-      8'h25: data = 'h62007b;
-      8'h26: data = 'h3f0064;
-      8'h27: data = 'h7900aa;
-      8'h28: data = 'h1000f0;
-      8'h29: data = 'h4a0093;
-      8'h2a: data = 'h27007c;
-      8'h2b: data = 'h6100c2;
-      8'h2c: data = 'h9b0065;
-      8'h2d: data = 'h3200ab;
-      8'h2e: data = 'hf0094;
-      8'h2f: data = 'h4900da;
-      8'h30: data = 'h83007d;
-      8'h31: data = 'h1a0066;
-      8'h32: data = 'h5400ac;
-      8'h33: data = 'h3100f2;
-      8'h34: data = 'h6b0095;
-      8'h35: data = 'h2007e;
-      8'h36: data = 'h3c00c4;
-      8'h37: data = 'h190067;
-      8'h38: data = 'h5300ad;
-      8'h39: data = 'h8d0096;
-      8'h3a: data = 'h2400dc;
-      8'h3b: data = 'h5e007f;
-      8'h3c: data = 'h3b0068;
-      8'h3d: data = 'h7500ae;
-      8'h3e: data = 'hc00f4;
-      8'h3f: data = 'h460097;
-      8'h40: data = 'h230080;
-      8'h41: data = 'h5d00c6;
-      8'h42: data = 'h970069;
-      8'h43: data = 'h2e00af;
-      8'h44: data = 'hb0098;
-      8'h45: data = 'h4500de;
-      8'h46: data = 'h7f0081;
-      8'h47: data = 'h16006a;
-      8'h48: data = 'h5000b0;
-      8'h49: data = 'h2d00f6;
-      8'h4a: data = 'h670099;
-      8'h4b: data = 'ha10082;
-      8'h4c: data = 'h3800c8;
-      8'h4d: data = 'h15006b;
-      8'h4e: data = 'h4f00b1;
-      8'h4f: data = 'h89009a;
-      8'h50: data = 'h2000e0;
-      8'h51: data = 'h5a0083;
-      8'h52: data = 'h37006c;
-      8'h53: data = 'h7100b2;
-      8'h54: data = 'h800f8;
-      8'h55: data = 'h42009b;
-      8'h56: data = 'h1f0084;
-      8'h57: data = 'h5900ca;
-      8'h58: data = 'h93006d;
-      8'h59: data = 'h2a00b3;
-      8'h5a: data = 'h7009c;
-      8'h5b: data = 'h4100e2;
-      8'h5c: data = 'h7b0085;
-      8'h5d: data = 'h12006e;
-      8'h5e: data = 'h4c00b4;
-      8'h5f: data = 'h2900fa;
-      8'h60: data = 'h63009d;
-      8'h61: data = 'h9d0086;
-      8'h62: data = 'h3400cc;
-      8'h63: data = 'h11006f;
-      8'h64: data = 'h4b00b5;
-      8'h65: data = 'h85009e;
-      8'h66: data = 'h1c00e4;
-      8'h67: data = 'h560087;
-      8'h68: data = 'h330070;
-      8'h69: data = 'h6d00b6;
-      8'h6a: data = 'h400fc;
-      8'h6b: data = 'h3e009f;
-      8'h6c: data = 'h1b0088;
-      8'h6d: data = 'h5500ce;
-      8'h6e: data = 'h8f0071;
-      8'h6f: data = 'h2600b7;
-      8'h70: data = 'h6000a0;
-      8'h71: data = 'h3d00e6;
-      8'h72: data = 'h770089;
-      8'h73: data = 'he0072;
-      8'h74: data = 'h4800b8;
-      8'h75: data = 'h2500fe;
-      8'h76: data = 'h5f00a1;
-      8'h77: data = 'h99008a;
-      8'h78: data = 'h3000d0;
-      8'h79: data = 'hd0073;
-      8'h7a: data = 'h4700b9;
-      8'h7b: data = 'h8100a2;
-      8'h7c: data = 'h1800e8;
-      8'h7d: data = 'h52008b;
-      8'h7e: data = 'h2f0074;
-      8'h7f: data = 'h6900ba;
-      default: data = 'h0;
+        'h0: data = 16'h5d;
+      'h1: data = 16'ha3;
+      'h2: data = 16'h8c;
+      'h3: data = 16'hd2;
+      'h4: data = 16'h75;
+      'h5: data = 16'h5e;
+      'h6: data = 16'ha4;
+      'h7: data = 16'hea;
+      'h8: data = 16'h8d;
+      'h9: data = 16'h76;
+      'ha: data = 16'hbc;
+      'hb: data = 16'h5f;
+      'hc: data = 16'ha5;
+      'hd: data = 16'h8e;
+      'he: data = 16'hd4;
+      'hf: data = 16'h77;
+      'h10: data = 16'h60;
+      'h11: data = 16'ha6;
+      'h12: data = 16'hec;
+      'h13: data = 16'h8f;
+      'h14: data = 16'h78;
+      'h15: data = 16'hbe;
+      'h16: data = 16'h61;
+      'h17: data = 16'ha7;
+      'h18: data = 16'h90;
+      'h19: data = 16'hd6;
+      'h1a: data = 16'h79;
+      'h1b: data = 16'h62;
+      'h1c: data = 16'ha8;
+      'h1d: data = 16'hee;
+      'h1e: data = 16'h91;
+      'h1f: data = 16'h7a;
+      'h20: data = 16'hc0;
+      'h21: data = 16'h63;
+      'h22: data = 16'ha9;
+      'h23: data = 16'h92;
+      'h24: data = 16'hd8;
+      'h25: data = 16'h7b;
+      'h26: data = 16'h64;
+      'h27: data = 16'haa;
+      'h28: data = 16'hf0;
+      'h29: data = 16'h93;
+      'h2a: data = 16'h7c;
+      'h2b: data = 16'hc2;
+      'h2c: data = 16'h65;
+      'h2d: data = 16'hab;
+      'h2e: data = 16'h94;
+      'h2f: data = 16'hda;
+      'h30: data = 16'h7d;
+      'h31: data = 16'h66;
+      'h32: data = 16'hac;
+      'h33: data = 16'hf2;
+      'h34: data = 16'h95;
+      'h35: data = 16'h7e;
+      'h36: data = 16'hc4;
+      'h37: data = 16'h67;
+      'h38: data = 16'had;
+      'h39: data = 16'h96;
+      'h3a: data = 16'hdc;
+      'h3b: data = 16'h7f;
+      'h3c: data = 16'h68;
+      'h3d: data = 16'hae;
+      'h3e: data = 16'hf4;
+      'h3f: data = 16'h97;
+      'h40: data = 16'h80;
+      'h41: data = 16'hc6;
+      'h42: data = 16'h69;
+      'h43: data = 16'haf;
+      'h44: data = 16'h98;
+      'h45: data = 16'hde;
+      'h46: data = 16'h81;
+      'h47: data = 16'h6a;
+      'h48: data = 16'hb0;
+      'h49: data = 16'hf6;
+      'h4a: data = 16'h99;
+      'h4b: data = 16'h82;
+      'h4c: data = 16'hc8;
+      'h4d: data = 16'h6b;
+      'h4e: data = 16'hb1;
+      'h4f: data = 16'h9a;
+      'h50: data = 16'he0;
+      'h51: data = 16'h83;
+      'h52: data = 16'h6c;
+      'h53: data = 16'hb2;
+      'h54: data = 16'hf8;
+      'h55: data = 16'h9b;
+      'h56: data = 16'h84;
+      'h57: data = 16'hca;
+      'h58: data = 16'h6d;
+      'h59: data = 16'hb3;
+      'h5a: data = 16'h9c;
+      'h5b: data = 16'he2;
+      'h5c: data = 16'h85;
+      'h5d: data = 16'h6e;
+      'h5e: data = 16'hb4;
+      'h5f: data = 16'hfa;
+      'h60: data = 16'h9d;
+      'h61: data = 16'h86;
+      'h62: data = 16'hcc;
+      'h63: data = 16'h6f;
+      'h64: data = 16'hb5;
+      'h65: data = 16'h9e;
+      'h66: data = 16'he4;
+      'h67: data = 16'h87;
+      'h68: data = 16'h70;
+      'h69: data = 16'hb6;
+      'h6a: data = 16'hfc;
+      'h6b: data = 16'h9f;
+      'h6c: data = 16'h88;
+      'h6d: data = 16'hce;
+      'h6e: data = 16'h71;
+      'h6f: data = 16'hb7;
+      'h70: data = 16'ha0;
+      'h71: data = 16'he6;
+      'h72: data = 16'h89;
+      'h73: data = 16'h72;
+      'h74: data = 16'hb8;
+      'h75: data = 16'hfe;
+      'h76: data = 16'ha1;
+      'h77: data = 16'h8a;
+      'h78: data = 16'hd0;
+      'h79: data = 16'h73;
+      'h7a: data = 16'hb9;
+      'h7b: data = 16'ha2;
+      'h7c: data = 16'he8;
+      'h7d: data = 16'h8b;
+      'h7e: data = 16'h74;
+      'h7f: data = 16'hba;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$0
-module top$pipeline$control$weights$1(address,data);
+endmodule // top$pipeline$control$templates$wx_rom$0
+module top$pipeline$control$templates$wx_rom$1(address,data);
     
     // Module arguments
-    input wire  [7:0] address;
-    output reg  [31:0] data;
+    input wire  [31:0] address;
+    output reg  [15:0] data;
     
     // Update code (custom)
     always @*
     case (address)
-        8'h0: data = 'h4000a3;
-      8'h1: data = 'h7a00e9;
-      8'h2: data = 'h11008c;
-      8'h3: data = 'h4b0075;
-      8'h4: data = 'h2800bb;
-      8'h5: data = 'h62005e;
-      8'h6: data = 'h9c00a4;
-      8'h7: data = 'h33008d;
-      8'h8: data = 'h1000d3;
-      8'h9: data = 'h4a0076;
-      8'ha: data = 'h84005f;
-      8'hb: data = 'h1b00a5;
-      8'hc: data = 'h5500eb;
-      8'hd: data = 'h32008e;
-      8'he: data = 'h6c0077;
-      8'hf: data = 'h300bd;
-      8'h10: data = 'h3d0060;
-      8'h11: data = 'h1a00a6;
-      8'h12: data = 'h54008f;
-      8'h13: data = 'h8e00d5;
-      8'h14: data = 'h250078;
-      8'h15: data = 'h5f0061;
-      8'h16: data = 'h3c00a7;
-      8'h17: data = 'h7600ed;
-      8'h18: data = 'hd0090;
-      8'h19: data = 'h470079;
-      8'h1a: data = 'h2400bf;
-      8'h1b: data = 'h5e0062;
-      8'h1c: data = 'h9800a8;
-      8'h1d: data = 'h2f0091;
-      8'h1e: data = 'hc00d7;
-      8'h1f: data = 'h46007a;
-      8'h20: data = 'h800063;
-      8'h21: data = 'h1700a9;
-      8'h22: data = 'h5100ef;
-      8'h23: data = 'h2e0092;
-      8'h24: data = 'h68007b;
-      8'h25: data = 'ha200c1;
-      8'h26: data = 'h390064;
-      8'h27: data = 'h1600aa;
-      8'h28: data = 'h500093;
-      8'h29: data = 'h8a00d9;
-      8'h2a: data = 'h21007c;
-      8'h2b: data = 'h5b0065;
-      8'h2c: data = 'h3800ab;
-      8'h2d: data = 'h7200f1;
-      8'h2e: data = 'h90094;
-      8'h2f: data = 'h43007d;
-      8'h30: data = 'h2000c3;
-      8'h31: data = 'h5a0066;
-      8'h32: data = 'h9400ac;
-      8'h33: data = 'h2b0095;
-      8'h34: data = 'h800db;
-      8'h35: data = 'h42007e;
-      8'h36: data = 'h7c0067;
-      8'h37: data = 'h1300ad;
-      8'h38: data = 'h4d00f3;
-      8'h39: data = 'h2a0096;
-      8'h3a: data = 'h64007f;
-      8'h3b: data = 'h9e00c5;
-      8'h3c: data = 'h350068;
-      8'h3d: data = 'h1200ae;
-      8'h3e: data = 'h4c0097;
-      8'h3f: data = 'h8600dd;
-      8'h40: data = 'h1d0080;
-      8'h41: data = 'h570069;
-      8'h42: data = 'h3400af;
-      8'h43: data = 'h6e00f5;
-      8'h44: data = 'h50098;
-      8'h45: data = 'h3f0081;
-      8'h46: data = 'h1c00c7;
-      8'h47: data = 'h56006a;
-      8'h48: data = 'h9000b0;
-      8'h49: data = 'h270099;
-      8'h4a: data = 'h6100df;
-      8'h4b: data = 'h3e0082;
-      8'h4c: data = 'h78006b;
-      8'h4d: data = 'hf00b1;
-      8'h4e: data = 'h4900f7;
-      8'h4f: data = 'h26009a;
-      8'h50: data = 'h600083;
-      8'h51: data = 'h9a00c9;
-      8'h52: data = 'h31006c;
-      8'h53: data = 'he00b2;
-      8'h54: data = 'h48009b;
-      8'h55: data = 'h8200e1;
-      8'h56: data = 'h190084;
-      8'h57: data = 'h53006d;
-      8'h58: data = 'h3000b3;
-      8'h59: data = 'h6a00f9;
-      8'h5a: data = 'h1009c;
-      8'h5b: data = 'h3b0085;
-      8'h5c: data = 'h1800cb;
-      8'h5d: data = 'h52006e;
-      8'h5e: data = 'h8c00b4;
-      8'h5f: data = 'h23009d;
-      8'h60: data = 'h5d00e3;
-      8'h61: data = 'h3a0086;
-      8'h62: data = 'h74006f;
-      8'h63: data = 'hb00b5;
-      8'h64: data = 'h4500fb;
-      8'h65: data = 'h22009e;
-      8'h66: data = 'h5c0087;
-      8'h67: data = 'h9600cd;
-      8'h68: data = 'h2d0070;
-      8'h69: data = 'ha00b6;
-      8'h6a: data = 'h44009f;
-      8'h6b: data = 'h7e00e5;
-      8'h6c: data = 'h150088;
-      8'h6d: data = 'h4f0071;
-      8'h6e: data = 'h2c00b7;
-      8'h6f: data = 'h6600fd;
-      8'h70: data = 'ha000a0;
-      8'h71: data = 'h370089;
-      8'h72: data = 'h1400cf;
-      8'h73: data = 'h4e0072;
-      8'h74: data = 'h8800b8;
-      8'h75: data = 'h1f00a1;
-      8'h76: data = 'h5900e7;
-      8'h77: data = 'h36008a;
-      8'h78: data = 'h700073;
-      8'h79: data = 'h700b9;
-      8'h7a: data = 'h4100ff;
-      8'h7b: data = 'h1e00a2;
-      8'h7c: data = 'h58008b;
-      8'h7d: data = 'h9200d1;
-      8'h7e: data = 'h290074;
-      8'h7f: data = 'h6005d;
-      default: data = 'h0;
+        'h0: data = 16'ha3;
+      'h1: data = 16'he9;
+      'h2: data = 16'h8c;
+      'h3: data = 16'h75;
+      'h4: data = 16'hbb;
+      'h5: data = 16'h5e;
+      'h6: data = 16'ha4;
+      'h7: data = 16'h8d;
+      'h8: data = 16'hd3;
+      'h9: data = 16'h76;
+      'ha: data = 16'h5f;
+      'hb: data = 16'ha5;
+      'hc: data = 16'heb;
+      'hd: data = 16'h8e;
+      'he: data = 16'h77;
+      'hf: data = 16'hbd;
+      'h10: data = 16'h60;
+      'h11: data = 16'ha6;
+      'h12: data = 16'h8f;
+      'h13: data = 16'hd5;
+      'h14: data = 16'h78;
+      'h15: data = 16'h61;
+      'h16: data = 16'ha7;
+      'h17: data = 16'hed;
+      'h18: data = 16'h90;
+      'h19: data = 16'h79;
+      'h1a: data = 16'hbf;
+      'h1b: data = 16'h62;
+      'h1c: data = 16'ha8;
+      'h1d: data = 16'h91;
+      'h1e: data = 16'hd7;
+      'h1f: data = 16'h7a;
+      'h20: data = 16'h63;
+      'h21: data = 16'ha9;
+      'h22: data = 16'hef;
+      'h23: data = 16'h92;
+      'h24: data = 16'h7b;
+      'h25: data = 16'hc1;
+      'h26: data = 16'h64;
+      'h27: data = 16'haa;
+      'h28: data = 16'h93;
+      'h29: data = 16'hd9;
+      'h2a: data = 16'h7c;
+      'h2b: data = 16'h65;
+      'h2c: data = 16'hab;
+      'h2d: data = 16'hf1;
+      'h2e: data = 16'h94;
+      'h2f: data = 16'h7d;
+      'h30: data = 16'hc3;
+      'h31: data = 16'h66;
+      'h32: data = 16'hac;
+      'h33: data = 16'h95;
+      'h34: data = 16'hdb;
+      'h35: data = 16'h7e;
+      'h36: data = 16'h67;
+      'h37: data = 16'had;
+      'h38: data = 16'hf3;
+      'h39: data = 16'h96;
+      'h3a: data = 16'h7f;
+      'h3b: data = 16'hc5;
+      'h3c: data = 16'h68;
+      'h3d: data = 16'hae;
+      'h3e: data = 16'h97;
+      'h3f: data = 16'hdd;
+      'h40: data = 16'h80;
+      'h41: data = 16'h69;
+      'h42: data = 16'haf;
+      'h43: data = 16'hf5;
+      'h44: data = 16'h98;
+      'h45: data = 16'h81;
+      'h46: data = 16'hc7;
+      'h47: data = 16'h6a;
+      'h48: data = 16'hb0;
+      'h49: data = 16'h99;
+      'h4a: data = 16'hdf;
+      'h4b: data = 16'h82;
+      'h4c: data = 16'h6b;
+      'h4d: data = 16'hb1;
+      'h4e: data = 16'hf7;
+      'h4f: data = 16'h9a;
+      'h50: data = 16'h83;
+      'h51: data = 16'hc9;
+      'h52: data = 16'h6c;
+      'h53: data = 16'hb2;
+      'h54: data = 16'h9b;
+      'h55: data = 16'he1;
+      'h56: data = 16'h84;
+      'h57: data = 16'h6d;
+      'h58: data = 16'hb3;
+      'h59: data = 16'hf9;
+      'h5a: data = 16'h9c;
+      'h5b: data = 16'h85;
+      'h5c: data = 16'hcb;
+      'h5d: data = 16'h6e;
+      'h5e: data = 16'hb4;
+      'h5f: data = 16'h9d;
+      'h60: data = 16'he3;
+      'h61: data = 16'h86;
+      'h62: data = 16'h6f;
+      'h63: data = 16'hb5;
+      'h64: data = 16'hfb;
+      'h65: data = 16'h9e;
+      'h66: data = 16'h87;
+      'h67: data = 16'hcd;
+      'h68: data = 16'h70;
+      'h69: data = 16'hb6;
+      'h6a: data = 16'h9f;
+      'h6b: data = 16'he5;
+      'h6c: data = 16'h88;
+      'h6d: data = 16'h71;
+      'h6e: data = 16'hb7;
+      'h6f: data = 16'hfd;
+      'h70: data = 16'ha0;
+      'h71: data = 16'h89;
+      'h72: data = 16'hcf;
+      'h73: data = 16'h72;
+      'h74: data = 16'hb8;
+      'h75: data = 16'ha1;
+      'h76: data = 16'he7;
+      'h77: data = 16'h8a;
+      'h78: data = 16'h73;
+      'h79: data = 16'hb9;
+      'h7a: data = 16'hff;
+      'h7b: data = 16'ha2;
+      'h7c: data = 16'h8b;
+      'h7d: data = 16'hd1;
+      'h7e: data = 16'h74;
+      'h7f: data = 16'h5d;
+      default: data = 16'h0;
     endcase
             
-endmodule // top$pipeline$control$weights$1
+endmodule // top$pipeline$control$templates$wx_rom$1
+module top$pipeline$control$templates$wy_rom$0(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h0;
+      'h1: data = 16'h3a;
+      'h2: data = 16'h17;
+      'h3: data = 16'h51;
+      'h4: data = 16'h8b;
+      'h5: data = 16'h22;
+      'h6: data = 16'h5c;
+      'h7: data = 16'h39;
+      'h8: data = 16'h73;
+      'h9: data = 16'ha;
+      'ha: data = 16'h44;
+      'hb: data = 16'h21;
+      'hc: data = 16'h5b;
+      'hd: data = 16'h95;
+      'he: data = 16'h2c;
+      'hf: data = 16'h9;
+      'h10: data = 16'h43;
+      'h11: data = 16'h7d;
+      'h12: data = 16'h14;
+      'h13: data = 16'h4e;
+      'h14: data = 16'h2b;
+      'h15: data = 16'h65;
+      'h16: data = 16'h9f;
+      'h17: data = 16'h36;
+      'h18: data = 16'h13;
+      'h19: data = 16'h4d;
+      'h1a: data = 16'h87;
+      'h1b: data = 16'h1e;
+      'h1c: data = 16'h58;
+      'h1d: data = 16'h35;
+      'h1e: data = 16'h6f;
+      'h1f: data = 16'h6;
+      'h20: data = 16'h40;
+      'h21: data = 16'h1d;
+      'h22: data = 16'h57;
+      'h23: data = 16'h91;
+      'h24: data = 16'h28;
+      'h25: data = 16'h62;
+      'h26: data = 16'h3f;
+      'h27: data = 16'h79;
+      'h28: data = 16'h10;
+      'h29: data = 16'h4a;
+      'h2a: data = 16'h27;
+      'h2b: data = 16'h61;
+      'h2c: data = 16'h9b;
+      'h2d: data = 16'h32;
+      'h2e: data = 16'hf;
+      'h2f: data = 16'h49;
+      'h30: data = 16'h83;
+      'h31: data = 16'h1a;
+      'h32: data = 16'h54;
+      'h33: data = 16'h31;
+      'h34: data = 16'h6b;
+      'h35: data = 16'h2;
+      'h36: data = 16'h3c;
+      'h37: data = 16'h19;
+      'h38: data = 16'h53;
+      'h39: data = 16'h8d;
+      'h3a: data = 16'h24;
+      'h3b: data = 16'h5e;
+      'h3c: data = 16'h3b;
+      'h3d: data = 16'h75;
+      'h3e: data = 16'hc;
+      'h3f: data = 16'h46;
+      'h40: data = 16'h23;
+      'h41: data = 16'h5d;
+      'h42: data = 16'h97;
+      'h43: data = 16'h2e;
+      'h44: data = 16'hb;
+      'h45: data = 16'h45;
+      'h46: data = 16'h7f;
+      'h47: data = 16'h16;
+      'h48: data = 16'h50;
+      'h49: data = 16'h2d;
+      'h4a: data = 16'h67;
+      'h4b: data = 16'ha1;
+      'h4c: data = 16'h38;
+      'h4d: data = 16'h15;
+      'h4e: data = 16'h4f;
+      'h4f: data = 16'h89;
+      'h50: data = 16'h20;
+      'h51: data = 16'h5a;
+      'h52: data = 16'h37;
+      'h53: data = 16'h71;
+      'h54: data = 16'h8;
+      'h55: data = 16'h42;
+      'h56: data = 16'h1f;
+      'h57: data = 16'h59;
+      'h58: data = 16'h93;
+      'h59: data = 16'h2a;
+      'h5a: data = 16'h7;
+      'h5b: data = 16'h41;
+      'h5c: data = 16'h7b;
+      'h5d: data = 16'h12;
+      'h5e: data = 16'h4c;
+      'h5f: data = 16'h29;
+      'h60: data = 16'h63;
+      'h61: data = 16'h9d;
+      'h62: data = 16'h34;
+      'h63: data = 16'h11;
+      'h64: data = 16'h4b;
+      'h65: data = 16'h85;
+      'h66: data = 16'h1c;
+      'h67: data = 16'h56;
+      'h68: data = 16'h33;
+      'h69: data = 16'h6d;
+      'h6a: data = 16'h4;
+      'h6b: data = 16'h3e;
+      'h6c: data = 16'h1b;
+      'h6d: data = 16'h55;
+      'h6e: data = 16'h8f;
+      'h6f: data = 16'h26;
+      'h70: data = 16'h60;
+      'h71: data = 16'h3d;
+      'h72: data = 16'h77;
+      'h73: data = 16'he;
+      'h74: data = 16'h48;
+      'h75: data = 16'h25;
+      'h76: data = 16'h5f;
+      'h77: data = 16'h99;
+      'h78: data = 16'h30;
+      'h79: data = 16'hd;
+      'h7a: data = 16'h47;
+      'h7b: data = 16'h81;
+      'h7c: data = 16'h18;
+      'h7d: data = 16'h52;
+      'h7e: data = 16'h2f;
+      'h7f: data = 16'h69;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$0
+module top$pipeline$control$templates$wy_rom$1(address,data);
+    
+    // Module arguments
+    input wire  [31:0] address;
+    output reg  [15:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        'h0: data = 16'h40;
+      'h1: data = 16'h7a;
+      'h2: data = 16'h11;
+      'h3: data = 16'h4b;
+      'h4: data = 16'h28;
+      'h5: data = 16'h62;
+      'h6: data = 16'h9c;
+      'h7: data = 16'h33;
+      'h8: data = 16'h10;
+      'h9: data = 16'h4a;
+      'ha: data = 16'h84;
+      'hb: data = 16'h1b;
+      'hc: data = 16'h55;
+      'hd: data = 16'h32;
+      'he: data = 16'h6c;
+      'hf: data = 16'h3;
+      'h10: data = 16'h3d;
+      'h11: data = 16'h1a;
+      'h12: data = 16'h54;
+      'h13: data = 16'h8e;
+      'h14: data = 16'h25;
+      'h15: data = 16'h5f;
+      'h16: data = 16'h3c;
+      'h17: data = 16'h76;
+      'h18: data = 16'hd;
+      'h19: data = 16'h47;
+      'h1a: data = 16'h24;
+      'h1b: data = 16'h5e;
+      'h1c: data = 16'h98;
+      'h1d: data = 16'h2f;
+      'h1e: data = 16'hc;
+      'h1f: data = 16'h46;
+      'h20: data = 16'h80;
+      'h21: data = 16'h17;
+      'h22: data = 16'h51;
+      'h23: data = 16'h2e;
+      'h24: data = 16'h68;
+      'h25: data = 16'ha2;
+      'h26: data = 16'h39;
+      'h27: data = 16'h16;
+      'h28: data = 16'h50;
+      'h29: data = 16'h8a;
+      'h2a: data = 16'h21;
+      'h2b: data = 16'h5b;
+      'h2c: data = 16'h38;
+      'h2d: data = 16'h72;
+      'h2e: data = 16'h9;
+      'h2f: data = 16'h43;
+      'h30: data = 16'h20;
+      'h31: data = 16'h5a;
+      'h32: data = 16'h94;
+      'h33: data = 16'h2b;
+      'h34: data = 16'h8;
+      'h35: data = 16'h42;
+      'h36: data = 16'h7c;
+      'h37: data = 16'h13;
+      'h38: data = 16'h4d;
+      'h39: data = 16'h2a;
+      'h3a: data = 16'h64;
+      'h3b: data = 16'h9e;
+      'h3c: data = 16'h35;
+      'h3d: data = 16'h12;
+      'h3e: data = 16'h4c;
+      'h3f: data = 16'h86;
+      'h40: data = 16'h1d;
+      'h41: data = 16'h57;
+      'h42: data = 16'h34;
+      'h43: data = 16'h6e;
+      'h44: data = 16'h5;
+      'h45: data = 16'h3f;
+      'h46: data = 16'h1c;
+      'h47: data = 16'h56;
+      'h48: data = 16'h90;
+      'h49: data = 16'h27;
+      'h4a: data = 16'h61;
+      'h4b: data = 16'h3e;
+      'h4c: data = 16'h78;
+      'h4d: data = 16'hf;
+      'h4e: data = 16'h49;
+      'h4f: data = 16'h26;
+      'h50: data = 16'h60;
+      'h51: data = 16'h9a;
+      'h52: data = 16'h31;
+      'h53: data = 16'he;
+      'h54: data = 16'h48;
+      'h55: data = 16'h82;
+      'h56: data = 16'h19;
+      'h57: data = 16'h53;
+      'h58: data = 16'h30;
+      'h59: data = 16'h6a;
+      'h5a: data = 16'h1;
+      'h5b: data = 16'h3b;
+      'h5c: data = 16'h18;
+      'h5d: data = 16'h52;
+      'h5e: data = 16'h8c;
+      'h5f: data = 16'h23;
+      'h60: data = 16'h5d;
+      'h61: data = 16'h3a;
+      'h62: data = 16'h74;
+      'h63: data = 16'hb;
+      'h64: data = 16'h45;
+      'h65: data = 16'h22;
+      'h66: data = 16'h5c;
+      'h67: data = 16'h96;
+      'h68: data = 16'h2d;
+      'h69: data = 16'ha;
+      'h6a: data = 16'h44;
+      'h6b: data = 16'h7e;
+      'h6c: data = 16'h15;
+      'h6d: data = 16'h4f;
+      'h6e: data = 16'h2c;
+      'h6f: data = 16'h66;
+      'h70: data = 16'ha0;
+      'h71: data = 16'h37;
+      'h72: data = 16'h14;
+      'h73: data = 16'h4e;
+      'h74: data = 16'h88;
+      'h75: data = 16'h1f;
+      'h76: data = 16'h59;
+      'h77: data = 16'h36;
+      'h78: data = 16'h70;
+      'h79: data = 16'h7;
+      'h7a: data = 16'h41;
+      'h7b: data = 16'h1e;
+      'h7c: data = 16'h58;
+      'h7d: data = 16'h92;
+      'h7e: data = 16'h29;
+      'h7f: data = 16'h6;
+      default: data = 16'h0;
+    endcase
+            
+endmodule // top$pipeline$control$templates$wy_rom$1
