@@ -116,7 +116,7 @@ fn the_engine_frame_runs_through_verilator_bit_exact() {
 
 /// Composite through the ABC units (the 12-neighbourhood, shaded) and
 /// first-opaque (the 6, gradient opacity), and a perspective composite
-/// view of two base planes (the first one's traces): rust-hdl and
+/// view from a corner, three base planes (the first one's traces): rust-hdl and
 /// Verilator equal the golden model on the same clocks, and their traces
 /// agree.
 #[test]
@@ -160,7 +160,7 @@ fn the_abc_units_match_the_golden_model_in_rust_hdl_and_verilator() {
         for (engine, r) in [("rust-hdl", &rust), ("Verilator", &verilator)] {
             assert_eq!(r.mismatches, 0, "{name}: {engine}: {:?}", r.first);
         }
-        let planes = if view == PARALLEL { 1 } else { 2 };
+        let planes = if view == PARALLEL { 1 } else { 3 };
         assert_eq!(rust.frame.bases.len(), planes, "{name}: base planes");
         assert_eq!(
             verilator.clocks, rust.clocks,
