@@ -33,8 +33,9 @@
 //! rays and one of scanlines. Every parallel ray is cast.
 //!
 //! **Increments.** The ABC units take the increments `DX(u)`, `DY(v)` of
-//! the ray at their centre tap, which came in `abc_unit::centre(T, G) = T
-//! + G + 1` clocks before the sample now entering them: the units' counters
+//! the ray at their centre tap, which came in
+//! `abc_unit::centre(T, G) = T + G + 1` clocks before the sample now
+//! entering them: the units' counters
 //! a further `trilin::LATENCY + G + 1` clocks late (a second delay line)
 //! name the centre's ray, and its scanline is one less (the scanlines
 //! enter every `T` clocks). ROMs by ray and scanline hold the increments; a
