@@ -125,11 +125,8 @@ impl BeamFetchConfig {
                 c.pos_x = px.clone();
                 c.pos_y = py.clone();
             }
-            (Template::Perspective { lo, d, .. }, Template::Perspective { lo: vlo, d: vd, .. }) => {
-                let covers = |lo: i32, n: usize, first: i32, count: usize| {
-                    first >= lo && first + count as i32 <= lo + n as i32
-                };
-                if !covers(*lo, d.len(), u0, rays) || !covers(*vlo, vd.len(), v0, scanlines + 1) {
+            (Template::Perspective { .. }, Template::Perspective { .. }) => {
+                if !view.x.covers(u0, rays) || !view.y.covers(v0, scanlines + 1) {
                     return Err(
                         "the stream's rays or scanlines lie outside the view's templates".into(),
                     );
@@ -223,6 +220,11 @@ impl BeamFetchConfig {
         }
         m
     }
+}
+
+/// A ROM of 16-bit two's-complement template entries.
+fn rom16<const N: usize>(v: &[i32]) -> ROM<Bits<16>, N> {
+    v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
 }
 
 /// The beam fetch for `P` lanes: `A`-bit memory and `B`-bit 2-DSB
@@ -341,9 +343,6 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             ));
         }
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
-        fn rom16<const N: usize>(v: &[i32]) -> ROM<Bits<16>, N> {
-            v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
-        }
         let words = if c.external {
             2
         } else {
@@ -645,11 +644,7 @@ impl<const P: usize> Groups<P> {
             x: std::array::from_fn(|_| Default::default()),
             holds: std::array::from_fn(|_| Default::default()),
             perspective: Constant::new(c.perspective()),
-            pos_x: c
-                .pos_x
-                .iter()
-                .map(|&x| ((x as u64) & 0xffff).to_bits())
-                .into(),
+            pos_x: rom16(&c.pos_x),
             chunk_ray: Default::default(),
             x0: Default::default(),
             groups: c

@@ -137,19 +137,12 @@ impl Cube3Config {
         let u0 = view.u[0] - 1;
         let rays = (view.u[1] - view.u[0] + 4) as usize;
         // The stream's rays and scanlines, each within its template.
-        let stream = |t: &Template, first: i32, n: usize, what: &str| {
-            let lines: Vec<i32> = (first..first + n as i32).collect();
-            if let Template::Perspective { lo, d, .. } = t {
-                let span = *lo..*lo + d.len() as i32;
-                if let Some(bad) = lines.iter().find(|l| !span.contains(l)) {
-                    return Err(format!(
-                        "{what} {bad} lies outside the view's templates ({}..={})",
-                        span.start,
-                        span.end - 1
-                    ));
-                }
-            }
-            Ok(lines)
+        let stream = |t: &Template, first: i32, n: usize, what: &str| match t.covers(first, n) {
+            true => Ok((first..first + n as i32).collect::<Vec<i32>>()),
+            false => Err(format!(
+                "{what}s {first}..{} lie outside the view's templates",
+                first + n as i32
+            )),
         };
         let ray_u = stream(&view.x, u0, rays, "ray")?;
         let line_v = stream(&view.y, v0, scanlines, "scanline")?;

@@ -144,6 +144,17 @@ impl Template {
         }
     }
 
+    /// Whether the template holds rays `first .. first + n` (a parallel
+    /// one holds every ray).
+    pub fn covers(&self, first: i32, n: usize) -> bool {
+        match self {
+            Template::Parallel { .. } => true,
+            Template::Perspective { lo, d, .. } => {
+                first >= *lo && first + n as i32 <= *lo + d.len() as i32
+            }
+        }
+    }
+
     /// Fixed-point increment `DX` of ray `u`.
     pub fn d(&self, u: i32) -> i32 {
         match self {
