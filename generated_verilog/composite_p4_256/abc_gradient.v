@@ -165,6 +165,19 @@ module top$lanes$0$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
     );
     
     // Update code
+    reg  [15:0] to_right_xm_pass;
+    reg  [15:0] to_right_ym_pass;
+    reg  [15:0] to_right_zm_pass;
+    reg  [15:0] to_left_xp_pass;
+    reg  [15:0] to_left_yp_pass;
+    reg  [15:0] to_left_zp_pass;
+    reg  [15:0] o_value_pass;
+    reg  gx_neg_pass;
+    reg  [15:0] gx_mag_pass;
+    reg  gy_neg_pass;
+    reg  [15:0] gy_mag_pass;
+    reg  gz_neg_pass;
+    reg  [15:0] gz_mag_pass;
     always @(*) begin
         reg_yp$clock = clock;
         reg_xm$clock = clock;
@@ -203,12 +216,12 @@ module top$lanes$0$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         line_c$write_enable = 1'b1;
         line_d$data_in = line_c$data_out;
         line_d$write_enable = 1'b1;
-        to_left_yp = reg_yp$q;
-        to_left_xp = line_b$data_out;
-        to_right_xm = reg_xm$q;
-        to_right_ym = line_c$data_out;
-        to_right_zm = line_d$data_out;
-        to_left_zp = value;
+        to_left_yp_pass = reg_yp$q;
+        to_left_xp_pass = line_b$data_out;
+        to_right_xm_pass = reg_xm$q;
+        to_right_ym_pass = line_c$data_out;
+        to_right_zm_pass = line_d$data_out;
+        to_left_zp_pass = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
         hop_zm$d = from_left_zm;
@@ -225,37 +238,50 @@ module top$lanes$0$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
-        gx_neg = xp < xm;
-        gx_mag = xp - xm;
+        gx_neg_pass = xp < xm;
+        gx_mag_pass = xp - xm;
         if (xp < xm) begin
-            gx_mag = xm - xp;
+            gx_mag_pass = xm - xp;
         end
-        gy_neg = hop_yp$q < hop_ym$q;
-        gy_mag = hop_yp$q - hop_ym$q;
+        gy_neg_pass = hop_yp$q < hop_ym$q;
+        gy_mag_pass = hop_yp$q - hop_ym$q;
         if (hop_yp$q < hop_ym$q) begin
-            gy_mag = hop_ym$q - hop_yp$q;
+            gy_mag_pass = hop_ym$q - hop_yp$q;
         end
-        gz_neg = hop_zp$q < hop_zm$q;
-        gz_mag = hop_zp$q - hop_zm$q;
+        gz_neg_pass = hop_zp$q < hop_zm$q;
+        gz_mag_pass = hop_zp$q - hop_zm$q;
         if (hop_zp$q < hop_zm$q) begin
-            gz_mag = hop_zm$q - hop_zp$q;
+            gz_mag_pass = hop_zm$q - hop_zp$q;
         end
-        o_value = reg_c$q;
+        o_value_pass = reg_c$q;
         if (~enabled) begin
-            to_right_xm = 'h0;
-            to_right_ym = 'h0;
-            to_right_zm = 'h0;
-            to_left_xp = 'h0;
-            to_left_yp = 'h0;
-            to_left_zp = 'h0;
-            o_value = 'h0;
-            gx_mag = 'h0;
-            gy_mag = 'h0;
-            gz_mag = 'h0;
-            gx_neg = 1'b0;
-            gy_neg = 1'b0;
-            gz_neg = 1'b0;
+            to_right_xm_pass = 'h0;
+            to_right_ym_pass = 'h0;
+            to_right_zm_pass = 'h0;
+            to_left_xp_pass = 'h0;
+            to_left_yp_pass = 'h0;
+            to_left_zp_pass = 'h0;
+            o_value_pass = 'h0;
+            gx_mag_pass = 'h0;
+            gy_mag_pass = 'h0;
+            gz_mag_pass = 'h0;
+            gx_neg_pass = 1'b0;
+            gy_neg_pass = 1'b0;
+            gz_neg_pass = 1'b0;
         end
+        to_right_xm = to_right_xm_pass;
+        to_right_ym = to_right_ym_pass;
+        to_right_zm = to_right_zm_pass;
+        to_left_xp = to_left_xp_pass;
+        to_left_yp = to_left_yp_pass;
+        to_left_zp = to_left_zp_pass;
+        o_value = o_value_pass;
+        gx_neg = gx_neg_pass;
+        gx_mag = gx_mag_pass;
+        gy_neg = gy_neg_pass;
+        gy_mag = gy_mag_pass;
+        gz_neg = gz_neg_pass;
+        gz_mag = gz_mag_pass;
     end
     
 endmodule // top$lanes$0$feed$abc
@@ -414,6 +440,7 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -435,11 +462,12 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$feed$abc$line_a
@@ -554,6 +582,7 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -575,11 +604,12 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$feed$abc$line_b
@@ -694,6 +724,7 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -715,11 +746,12 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$feed$abc$line_c
@@ -834,6 +866,7 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -855,11 +888,12 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$feed$abc$line_d
@@ -1173,6 +1207,19 @@ module top$lanes$1$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
     );
     
     // Update code
+    reg  [15:0] to_right_xm_pass;
+    reg  [15:0] to_right_ym_pass;
+    reg  [15:0] to_right_zm_pass;
+    reg  [15:0] to_left_xp_pass;
+    reg  [15:0] to_left_yp_pass;
+    reg  [15:0] to_left_zp_pass;
+    reg  [15:0] o_value_pass;
+    reg  gx_neg_pass;
+    reg  [15:0] gx_mag_pass;
+    reg  gy_neg_pass;
+    reg  [15:0] gy_mag_pass;
+    reg  gz_neg_pass;
+    reg  [15:0] gz_mag_pass;
     always @(*) begin
         reg_yp$clock = clock;
         reg_xm$clock = clock;
@@ -1211,12 +1258,12 @@ module top$lanes$1$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         line_c$write_enable = 1'b1;
         line_d$data_in = line_c$data_out;
         line_d$write_enable = 1'b1;
-        to_left_yp = reg_yp$q;
-        to_left_xp = line_b$data_out;
-        to_right_xm = reg_xm$q;
-        to_right_ym = line_c$data_out;
-        to_right_zm = line_d$data_out;
-        to_left_zp = value;
+        to_left_yp_pass = reg_yp$q;
+        to_left_xp_pass = line_b$data_out;
+        to_right_xm_pass = reg_xm$q;
+        to_right_ym_pass = line_c$data_out;
+        to_right_zm_pass = line_d$data_out;
+        to_left_zp_pass = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
         hop_zm$d = from_left_zm;
@@ -1233,37 +1280,50 @@ module top$lanes$1$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
-        gx_neg = xp < xm;
-        gx_mag = xp - xm;
+        gx_neg_pass = xp < xm;
+        gx_mag_pass = xp - xm;
         if (xp < xm) begin
-            gx_mag = xm - xp;
+            gx_mag_pass = xm - xp;
         end
-        gy_neg = hop_yp$q < hop_ym$q;
-        gy_mag = hop_yp$q - hop_ym$q;
+        gy_neg_pass = hop_yp$q < hop_ym$q;
+        gy_mag_pass = hop_yp$q - hop_ym$q;
         if (hop_yp$q < hop_ym$q) begin
-            gy_mag = hop_ym$q - hop_yp$q;
+            gy_mag_pass = hop_ym$q - hop_yp$q;
         end
-        gz_neg = hop_zp$q < hop_zm$q;
-        gz_mag = hop_zp$q - hop_zm$q;
+        gz_neg_pass = hop_zp$q < hop_zm$q;
+        gz_mag_pass = hop_zp$q - hop_zm$q;
         if (hop_zp$q < hop_zm$q) begin
-            gz_mag = hop_zm$q - hop_zp$q;
+            gz_mag_pass = hop_zm$q - hop_zp$q;
         end
-        o_value = reg_c$q;
+        o_value_pass = reg_c$q;
         if (~enabled) begin
-            to_right_xm = 'h0;
-            to_right_ym = 'h0;
-            to_right_zm = 'h0;
-            to_left_xp = 'h0;
-            to_left_yp = 'h0;
-            to_left_zp = 'h0;
-            o_value = 'h0;
-            gx_mag = 'h0;
-            gy_mag = 'h0;
-            gz_mag = 'h0;
-            gx_neg = 1'b0;
-            gy_neg = 1'b0;
-            gz_neg = 1'b0;
+            to_right_xm_pass = 'h0;
+            to_right_ym_pass = 'h0;
+            to_right_zm_pass = 'h0;
+            to_left_xp_pass = 'h0;
+            to_left_yp_pass = 'h0;
+            to_left_zp_pass = 'h0;
+            o_value_pass = 'h0;
+            gx_mag_pass = 'h0;
+            gy_mag_pass = 'h0;
+            gz_mag_pass = 'h0;
+            gx_neg_pass = 1'b0;
+            gy_neg_pass = 1'b0;
+            gz_neg_pass = 1'b0;
         end
+        to_right_xm = to_right_xm_pass;
+        to_right_ym = to_right_ym_pass;
+        to_right_zm = to_right_zm_pass;
+        to_left_xp = to_left_xp_pass;
+        to_left_yp = to_left_yp_pass;
+        to_left_zp = to_left_zp_pass;
+        o_value = o_value_pass;
+        gx_neg = gx_neg_pass;
+        gx_mag = gx_mag_pass;
+        gy_neg = gy_neg_pass;
+        gy_mag = gy_mag_pass;
+        gz_neg = gz_neg_pass;
+        gz_mag = gz_mag_pass;
     end
     
 endmodule // top$lanes$1$feed$abc
@@ -1422,6 +1482,7 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1443,11 +1504,12 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$feed$abc$line_a
@@ -1562,6 +1624,7 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1583,11 +1646,12 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$feed$abc$line_b
@@ -1702,6 +1766,7 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1723,11 +1788,12 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$feed$abc$line_c
@@ -1842,6 +1908,7 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1863,11 +1930,12 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$feed$abc$line_d
@@ -2181,6 +2249,19 @@ module top$lanes$2$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
     );
     
     // Update code
+    reg  [15:0] to_right_xm_pass;
+    reg  [15:0] to_right_ym_pass;
+    reg  [15:0] to_right_zm_pass;
+    reg  [15:0] to_left_xp_pass;
+    reg  [15:0] to_left_yp_pass;
+    reg  [15:0] to_left_zp_pass;
+    reg  [15:0] o_value_pass;
+    reg  gx_neg_pass;
+    reg  [15:0] gx_mag_pass;
+    reg  gy_neg_pass;
+    reg  [15:0] gy_mag_pass;
+    reg  gz_neg_pass;
+    reg  [15:0] gz_mag_pass;
     always @(*) begin
         reg_yp$clock = clock;
         reg_xm$clock = clock;
@@ -2219,12 +2300,12 @@ module top$lanes$2$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         line_c$write_enable = 1'b1;
         line_d$data_in = line_c$data_out;
         line_d$write_enable = 1'b1;
-        to_left_yp = reg_yp$q;
-        to_left_xp = line_b$data_out;
-        to_right_xm = reg_xm$q;
-        to_right_ym = line_c$data_out;
-        to_right_zm = line_d$data_out;
-        to_left_zp = value;
+        to_left_yp_pass = reg_yp$q;
+        to_left_xp_pass = line_b$data_out;
+        to_right_xm_pass = reg_xm$q;
+        to_right_ym_pass = line_c$data_out;
+        to_right_zm_pass = line_d$data_out;
+        to_left_zp_pass = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
         hop_zm$d = from_left_zm;
@@ -2241,37 +2322,50 @@ module top$lanes$2$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
-        gx_neg = xp < xm;
-        gx_mag = xp - xm;
+        gx_neg_pass = xp < xm;
+        gx_mag_pass = xp - xm;
         if (xp < xm) begin
-            gx_mag = xm - xp;
+            gx_mag_pass = xm - xp;
         end
-        gy_neg = hop_yp$q < hop_ym$q;
-        gy_mag = hop_yp$q - hop_ym$q;
+        gy_neg_pass = hop_yp$q < hop_ym$q;
+        gy_mag_pass = hop_yp$q - hop_ym$q;
         if (hop_yp$q < hop_ym$q) begin
-            gy_mag = hop_ym$q - hop_yp$q;
+            gy_mag_pass = hop_ym$q - hop_yp$q;
         end
-        gz_neg = hop_zp$q < hop_zm$q;
-        gz_mag = hop_zp$q - hop_zm$q;
+        gz_neg_pass = hop_zp$q < hop_zm$q;
+        gz_mag_pass = hop_zp$q - hop_zm$q;
         if (hop_zp$q < hop_zm$q) begin
-            gz_mag = hop_zm$q - hop_zp$q;
+            gz_mag_pass = hop_zm$q - hop_zp$q;
         end
-        o_value = reg_c$q;
+        o_value_pass = reg_c$q;
         if (~enabled) begin
-            to_right_xm = 'h0;
-            to_right_ym = 'h0;
-            to_right_zm = 'h0;
-            to_left_xp = 'h0;
-            to_left_yp = 'h0;
-            to_left_zp = 'h0;
-            o_value = 'h0;
-            gx_mag = 'h0;
-            gy_mag = 'h0;
-            gz_mag = 'h0;
-            gx_neg = 1'b0;
-            gy_neg = 1'b0;
-            gz_neg = 1'b0;
+            to_right_xm_pass = 'h0;
+            to_right_ym_pass = 'h0;
+            to_right_zm_pass = 'h0;
+            to_left_xp_pass = 'h0;
+            to_left_yp_pass = 'h0;
+            to_left_zp_pass = 'h0;
+            o_value_pass = 'h0;
+            gx_mag_pass = 'h0;
+            gy_mag_pass = 'h0;
+            gz_mag_pass = 'h0;
+            gx_neg_pass = 1'b0;
+            gy_neg_pass = 1'b0;
+            gz_neg_pass = 1'b0;
         end
+        to_right_xm = to_right_xm_pass;
+        to_right_ym = to_right_ym_pass;
+        to_right_zm = to_right_zm_pass;
+        to_left_xp = to_left_xp_pass;
+        to_left_yp = to_left_yp_pass;
+        to_left_zp = to_left_zp_pass;
+        o_value = o_value_pass;
+        gx_neg = gx_neg_pass;
+        gx_mag = gx_mag_pass;
+        gy_neg = gy_neg_pass;
+        gy_mag = gy_mag_pass;
+        gz_neg = gz_neg_pass;
+        gz_mag = gz_mag_pass;
     end
     
 endmodule // top$lanes$2$feed$abc
@@ -2430,6 +2524,7 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -2451,11 +2546,12 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$2$feed$abc$line_a
@@ -2570,6 +2666,7 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -2591,11 +2688,12 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$2$feed$abc$line_b
@@ -2710,6 +2808,7 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -2731,11 +2830,12 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$2$feed$abc$line_c
@@ -2850,6 +2950,7 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -2871,11 +2972,12 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$2$feed$abc$line_d
@@ -3189,6 +3291,19 @@ module top$lanes$3$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
     );
     
     // Update code
+    reg  [15:0] to_right_xm_pass;
+    reg  [15:0] to_right_ym_pass;
+    reg  [15:0] to_right_zm_pass;
+    reg  [15:0] to_left_xp_pass;
+    reg  [15:0] to_left_yp_pass;
+    reg  [15:0] to_left_zp_pass;
+    reg  [15:0] o_value_pass;
+    reg  gx_neg_pass;
+    reg  [15:0] gx_mag_pass;
+    reg  gy_neg_pass;
+    reg  [15:0] gy_mag_pass;
+    reg  gz_neg_pass;
+    reg  [15:0] gz_mag_pass;
     always @(*) begin
         reg_yp$clock = clock;
         reg_xm$clock = clock;
@@ -3227,12 +3342,12 @@ module top$lanes$3$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         line_c$write_enable = 1'b1;
         line_d$data_in = line_c$data_out;
         line_d$write_enable = 1'b1;
-        to_left_yp = reg_yp$q;
-        to_left_xp = line_b$data_out;
-        to_right_xm = reg_xm$q;
-        to_right_ym = line_c$data_out;
-        to_right_zm = line_d$data_out;
-        to_left_zp = value;
+        to_left_yp_pass = reg_yp$q;
+        to_left_xp_pass = line_b$data_out;
+        to_right_xm_pass = reg_xm$q;
+        to_right_ym_pass = line_c$data_out;
+        to_right_zm_pass = line_d$data_out;
+        to_left_zp_pass = value;
         hop_xm$d = from_left_xm;
         hop_ym$d = from_left_ym;
         hop_zm$d = from_left_zm;
@@ -3249,37 +3364,50 @@ module top$lanes$3$feed$abc(clock,value,x,from_left_xm,from_left_ym,from_left_zm
         if ((x & p_mask) == p_mask) begin
             xp = hop_xp$q;
         end
-        gx_neg = xp < xm;
-        gx_mag = xp - xm;
+        gx_neg_pass = xp < xm;
+        gx_mag_pass = xp - xm;
         if (xp < xm) begin
-            gx_mag = xm - xp;
+            gx_mag_pass = xm - xp;
         end
-        gy_neg = hop_yp$q < hop_ym$q;
-        gy_mag = hop_yp$q - hop_ym$q;
+        gy_neg_pass = hop_yp$q < hop_ym$q;
+        gy_mag_pass = hop_yp$q - hop_ym$q;
         if (hop_yp$q < hop_ym$q) begin
-            gy_mag = hop_ym$q - hop_yp$q;
+            gy_mag_pass = hop_ym$q - hop_yp$q;
         end
-        gz_neg = hop_zp$q < hop_zm$q;
-        gz_mag = hop_zp$q - hop_zm$q;
+        gz_neg_pass = hop_zp$q < hop_zm$q;
+        gz_mag_pass = hop_zp$q - hop_zm$q;
         if (hop_zp$q < hop_zm$q) begin
-            gz_mag = hop_zm$q - hop_zp$q;
+            gz_mag_pass = hop_zm$q - hop_zp$q;
         end
-        o_value = reg_c$q;
+        o_value_pass = reg_c$q;
         if (~enabled) begin
-            to_right_xm = 'h0;
-            to_right_ym = 'h0;
-            to_right_zm = 'h0;
-            to_left_xp = 'h0;
-            to_left_yp = 'h0;
-            to_left_zp = 'h0;
-            o_value = 'h0;
-            gx_mag = 'h0;
-            gy_mag = 'h0;
-            gz_mag = 'h0;
-            gx_neg = 1'b0;
-            gy_neg = 1'b0;
-            gz_neg = 1'b0;
+            to_right_xm_pass = 'h0;
+            to_right_ym_pass = 'h0;
+            to_right_zm_pass = 'h0;
+            to_left_xp_pass = 'h0;
+            to_left_yp_pass = 'h0;
+            to_left_zp_pass = 'h0;
+            o_value_pass = 'h0;
+            gx_mag_pass = 'h0;
+            gy_mag_pass = 'h0;
+            gz_mag_pass = 'h0;
+            gx_neg_pass = 1'b0;
+            gy_neg_pass = 1'b0;
+            gz_neg_pass = 1'b0;
         end
+        to_right_xm = to_right_xm_pass;
+        to_right_ym = to_right_ym_pass;
+        to_right_zm = to_right_zm_pass;
+        to_left_xp = to_left_xp_pass;
+        to_left_yp = to_left_yp_pass;
+        to_left_zp = to_left_zp_pass;
+        o_value = o_value_pass;
+        gx_neg = gx_neg_pass;
+        gx_mag = gx_mag_pass;
+        gy_neg = gy_neg_pass;
+        gy_mag = gy_mag_pass;
+        gz_neg = gz_neg_pass;
+        gz_mag = gz_mag_pass;
     end
     
 endmodule // top$lanes$3$feed$abc
@@ -3438,6 +3566,7 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3459,11 +3588,12 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$3$feed$abc$line_a
@@ -3578,6 +3708,7 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3599,11 +3730,12 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$3$feed$abc$line_b
@@ -3718,6 +3850,7 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3739,11 +3872,12 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$3$feed$abc$line_c
@@ -3858,6 +3992,7 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3879,11 +4014,12 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$3$feed$abc$line_d

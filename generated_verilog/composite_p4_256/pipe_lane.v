@@ -2956,6 +2956,7 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     );
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -2979,10 +2980,10 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -2999,6 +3000,7 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$0$feed
@@ -5960,6 +5962,7 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     );
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -5983,10 +5986,10 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -6003,6 +6006,7 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$1$feed
@@ -8964,6 +8968,7 @@ module top$lanes$2$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     );
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -8987,10 +8992,10 @@ module top$lanes$2$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -9007,6 +9012,7 @@ module top$lanes$2$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$2$feed
@@ -11968,6 +11974,7 @@ module top$lanes$3$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     );
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -11991,10 +11998,10 @@ module top$lanes$3$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -12011,6 +12018,7 @@ module top$lanes$3$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$3$feed

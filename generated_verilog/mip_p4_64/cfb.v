@@ -798,6 +798,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -970,12 +971,12 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -994,6 +995,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$0
@@ -1538,6 +1540,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -1710,12 +1713,12 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -1734,6 +1737,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$1
@@ -2278,6 +2282,7 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -2450,12 +2455,12 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -2474,6 +2479,7 @@ module top$cfb$lanes$2(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$2
@@ -3018,6 +3024,7 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -3190,12 +3197,12 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -3214,6 +3221,7 @@ module top$cfb$lanes$3(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$3

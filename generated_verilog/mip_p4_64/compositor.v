@@ -194,14 +194,16 @@ module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_a
@@ -221,12 +223,14 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
@@ -257,14 +261,16 @@ module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_b
@@ -284,12 +290,14 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
@@ -320,14 +328,16 @@ module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_g
@@ -347,12 +357,14 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
@@ -383,14 +395,16 @@ module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_r
@@ -410,12 +424,14 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
@@ -683,14 +699,16 @@ module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_a
@@ -710,12 +728,14 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
@@ -746,14 +766,16 @@ module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_b
@@ -773,12 +795,14 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
@@ -809,14 +833,16 @@ module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_g
@@ -836,12 +862,14 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
@@ -872,14 +900,16 @@ module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_r
@@ -899,12 +929,14 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
@@ -1172,14 +1204,16 @@ module top$lanes$2$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_a
@@ -1199,12 +1233,14 @@ module top$lanes$2$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_a$mul
@@ -1235,14 +1271,16 @@ module top$lanes$2$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_b
@@ -1262,12 +1300,14 @@ module top$lanes$2$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_b$mul
@@ -1298,14 +1338,16 @@ module top$lanes$2$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_g
@@ -1325,12 +1367,14 @@ module top$lanes$2$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_g$mul
@@ -1361,14 +1405,16 @@ module top$lanes$2$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_r
@@ -1388,12 +1434,14 @@ module top$lanes$2$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_r$mul
@@ -1661,14 +1709,16 @@ module top$lanes$3$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_a
@@ -1688,12 +1738,14 @@ module top$lanes$3$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_a$mul
@@ -1724,14 +1776,16 @@ module top$lanes$3$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_b
@@ -1751,12 +1805,14 @@ module top$lanes$3$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_b$mul
@@ -1787,14 +1843,16 @@ module top$lanes$3$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_g
@@ -1814,12 +1872,14 @@ module top$lanes$3$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_g$mul
@@ -1850,14 +1910,16 @@ module top$lanes$3$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_r
@@ -1877,12 +1939,14 @@ module top$lanes$3$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_r$mul

@@ -169,6 +169,11 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -396,18 +401,23 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$0$shader
@@ -739,6 +749,11 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -966,18 +981,23 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$1$shader
@@ -1309,6 +1329,11 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -1536,18 +1561,23 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$2$shader
@@ -1879,6 +1909,11 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -2106,18 +2141,23 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$3$shader

@@ -231,8 +231,8 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "gradient sign",
             "x gradient sign inverted (lane 0)",
             "top$lanes$0$feed$abc",
-            "gx_neg = xp < xm;",
-            "gx_neg = xp > xm;",
+            "gx_neg_pass = xp < xm;",
+            "gx_neg_pass = xp > xm;",
         ),
         fault(
             "wiring",

@@ -195,3 +195,22 @@ fn committed_verilog_compiles_with_iverilog() {
         assert!(ok, "{}: iverilog:\n{log}", dir.display());
     }
 }
+
+/// Every module's combinational block writes each output once a pass, so
+/// event-driven simulators settle (`cosim::export::write_once`); the
+/// design as rust-hdl emits it does not.
+#[test]
+fn committed_verilog_writes_each_output_once() {
+    let mut modules = 0;
+    for (dir, files) in designs() {
+        let text: String = files
+            .iter()
+            .map(|f| std::fs::read_to_string(dir.join(f)).unwrap())
+            .collect::<Vec<_>>()
+            .join("\n");
+        modules += cosim::export::split_modules(&text).len();
+        let twice = cosim::export::outputs_written_twice(&text);
+        assert!(twice.is_empty(), "{}: {twice:?}", dir.display());
+    }
+    assert!(modules > 100, "only {modules} modules read");
+}

@@ -2,9 +2,7 @@
 //! design made width-clean, the units the scene does not need pruned, one
 //! file per stage ([`CUBE3`]) with lint waivers, and a manifest.
 
-use super::{
-    names, prune, width_clean, write_dir, write_stage_files, LeftOut, CUBE3, ON_CHIP_BITS,
-};
+use super::{clean_verilog, names, write_dir, write_stage_files, LeftOut, CUBE3, ON_CHIP_BITS};
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::shade::Shader;
 use hdl::cube3_system::{Cube3System, Cube3SystemConfig};
@@ -96,7 +94,7 @@ pub fn cube3_verilog(
             uut.preload(m);
         }
         uut.connect_all();
-        prune(&width_clean(&generate_verilog(&uut)), &cube3_left_out(c))
+        clean_verilog(&generate_verilog(&uut), &cube3_left_out(c))
     }
     match c.pipeline.p {
         1 => emit::<1>(c, preload),

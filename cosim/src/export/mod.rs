@@ -1,6 +1,7 @@
 //! Verilog export: the pipeline of each sweep of a scene as rust-hdl emits
 //! it, made width-clean (`width_clean.rs`), with the units the scene does not
-//! need pruned (`prune.rs`), split into one file per stage with lint waivers
+//! need pruned (`prune.rs`), each module's outputs written once per pass
+//! (`write_once.rs`), split into one file per stage with lint waivers
 //! (`split.rs`), and a manifest of its parameters and of the units left out.
 
 use golden_model::cube4l::cfb::SkewedMemory;
@@ -14,6 +15,7 @@ mod cube3;
 mod prune;
 mod split;
 mod width_clean;
+mod write_once;
 
 pub use cube3::{
     cube3_config, cube3_left_out, cube3_verilog, write_cube3_export, CUBE3_BUFFER_BITS,
@@ -26,6 +28,13 @@ pub use split::{
     CUBE3, CUBE3_LINT_WAIVERS, CUBE3_STAGE_FILES, CUBE4L, LINT_WAIVERS, STAGE_FILES,
 };
 pub use width_clean::width_clean;
+pub use write_once::{outputs_written_twice, write_once};
+
+/// rust-hdl's Verilog as the kit writes it: width-clean, without `units`,
+/// and with each module's outputs written once per pass.
+pub fn clean_verilog(emitted: &str, units: &[LeftOut]) -> Result<String, String> {
+    Ok(write_once(&prune(&width_clean(emitted), units)?))
+}
 
 /// Delay-line pointer bits of every build: enough for a 256² slice at any p
 /// (see `PipelineConfig::history_bits`, which refuses larger needs).
@@ -83,7 +92,7 @@ pub fn pipeline_verilog(
         }
         uut.connect_all();
         let units = left_out(config, golden);
-        prune(&width_clean(&generate_verilog(&uut)), &units)
+        clean_verilog(&generate_verilog(&uut), &units)
     }
     let mut config = config.clone();
     config.cfb.external_memory = memory == Memory::External;

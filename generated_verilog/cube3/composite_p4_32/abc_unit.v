@@ -539,6 +539,22 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
     );
     
     // Update code
+    reg  [31:0] centre$0_pass;
+    reg  [31:0] centre$1_pass;
+    reg  [31:0] centre$2_pass;
+    reg  [31:0] centre$3_pass;
+    reg  [31:0] gx$0_pass;
+    reg  [31:0] gx$1_pass;
+    reg  [31:0] gx$2_pass;
+    reg  [31:0] gx$3_pass;
+    reg  [31:0] gy$0_pass;
+    reg  [31:0] gy$1_pass;
+    reg  [31:0] gy$2_pass;
+    reg  [31:0] gy$3_pass;
+    reg  [31:0] gz$0_pass;
+    reg  [31:0] gz$1_pass;
+    reg  [31:0] gz$2_pass;
+    reg  [31:0] gz$3_pass;
     always @(*) begin
         lanes$0$clock = clock;
         estimators$0$clock = clock;
@@ -552,15 +568,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
         estimators$0$dy_neg = dy_neg;
         estimators$0$dy_mag = dy_mag;
         estimators$0$centre = lanes$0$t111;
-        centre$0 = 'h0;
-        gx$0 = 'h0;
-        gy$0 = 'h0;
-        gz$0 = 'h0;
+        centre$0_pass = 'h0;
+        gx$0_pass = 'h0;
+        gy$0_pass = 'h0;
+        gz$0_pass = 'h0;
         if (enabled) begin
-            centre$0 = estimators$0$sample;
-            gx$0 = estimators$0$gx;
-            gy$0 = estimators$0$gy;
-            gz$0 = estimators$0$gz;
+            centre$0_pass = estimators$0$sample;
+            gx$0_pass = estimators$0$gx;
+            gy$0_pass = estimators$0$gy;
+            gz$0_pass = estimators$0$gz;
         end
         lanes$1$clock = clock;
         estimators$1$clock = clock;
@@ -574,15 +590,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
         estimators$1$dy_neg = dy_neg;
         estimators$1$dy_mag = dy_mag;
         estimators$1$centre = lanes$1$t111;
-        centre$1 = 'h0;
-        gx$1 = 'h0;
-        gy$1 = 'h0;
-        gz$1 = 'h0;
+        centre$1_pass = 'h0;
+        gx$1_pass = 'h0;
+        gy$1_pass = 'h0;
+        gz$1_pass = 'h0;
         if (enabled) begin
-            centre$1 = estimators$1$sample;
-            gx$1 = estimators$1$gx;
-            gy$1 = estimators$1$gy;
-            gz$1 = estimators$1$gz;
+            centre$1_pass = estimators$1$sample;
+            gx$1_pass = estimators$1$gx;
+            gy$1_pass = estimators$1$gy;
+            gz$1_pass = estimators$1$gz;
         end
         lanes$2$clock = clock;
         estimators$2$clock = clock;
@@ -596,15 +612,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
         estimators$2$dy_neg = dy_neg;
         estimators$2$dy_mag = dy_mag;
         estimators$2$centre = lanes$2$t111;
-        centre$2 = 'h0;
-        gx$2 = 'h0;
-        gy$2 = 'h0;
-        gz$2 = 'h0;
+        centre$2_pass = 'h0;
+        gx$2_pass = 'h0;
+        gy$2_pass = 'h0;
+        gz$2_pass = 'h0;
         if (enabled) begin
-            centre$2 = estimators$2$sample;
-            gx$2 = estimators$2$gx;
-            gy$2 = estimators$2$gy;
-            gz$2 = estimators$2$gz;
+            centre$2_pass = estimators$2$sample;
+            gx$2_pass = estimators$2$gx;
+            gy$2_pass = estimators$2$gy;
+            gz$2_pass = estimators$2$gz;
         end
         lanes$3$clock = clock;
         estimators$3$clock = clock;
@@ -618,15 +634,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
         estimators$3$dy_neg = dy_neg;
         estimators$3$dy_mag = dy_mag;
         estimators$3$centre = lanes$3$t111;
-        centre$3 = 'h0;
-        gx$3 = 'h0;
-        gy$3 = 'h0;
-        gz$3 = 'h0;
+        centre$3_pass = 'h0;
+        gx$3_pass = 'h0;
+        gy$3_pass = 'h0;
+        gz$3_pass = 'h0;
         if (enabled) begin
-            centre$3 = estimators$3$sample;
-            gx$3 = estimators$3$gx;
-            gy$3 = estimators$3$gy;
-            gz$3 = estimators$3$gz;
+            centre$3_pass = estimators$3$sample;
+            gx$3_pass = estimators$3$gx;
+            gy$3_pass = estimators$3$gy;
+            gz$3_pass = estimators$3$gz;
         end
         estimators$0$kp0 = lanes$1$t001;
         estimators$0$kp1 = lanes$1$t011;
@@ -700,6 +716,22 @@ module top$pipeline$abc(clock,sample$0,sample$1,sample$2,sample$3,dx_neg,dx_mag,
         estimators$0$km6 = lanes$3$t202;
         estimators$0$km7 = lanes$3$t212;
         estimators$0$km8 = lanes$3$t222;
+        centre$0 = centre$0_pass;
+        centre$1 = centre$1_pass;
+        centre$2 = centre$2_pass;
+        centre$3 = centre$3_pass;
+        gx$0 = gx$0_pass;
+        gx$1 = gx$1_pass;
+        gx$2 = gx$2_pass;
+        gx$3 = gx$3_pass;
+        gy$0 = gy$0_pass;
+        gy$1 = gy$1_pass;
+        gy$2 = gy$2_pass;
+        gy$3 = gy$3_pass;
+        gz$0 = gz$0_pass;
+        gz$1 = gz$1_pass;
+        gz$2 = gz$2_pass;
+        gz$3 = gz$3_pass;
     end
     
 endmodule // top$pipeline$abc
@@ -2846,16 +2878,18 @@ module top$pipeline$abc$estimators$0$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$px
@@ -2889,16 +2923,18 @@ module top$pipeline$abc$estimators$0$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$py
@@ -2934,18 +2970,20 @@ module top$pipeline$abc$estimators$0$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_x
@@ -2964,18 +3002,20 @@ module top$pipeline$abc$estimators$0$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_y
@@ -2994,18 +3034,20 @@ module top$pipeline$abc$estimators$0$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_z
@@ -5152,16 +5194,18 @@ module top$pipeline$abc$estimators$1$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$px
@@ -5195,16 +5239,18 @@ module top$pipeline$abc$estimators$1$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$py
@@ -5240,18 +5286,20 @@ module top$pipeline$abc$estimators$1$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_x
@@ -5270,18 +5318,20 @@ module top$pipeline$abc$estimators$1$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_y
@@ -5300,18 +5350,20 @@ module top$pipeline$abc$estimators$1$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_z
@@ -7458,16 +7510,18 @@ module top$pipeline$abc$estimators$2$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$2$px
@@ -7501,16 +7555,18 @@ module top$pipeline$abc$estimators$2$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$2$py
@@ -7546,18 +7602,20 @@ module top$pipeline$abc$estimators$2$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$2$sat_x
@@ -7576,18 +7634,20 @@ module top$pipeline$abc$estimators$2$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$2$sat_y
@@ -7606,18 +7666,20 @@ module top$pipeline$abc$estimators$2$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$2$sat_z
@@ -9764,16 +9826,18 @@ module top$pipeline$abc$estimators$3$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$3$px
@@ -9807,16 +9871,18 @@ module top$pipeline$abc$estimators$3$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$3$py
@@ -9852,18 +9918,20 @@ module top$pipeline$abc$estimators$3$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$3$sat_x
@@ -9882,18 +9950,20 @@ module top$pipeline$abc$estimators$3$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$3$sat_y
@@ -9912,18 +9982,20 @@ module top$pipeline$abc$estimators$3$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$3$sat_z
@@ -10353,6 +10425,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -10374,11 +10447,12 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$0
@@ -10493,6 +10567,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -10514,11 +10589,12 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$1
@@ -10633,6 +10709,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -10654,11 +10731,12 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$2
@@ -10773,6 +10851,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -10794,11 +10873,12 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$3
@@ -10913,6 +10993,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -10934,11 +11015,12 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$4
@@ -11053,6 +11135,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -11074,11 +11157,12 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$5
@@ -11193,6 +11277,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -11214,11 +11299,12 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$6
@@ -11333,6 +11419,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -11354,11 +11441,12 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$7
@@ -12152,6 +12240,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12173,11 +12262,12 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$0
@@ -12292,6 +12382,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12313,11 +12404,12 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$1
@@ -12432,6 +12524,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12453,11 +12546,12 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$2
@@ -12572,6 +12666,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12593,11 +12688,12 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$3
@@ -12712,6 +12808,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12733,11 +12830,12 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$4
@@ -12852,6 +12950,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -12873,11 +12972,12 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$5
@@ -12992,6 +13092,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -13013,11 +13114,12 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$6
@@ -13132,6 +13234,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -13153,11 +13256,12 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$7
@@ -13951,6 +14055,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -13972,11 +14077,12 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$0
@@ -14091,6 +14197,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14112,11 +14219,12 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$1
@@ -14231,6 +14339,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14252,11 +14361,12 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$2
@@ -14371,6 +14481,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14392,11 +14503,12 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$3
@@ -14511,6 +14623,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14532,11 +14645,12 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$4
@@ -14651,6 +14765,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14672,11 +14787,12 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$5
@@ -14791,6 +14907,7 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14812,11 +14929,12 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$6
@@ -14931,6 +15049,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -14952,11 +15071,12 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$7
@@ -15750,6 +15870,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -15771,11 +15892,12 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$0
@@ -15890,6 +16012,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -15911,11 +16034,12 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$1
@@ -16030,6 +16154,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16051,11 +16176,12 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$2
@@ -16170,6 +16296,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16191,11 +16318,12 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$3
@@ -16310,6 +16438,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16331,11 +16460,12 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$4
@@ -16450,6 +16580,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16471,11 +16602,12 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$5
@@ -16590,6 +16722,7 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16611,11 +16744,12 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$6
@@ -16730,6 +16864,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -16751,11 +16886,12 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$7

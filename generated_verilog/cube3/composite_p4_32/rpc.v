@@ -384,6 +384,7 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_r$2,leaf_r$3,leaf_g$0,leaf_
     );
     
     // Update code
+    reg  [31:0] pixel_r_pass;
     always @(*) begin
         flags_q$clock = clock;
         flags_q$d = flags_q$q;
@@ -513,13 +514,14 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_r$2,leaf_r$3,leaf_g$0,leaf_
         node_flags_q$3$d = root_flags;
         done = node_flags_q$3$q['h1];
         has_sample = nodes$3$out_valid;
-        pixel_r = nodes$3$out_r;
+        pixel_r_pass = nodes$3$out_r;
         pixel_g = nodes$3$out_g;
         pixel_b = nodes$3$out_b;
         pixel_a = nodes$3$out_a;
         if (~nodes$3$out_valid) begin
-            pixel_r = reset_r;
+            pixel_r_pass = reset_r;
         end
+        pixel_r = pixel_r_pass;
     end
     
 endmodule // top$pipeline$rpc
@@ -1146,14 +1148,16 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_a
@@ -1173,12 +1177,14 @@ module top$pipeline$rpc$nodes$0$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_a$mul
@@ -1209,14 +1215,16 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_b
@@ -1236,12 +1244,14 @@ module top$pipeline$rpc$nodes$0$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_b$mul
@@ -1272,14 +1282,16 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_g
@@ -1299,12 +1311,14 @@ module top$pipeline$rpc$nodes$0$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_g$mul
@@ -1335,14 +1349,16 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_r
@@ -1362,12 +1378,14 @@ module top$pipeline$rpc$nodes$0$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_r$mul
@@ -1654,14 +1672,16 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_a
@@ -1681,12 +1701,14 @@ module top$pipeline$rpc$nodes$1$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_a$mul
@@ -1717,14 +1739,16 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_b
@@ -1744,12 +1768,14 @@ module top$pipeline$rpc$nodes$1$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_b$mul
@@ -1780,14 +1806,16 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_g
@@ -1807,12 +1835,14 @@ module top$pipeline$rpc$nodes$1$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_g$mul
@@ -1843,14 +1873,16 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_r
@@ -1870,12 +1902,14 @@ module top$pipeline$rpc$nodes$1$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_r$mul
@@ -2162,14 +2196,16 @@ module top$pipeline$rpc$nodes$2$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_a
@@ -2189,12 +2225,14 @@ module top$pipeline$rpc$nodes$2$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_a$mul
@@ -2225,14 +2263,16 @@ module top$pipeline$rpc$nodes$2$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_b
@@ -2252,12 +2292,14 @@ module top$pipeline$rpc$nodes$2$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_b$mul
@@ -2288,14 +2330,16 @@ module top$pipeline$rpc$nodes$2$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_g
@@ -2315,12 +2359,14 @@ module top$pipeline$rpc$nodes$2$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_g$mul
@@ -2351,14 +2397,16 @@ module top$pipeline$rpc$nodes$2$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_r
@@ -2378,12 +2426,14 @@ module top$pipeline$rpc$nodes$2$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_r$mul
@@ -2670,14 +2720,16 @@ module top$pipeline$rpc$nodes$3$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_a
@@ -2697,12 +2749,14 @@ module top$pipeline$rpc$nodes$3$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_a$mul
@@ -2733,14 +2787,16 @@ module top$pipeline$rpc$nodes$3$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_b
@@ -2760,12 +2816,14 @@ module top$pipeline$rpc$nodes$3$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_b$mul
@@ -2796,14 +2854,16 @@ module top$pipeline$rpc$nodes$3$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_g
@@ -2823,12 +2883,14 @@ module top$pipeline$rpc$nodes$3$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_g$mul
@@ -2859,14 +2921,16 @@ module top$pipeline$rpc$nodes$3$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_r
@@ -2886,12 +2950,14 @@ module top$pipeline$rpc$nodes$3$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_r$mul

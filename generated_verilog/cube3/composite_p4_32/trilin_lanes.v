@@ -669,6 +669,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -690,11 +691,12 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$0
@@ -809,6 +811,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -830,11 +833,12 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$1
@@ -949,6 +953,7 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -970,11 +975,12 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$2
@@ -1089,6 +1095,7 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1110,11 +1117,12 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$3
@@ -1365,6 +1373,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1386,11 +1395,12 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$0
@@ -1505,6 +1515,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1526,11 +1537,12 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$1
@@ -1645,6 +1657,7 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1666,11 +1679,12 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$2
@@ -1785,6 +1799,7 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1806,11 +1821,12 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$3

@@ -384,6 +384,7 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_r$2,leaf_r$3,leaf_g$0,leaf_
     );
     
     // Update code
+    reg  [31:0] pixel_r_pass;
     always @(*) begin
         flags_q$clock = clock;
         flags_q$d = flags_q$q;
@@ -513,13 +514,14 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_r$2,leaf_r$3,leaf_g$0,leaf_
         node_flags_q$3$d = root_flags;
         done = node_flags_q$3$q['h1];
         has_sample = nodes$3$out_valid;
-        pixel_r = nodes$3$out_r;
+        pixel_r_pass = nodes$3$out_r;
         pixel_g = nodes$3$out_g;
         pixel_b = nodes$3$out_b;
         pixel_a = nodes$3$out_a;
         if (~nodes$3$out_valid) begin
-            pixel_r = reset_r;
+            pixel_r_pass = reset_r;
         end
+        pixel_r = pixel_r_pass;
     end
     
 endmodule // top$pipeline$rpc

@@ -334,6 +334,11 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     );
     
     // Update code
+    reg  [31:0] pixel_r_pass;
+    reg  [15:0] pixel_g_pass;
+    reg  [15:0] pixel_b_pass;
+    reg  [15:0] pixel_a_pass;
+    reg  has_sample_pass;
     always @(*) begin
         control$clock = clock;
         lanes$clock = clock;
@@ -491,18 +496,23 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         cast_q$d = (cast_q$q << 'h1) | 8'(rpc_flags_q$q['hb]);
         pixel_cast = |(cast_q$q & cast_bit);
         done = rpc$done;
-        pixel_r = 'h0;
-        pixel_g = 'h0;
-        pixel_b = 'h0;
-        pixel_a = 'h0;
-        has_sample = 1'b0;
+        pixel_r_pass = 'h0;
+        pixel_g_pass = 'h0;
+        pixel_b_pass = 'h0;
+        pixel_a_pass = 'h0;
+        has_sample_pass = 1'b0;
         if (pixel_cast) begin
-            pixel_r = rpc$pixel_r;
-            pixel_g = rpc$pixel_g;
-            pixel_b = rpc$pixel_b;
-            pixel_a = rpc$pixel_a;
-            has_sample = rpc$has_sample;
+            pixel_r_pass = rpc$pixel_r;
+            pixel_g_pass = rpc$pixel_g;
+            pixel_b_pass = rpc$pixel_b;
+            pixel_a_pass = rpc$pixel_a;
+            has_sample_pass = rpc$has_sample;
         end
+        pixel_r = pixel_r_pass;
+        pixel_g = pixel_g_pass;
+        pixel_b = pixel_b_pass;
+        pixel_a = pixel_a_pass;
+        has_sample = has_sample_pass;
     end
     
 endmodule // top$pipeline
@@ -576,6 +586,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -597,11 +608,12 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$flags_line

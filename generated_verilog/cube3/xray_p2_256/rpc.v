@@ -210,6 +210,7 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_g$0,leaf_g$1,leaf_b$0,leaf_
     );
     
     // Update code
+    reg  [31:0] pixel_r_pass;
     always @(*) begin
         flags_q$clock = clock;
         flags_q$d = flags_q$q;
@@ -281,13 +282,14 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_g$0,leaf_g$1,leaf_b$0,leaf_
         node_flags_q$1$d = root_flags;
         done = node_flags_q$1$q['h1];
         has_sample = nodes$1$out_valid;
-        pixel_r = nodes$1$out_r;
+        pixel_r_pass = nodes$1$out_r;
         pixel_g = nodes$1$out_g;
         pixel_b = nodes$1$out_b;
         pixel_a = nodes$1$out_a;
         if (~nodes$1$out_valid) begin
-            pixel_r = reset_r;
+            pixel_r_pass = reset_r;
         end
+        pixel_r = pixel_r_pass;
     end
     
 endmodule // top$pipeline$rpc

@@ -606,6 +606,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -778,12 +779,12 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -802,6 +803,7 @@ module top$cfb$lanes$0(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$0
@@ -1358,6 +1360,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
     );
     
     // Update code
+    reg  [15:0] value_pass;
     always @(*) begin
         x_q$clock = clock;
         y_q$clock = clock;
@@ -1530,12 +1533,12 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value = memory$read_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value = ext_data;
+            value_pass = ext_data;
         end
         if (pad_q$q) begin
-            value = 'h0;
+            value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
@@ -1554,6 +1557,7 @@ module top$cfb$lanes$1(clock,n_s,n_beam,n_b,load_enable,load_module,load_address
         dy_mag = dym_q$q;
         invalid = inval_q$q;
         halo = halo_q$q;
+        value = value_pass;
     end
     
 endmodule // top$cfb$lanes$1

@@ -194,14 +194,16 @@ module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_a
@@ -221,12 +223,14 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
@@ -257,14 +261,16 @@ module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_b
@@ -284,12 +290,14 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
@@ -320,14 +328,16 @@ module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_g
@@ -347,12 +357,14 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
@@ -383,14 +395,16 @@ module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_r
@@ -410,12 +424,14 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
@@ -683,14 +699,16 @@ module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_a
@@ -710,12 +728,14 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
@@ -746,14 +766,16 @@ module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_b
@@ -773,12 +795,14 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
@@ -809,14 +833,16 @@ module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_g
@@ -836,12 +862,14 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
@@ -872,14 +900,16 @@ module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_r
@@ -899,12 +929,14 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul

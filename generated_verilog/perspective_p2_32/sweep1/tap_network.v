@@ -968,6 +968,7 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -989,11 +990,12 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$taps$rows$beam0
@@ -1108,6 +1110,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1129,11 +1132,12 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$taps$rows$beam1
@@ -1248,6 +1252,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -1269,11 +1274,12 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$0$taps$rows$ring
@@ -1576,6 +1582,7 @@ module top$lanes$0$taps$t0(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -1588,11 +1595,12 @@ module top$lanes$0$taps$t0(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t0
@@ -1678,6 +1686,7 @@ module top$lanes$0$taps$t1(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -1696,11 +1705,12 @@ module top$lanes$0$taps$t1(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t1
@@ -1779,17 +1789,19 @@ module top$lanes$0$taps$t2(clock,read,use_prev,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
         stream = read;
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t2
@@ -1858,6 +1870,7 @@ module top$lanes$0$taps$t3(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -1876,11 +1889,12 @@ module top$lanes$0$taps$t3(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t3
@@ -1959,17 +1973,19 @@ module top$lanes$0$taps$t4(clock,read,use_prev,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
         stream = read;
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t4
@@ -2049,6 +2065,7 @@ module top$lanes$0$taps$t5(clock,read,use_prev,link_in$0,link_in$1,link_in$2,pas
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -2073,11 +2090,12 @@ module top$lanes$0$taps$t5(clock,read,use_prev,link_in$0,link_in$1,link_in$2,pas
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t5
@@ -2186,6 +2204,7 @@ module top$lanes$0$taps$t6(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -2198,11 +2217,12 @@ module top$lanes$0$taps$t6(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t6
@@ -2277,6 +2297,7 @@ module top$lanes$0$taps$t7(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -2289,11 +2310,12 @@ module top$lanes$0$taps$t7(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t7
@@ -2368,6 +2390,7 @@ module top$lanes$0$taps$t8(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -2380,11 +2403,12 @@ module top$lanes$0$taps$t8(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$0$taps$t8
@@ -3392,6 +3416,7 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3413,11 +3438,12 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$taps$rows$beam0
@@ -3532,6 +3558,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3553,11 +3580,12 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$taps$rows$beam1
@@ -3672,6 +3700,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -3693,11 +3722,12 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$lanes$1$taps$rows$ring
@@ -4000,6 +4030,7 @@ module top$lanes$1$taps$t0(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4012,11 +4043,12 @@ module top$lanes$1$taps$t0(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t0
@@ -4102,6 +4134,7 @@ module top$lanes$1$taps$t1(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4120,11 +4153,12 @@ module top$lanes$1$taps$t1(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t1
@@ -4203,17 +4237,19 @@ module top$lanes$1$taps$t2(clock,read,use_prev,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
         stream = read;
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t2
@@ -4282,6 +4318,7 @@ module top$lanes$1$taps$t3(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4300,11 +4337,12 @@ module top$lanes$1$taps$t3(clock,read,use_prev,link_in$0,link_in$1,pass$0,pass$1
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t3
@@ -4383,17 +4421,19 @@ module top$lanes$1$taps$t4(clock,read,use_prev,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
         stream = read;
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t4
@@ -4473,6 +4513,7 @@ module top$lanes$1$taps$t5(clock,read,use_prev,link_in$0,link_in$1,link_in$2,pas
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4497,11 +4538,12 @@ module top$lanes$1$taps$t5(clock,read,use_prev,link_in$0,link_in$1,link_in$2,pas
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t5
@@ -4610,6 +4652,7 @@ module top$lanes$1$taps$t6(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4622,11 +4665,12 @@ module top$lanes$1$taps$t6(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t6
@@ -4701,6 +4745,7 @@ module top$lanes$1$taps$t7(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4713,11 +4758,12 @@ module top$lanes$1$taps$t7(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t7
@@ -4792,6 +4838,7 @@ module top$lanes$1$taps$t8(clock,read,use_prev,link_in$0,pass$0,a);
     );
     
     // Update code
+    reg  [63:0] a_pass;
     always @(*) begin
         prev$clock = clock;
         prev$d = prev$q;
@@ -4804,11 +4851,12 @@ module top$lanes$1$taps$t8(clock,read,use_prev,link_in$0,pass$0,a);
         end
         prev$d = stream;
         if (use_prev) begin
-            a = prev$q;
+            a_pass = prev$q;
         end
         else begin
-            a = stream;
+            a_pass = stream;
         end
+        a = a_pass;
     end
     
 endmodule // top$lanes$1$taps$t8

@@ -14,10 +14,12 @@ module top$cfb$lanes$0$div_x(num,den,q,overflow);
     reg  [31:0] quo;
     
     // Update code
+    reg  [31:0] q_pass;
+    reg  overflow_pass;
     always @(*) begin
         rem = num;
         quo = 'h0;
-        overflow = num >= (den << 'h11);
+        overflow_pass = num >= (den << 'h11);
         if (rem >= (den << ('h10 - 0))) begin
             rem = rem - (den << ('h10 - 0));
             quo = quo | (32'('h1) << ('h10 - 0));
@@ -86,11 +88,13 @@ module top$cfb$lanes$0$div_x(num,den,q,overflow);
             rem = rem - (den << ('h10 - 16));
             quo = quo | (32'('h1) << ('h10 - 16));
         end
-        q = quo;
+        q_pass = quo;
         if (~enabled) begin
-            q = 'h0;
-            overflow = 1'b0;
+            q_pass = 'h0;
+            overflow_pass = 1'b0;
         end
+        q = q_pass;
+        overflow = overflow_pass;
     end
     
 endmodule // top$cfb$lanes$0$div_x
@@ -110,10 +114,12 @@ module top$cfb$lanes$0$div_y(num,den,q,overflow);
     reg  [31:0] quo;
     
     // Update code
+    reg  [31:0] q_pass;
+    reg  overflow_pass;
     always @(*) begin
         rem = num;
         quo = 'h0;
-        overflow = num >= (den << 'h11);
+        overflow_pass = num >= (den << 'h11);
         if (rem >= (den << ('h10 - 0))) begin
             rem = rem - (den << ('h10 - 0));
             quo = quo | (32'('h1) << ('h10 - 0));
@@ -182,11 +188,13 @@ module top$cfb$lanes$0$div_y(num,den,q,overflow);
             rem = rem - (den << ('h10 - 16));
             quo = quo | (32'('h1) << ('h10 - 16));
         end
-        q = quo;
+        q_pass = quo;
         if (~enabled) begin
-            q = 'h0;
-            overflow = 1'b0;
+            q_pass = 'h0;
+            overflow_pass = 1'b0;
         end
+        q = q_pass;
+        overflow = overflow_pass;
     end
     
 endmodule // top$cfb$lanes$0$div_y
@@ -206,10 +214,12 @@ module top$cfb$lanes$1$div_x(num,den,q,overflow);
     reg  [31:0] quo;
     
     // Update code
+    reg  [31:0] q_pass;
+    reg  overflow_pass;
     always @(*) begin
         rem = num;
         quo = 'h0;
-        overflow = num >= (den << 'h11);
+        overflow_pass = num >= (den << 'h11);
         if (rem >= (den << ('h10 - 0))) begin
             rem = rem - (den << ('h10 - 0));
             quo = quo | (32'('h1) << ('h10 - 0));
@@ -278,11 +288,13 @@ module top$cfb$lanes$1$div_x(num,den,q,overflow);
             rem = rem - (den << ('h10 - 16));
             quo = quo | (32'('h1) << ('h10 - 16));
         end
-        q = quo;
+        q_pass = quo;
         if (~enabled) begin
-            q = 'h0;
-            overflow = 1'b0;
+            q_pass = 'h0;
+            overflow_pass = 1'b0;
         end
+        q = q_pass;
+        overflow = overflow_pass;
     end
     
 endmodule // top$cfb$lanes$1$div_x
@@ -302,10 +314,12 @@ module top$cfb$lanes$1$div_y(num,den,q,overflow);
     reg  [31:0] quo;
     
     // Update code
+    reg  [31:0] q_pass;
+    reg  overflow_pass;
     always @(*) begin
         rem = num;
         quo = 'h0;
-        overflow = num >= (den << 'h11);
+        overflow_pass = num >= (den << 'h11);
         if (rem >= (den << ('h10 - 0))) begin
             rem = rem - (den << ('h10 - 0));
             quo = quo | (32'('h1) << ('h10 - 0));
@@ -374,11 +388,13 @@ module top$cfb$lanes$1$div_y(num,den,q,overflow);
             rem = rem - (den << ('h10 - 16));
             quo = quo | (32'('h1) << ('h10 - 16));
         end
-        q = quo;
+        q_pass = quo;
         if (~enabled) begin
-            q = 'h0;
-            overflow = 1'b0;
+            q_pass = 'h0;
+            overflow_pass = 1'b0;
         end
+        q = q_pass;
+        overflow = overflow_pass;
     end
     
 endmodule // top$cfb$lanes$1$div_y

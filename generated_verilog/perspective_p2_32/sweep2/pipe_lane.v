@@ -2932,6 +2932,7 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     // Sub module instances
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -2955,10 +2956,10 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -2975,6 +2976,7 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$0$feed
@@ -5912,6 +5914,7 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     // Sub module instances
     
     // Update code
+    reg  [15:0] o_value_pass;
     always @(*) begin
         abc$clock = clock;
         abc$value = value;
@@ -5935,10 +5938,10 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         gz_neg = abc$gz_neg;
         gz_mag = abc$gz_mag;
         if (use_gradient) begin
-            o_value = abc$o_value;
+            o_value_pass = abc$o_value;
         end
         else begin
-            o_value = value;
+            o_value_pass = value;
         end
         o_valid = beat_valid & ~halo;
         o_x = x;
@@ -5955,6 +5958,7 @@ module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
         o_dx_mag = dx_mag;
         o_dy_neg = dy_neg;
         o_dy_mag = dy_mag;
+        o_value = o_value_pass;
     end
     
 endmodule // top$lanes$1$feed

@@ -203,6 +203,11 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -430,18 +435,23 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$0$shader
@@ -512,12 +522,14 @@ module top$lanes$0$shader$lit_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_b
@@ -537,12 +549,14 @@ module top$lanes$0$shader$lit_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_g
@@ -562,12 +576,14 @@ module top$lanes$0$shader$lit_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_r
@@ -856,12 +872,14 @@ module top$lanes$0$shader$mul_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$mul_b
@@ -881,12 +899,14 @@ module top$lanes$0$shader$mul_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$mul_g
@@ -906,12 +926,14 @@ module top$lanes$0$shader$mul_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$mul_r
@@ -1226,6 +1248,11 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -1453,18 +1480,23 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$lanes$1$shader
@@ -1535,12 +1567,14 @@ module top$lanes$1$shader$lit_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_b
@@ -1560,12 +1594,14 @@ module top$lanes$1$shader$lit_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_g
@@ -1585,12 +1621,14 @@ module top$lanes$1$shader$lit_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_r
@@ -1879,12 +1917,14 @@ module top$lanes$1$shader$mul_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$mul_b
@@ -1904,12 +1944,14 @@ module top$lanes$1$shader$mul_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$mul_g
@@ -1929,12 +1971,14 @@ module top$lanes$1$shader$mul_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$mul_r

@@ -374,6 +374,12 @@ module top$fetch(clock,start,valid,cur$0,cur$1,next$0,next$1,ext_addr$0,ext_addr
     );
     
     // Update code
+    reg  [15:0] cur$0_pass;
+    reg  [15:0] cur$1_pass;
+    reg  [15:0] next$0_pass;
+    reg  [15:0] next$1_pass;
+    reg  [31:0] ext_addr$0_pass;
+    reg  [31:0] ext_addr$1_pass;
     always @(*) begin
         plane_q$clock = clock;
         write_q$clock = clock;
@@ -438,12 +444,12 @@ module top$fetch(clock,start,valid,cur$0,cur$1,next$0,next$1,ext_addr$0,ext_addr
         memory$0$write_address = load_address[('h0)+:(16)];
         memory$0$write_data = load_data;
         memory$0$read_address = 'h0;
-        ext_addr$0 = 'h0;
+        ext_addr$0_pass = 'h0;
         if (reads$0 & ~external) begin
             memory$0$read_address = address$0[('h0)+:(16)];
         end
         if (reads$0 & external) begin
-            ext_addr$0 = address$0;
+            ext_addr$0_pass = address$0;
         end
         word$0 = memory$0$read_data;
         if (external) begin
@@ -465,12 +471,12 @@ module top$fetch(clock,start,valid,cur$0,cur$1,next$0,next$1,ext_addr$0,ext_addr
         memory$1$write_address = load_address[('h0)+:(16)];
         memory$1$write_data = load_data;
         memory$1$read_address = 'h0;
-        ext_addr$1 = 'h0;
+        ext_addr$1_pass = 'h0;
         if (reads$1 & ~external) begin
             memory$1$read_address = address$1[('h0)+:(16)];
         end
         if (reads$1 & external) begin
-            ext_addr$1 = address$1;
+            ext_addr$1_pass = address$1;
         end
         word$1 = memory$1$read_data;
         if (external) begin
@@ -566,91 +572,97 @@ module top$fetch(clock,start,valid,cur$0,cur$1,next$0,next$1,ext_addr$0,ext_addr
         buffer0$1$read_address = read_address[('h0)+:(16)];
         buffer1$1$read_address = read_address[('h0)+:(16)];
         buffer2$1$read_address = read_address[('h0)+:(16)];
-        cur$0 = 'h0;
-        next$0 = 'h0;
+        cur$0_pass = 'h0;
+        next$0_pass = 'h0;
         if (((index$0 + lane_q$q) & mask) == index$0) begin
             if (cur_q$q == buffer_id$0) begin
-                cur$0 = buffer0$0$read_data;
+                cur$0_pass = buffer0$0$read_data;
             end
             if (cur_q$q == buffer_id$1) begin
-                cur$0 = buffer1$0$read_data;
+                cur$0_pass = buffer1$0$read_data;
             end
             if (cur_q$q == buffer_id$2) begin
-                cur$0 = buffer2$0$read_data;
+                cur$0_pass = buffer2$0$read_data;
             end
             if (next_q$q == buffer_id$0) begin
-                next$0 = buffer0$0$read_data;
+                next$0_pass = buffer0$0$read_data;
             end
             if (next_q$q == buffer_id$1) begin
-                next$0 = buffer1$0$read_data;
+                next$0_pass = buffer1$0$read_data;
             end
             if (next_q$q == buffer_id$2) begin
-                next$0 = buffer2$0$read_data;
+                next$0_pass = buffer2$0$read_data;
             end
         end
         if (((index$0 + lane_q$q) & mask) == index$1) begin
             if (cur_q$q == buffer_id$0) begin
-                cur$0 = buffer0$1$read_data;
+                cur$0_pass = buffer0$1$read_data;
             end
             if (cur_q$q == buffer_id$1) begin
-                cur$0 = buffer1$1$read_data;
+                cur$0_pass = buffer1$1$read_data;
             end
             if (cur_q$q == buffer_id$2) begin
-                cur$0 = buffer2$1$read_data;
+                cur$0_pass = buffer2$1$read_data;
             end
             if (next_q$q == buffer_id$0) begin
-                next$0 = buffer0$1$read_data;
+                next$0_pass = buffer0$1$read_data;
             end
             if (next_q$q == buffer_id$1) begin
-                next$0 = buffer1$1$read_data;
+                next$0_pass = buffer1$1$read_data;
             end
             if (next_q$q == buffer_id$2) begin
-                next$0 = buffer2$1$read_data;
+                next$0_pass = buffer2$1$read_data;
             end
         end
-        cur$1 = 'h0;
-        next$1 = 'h0;
+        cur$1_pass = 'h0;
+        next$1_pass = 'h0;
         if (((index$1 + lane_q$q) & mask) == index$0) begin
             if (cur_q$q == buffer_id$0) begin
-                cur$1 = buffer0$0$read_data;
+                cur$1_pass = buffer0$0$read_data;
             end
             if (cur_q$q == buffer_id$1) begin
-                cur$1 = buffer1$0$read_data;
+                cur$1_pass = buffer1$0$read_data;
             end
             if (cur_q$q == buffer_id$2) begin
-                cur$1 = buffer2$0$read_data;
+                cur$1_pass = buffer2$0$read_data;
             end
             if (next_q$q == buffer_id$0) begin
-                next$1 = buffer0$0$read_data;
+                next$1_pass = buffer0$0$read_data;
             end
             if (next_q$q == buffer_id$1) begin
-                next$1 = buffer1$0$read_data;
+                next$1_pass = buffer1$0$read_data;
             end
             if (next_q$q == buffer_id$2) begin
-                next$1 = buffer2$0$read_data;
+                next$1_pass = buffer2$0$read_data;
             end
         end
         if (((index$1 + lane_q$q) & mask) == index$1) begin
             if (cur_q$q == buffer_id$0) begin
-                cur$1 = buffer0$1$read_data;
+                cur$1_pass = buffer0$1$read_data;
             end
             if (cur_q$q == buffer_id$1) begin
-                cur$1 = buffer1$1$read_data;
+                cur$1_pass = buffer1$1$read_data;
             end
             if (cur_q$q == buffer_id$2) begin
-                cur$1 = buffer2$1$read_data;
+                cur$1_pass = buffer2$1$read_data;
             end
             if (next_q$q == buffer_id$0) begin
-                next$1 = buffer0$1$read_data;
+                next$1_pass = buffer0$1$read_data;
             end
             if (next_q$q == buffer_id$1) begin
-                next$1 = buffer1$1$read_data;
+                next$1_pass = buffer1$1$read_data;
             end
             if (next_q$q == buffer_id$2) begin
-                next$1 = buffer2$1$read_data;
+                next$1_pass = buffer2$1$read_data;
             end
         end
         valid = read_q$q;
+        cur$0 = cur$0_pass;
+        cur$1 = cur$1_pass;
+        next$0 = next$0_pass;
+        next$1 = next$1_pass;
+        ext_addr$0 = ext_addr$0_pass;
+        ext_addr$1 = ext_addr$1_pass;
     end
     
 endmodule // top$fetch
@@ -884,31 +896,43 @@ module top$fetch$group(chunk,plane_count,plane,first_ray,x$0,x$1,holds$0,holds$1
     );
     
     // Update code
+    reg  [15:0] plane_pass;
+    reg  [15:0] first_ray_pass;
+    reg  [15:0] x$0_pass;
+    reg  [15:0] x$1_pass;
+    reg  holds$0_pass;
+    reg  holds$1_pass;
     always @(*) begin
         pos_x$address = plane_count[('h0)+:(10)];
         groups$address = chunk;
         chunk_ray = chunk << shift;
         x0 = u0 + pos_x$data + chunk_ray;
-        plane = plane_count;
-        first_ray = chunk_ray;
+        plane_pass = plane_count;
+        first_ray_pass = chunk_ray;
         if (perspective) begin
-            plane = groups$data[('h0)+:(16)];
-            first_ray = groups$data[('h10)+:(16)];
+            plane_pass = groups$data[('h0)+:(16)];
+            first_ray_pass = groups$data[('h10)+:(16)];
         end
         group_x$0$address = chunk;
-        x$0 = x0 + index$0;
-        holds$0 = 1'b1;
+        x$0_pass = x0 + index$0;
+        holds$0_pass = 1'b1;
         if (perspective) begin
-            x$0 = group_x$0$data[('h0)+:(16)];
-            holds$0 = group_x$0$data['h10];
+            x$0_pass = group_x$0$data[('h0)+:(16)];
+            holds$0_pass = group_x$0$data['h10];
         end
         group_x$1$address = chunk;
-        x$1 = x0 + index$1;
-        holds$1 = 1'b1;
+        x$1_pass = x0 + index$1;
+        holds$1_pass = 1'b1;
         if (perspective) begin
-            x$1 = group_x$1$data[('h0)+:(16)];
-            holds$1 = group_x$1$data['h10];
+            x$1_pass = group_x$1$data[('h0)+:(16)];
+            holds$1_pass = group_x$1$data['h10];
         end
+        plane = plane_pass;
+        first_ray = first_ray_pass;
+        x$0 = x$0_pass;
+        x$1 = x$1_pass;
+        holds$0 = holds$0_pass;
+        holds$1 = holds$1_pass;
     end
     
 endmodule // top$fetch$group

@@ -210,6 +210,7 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_g$0,leaf_g$1,leaf_b$0,leaf_
     );
     
     // Update code
+    reg  [31:0] pixel_r_pass;
     always @(*) begin
         flags_q$clock = clock;
         flags_q$d = flags_q$q;
@@ -281,13 +282,14 @@ module top$pipeline$rpc(clock,leaf_r$0,leaf_r$1,leaf_g$0,leaf_g$1,leaf_b$0,leaf_
         node_flags_q$1$d = root_flags;
         done = node_flags_q$1$q['h1];
         has_sample = nodes$1$out_valid;
-        pixel_r = nodes$1$out_r;
+        pixel_r_pass = nodes$1$out_r;
         pixel_g = nodes$1$out_g;
         pixel_b = nodes$1$out_b;
         pixel_a = nodes$1$out_a;
         if (~nodes$1$out_valid) begin
-            pixel_r = reset_r;
+            pixel_r_pass = reset_r;
         end
+        pixel_r = pixel_r_pass;
     end
     
 endmodule // top$pipeline$rpc
@@ -710,14 +712,16 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_a
@@ -737,12 +741,14 @@ module top$pipeline$rpc$nodes$0$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_a$mul
@@ -773,14 +779,16 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_b
@@ -800,12 +808,14 @@ module top$pipeline$rpc$nodes$0$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_b$mul
@@ -836,14 +846,16 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_g
@@ -863,12 +875,14 @@ module top$pipeline$rpc$nodes$0$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_g$mul
@@ -899,14 +913,16 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_r
@@ -926,12 +942,14 @@ module top$pipeline$rpc$nodes$0$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_r$mul
@@ -1218,14 +1236,16 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_a
@@ -1245,12 +1265,14 @@ module top$pipeline$rpc$nodes$1$ch_a$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_a$mul
@@ -1281,14 +1303,16 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_b
@@ -1308,12 +1332,14 @@ module top$pipeline$rpc$nodes$1$ch_b$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_b$mul
@@ -1344,14 +1370,16 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_g
@@ -1371,12 +1399,14 @@ module top$pipeline$rpc$nodes$1$ch_g$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_g$mul
@@ -1407,14 +1437,16 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     );
     
     // Update code
+    reg  [15:0] result_pass;
     always @(*) begin
         mul$a = m - front_alpha;
         mul$b = back;
         sum = 32'(front) + 32'(mul$y);
-        result = 16'(sum);
+        result_pass = 16'(sum);
         if (sum > 32'(m)) begin
-            result = m;
+            result_pass = m;
         end
+        result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_r
@@ -1434,12 +1466,14 @@ module top$pipeline$rpc$nodes$1$ch_r$mul(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_r$mul

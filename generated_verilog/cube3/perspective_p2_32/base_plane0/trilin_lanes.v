@@ -377,6 +377,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -398,11 +399,12 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$0
@@ -517,6 +519,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -538,11 +541,12 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$cur_line$1
@@ -725,6 +729,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -746,11 +751,12 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$0
@@ -865,6 +871,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -886,11 +893,12 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$lanes$next_line$1

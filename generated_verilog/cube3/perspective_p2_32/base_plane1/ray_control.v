@@ -399,6 +399,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -420,11 +421,12 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$control$increments$centre_line
@@ -622,6 +624,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -643,11 +646,12 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$control$late

@@ -207,6 +207,11 @@ module top$pipeline$shade$0(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -434,18 +439,23 @@ module top$pipeline$shade$0(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$pipeline$shade$0
@@ -516,12 +526,14 @@ module top$pipeline$shade$0$lit_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_b
@@ -541,12 +553,14 @@ module top$pipeline$shade$0$lit_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_g
@@ -566,12 +580,14 @@ module top$pipeline$shade$0$lit_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_r
@@ -860,12 +876,14 @@ module top$pipeline$shade$0$mul_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$mul_b
@@ -885,12 +903,14 @@ module top$pipeline$shade$0$mul_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$mul_g
@@ -910,12 +930,14 @@ module top$pipeline$shade$0$mul_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$mul_r
@@ -34015,6 +34037,11 @@ module top$pipeline$shade$1(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_
     );
     
     // Update code
+    reg  [31:0] r_pass;
+    reg  [15:0] g_pass;
+    reg  [15:0] b_pass;
+    reg  [15:0] a_pass;
+    reg  valid_pass;
     always @(*) begin
         r_q$clock = clock;
         g_q$clock = clock;
@@ -34242,18 +34269,23 @@ module top$pipeline$shade$1(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_
         if (xray) begin
             valid_q$d = 1'b1;
         end
-        r = 'h0;
-        g = 'h0;
-        b = 'h0;
-        a = 'h0;
-        valid = 1'b0;
+        r_pass = 'h0;
+        g_pass = 'h0;
+        b_pass = 'h0;
+        a_pass = 'h0;
+        valid_pass = 1'b0;
         if (enabled) begin
-            r = 32'(r_q$q);
-            g = g_q$q;
-            b = b_q$q;
-            a = a_q$q;
-            valid = valid_q$q;
+            r_pass = 32'(r_q$q);
+            g_pass = g_q$q;
+            b_pass = b_q$q;
+            a_pass = a_q$q;
+            valid_pass = valid_q$q;
         end
+        r = r_pass;
+        g = g_pass;
+        b = b_pass;
+        a = a_pass;
+        valid = valid_pass;
     end
     
 endmodule // top$pipeline$shade$1
@@ -34324,12 +34356,14 @@ module top$pipeline$shade$1$lit_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_b
@@ -34349,12 +34383,14 @@ module top$pipeline$shade$1$lit_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_g
@@ -34374,12 +34410,14 @@ module top$pipeline$shade$1$lit_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_r
@@ -34668,12 +34706,14 @@ module top$pipeline$shade$1$mul_b(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$mul_b
@@ -34693,12 +34733,14 @@ module top$pipeline$shade$1$mul_g(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$mul_g
@@ -34718,12 +34760,14 @@ module top$pipeline$shade$1$mul_r(a,b,y);
     reg  [31:0] t;
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         t = a * b + half;
-        y = 16'((t + (t >> shift)) >> shift);
+        y_pass = 16'((t + (t >> shift)) >> shift);
         if (~enabled) begin
-            y = 'h0;
+            y_pass = 'h0;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$mul_r

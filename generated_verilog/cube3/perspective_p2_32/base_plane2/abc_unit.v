@@ -277,6 +277,14 @@ module top$pipeline$abc(clock,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,cent
     );
     
     // Update code
+    reg  [31:0] centre$0_pass;
+    reg  [31:0] centre$1_pass;
+    reg  [31:0] gx$0_pass;
+    reg  [31:0] gx$1_pass;
+    reg  [31:0] gy$0_pass;
+    reg  [31:0] gy$1_pass;
+    reg  [31:0] gz$0_pass;
+    reg  [31:0] gz$1_pass;
     always @(*) begin
         lanes$0$clock = clock;
         estimators$0$clock = clock;
@@ -290,15 +298,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,cent
         estimators$0$dy_neg = dy_neg;
         estimators$0$dy_mag = dy_mag;
         estimators$0$centre = lanes$0$t111;
-        centre$0 = 'h0;
-        gx$0 = 'h0;
-        gy$0 = 'h0;
-        gz$0 = 'h0;
+        centre$0_pass = 'h0;
+        gx$0_pass = 'h0;
+        gy$0_pass = 'h0;
+        gz$0_pass = 'h0;
         if (enabled) begin
-            centre$0 = estimators$0$sample;
-            gx$0 = estimators$0$gx;
-            gy$0 = estimators$0$gy;
-            gz$0 = estimators$0$gz;
+            centre$0_pass = estimators$0$sample;
+            gx$0_pass = estimators$0$gx;
+            gy$0_pass = estimators$0$gy;
+            gz$0_pass = estimators$0$gz;
         end
         lanes$1$clock = clock;
         estimators$1$clock = clock;
@@ -312,15 +320,15 @@ module top$pipeline$abc(clock,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,cent
         estimators$1$dy_neg = dy_neg;
         estimators$1$dy_mag = dy_mag;
         estimators$1$centre = lanes$1$t111;
-        centre$1 = 'h0;
-        gx$1 = 'h0;
-        gy$1 = 'h0;
-        gz$1 = 'h0;
+        centre$1_pass = 'h0;
+        gx$1_pass = 'h0;
+        gy$1_pass = 'h0;
+        gz$1_pass = 'h0;
         if (enabled) begin
-            centre$1 = estimators$1$sample;
-            gx$1 = estimators$1$gx;
-            gy$1 = estimators$1$gy;
-            gz$1 = estimators$1$gz;
+            centre$1_pass = estimators$1$sample;
+            gx$1_pass = estimators$1$gx;
+            gy$1_pass = estimators$1$gy;
+            gz$1_pass = estimators$1$gz;
         end
         estimators$0$kp0 = lanes$1$t001;
         estimators$0$kp1 = lanes$1$t011;
@@ -358,6 +366,14 @@ module top$pipeline$abc(clock,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,cent
         estimators$0$km6 = lanes$1$t202;
         estimators$0$km7 = lanes$1$t212;
         estimators$0$km8 = lanes$1$t222;
+        centre$0 = centre$0_pass;
+        centre$1 = centre$1_pass;
+        gx$0 = gx$0_pass;
+        gx$1 = gx$1_pass;
+        gy$0 = gy$0_pass;
+        gy$1 = gy$1_pass;
+        gz$0 = gz$0_pass;
+        gz$1 = gz$1_pass;
     end
     
 endmodule // top$pipeline$abc
@@ -2504,16 +2520,18 @@ module top$pipeline$abc$estimators$0$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$px
@@ -2547,16 +2565,18 @@ module top$pipeline$abc$estimators$0$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$py
@@ -2592,18 +2612,20 @@ module top$pipeline$abc$estimators$0$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_x
@@ -2622,18 +2644,20 @@ module top$pipeline$abc$estimators$0$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_y
@@ -2652,18 +2676,20 @@ module top$pipeline$abc$estimators$0$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_z
@@ -4810,16 +4836,18 @@ module top$pipeline$abc$estimators$1$px(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$px
@@ -4853,16 +4881,18 @@ module top$pipeline$abc$estimators$1$py(g,d_neg,d_mag,y);
     reg  [63:0] prod;
     
     // Update code
+    reg  [63:0] y_pass;
     always @(*) begin
         mag = g;
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
         prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
-        y = prod;
+        y_pass = prod;
         if (g['h1f] ^ d_neg) begin
-            y = ~prod + 'h1;
+            y_pass = ~prod + 'h1;
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$py
@@ -4898,18 +4928,20 @@ module top$pipeline$abc$estimators$1$sat_x(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_x
@@ -4928,18 +4960,20 @@ module top$pipeline$abc$estimators$1$sat_y(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_y
@@ -4958,18 +4992,20 @@ module top$pipeline$abc$estimators$1$sat_z(v,y);
     reg  [63:0] mag;
     
     // Update code
+    reg  [31:0] y_pass;
     always @(*) begin
         mag = v;
         if (v['h3f]) begin
             mag = ~v + 'h1;
         end
-        y = v[('h0)+:(32)];
+        y_pass = v[('h0)+:(32)];
         if (mag > lim) begin
-            y = high;
+            y_pass = high;
             if (v['h3f]) begin
-                y = low;
+                y_pass = low;
             end
         end
+        y = y_pass;
     end
     
 endmodule // top$pipeline$abc$estimators$1$sat_z
@@ -5399,6 +5435,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -5420,11 +5457,12 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$0
@@ -5539,6 +5577,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -5560,11 +5599,12 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$1
@@ -5679,6 +5719,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -5700,11 +5741,12 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$2
@@ -5819,6 +5861,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -5840,11 +5883,12 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$3
@@ -5959,6 +6003,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -5980,11 +6025,12 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$4
@@ -6099,6 +6145,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -6120,11 +6167,12 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$5
@@ -6239,6 +6287,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -6260,11 +6309,12 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$6
@@ -6379,6 +6429,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -6400,11 +6451,12 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$7
@@ -7198,6 +7250,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7219,11 +7272,12 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$0
@@ -7338,6 +7392,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7359,11 +7414,12 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$1
@@ -7478,6 +7534,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7499,11 +7556,12 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$2
@@ -7618,6 +7676,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7639,11 +7698,12 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$3
@@ -7758,6 +7818,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7779,11 +7840,12 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$4
@@ -7898,6 +7960,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -7919,11 +7982,12 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$5
@@ -8038,6 +8102,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -8059,11 +8124,12 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$6
@@ -8178,6 +8244,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
     );
     
     // Update code
+    reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
         one$clock = clock;
@@ -8199,11 +8266,12 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
             one$d = data_in & mask;
         end
         if (single) begin
-            data_out = one$q;
+            data_out_pass = one$q;
         end
         else begin
-            data_out = ram$read_data;
+            data_out_pass = ram$read_data;
         end
+        data_out = data_out_pass;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$7
