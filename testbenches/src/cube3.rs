@@ -228,15 +228,6 @@ pub fn cases(p: usize) -> Vec<Case> {
     ]
 }
 
-/// Whether Icarus runs the case: not through the ABC units. In the whole
-/// pipeline Icarus stalls in a zero-time loop at the first clocks of the
-/// estimators' output (not yet found; Verilator and rust-hdl agree bit for
-/// bit, and the unit alone passes under Icarus in `hdl_abc_unit`).
-/// rust-hdl and Verilator run every case.
-pub fn icarus_runs(c: &Case) -> bool {
-    c.config.pipeline.abc.is_none()
-}
-
 /// Check the pixels in stream order, and that the first comes on the
 /// predicted clock; returns the mismatches.
 pub struct Pixels<'a> {
@@ -331,26 +322,11 @@ pub fn verilog_pixels(
     pixels.finish()
 }
 
-/// The cases `engine` runs at `p`: every one, but Icarus only those
-/// [`icarus_runs`] (among them a composite case through the shaders).
-pub fn engine_cases(p: usize, engine: StageEngine) -> Vec<Case> {
-    let all = cases(p);
-    if engine != StageEngine::Iverilog {
-        return all;
-    }
-    let run: Vec<Case> = all.into_iter().filter(icarus_runs).collect();
-    assert!(
-        run.iter().any(|c| c.config.pipeline.shading.is_some()),
-        "Icarus runs a case through the shaders"
-    );
-    run
-}
-
 /// The Verilog of `uut`, a Cube-3 pipeline or system built from `c`, as
 /// `cube verilog` emits it: the units `c` leaves out pruned.
 pub fn emitted_verilog(c: &Case, uut: &impl rust_hdl::prelude::Block) -> String {
-    cosim::export::prune(
-        &cosim::export::width_clean(&rust_hdl::prelude::generate_verilog(uut)),
+    cosim::export::clean_verilog(
+        &rust_hdl::prelude::generate_verilog(uut),
         &cosim::export::cube3_left_out(&c.config),
     )
     .unwrap()

@@ -10,7 +10,7 @@
 use cosim::stage::{ports, StageEngine};
 use hdl::cube3::Cube3;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, emitted_verilog, engine_cases, verilog_pixels, Case, Pixels};
+use testbenches::cube3::{cases, emitted_verilog, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
 const H: usize = 10;
@@ -121,7 +121,7 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
 }
 
 fn check<const P: usize>(engine: StageEngine) {
-    for c in engine_cases(P, engine) {
+    for c in cases(P) {
         let errors = verilog_case::<P>(engine, &c, &emitted_verilog(&c, &pipeline::<P>(&c)));
         assert!(errors.is_empty(), "{}", errors[0]);
     }

@@ -8,7 +8,7 @@
 use cosim::stage::{ports, start_only, StageEngine};
 use hdl::cube3_system::Cube3System;
 use rust_hdl::prelude::*;
-use testbenches::cube3::{cases, emitted_verilog, engine_cases, verilog_pixels, Case, Pixels};
+use testbenches::cube3::{cases, emitted_verilog, verilog_pixels, Case, Pixels};
 use testbenches::{require_tool, run_sim};
 
 const A: usize = 12;
@@ -83,7 +83,7 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
 }
 
 fn check<const P: usize>(engine: StageEngine) {
-    for c in engine_cases(P, engine) {
+    for c in cases(P) {
         let errors = verilog_case::<P>(engine, &c, &emitted_verilog(&c, &system::<P>(&c)));
         assert!(errors.is_empty(), "{}", errors[0]);
     }
