@@ -33,11 +33,13 @@ pub fn run_icarus(
                 .current_dir(&dir),
             "Icarus Verilog (iverilog)",
         )?;
-        crate::tool::run(
+        crate::tool::run_watched(
             std::process::Command::new("vvp")
                 .args(["-n", "sim.vvp"])
                 .current_dir(&dir),
             "Icarus Verilog (vvp)",
+            &dir.join("heartbeat"),
+            crate::tool::ICARUS_STALL,
         )?;
         let log = std::fs::read_to_string(dir.join("pixels.txt")).map_err(|e| e.to_string())?;
         // The trace first: it shows what went wrong when the log is bad.
@@ -55,8 +57,9 @@ pub fn run_icarus(
 
 /// A Verilog testbench for the emitted `top`: clock, one start pulse, and a
 /// log line `x y face res` for every pixel on the bus until `beats` beats
-/// have come out; then `cycles N` (or `timeout`). With `dump`, every signal
-/// of the design goes to `trace.vcd`.
+/// have come out; then `cycles N` (or `timeout`); and a heartbeat for the
+/// stall watch (`crate::tool::run_watched`). With `dump`, every signal of
+/// the design goes to `trace.vcd`.
 fn testbench_verilog(p: usize, beats: u64, dump: bool) -> String {
     let mut v =
         String::from("`timescale 1ns/1ps\nmodule tb;\n  reg clock = 0;\n  reg start = 0;\n");
@@ -86,7 +89,8 @@ fn testbench_verilog(p: usize, beats: u64, dump: bool) -> String {
         ));
     }
     v.push_str(&format!(
-        "  top uut({ports});\n  always #5 clock = ~clock;\n"
+        "  top uut({ports});\n  always #5 clock = ~clock;\n{}",
+        crate::tool::heartbeat_verilog()
     ));
     v.push_str(&format!(
         "  integer f;\n  integer beats = 0;\n  integer cycles = 0;\n  initial begin\n{dump}    f = $fopen(\"pixels.txt\", \"w\");\n    @(negedge clock) start = 1;\n    @(negedge clock) start = 0;\n    while (beats < {beats}) begin\n      @(posedge clock);\n      #1;\n      cycles = cycles + 1;\n      if (res_beat$0) beats = beats + 1;\n{log}      if (cycles > {limit}) begin\n        $fdisplay(f, \"timeout\");\n        beats = {beats};\n      end\n    end\n    $fdisplay(f, \"cycles %0d\", cycles);\n    $fclose(f);\n    $finish;\n  end\nendmodule\n",

@@ -209,9 +209,11 @@ fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(f64, f64), 
             )?;
             let built = build(started);
             let run = std::time::Instant::now();
-            crate::tool::run(
+            crate::tool::run_watched(
                 Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
                 "Icarus Verilog (vvp)",
+                &dir.join("heartbeat"),
+                crate::tool::ICARUS_STALL,
             )?;
             Ok((built, run.elapsed().as_secs_f64()))
         }
@@ -254,7 +256,8 @@ fn simulate(engine: StageEngine, dir: &Path, trace: bool) -> Result<(f64, f64), 
 
 /// The generated testbench: inputs from `in.hex`, one line per clock for
 /// `vectors` clocks (then held), and per logged clock a line of the clock
-/// and every output in hexadecimal in `out.hex`.
+/// and every output in hexadecimal in `out.hex`. The Icarus testbench also
+/// beats a heartbeat for the stall watch (`crate::tool::run_watched`).
 struct Testbench<'a> {
     ports: &'a [Port],
     vectors: usize,
@@ -307,6 +310,7 @@ impl Testbench<'_> {
                 .collect::<Vec<_>>()
                 .join(", ")
         };
+        v += &crate::tool::heartbeat_verilog();
         v += "    integer fin, fout, r, t;\n    initial begin\n";
         if self.trace {
             v += "        $dumpfile(\"trace.vcd\");\n        $dumpvars(0, uut);\n";

@@ -1,14 +1,34 @@
 //! Running the external tools (Icarus, Verilator, yosys, nextpnr): a
 //! missing tool names the set-up command, a failing one shows its errors and
-//! the end of its log.
+//! the end of its log, and a simulation that stops advancing is stopped.
 
-use std::process::{Command, Output};
+use std::io::Read;
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
-/// Run `cmd` (the tool `what`) to completion; its output when it succeeds.
-pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
-    let out = cmd
-        .output()
-        .map_err(|e| format!("cannot run {what} ({e}): run scripts/test, which installs it"))?;
+/// How long an Icarus run may go without a heartbeat before it is taken
+/// for a zero-time loop: the slowest run here writes one every few seconds.
+pub const ICARUS_STALL: Duration = Duration::from_secs(120);
+
+/// Clocks between heartbeats of the Icarus testbenches.
+pub const HEARTBEAT_CLOCKS: u64 = 256;
+
+/// Verilog for a testbench's heartbeat: a byte appended to `heartbeat` every
+/// [`HEARTBEAT_CLOCKS`] rising edges of `clock`, flushed at once.
+pub fn heartbeat_verilog() -> String {
+    format!(
+        "    integer heartbeat_file, heartbeats = 0;\n    initial heartbeat_file = $fopen(\"heartbeat\", \"w\");\n    always @(posedge clock) begin\n        heartbeats = heartbeats + 1;\n        if (heartbeats % {HEARTBEAT_CLOCKS} == 0) begin\n            $fwrite(heartbeat_file, \".\");\n            $fflush(heartbeat_file);\n        end\n    end\n"
+    )
+}
+
+/// The error of a tool that could not start.
+fn missing(what: &str, e: std::io::Error) -> String {
+    format!("cannot run {what} ({e}): run scripts/test, which installs it")
+}
+
+/// The output of a finished tool run, or its error with the end of its log.
+fn finished(out: Output, what: &str) -> Result<Output, String> {
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         let log = String::from_utf8_lossy(&out.stdout);
@@ -19,4 +39,147 @@ pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
         ));
     }
     Ok(out)
+}
+
+/// Run `cmd` (the tool `what`) to completion; its output when it succeeds.
+pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
+    let out = cmd.output().map_err(|e| missing(what, e))?;
+    finished(out, what)
+}
+
+/// Run a simulation `cmd` whose testbench appends to the file `heartbeat`
+/// as it advances ([`heartbeat_verilog`]); when the file stops growing for
+/// `stall`, the run is killed and reported as stuck. An event-driven
+/// simulator caught in a zero-time loop would otherwise never return.
+pub fn run_watched(
+    cmd: &mut Command,
+    what: &str,
+    heartbeat: &Path,
+    stall: Duration,
+) -> Result<Output, String> {
+    let mut child = cmd
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| missing(what, e))?;
+    let drain = |pipe: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut bytes = Vec::new();
+            if let Some(mut p) = pipe {
+                let _ = p.read_to_end(&mut bytes);
+            }
+            bytes
+        })
+    };
+    let stdout = drain(
+        child
+            .stdout
+            .take()
+            .map(|p| Box::new(p) as Box<dyn Read + Send>),
+    );
+    let stderr = drain(
+        child
+            .stderr
+            .take()
+            .map(|p| Box::new(p) as Box<dyn Read + Send>),
+    );
+    let beats = || std::fs::metadata(heartbeat).map_or(0, |m| m.len());
+    let (mut seen, mut since) = (beats(), Instant::now());
+    let status = loop {
+        if let Some(status) = child.try_wait().map_err(|e| format!("{what}: {e}"))? {
+            break status;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+        let now = beats();
+        if now != seen {
+            (seen, since) = (now, Instant::now());
+        } else if since.elapsed() >= stall {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(format!(
+                "{what} made no progress for {} s after clock {}: a zero-time loop in the design?",
+                stall.as_secs_f64(),
+                seen * HEARTBEAT_CLOCKS
+            ));
+        }
+    };
+    let out = Output {
+        status,
+        stdout: stdout.join().unwrap_or_default(),
+        stderr: stderr.join().unwrap_or_default(),
+    };
+    finished(out, what)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shell(script: &str, dir: &Path) -> Command {
+        let mut c = Command::new("sh");
+        c.args(["-c", script]).current_dir(dir);
+        c
+    }
+
+    #[test]
+    fn a_run_that_beats_finishes_and_one_that_stalls_is_stopped() {
+        let dir = tempfile::tempdir().unwrap();
+        let hb = dir.path().join("heartbeat");
+        let beating = "for i in 1 2 3 4 5 6; do printf . >> heartbeat; sleep 0.2; done; echo done";
+        let out = run_watched(
+            &mut shell(beating, dir.path()),
+            "beating",
+            &hb,
+            Duration::from_millis(600),
+        )
+        .unwrap();
+        assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
+        let started = Instant::now();
+        let err = run_watched(
+            &mut shell("printf . > heartbeat; sleep 30", dir.path()),
+            "stuck",
+            &hb,
+            Duration::from_millis(500),
+        )
+        .unwrap_err();
+        assert!(started.elapsed() < Duration::from_secs(10), "{err}");
+        assert!(
+            err.starts_with("stuck made no progress for 0.5 s after clock 256"),
+            "{err}"
+        );
+    }
+
+    /// A child and its parent that write an output twice in a pass (as
+    /// rust-hdl emits them) wake each other forever under Icarus: the
+    /// heartbeat stops and the run is reported, not waited for.
+    #[test]
+    fn an_icarus_zero_time_loop_is_reported() {
+        let dir = tempfile::tempdir().unwrap();
+        let design = "module child(input [3:0] v, output reg [3:0] y);\n    always @(*) begin\n        y = 4'h0;\n        y = v;\n    end\nendmodule\n\
+            module tb;\n    reg clock = 0;\n    reg [3:0] a = 0;\n    reg [3:0] v;\n    wire [3:0] y;\n    reg [3:0] seen;\n    child c(v, y);\n    always @(*) begin\n        v = 4'h0;\n        v = a;\n        seen = y;\n    end\n"
+            .to_string()
+            + &heartbeat_verilog()
+            + "    initial begin\n        repeat (600) begin #5 clock = ~clock; end\n        a = 1;\n        #5 clock = ~clock;\n        $finish;\n    end\nendmodule\n";
+        std::fs::write(dir.path().join("tb.v"), design).unwrap();
+        run(
+            Command::new("iverilog")
+                .args(["-o", "sim.vvp", "tb.v"])
+                .current_dir(dir.path()),
+            "Icarus Verilog (iverilog)",
+        )
+        .unwrap();
+        let err = run_watched(
+            Command::new("vvp")
+                .args(["-n", "sim.vvp"])
+                .current_dir(dir.path()),
+            "Icarus Verilog (vvp)",
+            &dir.path().join("heartbeat"),
+            Duration::from_secs(2),
+        )
+        .unwrap_err();
+        assert!(
+            err.contains("made no progress for 2 s after clock 256"),
+            "{err}"
+        );
+    }
 }
