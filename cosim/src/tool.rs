@@ -47,6 +47,17 @@ pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
     finished(out, what)
 }
 
+/// Read a child's pipe to its end on a thread of its own.
+fn drain<R: Read + Send + 'static>(pipe: Option<R>) -> std::thread::JoinHandle<Vec<u8>> {
+    std::thread::spawn(move || {
+        let mut bytes = Vec::new();
+        if let Some(mut p) = pipe {
+            let _ = p.read_to_end(&mut bytes);
+        }
+        bytes
+    })
+}
+
 /// Run a simulation `cmd` whose testbench appends to the file `heartbeat`
 /// as it advances ([`heartbeat_verilog`]); when the file stops growing for
 /// `stall`, the run is killed and reported as stuck. An event-driven
@@ -62,27 +73,8 @@ pub fn run_watched(
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| missing(what, e))?;
-    let drain = |pipe: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut bytes = Vec::new();
-            if let Some(mut p) = pipe {
-                let _ = p.read_to_end(&mut bytes);
-            }
-            bytes
-        })
-    };
-    let stdout = drain(
-        child
-            .stdout
-            .take()
-            .map(|p| Box::new(p) as Box<dyn Read + Send>),
-    );
-    let stderr = drain(
-        child
-            .stderr
-            .take()
-            .map(|p| Box::new(p) as Box<dyn Read + Send>),
-    );
+    let stdout = drain(child.stdout.take());
+    let stderr = drain(child.stderr.take());
     let beats = || std::fs::metadata(heartbeat).map_or(0, |m| m.len());
     let (mut seen, mut since) = (beats(), Instant::now());
     let status = loop {
@@ -115,6 +107,14 @@ pub fn run_watched(
 mod tests {
     use super::*;
 
+    /// An empty scratch directory for test `name`.
+    fn scratch(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("cube-tool-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
     fn shell(script: &str, dir: &Path) -> Command {
         let mut c = Command::new("sh");
         c.args(["-c", script]).current_dir(dir);
@@ -123,11 +123,11 @@ mod tests {
 
     #[test]
     fn a_run_that_beats_finishes_and_one_that_stalls_is_stopped() {
-        let dir = tempfile::tempdir().unwrap();
-        let hb = dir.path().join("heartbeat");
+        let dir = scratch("beats");
+        let hb = dir.join("heartbeat");
         let beating = "for i in 1 2 3 4 5 6; do printf . >> heartbeat; sleep 0.2; done; echo done";
         let out = run_watched(
-            &mut shell(beating, dir.path()),
+            &mut shell(beating, &dir),
             "beating",
             &hb,
             Duration::from_millis(600),
@@ -136,7 +136,7 @@ mod tests {
         assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
         let started = Instant::now();
         let err = run_watched(
-            &mut shell("printf . > heartbeat; sleep 30", dir.path()),
+            &mut shell("printf . > heartbeat; sleep 30", &dir),
             "stuck",
             &hb,
             Duration::from_millis(500),
@@ -147,6 +147,7 @@ mod tests {
             err.starts_with("stuck made no progress for 0.5 s after clock 256"),
             "{err}"
         );
+        std::fs::remove_dir_all(dir).unwrap();
     }
 
     /// A child and its parent that write an output twice in a pass (as
@@ -154,26 +155,26 @@ mod tests {
     /// heartbeat stops and the run is reported, not waited for.
     #[test]
     fn an_icarus_zero_time_loop_is_reported() {
-        let dir = tempfile::tempdir().unwrap();
+        let dir = scratch("loop");
         let design = "module child(input [3:0] v, output reg [3:0] y);\n    always @(*) begin\n        y = 4'h0;\n        y = v;\n    end\nendmodule\n\
             module tb;\n    reg clock = 0;\n    reg [3:0] a = 0;\n    reg [3:0] v;\n    wire [3:0] y;\n    reg [3:0] seen;\n    child c(v, y);\n    always @(*) begin\n        v = 4'h0;\n        v = a;\n        seen = y;\n    end\n"
             .to_string()
             + &heartbeat_verilog()
             + "    initial begin\n        repeat (600) begin #5 clock = ~clock; end\n        a = 1;\n        #5 clock = ~clock;\n        $finish;\n    end\nendmodule\n";
-        std::fs::write(dir.path().join("tb.v"), design).unwrap();
+        std::fs::write(dir.join("tb.v"), design).unwrap();
         run(
             Command::new("iverilog")
                 .args(["-o", "sim.vvp", "tb.v"])
-                .current_dir(dir.path()),
+                .current_dir(&dir),
             "Icarus Verilog (iverilog)",
         )
         .unwrap();
         let err = run_watched(
             Command::new("vvp")
                 .args(["-n", "sim.vvp"])
-                .current_dir(dir.path()),
+                .current_dir(&dir),
             "Icarus Verilog (vvp)",
-            &dir.path().join("heartbeat"),
+            &dir.join("heartbeat"),
             Duration::from_secs(2),
         )
         .unwrap_err();
@@ -181,5 +182,6 @@ mod tests {
             err.contains("made no progress for 2 s after clock 256"),
             "{err}"
         );
+        std::fs::remove_dir_all(dir).unwrap();
     }
 }

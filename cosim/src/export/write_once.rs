@@ -82,19 +82,23 @@ fn writes(block: &str, name: &str) -> usize {
         .count()
 }
 
+const OPEN: &str = "    always @(*) begin\n";
+const CLOSE: &str = "\n    end\n";
+
+/// Where the body of a module's `always @(*)` block lies in its text.
+fn comb_block(text: &str) -> Option<std::ops::Range<usize>> {
+    let body = text.find(OPEN)? + OPEN.len();
+    let len = text[body..].find(CLOSE)?;
+    Some(body..body + len)
+}
+
 /// One module with each output that its `always @(*)` block writes more
 /// than once routed through a shadow register.
 fn module(text: &str) -> String {
-    const OPEN: &str = "    always @(*) begin\n";
-    const CLOSE: &str = "\n    end\n";
-    let Some(start) = text.find(OPEN) else {
+    let Some(at) = comb_block(text) else {
         return text.to_string();
     };
-    let body = start + OPEN.len();
-    let Some(len) = text[body..].find(CLOSE) else {
-        return text.to_string();
-    };
-    let mut block = text[body..body + len].to_string();
+    let mut block = text[at.clone()].to_string();
     let mut decls = String::new();
     for (name, range) in output_regs(text) {
         if writes(&block, &name) < 2 {
@@ -105,11 +109,8 @@ fn module(text: &str) -> String {
         block += &format!("\n        {name} = {s};");
         decls += &format!("    reg  {range}{s};\n");
     }
-    format!(
-        "{}{decls}{OPEN}{block}{}",
-        &text[..start],
-        &text[body + len..]
-    )
+    let start = at.start - OPEN.len();
+    format!("{}{decls}{OPEN}{block}{}", &text[..start], &text[at.end..])
 }
 
 /// Emitted Verilog with every module's outputs written once per pass of its
@@ -127,13 +128,11 @@ pub fn write_once(verilog: &str) -> String {
 pub fn outputs_written_twice(verilog: &str) -> Vec<String> {
     let mut found = Vec::new();
     for m in split_modules(verilog) {
-        let Some(start) = m.text.find("    always @(*) begin\n") else {
+        let Some(at) = comb_block(&m.text) else {
             continue;
         };
-        let block = &m.text[start..];
-        let block = &block[..block.find("\n    end\n").unwrap_or(block.len())];
         for (name, _) in output_regs(&m.text) {
-            if writes(block, &name) > 1 {
+            if writes(&m.text[at.clone()], &name) > 1 {
                 found.push(format!("{}.{name}", m.name));
             }
         }
