@@ -106,9 +106,12 @@ impl Camera {
                 let r = view.rotate_deg.unwrap_or([0.0; 3]);
                 let rv = check_vec("rotate_deg", r)?;
                 let zoom = view.zoom.unwrap_or(1.0);
-                if !(zoom.is_finite() && zoom > 0.0 && zoom <= 1000.0) {
+                // Symmetric bounds: below 1/1000 the pixel spacing (diag / zoom)
+                // runs to infinity for a subnormal zoom, and rays would start at
+                // infinity.
+                if !(zoom.is_finite() && (1e-3..=1e3).contains(&zoom)) {
                     return Err(CubeError::View(format!(
-                        "zoom {zoom} must lie in (0, 1000]"
+                        "zoom {zoom} must lie in [0.001, 1000]"
                     )));
                 }
                 // World = Rz * Ry * Rx * dataset; the camera looks down world -z.

@@ -4,21 +4,62 @@
 //! or in one clear line; it never panics or hangs.
 //!
 //! The suite runs a bounded number of cases (`PROPTEST_CASES`, default 64
-//! per property); `scripts/fuzz` runs a longer session.
+//! per property) from a fixed seed, so that every run tries the same cases;
+//! `scripts/fuzz` runs a longer session from a fresh seed
+//! (`PROPTEST_RNG_SEED`). A case that takes longer than `CASE_LIMIT` fails
+//! with its scene text instead of hanging the suite.
 
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 use scene::{Scene, Volume};
 use serde_json::{json, Value};
+use std::io::Write;
+use std::sync::mpsc;
+use std::time::Duration;
 
-/// The suite's bounded number of cases, or `PROPTEST_CASES`.
+/// The suite's bounded number of cases, or `PROPTEST_CASES`; its fixed
+/// seed, or `PROPTEST_RNG_SEED`.
 fn config() -> ProptestConfig {
+    let env = |name: &str| std::env::var(name).ok().and_then(|c| c.parse().ok());
     ProptestConfig {
-        cases: std::env::var("PROPTEST_CASES")
-            .ok()
-            .and_then(|c| c.parse().ok())
-            .unwrap_or(64),
+        cases: env("PROPTEST_CASES").unwrap_or(64) as u32,
+        rng_seed: RngSeed::Fixed(env("PROPTEST_RNG_SEED").unwrap_or(0x0c0b_e3)),
         failure_persistence: None,
         ..ProptestConfig::default()
+    }
+}
+
+/// The longest one case may take (a debug build renders an 8³ scene in
+/// milliseconds).
+const CASE_LIMIT: Duration = Duration::from_secs(20);
+
+/// Run `exercise` on `text` in a thread of its own. If it does not finish
+/// within `CASE_LIMIT`, end the whole test binary naming the text: shrinking
+/// a hang would only start more threads that never end.
+fn exercise_within_limit(text: String) {
+    let (done, finished) = mpsc::channel();
+    let worker = {
+        let text = text.clone();
+        std::thread::spawn(move || {
+            exercise(&text);
+            let _ = done.send(());
+        })
+    };
+    match finished.recv_timeout(CASE_LIMIT) {
+        Ok(()) => worker.join().unwrap(),
+        // The worker panicked: re-raise its panic here.
+        Err(mpsc::RecvTimeoutError::Disconnected) => {
+            std::panic::resume_unwind(worker.join().unwrap_err())
+        }
+        Err(mpsc::RecvTimeoutError::Timeout) => {
+            // Straight to stderr: the harness captures eprintln! and would
+            // lose it with the process.
+            let _ = writeln!(
+                std::io::stderr(),
+                "fuzz: no result after {CASE_LIMIT:?}, a hang on: {text}"
+            );
+            std::process::exit(1)
+        }
     }
 }
 
@@ -140,21 +181,21 @@ proptest! {
     #[test]
     fn mutated_scene_values_never_panic(pick in any::<usize>(), new in odd_value(), persp in any::<bool>()) {
         let base = if persp { perspective_scene() } else { base_scene() };
-        exercise(&mutate(base, pick, new));
+        exercise_within_limit(mutate(base, pick, new));
     }
 
     #[test]
     fn two_mutations_never_panic(p1 in any::<usize>(), n1 in odd_value(), p2 in any::<usize>(), n2 in odd_value()) {
         let once: Value = serde_json::from_str(&mutate(base_scene(), p1, n1)).unwrap();
-        exercise(&mutate(once, p2, n2));
+        exercise_within_limit(mutate(once, p2, n2));
     }
 
     #[test]
     fn truncated_or_spliced_scene_text_never_panics(cut in any::<usize>(), junk in "[\\[\\]{}\",:0-9a-z.eE+-]{0,8}") {
         let text = base_scene().to_string();
         let cut = cut % (text.len() + 1);
-        exercise(&format!("{}{junk}{}", &text[..cut], &text[cut..(cut + junk.len()).min(text.len())]));
-        exercise(&text[..cut]);
+        exercise_within_limit(format!("{}{junk}{}", &text[..cut], &text[cut..(cut + junk.len()).min(text.len())]));
+        exercise_within_limit(text[..cut].to_string());
     }
 }
 
