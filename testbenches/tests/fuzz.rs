@@ -23,7 +23,7 @@ fn config() -> ProptestConfig {
     let env = |name: &str| std::env::var(name).ok().and_then(|c| c.parse().ok());
     ProptestConfig {
         cases: env("PROPTEST_CASES").unwrap_or(64) as u32,
-        rng_seed: RngSeed::Fixed(env("PROPTEST_RNG_SEED").unwrap_or(0x0c0b_e3)),
+        rng_seed: RngSeed::Fixed(env("PROPTEST_RNG_SEED").unwrap_or(0xc0be3)),
         failure_persistence: None,
         ..ProptestConfig::default()
     }
