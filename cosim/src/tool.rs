@@ -107,14 +107,6 @@ pub fn run_watched(
 mod tests {
     use super::*;
 
-    /// An empty scratch directory for test `name`.
-    fn scratch(name: &str) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("cube-tool-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
-    }
-
     fn shell(script: &str, dir: &Path) -> Command {
         let mut c = Command::new("sh");
         c.args(["-c", script]).current_dir(dir);
@@ -123,11 +115,12 @@ mod tests {
 
     #[test]
     fn a_run_that_beats_finishes_and_one_that_stalls_is_stopped() {
-        let dir = scratch("beats");
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path();
         let hb = dir.join("heartbeat");
         let beating = "for i in 1 2 3 4 5 6; do printf . >> heartbeat; sleep 0.2; done; echo done";
         let out = run_watched(
-            &mut shell(beating, &dir),
+            &mut shell(beating, dir),
             "beating",
             &hb,
             Duration::from_millis(600),
@@ -136,7 +129,7 @@ mod tests {
         assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
         let started = Instant::now();
         let err = run_watched(
-            &mut shell("printf . > heartbeat; sleep 30", &dir),
+            &mut shell("printf . > heartbeat; sleep 30", dir),
             "stuck",
             &hb,
             Duration::from_millis(500),
@@ -147,7 +140,6 @@ mod tests {
             err.starts_with("stuck made no progress for 0.5 s after clock 256"),
             "{err}"
         );
-        std::fs::remove_dir_all(dir).unwrap();
     }
 
     /// A child and its parent that write an output twice in a pass (as
@@ -155,7 +147,8 @@ mod tests {
     /// heartbeat stops and the run is reported, not waited for.
     #[test]
     fn an_icarus_zero_time_loop_is_reported() {
-        let dir = scratch("loop");
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path();
         let design = "module child(input [3:0] v, output reg [3:0] y);\n    always @(*) begin\n        y = 4'h0;\n        y = v;\n    end\nendmodule\n\
             module tb;\n    reg clock = 0;\n    reg [3:0] a = 0;\n    reg [3:0] v;\n    wire [3:0] y;\n    reg [3:0] seen;\n    child c(v, y);\n    always @(*) begin\n        v = 4'h0;\n        v = a;\n        seen = y;\n    end\n"
             .to_string()
@@ -165,14 +158,12 @@ mod tests {
         run(
             Command::new("iverilog")
                 .args(["-o", "sim.vvp", "tb.v"])
-                .current_dir(&dir),
+                .current_dir(dir),
             "Icarus Verilog (iverilog)",
         )
         .unwrap();
         let err = run_watched(
-            Command::new("vvp")
-                .args(["-n", "sim.vvp"])
-                .current_dir(&dir),
+            Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
             "Icarus Verilog (vvp)",
             &dir.join("heartbeat"),
             Duration::from_secs(2),
@@ -182,6 +173,5 @@ mod tests {
             err.contains("made no progress for 2 s after clock 256"),
             "{err}"
         );
-        std::fs::remove_dir_all(dir).unwrap();
     }
 }
