@@ -43,6 +43,25 @@ impl Arch {
     }
 }
 
+/// An architecture with RTL: the `--arch` of `sim`, `verilog` and `synth`.
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HwArch {
+    /// Cube-4L: parallel and perspective views in every mode.
+    Cube4l,
+    /// Cube-3: parallel and perspective views in every mode (the 6 or the
+    /// 12 gradient neighbourhood).
+    Cube3,
+}
+
+impl HwArch {
+    pub fn arch(self) -> cosim::arch::ArchName {
+        match self {
+            HwArch::Cube4l => cosim::arch::ArchName::Cube4l,
+            HwArch::Cube3 => cosim::arch::ArchName::Cube3,
+        }
+    }
+}
+
 pub fn check_step(step: f64) -> Result<()> {
     if !(0.01..=4.0).contains(&step) {
         bail!("--ref-step {step} must lie in [0.01, 4]");
@@ -120,7 +139,7 @@ pub fn render_arch(
                     let grad =
                         golden_model::cube4l::shader::Shader::new(scene, &camera, w).needs_gradient;
                     (w.z1 - w.z0 + 1 + grad as usize) * w.dims[1] * w.dims[0].div_ceil(p)
-                        + hdl::pipeline::fill_clocks(grad) as usize
+                        + hdl::cube4l::config::fill_clocks(grad) as usize
                 })
                 .sum();
             Ok(Rendered {

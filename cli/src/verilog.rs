@@ -1,20 +1,12 @@
-//! `cube verilog`: write the scene's pruned pipeline as Verilog (one file per
+//! `cube verilog`: write the scene's pruned hardware as Verilog (one file per
 //! stage, a top, Verilator lint waivers and a manifest of parameters and
 //! left-out units) and summarize what was written.
 
-use crate::common::scene_name;
+use crate::common::{scene_name, HwArch};
 use anyhow::Result;
+use cosim::arch::{Arch, ForArch};
 use scene::Scene;
 use std::path::PathBuf;
-
-/// The architecture exported.
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-enum VerilogArch {
-    Cube4l,
-    /// Cube-3: parallel and perspective views in every mode (the 6 or the
-    /// 12 gradient neighbourhood).
-    Cube3,
-}
 
 #[derive(clap::Args)]
 pub struct VerilogArgs {
@@ -23,59 +15,44 @@ pub struct VerilogArgs {
     #[arg(long)]
     out: PathBuf,
     #[arg(long, value_enum, default_value = "cube4l")]
-    arch: VerilogArch,
+    arch: HwArch,
 }
 
 pub fn run(args: VerilogArgs) -> Result<()> {
-    let VerilogArgs {
-        scene: scene_path,
-        out,
-        arch,
-    } = args;
-    let scene = Scene::load(&scene_path)?;
-    let cam = scene.camera()?;
-    let name = scene_name(&scene_path);
-    if arch == VerilogArch::Cube3 {
-        let m = cosim::export::write_cube3_export(
-            &name,
+    args.arch.arch().with(Export(&args))
+}
+
+struct Export<'a>(&'a VerilogArgs);
+
+impl ForArch for Export<'_> {
+    type Output = Result<()>;
+    fn run<A: Arch>(self) -> Result<()> {
+        let args = self.0;
+        let scene = Scene::load(&args.scene)?;
+        let cam = scene.camera()?;
+        let m = cosim::export::write_export::<A>(
+            &scene_name(&args.scene),
             &scene,
             &cam,
             scene.volume.render_dims(),
-            &out,
+            &args.out,
         )
         .map_err(|e| anyhow::anyhow!("verilog: {e}"))?;
+        let parts = m[format!("{}s", A::PART)].as_array().map_or(0, |a| a.len());
+        let left_out: Vec<&str> = m["units_left_out"]
+            .as_array()
+            .map(|a| a.iter().filter_map(|v| v.as_str()).collect())
+            .unwrap_or_default();
         println!(
-            "wrote {} (Cube-3, {} memory, {} clocks a frame); units left out: {}",
-            out.display(),
+            "wrote {} ({}, {} {}{}, {} memory); units left out: {}",
+            args.out.display(),
+            A::TITLE,
+            parts,
+            A::PART.replace('_', " "),
+            if parts == 1 { "" } else { "s" },
             m["parameters"]["memory"]["kind"].as_str().unwrap_or("?"),
-            m["parameters"]["frame_clocks"],
-            left_out(&m)
+            left_out.join(", ")
         );
-        return Ok(());
+        Ok(())
     }
-    let m = cosim::export::write_export(&name, &scene, &cam, scene.volume.render_dims(), &out)
-        .map_err(|e| anyhow::anyhow!("verilog: {e}"))?;
-    let sweeps = m["sweeps"].as_array().map_or(0, |s| s.len());
-    println!(
-        "wrote {} ({} sweep{}, {} memory); units left out: {}",
-        out.display(),
-        sweeps,
-        if sweeps == 1 { "" } else { "s" },
-        m["parameters"]["memory"]["kind"].as_str().unwrap_or("?"),
-        left_out(&m)
-    );
-    Ok(())
-}
-
-/// The manifest's units left out, as a list.
-fn left_out(m: &serde_json::Value) -> String {
-    m["units_left_out"]
-        .as_array()
-        .map(|a| {
-            a.iter()
-                .filter_map(|v| v.as_str())
-                .collect::<Vec<_>>()
-                .join(", ")
-        })
-        .unwrap_or_default()
 }

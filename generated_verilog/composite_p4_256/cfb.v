@@ -1,4 +1,4 @@
-module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
+module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
     
     // Module arguments
     input wire  clock;
@@ -25,6 +25,14 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     output reg  [15:0] y$1;
     output reg  [15:0] y$2;
     output reg  [15:0] y$3;
+    output reg  [15:0] z$0;
+    output reg  [15:0] z$1;
+    output reg  [15:0] z$2;
+    output reg  [15:0] z$3;
+    output reg  [31:0] address$0;
+    output reg  [31:0] address$1;
+    output reg  [31:0] address$2;
+    output reg  [31:0] address$3;
     output reg  pad$0;
     output reg  pad$1;
     output reg  pad$2;
@@ -420,6 +428,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$0$load_data = load_data;
         value$0 = lanes$0$value;
         x$0 = lanes$0$x;
+        z$0 = lanes$0$z;
+        address$0 = lanes$0$address;
         y$0 = lanes$0$y;
         pad$0 = lanes$0$pad;
         sr$0 = lanes$0$sr;
@@ -446,6 +456,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$1$load_data = load_data;
         value$1 = lanes$1$value;
         x$1 = lanes$1$x;
+        z$1 = lanes$1$z;
+        address$1 = lanes$1$address;
         y$1 = lanes$1$y;
         pad$1 = lanes$1$pad;
         sr$1 = lanes$1$sr;
@@ -472,6 +484,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$2$load_data = load_data;
         value$2 = lanes$2$value;
         x$2 = lanes$2$x;
+        z$2 = lanes$2$z;
+        address$2 = lanes$2$address;
         y$2 = lanes$2$y;
         pad$2 = lanes$2$pad;
         sr$2 = lanes$2$sr;
@@ -498,6 +512,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$3$load_data = load_data;
         value$3 = lanes$3$value;
         x$3 = lanes$3$x;
+        z$3 = lanes$3$z;
+        address$3 = lanes$3$address;
         y$3 = lanes$3$y;
         pad$3 = lanes$3$pad;
         sr$3 = lanes$3$sr;
@@ -3657,7 +3673,7 @@ module top$cfb$valid_q(d,q,clock);
     end
           
 endmodule // top$cfb$valid_q
-module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
+module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
     
     // Module arguments
     input wire  clock;
@@ -3684,6 +3700,14 @@ module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,
     output reg  [15:0] y$1;
     output reg  [15:0] y$2;
     output reg  [15:0] y$3;
+    output reg  [15:0] z$0;
+    output reg  [15:0] z$1;
+    output reg  [15:0] z$2;
+    output reg  [15:0] z$3;
+    output reg  [31:0] address$0;
+    output reg  [31:0] address$1;
+    output reg  [31:0] address$2;
+    output reg  [31:0] address$3;
     output reg  pad$0;
     output reg  pad$1;
     output reg  pad$2;
@@ -4079,6 +4103,8 @@ module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,
         lanes$0$load_data = load_data;
         value$0 = lanes$0$value;
         x$0 = lanes$0$x;
+        z$0 = lanes$0$z;
+        address$0 = lanes$0$address;
         y$0 = lanes$0$y;
         pad$0 = lanes$0$pad;
         sr$0 = lanes$0$sr;
@@ -4105,6 +4131,8 @@ module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,
         lanes$1$load_data = load_data;
         value$1 = lanes$1$value;
         x$1 = lanes$1$x;
+        z$1 = lanes$1$z;
+        address$1 = lanes$1$address;
         y$1 = lanes$1$y;
         pad$1 = lanes$1$pad;
         sr$1 = lanes$1$sr;
@@ -4131,6 +4159,8 @@ module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,
         lanes$2$load_data = load_data;
         value$2 = lanes$2$value;
         x$2 = lanes$2$x;
+        z$2 = lanes$2$z;
+        address$2 = lanes$2$address;
         y$2 = lanes$2$y;
         pad$2 = lanes$2$pad;
         sr$2 = lanes$2$sr;
@@ -4157,6 +4187,8 @@ module top$late(clock,start,busy,load_enable,load_module,load_address,load_data,
         lanes$3$load_data = load_data;
         value$3 = lanes$3$value;
         x$3 = lanes$3$x;
+        z$3 = lanes$3$z;
+        address$3 = lanes$3$address;
         y$3 = lanes$3$y;
         pad$3 = lanes$3$pad;
         sr$3 = lanes$3$sr;

@@ -78,6 +78,14 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] cfb$y$1;
     wire  [15:0] cfb$y$2;
     wire  [15:0] cfb$y$3;
+    wire  [15:0] cfb$z$0;
+    wire  [15:0] cfb$z$1;
+    wire  [15:0] cfb$z$2;
+    wire  [15:0] cfb$z$3;
+    wire  [31:0] cfb$address$0;
+    wire  [31:0] cfb$address$1;
+    wire  [31:0] cfb$address$2;
+    wire  [31:0] cfb$address$3;
     wire  cfb$pad$0;
     wire  cfb$pad$1;
     wire  cfb$pad$2;
@@ -402,6 +410,14 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] late$y$1;
     wire  [15:0] late$y$2;
     wire  [15:0] late$y$3;
+    wire  [15:0] late$z$0;
+    wire  [15:0] late$z$1;
+    wire  [15:0] late$z$2;
+    wire  [15:0] late$z$3;
+    wire  [31:0] late$address$0;
+    wire  [31:0] late$address$1;
+    wire  [31:0] late$address$2;
+    wire  [31:0] late$address$3;
     wire  late$pad$0;
     wire  late$pad$1;
     wire  late$pad$2;
@@ -492,6 +508,14 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         .y$1(cfb$y$1),
         .y$2(cfb$y$2),
         .y$3(cfb$y$3),
+        .z$0(cfb$z$0),
+        .z$1(cfb$z$1),
+        .z$2(cfb$z$2),
+        .z$3(cfb$z$3),
+        .address$0(cfb$address$0),
+        .address$1(cfb$address$1),
+        .address$2(cfb$address$2),
+        .address$3(cfb$address$3),
         .pad$0(cfb$pad$0),
         .pad$1(cfb$pad$1),
         .pad$2(cfb$pad$2),
@@ -826,6 +850,14 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         .y$1(late$y$1),
         .y$2(late$y$2),
         .y$3(late$y$3),
+        .z$0(late$z$0),
+        .z$1(late$z$1),
+        .z$2(late$z$2),
+        .z$3(late$z$3),
+        .address$0(late$address$0),
+        .address$1(late$address$1),
+        .address$2(late$address$2),
+        .address$3(late$address$3),
         .pad$0(late$pad$0),
         .pad$1(late$pad$1),
         .pad$2(late$pad$2),

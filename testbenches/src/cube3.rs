@@ -7,11 +7,12 @@
 //! pixels, and the pixel checker shared by the pipeline's and the whole
 //! system's testbenches.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::harness::{ports, run_stage};
+use cosim::Engine;
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{prp, render_view};
-use hdl::cube3_system::Cube3SystemConfig;
+use hdl::cube3::Cube3SystemConfig;
 use scene::volume::Volume;
 
 use crate::scene;
@@ -230,71 +231,98 @@ pub fn cases(p: usize) -> Vec<Case> {
 
 /// Check the pixels in stream order, and that the first comes on the
 /// predicted clock; returns the mismatches.
-pub struct Pixels<'a> {
-    case: &'a Case,
+pub struct Pixels {
+    name: String,
+    want: Vec<Option<([u32; 4], bool)>>,
     /// The clock the first pixel must come on.
     first: usize,
     seen: usize,
     errors: Vec<String>,
 }
 
-impl Pixels<'_> {
-    pub fn new(case: &Case, first: usize) -> Pixels<'_> {
+impl Pixels {
+    pub fn new(case: &Case, first: usize) -> Pixels {
         Pixels {
-            case,
+            name: case.name.clone(),
+            want: case.want.clone(),
             first,
             seen: 0,
             errors: vec![],
         }
     }
 
-    pub fn clock(&mut self, engine: &str, t: usize, done: bool, px: [u64; 4], has: bool) {
+    fn clock(&mut self, engine: &str, t: usize, done: bool, px: [u64; 4], has: bool) {
         if !done {
             return;
         }
-        let c = self.case;
-        if self.seen == 0 {
-            let expect = self.first;
-            if t != expect {
-                self.errors.push(format!(
-                    "{}: {engine}: the first pixel came at clock {t}, not {expect}",
-                    c.name
-                ));
-            }
+        if self.seen == 0 && t != self.first {
+            self.errors.push(format!(
+                "{}: {engine}: the first pixel came at clock {t}, not {}",
+                self.name, self.first
+            ));
         }
-        match c.want.get(self.seen) {
+        match self.want.get(self.seen) {
             Some(Some((w, cast))) if px != w.map(u64::from) || has != *cast => {
                 self.errors.push(format!(
                     "{}: {engine}: first mismatch at clock {t}, ray {} of the stream: rtl {px:?} has_sample {has}, golden {w:?} cast {cast}",
-                    c.name, self.seen
+                    self.name, self.seen
                 ))
             }
             None => self
                 .errors
-                .push(format!("{}: {engine}: a pixel beyond the stream at clock {t}", c.name)),
+                .push(format!("{}: {engine}: a pixel beyond the stream at clock {t}", self.name)),
             _ => {}
         }
         self.seen += 1;
     }
 
-    pub fn finish(mut self) -> Vec<String> {
-        if self.seen != self.case.want.len() {
+    /// Check the pixel port `o` after clock `t`.
+    pub fn read(&mut self, engine: &str, t: usize, o: PixelPort) {
+        self.clock(engine, t, o.done, o.px, o.has_sample);
+    }
+
+    pub fn finish(&mut self) -> Vec<String> {
+        if self.seen != self.want.len() {
             self.errors.push(format!(
                 "{}: {} pixels out of {}",
-                self.case.name,
+                self.name,
                 self.seen,
-                self.case.want.len()
+                self.want.len()
             ));
         }
-        self.errors
+        std::mem::take(&mut self.errors)
     }
+}
+
+/// The pixel port of a Cube-3 pipeline or system after a clock.
+pub struct PixelPort {
+    pub done: bool,
+    pub px: [u64; 4],
+    pub has_sample: bool,
+}
+
+/// Read the pixel port of `$x` (a `Cube3` or `Cube3System` in rust-hdl).
+#[macro_export]
+macro_rules! pixel_port {
+    ($x:expr) => {
+        $crate::cube3::PixelPort {
+            done: $x.done.val(),
+            px: [
+                $x.pixel_r.val().to_u64(),
+                $x.pixel_g.val().to_u64(),
+                $x.pixel_b.val().to_u64(),
+                $x.pixel_a.val().to_u64(),
+            ],
+            has_sample: $x.has_sample.val(),
+        }
+    };
 }
 
 /// Run a design's Verilog on `vectors` and check the pixels on its `done`,
 /// `pixel_*` and `has_sample` outputs, the first due on clock `first`;
 /// the mismatches.
 pub fn verilog_pixels(
-    engine: StageEngine,
+    engine: Engine,
     c: &Case,
     verilog: &str,
     vectors: &[Vec<u64>],
@@ -310,14 +338,12 @@ pub fn verilog_pixels(
     let mut pixels = Pixels::new(c, first);
     for (t, o) in outs.iter().enumerate() {
         let get = |n: &str| o[names.iter().position(|x| x == n).unwrap()].unwrap_or(u64::MAX);
-        let px = ["pixel_r", "pixel_g", "pixel_b", "pixel_a"].map(get);
-        pixels.clock(
-            &format!("{engine:?}"),
-            t,
-            get("done") == 1,
-            px,
-            get("has_sample") == 1,
-        );
+        let port = PixelPort {
+            done: get("done") == 1,
+            px: ["pixel_r", "pixel_g", "pixel_b", "pixel_a"].map(get),
+            has_sample: get("has_sample") == 1,
+        };
+        pixels.read(&format!("{engine:?}"), t, port);
     }
     pixels.finish()
 }
@@ -327,7 +353,7 @@ pub fn verilog_pixels(
 pub fn emitted_verilog(c: &Case, uut: &impl rust_hdl::prelude::Block) -> String {
     cosim::export::clean_verilog(
         &rust_hdl::prelude::generate_verilog(uut),
-        &cosim::export::cube3_left_out(&c.config),
+        &cosim::arch::cube3::left_out(&c.config),
     )
     .unwrap()
 }

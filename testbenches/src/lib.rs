@@ -162,6 +162,96 @@ pub fn run_sim<T: rust_hdl::prelude::Block + Send + 'static>(
     result.unwrap_or_else(|e| panic!("{name}: simulation failed: {e:?}"));
 }
 
+/// A rust-hdl block with a clock input, as every stage has: what
+/// [`run_clocks`] drives.
+pub trait Clocked: rust_hdl::prelude::Block + Send + 'static {
+    fn clock(&self) -> &rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock>;
+    fn clock_mut(
+        &mut self,
+    ) -> &mut rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock>;
+}
+
+/// `Clocked` for blocks whose clock port is named `clock`.
+macro_rules! clocked {
+    ($([$($g:tt)*] $t:ty),* $(,)?) => {$(
+        impl<$($g)*> Clocked for $t {
+            fn clock(&self) -> &rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock> {
+                &self.clock
+            }
+            fn clock_mut(&mut self) -> &mut rust_hdl::prelude::Signal<rust_hdl::prelude::In, rust_hdl::prelude::Clock> {
+                &mut self.clock
+            }
+        }
+    )*};
+}
+
+clocked!(
+    [const P: usize, const H: usize] hdl::cube3::Cube3<P, H>,
+    [const P: usize, const A: usize, const B: usize, const H: usize] hdl::cube3::Cube3System<P, A, B, H>,
+    [const P: usize, const A: usize, const B: usize] hdl::cube3::cfb::BeamFetch<P, A, B>,
+    [const P: usize, const H: usize] hdl::cube3::abc_gradient::AbcUnit<P, H>,
+    [const P: usize, const H: usize] hdl::cube3::trilin_lanes::TrilinLanes<P, H>,
+    [const P: usize] hdl::cube3::compositor::Rpc<P>,
+    [] hdl::cube3::trilin::Trilin,
+);
+
+/// A moment of a clock-by-clock testbench: before rising edge `t` (set
+/// the inputs), after it (read the outputs), and the end of the run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    Before(usize),
+    After(usize),
+    End,
+}
+
+/// Simulate `uut` in rust-hdl for `clocks` clocks, calling `step` before
+/// and after each rising edge and at the end (traced like [`run_sim`]).
+pub fn run_clocks<T: Clocked>(
+    uut: T,
+    clocks: usize,
+    name: &str,
+    step: impl FnMut(Edge, &mut T) + Send + 'static,
+) {
+    use rust_hdl::prelude::*;
+    // rust-hdl runs a testbench as a `Fn`: `step` waits in a mutex (a failed
+    // assertion in it fails the test through the simulation).
+    let step = std::sync::Mutex::new(step);
+    let mut sim = Simulation::new();
+    sim.add_clock(5, |x: &mut Box<T>| {
+        let c = x.clock().val();
+        x.clock_mut().next = !c;
+    });
+    sim.add_testbench(move |mut sim: Sim<T>| {
+        let mut step = step.lock().unwrap();
+        let mut x = sim.init()?;
+        for t in 0..clocks {
+            (*step)(Edge::Before(t), &mut x);
+            // One clock cycle, as rust-hdl's `wait_clock_cycle!` waits it.
+            if x.clock().val().clk {
+                x = sim.watch(|x| !x.clock().val().clk, x)?;
+            }
+            x = sim.watch(|x| x.clock().val().clk, x)?;
+            x = sim.watch(|x| !x.clock().val().clk, x)?;
+            (*step)(Edge::After(t), &mut x);
+        }
+        (*step)(Edge::End, &mut x);
+        sim.done(x)
+    });
+    run_sim(sim, Box::new(uut), 10 * clocks as u64 + 100, name);
+}
+
+/// Call `$f::<P>()` for every `P` the RTL is built for
+/// (`hdl::common::lanes::BUILT`).
+#[macro_export]
+macro_rules! for_each_p {
+    ($f:ident) => {{
+        $f::<1>();
+        $f::<2>();
+        $f::<4>();
+        $f::<8>();
+    }};
+}
+
 /// Convert a VCD with `vcd2fst` (GTKWave's parser) and fail with its message
 /// if it rejects the file.
 pub fn assert_vcd_parses(vcd: &std::path::Path) {
@@ -181,40 +271,20 @@ pub fn assert_vcd_parses(vcd: &std::path::Path) {
     assert!(std::fs::metadata(&fst).unwrap().len() > 0);
 }
 
-/// The first sweep of a scene as the fault-injection tests take it: the
-/// golden shader and pipeline configuration, the emitted Verilog with
-/// on-chip memory preloaded, and the base plane the golden model renders.
+/// The first sweep of a scene as the fault-injection tests take it: its
+/// part (plan, golden shader and pipeline configuration) and the Verilog
+/// the Verilog engines run, with on-chip memory preloaded. Run an altered
+/// copy through `cosim::sim::simulate_altered`.
 pub struct EmittedSweep {
-    pub sweep: Sweep,
-    pub golden: Shader,
-    pub config: hdl::pipeline::PipelineConfig,
+    pub part: cosim::arch::cube4l::Part,
     pub verilog: String,
-    pub want: BasePlane,
 }
 
 pub fn emitted_sweep(scene: &Scene, vol: &Volume) -> EmittedSweep {
+    use cosim::arch::{Arch, Cube4l};
     let cam = scene.camera().unwrap();
-    let p = scene.hardware.pipelines;
-    let sweep = golden_model::cube4l::plan::Plan::new(scene, &cam)
-        .unwrap()
-        .sweeps
-        .remove(0);
-    let golden = Shader::new(scene, &cam, &sweep);
-    let config = hdl::pipeline::PipelineConfig::new(&sweep, vol.dims, p, &golden).unwrap();
-    let mem = SkewedMemory::new(vol, p);
-    let verilog = cosim::export::pipeline_verilog(
-        &config,
-        &golden,
-        cosim::export::Memory::OnChip,
-        Some(&mem),
-    )
-    .unwrap();
-    let (want, _) = golden_model::cube4l::render_sweep(vol, &sweep, &golden);
-    EmittedSweep {
-        sweep,
-        golden,
-        config,
-        verilog,
-        want,
-    }
+    let part = Cube4l::parts(scene, &cam, vol.dims).unwrap().remove(0);
+    let modules = Cube4l::modules(&part, vol);
+    let verilog = Cube4l::verilog(&part, Some(&modules)).unwrap();
+    EmittedSweep { part, verilog }
 }

@@ -1,4 +1,4 @@
-//! `hdl::abc_unit::AbcUnit` against `golden_model::cube3::abc::gradient`,
+//! `hdl::cube3::abc_gradient::AbcUnit` against `golden_model::cube3::abc::gradient`,
 //! clock by clock, for the 6- and the 12-neighbourhood: the golden model's
 //! sample planes of real views (oblique parallel on a non-cubic volume, a
 //! close perspective eye, 16-bit voxels with saturating gradient words)
@@ -7,15 +7,16 @@
 //! Every sample whose whole neighbourhood lies in the streamed planes is
 //! compared (the golden model takes no gradient elsewhere).
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::harness::{ports, run_stage};
+use cosim::Engine;
 use golden_model::cube3::abc::{gradient, Planes, RayCoeffs};
 use golden_model::cube3::plan::{Neighbourhood, Plan};
 use golden_model::cube3::{prp, trilin};
-use hdl::abc_estimator::LATENCY;
-use hdl::abc_unit::{centre, AbcUnit};
+use hdl::cube3::abc_estimator::LATENCY;
+use hdl::cube3::abc_gradient::{centre, AbcUnit};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use testbenches::{require_tool, run_sim, scene};
+use testbenches::{for_each_p, require_tool, run_clocks, scene, Edge};
 
 const H: usize = 10;
 
@@ -208,16 +209,10 @@ fn rust_hdl_run<const P: usize>() {
         assert!(c.compared > 50, "{}: only {} gradients", c.name, c.compared);
         let uut = unit::<P>(&c);
         let (clocks, d) = timing(&c);
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<AbcUnit<P, H>>| {
-            x.clock.next = !x.clock.val()
-        });
-        sim.add_testbench(move |mut sim: Sim<AbcUnit<P, H>>| {
-            let mut x = sim.init()?;
-            for t in 0..clocks {
-                let (samples, dx, dy) = inputs(&tb, t, d);
+        let name = format!("abc {}", c.name);
+        run_clocks(uut, clocks, &name, move |e, x| match e {
+            Edge::Before(t) => {
+                let (samples, dx, dy) = inputs(&c, t, d);
                 for (i, s) in samples.iter().enumerate() {
                     x.sample[i].next = (*s as u64).to_bits();
                 }
@@ -225,52 +220,36 @@ fn rust_hdl_run<const P: usize>() {
                 x.dx_mag.next = (dx.unsigned_abs() as u64).to_bits();
                 x.dy_neg.next = dy < 0;
                 x.dy_mag.next = (dy.unsigned_abs() as u64).to_bits();
-                wait_clock_cycle!(sim, clock, x);
-                if let Some(want) = due(&tb, t, d) {
-                    for (i, w) in want.iter().enumerate() {
-                        if let Some(w) = w {
-                            let got =
-                                [&x.gx[i], &x.gy[i], &x.gz[i]].map(|s| s.val().to_u32() as i32);
-                            compare(&tb, "rust-hdl", t, i, got, *w);
-                            // The centre sample leaves with its gradient.
-                            let s = tb.clocks[t + 1 - d - LATENCY].samples[i];
-                            let centre = x.centre[i].val().to_u32();
-                            assert_eq!(
-                                centre, s,
-                                "{}: rust-hdl: clock {t}, lane {i}: centre sample {centre}, not {s}",
-                                tb.name
-                            );
-                        }
+            }
+            Edge::After(t) => {
+                for (i, w) in due(&c, t, d).into_iter().flatten().enumerate() {
+                    if let Some(w) = w {
+                        let got = [&x.gx[i], &x.gy[i], &x.gz[i]].map(|s| s.val().to_u32() as i32);
+                        compare(&c, "rust-hdl", t, i, got, *w);
+                        // The centre sample leaves with its gradient.
+                        let s = c.clocks[t + 1 - d - LATENCY].samples[i];
+                        let centre = x.centre[i].val().to_u32();
+                        assert_eq!(
+                            centre, s,
+                            "{}: rust-hdl: clock {t}, lane {i}: centre sample {centre}, not {s}",
+                            c.name
+                        );
                     }
                 }
             }
-            sim.done(x)
+            Edge::End => {}
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * clocks as u64 + 100,
-            &format!("abc {}", case.name),
-        );
     }
 }
 
 #[test]
 fn abc_unit_matches_golden_model_in_rust_hdl() {
-    rust_hdl_run::<1>();
-    rust_hdl_run::<2>();
-    rust_hdl_run::<4>();
-    rust_hdl_run::<8>();
+    for_each_p!(rust_hdl_run);
 }
 
 /// Run a case's Verilog; the number of gradient words that differ (the
 /// first one panics unless `count`).
-fn verilog_case<const P: usize>(
-    engine: StageEngine,
-    c: &Case,
-    verilog: &str,
-    count: bool,
-) -> usize {
+fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: bool) -> usize {
     let ports = ports(verilog).unwrap();
     let (clocks, d) = timing(c);
     let vectors: Vec<Vec<u64>> = (0..clocks)
@@ -326,10 +305,10 @@ fn verilog_of<const P: usize>(c: &Case) -> String {
 fn abc_unit_verilog_matches_golden_model_under_icarus() {
     require_tool("iverilog");
     for c in cases(2) {
-        verilog_case::<2>(StageEngine::Iverilog, &c, &verilog_of::<2>(&c), false);
+        verilog_case::<2>(Engine::Iverilog, &c, &verilog_of::<2>(&c), false);
     }
     for c in cases(4) {
-        verilog_case::<4>(StageEngine::Iverilog, &c, &verilog_of::<4>(&c), false);
+        verilog_case::<4>(Engine::Iverilog, &c, &verilog_of::<4>(&c), false);
     }
 }
 
@@ -337,7 +316,7 @@ fn abc_unit_verilog_matches_golden_model_under_icarus() {
 fn abc_unit_verilog_matches_golden_model_under_verilator() {
     require_tool("verilator");
     for c in cases(4) {
-        verilog_case::<4>(StageEngine::Verilator, &c, &verilog_of::<4>(&c), false);
+        verilog_case::<4>(Engine::Verilator, &c, &verilog_of::<4>(&c), false);
     }
 }
 
@@ -350,6 +329,6 @@ fn a_fault_in_the_abc_verilog_is_caught() {
     let site = "estimators$2$yp = lanes$2$t011;";
     assert!(verilog.contains(site), "the fault site exists");
     let faulty = verilog.replacen(site, "estimators$2$yp = lanes$2$t211;", 1);
-    let wrong = verilog_case::<4>(StageEngine::Iverilog, &c, &faulty, true);
+    let wrong = verilog_case::<4>(Engine::Iverilog, &c, &faulty, true);
     assert!(wrong > 0, "the faulty ABC unit went unnoticed");
 }

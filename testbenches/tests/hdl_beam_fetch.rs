@@ -1,4 +1,4 @@
-//! `hdl::beam_fetch::BeamFetch` against `golden_model::cube3::prp::fetch`:
+//! `hdl::cube3::cfb::BeamFetch` against `golden_model::cube3::prp::fetch`:
 //! the volume in the skewed memory modules, the PRPs of consecutive
 //! scanlines fetched as beams through the Fast Bus into three rotating
 //! 2-DSBs, and the `cur` and `next` streams read from them must be the
@@ -8,13 +8,14 @@
 //! than a voxel a plane, some beyond 45°), in rust-hdl simulation and under
 //! Icarus.
 
-use cosim::stage::{ports, run_stage, start_only, StageEngine};
+use cosim::harness::{ports, run_stage, start_only};
+use cosim::Engine;
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::prp;
-use hdl::beam_fetch::{BeamFetch, BeamFetchConfig};
+use hdl::cube3::{cfb::BeamFetch, BeamFetchConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use testbenches::{require_tool, run_sim, scene};
+use testbenches::{for_each_p, require_tool, run_clocks, scene, Edge};
 
 const A: usize = 12;
 const B: usize = 10;
@@ -124,19 +125,16 @@ fn fetch<const P: usize>(c: &Case) -> BeamFetch<P, A, B> {
     uut
 }
 
-/// Checks the segments in order as they come out.
-struct Segments<'a> {
-    case: &'a Case,
-    seen: usize,
-}
+/// Checks the segments in order as they come out: the segments seen.
+#[derive(Default)]
+struct Segments(usize);
 
-impl Segments<'_> {
-    fn clock(&mut self, engine: &str, t: usize, valid: bool, got: [Vec<u32>; 2]) {
+impl Segments {
+    fn clock(&mut self, c: &Case, engine: &str, t: usize, valid: bool, got: [Vec<u32>; 2]) {
         if !valid {
             return;
         }
-        let c = self.case;
-        let want = c.want.get(self.seen).unwrap_or_else(|| {
+        let want = c.want.get(self.0).unwrap_or_else(|| {
             panic!(
                 "{}: {engine}: a segment beyond the stream at clock {t}",
                 c.name
@@ -148,21 +146,16 @@ impl Segments<'_> {
                     assert_eq!(
                         got[b][i], *w,
                         "{}: {engine}: first mismatch at clock {t}, segment {} of the stream, {name}[{i}]: rtl {} golden {w}",
-                        c.name, self.seen, got[b][i]
+                        c.name, self.0, got[b][i]
                     );
                 }
             }
         }
-        self.seen += 1;
+        self.0 += 1;
     }
 
-    fn finish(&self) {
-        assert_eq!(
-            self.seen,
-            self.case.want.len(),
-            "{}: segments",
-            self.case.name
-        );
+    fn finish(&self, c: &Case) {
+        assert_eq!(self.0, c.want.len(), "{}: segments", c.name);
     }
 }
 
@@ -170,42 +163,25 @@ fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = fetch::<P>(&c);
         let clocks = c.config.clocks() + 4;
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<BeamFetch<P, A, B>>| {
-            x.clock.next = !x.clock.val()
-        });
-        sim.add_testbench(move |mut sim: Sim<BeamFetch<P, A, B>>| {
-            let mut x = sim.init()?;
-            let mut segments = Segments { case: &tb, seen: 0 };
-            for t in 0..clocks {
-                x.start.next = t == 0;
-                wait_clock_cycle!(sim, clock, x);
+        let name = format!("beam fetch {}", c.name);
+        let mut segments = Segments::default();
+        run_clocks(uut, clocks, &name, move |e, x| match e {
+            Edge::Before(t) => x.start.next = t == 0,
+            Edge::After(t) => {
                 let got = [
                     (0..P).map(|i| x.cur[i].val().to_u32()).collect(),
                     (0..P).map(|i| x.next[i].val().to_u32()).collect(),
                 ];
-                segments.clock("rust-hdl", t, x.valid.val(), got);
+                segments.clock(&c, "rust-hdl", t, x.valid.val(), got);
             }
-            segments.finish();
-            sim.done(x)
+            Edge::End => segments.finish(&c),
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * clocks as u64 + 100,
-            &format!("beam fetch {}", case.name),
-        );
     }
 }
 
 #[test]
 fn beam_fetch_matches_golden_prps_in_rust_hdl() {
-    rust_hdl_run::<1>();
-    rust_hdl_run::<2>();
-    rust_hdl_run::<4>();
-    rust_hdl_run::<8>();
+    for_each_p!(rust_hdl_run);
 }
 
 #[test]
@@ -217,13 +193,13 @@ fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
         let vectors: Vec<Vec<u64>> = (0..c.config.clocks() + 4)
             .map(|t| start_only(&ports, t))
             .collect();
-        let outs = run_stage(StageEngine::Iverilog, &verilog, &vectors).unwrap();
+        let outs = run_stage(Engine::Iverilog, &verilog, &vectors).unwrap();
         let names: Vec<&str> = ports
             .iter()
             .filter(|p| !p.input)
             .map(|p| p.name.as_str())
             .collect();
-        let mut segments = Segments { case: &c, seen: 0 };
+        let mut segments = Segments::default();
         for (t, o) in outs.iter().enumerate() {
             let get = |n: String| {
                 o[names.iter().position(|x| *x == n).unwrap()].map_or(u32::MAX, |v| v as u32)
@@ -232,8 +208,8 @@ fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
                 (0..4).map(|i| get(format!("cur${i}"))).collect(),
                 (0..4).map(|i| get(format!("next${i}"))).collect(),
             ];
-            segments.clock("Icarus", t, get("valid".into()) == 1, got);
+            segments.clock(&c, "Icarus", t, get("valid".into()) == 1, got);
         }
-        segments.finish();
+        segments.finish(&c);
     }
 }

@@ -1,14 +1,14 @@
-//! `hdl::bilinear` against `golden_model::cube4l::compositor::gather`, cycle by cycle
+//! `hdl::cube4l::bilinear` against `golden_model::cube4l::compositor::gather`, cycle by cycle
 //! in rust-hdl simulation (`bilinear::LATENCY` clocks); its Verilog passes
 //! yosys.
 
 use golden_model::cube4l::compositor::gather;
-use hdl::bilinear::Bilinear;
+use hdl::cube4l::bilinear::Bilinear;
 use rust_hdl::prelude::*;
 use testbenches::{require_tool, Vectors};
 
 const N: usize = 800;
-use hdl::bilinear::LATENCY;
+use hdl::cube4l::bilinear::LATENCY;
 
 struct Vector {
     cells: [[u32; 4]; 4],

@@ -1,10 +1,13 @@
-//! `hdl::cfb` against `golden_model::cube4l::cfb::CfbStream`: the memory is loaded
+//! `hdl::cube4l::cfb` against `golden_model::cube4l::cfb::CfbStream`: the memory is loaded
 //! through the load port, then every beat of the sweep is compared lane by
 //! lane, cycle by cycle, in rust-hdl simulation.
 
 use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
 use golden_model::cube4l::plan::Plan;
-use hdl::cfb::{face_code, Cfb, CfbConfig};
+use hdl::cube4l::{
+    cfb::{face_code, Cfb},
+    CfbConfig,
+};
 use rust_hdl::prelude::*;
 use scene::volume::builtin;
 use testbenches::{require_tool, run_sim, scene};
@@ -121,26 +124,25 @@ fn run_sweep_memory<const P: usize>(
                 assert_eq!(rtl, golden, "{label}: beat {next}, {name}: rtl {rtl} golden {golden}");
             }
             for (k, g) in beat.lanes.iter().enumerate() {
-                let l = &x.lanes[k];
                 let c = g.control;
                 let (bx, by) = g.pixel.map_or((0, 0), |[a, b]| (a as u32, b as u32));
                 let fields = [
-                    ("x", l.x.val().to_u32(), g.pos[0] as u32),
-                    ("y", l.y.val().to_u32(), g.pos[1] as u32),
-                    ("z", l.z.val().to_u32(), g.pos[2] as u32),
-                    ("address", l.address.val().to_u32(), g.address as u32),
-                    ("value", l.value.val().to_u32(), g.value as u32),
-                    ("pad", l.pad.val() as u32, g.pad as u32),
+                    ("x", x.x[k].val().to_u32(), g.pos[0] as u32),
+                    ("y", x.y[k].val().to_u32(), g.pos[1] as u32),
+                    ("z", x.z[k].val().to_u32(), g.pos[2] as u32),
+                    ("address", x.address[k].val().to_u32(), g.address as u32),
+                    ("value", x.value[k].val().to_u32(), g.value as u32),
+                    ("pad", x.pad[k].val() as u32, g.pad as u32),
                     ("bs", x.bs.val() as u32, g.bs as u32),
-                    ("sr", l.sr.val() as u32, c.sr as u32),
-                    ("er", l.er.val() as u32, c.er as u32),
-                    ("invalid", l.invalid.val() as u32, c.invalid as u32),
-                    ("dx", sign_mag(l.dx_neg.val(), l.dx_mag.val().to_u32()), c.dx as u32),
-                    ("dy", sign_mag(l.dy_neg.val(), l.dy_mag.val().to_u32()), c.dy as u32),
-                    ("at_edge", l.at_edge.val() as u32, c.edge as u32),
-                    ("face", l.face.val().to_u32(), face_code(c.face)),
-                    ("base_x", l.base_x.val().to_u32(), bx),
-                    ("base_y", l.base_y.val().to_u32(), by),
+                    ("sr", x.sr[k].val() as u32, c.sr as u32),
+                    ("er", x.er[k].val() as u32, c.er as u32),
+                    ("invalid", x.invalid[k].val() as u32, c.invalid as u32),
+                    ("dx", sign_mag(x.dx_neg[k].val(), x.dx_mag[k].val().to_u32()), c.dx as u32),
+                    ("dy", sign_mag(x.dy_neg[k].val(), x.dy_mag[k].val().to_u32()), c.dy as u32),
+                    ("at_edge", x.at_edge[k].val() as u32, c.edge as u32),
+                    ("face", x.face[k].val().to_u32(), face_code(c.face)),
+                    ("base_x", x.base_x[k].val().to_u32(), bx),
+                    ("base_y", x.base_y[k].val().to_u32(), by),
                 ];
                 for (name, rtl, golden) in fields {
                     if rtl != golden {

@@ -1,4 +1,4 @@
-//! `hdl::compositor` against `golden_model::cube4l::compositor::composite`, cycle by
+//! `hdl::cube4l::compositor` against `golden_model::cube4l::compositor::composite`, cycle by
 //! cycle in rust-hdl simulation, for every mode, both orders and two RGBA
 //! widths; its Verilog passes yosys.
 
@@ -6,7 +6,7 @@ use golden_model::cube4l::compositor::composite;
 use golden_model::cube4l::plan::Order;
 use golden_model::cube4l::shader::Sample;
 use golden_model::fixed::max_of;
-use hdl::compositor::Compositor;
+use hdl::cube4l::compositor::Compositor;
 use rust_hdl::prelude::*;
 use scene::Mode;
 use testbenches::{assert_vcd_parses, require_tool, Vectors};

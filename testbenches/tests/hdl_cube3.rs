@@ -7,11 +7,12 @@
 //! as emitted Verilog under Icarus and Verilator. The 2-DSB streams are the
 //! golden model's PRPs (`prp::fetch`), as the beam fetch would fill them.
 
-use cosim::stage::{ports, StageEngine};
+use cosim::harness::ports;
+use cosim::Engine;
 use hdl::cube3::Cube3;
 use rust_hdl::prelude::*;
 use testbenches::cube3::{cases, emitted_verilog, verilog_pixels, Case, Pixels};
-use testbenches::{require_tool, run_sim};
+use testbenches::{for_each_p, pixel_port, require_tool, run_clocks, Edge};
 
 const H: usize = 10;
 
@@ -53,54 +54,34 @@ fn stream(c: &Case, t: usize) -> (bool, bool, &[u32], &[u32]) {
 fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = pipeline::<P>(&c);
-        let n = clocks(&c);
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<Cube3<P, H>>| x.clock.next = !x.clock.val());
-        sim.add_testbench(move |mut sim: Sim<Cube3<P, H>>| {
-            let mut x = sim.init()?;
-            let mut pixels = Pixels::new(&tb, first_pixel(&tb));
-            for t in 0..n {
-                let (start, valid, cur, next) = stream(&tb, t);
+        let (n, name) = (clocks(&c), format!("cube3 {}", c.name));
+        let mut pixels = Pixels::new(&c, first_pixel(&c));
+        run_clocks(uut, n, &name, move |e, x| match e {
+            Edge::Before(t) => {
+                let (start, valid, cur, next) = stream(&c, t);
                 x.start.next = start;
                 x.valid.next = valid;
                 for i in 0..P {
                     x.cur[i].next = (cur[i] as u64).to_bits();
                     x.next[i].next = (next[i] as u64).to_bits();
                 }
-                wait_clock_cycle!(sim, clock, x);
-                let px = [
-                    x.pixel_r.val().to_u64(),
-                    x.pixel_g.val().to_u64(),
-                    x.pixel_b.val().to_u64(),
-                    x.pixel_a.val().to_u64(),
-                ];
-                pixels.clock("rust-hdl", t, x.done.val(), px, x.has_sample.val());
             }
-            let errors = pixels.finish();
-            assert!(errors.is_empty(), "{}", errors[0]);
-            sim.done(x)
+            Edge::After(t) => pixels.read("rust-hdl", t, pixel_port!(x)),
+            Edge::End => {
+                let errors = pixels.finish();
+                assert!(errors.is_empty(), "{}", errors[0]);
+            }
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * n as u64 + 100,
-            &format!("cube3 {}", case.name),
-        );
     }
 }
 
 #[test]
 fn cube3_pipeline_matches_golden_base_plane_in_rust_hdl() {
-    rust_hdl_run::<1>();
-    rust_hdl_run::<2>();
-    rust_hdl_run::<4>();
-    rust_hdl_run::<8>();
+    for_each_p!(rust_hdl_run);
 }
 
 /// Run a case's Verilog; its mismatches.
-fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) -> Vec<String> {
+fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str) -> Vec<String> {
     let ports = ports(verilog).unwrap();
     let vectors: Vec<Vec<u64>> = (0..clocks(c))
         .map(|t| {
@@ -120,7 +101,7 @@ fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) ->
     verilog_pixels(engine, c, verilog, &vectors, first_pixel(c))
 }
 
-fn check<const P: usize>(engine: StageEngine) {
+fn check<const P: usize>(engine: Engine) {
     for c in cases(P) {
         let errors = verilog_case::<P>(engine, &c, &emitted_verilog(&c, &pipeline::<P>(&c)));
         assert!(errors.is_empty(), "{}", errors[0]);
@@ -130,14 +111,14 @@ fn check<const P: usize>(engine: StageEngine) {
 #[test]
 fn cube3_verilog_matches_golden_base_plane_under_icarus() {
     require_tool("iverilog");
-    check::<2>(StageEngine::Iverilog);
-    check::<4>(StageEngine::Iverilog);
+    check::<2>(Engine::Iverilog);
+    check::<4>(Engine::Iverilog);
 }
 
 #[test]
 fn cube3_verilog_matches_golden_base_plane_under_verilator() {
     require_tool("verilator");
-    check::<4>(StageEngine::Verilator);
+    check::<4>(Engine::Verilator);
 }
 
 #[test]
@@ -150,7 +131,7 @@ fn a_fault_in_the_cube3_verilog_is_caught() {
     let site = "(flags_q$6$q & lane_bit$0)";
     assert!(verilog.contains(site), "the fault site exists");
     let faulty = verilog.replace(site, "(flags_q$5$q & lane_bit$0)");
-    let errors = verilog_case::<2>(StageEngine::Iverilog, &c, &faulty);
+    let errors = verilog_case::<2>(Engine::Iverilog, &c, &faulty);
     assert!(
         !errors.is_empty(),
         "the faulty Cube-3 pipeline went unnoticed"

@@ -6,7 +6,7 @@
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan};
 use golden_model::cube4l::shader::Shader as GoldenShader;
-use hdl::pipeline::{unpack, Pipeline, PipelineConfig};
+use hdl::cube4l::{config::unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
 use scene::volume::builtin;
 use testbenches::{require_tool, run_sim, scene, stream_results};
@@ -83,7 +83,7 @@ fn run_sweep<const P: usize>(
     );
     let mem = SkewedMemory::new(vol, P);
     assert!(mem.modules[0].len() <= 1 << A);
-    uut.cfb.preload(&mem.modules);
+    uut.preload(&mem.modules);
     uut.connect_all();
     let expected_pixels = base.faces.iter().filter(|f| **f != Face::None).count();
     let beats = results.len();
@@ -104,19 +104,18 @@ fn run_sweep<const P: usize>(
             wait_clock_cycle!(sim, clock, x);
             cycles += 1;
             assert!(cycles < 2 * beats as u64 + 64, "{label}: no result for beat {beat}");
-            if !x.lanes[0].res_beat.val() {
+            if !x.res_beat[0].val() {
                 continue;
             }
             for (k, want) in results[beat].iter().enumerate() {
-                let lane = &x.lanes[k];
-                assert_eq!(lane.res_valid.val(), want.is_some(), "{label}: beat {beat} lane {k}: padding");
+                assert_eq!(x.res_valid[k].val(), want.is_some(), "{label}: beat {beat} lane {k}: padding");
                 let Some(want) = want else { continue };
-                let got = unpack(mode, lane.res.val().to_u64());
+                let got = unpack(mode, x.res[k].val().to_u64());
                 if got != *want {
                     panic!("{label}: first mismatch at cycle {cycles}, beat {beat}, lane {k}, res: rtl {got:?} golden {want:?}");
                 }
-                if lane.px_valid.val() {
-                    let (px, py) = (lane.px_x.val().to_u32() as usize, lane.px_y.val().to_u32() as usize);
+                if x.px_valid[k].val() {
+                    let (px, py) = (x.px_x[k].val().to_u32() as usize, x.px_y[k].val().to_u32() as usize);
                     let i = px + base.width * py;
                     assert!(px < base.width && py < base.height && base.faces[i] != Face::None, "{label}: beat {beat} lane {k}: pixel address ({px}, {py}) is no ER cell");
                     assert_eq!(base.pixels[i], *want, "{label}: pixel ({px}, {py}) differs from the base plane");
@@ -301,7 +300,14 @@ fn pipeline_wider_voxels_and_channels() {
             q = top / 4
         ));
         let vol = builtin("sphere", s.volume.dims, voxel_bits).unwrap();
-        let r = cosim::sim::simulate(&s, &s.camera().unwrap(), &vol, None).unwrap();
+        let r = cosim::sim::simulate::<cosim::arch::Cube4l>(
+            &s,
+            &s.camera().unwrap(),
+            &vol,
+            cosim::Engine::RustHdl,
+            None,
+        )
+        .unwrap();
         assert_eq!(
             r.mismatches, 0,
             "{mode} voxel_bits={voxel_bits} rgba_bits={rgba_bits} p={p}: first differences {:?}",

@@ -1,16 +1,17 @@
-//! `hdl::rpc::Rpc` against `golden_model::cube3::rpc`, clock by clock, for
+//! `hdl::cube3::compositor::Rpc` against `golden_model::cube3::rpc`, clock by clock, for
 //! p = 1, 2, 4 and 8 leaves and every mode: in rust-hdl simulation and as
 //! emitted Verilog under Icarus (every case) and Verilator (four). Rays of
 //! 1 to 3p + 1 samples follow each other without a gap; leaves cover
 //! near-opaque and near-transparent α, empty MIP / MinIP samples and rays
 //! without any valid sample.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::harness::{ports, run_stage};
+use cosim::Engine;
 use golden_model::cube3::rpc::{identity, node, pixel, tree, Leaf};
-use hdl::rpc::{latency, Rpc};
+use hdl::cube3::compositor::{latency, Rpc};
 use rust_hdl::prelude::*;
 use scene::Mode;
-use testbenches::{require_tool, run_sim, Vectors};
+use testbenches::{for_each_p, require_tool, run_clocks, Edge, Vectors};
 
 const MODES: [Mode; 5] = [
     Mode::Composite,
@@ -168,14 +169,10 @@ fn rust_hdl_run<const P: usize>() {
         let clocks = c.clocks.len() + latency(P);
         let mut uut = Rpc::<P>::new(c.mode, c.rgba_bits, c.voxel_bits);
         uut.connect_all();
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<Rpc<P>>| x.clock.next = !x.clock.val());
-        sim.add_testbench(move |mut sim: Sim<Rpc<P>>| {
-            let mut x = sim.init()?;
-            for t in 0..clocks {
-                let k = at(&tb, P, t);
+        let name = format!("rpc {}", c.name);
+        run_clocks(uut, clocks, &name, move |e, x| match e {
+            Edge::Before(t) => {
+                let k = at(&c, P, t);
                 for (i, l) in k.leaves.iter().enumerate() {
                     x.leaf_r[i].next = (l.value[0] as u64).to_bits();
                     x.leaf_g[i].next = (l.value[1] as u64).to_bits();
@@ -185,38 +182,30 @@ fn rust_hdl_run<const P: usize>() {
                 }
                 x.first.next = k.first;
                 x.last.next = k.last;
-                wait_clock_cycle!(sim, clock, x);
+            }
+            Edge::After(t) => {
                 let px = [
                     x.pixel_r.val().to_u64(),
                     x.pixel_g.val().to_u64(),
                     x.pixel_b.val().to_u64(),
                     x.pixel_a.val().to_u64(),
                 ];
-                if let Err(e) = check(&tb, P, "rust-hdl", t, x.done.val(), px, x.has_sample.val()) {
+                if let Err(e) = check(&c, P, "rust-hdl", t, x.done.val(), px, x.has_sample.val()) {
                     panic!("{e}");
                 }
             }
-            sim.done(x)
+            Edge::End => {}
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * clocks as u64 + 100,
-            &format!("rpc {}", case.name),
-        );
     }
 }
 
 #[test]
 fn rpc_matches_golden_model_in_rust_hdl() {
-    rust_hdl_run::<1>();
-    rust_hdl_run::<2>();
-    rust_hdl_run::<4>();
-    rust_hdl_run::<8>();
+    for_each_p!(rust_hdl_run);
 }
 
 /// Run a case's emitted Verilog and check every clock; the mismatches.
-fn verilog_case<const P: usize>(engine: StageEngine, c: &Case, verilog: &str) -> Vec<String> {
+fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str) -> Vec<String> {
     let ports = ports(verilog).unwrap();
     let clocks = c.clocks.len() + latency(P);
     let vectors: Vec<Vec<u64>> = (0..clocks)
@@ -267,7 +256,7 @@ fn verilog_of<const P: usize>(c: &Case) -> String {
     generate_verilog(&uut)
 }
 
-fn verilog_run<const P: usize>(engine: StageEngine, modes: &[Mode]) {
+fn verilog_run<const P: usize>(engine: Engine, modes: &[Mode]) {
     for c in cases(P).iter().filter(|c| modes.contains(&c.mode)) {
         if let Some(e) = verilog_case::<P>(engine, c, &verilog_of::<P>(c)).first() {
             panic!("{e}");
@@ -278,17 +267,17 @@ fn verilog_run<const P: usize>(engine: StageEngine, modes: &[Mode]) {
 #[test]
 fn rpc_verilog_matches_golden_model_under_icarus() {
     require_tool("iverilog");
-    verilog_run::<1>(StageEngine::Iverilog, &MODES);
-    verilog_run::<2>(StageEngine::Iverilog, &MODES);
-    verilog_run::<4>(StageEngine::Iverilog, &MODES);
-    verilog_run::<8>(StageEngine::Iverilog, &MODES);
+    verilog_run::<1>(Engine::Iverilog, &MODES);
+    verilog_run::<2>(Engine::Iverilog, &MODES);
+    verilog_run::<4>(Engine::Iverilog, &MODES);
+    verilog_run::<8>(Engine::Iverilog, &MODES);
 }
 
 #[test]
 fn rpc_verilog_matches_golden_model_under_verilator() {
     require_tool("verilator");
-    verilog_run::<2>(StageEngine::Verilator, &[Mode::Composite]);
-    verilog_run::<8>(StageEngine::Verilator, &[Mode::Minip, Mode::Xray]);
+    verilog_run::<2>(Engine::Verilator, &[Mode::Composite]);
+    verilog_run::<8>(Engine::Verilator, &[Mode::Minip, Mode::Xray]);
 }
 
 #[test]
@@ -308,6 +297,6 @@ fn a_fault_in_the_rpc_verilog_is_caught() {
         "{head}{}",
         tail.replacen(site, "ch_r$front_alpha = back_a;", 1)
     );
-    let wrong = verilog_case::<4>(StageEngine::Iverilog, &c, &faulty);
+    let wrong = verilog_case::<4>(Engine::Iverilog, &c, &faulty);
     assert!(!wrong.is_empty(), "the faulty RPC went unnoticed");
 }

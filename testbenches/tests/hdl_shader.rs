@@ -1,4 +1,4 @@
-//! `hdl::shader` alone against `golden_model::cube4l::shader::Shader::sample`,
+//! `hdl::common::shader` alone against `golden_model::cube4l::shader::Shader::sample`,
 //! cycle by cycle in rust-hdl simulation: classification (1-D and 2-D with
 //! gradient opacity), the normal quantizer and reflectance map, shading and
 //! opacity weighting, for composite, first-opaque, X-ray and MIP, with edge
@@ -12,7 +12,7 @@
 
 use golden_model::cube4l::plan::{Control, Face, Plan};
 use golden_model::cube4l::shader::Shader as Golden;
-use hdl::shader::Shader;
+use hdl::common::shader::Shader;
 use rust_hdl::prelude::*;
 use testbenches::{run_sim, scene, Vectors};
 

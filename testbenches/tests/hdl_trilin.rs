@@ -1,16 +1,17 @@
-//! `hdl::trilin::Trilin` against `golden_model::cube3::trilin`, clock by
+//! `hdl::cube3::trilin::Trilin` against `golden_model::cube3::trilin`, clock by
 //! clock: in rust-hdl simulation and as emitted Verilog under Icarus and
 //! Verilator, on the cells of real views (oblique, exactly 45° about one
 //! axis, a close perspective eye, a non-cubic volume, full-scale 16-bit
 //! voxels with 24-bit samples) and on edge weights 0 and 1.0.
 
-use cosim::stage::{run_stage, StageEngine};
+use cosim::harness::run_stage;
+use cosim::Engine;
 use golden_model::cube3::plan::{Plan, View};
 use golden_model::cube3::{prp, trilin};
-use hdl::trilin::{Trilin, LATENCY};
+use hdl::cube3::trilin::{Trilin, LATENCY};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use testbenches::{require_tool, run_sim, scene, Vectors};
+use testbenches::{require_tool, run_clocks, scene, Edge, Vectors};
 
 /// One TRILIN input: the eight voxels (`[front, back]` of A, B, C, D) and
 /// the weights.
@@ -171,14 +172,10 @@ fn trilin_matches_golden_model_in_rust_hdl() {
     for c in cases() {
         let clocks = c.inputs.len() + LATENCY - 1;
         let uut = trilin(&c);
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<Trilin>| x.clock.next = !x.clock.val());
-        sim.add_testbench(move |mut sim: Sim<Trilin>| {
-            let mut x = sim.init()?;
-            for t in 0..clocks {
-                let i = at(&tb, t);
+        let name = format!("trilin {}", c.name);
+        run_clocks(uut, clocks, &name, move |e, x| match e {
+            Edge::Before(t) => {
+                let i = at(&c, t);
                 let [[a0, a1], [b0, b1], [c0, c1], [d0, d1]] =
                     i.cell.map(|r| r.map(|v| (v as u64).to_bits()));
                 (x.a0.next, x.a1.next, x.b0.next, x.b1.next) = (a0, a1, b0, b1);
@@ -186,22 +183,15 @@ fn trilin_matches_golden_model_in_rust_hdl() {
                 x.offset.next = (i.w.offset as u64).to_bits();
                 x.wx.next = (i.w.wx as u64).to_bits();
                 x.wy.next = (i.w.wy as u64).to_bits();
-                wait_clock_cycle!(sim, clock, x);
-                if t + 1 >= LATENCY {
-                    let got = x.sample.val().to_u32();
-                    if got != tb.want[t + 1 - LATENCY] {
-                        mismatch(&tb, "rust-hdl", t, Some(got as u64));
-                    }
+            }
+            Edge::After(t) if t + 1 >= LATENCY => {
+                let got = x.sample.val().to_u32();
+                if got != c.want[t + 1 - LATENCY] {
+                    mismatch(&c, "rust-hdl", t, Some(got as u64));
                 }
             }
-            sim.done(x)
+            _ => {}
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * clocks as u64 + 100,
-            &format!("trilin {}", case.name),
-        );
     }
 }
 
@@ -218,7 +208,7 @@ fn vectors(c: &Case, clocks: usize) -> Vec<Vec<u64>> {
         .collect()
 }
 
-fn verilog_run(engine: StageEngine) {
+fn verilog_run(engine: Engine) {
     for c in cases() {
         let verilog = generate_verilog(&trilin(&c));
         let clocks = c.inputs.len() + LATENCY - 1;
@@ -235,13 +225,13 @@ fn verilog_run(engine: StageEngine) {
 #[test]
 fn trilin_verilog_matches_golden_model_under_icarus() {
     require_tool("iverilog");
-    verilog_run(StageEngine::Iverilog);
+    verilog_run(Engine::Iverilog);
 }
 
 #[test]
 fn trilin_verilog_matches_golden_model_under_verilator() {
     require_tool("verilator");
-    verilog_run(StageEngine::Verilator);
+    verilog_run(Engine::Verilator);
 }
 
 #[test]
@@ -260,7 +250,7 @@ fn a_fault_in_the_trilin_verilog_is_caught() {
     );
     assert_ne!(faulty, verilog, "the fault site exists");
     let vectors = vectors(&c, c.inputs.len() + LATENCY - 1);
-    let outs = run_stage(StageEngine::Iverilog, &faulty, &vectors).unwrap();
+    let outs = run_stage(Engine::Iverilog, &faulty, &vectors).unwrap();
     let wrong = (LATENCY - 1..outs.len())
         .filter(|&t| outs[t][0] != Some(c.want[t + 1 - LATENCY] as u64))
         .count();

@@ -1,18 +1,19 @@
-//! `hdl::trilin_lanes::TrilinLanes` against `golden_model::cube3::trilin::plane`,
+//! `hdl::cube3::trilin_lanes::TrilinLanes` against `golden_model::cube3::trilin::plane`,
 //! clock by clock: the golden model's PRPs of consecutive scanlines stream in
 //! as the 2-D skewed buffers deliver them (ray by ray, a segment of p planes
 //! per clock), for p = 1, 2, 4 and 8 on an oblique parallel view of a
 //! non-cubic volume and a close perspective eye, in rust-hdl simulation and
 //! as emitted Verilog under Icarus and Verilator.
 
-use cosim::stage::{ports, run_stage, StageEngine};
+use cosim::harness::{ports, run_stage};
+use cosim::Engine;
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::{prp, trilin};
-use hdl::trilin::LATENCY;
-use hdl::trilin_lanes::{cell_delay, TrilinLanes};
+use hdl::cube3::trilin::LATENCY;
+use hdl::cube3::trilin_lanes::{cell_delay, TrilinLanes};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use testbenches::{require_tool, run_sim, scene};
+use testbenches::{for_each_p, require_tool, run_clocks, scene, Edge};
 
 const H: usize = 8;
 
@@ -161,16 +162,10 @@ fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = unit::<P>(&c);
         let clocks = c.clocks.len() + LATENCY;
-        let case = std::sync::Arc::new(c);
-        let tb = case.clone();
-        let mut sim = Simulation::new();
-        sim.add_clock(5, |x: &mut Box<TrilinLanes<P, H>>| {
-            x.clock.next = !x.clock.val()
-        });
-        sim.add_testbench(move |mut sim: Sim<TrilinLanes<P, H>>| {
-            let mut x = sim.init()?;
-            for t in 0..clocks {
-                let k = at(&tb, P, t);
+        let name = format!("trilin lanes {}", c.name);
+        run_clocks(uut, clocks, &name, move |e, x| match e {
+            Edge::Before(t) => {
+                let k = at(&c, P, t);
                 for i in 0..P {
                     x.cur[i].next = (k.cur[i] as u64).to_bits();
                     x.next[i].next = (k.next[i] as u64).to_bits();
@@ -178,45 +173,32 @@ fn rust_hdl_run<const P: usize>() {
                     x.wy[i].next = (k.wy[i] as u64).to_bits();
                 }
                 x.first.next = k.first;
-                wait_clock_cycle!(sim, clock, x);
-                for (i, w) in due(&tb, t).iter().enumerate() {
+            }
+            Edge::After(t) => {
+                for (i, w) in due(&c, t).iter().enumerate() {
                     if let Some(w) = w {
                         let got = x.sample[i].val().to_u32();
                         assert_eq!(
                             got, *w,
                             "{}: rust-hdl: first mismatch at clock {t}, lane {i}: rtl {got} golden {w}",
-                            tb.name
+                            c.name
                         );
                     }
                 }
             }
-            sim.done(x)
+            Edge::End => {}
         });
-        run_sim(
-            sim,
-            Box::new(uut),
-            10 * clocks as u64 + 100,
-            &format!("trilin lanes {}", case.name),
-        );
     }
 }
 
 #[test]
 fn trilin_lanes_match_golden_model_in_rust_hdl() {
-    rust_hdl_run::<1>();
-    rust_hdl_run::<2>();
-    rust_hdl_run::<4>();
-    rust_hdl_run::<8>();
+    for_each_p!(rust_hdl_run);
 }
 
 /// Run a case's Verilog; the samples that differ (the first panics unless
 /// `count`).
-fn verilog_case<const P: usize>(
-    engine: StageEngine,
-    c: &Case,
-    verilog: &str,
-    count: bool,
-) -> usize {
+fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: bool) -> usize {
     let ports = ports(verilog).unwrap();
     let clocks = c.clocks.len() + LATENCY;
     let vectors: Vec<Vec<u64>> = (0..clocks)
@@ -264,7 +246,7 @@ fn trilin_lanes_verilog_match_golden_model_under_icarus() {
     require_tool("iverilog");
     for c in cases(4) {
         verilog_case::<4>(
-            StageEngine::Iverilog,
+            Engine::Iverilog,
             &c,
             &generate_verilog(&unit::<4>(&c)),
             false,
@@ -277,7 +259,7 @@ fn trilin_lanes_verilog_match_golden_model_under_verilator() {
     require_tool("verilator");
     for c in cases(2) {
         verilog_case::<2>(
-            StageEngine::Verilator,
+            Engine::Verilator,
             &c,
             &generate_verilog(&unit::<2>(&c)),
             false,
@@ -298,6 +280,6 @@ fn a_fault_in_the_trilin_lanes_verilog_is_caught() {
     let site = "if (first) begin";
     assert!(verilog.contains(site), "the fault site exists");
     let faulty = verilog.replacen(site, "if (1'b0) begin", 1);
-    let wrong = verilog_case::<2>(StageEngine::Iverilog, &c, &faulty, true);
+    let wrong = verilog_case::<2>(Engine::Iverilog, &c, &faulty, true);
     assert!(wrong > 0, "the faulty 2-DSB read went unnoticed");
 }

@@ -3,8 +3,10 @@
 //! rust-hdl simulation's, cycle for cycle on every common signal. A fault
 //! injected into a copy of the Verilog is caught by both comparisons.
 
-use cosim::sim::{simulate, simulate_with, Engine};
+use cosim::arch::Cube4l;
+use cosim::sim::{simulate, simulate_altered};
 use cosim::vcd_diff::{compare, Trace};
+use cosim::Engine;
 use scene::volume::{builtin, Volume};
 use scene::Scene;
 use std::path::PathBuf;
@@ -35,7 +37,8 @@ fn rust_hdl_vcd() -> &'static PathBuf {
     VCD.get_or_init(|| {
         let (s, vol) = sphere();
         let vcd = vcd_dir().join("sphere_p2_rust_hdl.vcd");
-        let r = simulate(&s, &s.camera().unwrap(), &vol, Some(&vcd)).unwrap();
+        let r = simulate::<Cube4l>(&s, &s.camera().unwrap(), &vol, Engine::RustHdl, Some(&vcd))
+            .unwrap();
         assert_eq!(r.mismatches, 0, "rust-hdl: {:?}", r.first);
         vcd
     })
@@ -46,7 +49,7 @@ fn verilator_trace_equals_rust_hdl_trace() {
     require_tool("verilator");
     let (s, vol) = sphere();
     let vcd = vcd_dir().join("sphere_p2_verilator.vcd");
-    let r = simulate_with(
+    let r = simulate::<Cube4l>(
         &s,
         &s.camera().unwrap(),
         &vol,
@@ -76,7 +79,7 @@ fn verilator_trace_equals_rust_hdl_trace() {
         c.only_a.iter().filter(|n| !gone(n)).collect::<Vec<_>>()
     );
     assert!(c.compared > 2000, "only {} signals compared", c.compared);
-    assert_eq!((c.cycles_a, c.cycles_b), (r.cycles, r.cycles));
+    assert_eq!((c.cycles_a, c.cycles_b), (r.clocks, r.clocks));
     assert!(
         c.equal(),
         "first differences: {:?}",
@@ -97,18 +100,18 @@ fn verilator_trace_equals_rust_hdl_trace() {
 fn a_swapped_neighbour_link_is_caught_by_pixels_and_by_the_trace() {
     require_tool("verilator");
     let (s, vol) = sphere();
-    let e = testbenches::emitted_sweep(&s, &vol);
-    let (sweep, golden, verilog, want) = (&e.sweep, &e.golden, &e.verilog, &e.want);
+    let verilog = testbenches::emitted_sweep(&s, &vol).verilog;
     // Lane 1 takes its own x-gradient link instead of lane 0's.
     let link = "lanes$1$g_from_left_xm = lanes$0$g_to_right_xm;";
     assert!(verilog.contains(link), "fault site not found");
     let broken = verilog.replace(link, "lanes$1$g_from_left_xm = lanes$1$g_to_right_xm;");
     let vcd = vcd_dir().join("sphere_p2_verilator_fault.vcd");
-    let r = cosim::verilator::run(&broken, 2, sweep, golden.mode, None, Some(&vcd)).unwrap();
-    let differing = (0..want.pixels.len())
-        .filter(|&i| r.base.pixels[i] != want.pixels[i])
-        .count();
-    assert!(differing > 0, "the pixel comparison missed the fault");
+    let cam = s.camera().unwrap();
+    let r = simulate_altered::<Cube4l>(&s, &cam, &vol, Engine::Verilator, Some(&vcd), &|_| {
+        broken.clone()
+    })
+    .unwrap();
+    assert!(r.mismatches > 0, "the pixel comparison missed the fault");
     let c = compare(
         &Trace::load(rust_hdl_vcd()).unwrap(),
         &Trace::load(&vcd).unwrap(),
@@ -142,11 +145,11 @@ fn engine_frame_matches_under_verilator() {
         )
     });
     assert_eq!(vol.dims, [256, 256, 110]);
-    let r = simulate_with(&s, &s.camera().unwrap(), &vol, Engine::Verilator, None).unwrap();
+    let r = simulate::<Cube4l>(&s, &s.camera().unwrap(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "first differences {:?}", r.first);
     // The view sweeps 256 slices of 256 beams of 110 voxels, padded to 112
     // for p = 4: one beat per clock is 256 * 256 * 28 clocks. Shading adds
     // one slice (the ABC gradient's delay) and 9 clocks of fill.
-    assert_eq!(r.ideal_cycles, 256 * 256 * 28);
-    assert_eq!(r.cycles, r.ideal_cycles + 256 * 28 + 9);
+    assert_eq!(r.ideal_clocks, 256 * 256 * 28);
+    assert_eq!(r.clocks, r.ideal_clocks + 256 * 28 + 9);
 }

@@ -37,7 +37,14 @@ fn pipeline_vcd_parses_and_gtkw_names_its_signals() {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vcd");
     std::fs::create_dir_all(&dir).unwrap();
     let vcd = dir.join("pipeline_p2.vcd");
-    let r = cosim::sim::simulate(&s, &s.camera().unwrap(), &vol, Some(&vcd)).unwrap();
+    let r = cosim::sim::simulate::<cosim::arch::Cube4l>(
+        &s,
+        &s.camera().unwrap(),
+        &vol,
+        cosim::Engine::RustHdl,
+        Some(&vcd),
+    )
+    .unwrap();
     assert_eq!(r.mismatches, 0);
     assert_vcd_parses(&vcd);
     let names = vcd_names(&vcd);

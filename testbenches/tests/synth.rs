@@ -2,7 +2,9 @@
 //! pipeline (the suite's one placed and routed design; the committed
 //! configurations go through `scripts/synth-reports`).
 
-use cosim::synth::{frame_clocks, parse_stat, synthesize, Target};
+use cosim::arch::Cube4l;
+use cosim::synth::{parse_stat, synthesize, Target};
+use hdl::cube4l::config::frame_clocks;
 use testbenches::scene;
 
 /// An ECP5 tool that `scripts/test` installs: on the PATH (`tool` then
@@ -25,8 +27,14 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     );
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mip");
-    let m = cosim::export::write_export("mip.json", &s, &s.camera().unwrap(), s.volume.dims, &out)
-        .unwrap();
+    let m = cosim::export::write_export::<Cube4l>(
+        "mip.json",
+        &s,
+        &s.camera().unwrap(),
+        s.volume.dims,
+        &out,
+    )
+    .unwrap();
     let files: Vec<String> = m["sweeps"][0]["files"]
         .as_array()
         .unwrap()

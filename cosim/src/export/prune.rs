@@ -1,9 +1,8 @@
-//! Leaving out what a scene does not need: the units a sweep's pipeline
-//! leaves out, and their removal from the emitted Verilog.
+//! Leaving out what a scene does not need: the units an architecture's
+//! part leaves out (`crate::arch::Arch::left_out`), removed from the
+//! emitted Verilog.
 
-use super::split::split_modules;
-use golden_model::cube4l::shader::Shader as GoldenShader;
-use hdl::pipeline::PipelineConfig;
+use super::modules::split_modules;
 
 /// A unit that a scene's hardware leaves out.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -14,54 +13,6 @@ pub struct LeftOut {
     /// [`prune`]). Empty for units that stay in the
     /// Verilog, disabled by constants, for synthesis to remove.
     pub instances: &'static [&'static str],
-}
-
-/// The units a sweep's pipeline leaves out.
-pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> {
-    let mut v = Vec::new();
-    if !config.gradient {
-        v.push(LeftOut {
-            name: "abc_gradient",
-            instances: &["abc", "late"],
-        });
-    }
-    if golden.reflectance.is_none() {
-        v.push(LeftOut {
-            name: "reflectance_map",
-            instances: &["reflectance"],
-        });
-    }
-    if golden.colour.is_none() && golden.opacity.is_none() {
-        v.push(LeftOut {
-            name: "colour_and_opacity_lut",
-            instances: &["lut"],
-        });
-    }
-    if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
-        v.push(LeftOut {
-            name: "gradient_opacity_lut_and_magnitude",
-            instances: &["alpha_gm", "sqrt"],
-        });
-    }
-    if !golden.mode.uses_colour() {
-        v.push(LeftOut {
-            name: "shading_and_weighting_multipliers",
-            instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
-        });
-    }
-    if config.cfb.eye.is_none() {
-        v.push(LeftOut {
-            name: "sight_ray_divider",
-            instances: &["div_x", "div_y"],
-        });
-    }
-    if !config.reads_row_below() {
-        v.push(LeftOut {
-            name: "compositing_buffer_row_y-1_line (a register)",
-            instances: &[],
-        });
-    }
-    v
 }
 
 /// The parent and instance name of module `name` when it is a unit in

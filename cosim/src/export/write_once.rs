@@ -17,7 +17,7 @@
 //! changing at most once per pass, a pass of a block wakes another only on
 //! a real change, and the blocks settle as the data path is acyclic.
 
-use super::split::split_modules;
+use super::modules::split_modules;
 
 /// The shadow register of output `name`: `name_pass`, with as many more
 /// `_` as it takes to be a new name in `module`.

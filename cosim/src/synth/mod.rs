@@ -340,11 +340,3 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
         })
         .ok_or_else(|| "nextpnr-ice40 reported no fmax (see pnr.log)".into())
 }
-
-/// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per
-/// pipeline per clock over n slices of n beams of ceil(n/p) partial beams,
-/// plus one slice for the gradient unit and the pipeline's fill.
-pub fn frame_clocks(n: u64, p: u64, gradient: bool) -> u64 {
-    let slice = n * n.div_ceil(p);
-    n * slice + if gradient { slice } else { 0 } + hdl::pipeline::fill_clocks(gradient)
-}

@@ -1,4 +1,4 @@
-module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,x$0,x$1,y$0,y$1,pad$0,pad$1,sr$0,sr$1,er$0,er$1,base_x$0,base_x$1,base_y$0,base_y$1,face$0,face$1,at_edge$0,at_edge$1,invalid$0,invalid$1,halo$0,halo$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,dx_neg$0,dx_neg$1,dx_mag$0,dx_mag$1,dy_neg$0,dy_neg$1,dy_mag$0,dy_mag$1);
+module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,x$0,x$1,y$0,y$1,z$0,z$1,address$0,address$1,pad$0,pad$1,sr$0,sr$1,er$0,er$1,base_x$0,base_x$1,base_y$0,base_y$1,face$0,face$1,at_edge$0,at_edge$1,invalid$0,invalid$1,halo$0,halo$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,dx_neg$0,dx_neg$1,dx_mag$0,dx_mag$1,dy_neg$0,dy_neg$1,dy_mag$0,dy_mag$1);
     
     // Module arguments
     input wire  clock;
@@ -19,6 +19,10 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
     output reg  [15:0] x$1;
     output reg  [15:0] y$0;
     output reg  [15:0] y$1;
+    output reg  [15:0] z$0;
+    output reg  [15:0] z$1;
+    output reg  [31:0] address$0;
+    output reg  [31:0] address$1;
     output reg  pad$0;
     output reg  pad$1;
     output reg  sr$0;
@@ -268,6 +272,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$0$load_data = load_data;
         value$0 = lanes$0$value;
         x$0 = lanes$0$x;
+        z$0 = lanes$0$z;
+        address$0 = lanes$0$address;
         y$0 = lanes$0$y;
         pad$0 = lanes$0$pad;
         sr$0 = lanes$0$sr;
@@ -294,6 +300,8 @@ module top$cfb(clock,start,busy,load_enable,load_module,load_address,load_data,v
         lanes$1$load_data = load_data;
         value$1 = lanes$1$value;
         x$1 = lanes$1$x;
+        z$1 = lanes$1$z;
+        address$1 = lanes$1$address;
         y$1 = lanes$1$y;
         pad$1 = lanes$1$pad;
         sr$1 = lanes$1$sr;

@@ -54,6 +54,10 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] cfb$x$1;
     wire  [15:0] cfb$y$0;
     wire  [15:0] cfb$y$1;
+    wire  [15:0] cfb$z$0;
+    wire  [15:0] cfb$z$1;
+    wire  [31:0] cfb$address$0;
+    wire  [31:0] cfb$address$1;
     wire  cfb$pad$0;
     wire  cfb$pad$1;
     wire  cfb$sr$0;
@@ -222,6 +226,10 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] late$x$1 = 'h0;
     wire  [15:0] late$y$0 = 'h0;
     wire  [15:0] late$y$1 = 'h0;
+    wire  [15:0] late$z$0 = 'h0;
+    wire  [15:0] late$z$1 = 'h0;
+    wire  [31:0] late$address$0 = 'h0;
+    wire  [31:0] late$address$1 = 'h0;
     wire  late$pad$0 = 'h0;
     wire  late$pad$1 = 'h0;
     wire  late$sr$0 = 'h0;
@@ -276,6 +284,10 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         .x$1(cfb$x$1),
         .y$0(cfb$y$0),
         .y$1(cfb$y$1),
+        .z$0(cfb$z$0),
+        .z$1(cfb$z$1),
+        .address$0(cfb$address$0),
+        .address$1(cfb$address$1),
         .pad$0(cfb$pad$0),
         .pad$1(cfb$pad$1),
         .sr$0(cfb$sr$0),

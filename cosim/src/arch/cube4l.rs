@@ -1,0 +1,593 @@
+//! Cube-4L in the flows: a part is a sweep, its hardware the
+//! [`hdl::cube4l::Pipeline`] of CFB and `P` pipelines, its pixels the base
+//! plane's cells that leave on ER through each lane's pixel port.
+
+use super::{Arch, BasePixels, BufferMemory, ClockTerm, Wave};
+use crate::export::{clean_verilog, Layout, LeftOut, Memory, ON_CHIP_BITS as A};
+use crate::harness::{Group, Record, Stop};
+use golden_model::cube4l::cfb::SkewedMemory;
+use golden_model::cube4l::plan::{Face, Plan, Rays, Sweep};
+use golden_model::cube4l::shader::Shader as GoldenShader;
+use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
+use hdl::common::lanes::{with_p, ForP};
+use hdl::cube4l::config::unpack;
+use hdl::cube4l::{Pipeline, PipelineConfig};
+use rust_hdl::prelude::*;
+use scene::volume::Volume;
+use scene::{Camera, Image, Scene};
+use std::path::Path;
+
+/// Delay-line pointer bits of every build: enough for a 256² slice at any p
+/// (see `PipelineConfig::history_bits`, which refuses larger needs).
+pub const H: usize = 16;
+
+/// Cube-4L (Bitter and Kaufman): ray-slice sweeping.
+pub struct Cube4l;
+
+/// One sweep: its plan, the golden model's shader (whose tables the
+/// hardware copies), the pipeline's configuration and where its voxels live.
+#[derive(Debug, Clone)]
+pub struct Part {
+    pub sweep: Sweep,
+    pub golden: GoldenShader,
+    pub config: PipelineConfig,
+    pub memory: Memory,
+}
+
+impl Part {
+    /// Beats of the sweep's composited slices: one per clock.
+    fn beats(&self) -> u64 {
+        let s = &self.sweep;
+        ((s.z1 - s.z0 + 1) * s.dims[1] * s.dims[0].div_ceil(self.config.p as usize)) as u64
+    }
+}
+
+/// The file (one per stage) that holds module `name`. rust-hdl emits one
+/// module per instance, named by its path (`top$lanes$2$shader$lut`), so
+/// each stage's file holds that stage's modules of every pipeline.
+fn stage_file(name: &str) -> &'static str {
+    let parts: Vec<&str> = name.split('$').collect();
+    match parts.as_slice() {
+        ["top"] => "top.v",
+        ["top", "cfb" | "late", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
+        ["top", "cfb" | "late", ..] => "cfb.v",
+        ["top", "lanes", _, "feed", "abc", ..] => "abc_gradient.v",
+        ["top", "lanes", _, "shader", ..] => "shader.v",
+        ["top", "lanes", _, "taps", ..] => "tap_network.v",
+        ["top", "lanes", _, "bilinear", ..] => "bilinear.v",
+        ["top", "lanes", _, "compositor", ..] => "compositor.v",
+        _ => "pipe_lane.v",
+    }
+}
+
+/// The lint waivers every emitted Cube-4L design needs beyond those of
+/// every design (`export::lint_waivers`).
+pub const LINT_WAIVERS: &str = r#"// Each CFB lane's dataset z and memory address are observability outputs:
+// the CFB testbench compares them with the golden model's stream, and the
+// waveforms show them; the pipeline itself needs neither.
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'cfb$z$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'cfb$address$*'*"
+// The late CFB, with a gradient unit, recomputes the control only: its voxel,
+// memory port, sweep status and observability outputs are unread.
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$value$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$ext_addr$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$busy'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$n_*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$bs'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$z$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$address$*'*"
+// Delay lines and memory modules store only the bits the scene can set: the
+// voxel bits of a voxel, and four channels of RGBA bits in the 16-bit slots
+// of a composited word.
+lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_data'*"
+// The bilinear unit's four channels share one 32-bit datapath, which X-ray
+// needs for its sum in channel 0; channels 1-3 carry 16-bit values.
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
+// Perspective only. rust-hdl emits the logic of a module as one always block,
+// so Verilator sees the block, the divider it feeds and the block again as a
+// loop, though the divider inputs come from registers and the rust-hdl
+// logic-loop check passes. This only costs Verilator some speed.
+lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
+// The shader's r is as wide as Cube-3's RPC leaves (32 bits); a Cube-4L lane
+// takes its low 16.
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'shader$r'*"
+"#;
+
+/// The units a sweep's pipeline leaves out.
+pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> {
+    let mut v = Vec::new();
+    if !config.gradient {
+        v.push(LeftOut {
+            name: "abc_gradient",
+            instances: &["abc", "late"],
+        });
+    }
+    if golden.reflectance.is_none() {
+        v.push(LeftOut {
+            name: "reflectance_map",
+            instances: &["reflectance"],
+        });
+    }
+    if golden.colour.is_none() && golden.opacity.is_none() {
+        v.push(LeftOut {
+            name: "colour_and_opacity_lut",
+            instances: &["lut"],
+        });
+    }
+    if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+        v.push(LeftOut {
+            name: "gradient_opacity_lut_and_magnitude",
+            instances: &["alpha_gm", "sqrt"],
+        });
+    }
+    if !golden.mode.uses_colour() {
+        v.push(LeftOut {
+            name: "shading_and_weighting_multipliers",
+            instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
+        });
+    }
+    if config.cfb.eye.is_none() {
+        v.push(LeftOut {
+            name: "sight_ray_divider",
+            instances: &["div_x", "div_y"],
+        });
+    }
+    if !config.reads_row_below() {
+        v.push(LeftOut {
+            name: "compositing_buffer_row_y-1_line (a register)",
+            instances: &[],
+        });
+    }
+    v
+}
+
+/// Build the sweep's pipeline for `P` lanes and emit its Verilog.
+struct Emit<'a>(&'a Part, Option<&'a [Vec<u16>]>);
+
+impl ForP for Emit<'_> {
+    type Output = Result<String, String>;
+    fn run<const P: usize>(self) -> Self::Output {
+        let Emit(part, preload) = self;
+        let mut uut = Pipeline::<P, A, H>::new(&part.config, &part.golden)?;
+        if let Some(m) = preload.filter(|_| part.memory == Memory::OnChip) {
+            uut.preload(m);
+        }
+        uut.connect_all();
+        clean_verilog(&generate_verilog(&uut), &Cube4l::left_out(part))
+    }
+}
+
+/// Simulate the sweep's pipeline for `P` lanes in rust-hdl.
+struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], Option<&'a Path>);
+
+/// What the rust-hdl testbench collects: the records and the clock count.
+type Collected = std::sync::Arc<std::sync::Mutex<(Vec<Record>, u64)>>;
+
+impl ForP for RustHdl<'_> {
+    type Output = Result<(Vec<Record>, u64), String>;
+    fn run<const P: usize>(self) -> Self::Output {
+        let RustHdl(part, modules, trace) = self;
+        let mut uut = Pipeline::<P, A, H>::new(&part.config, &part.golden)?;
+        uut.preload(modules);
+        uut.connect_all();
+        let beats = part.beats();
+        let out: Collected = Default::default();
+        let sink = out.clone();
+        let mut sim = Simulation::new();
+        sim.add_clock(5, |x: &mut Box<Pipeline<P, A, H>>| {
+            x.clock.next = !x.clock.val()
+        });
+        sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
+            let mut x = sim.init()?;
+            x.start.next = true;
+            wait_clock_cycle!(sim, clock, x);
+            x.start.next = false;
+            let (mut seen, mut t) = (0u64, 0u64);
+            while seen < beats {
+                wait_clock_cycle!(sim, clock, x);
+                t += 1;
+                let mut o = sink.lock().unwrap();
+                for k in 0..P {
+                    if x.px_valid[k].val() {
+                        let v = [x.px_x[k].val(), x.px_y[k].val()].map(|b| b.to_u64());
+                        o.0.push(Record {
+                            clock: t,
+                            group: k,
+                            values: vec![
+                                Some(v[0]),
+                                Some(v[1]),
+                                Some(x.px_face[k].val().to_u64()),
+                                Some(x.res[k].val().to_u64()),
+                            ],
+                        });
+                    }
+                }
+                seen += x.res_beat[0].val() as u64;
+                o.1 = t + 1;
+            }
+            sim.done(x)
+        });
+        crate::sim::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200), trace)?;
+        let o = out.lock().unwrap();
+        Ok(o.clone())
+    }
+}
+
+impl BasePixels for BasePlane {
+    type Pixel = ([u32; 4], Face);
+    fn count(&self) -> usize {
+        self.pixels.len()
+    }
+    fn at(&self, i: usize) -> ([i32; 2], Self::Pixel) {
+        let at = [(i % self.width) as i32, (i / self.width) as i32];
+        (at, (self.pixels[i], self.faces[i]))
+    }
+}
+
+/// Put a pixel the RTL put out into `base`, or say why the golden model
+/// could never have put it out: an address outside the base plane, or a
+/// face code that names no face.
+fn place(base: &mut BasePlane, [x, y]: [u64; 2], face: u64, value: [u32; 4]) -> Result<(), String> {
+    const FACES: [Face; 6] = [
+        Face::None,
+        Face::Last,
+        Face::XPos,
+        Face::XNeg,
+        Face::YPos,
+        Face::YNeg,
+    ];
+    let stray = |why: &str| {
+        format!(
+            "the RTL put out a pixel at ({x}, {y}) with face code {face}: {why} (base plane {} x {})",
+            base.width, base.height
+        )
+    };
+    if x >= base.width as u64 || y >= base.height as u64 {
+        return Err(stray("outside the base plane"));
+    }
+    let Some(&f) = FACES.get(face as usize).filter(|&&f| f != Face::None) else {
+        return Err(stray("no such face"));
+    };
+    base.put([x as usize, y as usize], value, f);
+    Ok(())
+}
+
+impl Arch for Cube4l {
+    const NAME: &'static str = "cube4l";
+    const TITLE: &'static str = "Cube-4L";
+    const PART: &'static str = "sweep";
+    const LAYOUT: Layout = Layout {
+        files: &[
+            "top.v",
+            "cfb.v",
+            "divider.v",
+            "abc_gradient.v",
+            "shader.v",
+            "pipe_lane.v",
+            "tap_network.v",
+            "bilinear.v",
+            "compositor.v",
+        ],
+        stage_file,
+        waivers: LINT_WAIVERS,
+    };
+    type Part = Part;
+    type Base = BasePlane;
+
+    fn parts(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Vec<Part>, String> {
+        let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+        let p = scene.hardware.pipelines;
+        let memory = Memory::for_volume(dims, p);
+        plan.sweeps
+            .into_iter()
+            .map(|sweep| {
+                let golden = GoldenShader::new(scene, camera, &sweep);
+                let mut config = PipelineConfig::new(&sweep, dims, p, &golden)?;
+                config.cfb.external_memory = memory == Memory::External;
+                Ok(Part {
+                    sweep,
+                    golden,
+                    config,
+                    memory,
+                })
+            })
+            .collect()
+    }
+
+    fn left_out(part: &Part) -> Vec<LeftOut> {
+        left_out(&part.config, &part.golden)
+    }
+
+    fn external(part: &Part) -> bool {
+        part.memory == Memory::External
+    }
+
+    fn modules(part: &Part, vol: &Volume) -> Vec<Vec<u16>> {
+        SkewedMemory::new(vol, part.config.p as usize).modules
+    }
+
+    fn verilog(part: &Part, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
+        with_p(part.config.p as usize, Emit(part, preload))?
+    }
+
+    fn bus(part: &Part) -> (Stop, Vec<Group>) {
+        let beats = part.beats();
+        let stop = Stop::Pulses {
+            output: "res_beat$0".into(),
+            count: beats,
+            limit: 2 * beats + 1000,
+        };
+        let groups = (0..part.config.p)
+            .map(|k| Group {
+                when: Some(format!("px_valid${k}")),
+                fields: ["px_x", "px_y", "px_face", "res"]
+                    .map(|f| format!("{f}${k}"))
+                    .to_vec(),
+            })
+            .collect();
+        (stop, groups)
+    }
+
+    fn rust_hdl(
+        part: &Part,
+        modules: &[Vec<u16>],
+        trace: Option<&Path>,
+    ) -> Result<(Vec<Record>, u64), String> {
+        with_p(part.config.p as usize, RustHdl(part, modules, trace))?
+    }
+
+    fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {
+        let mut base = BasePlane::new(&part.sweep);
+        for r in records {
+            let v: Vec<u64> = r
+                .values
+                .iter()
+                .map(|v| {
+                    v.ok_or_else(|| {
+                        format!(
+                            "the RTL put out an undefined (X or Z) pixel at clock {} on lane {}",
+                            r.clock, r.group
+                        )
+                    })
+                })
+                .collect::<Result<_, _>>()?;
+            place(
+                &mut base,
+                [v[0], v[1]],
+                v[2],
+                unpack(part.golden.mode, v[3]),
+            )
+            .map_err(|e| format!("clock {}: {e}", r.clock))?;
+        }
+        Ok(base)
+    }
+
+    fn golden(part: &Part, vol: &Volume) -> BasePlane {
+        render_sweep(vol, &part.sweep, &part.golden).0
+    }
+
+    fn image(scene: &Scene, camera: &Camera, bases: Vec<BasePlane>) -> Result<Image, String> {
+        let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+        let frame = Frame {
+            plan,
+            bases,
+            stats: Stats::default(),
+        };
+        let hw = scene.hardware;
+        Ok(golden_model::warp::warp(
+            &frame,
+            camera,
+            scene.mode,
+            hw.rgba_bits,
+            hw.voxel_bits,
+        ))
+    }
+
+    fn ideal_clocks(part: &Part) -> u64 {
+        part.beats()
+    }
+
+    fn clock_terms(part: &Part) -> Vec<ClockTerm> {
+        let c = &part.config;
+        let slice = (c.slice_beats) as i64;
+        let mut v = vec![ClockTerm {
+            key: "beats",
+            what: "beats (one voxel per pipeline per clock)",
+            clocks: part.beats() as i64,
+        }];
+        if c.gradient {
+            v.push(ClockTerm {
+                key: "gradient_slice",
+                what: "gradient unit's slice",
+                clocks: slice,
+            });
+        }
+        v.push(ClockTerm {
+            key: "fill",
+            what: "fill",
+            clocks: hdl::cube4l::config::fill_clocks(c.gradient) as i64,
+        });
+        v
+    }
+
+    fn buffer_memory(parts: &[Part]) -> BufferMemory {
+        // Sweeps run one after another on one pipeline: the largest
+        // sweep's buffers are what is built.
+        let c = parts
+            .iter()
+            .map(|d| &d.config)
+            .max_by_key(|c| c.buffer_bits())
+            .expect("a part per sweep");
+        BufferMemory {
+            what: "compositing-buffer history and gradient slices",
+            bits: c.buffer_bits(),
+            minimum_bits: c.minimum_buffer_bits(),
+        }
+    }
+
+    fn projected_clocks(n: u64, parts: &[Part]) -> Option<u64> {
+        let c = &parts[0].config;
+        Some(hdl::cube4l::config::frame_clocks(n, c.p as u64, c.gradient))
+    }
+
+    fn waves(part: &Part, top: &str) -> Vec<Wave> {
+        let under = |prefix: &str, names: &[&str]| -> Vec<String> {
+            names.iter().map(|n| format!("{prefix}.{n}")).collect()
+        };
+        let mut w: Vec<Wave> = vec![(
+            "CFB".into(),
+            under(
+                &format!("{top}.cfb"),
+                &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
+            ),
+        )];
+        for k in 0..part.config.p {
+            let cfb_lane = [
+                "x[15:0]",
+                "y[15:0]",
+                "z[15:0]",
+                "value[15:0]",
+                "address[31:0]",
+                "pad",
+                "halo",
+                "sr",
+                "er",
+                "at_edge",
+                "invalid",
+                "face[2:0]",
+                "dx_neg",
+                "dx_mag[15:0]",
+                "dy_neg",
+                "dy_mag[15:0]",
+            ];
+            w.push((
+                format!("CFB lane {k}"),
+                under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
+            ));
+            let lane = format!("{top}.lanes${k}");
+            let abc = [
+                "value[15:0]",
+                "o_value[15:0]",
+                "gx_neg",
+                "gx_mag[15:0]",
+                "gy_neg",
+                "gy_mag[15:0]",
+                "gz_neg",
+                "gz_mag[15:0]",
+            ];
+            w.push((
+                format!("ABC gradient {k}"),
+                under(&format!("{lane}.feed.abc"), &abc),
+            ));
+            let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
+            w.push((
+                format!("Shader {k}"),
+                under(&format!("{lane}.shader"), &shader),
+            ));
+            let mut taps: Vec<String> =
+                (0..9).map(|c| format!("{lane}.taps.a${c}[63:0]")).collect();
+            taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
+            w.push((format!("Compositing lane {k}"), taps));
+            w.push((
+                format!("Pixel out {k}"),
+                under(
+                    &lane,
+                    &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
+                ),
+            ));
+        }
+        w
+    }
+
+    fn manifest_part(part: &Part) -> serde_json::Value {
+        let s = &part.sweep;
+        let rays = match s.rays {
+            Rays::Parallel { dx, dy } => serde_json::json!({"parallel": {"dx": dx, "dy": dy}}),
+            Rays::Perspective { eye } => serde_json::json!({"perspective": {"eye": eye}}),
+        };
+        serde_json::json!({
+            "axes": s.perm,
+            "dims": s.dims,
+            "slices": [s.z0, s.z1],
+            "order": format!("{:?}", s.order),
+            "rays": rays,
+            "history_bits_needed": part.config.history_bits(),
+        })
+    }
+
+    fn manifest_parameters(scene: &Scene, dims: [usize; 3], parts: &[Part]) -> serde_json::Value {
+        let hw = scene.hardware;
+        let p = hw.pipelines;
+        let config = &parts[0].config;
+        let memory = parts[0].memory;
+        let buffer = Self::buffer_memory(parts);
+        serde_json::json!({
+            "pipelines": p,
+            "volume_dims": dims,
+            "voxel_bits": hw.voxel_bits,
+            "frac_bits": hw.frac_bits,
+            "rgba_bits": hw.rgba_bits,
+            "mode": format!("{:?}", scene.mode),
+            "memory": {
+                "kind": memory.name(),
+                "voxels_per_module": dims[0].div_ceil(p) * dims[1] * dims[2],
+                "module_address_bits": if memory == Memory::OnChip { config.cfb.memory_bits } else { 32 },
+            },
+            "buffer_memory": {
+                "bits": buffer.bits,
+                "minimum_bits": buffer.minimum_bits,
+                "ratio": buffer.ratio(),
+            },
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn part() -> Part {
+        let s = scene::Scene::from_json(
+            r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 10]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]}, "mode": "mip", "image": [8, 8]}"#,
+            None,
+        )
+        .unwrap();
+        let cam = s.camera().unwrap();
+        Cube4l::parts(&s, &cam, s.volume.dims).unwrap().remove(0)
+    }
+
+    fn pixel(clock: u64, values: [Option<u64>; 4]) -> Record {
+        Record {
+            clock,
+            group: 0,
+            values: values.to_vec(),
+        }
+    }
+
+    #[test]
+    fn stray_and_undefined_pixels_are_reported_not_panicked_on() {
+        let p = part();
+        let base = Cube4l::decode(&p, &[pixel(3, [Some(1), Some(1), Some(2), Some(5)])]).unwrap();
+        assert_eq!(
+            (base.pixels[1 + base.width], base.faces[1 + base.width]),
+            ([5, 0, 0, 0], Face::XPos)
+        );
+        let w = base.width as u64;
+        for (values, why) in [
+            ([Some(0), Some(0), Some(7), Some(0)], "no such face"),
+            ([Some(0), Some(0), Some(0), Some(0)], "no such face"),
+            (
+                [Some(w), Some(0), Some(1), Some(5)],
+                "outside the base plane",
+            ),
+            (
+                [Some(u64::MAX), Some(0), Some(1), Some(0)],
+                "outside the base plane",
+            ),
+            ([Some(0), Some(0), Some(1), None], "undefined (X or Z)"),
+        ] {
+            let e = Cube4l::decode(&p, &[pixel(9, values)]).unwrap_err();
+            assert!(e.contains(why) && e.contains("clock 9"), "{e}");
+        }
+    }
+}

@@ -1,0 +1,713 @@
+//! The one test harness for emitted Verilog, under Icarus or Verilator: a
+//! single stage on per-clock input vectors, or a whole design over a frame.
+//!
+//! The design is rust-hdl's `top` module (`generate_verilog`). A generated
+//! testbench (Verilog for Icarus, C++ for Verilator) clocks it as rust-hdl's
+//! simulator does (rising edges at 10t + 5, the inputs of clock `t` set
+//! before edge `t`), so traces line up with rust-hdl's cycle for cycle. After
+//! each rising edge it logs the outputs a [`Spec`] asks for: every output on
+//! every clock (a stage), or groups of outputs on the clocks a flag output
+//! is high (a frame's pixel bus). It stops after a number of clocks, or on
+//! the clock an output has pulsed a number of times (a frame's last beat),
+//! and reports that clock count.
+//!
+//! With external memory (Verilator only), the harness is the RAM behind
+//! every `ext_addr$m` / `ext_data$m` port pair: the word at the address
+//! presented before a rising edge is on `ext_data$m` after it, as a
+//! synchronous RAM answers.
+//!
+//! Verilator builds are cached by a hash of everything that goes into them
+//! (the Verilog, the harness, the flags and Verilator's version): the
+//! harness reads its run's parameters from files, so one build serves every
+//! run of a design.
+
+use crate::Engine;
+use std::hash::{Hash, Hasher};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// A port of the `top` module: name and width.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Port {
+    pub name: String,
+    pub bits: usize,
+    pub input: bool,
+}
+
+/// The ports of rust-hdl's `top` module in declaration order, without the
+/// clock.
+pub fn ports(verilog: &str) -> Result<Vec<Port>, String> {
+    let top = verilog
+        .split("\nmodule ")
+        .find(|m| m.starts_with("top("))
+        .or_else(|| {
+            verilog
+                .strip_prefix("module ")
+                .filter(|m| m.starts_with("top("))
+        })
+        .ok_or("no `module top(` in the design's Verilog")?;
+    let header = &top[4..top.find(");").ok_or("unterminated port list")?];
+    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    let mut out = Vec::new();
+    for name in names.iter().filter(|n| **n != "clock") {
+        let decl = top
+            .lines()
+            .map(str::trim)
+            .find(|l| {
+                (l.starts_with("input ") || l.starts_with("output "))
+                    && l.trim_end_matches(';').ends_with(&format!(" {name}"))
+            })
+            .ok_or_else(|| format!("port {name}: no declaration"))?;
+        let bits = match decl.find('[') {
+            Some(i) => {
+                let msb = &decl[i + 1..decl.find(':').ok_or("bad range")?];
+                msb.parse::<usize>()
+                    .map_err(|e| format!("port {name}: {e}"))?
+                    + 1
+            }
+            None => 1,
+        };
+        if bits > 64 {
+            return Err(format!(
+                "port {name}: {bits} bits, more than the harness's 64"
+            ));
+        }
+        out.push(Port {
+            name: name.to_string(),
+            bits,
+            input: decl.starts_with("input "),
+        });
+    }
+    Ok(out)
+}
+
+/// The inputs of clock `t` for a design started by `start` at clock 0,
+/// every other input 0.
+pub fn start_only(ports: &[Port], t: usize) -> Vec<u64> {
+    ports
+        .iter()
+        .filter(|p| p.input)
+        .map(|p| (p.name == "start" && t == 0) as u64)
+        .collect()
+}
+
+/// When a run ends.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Stop {
+    /// After this many clocks.
+    Clocks(u64),
+    /// On the clock the one-bit `output` is high for the `count`-th time;
+    /// a run that reaches `limit` clocks first is an error.
+    Pulses {
+        output: String,
+        count: u64,
+        limit: u64,
+    },
+}
+
+/// Outputs to log: `fields` on every clock `when` is high (on every clock
+/// without `when`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Group {
+    pub when: Option<String>,
+    pub fields: Vec<String>,
+}
+
+/// One harness run.
+#[derive(Debug, Clone)]
+pub struct Spec<'a> {
+    pub verilog: &'a str,
+    /// `vectors[t]`: the inputs (in [`ports`] order, inputs only) set before
+    /// edge `t`; the last vector holds after them.
+    pub vectors: &'a [Vec<u64>],
+    pub stop: Stop,
+    pub groups: &'a [Group],
+    /// External memory modules (Verilator only).
+    pub memory: Option<&'a [Vec<u16>]>,
+    /// A VCD of the whole design (scope `tb.uut` under Icarus, `TOP.top`
+    /// under Verilator).
+    pub trace: Option<&'a Path>,
+}
+
+/// A logged clock of one group: `values[i]` is field `i`, `None` where a bit
+/// is unknown (Icarus).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Record {
+    pub clock: u64,
+    pub group: usize,
+    pub values: Vec<Option<u64>>,
+}
+
+/// What a run logged, its clocks, and where its time went.
+#[derive(Debug, Clone)]
+pub struct Logged {
+    pub records: Vec<Record>,
+    /// Rising edges from the first (clock 0) to the one the run stopped on.
+    pub clocks: u64,
+    /// Compiling the Verilog (0 for a cached Verilator build).
+    pub build_seconds: f64,
+    pub run_seconds: f64,
+}
+
+/// Run `spec` under `engine` (Icarus or Verilator).
+pub fn run(engine: Engine, spec: &Spec) -> Result<Logged, String> {
+    if engine == Engine::RustHdl {
+        return Err("the harness runs emitted Verilog: Icarus or Verilator".into());
+    }
+    if spec.memory.is_some() && engine != Engine::Verilator {
+        return Err("the external memory model needs --engine verilator".into());
+    }
+    let ports = ports(spec.verilog)?;
+    let plan = Plan::new(&ports, spec)?;
+    static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cube-harness-{}-{n}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let result = (|| {
+        let io = |e: std::io::Error| format!("{}: {e}", dir.display());
+        let lines: Vec<String> = spec
+            .vectors
+            .iter()
+            .map(|v| {
+                v.iter()
+                    .map(|x| format!("{x:x}"))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            })
+            .collect();
+        std::fs::write(dir.join("in.hex"), lines.join("\n") + "\n").map_err(io)?;
+        for (m, words) in spec.memory.unwrap_or_default().iter().enumerate() {
+            let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+            std::fs::write(dir.join(format!("module{m}.bin")), bytes).map_err(io)?;
+        }
+        let (build_seconds, run_seconds) = match engine {
+            Engine::Iverilog => icarus(spec.verilog, &plan, &dir)?,
+            _ => verilator(spec.verilog, &plan, &dir)?,
+        };
+        if let Some(path) = spec.trace {
+            std::fs::copy(dir.join("trace.vcd"), path)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        let log = std::fs::read_to_string(dir.join("out.hex")).map_err(io)?;
+        let (records, clocks) = parse(&log, spec)?;
+        Ok(Logged {
+            records,
+            clocks,
+            build_seconds,
+            run_seconds,
+        })
+    })();
+    let _ = std::fs::remove_dir_all(&dir);
+    result
+}
+
+/// Run a stage for `vectors.len()` clocks; the outputs (in [`ports`]
+/// order) after each rising edge, `None` where a bit is unknown.
+pub fn run_stage(
+    engine: Engine,
+    verilog: &str,
+    vectors: &[Vec<u64>],
+) -> Result<Vec<Vec<Option<u64>>>, String> {
+    let outputs: Vec<String> = ports(verilog)?
+        .into_iter()
+        .filter(|p| !p.input)
+        .map(|p| p.name)
+        .collect();
+    let groups = [Group {
+        when: None,
+        fields: outputs,
+    }];
+    let spec = Spec {
+        verilog,
+        vectors,
+        stop: Stop::Clocks(vectors.len() as u64),
+        groups: &groups,
+        memory: None,
+        trace: None,
+    };
+    let logged = run(engine, &spec)?;
+    Ok(logged.records.into_iter().map(|r| r.values).collect())
+}
+
+/// The spec in port indices, as the testbenches take it.
+struct Plan {
+    inputs: Vec<Port>,
+    outputs: Vec<Port>,
+    /// Per group: the index of `when` among the outputs, and its fields'.
+    groups: Vec<(Option<usize>, Vec<usize>)>,
+    /// The stop output's index (or none) with its count, and the clock limit.
+    stop: Option<(usize, u64)>,
+    limit: u64,
+    vectors: usize,
+    /// External memory modules: their number, with a VCD or not.
+    modules: usize,
+    trace: bool,
+}
+
+impl Plan {
+    fn new(ports: &[Port], spec: &Spec) -> Result<Plan, String> {
+        let inputs: Vec<Port> = ports.iter().filter(|p| p.input).cloned().collect();
+        let outputs: Vec<Port> = ports.iter().filter(|p| !p.input).cloned().collect();
+        let find = |name: &str| {
+            outputs
+                .iter()
+                .position(|p| p.name == name)
+                .ok_or_else(|| format!("the design has no output {name}"))
+        };
+        let groups = spec
+            .groups
+            .iter()
+            .map(|g| {
+                let when = g.when.as_deref().map(find).transpose()?;
+                let fields = g.fields.iter().map(|f| find(f)).collect::<Result<_, _>>()?;
+                Ok((when, fields))
+            })
+            .collect::<Result<_, String>>()?;
+        let (stop, limit) = match &spec.stop {
+            Stop::Clocks(n) => (None, *n),
+            Stop::Pulses {
+                output,
+                count,
+                limit,
+            } => (Some((find(output)?, *count)), *limit),
+        };
+        if spec.vectors.iter().any(|v| v.len() != inputs.len()) {
+            return Err(format!("every input vector needs {} values", inputs.len()));
+        }
+        let modules = spec.memory.map_or(0, |m| m.len());
+        let ext = outputs
+            .iter()
+            .filter(|p| p.name.starts_with("ext_addr$"))
+            .count();
+        if modules > ext {
+            return Err(format!(
+                "{modules} memory modules for a design with {ext} ports"
+            ));
+        }
+        Ok(Plan {
+            inputs,
+            outputs,
+            groups,
+            stop,
+            limit,
+            vectors: spec.vectors.len(),
+            modules,
+            trace: spec.trace.is_some(),
+        })
+    }
+
+    /// The run's parameters as the C++ harness reads them (`run.cfg`).
+    fn config(&self) -> String {
+        let mut s = format!(
+            "{} {} {} {} {} {}\n",
+            self.limit,
+            self.vectors,
+            self.stop.map_or(-1, |(i, _)| i as i64),
+            self.stop.map_or(0, |(_, n)| n),
+            self.modules,
+            self.trace as u8
+        );
+        s += &format!("{}\n", self.groups.len());
+        for (when, fields) in &self.groups {
+            s += &format!("{} {}", when.map_or(-1, |w| w as i64), fields.len());
+            for f in fields {
+                s += &format!(" {f}");
+            }
+            s += "\n";
+        }
+        s
+    }
+}
+
+/// The log's records and clock count: `t g v...` lines, then `clocks N`
+/// or `timeout`.
+fn parse(log: &str, spec: &Spec) -> Result<(Vec<Record>, u64), String> {
+    let mut records = Vec::new();
+    let mut clocks = None;
+    for line in log.lines() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("clocks") => clocks = words.next().and_then(|w| w.parse().ok()),
+            Some("timeout") => {
+                let Stop::Pulses {
+                    output,
+                    count,
+                    limit,
+                } = &spec.stop
+                else {
+                    return Err("the harness timed out".into());
+                };
+                return Err(format!(
+                    "the design did not pulse {output} {count} times within {limit} clocks"
+                ));
+            }
+            Some(t) => {
+                let clock = u64::from_str_radix(t, 16).map_err(|e| format!("log '{line}': {e}"))?;
+                let group = words
+                    .next()
+                    .and_then(|g| g.parse().ok())
+                    .ok_or_else(|| format!("log '{line}': no group"))?;
+                let values = words.map(|h| u64::from_str_radix(h, 16).ok()).collect();
+                records.push(Record {
+                    clock,
+                    group,
+                    values,
+                });
+            }
+            None => {}
+        }
+    }
+    Ok((records, clocks.ok_or("the harness log has no clock count")?))
+}
+
+/// The C++ name of a port of the Verilated model.
+fn field(p: &Port) -> String {
+    format!("top->{}", p.name.replace('$', "__024"))
+}
+
+/// The Verilator harness for a design with these ports. Its one argument is
+/// the run directory: `run.cfg` ([`Plan::config`]), `in.hex`,
+/// `module<m>.bin`; it writes `out.hex` and, when tracing, `trace.vcd`.
+fn harness_cpp(plan: &Plan) -> String {
+    let mut set = String::new();
+    for (i, p) in plan.inputs.iter().enumerate() {
+        set += &format!("  {} = v[{i}];\n", field(p));
+    }
+    let mut get = String::new();
+    for (i, p) in plan.outputs.iter().enumerate() {
+        get += &format!("  o[{i}] = (uint64_t){};\n", field(p));
+    }
+    let ext: Vec<&Port> = plan
+        .outputs
+        .iter()
+        .filter(|p| p.name.starts_with("ext_addr$"))
+        .collect();
+    let mut addr = String::new();
+    let mut data = String::new();
+    for (m, p) in ext.iter().enumerate() {
+        let k = &p.name["ext_addr$".len()..];
+        addr += &format!("  if (mems > {m}) a[{m}] = {};\n", field(p));
+        data += &format!(
+            "  if (mems > {m}) top->ext_data__024{k} = a[{m}] < mem[{m}].size() ? mem[{m}][a[{m}]] : 0;\n"
+        );
+    }
+    format!(
+        r#"// Generated by cube (cosim::harness) for this design's ports.
+#include "Vtop.h"
+#include "verilated.h"
+#include "verilated_vcd_c.h"
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+static const int NIN = {nin}, NOUT = {nout}, NEXT = {next};
+
+static void set_inputs(Vtop* top, const uint64_t* v) {{
+{set}}}
+
+static void get_outputs(Vtop* top, uint64_t* o) {{
+{get}}}
+
+static void get_addresses(Vtop* top, uint64_t* a, int mems) {{
+{addr}}}
+
+static void set_data(Vtop* top, const uint64_t* a, const std::vector<std::vector<uint16_t>>& mem, int mems) {{
+{data}}}
+
+int main(int argc, char** argv) {{
+  if (argc != 2) {{ fprintf(stderr, "usage: %s RUNDIR\n", argv[0]); return 2; }}
+  const std::string dir = argv[1];
+  FILE* cfg = fopen((dir + "/run.cfg").c_str(), "r");
+  if (!cfg) {{ perror("run.cfg"); return 2; }}
+  unsigned long long limit, vectors, count;
+  long long stop;
+  int mems, tracing, ngroups;
+  if (fscanf(cfg, "%llu %llu %lld %llu %d %d %d", &limit, &vectors, &stop, &count, &mems, &tracing, &ngroups) != 7) return 2;
+  std::vector<long long> when(ngroups);
+  std::vector<std::vector<int>> fields(ngroups);
+  for (int g = 0; g < ngroups; g++) {{
+    int n;
+    if (fscanf(cfg, "%lld %d", &when[g], &n) != 2) return 2;
+    fields[g].resize(n);
+    for (int i = 0; i < n; i++) if (fscanf(cfg, "%d", &fields[g][i]) != 1) return 2;
+  }}
+  fclose(cfg);
+  std::vector<std::vector<uint16_t>> mem(mems);
+  for (int m = 0; m < mems && m < NEXT; m++) {{
+    std::string path = dir + "/module" + std::to_string(m) + ".bin";
+    FILE* f = fopen(path.c_str(), "rb");
+    if (!f) {{ perror(path.c_str()); return 2; }}
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f) / 2;
+    fseek(f, 0, SEEK_SET);
+    mem[m].resize(n);
+    if (fread(mem[m].data(), 2, n, f) != (size_t)n) {{ fprintf(stderr, "short read %s\n", path.c_str()); return 2; }}
+    fclose(f);
+  }}
+  FILE* in = fopen((dir + "/in.hex").c_str(), "r");
+  FILE* out = fopen((dir + "/out.hex").c_str(), "w");
+  if (!in || !out) {{ perror("in.hex or out.hex"); return 2; }}
+  auto ctx = std::make_unique<VerilatedContext>();
+  if (tracing) ctx->traceEverOn(true);
+  auto top = std::make_unique<Vtop>(ctx.get());
+  std::unique_ptr<VerilatedVcdC> vcd;
+  if (tracing) {{
+    vcd = std::make_unique<VerilatedVcdC>();
+    top->trace(vcd.get(), 99);
+    vcd->open((dir + "/trace.vcd").c_str());
+  }}
+  uint64_t v[NIN + 1] = {{0}}, o[NOUT + 1] = {{0}}, a[NEXT + 1] = {{0}};
+  uint64_t seen = 0, t = 0;
+  bool stopped = false;
+  top->clock = 0;
+  for (; t < limit && !stopped; t++) {{
+    if (t < vectors) {{
+      for (int i = 0; i < NIN; i++) if (fscanf(in, "%llx", (unsigned long long*)&v[i]) != 1) return 1;
+      set_inputs(top.get(), v);
+    }}
+    top->eval();
+    if (vcd) vcd->dump(10 * t);
+    // Rising edge; the external RAM registers the address presented
+    // before it and answers after it.
+    get_addresses(top.get(), a, mems);
+    top->clock = 1;
+    top->eval();
+    set_data(top.get(), a, mem, mems);
+    if (vcd) vcd->dump(10 * t + 5);
+    top->clock = 0;
+    top->eval();
+    get_outputs(top.get(), o);
+    for (int g = 0; g < ngroups; g++) {{
+      if (when[g] >= 0 && !o[when[g]]) continue;
+      fprintf(out, "%llx %d", (unsigned long long)t, g);
+      for (int f : fields[g]) fprintf(out, " %llx", (unsigned long long)o[f]);
+      fputc('\n', out);
+    }}
+    if (stop >= 0 && o[stop] && ++seen == count) stopped = true;
+  }}
+  if (stop >= 0 && !stopped) fprintf(out, "timeout\n");
+  else fprintf(out, "clocks %llu\n", (unsigned long long)t);
+  fclose(out);
+  if (vcd) vcd->close();
+  top->final();
+  return 0;
+}}
+"#,
+        nin = plan.inputs.len(),
+        nout = plan.outputs.len(),
+        next = ext.len(),
+    )
+}
+
+/// Verilator's build flags. `--x-initial 0` and `--x-assign 0` give every
+/// register rust-hdl's reset value, zero.
+const FLAGS: &[&str] = &[
+    "--cc",
+    "--exe",
+    "--build",
+    "-O3",
+    "--x-assign",
+    "0",
+    "--x-initial",
+    "0",
+    "--trace",
+    "-Wno-fatal",
+    "-Wno-lint",
+    "-Wno-style",
+    "-CFLAGS",
+    "-O1",
+    "-j",
+    "2",
+];
+
+/// Where built harnesses are kept: `$CUBE_CACHE_DIR`, else
+/// `$XDG_CACHE_HOME/cube`, else `~/.cache/cube`.
+pub fn cache_root() -> PathBuf {
+    if let Some(d) = std::env::var_os("CUBE_CACHE_DIR") {
+        return PathBuf::from(d);
+    }
+    if let Some(d) = std::env::var_os("XDG_CACHE_HOME") {
+        return PathBuf::from(d).join("cube");
+    }
+    let home = std::env::var_os("HOME").unwrap_or_else(|| ".".into());
+    PathBuf::from(home).join(".cache/cube")
+}
+
+/// Build (or find in the cache) the Verilator model of `verilog` with its
+/// harness; the executable and whether it came from the cache.
+fn build(verilog: &str, harness: &str) -> Result<(PathBuf, bool), String> {
+    let version = crate::tool::run(Command::new("verilator").arg("--version"), "Verilator")?;
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    (verilog, harness, FLAGS, &version.stdout).hash(&mut h);
+    let dir = cache_root()
+        .join("verilator")
+        .join(format!("{:016x}", h.finish()));
+    let exe = dir.join("obj/Vtop");
+    if exe.exists() {
+        return Ok((exe, true));
+    }
+    let tmp = dir.with_extension(format!("tmp{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    std::fs::create_dir_all(&tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
+    let result = (|| {
+        std::fs::write(tmp.join("top.v"), verilog).map_err(|e| e.to_string())?;
+        std::fs::write(tmp.join("harness.cpp"), harness).map_err(|e| e.to_string())?;
+        crate::tool::run(
+            Command::new("verilator")
+                .args(FLAGS)
+                .args([
+                    "top.v",
+                    "harness.cpp",
+                    "--top-module",
+                    "top",
+                    "-Mdir",
+                    "obj",
+                ])
+                .current_dir(&tmp),
+            "Verilator",
+        )?;
+        Ok(())
+    })();
+    if let Err(e) = result {
+        let _ = std::fs::remove_dir_all(&tmp);
+        return Err(e);
+    }
+    // Another run may have built the same design meanwhile; either is good.
+    if std::fs::rename(&tmp, &dir).is_err() {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    Ok((exe, false))
+}
+
+/// Build (or reuse) and run the Verilator model; the seconds of each.
+fn verilator(verilog: &str, plan: &Plan, dir: &Path) -> Result<(f64, f64), String> {
+    let started = std::time::Instant::now();
+    let (exe, cached) = build(verilog, &harness_cpp(plan))?;
+    let built = if cached {
+        0.0
+    } else {
+        started.elapsed().as_secs_f64()
+    };
+    std::fs::write(dir.join("run.cfg"), plan.config()).map_err(|e| e.to_string())?;
+    let run = std::time::Instant::now();
+    crate::tool::run(Command::new(&exe).arg(dir), "the Verilator model")?;
+    Ok((built, run.elapsed().as_secs_f64()))
+}
+
+/// The Icarus testbench: the inputs as registers, the outputs logged one
+/// time step after each rising edge, and a heartbeat for the stall watch
+/// (`crate::tool::run_watched`).
+fn testbench_verilog(plan: &Plan) -> String {
+    let decl = |p: &Port, kind: &str, name: String| {
+        let range = if p.bits > 1 {
+            format!("[{}:0] ", p.bits - 1)
+        } else {
+            String::new()
+        };
+        format!("    {kind} {range}{name};\n")
+    };
+    let mut v = String::from("`timescale 1ns/1ps\nmodule tb;\n    reg clock = 0;\n");
+    let mut conns = vec![".clock(clock)".to_string()];
+    for (i, p) in plan.inputs.iter().enumerate() {
+        v += &decl(p, "reg", format!("i{i}"));
+        conns.push(format!(".{}(i{i})", p.name));
+    }
+    for (i, p) in plan.outputs.iter().enumerate() {
+        v += &decl(p, "wire", format!("o{i}"));
+        conns.push(format!(".{}(o{i})", p.name));
+    }
+    // Escaped identifiers: rust-hdl's port names carry `$`, which Verilog
+    // allows in a name but not first; named connections keep them as they are.
+    v += &format!("    top uut({});\n", conns.join(", "));
+    v += &crate::tool::heartbeat_verilog();
+    v += "    integer fin, fout, r;\n    reg [63:0] t;\n    reg [63:0] seen;\n    reg stopped;\n    initial begin\n";
+    if plan.trace {
+        v += "        $dumpfile(\"trace.vcd\");\n        $dumpvars(0, uut);\n";
+    }
+    v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
+    v += "        seen = 0;\n        stopped = 0;\n";
+    v += &format!(
+        "        for (t = 0; t < {} && !stopped; t = t + 1) begin\n",
+        plan.limit
+    );
+    if !plan.inputs.is_empty() {
+        let fmt = vec!["%h"; plan.inputs.len()].join(" ");
+        let list: Vec<String> = (0..plan.inputs.len()).map(|i| format!("i{i}")).collect();
+        v += &format!(
+            "            if (t < {}) r = $fscanf(fin, \"{fmt}\\n\", {});\n",
+            plan.vectors,
+            list.join(", ")
+        );
+    }
+    v += "            #5 clock = 1;\n            #1;\n";
+    for (g, (when, fields)) in plan.groups.iter().enumerate() {
+        let cond = when.map_or("1'b1".to_string(), |w| format!("o{w} === 1'b1"));
+        let fmt = vec!["%h"; fields.len()].join(" ");
+        let list: Vec<String> = fields.iter().map(|f| format!(", o{f}")).collect();
+        v += &format!(
+            "            if ({cond}) $fwrite(fout, \"%h {g} {fmt}\\n\", t{});\n",
+            list.join("")
+        );
+    }
+    if let Some((s, count)) = plan.stop {
+        v += &format!(
+            "            if (o{s} === 1'b1) begin\n                seen = seen + 1;\n                if (seen == {count}) stopped = 1;\n            end\n"
+        );
+    }
+    v += "            #4 clock = 0;\n        end\n";
+    if plan.stop.is_some() {
+        v += "        if (!stopped) $fwrite(fout, \"timeout\\n\");\n        else $fwrite(fout, \"clocks %0d\\n\", t);\n";
+    } else {
+        v += "        $fwrite(fout, \"clocks %0d\\n\", t);\n";
+    }
+    v += "        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
+    v
+}
+
+/// Compile and run under Icarus; the seconds of each.
+fn icarus(verilog: &str, plan: &Plan, dir: &Path) -> Result<(f64, f64), String> {
+    let started = std::time::Instant::now();
+    std::fs::write(dir.join("top.v"), verilog).map_err(|e| e.to_string())?;
+    std::fs::write(dir.join("tb.v"), testbench_verilog(plan)).map_err(|e| e.to_string())?;
+    crate::tool::run(
+        Command::new("iverilog")
+            .args(["-g2012", "-o", "sim.vvp", "-s", "tb", "top.v", "tb.v"])
+            .current_dir(dir),
+        "Icarus Verilog (iverilog)",
+    )?;
+    let built = started.elapsed().as_secs_f64();
+    let run = std::time::Instant::now();
+    crate::tool::run_watched(
+        Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
+        "Icarus Verilog (vvp)",
+        &dir.join("heartbeat"),
+        crate::tool::ICARUS_STALL,
+    )?;
+    Ok((built, run.elapsed().as_secs_f64()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ports_in_declaration_order() {
+        let v = "// x\nmodule top(clock,a$0,flag,y);\n    input wire  clock;\n    input wire  [15:0] a$0;\n    input wire  flag;\n    output reg  [31:0] y;\nendmodule\n";
+        let p = ports(v).unwrap();
+        let want = |name: &str, bits, input| Port {
+            name: name.into(),
+            bits,
+            input,
+        };
+        assert_eq!(
+            p,
+            vec![
+                want("a$0", 16, true),
+                want("flag", 1, true),
+                want("y", 32, false)
+            ]
+        );
+    }
+}

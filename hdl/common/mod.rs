@@ -1,0 +1,29 @@
+//! What both architectures build from: [`lerp`] (linear interpolation),
+//! [`over`] (the over operator), [`unorm`] (the exact unorm multiplier),
+//! [`delay_line`] and [`ram`] (block RAM as deep as the scene needs), the
+//! [`shader`] (classification and shading tables, with its [`int_sqrt`] and
+//! [`square`] for the gradient magnitude), and [`lanes`], the lane counts
+//! the RTL is built for.
+
+pub mod delay_line;
+pub mod int_sqrt;
+pub mod lanes;
+pub mod lerp;
+pub mod over;
+pub mod ram;
+pub mod shader;
+pub mod square;
+pub mod unorm;
+
+use rust_hdl::prelude::*;
+
+/// A 16-bit constant from a `u32` (the counters' and registers' width).
+pub fn bits16(v: u32) -> Bits<16> {
+    (v as u64).to_bits()
+}
+
+/// A ROM of 16-bit two's-complement entries (Cube-3's template and group
+/// tables).
+pub fn rom16<const N: usize>(v: &[i32]) -> ROM<Bits<16>, N> {
+    v.iter().map(|&x| ((x as u64) & 0xffff).to_bits()).into()
+}

@@ -1,0 +1,226 @@
+//! A block RAM whose depth is chosen when the design is built, not by its
+//! address type: the ring buffers and memory modules take the pipeline's
+//! `N`-bit addresses and keep `2^bits` words, using the low `bits` address
+//! bits, so that each scene's hardware holds only the words it needs.
+//!
+//! Words can be narrower than the data type too: with [`DepthRam::fields`]
+//! only the given bit fields are stored (a compositing-buffer word holds
+//! four `rgba_bits` channels in 16-bit slots, a voxel `voxel_bits` of 16),
+//! and the others read as zero.
+//!
+//! The ports and timing are those of rust-hdl's `RAM` (a registered read, a
+//! write on the clock edge), which fixes the depth at `2^N` and the width at
+//! `D`; hence this widget, with its own Verilog.
+
+use rust_hdl::core::timing::TimingInfo;
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct DepthRam<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
+    pub read_address: Signal<In, Bits<N>>,
+    pub read_clock: Signal<In, Clock>,
+    pub read_data: Signal<Out, D>,
+    pub write_address: Signal<In, Bits<N>>,
+    pub write_clock: Signal<In, Clock>,
+    pub write_data: Signal<In, D>,
+    pub write_enable: Signal<In, bool>,
+    // Fields starting with `_` are not signals or blocks to rust-hdl.
+    _bits: usize,
+    _words: Vec<D>,
+    /// Words given at build time (block-RAM initialisation).
+    _init: usize,
+    /// Stored bit fields `(lowest bit, width)`, lowest first; every bit
+    /// when empty. `_mask` has exactly their bits set.
+    _fields: Vec<(usize, usize)>,
+    _mask: Option<D>,
+}
+
+impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
+    /// `2^bits` words (1 <= bits <= N), all zero.
+    pub fn new(bits: usize) -> Self {
+        Self::with_words(1 << bits)
+    }
+
+    /// `words` words (2 <= words <= 2^N), all zero, addressed by the low
+    /// `bits_for(words)` address bits; the addresses given must stay below
+    /// `words` (a [`super::delay_line::DelayLine`]'s pointer wraps there).
+    pub fn with_words(words: usize) -> Self {
+        let bits = super::ram::bits_for(words as u64) as usize;
+        assert!(
+            words >= 2 && bits <= N,
+            "a {N}-bit address holds 2 to 2^{N} words, not {words}"
+        );
+        DepthRam {
+            read_address: Default::default(),
+            read_clock: Default::default(),
+            read_data: Default::default(),
+            write_address: Default::default(),
+            write_clock: Default::default(),
+            write_data: Default::default(),
+            write_enable: Default::default(),
+            _bits: bits,
+            _words: vec![D::default(); words],
+            _init: 0,
+            _fields: Vec::new(),
+            _mask: None,
+        }
+    }
+
+    /// Store only the bit fields `(lowest bit, width)` of each word; `mask`
+    /// has exactly those bits set. Fields that cover the whole word change
+    /// nothing.
+    pub fn fields(mut self, fields: &[(usize, usize)], mask: D) -> Self {
+        let mut f = fields.to_vec();
+        f.sort_unstable();
+        assert!(
+            f.windows(2).all(|w| w[0].0 + w[0].1 <= w[1].0)
+                && f.last().is_none_or(|&(lo, w)| w > 0 && lo + w <= D::BITS),
+            "fields {f:?} overlap or exceed {} bits",
+            D::BITS
+        );
+        if f.iter().map(|f| f.1).sum::<usize>() < D::BITS {
+            self._fields = f;
+            self._mask = Some(mask);
+        }
+        self
+    }
+
+    /// Bits stored per word.
+    pub fn word_bits(&self) -> usize {
+        if self._fields.is_empty() {
+            D::BITS
+        } else {
+            self._fields.iter().map(|f| f.1).sum()
+        }
+    }
+
+    /// Words of storage.
+    pub fn depth(&self) -> usize {
+        self._words.len()
+    }
+
+    /// Initial contents, from word 0 (at most `depth` words). Only for
+    /// whole words or one field at bit 0.
+    pub fn preload(&mut self, words: impl IntoIterator<Item = D>) {
+        assert!(
+            self._fields.len() <= 1 && self._fields.first().is_none_or(|f| f.0 == 0),
+            "initial contents need whole words or one field at bit 0"
+        );
+        self._words.fill(D::default());
+        let mut n = 0;
+        for (slot, w) in self._words.iter_mut().zip(words) {
+            *slot = self._mask.map_or(w, |m| w & m);
+            n += 1;
+        }
+        self._init = n;
+    }
+
+    fn index(&self, address: Bits<N>) -> usize {
+        (address.index()) & ((1 << self._bits) - 1)
+    }
+}
+
+impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam<D, N> {
+    fn update(&mut self) {
+        if self.read_clock.pos_edge() {
+            self.read_data.next = self._words[self.index(self.read_address.val())];
+        }
+        if self.write_clock.pos_edge() && self.write_enable.val() {
+            let i = self.index(self.write_address.val());
+            let w = self.write_data.val();
+            self._words[i] = self._mask.map_or(w, |m| w & m);
+        }
+    }
+
+    fn connect(&mut self) {
+        self.read_data.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let init = if self._init > 0 {
+            let lines: Vec<String> = self._words[..self._init]
+                .iter()
+                .enumerate()
+                .map(|(i, w)| format!("   mem[{i}] = {}'({});", self.word_bits(), w.verilog()))
+                .collect();
+            format!("initial begin\n{}\nend\n", lines.join("\n"))
+        } else {
+            String::new()
+        };
+        let msb = self._bits - 1;
+        // The stored word and the read word, as concatenations, MSB first.
+        let (stored, read) = if self._fields.is_empty() {
+            (
+                "write_data".to_string(),
+                format!("mem[read_address[{msb}:0]]"),
+            )
+        } else {
+            let mut stored = Vec::new();
+            let mut read = Vec::new();
+            let (mut top, mut offset) = (D::BITS, self.word_bits());
+            for &(lo, w) in self._fields.iter().rev() {
+                if top > lo + w {
+                    read.push(format!("{}'d0", top - lo - w));
+                }
+                stored.push(format!("write_data[{}:{lo}]", lo + w - 1));
+                read.push(format!(
+                    "mem[read_address[{msb}:0]][{}:{}]",
+                    offset - 1,
+                    offset - w
+                ));
+                offset -= w;
+                top = lo;
+            }
+            if top > 0 {
+                read.push(format!("{top}'d0"));
+            }
+            (
+                format!("{{{}}}", stored.join(", ")),
+                format!("{{{}}}", read.join(", ")),
+            )
+        };
+        Verilog::Custom(format!(
+            "\
+reg [{d}:0] mem[{last}:0];
+{init}
+always @(posedge read_clock) begin
+   read_data <= {read};
+end
+
+always @(posedge write_clock) begin
+   if (write_enable) begin
+      mem[write_address[{msb}:0]] <= {stored};
+   end
+end
+",
+            d = self.word_bits() - 1,
+            last = self._words.len() - 1,
+        ))
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![
+            TimingInfo {
+                name: "ram_read".into(),
+                clock: "read_clock".into(),
+                inputs: vec!["read_address".into()],
+                outputs: vec!["read_data".into()],
+            },
+            TimingInfo {
+                name: "ram_write".into(),
+                clock: "write_clock".into(),
+                inputs: vec![
+                    "write_address".into(),
+                    "write_data".into(),
+                    "write_enable".into(),
+                ],
+                outputs: vec![],
+            },
+        ]
+    }
+}
+
+/// Address bits that count `n` words (at least 1).
+pub fn bits_for(n: u64) -> u32 {
+    (64 - n.saturating_sub(1).leading_zeros()).max(1)
+}

@@ -1,0 +1,432 @@
+//! Cube-3's beam fetch into the 2-D skewed buffers (§2, Figs. 2 and 3; §5,
+//! Fig. 12): the CFB delivers the PRP of each scanline as beams, the Fast
+//! Bus shears (parallel) or de-fans (perspective) them so that each
+//! discrete ray becomes a row, and three 2-DSBs in turn take a PRP while
+//! the other two are read as the `cur` and `next` streams of
+//! [`super::trilin_lanes`].
+//!
+//! **CFB.** `P` memory modules (on chip, or an external RAM through the
+//! `ext_*` ports) hold the volume in the view's traversal
+//! order `(x, y, k)`, skewed as Cube-4L's CFB: voxel `(x, y, k)` in module
+//! `(x + y + k) mod P` at address `x div P + y·b + k·b·n_y`, `b = ceil(n_x /
+//! P)`, so any `P` voxels of a beam within `P` consecutive `x` lie in `P`
+//! different modules. (Cube-4L's CFB reads beams along the dataset's first
+//! axis in sweep order; the host loads this memory in the traversal order
+//! of the base plane instead.)
+//!
+//! **Beams.** Scanline `v`'s PRP is beam `k` = the voxels `(X_k(u), Y_k(v),
+//! k)` for the stream's rays `u` (the templates). Each clock reads a group
+//! of up to `P` consecutive rays of one beam, through `P` lanes: lane `j`
+//! reads ray `r + j` at `x_j = X_k(u_0 + r + j)`, from module `(x_j + y +
+//! k) mod P`; voxels outside the volume read 0. Planes `0 .. K_w` are
+//! written (`K_w = min(K + 1, G·P)`; plane `K`, behind the volume, is 0).
+//!
+//! - *Parallel* (a shear): `X_k(u) = u + pos_x[k]`, so every group is a
+//!   chunk of `P` rays whose `x_j = x_0 + j` are consecutive:
+//!   `K_w·ceil(R / P)` clocks a PRP, from counters and one ROM entry a
+//!   plane.
+//! - *Perspective* (de-fanning, Fig. 3): the rays diverge from the eye, so
+//!   `X_k` grows by one or more from ray to ray and voxels between them are
+//!   not fetched. A group is as many rays (up to `P`) as have their `x`
+//!   within `P` consecutive voxels, which makes it conflict-free; the
+//!   host lists the groups of every plane ([`Group`]) and ROMs hold them,
+//!   one entry a clock, with `Y_k(v)` by scanline and plane. A PRP takes as
+//!   many clocks as groups.
+//!
+//! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
+//! at address `r·G + k div P`, so a ray's `P` planes of a segment lie in `P`
+//! modules at one address. Memory module `m` takes the address of the lane
+//! whose voxel it holds, and one clock later 2-DSB module `d` takes the
+//! word of the lane whose ray it stores: a voxel may travel from any module
+//! to any other in a clock (a `P`-way crossbar each way). In a parallel
+//! view both are rotations, by `(x_0 + y + k) mod P` and `(r + k) mod P`;
+//! between consecutive beams the first changes by `pos_x[k+1] - pos_x[k] +
+//! pos_y[k+1] - pos_y[k] + 1`, the shift of the paper's Fast Bus. A
+//! perspective view's lanes land in modules in any order, hence the
+//! crossbar.
+//!
+//! **Reads.** Segment `s` of ray `r` reads address `r·G + s` of every module
+//! of the `cur` and `next` buffers; lane `i` takes module `(r + i) mod P`.
+//!
+//! **Schedule.** Scanline periods of `T` clocks: in period `j` the buffer
+//! `j mod 3` takes scanline `v_0 + j` (for `j <= S`) while, from period 2,
+//! scanlines `v_0 + j - 2` (`cur`) and `v_0 + j - 1` (`next`) are read, `R·G`
+//! segments on consecutive clocks, `valid` high. `T` is the longer of the
+//! writes (the groups, and the read latency) and the reads (`R·G` and the
+//! read latency): [`BeamFetchConfig::period`].
+
+use super::config::{BeamFetchConfig, GROUP_BITS, PLANE_BITS};
+use super::groups::Groups;
+use super::schedule::Schedule;
+use crate::common::ram::DepthRam;
+use crate::common::rom16;
+use rust_hdl::prelude::*;
+
+/// The beam fetch for `P` lanes: `A`-bit memory and `B`-bit 2-DSB
+/// addresses.
+#[derive(LogicBlock)]
+pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
+    pub clock: Signal<In, Clock>,
+    pub start: Signal<In, Bit>,
+    /// A segment of `cur` and `next` is out this clock.
+    pub valid: Signal<Out, Bit>,
+    pub cur: [Signal<Out, Bits<16>>; P],
+    pub next: [Signal<Out, Bits<16>>; P],
+    /// External memory (`BeamFetchConfig::external`): each module's read
+    /// address, and its word one clock later, as a synchronous RAM answers.
+    pub ext_addr: [Signal<Out, Bits<32>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
+    /// Loading on-chip memory: one word per clock into module
+    /// `load_module` (the host's order of `BeamFetchConfig::modules`).
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<32>>,
+    pub load_data: Signal<In, Bits<16>>,
+    external: Constant<Bit>,
+    /// The on-chip modules (two words each with external memory).
+    memory: [DepthRam<Bits<16>, A>; P],
+    word: [Signal<Local, Bits<16>>; P],
+    buffer0: [DepthRam<Bits<16>, B>; P],
+    buffer1: [DepthRam<Bits<16>, B>; P],
+    buffer2: [DepthRam<Bits<16>, B>; P],
+    /// This clock's group of rays.
+    group: Groups<P>,
+    /// `Y_k(v) - v` by plane (parallel), or by scanline and plane at
+    /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`).
+    pos_y: ROM<Bits<16>, 32>,
+    row_stride: Constant<Bits<16>>,
+    row_entry: Signal<Local, Bits<32>>,
+    schedule: Schedule,
+    /// The write side: this clock's plane, row and first ray, and per lane
+    /// its ray, voxel `x`, module, address and whether it holds a ray and
+    /// lies in the volume.
+    row: Signal<Local, Bits<16>>,
+    lane_ray: [Signal<Local, Bits<16>>; P],
+    lane_inside: [Signal<Local, Bit>; P],
+    lane_module: [Signal<Local, Bits<16>>; P],
+    lane_column: [Signal<Local, Bits<16>>; P],
+    lane_address: [Signal<Local, Bits<32>>; P],
+    /// Per memory module: the address it reads, and whether it reads.
+    address: [Signal<Local, Bits<32>>; P],
+    reads: [Signal<Local, Bit>; P],
+    /// One clock later, with the memory's data.
+    holds_q: [DFF<Bit>; P],
+    inside_q: [DFF<Bit>; P],
+    module_q: [DFF<Bits<16>>; P],
+    ray_q: [DFF<Bits<16>>; P],
+    plane_q: DFF<Bits<16>>,
+    write_q: DFF<Bit>,
+    plane_segment: Signal<Local, Bits<16>>,
+    buffer_q: DFF<Bits<2>>,
+    value: [Signal<Local, Bits<16>>; P],
+    /// Per 2-DSB module: the lane's word, ray and whether one is written.
+    dsb_data: [Signal<Local, Bits<16>>; P],
+    dsb_ray: [Signal<Local, Bits<16>>; P],
+    dsb_write: [Signal<Local, Bit>; P],
+    write_address: [Signal<Local, Bits<32>>; P],
+    read_address: Signal<Local, Bits<32>>,
+    /// The read side, one clock later: the rotation and the buffers.
+    read_q: DFF<Bit>,
+    lane_q: DFF<Bits<16>>,
+    cur_q: DFF<Bits<2>>,
+    next_q: DFF<Bits<2>>,
+    index: [Constant<Bits<16>>; P],
+    module_id: [Constant<Bits<8>>; P],
+    buffer_id: [Constant<Bits<2>>; 3],
+    one: Constant<Bits<16>>,
+    mask: Constant<Bits<16>>,
+    shift: Constant<Bits<16>>,
+    n_x: Constant<Bits<16>>,
+    n_y: Constant<Bits<16>>,
+    n_k: Constant<Bits<16>>,
+    row_words: Constant<Bits<16>>,
+    plane_words: Constant<Bits<16>>,
+    v0: Constant<Bits<16>>,
+    rays: Constant<Bits<16>>,
+    segments: Constant<Bits<16>>,
+}
+
+impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
+    pub fn new(c: &BeamFetchConfig) -> Result<BeamFetch<P, A, B>, String> {
+        let [nx, ny, nk] = c.dims;
+        let b = nx.div_ceil(P);
+        if c.p != P || !P.is_power_of_two() || P > 8 {
+            return Err(format!(
+                "hardware.pipelines {} unsupported (1, 2, 4 or 8)",
+                c.p
+            ));
+        }
+        if b * ny >= 1 << 16
+            || (!c.external && c.module_words() > 1 << A)
+            || c.rays * c.segments > 1 << B
+        {
+            return Err(format!(
+                "a {nx}x{ny}x{nk} volume needs more memory than this build's {A}-bit modules and {B}-bit buffers"
+            ));
+        }
+        if nk >= 1 << PLANE_BITS {
+            return Err(format!(
+                "{nk} planes: the templates hold at most {}",
+                (1 << PLANE_BITS) - 1
+            ));
+        }
+        if c.groups.len() > 1 << GROUP_BITS || c.pos_y.len() > 1 << GROUP_BITS {
+            return Err(format!(
+                "{} groups of rays and {} rows: the perspective templates hold at most 2^{GROUP_BITS}",
+                c.groups.len(),
+                c.pos_y.len()
+            ));
+        }
+        let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
+        let words = if c.external {
+            2
+        } else {
+            c.module_words().max(2)
+        };
+        let ram = || DepthRam::with_words(words);
+        let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
+        Ok(BeamFetch {
+            clock: Default::default(),
+            start: Default::default(),
+            valid: Default::default(),
+            cur: std::array::from_fn(|_| Default::default()),
+            next: std::array::from_fn(|_| Default::default()),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
+            external: Constant::new(c.external),
+            memory: std::array::from_fn(|_| ram()),
+            word: std::array::from_fn(|_| Default::default()),
+            buffer0: std::array::from_fn(|_| buffer()),
+            buffer1: std::array::from_fn(|_| buffer()),
+            buffer2: std::array::from_fn(|_| buffer()),
+            group: Groups::new(c),
+            pos_y: rom16(&c.pos_y),
+            row_entry: Default::default(),
+            row_stride: k(if c.perspective() { nk as i64 + 1 } else { 0 }),
+            schedule: Schedule::new(c),
+            row: Default::default(),
+            lane_ray: std::array::from_fn(|_| Default::default()),
+            lane_inside: std::array::from_fn(|_| Default::default()),
+            lane_module: std::array::from_fn(|_| Default::default()),
+            lane_column: std::array::from_fn(|_| Default::default()),
+            lane_address: std::array::from_fn(|_| Default::default()),
+            address: std::array::from_fn(|_| Default::default()),
+            reads: std::array::from_fn(|_| Default::default()),
+            holds_q: std::array::from_fn(|_| Default::default()),
+            inside_q: std::array::from_fn(|_| Default::default()),
+            module_q: std::array::from_fn(|_| Default::default()),
+            ray_q: std::array::from_fn(|_| Default::default()),
+            plane_q: Default::default(),
+            write_q: Default::default(),
+            plane_segment: Default::default(),
+            buffer_q: Default::default(),
+            value: std::array::from_fn(|_| Default::default()),
+            dsb_data: std::array::from_fn(|_| Default::default()),
+            dsb_ray: std::array::from_fn(|_| Default::default()),
+            dsb_write: std::array::from_fn(|_| Default::default()),
+            write_address: std::array::from_fn(|_| Default::default()),
+            read_address: Default::default(),
+            read_q: Default::default(),
+            lane_q: Default::default(),
+            cur_q: Default::default(),
+            next_q: Default::default(),
+            index: std::array::from_fn(|m| k(m as i64)),
+            module_id: std::array::from_fn(|m| Constant::new((m as u64).to_bits())),
+            buffer_id: std::array::from_fn(|b| Constant::new((b as u64).to_bits())),
+            one: k(1),
+            mask: k(P as i64 - 1),
+            shift: k(P.trailing_zeros() as i64),
+            n_x: k(nx as i64),
+            n_y: k(ny as i64),
+            n_k: k(nk as i64),
+            row_words: k(b as i64),
+            plane_words: k((b * ny) as i64),
+            v0: k(c.v0 as i64),
+            rays: k(c.rays as i64),
+            segments: k(c.segments as i64),
+        })
+    }
+
+    /// Load the memory modules (`BeamFetchConfig::modules`).
+    pub fn preload(&mut self, modules: &[Vec<u16>]) {
+        for (m, words) in self.memory.iter_mut().zip(modules) {
+            m.preload(words.iter().map(|&w| (w as u64).to_bits()));
+        }
+    }
+}
+
+impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, plane_q, write_q, buffer_q, read_q, lane_q, cur_q, next_q);
+        self.schedule.clock.next = self.clock.val();
+        self.schedule.start.next = self.start.val();
+        // This clock's group of rays, and its beam's row.
+        self.group.chunk.next = self.schedule.chunk.val();
+        self.group.plane_count.next = self.schedule.plane.val();
+        self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
+            + bit_cast::<32, 16>(self.group.plane.val());
+        self.pos_y.address.next = self.row_entry.val();
+        self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
+        for j in 0..P {
+            self.lane_ray[j].next = self.group.first_ray.val() + self.index[j].val();
+            self.lane_inside[j].next = self.group.holds[j].val()
+                & !self.group.x[j].val().get_bit(15)
+                & (self.group.x[j].val() < self.n_x.val())
+                & !self.row.val().get_bit(15)
+                & (self.row.val() < self.n_y.val())
+                & (self.group.plane.val() < self.n_k.val());
+            self.lane_module[j].next =
+                (self.group.x[j].val() + self.row.val() + self.group.plane.val()) & self.mask.val();
+            // (`* one` widens the column to 32 bits inside the loop.)
+            self.lane_column[j].next = self.group.x[j].val() >> self.shift.val();
+            self.lane_address[j].next = self.lane_column[j].val() * self.one.val()
+                + self.row.val() * self.row_words.val()
+                + self.group.plane.val() * self.plane_words.val();
+            self.holds_q[j].clock.next = self.clock.val();
+            self.inside_q[j].clock.next = self.clock.val();
+            self.module_q[j].clock.next = self.clock.val();
+            self.ray_q[j].clock.next = self.clock.val();
+            self.holds_q[j].d.next = self.group.holds[j].val();
+            self.inside_q[j].d.next = self.lane_inside[j].val();
+            self.module_q[j].d.next = self.lane_module[j].val();
+            self.ray_q[j].d.next = self.lane_ray[j].val();
+        }
+        // Lanes to memory modules: each module reads the voxel of the lane
+        // in it (at most one: the lanes' x lie within P consecutive).
+        for m in 0..P {
+            self.address[m].next = 0.into();
+            self.reads[m].next = false;
+            for j in 0..P {
+                if self.lane_inside[j].val() & (self.lane_module[j].val() == self.index[m].val()) {
+                    self.address[m].next = self.lane_address[j].val();
+                    self.reads[m].next = true;
+                }
+            }
+            self.memory[m].read_clock.next = self.clock.val();
+            self.memory[m].write_clock.next = self.clock.val();
+            self.memory[m].write_enable.next = self.load_enable.val()
+                & (self.load_module.val() == self.module_id[m].val())
+                & !self.external.val();
+            self.memory[m].write_address.next = self.load_address.val().get_bits::<A>(0);
+            self.memory[m].write_data.next = self.load_data.val();
+            // Outside the volume the module reads word 0, and the voxel is 0.
+            self.memory[m].read_address.next = 0.into();
+            self.ext_addr[m].next = 0.into();
+            if self.reads[m].val() & !self.external.val() {
+                self.memory[m].read_address.next = self.address[m].val().get_bits::<A>(0);
+            }
+            if self.reads[m].val() & self.external.val() {
+                self.ext_addr[m].next = self.address[m].val();
+            }
+            self.word[m].next = self.memory[m].read_data.val();
+            if self.external.val() {
+                self.word[m].next = self.ext_data[m].val();
+            }
+        }
+        self.plane_q.d.next = self.group.plane.val();
+        self.write_q.d.next = self.schedule.writing.val();
+        self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
+        self.buffer_q.d.next = self.schedule.write_buffer.val();
+        // Memory modules back to lanes, and lanes to 2-DSB modules: ray r
+        // of plane k to module (r + k) mod P at address r*G + k div P.
+        for j in 0..P {
+            self.value[j].next = 0.into();
+            for m in 0..P {
+                if self.inside_q[j].q.val() & (self.module_q[j].q.val() == self.index[m].val()) {
+                    self.value[j].next = self.word[m].val();
+                }
+            }
+        }
+        for d in 0..P {
+            self.dsb_data[d].next = 0.into();
+            self.dsb_ray[d].next = 0.into();
+            self.dsb_write[d].next = false;
+            for j in 0..P {
+                if self.holds_q[j].q.val()
+                    & (((self.ray_q[j].q.val() + self.plane_q.q.val()) & self.mask.val())
+                        == self.index[d].val())
+                {
+                    self.dsb_data[d].next = self.value[j].val();
+                    self.dsb_ray[d].next = self.ray_q[j].q.val();
+                    self.dsb_write[d].next = true;
+                }
+            }
+            self.write_address[d].next = self.dsb_ray[d].val() * self.segments.val()
+                + bit_cast::<32, 16>(self.plane_segment.val());
+            self.buffer0[d].write_clock.next = self.clock.val();
+            self.buffer1[d].write_clock.next = self.clock.val();
+            self.buffer2[d].write_clock.next = self.clock.val();
+            self.buffer0[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer1[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer2[d].write_address.next = self.write_address[d].val().get_bits::<B>(0);
+            self.buffer0[d].write_data.next = self.dsb_data[d].val();
+            self.buffer1[d].write_data.next = self.dsb_data[d].val();
+            self.buffer2[d].write_data.next = self.dsb_data[d].val();
+            self.buffer0[d].write_enable.next = self.write_q.q.val()
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[0].val());
+            self.buffer1[d].write_enable.next = self.write_q.q.val()
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[1].val());
+            self.buffer2[d].write_enable.next = self.write_q.q.val()
+                & self.dsb_write[d].val()
+                & (self.dsb_ray[d].val() < self.rays.val())
+                & (self.buffer_q.q.val() == self.buffer_id[2].val());
+        }
+        // Reads: segment s of ray r at r*G + s in every module; lane i takes
+        // module (r + i) mod P a clock later.
+        self.read_address.next = 0.into();
+        if self.schedule.reading.val() {
+            self.read_address.next = self.schedule.ray.val() * self.segments.val()
+                + bit_cast::<32, 16>(self.schedule.segment.val());
+        }
+        self.read_q.d.next = self.schedule.reading.val();
+        self.lane_q.d.next = self.schedule.ray.val() & self.mask.val();
+        self.cur_q.d.next = self.schedule.cur_buffer.val();
+        self.next_q.d.next = self.schedule.next_buffer.val();
+        for m in 0..P {
+            self.buffer0[m].read_clock.next = self.clock.val();
+            self.buffer1[m].read_clock.next = self.clock.val();
+            self.buffer2[m].read_clock.next = self.clock.val();
+            self.buffer0[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+            self.buffer1[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+            self.buffer2[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+        }
+        for i in 0..P {
+            self.cur[i].next = 0.into();
+            self.next[i].next = 0.into();
+            for m in 0..P {
+                if ((self.index[i].val() + self.lane_q.q.val()) & self.mask.val())
+                    == self.index[m].val()
+                {
+                    if self.cur_q.q.val() == self.buffer_id[0].val() {
+                        self.cur[i].next = self.buffer0[m].read_data.val();
+                    }
+                    if self.cur_q.q.val() == self.buffer_id[1].val() {
+                        self.cur[i].next = self.buffer1[m].read_data.val();
+                    }
+                    if self.cur_q.q.val() == self.buffer_id[2].val() {
+                        self.cur[i].next = self.buffer2[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[0].val() {
+                        self.next[i].next = self.buffer0[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[1].val() {
+                        self.next[i].next = self.buffer1[m].read_data.val();
+                    }
+                    if self.next_q.q.val() == self.buffer_id[2].val() {
+                        self.next[i].next = self.buffer2[m].read_data.val();
+                    }
+                }
+            }
+        }
+        self.valid.next = self.read_q.q.val();
+    }
+}

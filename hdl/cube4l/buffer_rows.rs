@@ -1,0 +1,118 @@
+//! The compositing-buffer history of one Cube-4L lane (§3.5-3.7, as Fig.
+//! 21's SFG builds it): the lane's composited values, read once from one
+//! ring and brought to every tap's delay by beam-length delay lines and
+//! registers, instead of one ring copy with its own read port per tap.
+//!
+//! Tap (e_x, e_y), crossing h links, needs the lane's result from
+//! E = S - e_y*B - [e_x = 1] - h - r clocks back (`pipeline`'s tap delay,
+//! less its links and the r = `RESULT_AT` clocks from a beat's shader
+//! register to its result). Row e_y's taps lie within 4 clocks of
+//! R(e_y) = S - e_y*B - r - 4:
+//! the ring delays the result R(+1), one beam-length line more gives R(0),
+//! another R(-1), and four registers per row give the rest. A scene whose
+//! taps never look at row -1 gets a register for that row's line.
+//!
+//! Memory: S - B - r - 4 words for the ring and 2B for the lines, where each
+//! tap used to keep its own ring of the next power of two above S + B.
+
+use super::config::{PipelineConfig, TAPS};
+use crate::common::delay_line::DelayLine;
+use rust_hdl::prelude::*;
+
+/// One lane's compositing-buffer history (`H`-bit delay-line pointers).
+#[derive(LogicBlock)]
+pub struct BufferRows<const H: usize> {
+    pub clock: Signal<In, Clock>,
+    /// The lane's composited value (T + `RESULT_AT`) and its beat flag.
+    pub res: Signal<In, Bits<64>>,
+    pub res_beat: Signal<In, Bit>,
+    /// Each tap's value (in `TAPS` order) as its ring read used to give it.
+    pub tap: [Signal<Out, Bits<64>>; 9],
+    ring: DelayLine<Bits<64>, H>,
+    beam0: DelayLine<Bits<64>, H>,
+    beam1: DelayLine<Bits<64>, H>,
+    /// Row r's register i is `stage[4 r + i]` (rows +1, 0, -1).
+    stage: [DFF<Bits<64>>; 12],
+    /// Candidate `5 r + i`: row r's value i clocks after R(e_y).
+    cand: [Signal<Local, Bits<64>>; 15],
+    /// One-hot: the candidate each tap takes.
+    pick: [Constant<Bits<15>>; 9],
+    sel: [Signal<Local, Bits<64>>; 9],
+}
+
+impl<const H: usize> BufferRows<H> {
+    pub fn new(c: &PipelineConfig) -> BufferRows<H> {
+        let mask = c
+            .ring_fields
+            .iter()
+            .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo)
+            .to_bits();
+        let line = |length: u32| DelayLine::new(length as usize, &c.ring_fields, mask);
+        let [ring, beam0, beam1] = c.history_lines();
+        BufferRows {
+            clock: Default::default(),
+            res: Default::default(),
+            res_beat: Default::default(),
+            tap: Default::default(),
+            ring: line(ring),
+            beam0: line(beam0),
+            beam1: line(beam1),
+            stage: Default::default(),
+            cand: Default::default(),
+            pick: std::array::from_fn(|t| {
+                let ey = TAPS[t].1;
+                let row = (1 - ey) as u64;
+                let i = (c.tap_wait(t) - c.row_wait(ey)) as u64;
+                assert!(i <= 4, "tap {t} lies {i} clocks into its row");
+                Constant::new((1u64 << (5 * row + i)).to_bits())
+            }),
+            sel: Default::default(),
+        }
+    }
+
+    /// Bits of block RAM: the ring and the lines.
+    pub fn memory_bits(&self) -> usize {
+        self.ring.memory_bits() + self.beam0.memory_bits() + self.beam1.memory_bits()
+    }
+}
+
+impl<const H: usize> Logic for BufferRows<H> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.ring.clock.next = self.clock.val();
+        self.beam0.clock.next = self.clock.val();
+        self.beam1.clock.next = self.clock.val();
+        for i in 0..12 {
+            self.stage[i].clock.next = self.clock.val();
+        }
+        // Written at its beat, read once; the lines copy every clock.
+        self.ring.data_in.next = self.res.val();
+        self.ring.write_enable.next = self.res_beat.val();
+        self.beam0.data_in.next = self.ring.data_out.val();
+        self.beam0.write_enable.next = true;
+        self.beam1.data_in.next = self.beam0.data_out.val();
+        self.beam1.write_enable.next = true;
+        self.cand[0].next = self.ring.data_out.val();
+        self.cand[5].next = self.beam0.data_out.val();
+        self.cand[10].next = self.beam1.data_out.val();
+        for r in 0..3 {
+            self.stage[4 * r].d.next = self.cand[5 * r].val();
+            for i in 1..4 {
+                self.stage[4 * r + i].d.next = self.stage[4 * r + i - 1].q.val();
+            }
+            for i in 0..4 {
+                self.cand[5 * r + i + 1].next = self.stage[4 * r + i].q.val();
+            }
+        }
+        // Each tap's candidate, chosen when the design is built.
+        for t in 0..9 {
+            self.sel[t].next = self.cand[0].val();
+            for k in 1..15 {
+                if self.pick[t].val().get_bit(k) {
+                    self.sel[t].next = self.cand[k].val();
+                }
+            }
+            self.tap[t].next = self.sel[t].val();
+        }
+    }
+}

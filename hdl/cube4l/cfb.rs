@@ -1,0 +1,228 @@
+//! Cubic Frame Buffer of Cube-4L (§3.1, Figs. 5, 6, 7 and 13):
+//! `P` skewed memory modules, the address generator with its counters N_b,
+//! N_B and N_s, the pipeline-to-dataset transform for the sweep's major axis,
+//! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
+//! dy, and the base-plane pixel address. Each beat it reads one voxel per
+//! pipeline and emits it with its control one clock later (the block RAM's
+//! read latency), exactly as `golden_model::cube4l::cfb::CfbStream`.
+//!
+//! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
+//! `N_s`. Dataset voxel `(u, v, w)` is at address `u div P + v*b + w*b*n_v`
+//! of module `(u + v + w) mod P`. Lanes past the end of a beam whose length
+//! is not a multiple of `P` are padding: invalid, value 0, no pixel.
+//!
+//! The memory is loaded through the `load_*` port (one write per clock into
+//! module `load_module`) and maps to block RAM (`A` address bits per module).
+//! For volumes beyond on-chip memory, [`CfbConfig::external_memory`] makes
+//! each lane present its read address on `ext_addr` and take the voxel from
+//! `ext_data` one clock later, as a synchronous external RAM answers.
+//!
+//! dx and dy are frame registers for parallel views. Perspective views add
+//! the per-voxel divider: `S = P - V` in fixed point, then
+//! `dx = round(S_x * 2^f / S_z)` with halves away from zero. `|dx| > 1` or
+//! `S_z = 0` sets *invalid*, and such voxels carry the golden model's
+//! saturated direction, `sign(S_x) * sign(S_z)`.
+
+use super::cfb_lane::CfbLane;
+use super::config::CfbConfig;
+use crate::common::bits16;
+use golden_model::cube4l::plan::Face;
+use rust_hdl::prelude::*;
+
+/// The CFB of `P` pipelines with `A`-bit module addresses.
+#[derive(LogicBlock)]
+pub struct Cfb<const P: usize, const A: usize> {
+    pub clock: Signal<In, Clock>,
+    /// Pulse to start a sweep; `busy` stays high until its last beat is issued.
+    pub start: Signal<In, Bit>,
+    pub busy: Signal<Out, Bit>,
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<A>>,
+    pub load_data: Signal<In, Bits<16>>,
+    /// The beat on the lanes is valid (one clock after it was issued).
+    pub valid: Signal<Out, Bit>,
+    pub n_s: Signal<Out, Bits<16>>,
+    pub n_beam: Signal<Out, Bits<16>>,
+    pub n_b: Signal<Out, Bits<16>>,
+    /// Start of beam: the first partial beam of a full beam.
+    pub bs: Signal<Out, Bit>,
+    /// The lanes' outputs the pipelines use, per lane (a parent may only
+    /// read its children's ports).
+    pub value: [Signal<Out, Bits<16>>; P],
+    pub x: [Signal<Out, Bits<16>>; P],
+    pub y: [Signal<Out, Bits<16>>; P],
+    /// The voxel's slice and memory address: observability outputs, for
+    /// the CFB's testbench and the waveforms; the pipelines read neither.
+    pub z: [Signal<Out, Bits<16>>; P],
+    pub address: [Signal<Out, Bits<32>>; P],
+    pub pad: [Signal<Out, Bit>; P],
+    pub sr: [Signal<Out, Bit>; P],
+    pub er: [Signal<Out, Bit>; P],
+    pub base_x: [Signal<Out, Bits<16>>; P],
+    pub base_y: [Signal<Out, Bits<16>>; P],
+    pub face: [Signal<Out, Bits<3>>; P],
+    pub at_edge: [Signal<Out, Bit>; P],
+    pub invalid: [Signal<Out, Bit>; P],
+    pub halo: [Signal<Out, Bit>; P],
+    /// Per lane: the external memory port (see `CfbLane`).
+    pub ext_addr: [Signal<Out, Bits<32>>; P],
+    pub ext_data: [Signal<In, Bits<16>>; P],
+    pub dx_neg: [Signal<Out, Bit>; P],
+    pub dx_mag: [Signal<Out, Bits<16>>; P],
+    pub dy_neg: [Signal<Out, Bit>; P],
+    pub dy_mag: [Signal<Out, Bits<16>>; P],
+    lanes: [CfbLane<A>; P],
+    running: DFF<Bit>,
+    ns_c: DFF<Bits<16>>,
+    nbeam_c: DFF<Bits<16>>,
+    nb_c: DFF<Bits<16>>,
+    valid_q: DFF<Bit>,
+    ns_q: DFF<Bits<16>>,
+    nbeam_q: DFF<Bits<16>>,
+    nb_q: DFF<Bits<16>>,
+    z0: Constant<Bits<16>>,
+    z1: Constant<Bits<16>>,
+    ny_last: Constant<Bits<16>>,
+    b_last: Constant<Bits<16>>,
+}
+
+impl<const P: usize, const A: usize> Cfb<P, A> {
+    pub fn new(c: &CfbConfig) -> Cfb<P, A> {
+        assert!(P.is_power_of_two(), "P must be a power of two");
+        let b = c.dims[0].div_ceil(P as u32);
+        Cfb {
+            clock: Default::default(),
+            start: Default::default(),
+            busy: Default::default(),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
+            valid: Default::default(),
+            n_s: Default::default(),
+            n_beam: Default::default(),
+            n_b: Default::default(),
+            bs: Default::default(),
+            value: std::array::from_fn(|_| Default::default()),
+            x: std::array::from_fn(|_| Default::default()),
+            y: std::array::from_fn(|_| Default::default()),
+            z: std::array::from_fn(|_| Default::default()),
+            address: std::array::from_fn(|_| Default::default()),
+            pad: std::array::from_fn(|_| Default::default()),
+            sr: std::array::from_fn(|_| Default::default()),
+            er: std::array::from_fn(|_| Default::default()),
+            base_x: std::array::from_fn(|_| Default::default()),
+            base_y: std::array::from_fn(|_| Default::default()),
+            face: std::array::from_fn(|_| Default::default()),
+            at_edge: std::array::from_fn(|_| Default::default()),
+            invalid: std::array::from_fn(|_| Default::default()),
+            halo: std::array::from_fn(|_| Default::default()),
+            ext_addr: std::array::from_fn(|_| Default::default()),
+            ext_data: std::array::from_fn(|_| Default::default()),
+            dx_neg: std::array::from_fn(|_| Default::default()),
+            dx_mag: std::array::from_fn(|_| Default::default()),
+            dy_neg: std::array::from_fn(|_| Default::default()),
+            dy_mag: std::array::from_fn(|_| Default::default()),
+            lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
+            running: Default::default(),
+            ns_c: Default::default(),
+            nbeam_c: Default::default(),
+            nb_c: Default::default(),
+            valid_q: Default::default(),
+            ns_q: Default::default(),
+            nbeam_q: Default::default(),
+            nb_q: Default::default(),
+            z0: Constant::new(bits16(c.stream_z0)),
+            z1: Constant::new(bits16(c.stream_z1)),
+            ny_last: Constant::new(bits16(c.dims[1] - 1)),
+            b_last: Constant::new(bits16(b - 1)),
+        }
+    }
+}
+
+impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q);
+        for k in 0..P {
+            self.lanes[k].clock.next = self.clock.val();
+            self.lanes[k].n_s.next = self.ns_c.q.val();
+            self.lanes[k].n_beam.next = self.nbeam_c.q.val();
+            self.lanes[k].n_b.next = self.nb_c.q.val();
+            self.lanes[k].load_enable.next = self.load_enable.val();
+            self.lanes[k].load_module.next = self.load_module.val();
+            self.lanes[k].load_address.next = self.load_address.val();
+            self.lanes[k].load_data.next = self.load_data.val();
+            self.value[k].next = self.lanes[k].value.val();
+            self.x[k].next = self.lanes[k].x.val();
+            self.z[k].next = self.lanes[k].z.val();
+            self.address[k].next = self.lanes[k].address.val();
+            self.y[k].next = self.lanes[k].y.val();
+            self.pad[k].next = self.lanes[k].pad.val();
+            self.sr[k].next = self.lanes[k].sr.val();
+            self.er[k].next = self.lanes[k].er.val();
+            self.base_x[k].next = self.lanes[k].base_x.val();
+            self.base_y[k].next = self.lanes[k].base_y.val();
+            self.face[k].next = self.lanes[k].face.val();
+            self.at_edge[k].next = self.lanes[k].at_edge.val();
+            self.invalid[k].next = self.lanes[k].invalid.val();
+            self.halo[k].next = self.lanes[k].halo.val();
+            self.ext_addr[k].next = self.lanes[k].ext_addr.val();
+            self.lanes[k].ext_data.next = self.ext_data[k].val();
+            self.dx_neg[k].next = self.lanes[k].dx_neg.val();
+            self.dx_mag[k].next = self.lanes[k].dx_mag.val();
+            self.dy_neg[k].next = self.lanes[k].dy_neg.val();
+            self.dy_mag[k].next = self.lanes[k].dy_mag.val();
+        }
+        // The address generator: N_b fastest, then N_B, then N_s.
+        if self.start.val() & !self.running.q.val() {
+            self.running.d.next = true;
+            self.ns_c.d.next = self.z0.val();
+            self.nbeam_c.d.next = 0.into();
+            self.nb_c.d.next = 0.into();
+        }
+        if self.running.q.val() {
+            if self.nb_c.q.val() != self.b_last.val() {
+                self.nb_c.d.next = self.nb_c.q.val() + 1;
+            } else {
+                self.nb_c.d.next = 0.into();
+                if self.nbeam_c.q.val() != self.ny_last.val() {
+                    self.nbeam_c.d.next = self.nbeam_c.q.val() + 1;
+                } else {
+                    self.nbeam_c.d.next = 0.into();
+                    if self.ns_c.q.val() != self.z1.val() {
+                        self.ns_c.d.next = self.ns_c.q.val() + 1;
+                    } else {
+                        self.running.d.next = false;
+                    }
+                }
+            }
+        }
+        self.valid_q.d.next = self.running.q.val();
+        self.ns_q.d.next = self.ns_c.q.val();
+        self.nbeam_q.d.next = self.nbeam_c.q.val();
+        self.nb_q.d.next = self.nb_c.q.val();
+        self.busy.next = self.running.q.val();
+        self.valid.next = self.valid_q.q.val();
+        self.n_s.next = self.ns_q.q.val();
+        self.n_beam.next = self.nbeam_q.q.val();
+        self.n_b.next = self.nb_q.q.val();
+        self.bs.next = self.nb_q.q.val() == 0;
+    }
+}
+
+impl<const P: usize, const A: usize> Cfb<P, A> {
+    /// Give the memory modules initial contents (block-RAM initialisation),
+    /// `modules[k][i]` being word `i` of module `k`.
+    pub fn preload(&mut self, modules: &[Vec<u16>]) {
+        for (lane, words) in self.lanes.iter_mut().zip(modules) {
+            lane.preload(words);
+        }
+    }
+}
+
+/// `Face` as the number on the lanes' `face` output.
+pub fn face_code(f: Face) -> u32 {
+    f as u8 as u32
+}

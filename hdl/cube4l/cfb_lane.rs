@@ -1,0 +1,444 @@
+//! One pipeline's share of Cube-4L's Cubic Frame Buffer (§3.1, Figs. 5-7
+//! and 13): its skewed memory module, the pipeline-to-dataset transform,
+//! the module address, the control bits and, for perspective views, the
+//! per-voxel divider. A sub-block of [`super::cfb::Cfb`], which holds the
+//! shared counters.
+
+use super::config::CfbConfig;
+use super::divider::Divider;
+use crate::common::bits16;
+use crate::common::ram::DepthRam;
+use rust_hdl::prelude::*;
+
+/// One pipeline's share of the CFB: its memory module, skew, address and control.
+#[derive(LogicBlock)]
+pub struct CfbLane<const A: usize> {
+    pub clock: Signal<In, Clock>,
+    /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam).
+    pub n_s: Signal<In, Bits<16>>,
+    pub n_beam: Signal<In, Bits<16>>,
+    pub n_b: Signal<In, Bits<16>>,
+    /// Load port: a write when `load_enable` and `load_module` names this lane.
+    pub load_enable: Signal<In, Bit>,
+    pub load_module: Signal<In, Bits<8>>,
+    pub load_address: Signal<In, Bits<A>>,
+    pub load_data: Signal<In, Bits<16>>,
+    /// External memory port: the read address, and the word it returns one
+    /// clock later.
+    pub ext_addr: Signal<Out, Bits<32>>,
+    pub ext_data: Signal<In, Bits<16>>,
+    /// Outputs, one clock after the counters.
+    pub value: Signal<Out, Bits<16>>,
+    pub x: Signal<Out, Bits<16>>,
+    pub y: Signal<Out, Bits<16>>,
+    pub z: Signal<Out, Bits<16>>,
+    pub address: Signal<Out, Bits<32>>,
+    pub pad: Signal<Out, Bit>,
+    pub sr: Signal<Out, Bit>,
+    pub er: Signal<Out, Bit>,
+    /// A direct neighbour lies outside the dataset (`Control::edge`).
+    pub at_edge: Signal<Out, Bit>,
+    /// `golden_model::cube4l::plan::Face` as a number (0 = none).
+    pub face: Signal<Out, Bits<3>>,
+    pub base_x: Signal<Out, Bits<16>>,
+    pub base_y: Signal<Out, Bits<16>>,
+    /// A halo slice (outside z0..=z1): streamed for gradients only.
+    pub halo: Signal<Out, Bit>,
+    /// Sight-ray increments (sign and magnitude, 1.0 = 2^f) and the invalid bit.
+    pub dx_neg: Signal<Out, Bit>,
+    pub dx_mag: Signal<Out, Bits<16>>,
+    pub dy_neg: Signal<Out, Bit>,
+    pub dy_mag: Signal<Out, Bits<16>>,
+    pub invalid: Signal<Out, Bit>,
+    memory: DepthRam<Bits<16>, A>,
+    lane: Constant<Bits<16>>,
+    p_mask: Constant<Bits<16>>,
+    p_shift: Constant<Bits<8>>,
+    nx: Constant<Bits<16>>,
+    nx_last: Constant<Bits<16>>,
+    ny_last: Constant<Bits<16>>,
+    nz_last: Constant<Bits<16>>,
+    z0: Constant<Bits<16>>,
+    z1: Constant<Bits<16>>,
+    border: Constant<Bits<16>>,
+    u_from: Constant<Bits<2>>,
+    v_from: Constant<Bits<2>>,
+    w_from: Constant<Bits<2>>,
+    b_u: Constant<Bits<16>>,
+    /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
+    slab_lo: Constant<Bits<16>>,
+    slab_hi: Constant<Bits<16>>,
+    perspective: Constant<Bit>,
+    external: Constant<Bit>,
+    neg_ex: Constant<Bits<64>>,
+    neg_ey: Constant<Bits<64>>,
+    neg_ez: Constant<Bits<64>>,
+    frac: Constant<Bits<8>>,
+    one: Constant<Bits<32>>,
+    par_dx_neg: Constant<Bit>,
+    par_dx_mag: Constant<Bits<32>>,
+    par_dy_neg: Constant<Bit>,
+    par_dy_mag: Constant<Bits<32>>,
+    div_x: Divider,
+    div_y: Divider,
+    sx: Signal<Local, Bits<64>>,
+    sy: Signal<Local, Bits<64>>,
+    sz: Signal<Local, Bits<64>>,
+    sx_mag: Signal<Local, Bits<64>>,
+    sy_mag: Signal<Local, Bits<64>>,
+    sz_mag: Signal<Local, Bits<64>>,
+    dxn: Signal<Local, Bit>,
+    dxm: Signal<Local, Bits<32>>,
+    dyn_: Signal<Local, Bit>,
+    dym: Signal<Local, Bits<32>>,
+    inval: Signal<Local, Bit>,
+    dx_pos: Signal<Local, Bit>,
+    dx_neg_nz: Signal<Local, Bit>,
+    dy_pos: Signal<Local, Bit>,
+    dy_neg_nz: Signal<Local, Bit>,
+    dxn_q: DFF<Bit>,
+    dxm_q: DFF<Bits<16>>,
+    dyn_q: DFF<Bit>,
+    dym_q: DFF<Bits<16>>,
+    inval_q: DFF<Bit>,
+    halo_q: DFF<Bit>,
+    xc: Signal<Local, Bits<16>>,
+    u: Signal<Local, Bits<16>>,
+    v: Signal<Local, Bits<16>>,
+    w: Signal<Local, Bits<16>>,
+    addr: Signal<Local, Bits<32>>,
+    is_pad: Signal<Local, Bit>,
+    face_c: Signal<Local, Bits<3>>,
+    depth: Signal<Local, Bits<16>>,
+    bx: Signal<Local, Bits<16>>,
+    by: Signal<Local, Bits<16>>,
+    x_q: DFF<Bits<16>>,
+    y_q: DFF<Bits<16>>,
+    z_q: DFF<Bits<16>>,
+    addr_q: DFF<Bits<32>>,
+    pad_q: DFF<Bit>,
+    sr_q: DFF<Bit>,
+    edge_q: DFF<Bit>,
+    face_q: DFF<Bits<3>>,
+    bx_q: DFF<Bits<16>>,
+    by_q: DFF<Bits<16>>,
+}
+
+impl<const A: usize> CfbLane<A> {
+    pub fn new(k: u32, p: u32, c: &CfbConfig) -> CfbLane<A> {
+        let slab = c.b_u * c.n_v;
+        CfbLane {
+            clock: Default::default(),
+            n_s: Default::default(),
+            n_beam: Default::default(),
+            n_b: Default::default(),
+            load_enable: Default::default(),
+            load_module: Default::default(),
+            load_address: Default::default(),
+            load_data: Default::default(),
+            ext_addr: Default::default(),
+            ext_data: Default::default(),
+            value: Default::default(),
+            x: Default::default(),
+            y: Default::default(),
+            z: Default::default(),
+            address: Default::default(),
+            pad: Default::default(),
+            sr: Default::default(),
+            er: Default::default(),
+            at_edge: Default::default(),
+            face: Default::default(),
+            base_x: Default::default(),
+            base_y: Default::default(),
+            halo: Default::default(),
+            dx_neg: Default::default(),
+            dx_mag: Default::default(),
+            dy_neg: Default::default(),
+            dy_mag: Default::default(),
+            invalid: Default::default(),
+            // A 2-word stub when the voxels live in external RAM.
+            memory: DepthRam::new(if c.external_memory {
+                1
+            } else {
+                (c.memory_bits as usize).min(A)
+            })
+            .fields(
+                &[(0, c.voxel_bits as usize)],
+                ((1u64 << c.voxel_bits) - 1).to_bits(),
+            ),
+            lane: Constant::new(bits16(k)),
+            p_mask: Constant::new(bits16(p - 1)),
+            p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
+            nx: Constant::new(bits16(c.dims[0])),
+            nx_last: Constant::new(bits16(c.dims[0] - 1)),
+            ny_last: Constant::new(bits16(c.dims[1] - 1)),
+            nz_last: Constant::new(bits16(c.dims[2] - 1)),
+            z0: Constant::new(bits16(c.z0)),
+            z1: Constant::new(bits16(c.z1)),
+            border: Constant::new(bits16(c.z1 - c.z0)),
+            u_from: Constant::new((c.u_from as u64).to_bits()),
+            v_from: Constant::new((c.v_from as u64).to_bits()),
+            w_from: Constant::new((c.w_from as u64).to_bits()),
+            b_u: Constant::new(bits16(c.b_u)),
+            slab_lo: Constant::new(bits16(slab & 0xffff)),
+            slab_hi: Constant::new(bits16(slab >> 16)),
+            perspective: Constant::new(c.eye.is_some()),
+            external: Constant::new(c.external_memory),
+            neg_ex: Constant::new((c.eye.map_or(0, |e| e[0]).wrapping_neg() as u64).to_bits()),
+            neg_ey: Constant::new((c.eye.map_or(0, |e| e[1]).wrapping_neg() as u64).to_bits()),
+            neg_ez: Constant::new((c.eye.map_or(0, |e| e[2]).wrapping_neg() as u64).to_bits()),
+            frac: Constant::new((c.frac as u64).to_bits()),
+            one: Constant::new((1u64 << c.frac).to_bits()),
+            par_dx_neg: Constant::new(c.dx < 0),
+            par_dx_mag: Constant::new((c.dx.unsigned_abs() as u64).to_bits()),
+            par_dy_neg: Constant::new(c.dy < 0),
+            par_dy_mag: Constant::new((c.dy.unsigned_abs() as u64).to_bits()),
+            div_x: Divider::new(c.eye.is_some()),
+            div_y: Divider::new(c.eye.is_some()),
+            sx: Default::default(),
+            sy: Default::default(),
+            sz: Default::default(),
+            sx_mag: Default::default(),
+            sy_mag: Default::default(),
+            sz_mag: Default::default(),
+            dxn: Default::default(),
+            dxm: Default::default(),
+            dyn_: Default::default(),
+            dym: Default::default(),
+            inval: Default::default(),
+            dx_pos: Default::default(),
+            dx_neg_nz: Default::default(),
+            dy_pos: Default::default(),
+            dy_neg_nz: Default::default(),
+            dxn_q: Default::default(),
+            dxm_q: Default::default(),
+            dyn_q: Default::default(),
+            dym_q: Default::default(),
+            inval_q: Default::default(),
+            halo_q: Default::default(),
+            xc: Default::default(),
+            u: Default::default(),
+            v: Default::default(),
+            w: Default::default(),
+            addr: Default::default(),
+            is_pad: Default::default(),
+            face_c: Default::default(),
+            depth: Default::default(),
+            bx: Default::default(),
+            by: Default::default(),
+            x_q: Default::default(),
+            y_q: Default::default(),
+            z_q: Default::default(),
+            addr_q: Default::default(),
+            pad_q: Default::default(),
+            sr_q: Default::default(),
+            edge_q: Default::default(),
+            face_q: Default::default(),
+            bx_q: Default::default(),
+            by_q: Default::default(),
+        }
+    }
+
+    /// Give the memory module initial contents (block-RAM initialisation).
+    pub fn preload(&mut self, words: &[u16]) {
+        self.memory
+            .preload(words.iter().map(|&w| (w as u64).to_bits::<16>()));
+    }
+}
+
+impl<const A: usize> Logic for CfbLane<A> {
+    // The halo test is written `n_s + 1 <= z0` so that Verilator sees no
+    // constant compare when z0 = 0.
+    #[allow(clippy::int_plus_one)]
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
+            dxm_q, dyn_q, dym_q, inval_q, halo_q
+        );
+        self.memory.read_clock.next = self.clock.val();
+        self.memory.write_clock.next = self.clock.val();
+        self.memory.write_enable.next =
+            self.load_enable.val() & (bit_cast::<16, 8>(self.load_module.val()) == self.lane.val());
+        self.memory.write_address.next = self.load_address.val();
+        self.memory.write_data.next = self.load_data.val();
+        // Skew: the lane's x within the partial beam.
+        self.xc.next = (self.n_b.val() << self.p_shift.val())
+            | ((self.lane.val() - self.n_beam.val() - self.n_s.val()) & self.p_mask.val());
+        self.is_pad.next = self.xc.val() >= self.nx.val();
+        // Pipeline to dataset coordinates.
+        self.u.next = self.xc.val();
+        if self.u_from.val() == 1 {
+            self.u.next = self.n_beam.val();
+        }
+        if self.u_from.val() == 2 {
+            self.u.next = self.n_s.val();
+        }
+        self.v.next = self.xc.val();
+        if self.v_from.val() == 1 {
+            self.v.next = self.n_beam.val();
+        }
+        if self.v_from.val() == 2 {
+            self.v.next = self.n_s.val();
+        }
+        self.w.next = self.xc.val();
+        if self.w_from.val() == 1 {
+            self.w.next = self.n_beam.val();
+        }
+        if self.w_from.val() == 2 {
+            self.w.next = self.n_s.val();
+        }
+        // i = u div P + v*b + w*b*n_v
+        self.addr.next = (bit_cast::<32, 16>(self.u.val()) >> self.p_shift.val())
+            + self.v.val() * self.b_u.val()
+            + self.w.val() * self.slab_lo.val()
+            + ((self.w.val() * self.slab_hi.val()) << 16);
+        if self.is_pad.val() {
+            self.addr.next = 0.into();
+        }
+        self.memory.read_address.next = bit_cast::<A, 32>(self.addr.val());
+        self.ext_addr.next = self.addr.val();
+        // Sight-ray increments: frame registers, or the per-voxel divider.
+        self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.neg_ex.val();
+        self.sy.next =
+            (bit_cast::<64, 16>(self.n_beam.val()) << self.frac.val()) + self.neg_ey.val();
+        self.sz.next = (bit_cast::<64, 16>(self.n_s.val()) << self.frac.val()) + self.neg_ez.val();
+        self.sx_mag.next = self.sx.val();
+        if self.sx.val().get_bit(63) {
+            self.sx_mag.next = 0 - self.sx.val();
+        }
+        self.sy_mag.next = self.sy.val();
+        if self.sy.val().get_bit(63) {
+            self.sy_mag.next = 0 - self.sy.val();
+        }
+        self.sz_mag.next = self.sz.val();
+        if self.sz.val().get_bit(63) {
+            self.sz_mag.next = 0 - self.sz.val();
+        }
+        self.div_x.num.next = (self.sx_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
+        self.div_x.den.next = self.sz_mag.val();
+        self.div_y.num.next = (self.sy_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
+        self.div_y.den.next = self.sz_mag.val();
+        self.dxn.next = self.par_dx_neg.val();
+        self.dxm.next = self.par_dx_mag.val();
+        self.dyn_.next = self.par_dy_neg.val();
+        self.dym.next = self.par_dy_mag.val();
+        self.inval.next = false;
+        if self.perspective.val() {
+            self.dxn.next = self.sx.val().get_bit(63) ^ self.sz.val().get_bit(63);
+            self.dyn_.next = self.sy.val().get_bit(63) ^ self.sz.val().get_bit(63);
+            self.dxm.next = self.div_x.q.val();
+            self.dym.next = self.div_y.q.val();
+            self.inval.next = (self.sz_mag.val() == 0)
+                | self.div_x.overflow.val()
+                | self.div_y.overflow.val()
+                | (self.div_x.q.val() > self.one.val())
+                | (self.div_y.q.val() > self.one.val());
+            if self.inval.val() {
+                // Saturate to the 3x3 region: sign(S_x) * sign(S_z).
+                self.dxm.next = 0.into();
+                if (self.sx_mag.val() != 0) & (self.sz_mag.val() != 0) {
+                    self.dxm.next = self.one.val();
+                }
+                self.dym.next = 0.into();
+                if (self.sy_mag.val() != 0) & (self.sz_mag.val() != 0) {
+                    self.dym.next = self.one.val();
+                }
+            }
+        }
+        if self.dxm.val() == 0 {
+            self.dxn.next = false;
+        }
+        if self.dym.val() == 0 {
+            self.dyn_.next = false;
+        }
+        if self.is_pad.val() {
+            self.dxm.next = 0.into();
+            self.dym.next = 0.into();
+            self.dxn.next = false;
+            self.dyn_.next = false;
+        }
+        self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
+        self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
+        self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
+        self.dy_neg_nz.next = self.dyn_.val() & (self.dym.val() != 0);
+        // Exit face and base-plane address.
+        self.face_c.next = 0.into();
+        self.depth.next = self.z1.val() - self.n_s.val();
+        self.bx.next = self.border.val() + self.xc.val();
+        self.by.next = self.border.val() + self.n_beam.val();
+        if (self.xc.val() == self.nx_last.val()) & self.dx_pos.val() {
+            self.face_c.next = 2.into();
+            self.bx.next = self.border.val() + self.xc.val() + self.depth.val();
+        } else if (self.xc.val() == 0) & self.dx_neg_nz.val() {
+            self.face_c.next = 3.into();
+            self.bx.next = self.border.val() - self.depth.val();
+        } else if (self.n_beam.val() == self.ny_last.val()) & self.dy_pos.val() {
+            self.face_c.next = 4.into();
+            self.by.next = self.border.val() + self.n_beam.val() + self.depth.val();
+        } else if (self.n_beam.val() == 0) & self.dy_neg_nz.val() {
+            self.face_c.next = 5.into();
+            self.by.next = self.border.val() - self.depth.val();
+        }
+        if self.n_s.val() == self.z1.val() {
+            self.face_c.next = 1.into();
+            self.bx.next = self.border.val() + self.xc.val();
+            self.by.next = self.border.val() + self.n_beam.val();
+        }
+        if self.is_pad.val() | self.inval.val() {
+            self.face_c.next = 0.into();
+        }
+        if self.face_c.val() == 0 {
+            self.bx.next = 0.into();
+            self.by.next = 0.into();
+        }
+        self.x_q.d.next = self.xc.val();
+        self.y_q.d.next = self.n_beam.val();
+        self.z_q.d.next = self.n_s.val();
+        self.addr_q.d.next = self.addr.val();
+        self.pad_q.d.next = self.is_pad.val();
+        self.sr_q.d.next = self.n_s.val() == self.z0.val();
+        self.edge_q.d.next = self.is_pad.val()
+            | (self.xc.val() == 0)
+            | (self.n_beam.val() == 0)
+            | (self.n_s.val() == 0)
+            | (self.xc.val() == self.nx_last.val())
+            | (self.n_beam.val() == self.ny_last.val())
+            | (self.n_s.val() == self.nz_last.val());
+        self.face_q.d.next = self.face_c.val();
+        self.bx_q.d.next = self.bx.val();
+        self.by_q.d.next = self.by.val();
+        self.dxn_q.d.next = self.dxn.val();
+        self.dxm_q.d.next = bit_cast::<16, 32>(self.dxm.val());
+        self.dyn_q.d.next = self.dyn_.val();
+        self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
+        self.inval_q.d.next = self.inval.val() | self.is_pad.val();
+        self.halo_q.d.next =
+            (self.n_s.val() + 1 <= self.z0.val()) | (self.n_s.val() > self.z1.val());
+        // Outputs: registered control beside the RAM's registered read.
+        self.value.next = self.memory.read_data.val();
+        if self.external.val() {
+            self.value.next = self.ext_data.val();
+        }
+        if self.pad_q.q.val() {
+            self.value.next = 0.into();
+        }
+        self.x.next = self.x_q.q.val();
+        self.y.next = self.y_q.q.val();
+        self.z.next = self.z_q.q.val();
+        self.address.next = self.addr_q.q.val();
+        self.pad.next = self.pad_q.q.val();
+        self.sr.next = self.sr_q.q.val();
+        self.er.next = self.face_q.q.val() != 0;
+        self.at_edge.next = self.edge_q.q.val();
+        self.face.next = self.face_q.q.val();
+        self.base_x.next = self.bx_q.q.val();
+        self.base_y.next = self.by_q.q.val();
+        self.dx_neg.next = self.dxn_q.q.val();
+        self.dx_mag.next = self.dxm_q.q.val();
+        self.dy_neg.next = self.dyn_q.q.val();
+        self.dy_mag.next = self.dym_q.q.val();
+        self.invalid.next = self.inval_q.q.val();
+        self.halo.next = self.halo_q.q.val();
+    }
+}

@@ -1,0 +1,147 @@
+//! Compositing unit of the Cube-4L pipeline (§3.5, the C_k circles of Fig.
+//! 18): one voxel per clock, one register stage. It combines the bilinear
+//! unit's accumulated RGBA with the shaded voxel, bit for bit as
+//! `golden_model::cube4l::compositor::composite`:
+//!
+//! - over (composite, first-opaque): `C = sat(C_front + mul(M - A_front, C_back))`
+//!   per channel, where front/back are acc/new front to back and new/acc back
+//!   to front;
+//! - MIP / MinIP: the larger / smaller of the accumulated value and a valid voxel;
+//! - X-ray: the accumulated sum plus the voxel's opacity.
+//!
+//! The mode and order are fixed by the scene when the unit is built; the
+//! logic of the other modes is constant-folded away by synthesis.
+//! The over operator is [`Over`], one 16x16 multiplier per channel.
+
+use crate::common::over::Over;
+use golden_model::cube4l::plan::Order;
+use rust_hdl::prelude::*;
+use scene::Mode;
+
+/// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
+/// channel r only and carry 0 in the others. Channel r is 32 bits wide for
+/// the X-ray sum (`rgba_bits + log2(depth)` bits) and 16-bit MIP values.
+#[derive(LogicBlock)]
+pub struct Compositor {
+    pub clock: Signal<In, Clock>,
+    pub acc_r: Signal<In, Bits<32>>,
+    pub acc_g: Signal<In, Bits<16>>,
+    pub acc_b: Signal<In, Bits<16>>,
+    pub acc_a: Signal<In, Bits<16>>,
+    pub new_r: Signal<In, Bits<32>>,
+    pub new_g: Signal<In, Bits<16>>,
+    pub new_b: Signal<In, Bits<16>>,
+    pub new_a: Signal<In, Bits<16>>,
+    /// MIP/MinIP: the voxel takes part.
+    pub new_valid: Signal<In, Bit>,
+    pub out_r: Signal<Out, Bits<32>>,
+    pub out_g: Signal<Out, Bits<16>>,
+    pub out_b: Signal<Out, Bits<16>>,
+    pub out_a: Signal<Out, Bits<16>>,
+    front_to_back: Constant<Bit>,
+    over: Constant<Bit>,
+    mip: Constant<Bit>,
+    minip: Constant<Bit>,
+    ch_r: Over,
+    ch_g: Over,
+    ch_b: Over,
+    ch_a: Over,
+    reg_r: DFF<Bits<32>>,
+    reg_g: DFF<Bits<16>>,
+    reg_b: DFF<Bits<16>>,
+    reg_a: DFF<Bits<16>>,
+}
+
+impl Compositor {
+    pub fn new(mode: Mode, order: Order, rgba_bits: u32) -> Compositor {
+        Compositor {
+            clock: Default::default(),
+            acc_r: Default::default(),
+            acc_g: Default::default(),
+            acc_b: Default::default(),
+            acc_a: Default::default(),
+            new_r: Default::default(),
+            new_g: Default::default(),
+            new_b: Default::default(),
+            new_a: Default::default(),
+            new_valid: Default::default(),
+            out_r: Default::default(),
+            out_g: Default::default(),
+            out_b: Default::default(),
+            out_a: Default::default(),
+            front_to_back: Constant::new(order == Order::FrontToBack),
+            over: Constant::new(matches!(mode, Mode::Composite | Mode::FirstOpaque)),
+            mip: Constant::new(mode == Mode::Mip),
+            minip: Constant::new(mode == Mode::Minip),
+            ch_r: Over::new(rgba_bits),
+            ch_g: Over::new(rgba_bits),
+            ch_b: Over::new(rgba_bits),
+            ch_a: Over::new(rgba_bits),
+            reg_r: Default::default(),
+            reg_g: Default::default(),
+            reg_b: Default::default(),
+            reg_a: Default::default(),
+        }
+    }
+}
+
+impl Logic for Compositor {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, reg_r, reg_g, reg_b, reg_a);
+        // Front and back operands of the over operator.
+        if self.front_to_back.val() {
+            self.ch_r.front.next = bit_cast::<16, 32>(self.acc_r.val());
+            self.ch_g.front.next = self.acc_g.val();
+            self.ch_b.front.next = self.acc_b.val();
+            self.ch_a.front.next = self.acc_a.val();
+            self.ch_r.back.next = bit_cast::<16, 32>(self.new_r.val());
+            self.ch_g.back.next = self.new_g.val();
+            self.ch_b.back.next = self.new_b.val();
+            self.ch_a.back.next = self.new_a.val();
+            self.ch_r.front_alpha.next = self.acc_a.val();
+            self.ch_g.front_alpha.next = self.acc_a.val();
+            self.ch_b.front_alpha.next = self.acc_a.val();
+            self.ch_a.front_alpha.next = self.acc_a.val();
+        } else {
+            self.ch_r.front.next = bit_cast::<16, 32>(self.new_r.val());
+            self.ch_g.front.next = self.new_g.val();
+            self.ch_b.front.next = self.new_b.val();
+            self.ch_a.front.next = self.new_a.val();
+            self.ch_r.back.next = bit_cast::<16, 32>(self.acc_r.val());
+            self.ch_g.back.next = self.acc_g.val();
+            self.ch_b.back.next = self.acc_b.val();
+            self.ch_a.back.next = self.acc_a.val();
+            self.ch_r.front_alpha.next = self.new_a.val();
+            self.ch_g.front_alpha.next = self.new_a.val();
+            self.ch_b.front_alpha.next = self.new_a.val();
+            self.ch_a.front_alpha.next = self.new_a.val();
+        }
+        // Scalar modes: channel r only.
+        self.reg_g.d.next = 0.into();
+        self.reg_b.d.next = 0.into();
+        self.reg_a.d.next = 0.into();
+        if self.over.val() {
+            self.reg_r.d.next = bit_cast::<32, 16>(self.ch_r.result.val());
+            self.reg_g.d.next = self.ch_g.result.val();
+            self.reg_b.d.next = self.ch_b.result.val();
+            self.reg_a.d.next = self.ch_a.result.val();
+        } else if self.mip.val() {
+            self.reg_r.d.next = self.acc_r.val();
+            if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
+                self.reg_r.d.next = self.new_r.val();
+            }
+        } else if self.minip.val() {
+            self.reg_r.d.next = self.acc_r.val();
+            if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
+                self.reg_r.d.next = self.new_r.val();
+            }
+        } else {
+            self.reg_r.d.next = self.acc_r.val() + self.new_r.val();
+        }
+        self.out_r.next = self.reg_r.q.val();
+        self.out_g.next = self.reg_g.q.val();
+        self.out_b.next = self.reg_b.q.val();
+        self.out_a.next = self.reg_a.q.val();
+    }
+}
