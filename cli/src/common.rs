@@ -54,10 +54,10 @@ pub enum HwArch {
 }
 
 impl HwArch {
-    pub fn arch(self) -> cosim::arch::ArchName {
+    pub fn arch(self) -> cosim::archs::ArchName {
         match self {
-            HwArch::Cube4l => cosim::arch::ArchName::Cube4l,
-            HwArch::Cube3 => cosim::arch::ArchName::Cube3,
+            HwArch::Cube4l => cosim::archs::ArchName::Cube4l,
+            HwArch::Cube3 => cosim::archs::ArchName::Cube3,
         }
     }
 }

@@ -7,7 +7,8 @@ use crate::common::{load, HwArch};
 use crate::output::{self, write_json, write_png};
 use anyhow::{bail, Context, Result};
 use clap::ValueEnum;
-use cosim::arch::{Arch, ForArch};
+use cosim::arch::Arch;
+use cosim::archs::ForArch;
 use serde_json::json;
 use std::path::PathBuf;
 

@@ -4,7 +4,8 @@
 
 use crate::common::{scene_name, HwArch};
 use anyhow::Result;
-use cosim::arch::{Arch, ForArch};
+use cosim::arch::Arch;
+use cosim::archs::ForArch;
 use scene::Scene;
 use std::path::PathBuf;
 

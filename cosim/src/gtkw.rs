@@ -1,8 +1,10 @@
 //! GTKWave save files: a VCD from any engine opens with its signals grouped
 //! by stage, as the architecture groups them ([`crate::arch::Arch::waves`]).
 
-use crate::arch::Wave;
 use std::path::Path;
+
+/// A signal group of a save file: its name and signals.
+pub type Wave = (String, Vec<String>);
 
 /// A GTKWave save file beside `vcd` (its extension `.gtkw`) that opens with
 /// the design's clock and start (under the scope `top`), then `waves`, one

@@ -1,5 +1,7 @@
-//! The one test harness for emitted Verilog, under Icarus or Verilator: a
-//! single stage on per-clock input vectors, or a whole design over a frame.
+//! The simulation engines' harnesses. For rust-hdl, [`run_rust_hdl`] runs an
+//! architecture's own testbench. For emitted Verilog, one harness under
+//! Icarus or Verilator: a single stage on per-clock input vectors, or a
+//! whole design over a frame.
 //!
 //! The design is rust-hdl's `top` module (`generate_verilog`). A generated
 //! testbench (Verilog for Icarus, C++ for Verilator) clocks it as rust-hdl's
@@ -21,10 +23,49 @@
 //! harness reads its run's parameters from files, so one build serves every
 //! run of a design.
 
-use crate::Engine;
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
+
+/// The simulator that runs a design.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Engine {
+    /// rust-hdl's own simulator, on the Rust description.
+    RustHdl,
+    /// Icarus Verilog on the emitted Verilog.
+    Iverilog,
+    /// Verilator on the emitted Verilog, with a generated C++ harness.
+    Verilator,
+}
+
+impl Engine {
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::RustHdl => "rust-hdl",
+            Engine::Iverilog => "iverilog",
+            Engine::Verilator => "verilator",
+        }
+    }
+}
+
+/// Run a rust-hdl simulation for up to `max_time`, traced to `trace` (a
+/// buffered VCD) when given: the rust-hdl engine's harness is the
+/// architecture's own testbench, run here.
+pub fn run_rust_hdl<T: rust_hdl::prelude::Block + Send + 'static>(
+    mut sim: rust_hdl::prelude::Simulation<T>,
+    uut: Box<T>,
+    max_time: u64,
+    trace: Option<&Path>,
+) -> Result<(), String> {
+    match trace {
+        Some(path) => {
+            let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
+            sim.run_traced(uut, max_time, std::io::BufWriter::new(f))
+        }
+        None => sim.run(uut, max_time),
+    }
+    .map_err(|e| format!("simulation: {e:?}"))
+}
 
 /// A port of the `top` module: name and width.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -7,9 +7,7 @@
 //! stage ([`crate::gtkw`]).
 
 use crate::arch::{Arch, BasePixels, ClockTerm};
-use crate::harness::Spec;
-use crate::Engine;
-use rust_hdl::prelude::*;
+use crate::harness::{Engine, Spec};
 use scene::volume::Volume;
 use scene::{Camera, Scene};
 use std::path::Path;
@@ -82,7 +80,7 @@ pub fn simulate_altered<A: Arch>(
             let words = A::modules(part, vol).first().map_or(0, |m| m.len());
             return Err(format!(
                 "{words} voxels per memory module exceed on-chip memory (2^{}); such volumes need the external memory model of --engine verilator",
-                crate::export::ON_CHIP_BITS
+                crate::verilog::ON_CHIP_BITS
             ));
         }
     }
@@ -97,7 +95,7 @@ pub fn simulate_altered<A: Arch>(
         seconds: 0.0,
         sim_seconds: 0.0,
         build_seconds: 0.0,
-        left_out: crate::export::names(&A::left_out(&parts[0])),
+        left_out: crate::verilog::names(&A::left_out(&parts[0])),
     };
     for (i, part) in parts.iter().enumerate() {
         let trace = if i == 0 { trace } else { None };
@@ -174,23 +172,4 @@ pub fn simulate_altered<A: Arch>(
     }
     out.seconds = t.elapsed().as_secs_f64();
     Ok(out)
-}
-
-/// Run a rust-hdl simulation for up to `max_time`, traced to `trace` (a
-/// buffered VCD) when given.
-pub fn run_rust_hdl<T: Block + Send + 'static>(
-    sim: Simulation<T>,
-    uut: Box<T>,
-    max_time: u64,
-    trace: Option<&Path>,
-) -> Result<(), String> {
-    let mut sim = sim;
-    match trace {
-        Some(path) => {
-            let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
-            sim.run_traced(uut, max_time, std::io::BufWriter::new(f))
-        }
-        None => sim.run(uut, max_time),
-    }
-    .map_err(|e| format!("simulation: {e:?}"))
 }

@@ -351,9 +351,9 @@ pub fn verilog_pixels(
 /// The Verilog of `uut`, a Cube-3 pipeline or system built from `c`, as
 /// `cube verilog` emits it: the units `c` leaves out pruned.
 pub fn emitted_verilog(c: &Case, uut: &impl rust_hdl::prelude::Block) -> String {
-    cosim::export::clean_verilog(
+    cosim::verilog::clean_verilog(
         &rust_hdl::prelude::generate_verilog(uut),
-        &cosim::arch::cube3::left_out(&c.config),
+        &cosim::cube3::left_out(&c.config),
     )
     .unwrap()
 }

@@ -276,12 +276,13 @@ pub fn assert_vcd_parses(vcd: &std::path::Path) {
 /// the Verilog engines run, with on-chip memory preloaded. Run an altered
 /// copy through `cosim::sim::simulate_altered`.
 pub struct EmittedSweep {
-    pub part: cosim::arch::cube4l::Part,
+    pub part: cosim::cube4l::Part,
     pub verilog: String,
 }
 
 pub fn emitted_sweep(scene: &Scene, vol: &Volume) -> EmittedSweep {
-    use cosim::arch::{Arch, Cube4l};
+    use cosim::arch::Arch;
+    use cosim::cube4l::Cube4l;
     let cam = scene.camera().unwrap();
     let part = Cube4l::parts(scene, &cam, vol.dims).unwrap().remove(0);
     let modules = Cube4l::modules(&part, vol);

@@ -5,7 +5,7 @@
 //! fault injected into the Verilog caught by both the pixel comparison and
 //! the trace comparison.
 
-use cosim::arch::Cube3;
+use cosim::cube3::Cube3;
 use cosim::sim::Outcome;
 use cosim::vcd_diff::{compare, Trace};
 use cosim::Engine;

@@ -13,10 +13,10 @@
 //! from it, so four-state X values match up. Run with `--nocapture` to print
 //! the campaign table that the README shows.
 
-use cosim::arch::Cube4l;
-use cosim::export::split_modules;
+use cosim::cube4l::Cube4l;
 use cosim::sim::simulate_altered;
 use cosim::vcd_diff::{compare, Trace};
+use cosim::verilog::split_modules;
 use cosim::Engine;
 use scene::volume::builtin;
 use testbenches::{emitted_sweep, require_tool, scene, EmittedSweep};

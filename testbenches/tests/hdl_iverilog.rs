@@ -2,7 +2,7 @@
 //! Verilog: its base planes must equal the golden model's bit for bit, like
 //! the rust-hdl simulation's.
 
-use cosim::arch::Cube4l;
+use cosim::cube4l::Cube4l;
 use cosim::sim::{simulate, simulate_altered};
 use cosim::Engine;
 use scene::volume::builtin;

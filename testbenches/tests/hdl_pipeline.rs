@@ -300,7 +300,7 @@ fn pipeline_wider_voxels_and_channels() {
             q = top / 4
         ));
         let vol = builtin("sphere", s.volume.dims, voxel_bits).unwrap();
-        let r = cosim::sim::simulate::<cosim::arch::Cube4l>(
+        let r = cosim::sim::simulate::<cosim::cube4l::Cube4l>(
             &s,
             &s.camera().unwrap(),
             &vol,

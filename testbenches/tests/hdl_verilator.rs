@@ -3,7 +3,7 @@
 //! rust-hdl simulation's, cycle for cycle on every common signal. A fault
 //! injected into a copy of the Verilog is caught by both comparisons.
 
-use cosim::arch::Cube4l;
+use cosim::cube4l::Cube4l;
 use cosim::sim::{simulate, simulate_altered};
 use cosim::vcd_diff::{compare, Trace};
 use cosim::Engine;

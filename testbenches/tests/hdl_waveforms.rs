@@ -37,7 +37,7 @@ fn pipeline_vcd_parses_and_gtkw_names_its_signals() {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vcd");
     std::fs::create_dir_all(&dir).unwrap();
     let vcd = dir.join("pipeline_p2.vcd");
-    let r = cosim::sim::simulate::<cosim::arch::Cube4l>(
+    let r = cosim::sim::simulate::<cosim::cube4l::Cube4l>(
         &s,
         &s.camera().unwrap(),
         &vol,

@@ -2,7 +2,7 @@
 //! pipeline (the suite's one placed and routed design; the committed
 //! configurations go through `scripts/synth-reports`).
 
-use cosim::arch::Cube4l;
+use cosim::cube4l::Cube4l;
 use cosim::synth::{parse_stat, synthesize, Target};
 use hdl::cube4l::config::frame_clocks;
 use testbenches::scene;

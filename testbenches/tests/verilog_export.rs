@@ -1,8 +1,11 @@
 //! `generated_verilog/` against a fresh `cube verilog` export, and every
 //! committed file through `verilator --lint-only -Wall` and `iverilog`.
 
-use cosim::arch::{Arch, Cube3, Cube4l};
-use cosim::export::{lint_waivers, write_export};
+use cosim::arch::Arch;
+use cosim::cube3::Cube3;
+use cosim::cube4l::Cube4l;
+use cosim::export::write_export;
+use cosim::verilog::lint_waivers;
 use scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -195,7 +198,7 @@ fn committed_verilog_compiles_with_iverilog() {
 }
 
 /// Every module's combinational block writes each output once a pass, so
-/// event-driven simulators settle (`cosim::export::write_once`); the
+/// event-driven simulators settle (`cosim::verilog::write_once`); the
 /// design as rust-hdl emits it does not.
 #[test]
 fn committed_verilog_writes_each_output_once() {
@@ -206,8 +209,8 @@ fn committed_verilog_writes_each_output_once() {
             .map(|f| std::fs::read_to_string(dir.join(f)).unwrap())
             .collect::<Vec<_>>()
             .join("\n");
-        modules += cosim::export::split_modules(&text).len();
-        let twice = cosim::export::outputs_written_twice(&text);
+        modules += cosim::verilog::split_modules(&text).len();
+        let twice = cosim::verilog::outputs_written_twice(&text);
         assert!(twice.is_empty(), "{}: {twice:?}", dir.display());
     }
     assert!(modules > 100, "only {modules} modules read");

@@ -1,64 +1,13 @@
 //! Verilog export, for any architecture ([`crate::arch::Arch`]): each part's
-//! design as rust-hdl emits it, made width-clean (`width_clean.rs`), with
-//! the units the scene does not need pruned (`prune.rs`), each module's
-//! outputs written once per pass (`write_once.rs`), split into one file per
-//! stage with lint waivers (`split.rs`), and a manifest of its parameters
-//! and of the units left out.
+//! design as [`crate::verilog`] writes it, one file per stage with lint
+//! waivers, and a manifest of its parameters and of the units left out,
+//! into a directory written whole or not at all.
 
-use crate::arch::{Arch, Cube3, Cube4l};
+use crate::arch::Arch;
+use crate::archs::LAYOUTS;
+use crate::verilog::{names, write_stage_files};
 use scene::{Camera, Scene};
 use std::path::Path;
-
-mod modules;
-mod prune;
-mod split;
-mod width_clean;
-mod write_once;
-
-pub use modules::{split_modules, Module};
-pub use prune::{names, prune, LeftOut};
-pub use split::{lint_waivers, write_stage_files, Layout};
-pub use width_clean::width_clean;
-pub use write_once::{outputs_written_twice, write_once};
-
-/// rust-hdl's Verilog as the kit writes it: width-clean, without `units`,
-/// and with each module's outputs written once per pass.
-pub fn clean_verilog(emitted: &str, units: &[LeftOut]) -> Result<String, String> {
-    Ok(write_once(&prune(&width_clean(emitted), units)?))
-}
-
-/// Address bits of an on-chip memory module: 2^16 voxels per module.
-pub const ON_CHIP_BITS: usize = 16;
-
-/// Where the voxels live.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Memory {
-    /// p block-RAM modules, each as deep as its share of the volume (up to
-    /// 2^16 voxels), loaded through the load port (or initialised, for
-    /// simulation).
-    OnChip,
-    /// An external RAM on each lane's `ext_addr`/`ext_data` port; the
-    /// on-chip modules are 2-word stubs.
-    External,
-}
-
-impl Memory {
-    /// On chip when every module fits 2^16 voxels.
-    pub fn for_volume(dims: [usize; 3], p: usize) -> Memory {
-        if dims[0].div_ceil(p) * dims[1] * dims[2] <= 1 << ON_CHIP_BITS {
-            Memory::OnChip
-        } else {
-            Memory::External
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Memory::OnChip => "on-chip",
-            Memory::External => "external",
-        }
-    }
-}
 
 /// Whether `out` may be replaced by an export: it does not exist, or it is
 /// a directory holding only what an export of some architecture writes
@@ -66,14 +15,10 @@ impl Memory {
 /// `sweep<i>/` or `base_plane<i>/` of the same). Anything else is a
 /// user's, and is never deleted.
 fn replaceable(out: &Path) -> Result<(), String> {
-    let ours_file = |name: &str| {
-        name == "lint.vlt"
-            || [Cube4l::LAYOUT.files, Cube3::LAYOUT.files]
-                .iter()
-                .any(|f| f.contains(&name))
-    };
+    let ours_file =
+        |name: &str| name == "lint.vlt" || LAYOUTS.iter().any(|(_, l)| l.files.contains(&name));
     let ours_dir = |name: &str| {
-        [Cube4l::PART, Cube3::PART].iter().any(|p| {
+        LAYOUTS.iter().map(|(part, _)| part).any(|p| {
             name.strip_prefix(p)
                 .is_some_and(|i| !i.is_empty() && i.bytes().all(|b| b.is_ascii_digit()))
         })

@@ -2,9 +2,10 @@
 //! [`hdl::cube4l::Pipeline`] of CFB and `P` pipelines, its pixels the base
 //! plane's cells that leave on ER through each lane's pixel port.
 
-use super::{Arch, BasePixels, BufferMemory, ClockTerm, Wave};
-use crate::export::{clean_verilog, Layout, LeftOut, Memory, ON_CHIP_BITS as A};
+use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
+use crate::gtkw::Wave;
 use crate::harness::{Group, Record, Stop};
+use crate::verilog::{clean_verilog, Layout, LeftOut, Memory, ON_CHIP_BITS as A};
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan, Rays, Sweep};
 use golden_model::cube4l::shader::Shader as GoldenShader;
@@ -61,7 +62,7 @@ fn stage_file(name: &str) -> &'static str {
 }
 
 /// The lint waivers every emitted Cube-4L design needs beyond those of
-/// every design (`export::lint_waivers`).
+/// every design (`verilog::lint_waivers`).
 pub const LINT_WAIVERS: &str = r#"// Each CFB lane's dataset z and memory address are observability outputs:
 // the CFB testbench compares them with the golden model's stream, and the
 // waveforms show them; the pipeline itself needs neither.
@@ -207,7 +208,7 @@ impl ForP for RustHdl<'_> {
             }
             sim.done(x)
         });
-        crate::sim::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200), trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200), trace)?;
         let o = out.lock().unwrap();
         Ok(o.clone())
     }

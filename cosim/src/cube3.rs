@@ -4,9 +4,10 @@
 //! `done` port. The volume is loaded into the memory modules in each base
 //! plane's traversal order.
 
-use super::{Arch, BasePixels, BufferMemory, ClockTerm, Wave};
-use crate::export::{clean_verilog, Layout, LeftOut, ON_CHIP_BITS as A};
+use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
+use crate::gtkw::Wave;
 use crate::harness::{Group, Record, Stop};
+use crate::verilog::{clean_verilog, Layout, LeftOut, ON_CHIP_BITS as A};
 use golden_model::cube3::plan::{Neighbourhood, Plan, View};
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
@@ -53,7 +54,7 @@ fn stage_file(name: &str) -> &'static str {
 }
 
 /// The lint waivers every emitted Cube-3 system needs beyond those of
-/// every design (`export::lint_waivers`).
+/// every design (`verilog::lint_waivers`).
 pub const LINT_WAIVERS: &str = r#"// The beam fetch's write addresses and load address are as wide as its
 // largest memory: each module and buffer uses the low bits.
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_address$*"
@@ -230,7 +231,7 @@ impl ForP for RustHdl<'_> {
             sink.lock().unwrap().1 = t;
             sim.done(x)
         });
-        crate::sim::run_rust_hdl(sim, Box::new(uut), 10 * limit + 100, trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * limit + 100, trace)?;
         let o = out.lock().unwrap();
         if o.0.len() as u64 != count {
             return Err(format!(

@@ -1,25 +1,18 @@
 //! One flow for every architecture: what the kit needs to know of an
 //! architecture to export it, simulate it on any engine, check it against
-//! its golden model, trace it and synthesize it. [`Cube4l`] and [`Cube3`]
-//! implement [`Arch`]; the flows ([`crate::export`], [`crate::sim`],
-//! [`crate::gtkw`] and the `cube` subcommands) are written once over it, and
-//! [`ArchName`] picks one at run time. A third architecture is a third
-//! implementation and a variant of [`ArchName`], not a copy of a flow.
+//! its golden model, trace it and synthesize it. [`crate::cube4l::Cube4l`]
+//! and [`crate::cube3::Cube3`] implement [`Arch`]; the flows
+//! ([`crate::export`], [`crate::sim`] and the `cube` subcommands) are
+//! written once over it, and [`crate::archs::ArchName`] picks one at run
+//! time. A third architecture is a third implementation and a variant of
+//! `ArchName`, not a copy of a flow.
 
-pub mod cube3;
-pub mod cube4l;
-
-pub use cube3::Cube3;
-pub use cube4l::Cube4l;
-
-use crate::export::{Layout, LeftOut};
-use crate::harness::{Group, Record, Stop};
+use crate::gtkw::Wave;
+use crate::harness::{Engine, Group, Record, Stop};
+use crate::verilog::{Layout, LeftOut};
 use scene::volume::Volume;
 use scene::{Camera, Image, Scene};
 use std::path::Path;
-
-/// A signal group of a GTKWave save file: its name and signals.
-pub type Wave = (String, Vec<String>);
 
 /// A base plane's pixels as the checker compares them.
 pub trait BasePixels {
@@ -103,11 +96,11 @@ pub trait Arch: 'static {
         }
     }
     /// The clocks above which each engine's run is refused.
-    fn clock_limit(engine: crate::Engine) -> u64 {
+    fn clock_limit(engine: Engine) -> u64 {
         match engine {
-            crate::Engine::RustHdl => 1 << 16,
-            crate::Engine::Iverilog => 1 << 15,
-            crate::Engine::Verilator => 1 << 28,
+            Engine::RustHdl => 1 << 16,
+            Engine::Iverilog => 1 << 15,
+            Engine::Verilator => 1 << 28,
         }
     }
     /// The buffer memory the part's hardware builds (not the voxel memory),
@@ -141,38 +134,5 @@ impl BufferMemory {
     /// Built over needed, to three decimals.
     pub fn ratio(&self) -> f64 {
         (self.bits as f64 / self.minimum_bits.max(1) as f64 * 1000.0).round() / 1000.0
-    }
-}
-
-/// The architectures, by name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ArchName {
-    Cube4l,
-    Cube3,
-}
-
-/// Work for an architecture known only at run time: [`ArchName::with`]
-/// calls `run::<A>`.
-pub trait ForArch {
-    type Output;
-    fn run<A: Arch>(self) -> Self::Output;
-}
-
-impl ArchName {
-    pub const ALL: [ArchName; 2] = [ArchName::Cube4l, ArchName::Cube3];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            ArchName::Cube4l => Cube4l::NAME,
-            ArchName::Cube3 => Cube3::NAME,
-        }
-    }
-
-    /// Run `f` for this architecture.
-    pub fn with<F: ForArch>(self, f: F) -> F::Output {
-        match self {
-            ArchName::Cube4l => f.run::<Cube4l>(),
-            ArchName::Cube3 => f.run::<Cube3>(),
-        }
     }
 }
