@@ -62,6 +62,18 @@ impl HwArch {
     }
 }
 
+/// Clocks per frame of an architecture's RTL on `scene`, as its schedule
+/// predicts them (`cosim::arch::Arch::expected_clocks`); none where the RTL
+/// does not build the scene.
+pub fn rtl_clocks<A: cosim::arch::Arch>(
+    scene: &Scene,
+    camera: &scene::Camera,
+    dims: [usize; 3],
+) -> Option<u64> {
+    let parts = A::parts(scene, camera, dims).ok()?;
+    Some(parts.iter().map(A::expected_clocks).sum())
+}
+
 pub fn check_step(step: f64) -> Result<()> {
     if !(0.01..=4.0).contains(&step) {
         bail!("--ref-step {step} must lie in [0.01, 4]");
@@ -126,22 +138,9 @@ pub fn render_arch(
             let (image, frame) = golden_model::cube4l::render_image(scene, vol)?;
             let seconds = t.elapsed().as_secs_f64();
             let s = frame.stats;
-            // The RTL's schedule: one voxel per pipeline per clock over each
-            // sweep's slices, one slice more when the gradient unit is
-            // built, and the pipeline's fill (what `cube sim` counts).
+            // The RTL's schedule: what `cube sim` counts.
             let camera = scene.camera()?;
-            let p = scene.hardware.pipelines;
-            let clocks: usize = frame
-                .plan
-                .sweeps
-                .iter()
-                .map(|w| {
-                    let grad =
-                        golden_model::cube4l::shader::Shader::new(scene, &camera, w).needs_gradient;
-                    (w.z1 - w.z0 + 1 + grad as usize) * w.dims[1] * w.dims[0].div_ceil(p)
-                        + hdl::cube4l::config::fill_clocks(grad) as usize
-                })
-                .sum();
+            let clocks = rtl_clocks::<cosim::cube4l::Cube4l>(scene, &camera, vol.dims);
             Ok(Rendered {
                 image,
                 seconds,

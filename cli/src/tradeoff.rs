@@ -375,7 +375,12 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
             args.repeat,
         )
         .with_context(|| format!("{} {label}", f.name))?;
-        let clocks = f.hardware.then(|| clocks_of(f.arch, &s, &r.extra));
+        let clocks = match f.hardware {
+            true => Some(
+                clocks_of(f.arch, &s, &r.extra).with_context(|| format!("{} {label}", f.name))?,
+            ),
+            false => None,
+        };
         // Per frame: the quantized path's per-volume preprocessing is paid
         // once per volume, not per frame (it is in the row on its own).
         let cost = match clocks {
@@ -518,11 +523,13 @@ fn merge(a: &mut Value, b: &Value) {
 /// when the gradient unit is built, and the pipeline's fill per sweep (the
 /// count `cube sim` measures). Cube-3 has no RTL yet: its samples over its
 /// `p` units, one sample per unit per clock, with no overhead.
-fn clocks_of(arch: Arch, scene: &Scene, extra: &Value) -> u64 {
+fn clocks_of(arch: Arch, scene: &Scene, extra: &Value) -> Result<u64> {
     let p = scene.hardware.pipelines as u64;
     match arch {
-        Arch::Cube4l => extra["clocks"].as_u64().unwrap_or(0),
-        _ => extra["samples"].as_u64().unwrap_or(0).div_ceil(p),
+        Arch::Cube4l => extra["clocks"]
+            .as_u64()
+            .context("the Cube-4L RTL does not build this scene: no clocks to cost it by"),
+        _ => Ok(extra["samples"].as_u64().unwrap_or(0).div_ceil(p)),
     }
 }
 
