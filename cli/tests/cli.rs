@@ -104,14 +104,29 @@ fn default_run_writes_renders() {
     let o = cube(&[], d.path());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("rel. Euclidean"), "{text}");
-    for f in [
-        "default_cube4l.png",
-        "default_reference.png",
-        "default_diff.png",
+    // One line per method, and the yardstick named.
+    for s in [
+        "float reference",
+        "Cube-4L golden model",
+        "Cube-3 golden model",
+        "rel. Euclidean",
+        "the yardstick is the float reference",
     ] {
-        assert!(d.path().join("out").join(f).exists(), "{f}");
+        assert!(text.contains(s), "'{s}' not in: {text}");
     }
+    let out = d.path().join("out");
+    for f in [
+        "default_reference.png",
+        "default_cube4l.png",
+        "default_cube3.png",
+    ] {
+        let (w, h) = image::image_dimensions(out.join(f)).unwrap();
+        assert_eq!((w, h), (256, 256), "{f}");
+    }
+    // The overview: three 256² renders side by side (with margins and
+    // gaps of 20), over two rows with their labels and a colour bar.
+    let (w, h) = image::image_dimensions(out.join("default.png")).unwrap();
+    assert_eq!((w, h), (848, 804));
 }
 
 fn assert_clean_error(o: &Output, needle: &str) {

@@ -3,6 +3,7 @@
 
 use crate::error::{CubeError, Result};
 use glam::DVec3;
+use rayon::prelude::*;
 use serde::Deserialize;
 use std::path::PathBuf;
 
@@ -67,6 +68,7 @@ pub struct Volume {
 pub const BUILTINS: &[(&str, &str)] = &[
     ("sphere", "volume-sampled (anti-aliased) solid sphere, radius 0.4 of the smallest side, analytic normals known"),
     ("phantom", "head-like phantom: skull shell, brain, ventricles and a dense lesion"),
+    ("head", "anatomical head facing +z, top at +y: skin, skull with orbits, nasal aperture, cheekbones, jaw and teeth, brain and ventricles, neck and spine; every boundary a straight ramp about 4 voxels wide, so it renders without terraces"),
     ("checkerboard", "alternating empty and full-scale cubes, 8 per side"),
     ("ramp", "intensity rising linearly along x from 0 to full scale"),
     ("impulse", "one full-scale voxel at the centre, the rest empty"),
@@ -219,17 +221,23 @@ pub fn sphere_geometry(dims: [usize; 3]) -> (DVec3, f64) {
     (c, 0.4 * *dims.iter().min().unwrap() as f64)
 }
 
-fn fill(dims: [usize; 3], bits: u32, f: impl Fn(DVec3) -> f64) -> Volume {
+/// Sample `f` (full scale 1) at every voxel. Large volumes are filled by
+/// slabs of slices on every core; each voxel's value depends on its position
+/// alone, so the result does not depend on the number of threads.
+fn fill(dims: [usize; 3], bits: u32, f: impl Fn(DVec3) -> f64 + Sync) -> Volume {
     let vmax = max_value(bits) as f64;
-    let mut data = Vec::with_capacity(dims.iter().product());
-    for w in 0..dims[2] {
-        for v in 0..dims[1] {
-            for u in 0..dims[0] {
-                let x = f(DVec3::new(u as f64, v as f64, w as f64));
-                data.push((x.clamp(0.0, 1.0) * vmax).round() as u16);
-            }
+    let slice = dims[0] * dims[1];
+    let mut data = vec![0u16; slice * dims[2]];
+    let fill_slices = |w0: usize, out: &mut [u16]| {
+        for (k, px) in out.iter_mut().enumerate() {
+            let (u, v, w) = (k % dims[0], (k / dims[0]) % dims[1], w0 + k / slice);
+            let x = f(DVec3::new(u as f64, v as f64, w as f64));
+            *px = (x.clamp(0.0, 1.0) * vmax).round() as u16;
         }
-    }
+    };
+    data.par_chunks_mut(slice)
+        .enumerate()
+        .for_each(|(w, out)| fill_slices(w, out));
     Volume { dims, bits, data }
 }
 
@@ -243,6 +251,318 @@ fn ellipsoid(p: DVec3, c: DVec3, r: DVec3) -> f64 {
     // Approximate signed distance, in voxels, scaled by the smallest radius.
     let q = (p - c) / r;
     (q.length() - 1.0) * r.min_element()
+}
+
+/// Signed-distance primitives and blends for the built-in head, in the
+/// head's own units (1 = half the volume's smallest side). The distances are
+/// the usual cheap approximations: exact enough to place a smooth ramp.
+mod sdf {
+    use glam::{DVec2, DVec3};
+
+    /// Ellipsoid of centre `c` and radii `r` (first-order distance estimate).
+    pub fn ellipsoid(p: DVec3, c: DVec3, r: DVec3) -> f64 {
+        let q = p - c;
+        let k1 = (q / (r * r)).length();
+        if k1 == 0.0 {
+            return -r.min_element();
+        }
+        let k0 = (q / r).length();
+        k0 * (k0 - 1.0) / k1
+    }
+
+    /// Signed distance (first order) to the parabola `z = front - k x²` in
+    /// the plane `q = (x, z)`: positive in front of it.
+    pub fn parabola(q: DVec2, front: f64, k: f64) -> f64 {
+        (q.y - front + k * q.x * q.x) / (1.0 + 4.0 * k * k * q.x * q.x).sqrt()
+    }
+
+    /// Segment `a`–`b` swept by a sphere whose radius runs from `ra` to `rb`.
+    pub fn cone(p: DVec3, a: DVec3, b: DVec3, ra: f64, rb: f64) -> f64 {
+        let (pa, ba) = (p - a, b - a);
+        let h = (pa.dot(ba) / ba.dot(ba)).clamp(0.0, 1.0);
+        (pa - ba * h).length() - (ra + (rb - ra) * h)
+    }
+
+    /// Rectangle of half sizes `h` about the origin (2-D signed distance).
+    pub fn rect(q: DVec2, h: DVec2) -> f64 {
+        let e = q.abs() - h;
+        e.max(DVec2::ZERO).length() + e.max_element().min(0.0)
+    }
+
+    /// Smooth union over a blend width `k`.
+    pub fn smin(a: f64, b: f64, k: f64) -> f64 {
+        let h = (k - (a - b).abs()).max(0.0) / k;
+        a.min(b) - h * h * k * 0.25
+    }
+
+    /// Smooth intersection over a blend width `k`.
+    pub fn smax(a: f64, b: f64, k: f64) -> f64 {
+        -smin(-a, -b, k)
+    }
+}
+
+/// Tissue values of the built-in head, as fractions of full scale: soft
+/// tissue (skin, muscle, eyes), cerebrospinal fluid, brain, bone and teeth.
+pub const HEAD_SOFT: f64 = 0.32;
+pub const HEAD_CSF: f64 = 0.12;
+pub const HEAD_BRAIN: f64 = 0.44;
+pub const HEAD_BONE: f64 = 0.88;
+pub const HEAD_TEETH: f64 = 1.0;
+
+/// The built-in head at point `q`, as a fraction of full scale. Head units:
+/// the volume's centre at 0 and 1 = half its smallest side; x to the head's
+/// left, y up, z out of the face. Every tissue is a solid given by an
+/// (approximate) signed distance `d`, laid over the tissues before it with
+/// weight `clamp(1/2 - d/w, 0, 1)`: a linear ramp `w` wide centred on the
+/// surface, which tri-linear interpolation reproduces exactly where the
+/// surface is flat. Layers are about `w` thick or more where they meet, so
+/// that each surface's ramp stays straight for a voxel or two either side.
+fn head_value(q: DVec3, w: f64) -> f64 {
+    use sdf::{cone, ellipsoid, parabola, rect, smax, smin};
+    let v3 = DVec3::new;
+    let v2 = glam::DVec2::new;
+    let cover = |d: f64| (0.5 - d / w).clamp(0.0, 1.0);
+    let h = 0.5 * w;
+    // Paired features are modelled on the +x side and mirrored.
+    let m = v3(q.x.abs(), q.y, q.z);
+    // Whether `p` lies within the box `lo..hi` grown by `reach` and the
+    // ramp. Each part is evaluated only near the box that holds it, grown
+    // by how far the part can reach (padding and blends): elsewhere it
+    // changes nothing, and is skipped.
+    let near = |p: DVec3, lo: DVec3, hi: DVec3, reach: f64| {
+        p.cmpge(lo - (h + reach)).all() && p.cmple(hi + (h + reach)).all()
+    };
+    if !near(q, v3(-0.70, -0.88, -0.96), v3(0.70, 0.96, 0.96), 0.0) {
+        return 0.0;
+    }
+    let far = f64::INFINITY;
+
+    // The skull's outer surface (before its openings): the vault, the
+    // mid-face narrowing to the upper teeth, brow ridges, cheekbones with
+    // their arches, the nasal bones and the ridge that holds the upper teeth.
+    let vault_c = v3(0.0, 0.22, -0.10);
+    let vault_r = v3(0.56, 0.60, 0.74);
+    let vault = ellipsoid(q, vault_c, vault_r);
+    // The dental arch: a parabola in the horizontal plane (positive in
+    // front of it), and its distance.
+    let arch = parabola(v2(q.x, q.z), 0.60, 6.0);
+    let face = if near(m, v3(0.0, -0.42, -0.12), v3(0.56, 0.23, 0.70), 0.36) {
+        let mid = ellipsoid(
+            v3(q.x * (1.0 + 0.8 * (-0.1 - q.y).max(0.0)), q.y, q.z),
+            v3(0.0, -0.16, 0.26),
+            v3(0.40, 0.26, 0.38),
+        );
+        let brow = cone(m, v3(0.36, 0.17, 0.49), v3(0.06, 0.19, 0.61), 0.04, 0.04);
+        let cheek = smin(
+            ellipsoid(m, v3(0.38, -0.06, 0.36), v3(0.10, 0.08, 0.10)),
+            cone(
+                m,
+                v3(0.44, -0.06, 0.28),
+                v3(0.52, -0.04, -0.08),
+                0.035,
+                0.03,
+            ),
+            0.06,
+        );
+        let nasal = cone(q, v3(0.0, 0.11, 0.63), v3(0.0, -0.02, 0.66), 0.025, 0.025);
+        let ridge = smax(
+            rect(v2(arch + 0.02, q.y + 0.33), v2(0.05, 0.07)),
+            0.0 - q.z,
+            0.06,
+        );
+        [mid, brow, cheek, ridge]
+            .into_iter()
+            .reduce(|a, b| smin(a, b, 0.08))
+            .unwrap()
+            .min(smin(mid, nasal, 0.04))
+    } else {
+        far
+    };
+    // The mandible: a U-shaped bar under the lower teeth whose lower border
+    // falls from the angles to the chin, the rami up to the joints in front
+    // of the ears, and the chin.
+    let mandible = if near(m, v3(0.0, -0.78, -0.17), v3(0.48, -0.05, 0.70), 0.36) {
+        let jaw = parabola(v2(q.x, q.z), 0.62, 5.2);
+        let along = ((q.z + 0.02) / 0.64).clamp(0.0, 1.0);
+        let body = smax(
+            rect(
+                v2(jaw + 0.035, q.y + 0.57 + 0.07 * along),
+                v2(0.035, 0.07 + 0.05 * along),
+            ),
+            -0.06 - q.z,
+            0.06,
+        );
+        let ramus = smin(
+            cone(
+                m,
+                v3(0.35, -0.60, -0.03),
+                v3(0.43, -0.10, -0.12),
+                0.055,
+                0.045,
+            ),
+            cone(
+                m,
+                v3(0.34, -0.50, 0.08),
+                v3(0.39, -0.16, 0.10),
+                0.035,
+                0.025,
+            ),
+            0.10,
+        );
+        let chin = ellipsoid(q, v3(0.0, -0.70, 0.58), v3(0.10, 0.06, 0.05));
+        smin(smin(body, ramus, 0.10), chin, 0.06)
+    } else {
+        far
+    };
+
+    // Skin: scalp over the vault, thinner soft tissue over the face and
+    // jaw, the cheeks, nose, lips, ears, eyelids and the neck; the eyes set
+    // back under the brows.
+    let eye_c = v3(0.25, 0.03, 0.50);
+    let eye = (m - eye_c).length() - 0.11;
+    let mut skin = smin(
+        vault - 0.09,
+        smin(
+            smin(face, mandible, 0.14),
+            ellipsoid(m, v3(0.28, -0.26, 0.40), v3(0.17, 0.16, 0.15)),
+            0.14,
+        ) - 0.06,
+        0.16,
+    );
+    if near(m, v3(0.0, -0.52, 0.39), v3(0.39, 0.13, 0.93), 0.15) {
+        let nose = smin(
+            cone(q, v3(0.0, 0.10, 0.70), v3(0.0, -0.22, 0.86), 0.03, 0.065),
+            ellipsoid(m, v3(0.06, -0.24, 0.78), v3(0.05, 0.04, 0.045)),
+            0.05,
+        );
+        // The lips follow the dental arch.
+        let bent = v3(q.x, q.y, q.z + 2.5 * q.x * q.x);
+        let lips = smin(
+            ellipsoid(bent, v3(0.0, -0.39, 0.69), v3(0.13, 0.04, 0.05)),
+            ellipsoid(bent, v3(0.0, -0.48, 0.67), v3(0.11, 0.04, 0.05)),
+            0.03,
+        );
+        skin = smin(smin(skin, nose, 0.08), lips, 0.06);
+        let socket = ellipsoid(m, eye_c + v3(0.0, 0.0, 0.17), v3(0.14, 0.10, 0.07));
+        skin = smax(skin, -socket, 0.06).min(eye - 0.015);
+    }
+    if near(m, v3(0.56, -0.21, -0.24), v3(0.66, 0.09, -0.04), 0.10) {
+        let ear = ellipsoid(m, v3(0.61, -0.06, -0.14), v3(0.05, 0.15, 0.10));
+        skin = smin(skin, ear, 0.06);
+    }
+    if q.y < 0.1 {
+        // Cut flat, as a bust, a little above the volume's bottom.
+        let neck = smax(
+            cone(q, v3(0.0, -0.35, -0.12), v3(0.0, -1.3, -0.16), 0.27, 0.29),
+            -0.86 - q.y,
+            0.06,
+        );
+        skin = smin(skin, neck, 0.12);
+    }
+    let mut v = HEAD_SOFT * cover(skin);
+    if v == 0.0 {
+        return 0.0;
+    }
+
+    // The cranial cavity (the vault's inside above the skull base), filled
+    // with fluid; the brain inside it, with its lateral and third
+    // ventricles. The orbits and their walls keep out of it; each orbit is
+    // a cone narrowing backwards and inwards, wider than tall.
+    let orbit = cone(
+        v3(m.x, eye_c.y + (m.y - eye_c.y) * 1.12, m.z),
+        eye_c + v3(0.0, 0.0, 0.12),
+        v3(0.14, 0.0, 0.14),
+        0.145,
+        0.03,
+    );
+    let orbit_wall = orbit - 0.05;
+    let floor_y = {
+        let t = ((q.z + 0.25) / 0.5).clamp(0.0, 1.0);
+        -0.30 + 0.44 * t * t * (3.0 - 2.0 * t)
+    };
+    let vault_in = ellipsoid(q, vault_c, vault_r - 0.09);
+    let cavity = smax(smax(vault_in, floor_y - q.y, 0.08), -orbit_wall, 0.04);
+    if cavity < h {
+        v += (HEAD_CSF - v) * cover(cavity);
+        let brain = smin(
+            ellipsoid(q, vault_c, vault_r - 0.115),
+            ellipsoid(m, v3(0.15, -0.14, -0.46), v3(0.17, 0.12, 0.17)),
+            0.10,
+        );
+        v += (HEAD_BRAIN - v) * cover(smax(brain, cavity + 0.025, 0.04));
+        if near(m, v3(0.0, 0.06, -0.38), v3(0.13, 0.31, 0.22), 0.05) {
+            let bend = (q.z + 0.1) * (q.z + 0.1);
+            let ventricle = smin(
+                ellipsoid(
+                    m,
+                    v3(0.07 + 0.12 * bend, 0.24 - 0.3 * bend, -0.08),
+                    v3(0.045, 0.07, 0.30),
+                ),
+                ellipsoid(q, v3(0.0, 0.12, -0.06), v3(0.02, 0.06, 0.10)),
+                0.04,
+            );
+            v += (HEAD_CSF - v) * cover(ventricle);
+        }
+    }
+
+    // Bone: the vault's shell down to the skull base, the base as a plate,
+    // the face and the orbits' walls (soft tissue below the base), the jaw
+    // and the cervical spine; then the openings: the orbits and the nasal
+    // aperture with the nasal cavity behind it.
+    let base = smax((q.y - floor_y + 0.04).abs() - 0.045, vault, 0.03);
+    let shell = smax(smax(vault, -vault_in, 0.03), floor_y - 0.08 - q.y, 0.05);
+    let walls = smax(orbit_wall, smin(vault, face, 0.1), 0.03);
+    let mut bone = smax(smin(shell.min(base), face, 0.10).min(walls), -cavity, 0.03);
+    bone = smin(bone, mandible, 0.03);
+    if near(q, v3(-0.10, -0.85, -0.41), v3(0.10, -0.37, -0.09), 0.05) {
+        for k in 0..4 {
+            let y = -0.42 - 0.12 * k as f64;
+            let vertebra = smin(
+                ellipsoid(q, v3(0.0, y, -0.18), v3(0.10, 0.042, 0.085)),
+                cone(q, v3(0.0, y, -0.24), v3(0.0, y - 0.03, -0.38), 0.035, 0.025),
+                0.04,
+            );
+            bone = bone.min(vertebra);
+        }
+    }
+    let mut nasal_cavity = far;
+    if near(m, v3(0.0, -0.32, 0.0), v3(0.40, 0.16, 0.77), 0.05) {
+        nasal_cavity = ellipsoid(q, v3(0.0, -0.12, 0.38), v3(0.07, 0.13, 0.26));
+        let aperture = ellipsoid(q, v3(0.0, -0.18, 0.62), v3(0.085, 0.125, 0.14));
+        bone = smax(smax(bone, -orbit, 0.03), -aperture.min(nasal_cavity), 0.03);
+    }
+    v += (HEAD_BONE - v) * cover(bone);
+    // Air in the nasal cavity, closed off by the skin.
+    v -= v * cover(nasal_cavity.max(skin + 0.06));
+
+    // Teeth: an upper and a lower row along the dental arch.
+    if near(m, v3(0.0, -0.54, 0.08), v3(0.33, -0.38, 0.64), 0.05) {
+        let teeth = smax(
+            rect(v2(arch, q.y + 0.42), v2(0.03, 0.04))
+                .min(rect(v2(arch, q.y + 0.50), v2(0.03, 0.035))),
+            0.08 - q.z,
+            0.04,
+        );
+        v += (HEAD_TEETH - v) * cover(teeth);
+    }
+    v
+}
+
+/// The built-in head of `dims`: centred, scaled to the smallest side (it
+/// keeps its proportions in a box of any shape), every boundary ramped over
+/// 0.04 of the smallest side, at least 1 voxel and at most 4 (reached at
+/// 100 voxels a side).
+fn head(dims: [usize; 3], bits: u32) -> Volume {
+    let n = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64);
+    let c = (n - 1.0) / 2.0;
+    // Voxels per head unit; the head spans about ±0.92 units.
+    let s = 0.5 * n.min_element();
+    // The ramp, in head units: 4 voxels, wide enough that tri-linear
+    // samples and central-difference gradients within 2 voxels of a surface
+    // lie on the straight ramp (no terraces); narrower in small volumes, so
+    // that the features survive.
+    let ramp = (0.08 * s).clamp(1.0, 4.0) / s;
+    fill(dims, bits, |p| head_value((p - c) / s, ramp))
 }
 
 pub fn builtin(name: &str, dims: [usize; 3], bits: u32) -> Result<Volume> {
@@ -276,6 +596,7 @@ pub fn builtin(name: &str, dims: [usize; 3], bits: u32) -> Result<Volume> {
                 0.95 * skull + 0.3 * tissue - 0.2 * (vl + vr) + 0.45 * lesion
             })
         }
+        "head" => head(dims, bits),
         "checkerboard" => {
             let cell = (dims.iter().min().unwrap() / 8).max(1);
             fill(dims, bits, |p| {
@@ -343,6 +664,101 @@ mod tests {
                 r.get(4, 2, 1)
             ]
         );
+    }
+
+    #[test]
+    fn large_volumes_fill_every_voxel_in_place() {
+        // Over 2^16 voxels, so filled by slabs on several threads.
+        let dims = [70, 48, 41];
+        let c = builtin("checkerboard", dims, 8).unwrap();
+        let cell = 41 / 8;
+        for w in 0..dims[2] {
+            for v in 0..dims[1] {
+                for u in 0..dims[0] {
+                    let want = if (u / cell + v / cell + w / cell) % 2 == 1 {
+                        255
+                    } else {
+                        0
+                    };
+                    assert_eq!(c.get(u, v, w), want, "({u}, {v}, {w})");
+                }
+            }
+        }
+        let i = builtin("impulse", dims, 8).unwrap();
+        assert_eq!(i.data.iter().filter(|&&v| v == 255).count(), 1);
+        assert_eq!(i.get(35, 24, 20), 255);
+    }
+
+    /// The head at a head-unit point `q` of a `n`³ volume (nearest voxel).
+    fn head_at(h: &Volume, q: [f64; 3]) -> f64 {
+        let n = h.dims[0] as f64;
+        let p = q.map(|x| ((n - 1.0) / 2.0 + x * n / 2.0).round() as usize);
+        h.get(p[0], p[1], p[2]) as f64 / h.max_value() as f64
+    }
+
+    #[test]
+    fn head_works_at_any_size_and_is_deterministic() {
+        for dims in [[2, 2, 2], [8, 8, 8], [3, 17, 5], [40, 24, 33]] {
+            for bits in [8, 12, 16] {
+                let a = builtin("head", dims, bits).unwrap();
+                assert_eq!(a.data.len(), dims.iter().product::<usize>());
+                assert!(a.data.iter().all(|&v| v as u32 <= max_value(bits)));
+                assert_eq!(a.data, builtin("head", dims, bits).unwrap().data);
+            }
+        }
+        // Something of the head shows even at 8³.
+        assert!(builtin("head", [8, 8, 8], 8)
+            .unwrap()
+            .data
+            .iter()
+            .any(|&v| v > 0));
+    }
+
+    #[test]
+    fn head_has_its_tissues_in_place_and_is_symmetric() {
+        let n = 96;
+        let h = builtin("head", [n, n, n], 8).unwrap();
+        let near = |v: f64, want: f64| (v - want).abs() <= 1.5 / 255.0;
+        assert_eq!(head_at(&h, [0.95, 0.95, 0.95]), 0.0, "corner: air");
+        assert!(near(head_at(&h, [0.0, 0.3, -0.3]), HEAD_BRAIN), "brain");
+        // The skull is thin: its core reaches most of the bone value.
+        assert!(head_at(&h, [0.0, 0.78, -0.10]) > 0.8, "skull top");
+        assert!(near(head_at(&h, [0.25, 0.03, 0.50]), HEAD_SOFT), "eye");
+        assert_eq!(head_at(&h, [0.0, -0.12, 0.38]), 0.0, "nasal cavity");
+        assert!(head_at(&h, [0.0, -0.42, 0.60]) > 0.85, "front teeth");
+        assert!(
+            near(head_at(&h, [0.07, 0.24, -0.08]), HEAD_CSF),
+            "ventricle"
+        );
+        // Mirror-symmetric about the mid-sagittal plane.
+        for w in 0..n {
+            for v in 0..n {
+                for u in 0..n / 2 {
+                    assert_eq!(h.get(u, v, w), h.get(n - 1 - u, v, w));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn head_boundaries_are_ramps_not_steps() {
+        // At 96³ every boundary rises over about 4 voxels: no neighbouring
+        // voxels differ by more than 100/255 along any axis (a one-voxel
+        // edge from air to bone would be 224).
+        let n = 96;
+        let h = builtin("head", [n, n, n], 8).unwrap();
+        let mut steepest = 0;
+        for w in 1..n {
+            for v in 1..n {
+                for u in 1..n {
+                    let x = h.get(u, v, w) as i32;
+                    for y in [h.get(u - 1, v, w), h.get(u, v - 1, w), h.get(u, v, w - 1)] {
+                        steepest = steepest.max((x - y as i32).abs());
+                    }
+                }
+            }
+        }
+        assert!(steepest <= 100, "steepest step {steepest}");
     }
 
     #[test]
