@@ -10,6 +10,7 @@
 use crate::gtkw::Wave;
 use crate::harness::{Engine, Group, Record, Stop};
 use crate::verilog::{Layout, LeftOut};
+use golden_model::host::Write;
 use scene::volume::Volume;
 use scene::{Camera, Image, Scene};
 use std::path::Path;
@@ -63,16 +64,23 @@ pub trait Arch: 'static {
     /// The memory modules' contents for the part, module by module.
     fn modules(part: &Self::Part, vol: &Volume) -> Vec<Vec<u16>>;
     /// The part's Verilog as the kit exports it; `preload` initialises
-    /// on-chip memory (simulation only: hardware loads it through the load
-    /// port).
+    /// on-chip voxel memory (simulation only: hardware loads it through the
+    /// load port). The tables start empty: the host writes them.
     fn verilog(part: &Self::Part, preload: Option<&[Vec<u16>]>) -> Result<String, String>;
+    /// What the host writes through the host port before the part starts:
+    /// its tables, then its registers (`golden_model::host`). Every engine
+    /// gets the same writes, so traces line up cycle for cycle.
+    fn loads(part: &Self::Part) -> Vec<Write>;
     /// The pixel bus: what a frame's run logs, and the pulses that end it.
     fn bus(part: &Self::Part) -> (Stop, Vec<Group>);
-    /// Run the part in rust-hdl's simulator, logging [`Arch::bus`] as the
-    /// Verilog harness does; the records and the clock count.
+    /// Run the part in rust-hdl's simulator (memory preloaded, then the
+    /// host's `loads` one a clock, then `start`), logging
+    /// [`Arch::bus`] as the Verilog harness does; the records and the clock
+    /// count from `start`.
     fn rust_hdl(
         part: &Self::Part,
         modules: &[Vec<u16>],
+        loads: &[Write],
         trace: Option<&Path>,
     ) -> Result<(Vec<Record>, u64), String>;
     /// The base plane of the logged pixels, or why the golden model could

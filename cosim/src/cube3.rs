@@ -11,6 +11,7 @@ use crate::verilog::{clean_verilog, Layout, LeftOut, ON_CHIP_BITS as A};
 use golden_model::cube3::plan::{Neighbourhood, Plan, View};
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
+use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
@@ -113,16 +114,16 @@ pub fn left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
                 name: "leaf_stage (composite and first-opaque take the shaders; disabled by constants, for synthesis to remove)",
                 instances: &[],
             });
-            if s.reflectance.is_none() {
+            if s.lighting.is_none() {
                 v.push(LeftOut {
-                    name: "reflectance_map",
-                    instances: &["reflectance"],
+                    name: "lighting (the normal's dot products, their tables and registers)",
+                    instances: &["lighting", "normal"],
                 });
             }
             if s.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
                 v.push(LeftOut {
-                    name: "gradient_opacity_lut_and_magnitude",
-                    instances: &["alpha_gm", "sqrt"],
+                    name: "gradient_opacity (the magnitude bin and its table)",
+                    instances: &["alpha_gm", "gm_bin"],
                 });
             }
         }
@@ -185,16 +186,18 @@ pub fn config(
 }
 
 /// Simulate the system for `P` units in rust-hdl.
-struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], Option<&'a Path>);
+struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], &'a [Write], Option<&'a Path>);
 
 impl ForP for RustHdl<'_> {
     type Output = Result<(Vec<Record>, u64), String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let RustHdl(part, modules, trace) = self;
+        let RustHdl(part, modules, loads, trace) = self;
         let c = &part.config;
         let mut uut = Cube3System::<P, A, B, H>::new(c)?;
         uut.preload(modules);
         uut.connect_all();
+        let loads = loads.to_vec();
+        let n_loads = loads.len() as u64;
         let (Stop::Pulses { count, limit, .. }, _) = Cube3::bus(part) else {
             unreachable!("a frame stops on its last pixel")
         };
@@ -206,6 +209,16 @@ impl ForP for RustHdl<'_> {
         });
         sim.add_testbench(move |mut sim: Sim<Cube3System<P, A, B, H>>| {
             let mut x = sim.init()?;
+            for w in &loads {
+                x.host_write.next = true;
+                x.host_address.next = (w.address as u64).to_bits();
+                x.host_data.next = w.data.to_bits();
+                wait_clock_cycle!(sim, clock, x);
+            }
+            // As the Verilog harness: every host input low after the loads.
+            x.host_write.next = false;
+            x.host_address.next = 0.into();
+            x.host_data.next = 0.into();
             let mut seen = 0;
             let mut t = 0;
             while seen < count && t < limit {
@@ -231,7 +244,7 @@ impl ForP for RustHdl<'_> {
             sink.lock().unwrap().1 = t;
             sim.done(x)
         });
-        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * limit + 100, trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (limit + n_loads) + 100, trace)?;
         let o = out.lock().unwrap();
         if o.0.len() as u64 != count {
             return Err(format!(
@@ -314,12 +327,21 @@ impl Arch for Cube3 {
         (stop, groups)
     }
 
+    fn loads(part: &Part) -> Vec<Write> {
+        let Some(s) = &part.config.pipeline.shading else {
+            return vec![];
+        };
+        let t = s.tables();
+        [t.table_writes(), t.register_writes()].concat()
+    }
+
     fn rust_hdl(
         part: &Part,
         modules: &[Vec<u16>],
+        loads: &[Write],
         trace: Option<&Path>,
     ) -> Result<(Vec<Record>, u64), String> {
-        with_p(part.config.pipeline.p, RustHdl(part, modules, trace))?
+        with_p(part.config.pipeline.p, RustHdl(part, modules, loads, trace))?
     }
 
     fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {

@@ -10,6 +10,7 @@ use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan, Rays, Sweep};
 use golden_model::cube4l::shader::Shader as GoldenShader;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
+use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::cube4l::config::unpack;
 use hdl::cube4l::{Pipeline, PipelineConfig};
@@ -103,22 +104,22 @@ pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> 
             instances: &["abc", "late"],
         });
     }
-    if golden.reflectance.is_none() {
+    if golden.lighting.is_none() {
         v.push(LeftOut {
-            name: "reflectance_map",
-            instances: &["reflectance"],
+            name: "lighting (the normal's dot products, their tables and registers)",
+            instances: &["lighting", "normal"],
         });
     }
     if golden.colour.is_none() && golden.opacity.is_none() {
         v.push(LeftOut {
-            name: "colour_and_opacity_lut",
+            name: "classification_table",
             instances: &["lut"],
         });
     }
     if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
         v.push(LeftOut {
-            name: "gradient_opacity_lut_and_magnitude",
-            instances: &["alpha_gm", "sqrt"],
+            name: "gradient_opacity (the magnitude bin and its table)",
+            instances: &["alpha_gm", "gm_bin"],
         });
     }
     if !golden.mode.uses_colour() {
@@ -159,7 +160,7 @@ impl ForP for Emit<'_> {
 }
 
 /// Simulate the sweep's pipeline for `P` lanes in rust-hdl.
-struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], Option<&'a Path>);
+struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], &'a [Write], Option<&'a Path>);
 
 /// What the rust-hdl testbench collects: the records and the clock count.
 type Collected = std::sync::Arc<std::sync::Mutex<(Vec<Record>, u64)>>;
@@ -167,10 +168,12 @@ type Collected = std::sync::Arc<std::sync::Mutex<(Vec<Record>, u64)>>;
 impl ForP for RustHdl<'_> {
     type Output = Result<(Vec<Record>, u64), String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let RustHdl(part, modules, trace) = self;
+        let RustHdl(part, modules, loads, trace) = self;
         let mut uut = Pipeline::<P, A, H>::new(&part.config, &part.golden)?;
         uut.preload(modules);
         uut.connect_all();
+        let loads = loads.to_vec();
+        let n_loads = loads.len() as u64;
         let beats = part.beats();
         let out: Collected = Default::default();
         let sink = out.clone();
@@ -180,6 +183,16 @@ impl ForP for RustHdl<'_> {
         });
         sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
             let mut x = sim.init()?;
+            for w in &loads {
+                x.host_write.next = true;
+                x.host_address.next = (w.address as u64).to_bits();
+                x.host_data.next = w.data.to_bits();
+                wait_clock_cycle!(sim, clock, x);
+            }
+            // As the Verilog harness: every host input low after the loads.
+            x.host_write.next = false;
+            x.host_address.next = 0.into();
+            x.host_data.next = 0.into();
             x.start.next = true;
             wait_clock_cycle!(sim, clock, x);
             x.start.next = false;
@@ -208,7 +221,7 @@ impl ForP for RustHdl<'_> {
             }
             sim.done(x)
         });
-        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200), trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200 + n_loads), trace)?;
         let o = out.lock().unwrap();
         Ok(o.clone())
     }
@@ -329,12 +342,18 @@ impl Arch for Cube4l {
         (stop, groups)
     }
 
+    fn loads(part: &Part) -> Vec<Write> {
+        let t = part.golden.tables();
+        [t.table_writes(), t.register_writes()].concat()
+    }
+
     fn rust_hdl(
         part: &Part,
         modules: &[Vec<u16>],
+        loads: &[Write],
         trace: Option<&Path>,
     ) -> Result<(Vec<Record>, u64), String> {
-        with_p(part.config.p as usize, RustHdl(part, modules, trace))?
+        with_p(part.config.p as usize, RustHdl(part, modules, loads, trace))?
     }
 
     fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {
@@ -400,6 +419,15 @@ impl Arch for Cube4l {
             v.push(ClockTerm {
                 key: "gradient_slice",
                 what: "gradient unit's slice",
+                clocks: slice,
+            });
+        }
+        if c.gradient && c.cfb.stream_z0 < c.cfb.z0 {
+            // A sweep that starts inside the volume streams the slice before
+            // its first as the gradient's halo.
+            v.push(ClockTerm {
+                key: "halo_slice",
+                what: "leading halo slice",
                 clocks: slice,
             });
         }

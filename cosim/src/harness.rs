@@ -132,6 +132,40 @@ pub fn start_only(ports: &[Port], t: usize) -> Vec<u64> {
         .collect()
 }
 
+/// The inputs of the clocks that write `writes` through the design's host
+/// port, one a clock, every other input 0.
+pub fn host_writes(ports: &[Port], writes: &[golden_model::host::Write]) -> Vec<Vec<u64>> {
+    writes
+        .iter()
+        .map(|w| host_vector(ports, Some(w), false))
+        .collect()
+}
+
+/// One clock's inputs: a host write, or `start`; every other input 0.
+fn host_vector(ports: &[Port], w: Option<&golden_model::host::Write>, start: bool) -> Vec<u64> {
+    ports
+        .iter()
+        .filter(|p| p.input)
+        .map(|p| match (p.name.as_str(), w) {
+            ("host_write", Some(_)) => 1,
+            ("host_address", Some(w)) => w.address as u64,
+            ("host_data", Some(w)) => w.data,
+            ("start", None) => start as u64,
+            _ => 0,
+        })
+        .collect()
+}
+
+/// The inputs of a design that the host loads through its host port
+/// (`writes`, one a clock) and then starts with `start`: a vector per
+/// write, the start, and one with everything low.
+pub fn load_then_start(ports: &[Port], writes: &[golden_model::host::Write]) -> Vec<Vec<u64>> {
+    let mut v = host_writes(ports, writes);
+    v.push(host_vector(ports, None, true));
+    v.push(host_vector(ports, None, false));
+    v
+}
+
 /// When a run ends.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Stop {
@@ -144,6 +178,24 @@ pub enum Stop {
         count: u64,
         limit: u64,
     },
+}
+
+impl Stop {
+    /// The same end, for a run that starts `clocks` clocks later.
+    pub fn after(self, clocks: u64) -> Stop {
+        match self {
+            Stop::Clocks(n) => Stop::Clocks(n + clocks),
+            Stop::Pulses {
+                output,
+                count,
+                limit,
+            } => Stop::Pulses {
+                output,
+                count,
+                limit: limit + clocks,
+            },
+        }
+    }
 }
 
 /// Outputs to log: `fields` on every clock `when` is high (on every clock
@@ -238,7 +290,14 @@ pub fn run(engine: Engine, spec: &Spec) -> Result<Logged, String> {
             run_seconds,
         })
     })();
-    let _ = std::fs::remove_dir_all(&dir);
+    // `CUBE_KEEP_HARNESS` keeps the run's directory (testbench, vectors,
+    // log, trace) for a look at a failing run.
+    match std::env::var_os("CUBE_KEEP_HARNESS") {
+        Some(_) => eprintln!("harness run kept in {}", dir.display()),
+        None => {
+            let _ = std::fs::remove_dir_all(&dir);
+        }
+    }
     result
 }
 

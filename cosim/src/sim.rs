@@ -103,27 +103,38 @@ pub fn simulate_altered<A: Arch>(
         let started = Instant::now();
         let (records, clocks, built) = match engine {
             Engine::RustHdl => {
-                let (r, c) = A::rust_hdl(part, &modules, trace)?;
+                let (r, c) = A::rust_hdl(part, &modules, &A::loads(part), trace)?;
                 (r, c, 0.0)
             }
             _ => {
                 let external = A::external(part);
                 let verilog = alter(&A::verilog(part, (!external).then_some(&modules[..]))?);
                 let ports = crate::harness::ports(&verilog)?;
-                let vectors = [0, 1].map(|t| crate::harness::start_only(&ports, t));
+                let loads = A::loads(part);
+                let vectors = crate::harness::load_then_start(&ports, &loads);
                 let (stop, groups) = A::bus(part);
                 let logged = crate::harness::run(
                     engine,
                     &Spec {
                         verilog: &verilog,
                         vectors: &vectors,
-                        stop,
+                        stop: stop.after(loads.len() as u64),
                         groups: &groups,
                         memory: external.then_some(&modules[..]),
                         trace,
                     },
                 )?;
-                (logged.records, logged.clocks, logged.build_seconds)
+                // Clocks from `start`, as rust-hdl's testbench counts them.
+                let n = loads.len() as u64;
+                let records = logged
+                    .records
+                    .into_iter()
+                    .map(|mut r| {
+                        r.clock -= n;
+                        r
+                    })
+                    .collect();
+                (records, logged.clocks - n, logged.build_seconds)
             }
         };
         out.sim_seconds += started.elapsed().as_secs_f64() - built;

@@ -1,7 +1,10 @@
-module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
+module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  [15:0] value;
     input wire  invalid;
     input wire  at_edge;
@@ -19,71 +22,141 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Constant declarations
     localparam  gm_on = 1'b0;
-    localparam  gm_shift = 8'h0;
     localparam  scalar = 1'b1;
     localparam  xray = 1'b0;
     localparam  shaded = 1'b0;
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
-    localparam  bit_len$0 = 8'h1;
-    localparam  bit_len$1 = 8'h2;
-    localparam  bit_len$2 = 8'h3;
-    localparam  bit_len$3 = 8'h4;
-    localparam  bit_len$4 = 8'h5;
-    localparam  bit_len$5 = 8'h6;
-    localparam  bit_len$6 = 8'h7;
-    localparam  bit_len$7 = 8'h8;
-    localparam  bit_len$8 = 8'h9;
-    localparam  bit_len$9 = 8'ha;
-    localparam  bit_len$10 = 8'hb;
-    localparam  bit_len$11 = 8'hc;
-    localparam  bit_len$12 = 8'hd;
-    localparam  bit_len$13 = 8'he;
-    localparam  bit_len$14 = 8'hf;
-    localparam  bit_len$15 = 8'h10;
-    localparam  bit_len$16 = 8'h11;
-    localparam  bit_len$17 = 8'h12;
-    localparam  bit_len$18 = 8'h13;
-    localparam  bit_len$19 = 8'h14;
-    localparam  bit_len$20 = 8'h15;
-    localparam  bit_len$21 = 8'h16;
-    localparam  bit_len$22 = 8'h17;
-    localparam  bit_len$23 = 8'h18;
-    localparam  bit_len$24 = 8'h19;
-    localparam  bit_len$25 = 8'h1a;
-    localparam  bit_len$26 = 8'h1b;
-    localparam  bit_len$27 = 8'h1c;
-    localparam  bit_len$28 = 8'h1d;
-    localparam  bit_len$29 = 8'h1e;
-    localparam  bit_len$30 = 8'h1f;
-    localparam  bit_len$31 = 8'h20;
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  lut$clock;
+    reg  lut$host_write;
+    reg  [23:0] lut$host_address;
+    reg  [63:0] lut$host_data;
     reg  [11:0] lut$address;
     wire  [63:0] lut$data = 'h0;
-    reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data = 'h0;
+    reg  alpha_gm$clock;
+    reg  alpha_gm$host_write;
+    reg  [23:0] alpha_gm$host_address;
+    reg  [63:0] alpha_gm$host_data;
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
-    reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root = 'h0;
-    reg  [31:0] sq_x$m;
-    wire  [63:0] sq_x$y;
-    reg  [31:0] sq_y$m;
-    wire  [63:0] sq_y$y;
-    reg  [31:0] sq_z$m;
-    wire  [63:0] sq_z$y;
-    reg  [15:0] mul_r$a;
-    reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y = 'h0;
-    reg  [15:0] mul_g$a;
-    reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y = 'h0;
-    reg  [15:0] mul_b$a;
-    reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y = 'h0;
+    reg  gm_bin$clock;
+    reg  gm_bin$host_write;
+    reg  [23:0] gm_bin$host_address;
+    reg  [63:0] gm_bin$host_data;
+    reg  [31:0] gm_bin$mag$0;
+    reg  [31:0] gm_bin$mag$1;
+    reg  [31:0] gm_bin$mag$2;
+    wire  [3:0] gm_bin$bin = 'h0;
+    reg  normal$clock;
+    reg  normal$neg$0;
+    reg  normal$neg$1;
+    reg  normal$neg$2;
+    reg  [31:0] normal$mag$0;
+    reg  [31:0] normal$mag$1;
+    reg  [31:0] normal$mag$2;
+    wire  normal$q_neg$0 = 'h0;
+    wire  normal$q_neg$1 = 'h0;
+    wire  normal$q_neg$2 = 'h0;
+    wire  [3:0] normal$q_mag$0 = 'h0;
+    wire  [3:0] normal$q_mag$1 = 'h0;
+    wire  [3:0] normal$q_mag$2 = 'h0;
+    reg  lighting$clock;
+    reg  lighting$host_write;
+    reg  [23:0] lighting$host_address;
+    reg  [63:0] lighting$host_data;
+    reg  lighting$q_neg$0;
+    reg  lighting$q_neg$1;
+    reg  lighting$q_neg$2;
+    reg  [3:0] lighting$q_mag$0;
+    reg  [3:0] lighting$q_mag$1;
+    reg  [3:0] lighting$q_mag$2;
+    wire  [15:0] lighting$diffuse = 'h0;
+    wire  [15:0] lighting$specular = 'h0;
+    reg  [11:0] row_q$0$d;
+    wire  [11:0] row_q$0$q;
+    reg  row_q$0$clock;
+    reg  [11:0] row_q$1$d;
+    wire  [11:0] row_q$1$q;
+    reg  row_q$1$clock;
+    reg  [11:0] row_q$2$d;
+    wire  [11:0] row_q$2$q;
+    reg  row_q$2$clock;
+    reg  [63:0] lut_q$0$d;
+    wire  [63:0] lut_q$0$q;
+    reg  lut_q$0$clock;
+    reg  [63:0] lut_q$1$d;
+    wire  [63:0] lut_q$1$q;
+    reg  lut_q$1$clock;
+    reg  [63:0] lut_q$2$d;
+    wire  [63:0] lut_q$2$q;
+    reg  lut_q$2$clock;
+    reg  [63:0] lut_q$3$d;
+    wire  [63:0] lut_q$3$q;
+    reg  lut_q$3$clock;
+    reg  gate_q$0$d;
+    wire  gate_q$0$q;
+    reg  gate_q$0$clock;
+    reg  gate_q$1$d;
+    wire  gate_q$1$q;
+    reg  gate_q$1$clock;
+    reg  gate_q$2$d;
+    wire  gate_q$2$q;
+    reg  gate_q$2$clock;
+    reg  gate_q$3$d;
+    wire  gate_q$3$q;
+    reg  gate_q$3$clock;
+    reg  [15:0] alpha_q$0$d;
+    wire  [15:0] alpha_q$0$q;
+    reg  alpha_q$0$clock;
+    reg  [15:0] alpha_q$1$d;
+    wire  [15:0] alpha_q$1$q;
+    reg  alpha_q$1$clock;
+    reg  [15:0] value_q$0$d;
+    wire  [15:0] value_q$0$q;
+    reg  value_q$0$clock;
+    reg  [15:0] value_q$1$d;
+    wire  [15:0] value_q$1$q;
+    reg  value_q$1$clock;
+    reg  [15:0] value_q$2$d;
+    wire  [15:0] value_q$2$q;
+    reg  value_q$2$clock;
+    reg  [15:0] value_q$3$d;
+    wire  [15:0] value_q$3$q;
+    reg  value_q$3$clock;
+    reg  [15:0] value_q$4$d;
+    wire  [15:0] value_q$4$q;
+    reg  value_q$4$clock;
+    reg  [15:0] value_q$5$d;
+    wire  [15:0] value_q$5$q;
+    reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  valid_q$0$d;
+    wire  valid_q$0$q;
+    reg  valid_q$0$clock;
+    reg  valid_q$1$d;
+    wire  valid_q$1$q;
+    reg  valid_q$1$clock;
+    reg  valid_q$2$d;
+    wire  valid_q$2$q;
+    reg  valid_q$2$clock;
+    reg  valid_q$3$d;
+    wire  valid_q$3$q;
+    reg  valid_q$3$clock;
+    reg  valid_q$4$d;
+    wire  valid_q$4$q;
+    reg  valid_q$4$clock;
+    reg  valid_q$5$d;
+    wire  valid_q$5$q;
+    reg  valid_q$5$clock;
+    reg  valid_q$6$d;
+    wire  valid_q$6$q;
+    reg  valid_q$6$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
@@ -93,6 +166,24 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
+    reg  [15:0] shaded_q$0$d;
+    wire  [15:0] shaded_q$0$q;
+    reg  shaded_q$0$clock;
+    reg  [15:0] shaded_q$1$d;
+    wire  [15:0] shaded_q$1$q;
+    reg  shaded_q$1$clock;
+    reg  [15:0] shaded_q$2$d;
+    wire  [15:0] shaded_q$2$q;
+    reg  shaded_q$2$clock;
+    reg  [15:0] mul_r$a;
+    reg  [15:0] mul_r$b;
+    wire  [15:0] mul_r$y = 'h0;
+    reg  [15:0] mul_g$a;
+    reg  [15:0] mul_g$b;
+    wire  [15:0] mul_g$y = 'h0;
+    reg  [15:0] mul_b$a;
+    reg  [15:0] mul_b$b;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -105,24 +196,14 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] a_q$d;
     wire  [15:0] a_q$q;
     reg  a_q$clock;
-    reg  valid_q$d;
-    wire  valid_q$q;
-    reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] gm_bin;
     reg  [11:0] row;
+    reg  gate;
+    reg  [31:0] mag$0;
+    reg  [31:0] mag$1;
+    reg  [31:0] mag$2;
     reg  [15:0] alpha;
-    reg  [31:0] m;
-    reg  [7:0] bl;
-    reg  [7:0] s;
-    reg  [31:0] half;
-    reg  [31:0] qx;
-    reg  [31:0] qy;
-    reg  [31:0] qz;
-    reg  [4:0] ix;
-    reg  [4:0] iy;
-    reg  [4:0] iz;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
     reg  [31:0] sum_r;
@@ -130,17 +211,155 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$0$shader$sq_x sq_x(
-        .m(sq_x$m),
-        .y(sq_x$y)
+    top$lanes$0$shader$row_q$0 row_q$0(
+        .d(row_q$0$d),
+        .q(row_q$0$q),
+        .clock(row_q$0$clock)
     );
-    top$lanes$0$shader$sq_y sq_y(
-        .m(sq_y$m),
-        .y(sq_y$y)
+    top$lanes$0$shader$row_q$1 row_q$1(
+        .d(row_q$1$d),
+        .q(row_q$1$q),
+        .clock(row_q$1$clock)
     );
-    top$lanes$0$shader$sq_z sq_z(
-        .m(sq_z$m),
-        .y(sq_z$y)
+    top$lanes$0$shader$row_q$2 row_q$2(
+        .d(row_q$2$d),
+        .q(row_q$2$q),
+        .clock(row_q$2$clock)
+    );
+    top$lanes$0$shader$lut_q$0 lut_q$0(
+        .d(lut_q$0$d),
+        .q(lut_q$0$q),
+        .clock(lut_q$0$clock)
+    );
+    top$lanes$0$shader$lut_q$1 lut_q$1(
+        .d(lut_q$1$d),
+        .q(lut_q$1$q),
+        .clock(lut_q$1$clock)
+    );
+    top$lanes$0$shader$lut_q$2 lut_q$2(
+        .d(lut_q$2$d),
+        .q(lut_q$2$q),
+        .clock(lut_q$2$clock)
+    );
+    top$lanes$0$shader$lut_q$3 lut_q$3(
+        .d(lut_q$3$d),
+        .q(lut_q$3$q),
+        .clock(lut_q$3$clock)
+    );
+    top$lanes$0$shader$gate_q$0 gate_q$0(
+        .d(gate_q$0$d),
+        .q(gate_q$0$q),
+        .clock(gate_q$0$clock)
+    );
+    top$lanes$0$shader$gate_q$1 gate_q$1(
+        .d(gate_q$1$d),
+        .q(gate_q$1$q),
+        .clock(gate_q$1$clock)
+    );
+    top$lanes$0$shader$gate_q$2 gate_q$2(
+        .d(gate_q$2$d),
+        .q(gate_q$2$q),
+        .clock(gate_q$2$clock)
+    );
+    top$lanes$0$shader$gate_q$3 gate_q$3(
+        .d(gate_q$3$d),
+        .q(gate_q$3$q),
+        .clock(gate_q$3$clock)
+    );
+    top$lanes$0$shader$alpha_q$0 alpha_q$0(
+        .d(alpha_q$0$d),
+        .q(alpha_q$0$q),
+        .clock(alpha_q$0$clock)
+    );
+    top$lanes$0$shader$alpha_q$1 alpha_q$1(
+        .d(alpha_q$1$d),
+        .q(alpha_q$1$q),
+        .clock(alpha_q$1$clock)
+    );
+    top$lanes$0$shader$value_q$0 value_q$0(
+        .d(value_q$0$d),
+        .q(value_q$0$q),
+        .clock(value_q$0$clock)
+    );
+    top$lanes$0$shader$value_q$1 value_q$1(
+        .d(value_q$1$d),
+        .q(value_q$1$q),
+        .clock(value_q$1$clock)
+    );
+    top$lanes$0$shader$value_q$2 value_q$2(
+        .d(value_q$2$d),
+        .q(value_q$2$q),
+        .clock(value_q$2$clock)
+    );
+    top$lanes$0$shader$value_q$3 value_q$3(
+        .d(value_q$3$d),
+        .q(value_q$3$q),
+        .clock(value_q$3$clock)
+    );
+    top$lanes$0$shader$value_q$4 value_q$4(
+        .d(value_q$4$d),
+        .q(value_q$4$q),
+        .clock(value_q$4$clock)
+    );
+    top$lanes$0$shader$value_q$5 value_q$5(
+        .d(value_q$5$d),
+        .q(value_q$5$q),
+        .clock(value_q$5$clock)
+    );
+    top$lanes$0$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$0$shader$valid_q$0 valid_q$0(
+        .d(valid_q$0$d),
+        .q(valid_q$0$q),
+        .clock(valid_q$0$clock)
+    );
+    top$lanes$0$shader$valid_q$1 valid_q$1(
+        .d(valid_q$1$d),
+        .q(valid_q$1$q),
+        .clock(valid_q$1$clock)
+    );
+    top$lanes$0$shader$valid_q$2 valid_q$2(
+        .d(valid_q$2$d),
+        .q(valid_q$2$q),
+        .clock(valid_q$2$clock)
+    );
+    top$lanes$0$shader$valid_q$3 valid_q$3(
+        .d(valid_q$3$d),
+        .q(valid_q$3$q),
+        .clock(valid_q$3$clock)
+    );
+    top$lanes$0$shader$valid_q$4 valid_q$4(
+        .d(valid_q$4$d),
+        .q(valid_q$4$q),
+        .clock(valid_q$4$clock)
+    );
+    top$lanes$0$shader$valid_q$5 valid_q$5(
+        .d(valid_q$5$d),
+        .q(valid_q$5$q),
+        .clock(valid_q$5$clock)
+    );
+    top$lanes$0$shader$valid_q$6 valid_q$6(
+        .d(valid_q$6$d),
+        .q(valid_q$6$q),
+        .clock(valid_q$6$clock)
+    );
+    top$lanes$0$shader$shaded_q$0 shaded_q$0(
+        .d(shaded_q$0$d),
+        .q(shaded_q$0$q),
+        .clock(shaded_q$0$clock)
+    );
+    top$lanes$0$shader$shaded_q$1 shaded_q$1(
+        .d(shaded_q$1$d),
+        .q(shaded_q$1$q),
+        .clock(shaded_q$1$clock)
+    );
+    top$lanes$0$shader$shaded_q$2 shaded_q$2(
+        .d(shaded_q$2$d),
+        .q(shaded_q$2$q),
+        .clock(shaded_q$2$clock)
     );
     top$lanes$0$shader$r_q r_q(
         .d(r_q$d),
@@ -162,11 +381,6 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         .q(a_q$q),
         .clock(a_q$clock)
     );
-    top$lanes$0$shader$valid_q valid_q(
-        .d(valid_q$d),
-        .q(valid_q$q),
-        .clock(valid_q$clock)
-    );
     
     // Update code
     reg  [31:0] r_pass;
@@ -179,214 +393,162 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        valid_q$clock = clock;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
         a_q$d = a_q$q;
-        valid_q$d = valid_q$q;
+        lut$clock = clock;
+        lut$host_write = host_write;
+        lut$host_address = host_address;
+        lut$host_data = host_data;
+        alpha_gm$clock = clock;
+        alpha_gm$host_write = host_write;
+        alpha_gm$host_address = host_address;
+        alpha_gm$host_data = host_data;
+        gm_bin$clock = clock;
+        gm_bin$host_write = host_write;
+        gm_bin$host_address = host_address;
+        gm_bin$host_data = host_data;
+        lighting$clock = clock;
+        lighting$host_write = host_write;
+        lighting$host_address = host_address;
+        lighting$host_data = host_data;
+        normal$clock = clock;
+        gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        lut$address = row;
-        alpha = 16'(lut$data >> 'h30);
-        sq_x$m = gx_mag;
-        sq_y$m = gy_mag;
-        sq_z$m = gz_mag;
-        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
-        gm_bin = sqrt$root >> gm_shift;
-        if (gm_bin > 'hf) begin
-            gm_bin = 'hf;
+        if (gate) begin
+            row = 'h0;
         end
-        alpha_gm$address = (16'(row) << 'h4) | 16'(gm_bin);
+        lut$address = row;
+        normal$neg$0 = gx_neg & ~gate;
+        normal$neg$1 = gy_neg & ~gate;
+        normal$neg$2 = gz_neg & ~gate;
+        mag$0 = gx_mag;
+        mag$1 = gy_mag;
+        mag$2 = gz_mag;
+        if (gate) begin
+            mag$0 = 'h0;
+            mag$1 = 'h0;
+            mag$2 = 'h0;
+        end
+        normal$mag$0 = mag$0;
+        gm_bin$mag$0 = mag$0;
+        normal$mag$1 = mag$1;
+        gm_bin$mag$1 = mag$1;
+        normal$mag$2 = mag$2;
+        gm_bin$mag$2 = mag$2;
+        lighting$q_neg$0 = normal$q_neg$0;
+        lighting$q_mag$0 = normal$q_mag$0;
+        lighting$q_neg$1 = normal$q_neg$1;
+        lighting$q_mag$1 = normal$q_mag$1;
+        lighting$q_neg$2 = normal$q_neg$2;
+        lighting$q_mag$2 = normal$q_mag$2;
+        row_q$0$clock = clock;
+        row_q$1$clock = clock;
+        row_q$2$clock = clock;
+        row_q$0$d = row;
+        row_q$1$d = row_q$0$q;
+        row_q$2$d = row_q$1$q;
+        lut_q$0$clock = clock;
+        gate_q$0$clock = clock;
+        lut_q$1$clock = clock;
+        gate_q$1$clock = clock;
+        lut_q$2$clock = clock;
+        gate_q$2$clock = clock;
+        lut_q$3$clock = clock;
+        gate_q$3$clock = clock;
+        lut_q$0$d = lut$data;
+        gate_q$0$d = gate;
+        lut_q$1$d = lut_q$0$q;
+        gate_q$1$d = gate_q$0$q;
+        lut_q$2$d = lut_q$1$q;
+        gate_q$2$d = gate_q$1$q;
+        lut_q$3$d = lut_q$2$q;
+        gate_q$3$d = gate_q$2$q;
+        value_q$0$clock = clock;
+        valid_q$0$clock = clock;
+        value_q$1$clock = clock;
+        valid_q$1$clock = clock;
+        value_q$2$clock = clock;
+        valid_q$2$clock = clock;
+        value_q$3$clock = clock;
+        valid_q$3$clock = clock;
+        value_q$4$clock = clock;
+        valid_q$4$clock = clock;
+        value_q$5$clock = clock;
+        valid_q$5$clock = clock;
+        value_q$6$clock = clock;
+        valid_q$6$clock = clock;
+        value_q$0$d = value;
+        valid_q$0$d = ~invalid | xray;
+        value_q$1$d = value_q$0$q;
+        valid_q$1$d = valid_q$0$q;
+        value_q$2$d = value_q$1$q;
+        valid_q$2$d = valid_q$1$q;
+        value_q$3$d = value_q$2$q;
+        valid_q$3$d = valid_q$2$q;
+        value_q$4$d = value_q$3$q;
+        valid_q$4$d = valid_q$3$q;
+        value_q$5$d = value_q$4$q;
+        valid_q$5$d = valid_q$4$q;
+        value_q$6$d = value_q$5$q;
+        valid_q$6$d = valid_q$5$q;
+        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (invalid | (edge_transparent & at_edge)) begin
+        if (gate_q$3$q) begin
             alpha = 'h0;
         end
-        m = gx_mag;
-        if (gy_mag > m) begin
-            m = gy_mag;
-        end
-        if (gz_mag > m) begin
-            m = gz_mag;
-        end
-        bl = 'h0;
-        if (m[0]) begin
-            bl = bit_len$0;
-        end
-        if (m[1]) begin
-            bl = bit_len$1;
-        end
-        if (m[2]) begin
-            bl = bit_len$2;
-        end
-        if (m[3]) begin
-            bl = bit_len$3;
-        end
-        if (m[4]) begin
-            bl = bit_len$4;
-        end
-        if (m[5]) begin
-            bl = bit_len$5;
-        end
-        if (m[6]) begin
-            bl = bit_len$6;
-        end
-        if (m[7]) begin
-            bl = bit_len$7;
-        end
-        if (m[8]) begin
-            bl = bit_len$8;
-        end
-        if (m[9]) begin
-            bl = bit_len$9;
-        end
-        if (m[10]) begin
-            bl = bit_len$10;
-        end
-        if (m[11]) begin
-            bl = bit_len$11;
-        end
-        if (m[12]) begin
-            bl = bit_len$12;
-        end
-        if (m[13]) begin
-            bl = bit_len$13;
-        end
-        if (m[14]) begin
-            bl = bit_len$14;
-        end
-        if (m[15]) begin
-            bl = bit_len$15;
-        end
-        if (m[16]) begin
-            bl = bit_len$16;
-        end
-        if (m[17]) begin
-            bl = bit_len$17;
-        end
-        if (m[18]) begin
-            bl = bit_len$18;
-        end
-        if (m[19]) begin
-            bl = bit_len$19;
-        end
-        if (m[20]) begin
-            bl = bit_len$20;
-        end
-        if (m[21]) begin
-            bl = bit_len$21;
-        end
-        if (m[22]) begin
-            bl = bit_len$22;
-        end
-        if (m[23]) begin
-            bl = bit_len$23;
-        end
-        if (m[24]) begin
-            bl = bit_len$24;
-        end
-        if (m[25]) begin
-            bl = bit_len$25;
-        end
-        if (m[26]) begin
-            bl = bit_len$26;
-        end
-        if (m[27]) begin
-            bl = bit_len$27;
-        end
-        if (m[28]) begin
-            bl = bit_len$28;
-        end
-        if (m[29]) begin
-            bl = bit_len$29;
-        end
-        if (m[30]) begin
-            bl = bit_len$30;
-        end
-        if (m[31]) begin
-            bl = bit_len$31;
-        end
-        s = 'h0;
-        if (bl > 'h4) begin
-            s = bl - 'h4;
-        end
-        half = 'h0;
-        if (s > 'h0) begin
-            half = (32'('h1) << s) >> 'h1;
-        end
-        qx = (gx_mag + half) >> s;
-        if (gx_neg & (s > 'h0)) begin
-            qx = (gx_mag + half - 'h1) >> s;
-        end
-        qy = (gy_mag + half) >> s;
-        if (gy_neg & (s > 'h0)) begin
-            qy = (gy_mag + half - 'h1) >> s;
-        end
-        qz = (gz_mag + half) >> s;
-        if (gz_neg & (s > 'h0)) begin
-            qz = (gz_mag + half - 'h1) >> s;
-        end
-        if (qx > 'hf) begin
-            qx = 'hf;
-        end
-        if (qy > 'hf) begin
-            qy = 'hf;
-        end
-        if (qz > 'hf) begin
-            qz = 'hf;
-        end
-        ix = 5'(qx);
-        if (gx_neg) begin
-            ix = 5'('h20 - qx);
-        end
-        iy = 5'(qy);
-        if (gy_neg) begin
-            iy = 5'('h20 - qy);
-        end
-        iz = 5'(qz);
-        if (gz_neg) begin
-            iz = 5'('h20 - qz);
-        end
-        reflectance$address = 15'(ix) | (15'(iy) << 'h5) | (15'(iz) << 'ha);
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$0$d = alpha;
+        alpha_q$1$d = alpha_q$0$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
-            diffuse = 16'(reflectance$data);
-            specular = 16'(reflectance$data >> 'h10);
+            diffuse = lighting$diffuse;
+            specular = lighting$specular;
         end
-        lit_r$a = 16'(lut$data);
-        lit_g$a = 16'(lut$data >> 'h10);
-        lit_b$a = 16'(lut$data >> 'h20);
+        lit_r$a = 16'(lut_q$3$q);
+        lit_g$a = 16'(lut_q$3$q >> 'h10);
+        lit_b$a = 16'(lut_q$3$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
         sum_r = 32'(lit_r$y) + 32'(specular);
         sum_g = 32'(lit_g$y) + 32'(specular);
         sum_b = 32'(lit_b$y) + 32'(specular);
-        mul_r$a = 16'(sum_r);
+        shaded_q$0$clock = clock;
+        shaded_q$1$clock = clock;
+        shaded_q$2$clock = clock;
+        shaded_q$0$d = 16'(sum_r);
         if (sum_r > 32'(m_max)) begin
-            mul_r$a = m_max;
+            shaded_q$0$d = m_max;
         end
-        mul_g$a = 16'(sum_g);
+        shaded_q$1$d = 16'(sum_g);
         if (sum_g > 32'(m_max)) begin
-            mul_g$a = m_max;
+            shaded_q$1$d = m_max;
         end
-        mul_b$a = 16'(sum_b);
+        shaded_q$2$d = 16'(sum_b);
         if (sum_b > 32'(m_max)) begin
-            mul_b$a = m_max;
+            shaded_q$2$d = m_max;
         end
-        mul_r$b = alpha;
-        mul_g$b = alpha;
-        mul_b$b = alpha;
+        mul_r$a = shaded_q$0$q;
+        mul_g$a = shaded_q$1$q;
+        mul_b$a = shaded_q$2$q;
+        mul_r$b = alpha_q$1$q;
+        mul_g$b = alpha_q$1$q;
+        mul_b$b = alpha_q$1$q;
         if (scalar) begin
-            r_q$d = value;
+            r_q$d = value_q$5$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha;
+            r_q$d = alpha_q$1$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -395,11 +557,7 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha;
-        end
-        valid_q$d = ~invalid;
-        if (xray) begin
-            valid_q$d = 1'b1;
+            a_q$d = alpha_q$1$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -411,7 +569,7 @@ module top$lanes$0$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$q;
+            valid_pass = valid_q$6$q;
         end
         r = r_pass;
         g = g_pass;
@@ -438,6 +596,40 @@ module top$lanes$0$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$a_q
+module top$lanes$0$shader$alpha_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$0
+module top$lanes$0$shader$alpha_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$1
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -472,6 +664,142 @@ module top$lanes$0$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$g_q
+module top$lanes$0$shader$gate_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$0
+module top$lanes$0$shader$gate_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$1
+module top$lanes$0$shader$gate_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$2
+module top$lanes$0$shader$gate_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$3
+module top$lanes$0$shader$lut_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$0
+module top$lanes$0$shader$lut_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$1
+module top$lanes$0$shader$lut_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$2
+module top$lanes$0$shader$lut_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$3
 module top$lanes$0$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -489,79 +817,109 @@ module top$lanes$0$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$r_q
-module top$lanes$0$shader$sq_x(m,y);
+module top$lanes$0$shader$row_q$0(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$0$shader$sq_x
-module top$lanes$0$shader$sq_y(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$0
+module top$lanes$0$shader$row_q$1(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$0$shader$sq_y
-module top$lanes$0$shader$sq_z(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$1
+module top$lanes$0$shader$row_q$2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$0$shader$sq_z
-module top$lanes$0$shader$valid_q(d,q,clock);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$2
+module top$lanes$0$shader$shaded_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$shaded_q$0
+module top$lanes$0$shader$shaded_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$shaded_q$1
+module top$lanes$0$shader$shaded_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$shaded_q$2
+module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -577,11 +935,235 @@ module top$lanes$0$shader$valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$shader$valid_q
-module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
+endmodule // top$lanes$0$shader$valid_q$0
+module top$lanes$0$shader$valid_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$1
+module top$lanes$0$shader$valid_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$2
+module top$lanes$0$shader$valid_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$3
+module top$lanes$0$shader$valid_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$4
+module top$lanes$0$shader$valid_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$5
+module top$lanes$0$shader$valid_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$6
+module top$lanes$0$shader$value_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$0
+module top$lanes$0$shader$value_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$1
+module top$lanes$0$shader$value_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$2
+module top$lanes$0$shader$value_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$3
+module top$lanes$0$shader$value_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$4
+module top$lanes$0$shader$value_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$5
+module top$lanes$0$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$6
+module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  [15:0] value;
     input wire  invalid;
     input wire  at_edge;
@@ -599,71 +1181,141 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Constant declarations
     localparam  gm_on = 1'b0;
-    localparam  gm_shift = 8'h0;
     localparam  scalar = 1'b1;
     localparam  xray = 1'b0;
     localparam  shaded = 1'b0;
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
-    localparam  bit_len$0 = 8'h1;
-    localparam  bit_len$1 = 8'h2;
-    localparam  bit_len$2 = 8'h3;
-    localparam  bit_len$3 = 8'h4;
-    localparam  bit_len$4 = 8'h5;
-    localparam  bit_len$5 = 8'h6;
-    localparam  bit_len$6 = 8'h7;
-    localparam  bit_len$7 = 8'h8;
-    localparam  bit_len$8 = 8'h9;
-    localparam  bit_len$9 = 8'ha;
-    localparam  bit_len$10 = 8'hb;
-    localparam  bit_len$11 = 8'hc;
-    localparam  bit_len$12 = 8'hd;
-    localparam  bit_len$13 = 8'he;
-    localparam  bit_len$14 = 8'hf;
-    localparam  bit_len$15 = 8'h10;
-    localparam  bit_len$16 = 8'h11;
-    localparam  bit_len$17 = 8'h12;
-    localparam  bit_len$18 = 8'h13;
-    localparam  bit_len$19 = 8'h14;
-    localparam  bit_len$20 = 8'h15;
-    localparam  bit_len$21 = 8'h16;
-    localparam  bit_len$22 = 8'h17;
-    localparam  bit_len$23 = 8'h18;
-    localparam  bit_len$24 = 8'h19;
-    localparam  bit_len$25 = 8'h1a;
-    localparam  bit_len$26 = 8'h1b;
-    localparam  bit_len$27 = 8'h1c;
-    localparam  bit_len$28 = 8'h1d;
-    localparam  bit_len$29 = 8'h1e;
-    localparam  bit_len$30 = 8'h1f;
-    localparam  bit_len$31 = 8'h20;
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  lut$clock;
+    reg  lut$host_write;
+    reg  [23:0] lut$host_address;
+    reg  [63:0] lut$host_data;
     reg  [11:0] lut$address;
     wire  [63:0] lut$data = 'h0;
-    reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data = 'h0;
+    reg  alpha_gm$clock;
+    reg  alpha_gm$host_write;
+    reg  [23:0] alpha_gm$host_address;
+    reg  [63:0] alpha_gm$host_data;
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
-    reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root = 'h0;
-    reg  [31:0] sq_x$m;
-    wire  [63:0] sq_x$y;
-    reg  [31:0] sq_y$m;
-    wire  [63:0] sq_y$y;
-    reg  [31:0] sq_z$m;
-    wire  [63:0] sq_z$y;
-    reg  [15:0] mul_r$a;
-    reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y = 'h0;
-    reg  [15:0] mul_g$a;
-    reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y = 'h0;
-    reg  [15:0] mul_b$a;
-    reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y = 'h0;
+    reg  gm_bin$clock;
+    reg  gm_bin$host_write;
+    reg  [23:0] gm_bin$host_address;
+    reg  [63:0] gm_bin$host_data;
+    reg  [31:0] gm_bin$mag$0;
+    reg  [31:0] gm_bin$mag$1;
+    reg  [31:0] gm_bin$mag$2;
+    wire  [3:0] gm_bin$bin = 'h0;
+    reg  normal$clock;
+    reg  normal$neg$0;
+    reg  normal$neg$1;
+    reg  normal$neg$2;
+    reg  [31:0] normal$mag$0;
+    reg  [31:0] normal$mag$1;
+    reg  [31:0] normal$mag$2;
+    wire  normal$q_neg$0 = 'h0;
+    wire  normal$q_neg$1 = 'h0;
+    wire  normal$q_neg$2 = 'h0;
+    wire  [3:0] normal$q_mag$0 = 'h0;
+    wire  [3:0] normal$q_mag$1 = 'h0;
+    wire  [3:0] normal$q_mag$2 = 'h0;
+    reg  lighting$clock;
+    reg  lighting$host_write;
+    reg  [23:0] lighting$host_address;
+    reg  [63:0] lighting$host_data;
+    reg  lighting$q_neg$0;
+    reg  lighting$q_neg$1;
+    reg  lighting$q_neg$2;
+    reg  [3:0] lighting$q_mag$0;
+    reg  [3:0] lighting$q_mag$1;
+    reg  [3:0] lighting$q_mag$2;
+    wire  [15:0] lighting$diffuse = 'h0;
+    wire  [15:0] lighting$specular = 'h0;
+    reg  [11:0] row_q$0$d;
+    wire  [11:0] row_q$0$q;
+    reg  row_q$0$clock;
+    reg  [11:0] row_q$1$d;
+    wire  [11:0] row_q$1$q;
+    reg  row_q$1$clock;
+    reg  [11:0] row_q$2$d;
+    wire  [11:0] row_q$2$q;
+    reg  row_q$2$clock;
+    reg  [63:0] lut_q$0$d;
+    wire  [63:0] lut_q$0$q;
+    reg  lut_q$0$clock;
+    reg  [63:0] lut_q$1$d;
+    wire  [63:0] lut_q$1$q;
+    reg  lut_q$1$clock;
+    reg  [63:0] lut_q$2$d;
+    wire  [63:0] lut_q$2$q;
+    reg  lut_q$2$clock;
+    reg  [63:0] lut_q$3$d;
+    wire  [63:0] lut_q$3$q;
+    reg  lut_q$3$clock;
+    reg  gate_q$0$d;
+    wire  gate_q$0$q;
+    reg  gate_q$0$clock;
+    reg  gate_q$1$d;
+    wire  gate_q$1$q;
+    reg  gate_q$1$clock;
+    reg  gate_q$2$d;
+    wire  gate_q$2$q;
+    reg  gate_q$2$clock;
+    reg  gate_q$3$d;
+    wire  gate_q$3$q;
+    reg  gate_q$3$clock;
+    reg  [15:0] alpha_q$0$d;
+    wire  [15:0] alpha_q$0$q;
+    reg  alpha_q$0$clock;
+    reg  [15:0] alpha_q$1$d;
+    wire  [15:0] alpha_q$1$q;
+    reg  alpha_q$1$clock;
+    reg  [15:0] value_q$0$d;
+    wire  [15:0] value_q$0$q;
+    reg  value_q$0$clock;
+    reg  [15:0] value_q$1$d;
+    wire  [15:0] value_q$1$q;
+    reg  value_q$1$clock;
+    reg  [15:0] value_q$2$d;
+    wire  [15:0] value_q$2$q;
+    reg  value_q$2$clock;
+    reg  [15:0] value_q$3$d;
+    wire  [15:0] value_q$3$q;
+    reg  value_q$3$clock;
+    reg  [15:0] value_q$4$d;
+    wire  [15:0] value_q$4$q;
+    reg  value_q$4$clock;
+    reg  [15:0] value_q$5$d;
+    wire  [15:0] value_q$5$q;
+    reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  valid_q$0$d;
+    wire  valid_q$0$q;
+    reg  valid_q$0$clock;
+    reg  valid_q$1$d;
+    wire  valid_q$1$q;
+    reg  valid_q$1$clock;
+    reg  valid_q$2$d;
+    wire  valid_q$2$q;
+    reg  valid_q$2$clock;
+    reg  valid_q$3$d;
+    wire  valid_q$3$q;
+    reg  valid_q$3$clock;
+    reg  valid_q$4$d;
+    wire  valid_q$4$q;
+    reg  valid_q$4$clock;
+    reg  valid_q$5$d;
+    wire  valid_q$5$q;
+    reg  valid_q$5$clock;
+    reg  valid_q$6$d;
+    wire  valid_q$6$q;
+    reg  valid_q$6$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
@@ -673,6 +1325,24 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
+    reg  [15:0] shaded_q$0$d;
+    wire  [15:0] shaded_q$0$q;
+    reg  shaded_q$0$clock;
+    reg  [15:0] shaded_q$1$d;
+    wire  [15:0] shaded_q$1$q;
+    reg  shaded_q$1$clock;
+    reg  [15:0] shaded_q$2$d;
+    wire  [15:0] shaded_q$2$q;
+    reg  shaded_q$2$clock;
+    reg  [15:0] mul_r$a;
+    reg  [15:0] mul_r$b;
+    wire  [15:0] mul_r$y = 'h0;
+    reg  [15:0] mul_g$a;
+    reg  [15:0] mul_g$b;
+    wire  [15:0] mul_g$y = 'h0;
+    reg  [15:0] mul_b$a;
+    reg  [15:0] mul_b$b;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -685,24 +1355,14 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] a_q$d;
     wire  [15:0] a_q$q;
     reg  a_q$clock;
-    reg  valid_q$d;
-    wire  valid_q$q;
-    reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] gm_bin;
     reg  [11:0] row;
+    reg  gate;
+    reg  [31:0] mag$0;
+    reg  [31:0] mag$1;
+    reg  [31:0] mag$2;
     reg  [15:0] alpha;
-    reg  [31:0] m;
-    reg  [7:0] bl;
-    reg  [7:0] s;
-    reg  [31:0] half;
-    reg  [31:0] qx;
-    reg  [31:0] qy;
-    reg  [31:0] qz;
-    reg  [4:0] ix;
-    reg  [4:0] iy;
-    reg  [4:0] iz;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
     reg  [31:0] sum_r;
@@ -710,17 +1370,155 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$1$shader$sq_x sq_x(
-        .m(sq_x$m),
-        .y(sq_x$y)
+    top$lanes$1$shader$row_q$0 row_q$0(
+        .d(row_q$0$d),
+        .q(row_q$0$q),
+        .clock(row_q$0$clock)
     );
-    top$lanes$1$shader$sq_y sq_y(
-        .m(sq_y$m),
-        .y(sq_y$y)
+    top$lanes$1$shader$row_q$1 row_q$1(
+        .d(row_q$1$d),
+        .q(row_q$1$q),
+        .clock(row_q$1$clock)
     );
-    top$lanes$1$shader$sq_z sq_z(
-        .m(sq_z$m),
-        .y(sq_z$y)
+    top$lanes$1$shader$row_q$2 row_q$2(
+        .d(row_q$2$d),
+        .q(row_q$2$q),
+        .clock(row_q$2$clock)
+    );
+    top$lanes$1$shader$lut_q$0 lut_q$0(
+        .d(lut_q$0$d),
+        .q(lut_q$0$q),
+        .clock(lut_q$0$clock)
+    );
+    top$lanes$1$shader$lut_q$1 lut_q$1(
+        .d(lut_q$1$d),
+        .q(lut_q$1$q),
+        .clock(lut_q$1$clock)
+    );
+    top$lanes$1$shader$lut_q$2 lut_q$2(
+        .d(lut_q$2$d),
+        .q(lut_q$2$q),
+        .clock(lut_q$2$clock)
+    );
+    top$lanes$1$shader$lut_q$3 lut_q$3(
+        .d(lut_q$3$d),
+        .q(lut_q$3$q),
+        .clock(lut_q$3$clock)
+    );
+    top$lanes$1$shader$gate_q$0 gate_q$0(
+        .d(gate_q$0$d),
+        .q(gate_q$0$q),
+        .clock(gate_q$0$clock)
+    );
+    top$lanes$1$shader$gate_q$1 gate_q$1(
+        .d(gate_q$1$d),
+        .q(gate_q$1$q),
+        .clock(gate_q$1$clock)
+    );
+    top$lanes$1$shader$gate_q$2 gate_q$2(
+        .d(gate_q$2$d),
+        .q(gate_q$2$q),
+        .clock(gate_q$2$clock)
+    );
+    top$lanes$1$shader$gate_q$3 gate_q$3(
+        .d(gate_q$3$d),
+        .q(gate_q$3$q),
+        .clock(gate_q$3$clock)
+    );
+    top$lanes$1$shader$alpha_q$0 alpha_q$0(
+        .d(alpha_q$0$d),
+        .q(alpha_q$0$q),
+        .clock(alpha_q$0$clock)
+    );
+    top$lanes$1$shader$alpha_q$1 alpha_q$1(
+        .d(alpha_q$1$d),
+        .q(alpha_q$1$q),
+        .clock(alpha_q$1$clock)
+    );
+    top$lanes$1$shader$value_q$0 value_q$0(
+        .d(value_q$0$d),
+        .q(value_q$0$q),
+        .clock(value_q$0$clock)
+    );
+    top$lanes$1$shader$value_q$1 value_q$1(
+        .d(value_q$1$d),
+        .q(value_q$1$q),
+        .clock(value_q$1$clock)
+    );
+    top$lanes$1$shader$value_q$2 value_q$2(
+        .d(value_q$2$d),
+        .q(value_q$2$q),
+        .clock(value_q$2$clock)
+    );
+    top$lanes$1$shader$value_q$3 value_q$3(
+        .d(value_q$3$d),
+        .q(value_q$3$q),
+        .clock(value_q$3$clock)
+    );
+    top$lanes$1$shader$value_q$4 value_q$4(
+        .d(value_q$4$d),
+        .q(value_q$4$q),
+        .clock(value_q$4$clock)
+    );
+    top$lanes$1$shader$value_q$5 value_q$5(
+        .d(value_q$5$d),
+        .q(value_q$5$q),
+        .clock(value_q$5$clock)
+    );
+    top$lanes$1$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$1$shader$valid_q$0 valid_q$0(
+        .d(valid_q$0$d),
+        .q(valid_q$0$q),
+        .clock(valid_q$0$clock)
+    );
+    top$lanes$1$shader$valid_q$1 valid_q$1(
+        .d(valid_q$1$d),
+        .q(valid_q$1$q),
+        .clock(valid_q$1$clock)
+    );
+    top$lanes$1$shader$valid_q$2 valid_q$2(
+        .d(valid_q$2$d),
+        .q(valid_q$2$q),
+        .clock(valid_q$2$clock)
+    );
+    top$lanes$1$shader$valid_q$3 valid_q$3(
+        .d(valid_q$3$d),
+        .q(valid_q$3$q),
+        .clock(valid_q$3$clock)
+    );
+    top$lanes$1$shader$valid_q$4 valid_q$4(
+        .d(valid_q$4$d),
+        .q(valid_q$4$q),
+        .clock(valid_q$4$clock)
+    );
+    top$lanes$1$shader$valid_q$5 valid_q$5(
+        .d(valid_q$5$d),
+        .q(valid_q$5$q),
+        .clock(valid_q$5$clock)
+    );
+    top$lanes$1$shader$valid_q$6 valid_q$6(
+        .d(valid_q$6$d),
+        .q(valid_q$6$q),
+        .clock(valid_q$6$clock)
+    );
+    top$lanes$1$shader$shaded_q$0 shaded_q$0(
+        .d(shaded_q$0$d),
+        .q(shaded_q$0$q),
+        .clock(shaded_q$0$clock)
+    );
+    top$lanes$1$shader$shaded_q$1 shaded_q$1(
+        .d(shaded_q$1$d),
+        .q(shaded_q$1$q),
+        .clock(shaded_q$1$clock)
+    );
+    top$lanes$1$shader$shaded_q$2 shaded_q$2(
+        .d(shaded_q$2$d),
+        .q(shaded_q$2$q),
+        .clock(shaded_q$2$clock)
     );
     top$lanes$1$shader$r_q r_q(
         .d(r_q$d),
@@ -742,11 +1540,6 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         .q(a_q$q),
         .clock(a_q$clock)
     );
-    top$lanes$1$shader$valid_q valid_q(
-        .d(valid_q$d),
-        .q(valid_q$q),
-        .clock(valid_q$clock)
-    );
     
     // Update code
     reg  [31:0] r_pass;
@@ -759,214 +1552,162 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        valid_q$clock = clock;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
         a_q$d = a_q$q;
-        valid_q$d = valid_q$q;
+        lut$clock = clock;
+        lut$host_write = host_write;
+        lut$host_address = host_address;
+        lut$host_data = host_data;
+        alpha_gm$clock = clock;
+        alpha_gm$host_write = host_write;
+        alpha_gm$host_address = host_address;
+        alpha_gm$host_data = host_data;
+        gm_bin$clock = clock;
+        gm_bin$host_write = host_write;
+        gm_bin$host_address = host_address;
+        gm_bin$host_data = host_data;
+        lighting$clock = clock;
+        lighting$host_write = host_write;
+        lighting$host_address = host_address;
+        lighting$host_data = host_data;
+        normal$clock = clock;
+        gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        lut$address = row;
-        alpha = 16'(lut$data >> 'h30);
-        sq_x$m = gx_mag;
-        sq_y$m = gy_mag;
-        sq_z$m = gz_mag;
-        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
-        gm_bin = sqrt$root >> gm_shift;
-        if (gm_bin > 'hf) begin
-            gm_bin = 'hf;
+        if (gate) begin
+            row = 'h0;
         end
-        alpha_gm$address = (16'(row) << 'h4) | 16'(gm_bin);
+        lut$address = row;
+        normal$neg$0 = gx_neg & ~gate;
+        normal$neg$1 = gy_neg & ~gate;
+        normal$neg$2 = gz_neg & ~gate;
+        mag$0 = gx_mag;
+        mag$1 = gy_mag;
+        mag$2 = gz_mag;
+        if (gate) begin
+            mag$0 = 'h0;
+            mag$1 = 'h0;
+            mag$2 = 'h0;
+        end
+        normal$mag$0 = mag$0;
+        gm_bin$mag$0 = mag$0;
+        normal$mag$1 = mag$1;
+        gm_bin$mag$1 = mag$1;
+        normal$mag$2 = mag$2;
+        gm_bin$mag$2 = mag$2;
+        lighting$q_neg$0 = normal$q_neg$0;
+        lighting$q_mag$0 = normal$q_mag$0;
+        lighting$q_neg$1 = normal$q_neg$1;
+        lighting$q_mag$1 = normal$q_mag$1;
+        lighting$q_neg$2 = normal$q_neg$2;
+        lighting$q_mag$2 = normal$q_mag$2;
+        row_q$0$clock = clock;
+        row_q$1$clock = clock;
+        row_q$2$clock = clock;
+        row_q$0$d = row;
+        row_q$1$d = row_q$0$q;
+        row_q$2$d = row_q$1$q;
+        lut_q$0$clock = clock;
+        gate_q$0$clock = clock;
+        lut_q$1$clock = clock;
+        gate_q$1$clock = clock;
+        lut_q$2$clock = clock;
+        gate_q$2$clock = clock;
+        lut_q$3$clock = clock;
+        gate_q$3$clock = clock;
+        lut_q$0$d = lut$data;
+        gate_q$0$d = gate;
+        lut_q$1$d = lut_q$0$q;
+        gate_q$1$d = gate_q$0$q;
+        lut_q$2$d = lut_q$1$q;
+        gate_q$2$d = gate_q$1$q;
+        lut_q$3$d = lut_q$2$q;
+        gate_q$3$d = gate_q$2$q;
+        value_q$0$clock = clock;
+        valid_q$0$clock = clock;
+        value_q$1$clock = clock;
+        valid_q$1$clock = clock;
+        value_q$2$clock = clock;
+        valid_q$2$clock = clock;
+        value_q$3$clock = clock;
+        valid_q$3$clock = clock;
+        value_q$4$clock = clock;
+        valid_q$4$clock = clock;
+        value_q$5$clock = clock;
+        valid_q$5$clock = clock;
+        value_q$6$clock = clock;
+        valid_q$6$clock = clock;
+        value_q$0$d = value;
+        valid_q$0$d = ~invalid | xray;
+        value_q$1$d = value_q$0$q;
+        valid_q$1$d = valid_q$0$q;
+        value_q$2$d = value_q$1$q;
+        valid_q$2$d = valid_q$1$q;
+        value_q$3$d = value_q$2$q;
+        valid_q$3$d = valid_q$2$q;
+        value_q$4$d = value_q$3$q;
+        valid_q$4$d = valid_q$3$q;
+        value_q$5$d = value_q$4$q;
+        valid_q$5$d = valid_q$4$q;
+        value_q$6$d = value_q$5$q;
+        valid_q$6$d = valid_q$5$q;
+        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (invalid | (edge_transparent & at_edge)) begin
+        if (gate_q$3$q) begin
             alpha = 'h0;
         end
-        m = gx_mag;
-        if (gy_mag > m) begin
-            m = gy_mag;
-        end
-        if (gz_mag > m) begin
-            m = gz_mag;
-        end
-        bl = 'h0;
-        if (m[0]) begin
-            bl = bit_len$0;
-        end
-        if (m[1]) begin
-            bl = bit_len$1;
-        end
-        if (m[2]) begin
-            bl = bit_len$2;
-        end
-        if (m[3]) begin
-            bl = bit_len$3;
-        end
-        if (m[4]) begin
-            bl = bit_len$4;
-        end
-        if (m[5]) begin
-            bl = bit_len$5;
-        end
-        if (m[6]) begin
-            bl = bit_len$6;
-        end
-        if (m[7]) begin
-            bl = bit_len$7;
-        end
-        if (m[8]) begin
-            bl = bit_len$8;
-        end
-        if (m[9]) begin
-            bl = bit_len$9;
-        end
-        if (m[10]) begin
-            bl = bit_len$10;
-        end
-        if (m[11]) begin
-            bl = bit_len$11;
-        end
-        if (m[12]) begin
-            bl = bit_len$12;
-        end
-        if (m[13]) begin
-            bl = bit_len$13;
-        end
-        if (m[14]) begin
-            bl = bit_len$14;
-        end
-        if (m[15]) begin
-            bl = bit_len$15;
-        end
-        if (m[16]) begin
-            bl = bit_len$16;
-        end
-        if (m[17]) begin
-            bl = bit_len$17;
-        end
-        if (m[18]) begin
-            bl = bit_len$18;
-        end
-        if (m[19]) begin
-            bl = bit_len$19;
-        end
-        if (m[20]) begin
-            bl = bit_len$20;
-        end
-        if (m[21]) begin
-            bl = bit_len$21;
-        end
-        if (m[22]) begin
-            bl = bit_len$22;
-        end
-        if (m[23]) begin
-            bl = bit_len$23;
-        end
-        if (m[24]) begin
-            bl = bit_len$24;
-        end
-        if (m[25]) begin
-            bl = bit_len$25;
-        end
-        if (m[26]) begin
-            bl = bit_len$26;
-        end
-        if (m[27]) begin
-            bl = bit_len$27;
-        end
-        if (m[28]) begin
-            bl = bit_len$28;
-        end
-        if (m[29]) begin
-            bl = bit_len$29;
-        end
-        if (m[30]) begin
-            bl = bit_len$30;
-        end
-        if (m[31]) begin
-            bl = bit_len$31;
-        end
-        s = 'h0;
-        if (bl > 'h4) begin
-            s = bl - 'h4;
-        end
-        half = 'h0;
-        if (s > 'h0) begin
-            half = (32'('h1) << s) >> 'h1;
-        end
-        qx = (gx_mag + half) >> s;
-        if (gx_neg & (s > 'h0)) begin
-            qx = (gx_mag + half - 'h1) >> s;
-        end
-        qy = (gy_mag + half) >> s;
-        if (gy_neg & (s > 'h0)) begin
-            qy = (gy_mag + half - 'h1) >> s;
-        end
-        qz = (gz_mag + half) >> s;
-        if (gz_neg & (s > 'h0)) begin
-            qz = (gz_mag + half - 'h1) >> s;
-        end
-        if (qx > 'hf) begin
-            qx = 'hf;
-        end
-        if (qy > 'hf) begin
-            qy = 'hf;
-        end
-        if (qz > 'hf) begin
-            qz = 'hf;
-        end
-        ix = 5'(qx);
-        if (gx_neg) begin
-            ix = 5'('h20 - qx);
-        end
-        iy = 5'(qy);
-        if (gy_neg) begin
-            iy = 5'('h20 - qy);
-        end
-        iz = 5'(qz);
-        if (gz_neg) begin
-            iz = 5'('h20 - qz);
-        end
-        reflectance$address = 15'(ix) | (15'(iy) << 'h5) | (15'(iz) << 'ha);
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$0$d = alpha;
+        alpha_q$1$d = alpha_q$0$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
-            diffuse = 16'(reflectance$data);
-            specular = 16'(reflectance$data >> 'h10);
+            diffuse = lighting$diffuse;
+            specular = lighting$specular;
         end
-        lit_r$a = 16'(lut$data);
-        lit_g$a = 16'(lut$data >> 'h10);
-        lit_b$a = 16'(lut$data >> 'h20);
+        lit_r$a = 16'(lut_q$3$q);
+        lit_g$a = 16'(lut_q$3$q >> 'h10);
+        lit_b$a = 16'(lut_q$3$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
         sum_r = 32'(lit_r$y) + 32'(specular);
         sum_g = 32'(lit_g$y) + 32'(specular);
         sum_b = 32'(lit_b$y) + 32'(specular);
-        mul_r$a = 16'(sum_r);
+        shaded_q$0$clock = clock;
+        shaded_q$1$clock = clock;
+        shaded_q$2$clock = clock;
+        shaded_q$0$d = 16'(sum_r);
         if (sum_r > 32'(m_max)) begin
-            mul_r$a = m_max;
+            shaded_q$0$d = m_max;
         end
-        mul_g$a = 16'(sum_g);
+        shaded_q$1$d = 16'(sum_g);
         if (sum_g > 32'(m_max)) begin
-            mul_g$a = m_max;
+            shaded_q$1$d = m_max;
         end
-        mul_b$a = 16'(sum_b);
+        shaded_q$2$d = 16'(sum_b);
         if (sum_b > 32'(m_max)) begin
-            mul_b$a = m_max;
+            shaded_q$2$d = m_max;
         end
-        mul_r$b = alpha;
-        mul_g$b = alpha;
-        mul_b$b = alpha;
+        mul_r$a = shaded_q$0$q;
+        mul_g$a = shaded_q$1$q;
+        mul_b$a = shaded_q$2$q;
+        mul_r$b = alpha_q$1$q;
+        mul_g$b = alpha_q$1$q;
+        mul_b$b = alpha_q$1$q;
         if (scalar) begin
-            r_q$d = value;
+            r_q$d = value_q$5$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha;
+            r_q$d = alpha_q$1$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -975,11 +1716,7 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha;
-        end
-        valid_q$d = ~invalid;
-        if (xray) begin
-            valid_q$d = 1'b1;
+            a_q$d = alpha_q$1$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -991,7 +1728,7 @@ module top$lanes$1$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$q;
+            valid_pass = valid_q$6$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1018,6 +1755,40 @@ module top$lanes$1$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$a_q
+module top$lanes$1$shader$alpha_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$0
+module top$lanes$1$shader$alpha_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$1
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1052,6 +1823,142 @@ module top$lanes$1$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$g_q
+module top$lanes$1$shader$gate_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$0
+module top$lanes$1$shader$gate_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$1
+module top$lanes$1$shader$gate_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$2
+module top$lanes$1$shader$gate_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$3
+module top$lanes$1$shader$lut_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$0
+module top$lanes$1$shader$lut_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$1
+module top$lanes$1$shader$lut_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$2
+module top$lanes$1$shader$lut_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$3
 module top$lanes$1$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1069,79 +1976,109 @@ module top$lanes$1$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$r_q
-module top$lanes$1$shader$sq_x(m,y);
+module top$lanes$1$shader$row_q$0(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$1$shader$sq_x
-module top$lanes$1$shader$sq_y(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$0
+module top$lanes$1$shader$row_q$1(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$1$shader$sq_y
-module top$lanes$1$shader$sq_z(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$1
+module top$lanes$1$shader$row_q$2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$1$shader$sq_z
-module top$lanes$1$shader$valid_q(d,q,clock);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$2
+module top$lanes$1$shader$shaded_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$shaded_q$0
+module top$lanes$1$shader$shaded_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$shaded_q$1
+module top$lanes$1$shader$shaded_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$shaded_q$2
+module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1157,11 +2094,235 @@ module top$lanes$1$shader$valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$shader$valid_q
-module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
+endmodule // top$lanes$1$shader$valid_q$0
+module top$lanes$1$shader$valid_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$1
+module top$lanes$1$shader$valid_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$2
+module top$lanes$1$shader$valid_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$3
+module top$lanes$1$shader$valid_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$4
+module top$lanes$1$shader$valid_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$5
+module top$lanes$1$shader$valid_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$6
+module top$lanes$1$shader$value_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$0
+module top$lanes$1$shader$value_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$1
+module top$lanes$1$shader$value_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$2
+module top$lanes$1$shader$value_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$3
+module top$lanes$1$shader$value_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$4
+module top$lanes$1$shader$value_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$5
+module top$lanes$1$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$6
+module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  [15:0] value;
     input wire  invalid;
     input wire  at_edge;
@@ -1179,71 +2340,141 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Constant declarations
     localparam  gm_on = 1'b0;
-    localparam  gm_shift = 8'h0;
     localparam  scalar = 1'b1;
     localparam  xray = 1'b0;
     localparam  shaded = 1'b0;
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
-    localparam  bit_len$0 = 8'h1;
-    localparam  bit_len$1 = 8'h2;
-    localparam  bit_len$2 = 8'h3;
-    localparam  bit_len$3 = 8'h4;
-    localparam  bit_len$4 = 8'h5;
-    localparam  bit_len$5 = 8'h6;
-    localparam  bit_len$6 = 8'h7;
-    localparam  bit_len$7 = 8'h8;
-    localparam  bit_len$8 = 8'h9;
-    localparam  bit_len$9 = 8'ha;
-    localparam  bit_len$10 = 8'hb;
-    localparam  bit_len$11 = 8'hc;
-    localparam  bit_len$12 = 8'hd;
-    localparam  bit_len$13 = 8'he;
-    localparam  bit_len$14 = 8'hf;
-    localparam  bit_len$15 = 8'h10;
-    localparam  bit_len$16 = 8'h11;
-    localparam  bit_len$17 = 8'h12;
-    localparam  bit_len$18 = 8'h13;
-    localparam  bit_len$19 = 8'h14;
-    localparam  bit_len$20 = 8'h15;
-    localparam  bit_len$21 = 8'h16;
-    localparam  bit_len$22 = 8'h17;
-    localparam  bit_len$23 = 8'h18;
-    localparam  bit_len$24 = 8'h19;
-    localparam  bit_len$25 = 8'h1a;
-    localparam  bit_len$26 = 8'h1b;
-    localparam  bit_len$27 = 8'h1c;
-    localparam  bit_len$28 = 8'h1d;
-    localparam  bit_len$29 = 8'h1e;
-    localparam  bit_len$30 = 8'h1f;
-    localparam  bit_len$31 = 8'h20;
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  lut$clock;
+    reg  lut$host_write;
+    reg  [23:0] lut$host_address;
+    reg  [63:0] lut$host_data;
     reg  [11:0] lut$address;
     wire  [63:0] lut$data = 'h0;
-    reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data = 'h0;
+    reg  alpha_gm$clock;
+    reg  alpha_gm$host_write;
+    reg  [23:0] alpha_gm$host_address;
+    reg  [63:0] alpha_gm$host_data;
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
-    reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root = 'h0;
-    reg  [31:0] sq_x$m;
-    wire  [63:0] sq_x$y;
-    reg  [31:0] sq_y$m;
-    wire  [63:0] sq_y$y;
-    reg  [31:0] sq_z$m;
-    wire  [63:0] sq_z$y;
-    reg  [15:0] mul_r$a;
-    reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y = 'h0;
-    reg  [15:0] mul_g$a;
-    reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y = 'h0;
-    reg  [15:0] mul_b$a;
-    reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y = 'h0;
+    reg  gm_bin$clock;
+    reg  gm_bin$host_write;
+    reg  [23:0] gm_bin$host_address;
+    reg  [63:0] gm_bin$host_data;
+    reg  [31:0] gm_bin$mag$0;
+    reg  [31:0] gm_bin$mag$1;
+    reg  [31:0] gm_bin$mag$2;
+    wire  [3:0] gm_bin$bin = 'h0;
+    reg  normal$clock;
+    reg  normal$neg$0;
+    reg  normal$neg$1;
+    reg  normal$neg$2;
+    reg  [31:0] normal$mag$0;
+    reg  [31:0] normal$mag$1;
+    reg  [31:0] normal$mag$2;
+    wire  normal$q_neg$0 = 'h0;
+    wire  normal$q_neg$1 = 'h0;
+    wire  normal$q_neg$2 = 'h0;
+    wire  [3:0] normal$q_mag$0 = 'h0;
+    wire  [3:0] normal$q_mag$1 = 'h0;
+    wire  [3:0] normal$q_mag$2 = 'h0;
+    reg  lighting$clock;
+    reg  lighting$host_write;
+    reg  [23:0] lighting$host_address;
+    reg  [63:0] lighting$host_data;
+    reg  lighting$q_neg$0;
+    reg  lighting$q_neg$1;
+    reg  lighting$q_neg$2;
+    reg  [3:0] lighting$q_mag$0;
+    reg  [3:0] lighting$q_mag$1;
+    reg  [3:0] lighting$q_mag$2;
+    wire  [15:0] lighting$diffuse = 'h0;
+    wire  [15:0] lighting$specular = 'h0;
+    reg  [11:0] row_q$0$d;
+    wire  [11:0] row_q$0$q;
+    reg  row_q$0$clock;
+    reg  [11:0] row_q$1$d;
+    wire  [11:0] row_q$1$q;
+    reg  row_q$1$clock;
+    reg  [11:0] row_q$2$d;
+    wire  [11:0] row_q$2$q;
+    reg  row_q$2$clock;
+    reg  [63:0] lut_q$0$d;
+    wire  [63:0] lut_q$0$q;
+    reg  lut_q$0$clock;
+    reg  [63:0] lut_q$1$d;
+    wire  [63:0] lut_q$1$q;
+    reg  lut_q$1$clock;
+    reg  [63:0] lut_q$2$d;
+    wire  [63:0] lut_q$2$q;
+    reg  lut_q$2$clock;
+    reg  [63:0] lut_q$3$d;
+    wire  [63:0] lut_q$3$q;
+    reg  lut_q$3$clock;
+    reg  gate_q$0$d;
+    wire  gate_q$0$q;
+    reg  gate_q$0$clock;
+    reg  gate_q$1$d;
+    wire  gate_q$1$q;
+    reg  gate_q$1$clock;
+    reg  gate_q$2$d;
+    wire  gate_q$2$q;
+    reg  gate_q$2$clock;
+    reg  gate_q$3$d;
+    wire  gate_q$3$q;
+    reg  gate_q$3$clock;
+    reg  [15:0] alpha_q$0$d;
+    wire  [15:0] alpha_q$0$q;
+    reg  alpha_q$0$clock;
+    reg  [15:0] alpha_q$1$d;
+    wire  [15:0] alpha_q$1$q;
+    reg  alpha_q$1$clock;
+    reg  [15:0] value_q$0$d;
+    wire  [15:0] value_q$0$q;
+    reg  value_q$0$clock;
+    reg  [15:0] value_q$1$d;
+    wire  [15:0] value_q$1$q;
+    reg  value_q$1$clock;
+    reg  [15:0] value_q$2$d;
+    wire  [15:0] value_q$2$q;
+    reg  value_q$2$clock;
+    reg  [15:0] value_q$3$d;
+    wire  [15:0] value_q$3$q;
+    reg  value_q$3$clock;
+    reg  [15:0] value_q$4$d;
+    wire  [15:0] value_q$4$q;
+    reg  value_q$4$clock;
+    reg  [15:0] value_q$5$d;
+    wire  [15:0] value_q$5$q;
+    reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  valid_q$0$d;
+    wire  valid_q$0$q;
+    reg  valid_q$0$clock;
+    reg  valid_q$1$d;
+    wire  valid_q$1$q;
+    reg  valid_q$1$clock;
+    reg  valid_q$2$d;
+    wire  valid_q$2$q;
+    reg  valid_q$2$clock;
+    reg  valid_q$3$d;
+    wire  valid_q$3$q;
+    reg  valid_q$3$clock;
+    reg  valid_q$4$d;
+    wire  valid_q$4$q;
+    reg  valid_q$4$clock;
+    reg  valid_q$5$d;
+    wire  valid_q$5$q;
+    reg  valid_q$5$clock;
+    reg  valid_q$6$d;
+    wire  valid_q$6$q;
+    reg  valid_q$6$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
@@ -1253,6 +2484,24 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
+    reg  [15:0] shaded_q$0$d;
+    wire  [15:0] shaded_q$0$q;
+    reg  shaded_q$0$clock;
+    reg  [15:0] shaded_q$1$d;
+    wire  [15:0] shaded_q$1$q;
+    reg  shaded_q$1$clock;
+    reg  [15:0] shaded_q$2$d;
+    wire  [15:0] shaded_q$2$q;
+    reg  shaded_q$2$clock;
+    reg  [15:0] mul_r$a;
+    reg  [15:0] mul_r$b;
+    wire  [15:0] mul_r$y = 'h0;
+    reg  [15:0] mul_g$a;
+    reg  [15:0] mul_g$b;
+    wire  [15:0] mul_g$y = 'h0;
+    reg  [15:0] mul_b$a;
+    reg  [15:0] mul_b$b;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -1265,24 +2514,14 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] a_q$d;
     wire  [15:0] a_q$q;
     reg  a_q$clock;
-    reg  valid_q$d;
-    wire  valid_q$q;
-    reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] gm_bin;
     reg  [11:0] row;
+    reg  gate;
+    reg  [31:0] mag$0;
+    reg  [31:0] mag$1;
+    reg  [31:0] mag$2;
     reg  [15:0] alpha;
-    reg  [31:0] m;
-    reg  [7:0] bl;
-    reg  [7:0] s;
-    reg  [31:0] half;
-    reg  [31:0] qx;
-    reg  [31:0] qy;
-    reg  [31:0] qz;
-    reg  [4:0] ix;
-    reg  [4:0] iy;
-    reg  [4:0] iz;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
     reg  [31:0] sum_r;
@@ -1290,17 +2529,155 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$2$shader$sq_x sq_x(
-        .m(sq_x$m),
-        .y(sq_x$y)
+    top$lanes$2$shader$row_q$0 row_q$0(
+        .d(row_q$0$d),
+        .q(row_q$0$q),
+        .clock(row_q$0$clock)
     );
-    top$lanes$2$shader$sq_y sq_y(
-        .m(sq_y$m),
-        .y(sq_y$y)
+    top$lanes$2$shader$row_q$1 row_q$1(
+        .d(row_q$1$d),
+        .q(row_q$1$q),
+        .clock(row_q$1$clock)
     );
-    top$lanes$2$shader$sq_z sq_z(
-        .m(sq_z$m),
-        .y(sq_z$y)
+    top$lanes$2$shader$row_q$2 row_q$2(
+        .d(row_q$2$d),
+        .q(row_q$2$q),
+        .clock(row_q$2$clock)
+    );
+    top$lanes$2$shader$lut_q$0 lut_q$0(
+        .d(lut_q$0$d),
+        .q(lut_q$0$q),
+        .clock(lut_q$0$clock)
+    );
+    top$lanes$2$shader$lut_q$1 lut_q$1(
+        .d(lut_q$1$d),
+        .q(lut_q$1$q),
+        .clock(lut_q$1$clock)
+    );
+    top$lanes$2$shader$lut_q$2 lut_q$2(
+        .d(lut_q$2$d),
+        .q(lut_q$2$q),
+        .clock(lut_q$2$clock)
+    );
+    top$lanes$2$shader$lut_q$3 lut_q$3(
+        .d(lut_q$3$d),
+        .q(lut_q$3$q),
+        .clock(lut_q$3$clock)
+    );
+    top$lanes$2$shader$gate_q$0 gate_q$0(
+        .d(gate_q$0$d),
+        .q(gate_q$0$q),
+        .clock(gate_q$0$clock)
+    );
+    top$lanes$2$shader$gate_q$1 gate_q$1(
+        .d(gate_q$1$d),
+        .q(gate_q$1$q),
+        .clock(gate_q$1$clock)
+    );
+    top$lanes$2$shader$gate_q$2 gate_q$2(
+        .d(gate_q$2$d),
+        .q(gate_q$2$q),
+        .clock(gate_q$2$clock)
+    );
+    top$lanes$2$shader$gate_q$3 gate_q$3(
+        .d(gate_q$3$d),
+        .q(gate_q$3$q),
+        .clock(gate_q$3$clock)
+    );
+    top$lanes$2$shader$alpha_q$0 alpha_q$0(
+        .d(alpha_q$0$d),
+        .q(alpha_q$0$q),
+        .clock(alpha_q$0$clock)
+    );
+    top$lanes$2$shader$alpha_q$1 alpha_q$1(
+        .d(alpha_q$1$d),
+        .q(alpha_q$1$q),
+        .clock(alpha_q$1$clock)
+    );
+    top$lanes$2$shader$value_q$0 value_q$0(
+        .d(value_q$0$d),
+        .q(value_q$0$q),
+        .clock(value_q$0$clock)
+    );
+    top$lanes$2$shader$value_q$1 value_q$1(
+        .d(value_q$1$d),
+        .q(value_q$1$q),
+        .clock(value_q$1$clock)
+    );
+    top$lanes$2$shader$value_q$2 value_q$2(
+        .d(value_q$2$d),
+        .q(value_q$2$q),
+        .clock(value_q$2$clock)
+    );
+    top$lanes$2$shader$value_q$3 value_q$3(
+        .d(value_q$3$d),
+        .q(value_q$3$q),
+        .clock(value_q$3$clock)
+    );
+    top$lanes$2$shader$value_q$4 value_q$4(
+        .d(value_q$4$d),
+        .q(value_q$4$q),
+        .clock(value_q$4$clock)
+    );
+    top$lanes$2$shader$value_q$5 value_q$5(
+        .d(value_q$5$d),
+        .q(value_q$5$q),
+        .clock(value_q$5$clock)
+    );
+    top$lanes$2$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$2$shader$valid_q$0 valid_q$0(
+        .d(valid_q$0$d),
+        .q(valid_q$0$q),
+        .clock(valid_q$0$clock)
+    );
+    top$lanes$2$shader$valid_q$1 valid_q$1(
+        .d(valid_q$1$d),
+        .q(valid_q$1$q),
+        .clock(valid_q$1$clock)
+    );
+    top$lanes$2$shader$valid_q$2 valid_q$2(
+        .d(valid_q$2$d),
+        .q(valid_q$2$q),
+        .clock(valid_q$2$clock)
+    );
+    top$lanes$2$shader$valid_q$3 valid_q$3(
+        .d(valid_q$3$d),
+        .q(valid_q$3$q),
+        .clock(valid_q$3$clock)
+    );
+    top$lanes$2$shader$valid_q$4 valid_q$4(
+        .d(valid_q$4$d),
+        .q(valid_q$4$q),
+        .clock(valid_q$4$clock)
+    );
+    top$lanes$2$shader$valid_q$5 valid_q$5(
+        .d(valid_q$5$d),
+        .q(valid_q$5$q),
+        .clock(valid_q$5$clock)
+    );
+    top$lanes$2$shader$valid_q$6 valid_q$6(
+        .d(valid_q$6$d),
+        .q(valid_q$6$q),
+        .clock(valid_q$6$clock)
+    );
+    top$lanes$2$shader$shaded_q$0 shaded_q$0(
+        .d(shaded_q$0$d),
+        .q(shaded_q$0$q),
+        .clock(shaded_q$0$clock)
+    );
+    top$lanes$2$shader$shaded_q$1 shaded_q$1(
+        .d(shaded_q$1$d),
+        .q(shaded_q$1$q),
+        .clock(shaded_q$1$clock)
+    );
+    top$lanes$2$shader$shaded_q$2 shaded_q$2(
+        .d(shaded_q$2$d),
+        .q(shaded_q$2$q),
+        .clock(shaded_q$2$clock)
     );
     top$lanes$2$shader$r_q r_q(
         .d(r_q$d),
@@ -1322,11 +2699,6 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         .q(a_q$q),
         .clock(a_q$clock)
     );
-    top$lanes$2$shader$valid_q valid_q(
-        .d(valid_q$d),
-        .q(valid_q$q),
-        .clock(valid_q$clock)
-    );
     
     // Update code
     reg  [31:0] r_pass;
@@ -1339,214 +2711,162 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        valid_q$clock = clock;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
         a_q$d = a_q$q;
-        valid_q$d = valid_q$q;
+        lut$clock = clock;
+        lut$host_write = host_write;
+        lut$host_address = host_address;
+        lut$host_data = host_data;
+        alpha_gm$clock = clock;
+        alpha_gm$host_write = host_write;
+        alpha_gm$host_address = host_address;
+        alpha_gm$host_data = host_data;
+        gm_bin$clock = clock;
+        gm_bin$host_write = host_write;
+        gm_bin$host_address = host_address;
+        gm_bin$host_data = host_data;
+        lighting$clock = clock;
+        lighting$host_write = host_write;
+        lighting$host_address = host_address;
+        lighting$host_data = host_data;
+        normal$clock = clock;
+        gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        lut$address = row;
-        alpha = 16'(lut$data >> 'h30);
-        sq_x$m = gx_mag;
-        sq_y$m = gy_mag;
-        sq_z$m = gz_mag;
-        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
-        gm_bin = sqrt$root >> gm_shift;
-        if (gm_bin > 'hf) begin
-            gm_bin = 'hf;
+        if (gate) begin
+            row = 'h0;
         end
-        alpha_gm$address = (16'(row) << 'h4) | 16'(gm_bin);
+        lut$address = row;
+        normal$neg$0 = gx_neg & ~gate;
+        normal$neg$1 = gy_neg & ~gate;
+        normal$neg$2 = gz_neg & ~gate;
+        mag$0 = gx_mag;
+        mag$1 = gy_mag;
+        mag$2 = gz_mag;
+        if (gate) begin
+            mag$0 = 'h0;
+            mag$1 = 'h0;
+            mag$2 = 'h0;
+        end
+        normal$mag$0 = mag$0;
+        gm_bin$mag$0 = mag$0;
+        normal$mag$1 = mag$1;
+        gm_bin$mag$1 = mag$1;
+        normal$mag$2 = mag$2;
+        gm_bin$mag$2 = mag$2;
+        lighting$q_neg$0 = normal$q_neg$0;
+        lighting$q_mag$0 = normal$q_mag$0;
+        lighting$q_neg$1 = normal$q_neg$1;
+        lighting$q_mag$1 = normal$q_mag$1;
+        lighting$q_neg$2 = normal$q_neg$2;
+        lighting$q_mag$2 = normal$q_mag$2;
+        row_q$0$clock = clock;
+        row_q$1$clock = clock;
+        row_q$2$clock = clock;
+        row_q$0$d = row;
+        row_q$1$d = row_q$0$q;
+        row_q$2$d = row_q$1$q;
+        lut_q$0$clock = clock;
+        gate_q$0$clock = clock;
+        lut_q$1$clock = clock;
+        gate_q$1$clock = clock;
+        lut_q$2$clock = clock;
+        gate_q$2$clock = clock;
+        lut_q$3$clock = clock;
+        gate_q$3$clock = clock;
+        lut_q$0$d = lut$data;
+        gate_q$0$d = gate;
+        lut_q$1$d = lut_q$0$q;
+        gate_q$1$d = gate_q$0$q;
+        lut_q$2$d = lut_q$1$q;
+        gate_q$2$d = gate_q$1$q;
+        lut_q$3$d = lut_q$2$q;
+        gate_q$3$d = gate_q$2$q;
+        value_q$0$clock = clock;
+        valid_q$0$clock = clock;
+        value_q$1$clock = clock;
+        valid_q$1$clock = clock;
+        value_q$2$clock = clock;
+        valid_q$2$clock = clock;
+        value_q$3$clock = clock;
+        valid_q$3$clock = clock;
+        value_q$4$clock = clock;
+        valid_q$4$clock = clock;
+        value_q$5$clock = clock;
+        valid_q$5$clock = clock;
+        value_q$6$clock = clock;
+        valid_q$6$clock = clock;
+        value_q$0$d = value;
+        valid_q$0$d = ~invalid | xray;
+        value_q$1$d = value_q$0$q;
+        valid_q$1$d = valid_q$0$q;
+        value_q$2$d = value_q$1$q;
+        valid_q$2$d = valid_q$1$q;
+        value_q$3$d = value_q$2$q;
+        valid_q$3$d = valid_q$2$q;
+        value_q$4$d = value_q$3$q;
+        valid_q$4$d = valid_q$3$q;
+        value_q$5$d = value_q$4$q;
+        valid_q$5$d = valid_q$4$q;
+        value_q$6$d = value_q$5$q;
+        valid_q$6$d = valid_q$5$q;
+        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (invalid | (edge_transparent & at_edge)) begin
+        if (gate_q$3$q) begin
             alpha = 'h0;
         end
-        m = gx_mag;
-        if (gy_mag > m) begin
-            m = gy_mag;
-        end
-        if (gz_mag > m) begin
-            m = gz_mag;
-        end
-        bl = 'h0;
-        if (m[0]) begin
-            bl = bit_len$0;
-        end
-        if (m[1]) begin
-            bl = bit_len$1;
-        end
-        if (m[2]) begin
-            bl = bit_len$2;
-        end
-        if (m[3]) begin
-            bl = bit_len$3;
-        end
-        if (m[4]) begin
-            bl = bit_len$4;
-        end
-        if (m[5]) begin
-            bl = bit_len$5;
-        end
-        if (m[6]) begin
-            bl = bit_len$6;
-        end
-        if (m[7]) begin
-            bl = bit_len$7;
-        end
-        if (m[8]) begin
-            bl = bit_len$8;
-        end
-        if (m[9]) begin
-            bl = bit_len$9;
-        end
-        if (m[10]) begin
-            bl = bit_len$10;
-        end
-        if (m[11]) begin
-            bl = bit_len$11;
-        end
-        if (m[12]) begin
-            bl = bit_len$12;
-        end
-        if (m[13]) begin
-            bl = bit_len$13;
-        end
-        if (m[14]) begin
-            bl = bit_len$14;
-        end
-        if (m[15]) begin
-            bl = bit_len$15;
-        end
-        if (m[16]) begin
-            bl = bit_len$16;
-        end
-        if (m[17]) begin
-            bl = bit_len$17;
-        end
-        if (m[18]) begin
-            bl = bit_len$18;
-        end
-        if (m[19]) begin
-            bl = bit_len$19;
-        end
-        if (m[20]) begin
-            bl = bit_len$20;
-        end
-        if (m[21]) begin
-            bl = bit_len$21;
-        end
-        if (m[22]) begin
-            bl = bit_len$22;
-        end
-        if (m[23]) begin
-            bl = bit_len$23;
-        end
-        if (m[24]) begin
-            bl = bit_len$24;
-        end
-        if (m[25]) begin
-            bl = bit_len$25;
-        end
-        if (m[26]) begin
-            bl = bit_len$26;
-        end
-        if (m[27]) begin
-            bl = bit_len$27;
-        end
-        if (m[28]) begin
-            bl = bit_len$28;
-        end
-        if (m[29]) begin
-            bl = bit_len$29;
-        end
-        if (m[30]) begin
-            bl = bit_len$30;
-        end
-        if (m[31]) begin
-            bl = bit_len$31;
-        end
-        s = 'h0;
-        if (bl > 'h4) begin
-            s = bl - 'h4;
-        end
-        half = 'h0;
-        if (s > 'h0) begin
-            half = (32'('h1) << s) >> 'h1;
-        end
-        qx = (gx_mag + half) >> s;
-        if (gx_neg & (s > 'h0)) begin
-            qx = (gx_mag + half - 'h1) >> s;
-        end
-        qy = (gy_mag + half) >> s;
-        if (gy_neg & (s > 'h0)) begin
-            qy = (gy_mag + half - 'h1) >> s;
-        end
-        qz = (gz_mag + half) >> s;
-        if (gz_neg & (s > 'h0)) begin
-            qz = (gz_mag + half - 'h1) >> s;
-        end
-        if (qx > 'hf) begin
-            qx = 'hf;
-        end
-        if (qy > 'hf) begin
-            qy = 'hf;
-        end
-        if (qz > 'hf) begin
-            qz = 'hf;
-        end
-        ix = 5'(qx);
-        if (gx_neg) begin
-            ix = 5'('h20 - qx);
-        end
-        iy = 5'(qy);
-        if (gy_neg) begin
-            iy = 5'('h20 - qy);
-        end
-        iz = 5'(qz);
-        if (gz_neg) begin
-            iz = 5'('h20 - qz);
-        end
-        reflectance$address = 15'(ix) | (15'(iy) << 'h5) | (15'(iz) << 'ha);
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$0$d = alpha;
+        alpha_q$1$d = alpha_q$0$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
-            diffuse = 16'(reflectance$data);
-            specular = 16'(reflectance$data >> 'h10);
+            diffuse = lighting$diffuse;
+            specular = lighting$specular;
         end
-        lit_r$a = 16'(lut$data);
-        lit_g$a = 16'(lut$data >> 'h10);
-        lit_b$a = 16'(lut$data >> 'h20);
+        lit_r$a = 16'(lut_q$3$q);
+        lit_g$a = 16'(lut_q$3$q >> 'h10);
+        lit_b$a = 16'(lut_q$3$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
         sum_r = 32'(lit_r$y) + 32'(specular);
         sum_g = 32'(lit_g$y) + 32'(specular);
         sum_b = 32'(lit_b$y) + 32'(specular);
-        mul_r$a = 16'(sum_r);
+        shaded_q$0$clock = clock;
+        shaded_q$1$clock = clock;
+        shaded_q$2$clock = clock;
+        shaded_q$0$d = 16'(sum_r);
         if (sum_r > 32'(m_max)) begin
-            mul_r$a = m_max;
+            shaded_q$0$d = m_max;
         end
-        mul_g$a = 16'(sum_g);
+        shaded_q$1$d = 16'(sum_g);
         if (sum_g > 32'(m_max)) begin
-            mul_g$a = m_max;
+            shaded_q$1$d = m_max;
         end
-        mul_b$a = 16'(sum_b);
+        shaded_q$2$d = 16'(sum_b);
         if (sum_b > 32'(m_max)) begin
-            mul_b$a = m_max;
+            shaded_q$2$d = m_max;
         end
-        mul_r$b = alpha;
-        mul_g$b = alpha;
-        mul_b$b = alpha;
+        mul_r$a = shaded_q$0$q;
+        mul_g$a = shaded_q$1$q;
+        mul_b$a = shaded_q$2$q;
+        mul_r$b = alpha_q$1$q;
+        mul_g$b = alpha_q$1$q;
+        mul_b$b = alpha_q$1$q;
         if (scalar) begin
-            r_q$d = value;
+            r_q$d = value_q$5$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha;
+            r_q$d = alpha_q$1$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -1555,11 +2875,7 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha;
-        end
-        valid_q$d = ~invalid;
-        if (xray) begin
-            valid_q$d = 1'b1;
+            a_q$d = alpha_q$1$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -1571,7 +2887,7 @@ module top$lanes$2$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$q;
+            valid_pass = valid_q$6$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1598,6 +2914,40 @@ module top$lanes$2$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$a_q
+module top$lanes$2$shader$alpha_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$0
+module top$lanes$2$shader$alpha_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$1
 module top$lanes$2$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1632,6 +2982,142 @@ module top$lanes$2$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$g_q
+module top$lanes$2$shader$gate_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$0
+module top$lanes$2$shader$gate_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$1
+module top$lanes$2$shader$gate_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$2
+module top$lanes$2$shader$gate_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$3
+module top$lanes$2$shader$lut_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$0
+module top$lanes$2$shader$lut_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$1
+module top$lanes$2$shader$lut_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$2
+module top$lanes$2$shader$lut_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$3
 module top$lanes$2$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1649,79 +3135,109 @@ module top$lanes$2$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$r_q
-module top$lanes$2$shader$sq_x(m,y);
+module top$lanes$2$shader$row_q$0(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$2$shader$sq_x
-module top$lanes$2$shader$sq_y(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$row_q$0
+module top$lanes$2$shader$row_q$1(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$2$shader$sq_y
-module top$lanes$2$shader$sq_z(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$row_q$1
+module top$lanes$2$shader$row_q$2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$2$shader$sq_z
-module top$lanes$2$shader$valid_q(d,q,clock);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$row_q$2
+module top$lanes$2$shader$shaded_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$shaded_q$0
+module top$lanes$2$shader$shaded_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$shaded_q$1
+module top$lanes$2$shader$shaded_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$shaded_q$2
+module top$lanes$2$shader$valid_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1737,11 +3253,235 @@ module top$lanes$2$shader$valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$shader$valid_q
-module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
+endmodule // top$lanes$2$shader$valid_q$0
+module top$lanes$2$shader$valid_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$1
+module top$lanes$2$shader$valid_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$2
+module top$lanes$2$shader$valid_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$3
+module top$lanes$2$shader$valid_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$4
+module top$lanes$2$shader$valid_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$5
+module top$lanes$2$shader$valid_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$6
+module top$lanes$2$shader$value_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$0
+module top$lanes$2$shader$value_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$1
+module top$lanes$2$shader$value_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$2
+module top$lanes$2$shader$value_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$3
+module top$lanes$2$shader$value_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$4
+module top$lanes$2$shader$value_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$5
+module top$lanes$2$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$6
+module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  [15:0] value;
     input wire  invalid;
     input wire  at_edge;
@@ -1759,71 +3499,141 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     
     // Constant declarations
     localparam  gm_on = 1'b0;
-    localparam  gm_shift = 8'h0;
     localparam  scalar = 1'b1;
     localparam  xray = 1'b0;
     localparam  shaded = 1'b0;
     localparam  edge_transparent = 1'b0;
     localparam  shift = 8'h0;
     localparam  m_max = 16'hff;
-    localparam  bit_len$0 = 8'h1;
-    localparam  bit_len$1 = 8'h2;
-    localparam  bit_len$2 = 8'h3;
-    localparam  bit_len$3 = 8'h4;
-    localparam  bit_len$4 = 8'h5;
-    localparam  bit_len$5 = 8'h6;
-    localparam  bit_len$6 = 8'h7;
-    localparam  bit_len$7 = 8'h8;
-    localparam  bit_len$8 = 8'h9;
-    localparam  bit_len$9 = 8'ha;
-    localparam  bit_len$10 = 8'hb;
-    localparam  bit_len$11 = 8'hc;
-    localparam  bit_len$12 = 8'hd;
-    localparam  bit_len$13 = 8'he;
-    localparam  bit_len$14 = 8'hf;
-    localparam  bit_len$15 = 8'h10;
-    localparam  bit_len$16 = 8'h11;
-    localparam  bit_len$17 = 8'h12;
-    localparam  bit_len$18 = 8'h13;
-    localparam  bit_len$19 = 8'h14;
-    localparam  bit_len$20 = 8'h15;
-    localparam  bit_len$21 = 8'h16;
-    localparam  bit_len$22 = 8'h17;
-    localparam  bit_len$23 = 8'h18;
-    localparam  bit_len$24 = 8'h19;
-    localparam  bit_len$25 = 8'h1a;
-    localparam  bit_len$26 = 8'h1b;
-    localparam  bit_len$27 = 8'h1c;
-    localparam  bit_len$28 = 8'h1d;
-    localparam  bit_len$29 = 8'h1e;
-    localparam  bit_len$30 = 8'h1f;
-    localparam  bit_len$31 = 8'h20;
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  lut$clock;
+    reg  lut$host_write;
+    reg  [23:0] lut$host_address;
+    reg  [63:0] lut$host_data;
     reg  [11:0] lut$address;
     wire  [63:0] lut$data = 'h0;
-    reg  [14:0] reflectance$address;
-    wire  [31:0] reflectance$data = 'h0;
+    reg  alpha_gm$clock;
+    reg  alpha_gm$host_write;
+    reg  [23:0] alpha_gm$host_address;
+    reg  [63:0] alpha_gm$host_data;
     reg  [15:0] alpha_gm$address;
     wire  [15:0] alpha_gm$data = 'h0;
-    reg  [63:0] sqrt$n;
-    wire  [31:0] sqrt$root = 'h0;
-    reg  [31:0] sq_x$m;
-    wire  [63:0] sq_x$y;
-    reg  [31:0] sq_y$m;
-    wire  [63:0] sq_y$y;
-    reg  [31:0] sq_z$m;
-    wire  [63:0] sq_z$y;
-    reg  [15:0] mul_r$a;
-    reg  [15:0] mul_r$b;
-    wire  [15:0] mul_r$y = 'h0;
-    reg  [15:0] mul_g$a;
-    reg  [15:0] mul_g$b;
-    wire  [15:0] mul_g$y = 'h0;
-    reg  [15:0] mul_b$a;
-    reg  [15:0] mul_b$b;
-    wire  [15:0] mul_b$y = 'h0;
+    reg  gm_bin$clock;
+    reg  gm_bin$host_write;
+    reg  [23:0] gm_bin$host_address;
+    reg  [63:0] gm_bin$host_data;
+    reg  [31:0] gm_bin$mag$0;
+    reg  [31:0] gm_bin$mag$1;
+    reg  [31:0] gm_bin$mag$2;
+    wire  [3:0] gm_bin$bin = 'h0;
+    reg  normal$clock;
+    reg  normal$neg$0;
+    reg  normal$neg$1;
+    reg  normal$neg$2;
+    reg  [31:0] normal$mag$0;
+    reg  [31:0] normal$mag$1;
+    reg  [31:0] normal$mag$2;
+    wire  normal$q_neg$0 = 'h0;
+    wire  normal$q_neg$1 = 'h0;
+    wire  normal$q_neg$2 = 'h0;
+    wire  [3:0] normal$q_mag$0 = 'h0;
+    wire  [3:0] normal$q_mag$1 = 'h0;
+    wire  [3:0] normal$q_mag$2 = 'h0;
+    reg  lighting$clock;
+    reg  lighting$host_write;
+    reg  [23:0] lighting$host_address;
+    reg  [63:0] lighting$host_data;
+    reg  lighting$q_neg$0;
+    reg  lighting$q_neg$1;
+    reg  lighting$q_neg$2;
+    reg  [3:0] lighting$q_mag$0;
+    reg  [3:0] lighting$q_mag$1;
+    reg  [3:0] lighting$q_mag$2;
+    wire  [15:0] lighting$diffuse = 'h0;
+    wire  [15:0] lighting$specular = 'h0;
+    reg  [11:0] row_q$0$d;
+    wire  [11:0] row_q$0$q;
+    reg  row_q$0$clock;
+    reg  [11:0] row_q$1$d;
+    wire  [11:0] row_q$1$q;
+    reg  row_q$1$clock;
+    reg  [11:0] row_q$2$d;
+    wire  [11:0] row_q$2$q;
+    reg  row_q$2$clock;
+    reg  [63:0] lut_q$0$d;
+    wire  [63:0] lut_q$0$q;
+    reg  lut_q$0$clock;
+    reg  [63:0] lut_q$1$d;
+    wire  [63:0] lut_q$1$q;
+    reg  lut_q$1$clock;
+    reg  [63:0] lut_q$2$d;
+    wire  [63:0] lut_q$2$q;
+    reg  lut_q$2$clock;
+    reg  [63:0] lut_q$3$d;
+    wire  [63:0] lut_q$3$q;
+    reg  lut_q$3$clock;
+    reg  gate_q$0$d;
+    wire  gate_q$0$q;
+    reg  gate_q$0$clock;
+    reg  gate_q$1$d;
+    wire  gate_q$1$q;
+    reg  gate_q$1$clock;
+    reg  gate_q$2$d;
+    wire  gate_q$2$q;
+    reg  gate_q$2$clock;
+    reg  gate_q$3$d;
+    wire  gate_q$3$q;
+    reg  gate_q$3$clock;
+    reg  [15:0] alpha_q$0$d;
+    wire  [15:0] alpha_q$0$q;
+    reg  alpha_q$0$clock;
+    reg  [15:0] alpha_q$1$d;
+    wire  [15:0] alpha_q$1$q;
+    reg  alpha_q$1$clock;
+    reg  [15:0] value_q$0$d;
+    wire  [15:0] value_q$0$q;
+    reg  value_q$0$clock;
+    reg  [15:0] value_q$1$d;
+    wire  [15:0] value_q$1$q;
+    reg  value_q$1$clock;
+    reg  [15:0] value_q$2$d;
+    wire  [15:0] value_q$2$q;
+    reg  value_q$2$clock;
+    reg  [15:0] value_q$3$d;
+    wire  [15:0] value_q$3$q;
+    reg  value_q$3$clock;
+    reg  [15:0] value_q$4$d;
+    wire  [15:0] value_q$4$q;
+    reg  value_q$4$clock;
+    reg  [15:0] value_q$5$d;
+    wire  [15:0] value_q$5$q;
+    reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  valid_q$0$d;
+    wire  valid_q$0$q;
+    reg  valid_q$0$clock;
+    reg  valid_q$1$d;
+    wire  valid_q$1$q;
+    reg  valid_q$1$clock;
+    reg  valid_q$2$d;
+    wire  valid_q$2$q;
+    reg  valid_q$2$clock;
+    reg  valid_q$3$d;
+    wire  valid_q$3$q;
+    reg  valid_q$3$clock;
+    reg  valid_q$4$d;
+    wire  valid_q$4$q;
+    reg  valid_q$4$clock;
+    reg  valid_q$5$d;
+    wire  valid_q$5$q;
+    reg  valid_q$5$clock;
+    reg  valid_q$6$d;
+    wire  valid_q$6$q;
+    reg  valid_q$6$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
@@ -1833,6 +3643,24 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
+    reg  [15:0] shaded_q$0$d;
+    wire  [15:0] shaded_q$0$q;
+    reg  shaded_q$0$clock;
+    reg  [15:0] shaded_q$1$d;
+    wire  [15:0] shaded_q$1$q;
+    reg  shaded_q$1$clock;
+    reg  [15:0] shaded_q$2$d;
+    wire  [15:0] shaded_q$2$q;
+    reg  shaded_q$2$clock;
+    reg  [15:0] mul_r$a;
+    reg  [15:0] mul_r$b;
+    wire  [15:0] mul_r$y = 'h0;
+    reg  [15:0] mul_g$a;
+    reg  [15:0] mul_g$b;
+    wire  [15:0] mul_g$y = 'h0;
+    reg  [15:0] mul_b$a;
+    reg  [15:0] mul_b$b;
+    wire  [15:0] mul_b$y = 'h0;
     reg  [15:0] r_q$d;
     wire  [15:0] r_q$q;
     reg  r_q$clock;
@@ -1845,24 +3673,14 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [15:0] a_q$d;
     wire  [15:0] a_q$q;
     reg  a_q$clock;
-    reg  valid_q$d;
-    wire  valid_q$q;
-    reg  valid_q$clock;
     
     // Local signals
-    reg  [31:0] gm_bin;
     reg  [11:0] row;
+    reg  gate;
+    reg  [31:0] mag$0;
+    reg  [31:0] mag$1;
+    reg  [31:0] mag$2;
     reg  [15:0] alpha;
-    reg  [31:0] m;
-    reg  [7:0] bl;
-    reg  [7:0] s;
-    reg  [31:0] half;
-    reg  [31:0] qx;
-    reg  [31:0] qy;
-    reg  [31:0] qz;
-    reg  [4:0] ix;
-    reg  [4:0] iy;
-    reg  [4:0] iz;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
     reg  [31:0] sum_r;
@@ -1870,17 +3688,155 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
     reg  [31:0] sum_b;
     
     // Sub module instances
-    top$lanes$3$shader$sq_x sq_x(
-        .m(sq_x$m),
-        .y(sq_x$y)
+    top$lanes$3$shader$row_q$0 row_q$0(
+        .d(row_q$0$d),
+        .q(row_q$0$q),
+        .clock(row_q$0$clock)
     );
-    top$lanes$3$shader$sq_y sq_y(
-        .m(sq_y$m),
-        .y(sq_y$y)
+    top$lanes$3$shader$row_q$1 row_q$1(
+        .d(row_q$1$d),
+        .q(row_q$1$q),
+        .clock(row_q$1$clock)
     );
-    top$lanes$3$shader$sq_z sq_z(
-        .m(sq_z$m),
-        .y(sq_z$y)
+    top$lanes$3$shader$row_q$2 row_q$2(
+        .d(row_q$2$d),
+        .q(row_q$2$q),
+        .clock(row_q$2$clock)
+    );
+    top$lanes$3$shader$lut_q$0 lut_q$0(
+        .d(lut_q$0$d),
+        .q(lut_q$0$q),
+        .clock(lut_q$0$clock)
+    );
+    top$lanes$3$shader$lut_q$1 lut_q$1(
+        .d(lut_q$1$d),
+        .q(lut_q$1$q),
+        .clock(lut_q$1$clock)
+    );
+    top$lanes$3$shader$lut_q$2 lut_q$2(
+        .d(lut_q$2$d),
+        .q(lut_q$2$q),
+        .clock(lut_q$2$clock)
+    );
+    top$lanes$3$shader$lut_q$3 lut_q$3(
+        .d(lut_q$3$d),
+        .q(lut_q$3$q),
+        .clock(lut_q$3$clock)
+    );
+    top$lanes$3$shader$gate_q$0 gate_q$0(
+        .d(gate_q$0$d),
+        .q(gate_q$0$q),
+        .clock(gate_q$0$clock)
+    );
+    top$lanes$3$shader$gate_q$1 gate_q$1(
+        .d(gate_q$1$d),
+        .q(gate_q$1$q),
+        .clock(gate_q$1$clock)
+    );
+    top$lanes$3$shader$gate_q$2 gate_q$2(
+        .d(gate_q$2$d),
+        .q(gate_q$2$q),
+        .clock(gate_q$2$clock)
+    );
+    top$lanes$3$shader$gate_q$3 gate_q$3(
+        .d(gate_q$3$d),
+        .q(gate_q$3$q),
+        .clock(gate_q$3$clock)
+    );
+    top$lanes$3$shader$alpha_q$0 alpha_q$0(
+        .d(alpha_q$0$d),
+        .q(alpha_q$0$q),
+        .clock(alpha_q$0$clock)
+    );
+    top$lanes$3$shader$alpha_q$1 alpha_q$1(
+        .d(alpha_q$1$d),
+        .q(alpha_q$1$q),
+        .clock(alpha_q$1$clock)
+    );
+    top$lanes$3$shader$value_q$0 value_q$0(
+        .d(value_q$0$d),
+        .q(value_q$0$q),
+        .clock(value_q$0$clock)
+    );
+    top$lanes$3$shader$value_q$1 value_q$1(
+        .d(value_q$1$d),
+        .q(value_q$1$q),
+        .clock(value_q$1$clock)
+    );
+    top$lanes$3$shader$value_q$2 value_q$2(
+        .d(value_q$2$d),
+        .q(value_q$2$q),
+        .clock(value_q$2$clock)
+    );
+    top$lanes$3$shader$value_q$3 value_q$3(
+        .d(value_q$3$d),
+        .q(value_q$3$q),
+        .clock(value_q$3$clock)
+    );
+    top$lanes$3$shader$value_q$4 value_q$4(
+        .d(value_q$4$d),
+        .q(value_q$4$q),
+        .clock(value_q$4$clock)
+    );
+    top$lanes$3$shader$value_q$5 value_q$5(
+        .d(value_q$5$d),
+        .q(value_q$5$q),
+        .clock(value_q$5$clock)
+    );
+    top$lanes$3$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$3$shader$valid_q$0 valid_q$0(
+        .d(valid_q$0$d),
+        .q(valid_q$0$q),
+        .clock(valid_q$0$clock)
+    );
+    top$lanes$3$shader$valid_q$1 valid_q$1(
+        .d(valid_q$1$d),
+        .q(valid_q$1$q),
+        .clock(valid_q$1$clock)
+    );
+    top$lanes$3$shader$valid_q$2 valid_q$2(
+        .d(valid_q$2$d),
+        .q(valid_q$2$q),
+        .clock(valid_q$2$clock)
+    );
+    top$lanes$3$shader$valid_q$3 valid_q$3(
+        .d(valid_q$3$d),
+        .q(valid_q$3$q),
+        .clock(valid_q$3$clock)
+    );
+    top$lanes$3$shader$valid_q$4 valid_q$4(
+        .d(valid_q$4$d),
+        .q(valid_q$4$q),
+        .clock(valid_q$4$clock)
+    );
+    top$lanes$3$shader$valid_q$5 valid_q$5(
+        .d(valid_q$5$d),
+        .q(valid_q$5$q),
+        .clock(valid_q$5$clock)
+    );
+    top$lanes$3$shader$valid_q$6 valid_q$6(
+        .d(valid_q$6$d),
+        .q(valid_q$6$q),
+        .clock(valid_q$6$clock)
+    );
+    top$lanes$3$shader$shaded_q$0 shaded_q$0(
+        .d(shaded_q$0$d),
+        .q(shaded_q$0$q),
+        .clock(shaded_q$0$clock)
+    );
+    top$lanes$3$shader$shaded_q$1 shaded_q$1(
+        .d(shaded_q$1$d),
+        .q(shaded_q$1$q),
+        .clock(shaded_q$1$clock)
+    );
+    top$lanes$3$shader$shaded_q$2 shaded_q$2(
+        .d(shaded_q$2$d),
+        .q(shaded_q$2$q),
+        .clock(shaded_q$2$clock)
     );
     top$lanes$3$shader$r_q r_q(
         .d(r_q$d),
@@ -1902,11 +3858,6 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         .q(a_q$q),
         .clock(a_q$clock)
     );
-    top$lanes$3$shader$valid_q valid_q(
-        .d(valid_q$d),
-        .q(valid_q$q),
-        .clock(valid_q$clock)
-    );
     
     // Update code
     reg  [31:0] r_pass;
@@ -1919,214 +3870,162 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        valid_q$clock = clock;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
         a_q$d = a_q$q;
-        valid_q$d = valid_q$q;
+        lut$clock = clock;
+        lut$host_write = host_write;
+        lut$host_address = host_address;
+        lut$host_data = host_data;
+        alpha_gm$clock = clock;
+        alpha_gm$host_write = host_write;
+        alpha_gm$host_address = host_address;
+        alpha_gm$host_data = host_data;
+        gm_bin$clock = clock;
+        gm_bin$host_write = host_write;
+        gm_bin$host_address = host_address;
+        gm_bin$host_data = host_data;
+        lighting$clock = clock;
+        lighting$host_write = host_write;
+        lighting$host_address = host_address;
+        lighting$host_data = host_data;
+        normal$clock = clock;
+        gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        lut$address = row;
-        alpha = 16'(lut$data >> 'h30);
-        sq_x$m = gx_mag;
-        sq_y$m = gy_mag;
-        sq_z$m = gz_mag;
-        sqrt$n = sq_x$y + sq_y$y + sq_z$y;
-        gm_bin = sqrt$root >> gm_shift;
-        if (gm_bin > 'hf) begin
-            gm_bin = 'hf;
+        if (gate) begin
+            row = 'h0;
         end
-        alpha_gm$address = (16'(row) << 'h4) | 16'(gm_bin);
+        lut$address = row;
+        normal$neg$0 = gx_neg & ~gate;
+        normal$neg$1 = gy_neg & ~gate;
+        normal$neg$2 = gz_neg & ~gate;
+        mag$0 = gx_mag;
+        mag$1 = gy_mag;
+        mag$2 = gz_mag;
+        if (gate) begin
+            mag$0 = 'h0;
+            mag$1 = 'h0;
+            mag$2 = 'h0;
+        end
+        normal$mag$0 = mag$0;
+        gm_bin$mag$0 = mag$0;
+        normal$mag$1 = mag$1;
+        gm_bin$mag$1 = mag$1;
+        normal$mag$2 = mag$2;
+        gm_bin$mag$2 = mag$2;
+        lighting$q_neg$0 = normal$q_neg$0;
+        lighting$q_mag$0 = normal$q_mag$0;
+        lighting$q_neg$1 = normal$q_neg$1;
+        lighting$q_mag$1 = normal$q_mag$1;
+        lighting$q_neg$2 = normal$q_neg$2;
+        lighting$q_mag$2 = normal$q_mag$2;
+        row_q$0$clock = clock;
+        row_q$1$clock = clock;
+        row_q$2$clock = clock;
+        row_q$0$d = row;
+        row_q$1$d = row_q$0$q;
+        row_q$2$d = row_q$1$q;
+        lut_q$0$clock = clock;
+        gate_q$0$clock = clock;
+        lut_q$1$clock = clock;
+        gate_q$1$clock = clock;
+        lut_q$2$clock = clock;
+        gate_q$2$clock = clock;
+        lut_q$3$clock = clock;
+        gate_q$3$clock = clock;
+        lut_q$0$d = lut$data;
+        gate_q$0$d = gate;
+        lut_q$1$d = lut_q$0$q;
+        gate_q$1$d = gate_q$0$q;
+        lut_q$2$d = lut_q$1$q;
+        gate_q$2$d = gate_q$1$q;
+        lut_q$3$d = lut_q$2$q;
+        gate_q$3$d = gate_q$2$q;
+        value_q$0$clock = clock;
+        valid_q$0$clock = clock;
+        value_q$1$clock = clock;
+        valid_q$1$clock = clock;
+        value_q$2$clock = clock;
+        valid_q$2$clock = clock;
+        value_q$3$clock = clock;
+        valid_q$3$clock = clock;
+        value_q$4$clock = clock;
+        valid_q$4$clock = clock;
+        value_q$5$clock = clock;
+        valid_q$5$clock = clock;
+        value_q$6$clock = clock;
+        valid_q$6$clock = clock;
+        value_q$0$d = value;
+        valid_q$0$d = ~invalid | xray;
+        value_q$1$d = value_q$0$q;
+        valid_q$1$d = valid_q$0$q;
+        value_q$2$d = value_q$1$q;
+        valid_q$2$d = valid_q$1$q;
+        value_q$3$d = value_q$2$q;
+        valid_q$3$d = valid_q$2$q;
+        value_q$4$d = value_q$3$q;
+        valid_q$4$d = valid_q$3$q;
+        value_q$5$d = value_q$4$q;
+        valid_q$5$d = valid_q$4$q;
+        value_q$6$d = value_q$5$q;
+        valid_q$6$d = valid_q$5$q;
+        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (invalid | (edge_transparent & at_edge)) begin
+        if (gate_q$3$q) begin
             alpha = 'h0;
         end
-        m = gx_mag;
-        if (gy_mag > m) begin
-            m = gy_mag;
-        end
-        if (gz_mag > m) begin
-            m = gz_mag;
-        end
-        bl = 'h0;
-        if (m[0]) begin
-            bl = bit_len$0;
-        end
-        if (m[1]) begin
-            bl = bit_len$1;
-        end
-        if (m[2]) begin
-            bl = bit_len$2;
-        end
-        if (m[3]) begin
-            bl = bit_len$3;
-        end
-        if (m[4]) begin
-            bl = bit_len$4;
-        end
-        if (m[5]) begin
-            bl = bit_len$5;
-        end
-        if (m[6]) begin
-            bl = bit_len$6;
-        end
-        if (m[7]) begin
-            bl = bit_len$7;
-        end
-        if (m[8]) begin
-            bl = bit_len$8;
-        end
-        if (m[9]) begin
-            bl = bit_len$9;
-        end
-        if (m[10]) begin
-            bl = bit_len$10;
-        end
-        if (m[11]) begin
-            bl = bit_len$11;
-        end
-        if (m[12]) begin
-            bl = bit_len$12;
-        end
-        if (m[13]) begin
-            bl = bit_len$13;
-        end
-        if (m[14]) begin
-            bl = bit_len$14;
-        end
-        if (m[15]) begin
-            bl = bit_len$15;
-        end
-        if (m[16]) begin
-            bl = bit_len$16;
-        end
-        if (m[17]) begin
-            bl = bit_len$17;
-        end
-        if (m[18]) begin
-            bl = bit_len$18;
-        end
-        if (m[19]) begin
-            bl = bit_len$19;
-        end
-        if (m[20]) begin
-            bl = bit_len$20;
-        end
-        if (m[21]) begin
-            bl = bit_len$21;
-        end
-        if (m[22]) begin
-            bl = bit_len$22;
-        end
-        if (m[23]) begin
-            bl = bit_len$23;
-        end
-        if (m[24]) begin
-            bl = bit_len$24;
-        end
-        if (m[25]) begin
-            bl = bit_len$25;
-        end
-        if (m[26]) begin
-            bl = bit_len$26;
-        end
-        if (m[27]) begin
-            bl = bit_len$27;
-        end
-        if (m[28]) begin
-            bl = bit_len$28;
-        end
-        if (m[29]) begin
-            bl = bit_len$29;
-        end
-        if (m[30]) begin
-            bl = bit_len$30;
-        end
-        if (m[31]) begin
-            bl = bit_len$31;
-        end
-        s = 'h0;
-        if (bl > 'h4) begin
-            s = bl - 'h4;
-        end
-        half = 'h0;
-        if (s > 'h0) begin
-            half = (32'('h1) << s) >> 'h1;
-        end
-        qx = (gx_mag + half) >> s;
-        if (gx_neg & (s > 'h0)) begin
-            qx = (gx_mag + half - 'h1) >> s;
-        end
-        qy = (gy_mag + half) >> s;
-        if (gy_neg & (s > 'h0)) begin
-            qy = (gy_mag + half - 'h1) >> s;
-        end
-        qz = (gz_mag + half) >> s;
-        if (gz_neg & (s > 'h0)) begin
-            qz = (gz_mag + half - 'h1) >> s;
-        end
-        if (qx > 'hf) begin
-            qx = 'hf;
-        end
-        if (qy > 'hf) begin
-            qy = 'hf;
-        end
-        if (qz > 'hf) begin
-            qz = 'hf;
-        end
-        ix = 5'(qx);
-        if (gx_neg) begin
-            ix = 5'('h20 - qx);
-        end
-        iy = 5'(qy);
-        if (gy_neg) begin
-            iy = 5'('h20 - qy);
-        end
-        iz = 5'(qz);
-        if (gz_neg) begin
-            iz = 5'('h20 - qz);
-        end
-        reflectance$address = 15'(ix) | (15'(iy) << 'h5) | (15'(iz) << 'ha);
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$0$d = alpha;
+        alpha_q$1$d = alpha_q$0$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
-            diffuse = 16'(reflectance$data);
-            specular = 16'(reflectance$data >> 'h10);
+            diffuse = lighting$diffuse;
+            specular = lighting$specular;
         end
-        lit_r$a = 16'(lut$data);
-        lit_g$a = 16'(lut$data >> 'h10);
-        lit_b$a = 16'(lut$data >> 'h20);
+        lit_r$a = 16'(lut_q$3$q);
+        lit_g$a = 16'(lut_q$3$q >> 'h10);
+        lit_b$a = 16'(lut_q$3$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
         sum_r = 32'(lit_r$y) + 32'(specular);
         sum_g = 32'(lit_g$y) + 32'(specular);
         sum_b = 32'(lit_b$y) + 32'(specular);
-        mul_r$a = 16'(sum_r);
+        shaded_q$0$clock = clock;
+        shaded_q$1$clock = clock;
+        shaded_q$2$clock = clock;
+        shaded_q$0$d = 16'(sum_r);
         if (sum_r > 32'(m_max)) begin
-            mul_r$a = m_max;
+            shaded_q$0$d = m_max;
         end
-        mul_g$a = 16'(sum_g);
+        shaded_q$1$d = 16'(sum_g);
         if (sum_g > 32'(m_max)) begin
-            mul_g$a = m_max;
+            shaded_q$1$d = m_max;
         end
-        mul_b$a = 16'(sum_b);
+        shaded_q$2$d = 16'(sum_b);
         if (sum_b > 32'(m_max)) begin
-            mul_b$a = m_max;
+            shaded_q$2$d = m_max;
         end
-        mul_r$b = alpha;
-        mul_g$b = alpha;
-        mul_b$b = alpha;
+        mul_r$a = shaded_q$0$q;
+        mul_g$a = shaded_q$1$q;
+        mul_b$a = shaded_q$2$q;
+        mul_r$b = alpha_q$1$q;
+        mul_g$b = alpha_q$1$q;
+        mul_b$b = alpha_q$1$q;
         if (scalar) begin
-            r_q$d = value;
+            r_q$d = value_q$5$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha;
+            r_q$d = alpha_q$1$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -2135,11 +4034,7 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha;
-        end
-        valid_q$d = ~invalid;
-        if (xray) begin
-            valid_q$d = 1'b1;
+            a_q$d = alpha_q$1$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -2151,7 +4046,7 @@ module top$lanes$3$shader(clock,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_ma
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$q;
+            valid_pass = valid_q$6$q;
         end
         r = r_pass;
         g = g_pass;
@@ -2178,6 +4073,40 @@ module top$lanes$3$shader$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$a_q
+module top$lanes$3$shader$alpha_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$0
+module top$lanes$3$shader$alpha_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$1
 module top$lanes$3$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -2212,6 +4141,142 @@ module top$lanes$3$shader$g_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$g_q
+module top$lanes$3$shader$gate_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$0
+module top$lanes$3$shader$gate_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$1
+module top$lanes$3$shader$gate_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$2
+module top$lanes$3$shader$gate_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$3
+module top$lanes$3$shader$lut_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$0
+module top$lanes$3$shader$lut_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$1
+module top$lanes$3$shader$lut_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$2
+module top$lanes$3$shader$lut_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$3
 module top$lanes$3$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -2229,79 +4294,109 @@ module top$lanes$3$shader$r_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$r_q
-module top$lanes$3$shader$sq_x(m,y);
+module top$lanes$3$shader$row_q$0(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$3$shader$sq_x
-module top$lanes$3$shader$sq_y(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$row_q$0
+module top$lanes$3$shader$row_q$1(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$3$shader$sq_y
-module top$lanes$3$shader$sq_z(m,y);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$row_q$1
+module top$lanes$3$shader$row_q$2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] m;
-    output reg  [63:0] y;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
     
-    // Constant declarations
-    localparam  wide = 1'b0;
-    
-    // Local signals
-    reg  [15:0] hi;
-    reg  [15:0] lo;
-    
-    // Update code
-    always @(*) begin
-        lo = m[('h0)+:(16)];
-        hi = 'h0;
-        if (wide) begin
-            hi = m[('h10)+:(16)];
-        end
-        y = (64'(hi * hi) << 'h20) + (64'(hi * lo) << 'h11) + 64'(lo * lo);
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
     end
     
-endmodule // top$lanes$3$shader$sq_z
-module top$lanes$3$shader$valid_q(d,q,clock);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$row_q$2
+module top$lanes$3$shader$shaded_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$shaded_q$0
+module top$lanes$3$shader$shaded_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$shaded_q$1
+module top$lanes$3$shader$shaded_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$shaded_q$2
+module top$lanes$3$shader$valid_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2317,4 +4412,225 @@ module top$lanes$3$shader$valid_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$shader$valid_q
+endmodule // top$lanes$3$shader$valid_q$0
+module top$lanes$3$shader$valid_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$1
+module top$lanes$3$shader$valid_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$2
+module top$lanes$3$shader$valid_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$3
+module top$lanes$3$shader$valid_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$4
+module top$lanes$3$shader$valid_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$5
+module top$lanes$3$shader$valid_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$6
+module top$lanes$3$shader$value_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$0
+module top$lanes$3$shader$value_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$1
+module top$lanes$3$shader$value_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$2
+module top$lanes$3$shader$value_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$3
+module top$lanes$3$shader$value_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$4
+module top$lanes$3$shader$value_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$5
+module top$lanes$3$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$6

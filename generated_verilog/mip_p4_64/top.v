@@ -1,4 +1,4 @@
-module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n_beam,n_b,bs,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,px_valid$0,px_valid$1,px_valid$2,px_valid$3,px_x$0,px_x$1,px_x$2,px_x$3,px_y$0,px_y$1,px_y$2,px_y$3,px_face$0,px_face$1,px_face$2,px_face$3,res_beat$0,res_beat$1,res_beat$2,res_beat$3,res_valid$0,res_valid$1,res_valid$2,res_valid$3,res$0,res$1,res$2,res$3);
+module top(clock,start,load_enable,load_module,load_address,load_data,host_write,host_address,host_data,busy,n_s,n_beam,n_b,bs,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,px_valid$0,px_valid$1,px_valid$2,px_valid$3,px_x$0,px_x$1,px_x$2,px_x$3,px_y$0,px_y$1,px_y$2,px_y$3,px_face$0,px_face$1,px_face$2,px_face$3,res_beat$0,res_beat$1,res_beat$2,res_beat$3,res_valid$0,res_valid$1,res_valid$2,res_valid$3,res$0,res$1,res$2,res$3);
     
     // Module arguments
     input wire  clock;
@@ -7,6 +7,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
     input wire  [15:0] load_data;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     output reg  busy;
     output reg  [15:0] n_s;
     output reg  [15:0] n_beam;
@@ -147,6 +150,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] cfb$dy_mag$2;
     wire  [15:0] cfb$dy_mag$3;
     reg  lanes$0$clock;
+    reg  lanes$0$host_write;
+    reg  [23:0] lanes$0$host_address;
+    reg  [63:0] lanes$0$host_data;
     reg  lanes$0$beat_valid;
     reg  [15:0] lanes$0$value;
     reg  [15:0] lanes$0$x;
@@ -207,6 +213,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$0$px_y;
     wire  [2:0] lanes$0$px_face;
     reg  lanes$1$clock;
+    reg  lanes$1$host_write;
+    reg  [23:0] lanes$1$host_address;
+    reg  [63:0] lanes$1$host_data;
     reg  lanes$1$beat_valid;
     reg  [15:0] lanes$1$value;
     reg  [15:0] lanes$1$x;
@@ -267,6 +276,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$1$px_y;
     wire  [2:0] lanes$1$px_face;
     reg  lanes$2$clock;
+    reg  lanes$2$host_write;
+    reg  [23:0] lanes$2$host_address;
+    reg  [63:0] lanes$2$host_data;
     reg  lanes$2$beat_valid;
     reg  [15:0] lanes$2$value;
     reg  [15:0] lanes$2$x;
@@ -327,6 +339,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     wire  [15:0] lanes$2$px_y;
     wire  [2:0] lanes$2$px_face;
     reg  lanes$3$clock;
+    reg  lanes$3$host_write;
+    reg  [23:0] lanes$3$host_address;
+    reg  [63:0] lanes$3$host_data;
     reg  lanes$3$beat_valid;
     reg  [15:0] lanes$3$value;
     reg  [15:0] lanes$3$x;
@@ -579,6 +594,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$0 lanes$0(
         .clock(lanes$0$clock),
+        .host_write(lanes$0$host_write),
+        .host_address(lanes$0$host_address),
+        .host_data(lanes$0$host_data),
         .beat_valid(lanes$0$beat_valid),
         .value(lanes$0$value),
         .x(lanes$0$x),
@@ -641,6 +659,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$1 lanes$1(
         .clock(lanes$1$clock),
+        .host_write(lanes$1$host_write),
+        .host_address(lanes$1$host_address),
+        .host_data(lanes$1$host_data),
         .beat_valid(lanes$1$beat_valid),
         .value(lanes$1$value),
         .x(lanes$1$x),
@@ -703,6 +724,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$2 lanes$2(
         .clock(lanes$2$clock),
+        .host_write(lanes$2$host_write),
+        .host_address(lanes$2$host_address),
+        .host_data(lanes$2$host_data),
         .beat_valid(lanes$2$beat_valid),
         .value(lanes$2$value),
         .x(lanes$2$x),
@@ -765,6 +789,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
     );
     top$lanes$3 lanes$3(
         .clock(lanes$3$clock),
+        .host_write(lanes$3$host_write),
+        .host_address(lanes$3$host_address),
+        .host_data(lanes$3$host_data),
         .beat_valid(lanes$3$beat_valid),
         .value(lanes$3$value),
         .x(lanes$3$x),
@@ -861,6 +888,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         late$load_data = 'h0;
         late$ext_data$0 = 'h0;
         lanes$0$clock = clock;
+        lanes$0$host_write = host_write;
+        lanes$0$host_address = host_address;
+        lanes$0$host_data = host_data;
         cfb$ext_data$0 = ext_data$0;
         ext_addr$0 = cfb$ext_addr$0;
         px_valid$0 = lanes$0$px_valid;
@@ -873,6 +903,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         lanes$0$value = cfb$value$0;
         late$ext_data$1 = 'h0;
         lanes$1$clock = clock;
+        lanes$1$host_write = host_write;
+        lanes$1$host_address = host_address;
+        lanes$1$host_data = host_data;
         cfb$ext_data$1 = ext_data$1;
         ext_addr$1 = cfb$ext_addr$1;
         px_valid$1 = lanes$1$px_valid;
@@ -885,6 +918,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         lanes$1$value = cfb$value$1;
         late$ext_data$2 = 'h0;
         lanes$2$clock = clock;
+        lanes$2$host_write = host_write;
+        lanes$2$host_address = host_address;
+        lanes$2$host_data = host_data;
         cfb$ext_data$2 = ext_data$2;
         ext_addr$2 = cfb$ext_addr$2;
         px_valid$2 = lanes$2$px_valid;
@@ -897,6 +933,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,busy,n_s,n
         lanes$2$value = cfb$value$2;
         late$ext_data$3 = 'h0;
         lanes$3$clock = clock;
+        lanes$3$host_write = host_write;
+        lanes$3$host_address = host_address;
+        lanes$3$host_data = host_data;
         cfb$ext_data$3 = ext_data$3;
         ext_addr$3 = cfb$ext_addr$3;
         px_valid$3 = lanes$3$px_valid;

@@ -13,13 +13,15 @@
 //!
 //! What the architectures share: [`fixed`] (every rounding, truncation and
 //! saturation, named), [`lut`] (the classification and shading LUTs filled
-//! from the scene's transfer function and lighting) and [`warp`] (base plane
-//! to final image). Scenes, volumes, the camera and the float formulas come
+//! from the scene's transfer function and lighting), [`host`] (the words the
+//! host writes into the hardware's registers and tables between frames) and
+//! [`warp`] (base plane to final image). Scenes, volumes, the camera and the float formulas come
 //! from the `scene` crate.
 
 pub mod cube3;
 pub mod cube4l;
 pub mod fixed;
+pub mod host;
 pub mod lut;
 pub mod quantized;
 pub mod warp;

@@ -1,13 +1,13 @@
 //! The LUTs of the Cube-4L shader and classifier (paper §3.3-3.4), filled
 //! from the scene's transfer function and lighting formulas (`scene`): the
 //! colour LUT, the opacity LUT (2-D with a gradient-magnitude index when the
-//! scene has gradient opacity) and the reflectance map. Only the golden
+//! scene has gradient opacity) and the lighting tables (diffuse and specular
+//! by cosine, with the light and half vectors as registers). Only the golden
 //! models go through these quantized tables; the float reference evaluates
 //! the formulas exactly.
 
 use crate::fixed::{max_of, mul_unorm, quantize_unorm, sat_u};
 use glam::DVec3;
-use scene::lighting::phong;
 use scene::transfer::{correct_opacity, TransferFn};
 use scene::Shading;
 
@@ -16,7 +16,7 @@ pub fn lut_bits(voxel_bits: u32) -> u32 {
     voxel_bits.min(12)
 }
 
-/// Bits per component of the quantized gradient that indexes the reflectance map.
+/// Bits per signed component of the quantized gradient the lighting takes.
 pub const NORMAL_BITS: u32 = 5;
 /// Bits of the gradient-magnitude index of the 2-D opacity LUT.
 pub const GM_BITS: u32 = 4;
@@ -132,47 +132,135 @@ impl OpacityLut {
     }
 }
 
-/// Reflectance map: for each quantized gradient `(qx, qy, qz)` (signed
-/// `NORMAL_BITS`-bit components in pipeline space) the diffuse multiplier and
-/// the specular term, unorm of `rgba_bits`. The normal is the negated
-/// gradient; a zero gradient gets ambient light only.
-#[derive(Debug, Clone)]
-pub struct ReflectanceMap {
-    pub table: Vec<[u32; 2]>,
+/// Bits of the cosine index of the lighting tables: `2^COS_BITS` entries,
+/// entry `i` for the cosine `i / (2^COS_BITS - 1)`, so 0 and 1 are exact.
+pub const COS_BITS: u32 = 10;
+/// Fractional bits of the light and half-vector registers (signed, a unit
+/// vector's components in `[-2^DIR_FRAC, 2^DIR_FRAC]`).
+pub const DIR_FRAC: u32 = 11;
+/// Fractional bits of the reciprocal norms [`rnorm`].
+pub const RNORM_FRAC: u32 = 15;
+/// Largest squared length of a quantized normal: three components of at
+/// most 15 in magnitude.
+pub const MAX_N2: u32 = 3 * 15 * 15;
+
+/// `1 / |q|` of a quantized normal of squared length `n2`, in
+/// [`RNORM_FRAC`] fractional bits, rounded to nearest; 0 for `n2 = 0`. A
+/// constant table of the hardware (it depends on no scene).
+pub fn rnorm(n2: u32) -> u32 {
+    if n2 == 0 {
+        return 0;
+    }
+    // round(2^15 / sqrt(n2)) exactly: the largest r with
+    // (2r - 1)^2 * n2 <= 4 * 2^30, by integer search.
+    let target = 4u64 << (2 * RNORM_FRAC);
+    let mut r = ((1u64 << RNORM_FRAC) as f64 / (n2 as f64).sqrt()).round() as u64 + 1;
+    while r > 0 && (2 * r - 1) * (2 * r - 1) * n2 as u64 > target {
+        r -= 1;
+    }
+    r as u32
 }
 
-impl ReflectanceMap {
-    /// `to_dataset` maps a pipeline-space vector to dataset space; `light` and
-    /// `viewer` are unit vectors in dataset space.
+/// Phong lighting by quantized normal, as a small datapath computes it
+/// (paper §3.4's reflectance, with the map factored): for the quantized
+/// gradient `q` (signed `NORMAL_BITS`-bit components in the sweep's or
+/// base plane's space; the normal is `-q / |q|`), the cosines with the light
+/// and the half vector from two dot products and a reciprocal norm, each an
+/// index into a table of the diffuse multiplier and of the specular term.
+///
+/// Fixed-point steps, for a direction register `d` (`light` or `half`):
+/// 1. `dot = q · d` (exact integers; the registers hold `-L` and `-H` in the
+///    gradient's space, [`DIR_FRAC`] fractional bits);
+/// 2. `dot <= 0`: index 0 and no light on the surface; else
+///    `t = min(dot, 2^16 - 1) · rnorm(|q|²)` (exact) and
+///    `i = min(2^COS_BITS - 1, (t · (2^COS_BITS - 1) + 2^25) >> 26)`, the
+///    cosine `t / 2^26` to the nearest table entry;
+/// 3. `diffuse = diffuse[i_light]`; `specular = specular[i_half]` when the
+///    light's dot product is positive, else 0 (as Phong).
+///
+/// A zero gradient lights with the ambient term only: its dot products are
+/// 0, and `diffuse[0]` is the ambient term.
+#[derive(Debug, Clone)]
+pub struct Lighting {
+    /// `round(-L · 2^DIR_FRAC)` and `round(-H · 2^DIR_FRAC)`, the light and
+    /// half vectors in the gradient's space: registers the host writes.
+    pub light: [i32; 3],
+    pub half: [i32; 3],
+    /// `sat(ambient + diffuse · c)` and `sat(specular · c^shininess)` for
+    /// `c = i / (2^COS_BITS - 1)`, unorm of `rgba_bits`: tables the host
+    /// loads (they depend on the lighting coefficients only, not the view).
+    pub diffuse: Vec<u32>,
+    pub specular: Vec<u32>,
+}
+
+impl Lighting {
+    /// `to_dataset` maps the gradient's space to dataset space (an
+    /// orthogonal matrix); `light` and `viewer` are unit vectors in dataset
+    /// space.
     pub fn new(
         shading: &Shading,
-        to_dataset: impl Fn(DVec3) -> DVec3,
+        to_dataset: glam::DMat3,
         light: DVec3,
         viewer: DVec3,
         rgba_bits: u32,
-    ) -> ReflectanceMap {
-        let n = 1i32 << NORMAL_BITS;
-        let mut table = vec![[0u32; 2]; (n * n * n) as usize];
-        for qz in -n / 2..n / 2 {
-            for qy in -n / 2..n / 2 {
-                for qx in -n / 2..n / 2 {
-                    let g = DVec3::new(qx as f64, qy as f64, qz as f64);
-                    let (d, s) = if g == DVec3::ZERO {
-                        (shading.ambient, 0.0)
-                    } else {
-                        phong(shading, -to_dataset(g).normalize(), light, viewer)
-                    };
-                    table[Self::index(qx, qy, qz)] =
-                        [quantize_unorm(d, rgba_bits), quantize_unorm(s, rgba_bits)];
-                }
-            }
+    ) -> Lighting {
+        let h = (light + viewer).normalize_or_zero();
+        // The normal is the negated gradient: n · l = -q · (to_dataset^T l) / |q|.
+        let reg = |v: DVec3| {
+            let p = -(to_dataset.transpose() * v) * (1u32 << DIR_FRAC) as f64;
+            [p.x, p.y, p.z].map(|c| c.round() as i32)
+        };
+        let n = 1u32 << COS_BITS;
+        let cos = |i: u32| i as f64 / (n - 1) as f64;
+        Lighting {
+            light: reg(light),
+            half: reg(h),
+            diffuse: (0..n)
+                .map(|i| {
+                    quantize_unorm(
+                        (shading.ambient + shading.diffuse * cos(i)).min(1.0),
+                        rgba_bits,
+                    )
+                })
+                .collect(),
+            specular: (0..n)
+                .map(|i| {
+                    let s = shading.specular * cos(i).powf(shading.shininess);
+                    quantize_unorm(s.min(1.0), rgba_bits)
+                })
+                .collect(),
         }
-        ReflectanceMap { table }
     }
 
-    pub fn index(qx: i32, qy: i32, qz: i32) -> usize {
-        let m = (1i32 << NORMAL_BITS) - 1;
-        ((qx & m) | (qy & m) << NORMAL_BITS | (qz & m) << (2 * NORMAL_BITS)) as usize
+    /// The table index of the cosine between `-q` and the direction `d`,
+    /// and whether it is positive (steps 1-2 above).
+    pub fn cos_index(q: [i32; 3], d: [i32; 3]) -> (u32, bool) {
+        let dot: i64 = (0..3).map(|i| q[i] as i64 * d[i] as i64).sum();
+        if dot <= 0 {
+            return (0, false);
+        }
+        // A unit direction keeps |dot| <= 26 * 2048; other registers
+        // saturate to the 16-bit multiplier.
+        let dot = dot.min(0xffff);
+        let n2 = q.iter().map(|c| (c * c) as u32).sum();
+        let t = dot as u64 * rnorm(n2) as u64;
+        let last = (1u64 << COS_BITS) - 1;
+        let shift = DIR_FRAC + RNORM_FRAC;
+        (
+            ((t * last + (1 << (shift - 1))) >> shift).min(last) as u32,
+            true,
+        )
+    }
+
+    /// `[diffuse, specular]` for the quantized gradient `q`.
+    pub fn reflect(&self, q: [i32; 3]) -> [u32; 2] {
+        let (il, lit) = Self::cos_index(q, self.light);
+        let s = if lit {
+            self.specular[Self::cos_index(q, self.half).0 as usize]
+        } else {
+            0
+        };
+        [self.diffuse[il as usize], s]
     }
 }
 
@@ -194,6 +282,7 @@ pub fn unlit(rgba_bits: u32) -> [u32; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use scene::lighting::phong;
     use scene::Scene;
 
     /// The transfer function of a scene with `transfer` (JSON) and `voxel_bits`.
@@ -413,70 +502,85 @@ mod tests {
     }
 
     #[test]
-    fn reflectance_index_packs_five_bit_fields() {
-        assert_eq!(ReflectanceMap::index(0, 0, 0), 0);
-        assert_eq!(ReflectanceMap::index(1, 0, 0), 1);
-        assert_eq!(ReflectanceMap::index(0, 1, 0), 32);
-        assert_eq!(ReflectanceMap::index(0, 0, 1), 1024);
-        assert_eq!(ReflectanceMap::index(-1, 0, 0), 31);
-        assert_eq!(ReflectanceMap::index(0, -1, 0), 31 * 32);
-        assert_eq!(ReflectanceMap::index(0, 0, -1), 31 * 1024);
-        assert_eq!(
-            ReflectanceMap::index(-16, -16, -16),
-            16 + 16 * 32 + 16 * 1024
-        );
-        assert_eq!(ReflectanceMap::index(15, 15, 15), 15 + 15 * 32 + 15 * 1024);
-        assert_eq!(ReflectanceMap::index(3, -2, 7), 3 + 30 * 32 + 7 * 1024);
+    fn reciprocal_norms_round_to_nearest() {
+        assert_eq!(rnorm(0), 0);
+        assert_eq!(rnorm(1), 32768);
+        assert_eq!(rnorm(4), 16384);
+        // 32768 / sqrt 2 = 23170.48; / sqrt 3 = 18918.9; / sqrt 18 = 7723.49;
+        // / 7 = 4681.14; / sqrt 675 = 1261.24.
+        assert_eq!(rnorm(2), 23170);
+        assert_eq!(rnorm(3), 18919);
+        assert_eq!(rnorm(18), 7723);
+        assert_eq!(rnorm(49), 4681);
+        assert_eq!(rnorm(MAX_N2), 1261);
+        for n2 in 1..=MAX_N2 {
+            let exact = 32768.0 / (n2 as f64).sqrt();
+            assert!((rnorm(n2) as f64 - exact).abs() <= 0.5, "{n2}");
+        }
     }
 
     #[test]
-    fn reflectance_map_head_on_light() {
+    fn cosine_index_hand_values() {
+        let z = [0, 0, -2048];
+        // Facing the light: dot 14336, rnorm(49) = 4681, t = 67 106 816,
+        // (t * 1023 + 2^25) >> 26 = 1023 (1023.47 clamped to the last).
+        assert_eq!(Lighting::cos_index([0, 0, -7], z), (1023, true));
+        // 45 degrees: t = 6144 * 7723, the cosine 0.70706 -> index 723.83 -> 723.
+        assert_eq!(Lighting::cos_index([-3, 0, -3], z), (723, true));
+        // Facing away and grazing: no light.
+        assert_eq!(Lighting::cos_index([0, 0, 5], z), (0, false));
+        assert_eq!(Lighting::cos_index([4, 0, 0], z), (0, false));
+        assert_eq!(Lighting::cos_index([0, 0, 0], z), (0, false));
+        // Cube diagonal: t = 30720 * 1261, 0.57723 -> 591.02 -> 591.
+        assert_eq!(Lighting::cos_index([-15, -15, -15], z), (591, true));
+    }
+
+    #[test]
+    fn lighting_head_on() {
         // Light and viewer both along +z: h = +z. The normal is -g.
         let z = DVec3::Z;
-        let map = ReflectanceMap::new(&shading(), |g| g, z, z, 8);
-        assert_eq!(map.table.len(), 32 * 32 * 32);
-        let at = |x, y, z| map.table[ReflectanceMap::index(x, y, z)];
+        let l = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 8);
+        assert_eq!((l.light, l.half), ([0, 0, -2048], [0, 0, -2048]));
+        assert_eq!(l.diffuse.len(), 1024);
         // Zero gradient: ambient only, 0.25 * 255 = 63.75.
-        assert_eq!(at(0, 0, 0), [64, 0]);
+        assert_eq!(l.reflect([0, 0, 0]), [64, 0]);
         // Facing the light: 0.75 -> 191.25; specular 0.5 -> 127.5 -> 128.
-        assert_eq!(at(0, 0, -7), [191, 128]);
-        assert_eq!(at(0, 0, -1), [191, 128]);
-        // Facing away: ambient only, no specular.
-        assert_eq!(at(0, 0, 5), [64, 0]);
-        // Grazing: n.l = 0, so no specular.
-        assert_eq!(at(4, 0, 0), [64, 0]);
-        assert_eq!(at(0, -9, 0), [64, 0]);
-        // 45 degrees: 0.25 + 0.5 / sqrt 2 = 0.6036 -> 153.9; specular
-        // 0.5 * (1 / sqrt 2)^10 = 1 / 64 -> 3.98.
-        assert_eq!(at(-3, 0, -3), [154, 4]);
-        assert_eq!(at(0, 11, -11), [154, 4]);
-        // Cube diagonal: 0.25 + 0.5 / sqrt 3 -> 137.4; 0.5 / 243 -> 0.52.
-        assert_eq!(at(-16, -16, -16), [137, 1]);
+        assert_eq!(l.reflect([0, 0, -7]), [191, 128]);
+        assert_eq!(l.reflect([0, 0, -1]), [191, 128]);
+        // Facing away, and grazing (n.l = 0, so no specular): ambient only.
+        assert_eq!(l.reflect([0, 0, 5]), [64, 0]);
+        assert_eq!(l.reflect([4, 0, 0]), [64, 0]);
+        assert_eq!(l.reflect([0, -9, 0]), [64, 0]);
+        // 45 degrees, index 723: 0.25 + 0.5 * 723/1023 = 0.60337 -> 153.9;
+        // specular 0.5 * (723/1023)^10 = 0.01552 -> 3.96.
+        assert_eq!(l.reflect([-3, 0, -3]), [154, 4]);
+        assert_eq!(l.reflect([0, 11, -11]), [154, 4]);
+        // Cube diagonal, index 591: 0.25 + 0.5 * 0.57771 -> 137.4;
+        // 0.5 * 0.57771^10 = 0.00207 -> 0.53.
+        assert_eq!(l.reflect([-15, -15, -15]), [137, 1]);
         // 12-bit words: 0.75 * 4095 = 3071.25, 0.5 * 4095 = 2047.5.
-        let map12 = ReflectanceMap::new(&shading(), |g| g, z, z, 12);
-        assert_eq!(map12.table[ReflectanceMap::index(0, 0, -2)], [3071, 2048]);
-        assert_eq!(map12.table[ReflectanceMap::index(0, 0, 0)], [1024, 0]);
+        let l12 = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 12);
+        assert_eq!(l12.reflect([0, 0, -2]), [3071, 2048]);
+        assert_eq!(l12.reflect([0, 0, 0]), [1024, 0]);
     }
 
     #[test]
-    fn reflectance_map_side_light_and_axis_permutation() {
-        // Light along +x, viewer along +z: h = (1, 0, 1) / sqrt 2.
-        let map = ReflectanceMap::new(&shading(), |g| g, DVec3::X, DVec3::Z, 8);
-        let at = |m: &ReflectanceMap, x, y, z| m.table[ReflectanceMap::index(x, y, z)];
-        assert_eq!(at(&map, -1, 0, 0), [191, 4]);
-        assert_eq!(at(&map, 0, 0, -1), [64, 0]);
-        assert_eq!(at(&map, 6, 0, 0), [64, 0]);
+    fn lighting_side_light_and_axis_permutation() {
+        // Light along +x, viewer along +z: h = (1, 0, 1) / sqrt 2, whose
+        // register components are round(-0.70711 * 2048) = -1448.
+        let id = glam::DMat3::IDENTITY;
+        let l = Lighting::new(&shading(), id, DVec3::X, DVec3::Z, 8);
+        assert_eq!((l.light, l.half), ([-2048, 0, 0], [-1448, 0, -1448]));
+        assert_eq!(l.reflect([-1, 0, 0]), [191, 4]);
+        assert_eq!(l.reflect([0, 0, -1]), [64, 0]);
+        assert_eq!(l.reflect([6, 0, 0]), [64, 0]);
         // Pipeline (x, y, z) is dataset (z, x, y): pipeline -z faces dataset +x.
-        let perm = ReflectanceMap::new(
-            &shading(),
-            |g| DVec3::new(g.z, g.x, g.y),
-            DVec3::X,
-            DVec3::Z,
-            8,
-        );
-        assert_eq!(at(&perm, 0, 0, -2), [191, 4]);
-        assert_eq!(at(&perm, -2, 0, 0), [64, 0]);
-        assert_eq!(at(&perm, 0, -2, 0), [64, 0]);
+        let perm = glam::DMat3::from_cols(DVec3::Y, DVec3::Z, DVec3::X);
+        let l = Lighting::new(&shading(), perm, DVec3::X, DVec3::Z, 8);
+        assert_eq!((l.light, l.half), ([0, 0, -2048], [0, -1448, -1448]));
+        assert_eq!(l.reflect([0, 0, -2]), [191, 4]);
+        assert_eq!(l.reflect([-2, 0, 0]), [64, 0]);
+        assert_eq!(l.reflect([0, -2, 0]), [64, 0]);
     }
 
     #[test]
@@ -487,17 +591,29 @@ mod tests {
     }
 
     #[test]
-    fn reflectance_index_is_a_bijection() {
-        let n = 1i32 << NORMAL_BITS;
-        let mut seen = vec![false; (n * n * n) as usize];
-        for z in -n / 2..n / 2 {
-            for y in -n / 2..n / 2 {
-                for x in -n / 2..n / 2 {
-                    let i = ReflectanceMap::index(x, y, z);
-                    assert!(!seen[i]);
-                    seen[i] = true;
+    fn lighting_is_phong_within_a_unit_of_the_last_place() {
+        // Every quantized normal, a light off every axis: the diffuse term
+        // within 1 of exact Phong at the normal (cosine rounded to 1/1023,
+        // then to 8 bits), the specular (shininess 10) within 2.
+        let (l, v) = (DVec3::new(0.3, -0.5, 0.8).normalize(), DVec3::Z);
+        let lt = Lighting::new(&shading(), glam::DMat3::IDENTITY, l, v, 8);
+        let mut worst = [0f64; 2];
+        for qz in -15..=15 {
+            for qy in -15..=15 {
+                for qx in -15..=15 {
+                    let g = DVec3::new(qx as f64, qy as f64, qz as f64);
+                    let exact = if g == DVec3::ZERO {
+                        (0.25, 0.0)
+                    } else {
+                        phong(&shading(), -g.normalize(), l, v)
+                    };
+                    let got = lt.reflect([qx, qy, qz]);
+                    for (k, e) in [exact.0, exact.1].into_iter().enumerate() {
+                        worst[k] = worst[k].max((got[k] as f64 - e * 255.0).abs());
+                    }
                 }
             }
         }
+        assert!(worst[0] <= 1.0 && worst[1] <= 2.0, "{worst:?}");
     }
 }

@@ -4,7 +4,7 @@
 use golden_model::cube4l::gradient::quantize_normal;
 use golden_model::cube4l::plan::{Control, Face, Plan};
 use golden_model::cube4l::shader::{Sample, Shader};
-use golden_model::lut::{ColourLut, OpacityLut, ReflectanceMap};
+use golden_model::lut::{ColourLut, Lighting, OpacityLut};
 use scene::{Mode, Scene};
 
 /// A voxel in the middle of the volume on a valid ray.
@@ -58,22 +58,32 @@ fn shader(mode: Mode) -> Shader {
             row_max: table.clone(),
             table,
         }),
-        reflectance: None,
+        lighting: None,
         needs_gradient: false,
         threshold: 128,
     }
 }
 
-/// As [`shader`], with a reflectance map (so gradients are needed) that is
-/// ambient-only `[64, 0]` except at two quantized normals.
+/// As [`shader`], with lighting (so gradients are needed) that is
+/// ambient-only `[64, 0]` except at two quantized normals. The light and
+/// half-vector registers are both `(2048, 0, -2048)`: normal (15, -4, 0)
+/// has dot product 30720 and rnorm(241) = 2111 (32768 / 15.524), so
+/// t = 64 849 920 and its cosine index is (t * 1023 + 2^25) >> 26 = 989;
+/// normal (0, 0, -9) has dot 18432, rnorm(81) = 3641, index 1023 (clamped).
 fn lit_shader(mode: Mode) -> Shader {
-    let mut table = vec![[64, 0]; 1 << 15];
-    // Gradient (30, -8, 0) quantizes to (15, -4, 0).
-    table[ReflectanceMap::index(15, -4, 0)] = [128, 40];
-    // Gradient (0, 0, -9) stays (0, 0, -9).
-    table[ReflectanceMap::index(0, 0, -9)] = [255, 200];
+    let (mut diffuse, mut specular) = (vec![64; 1024], vec![0; 1024]);
+    (diffuse[989], specular[989]) = (128, 40);
+    (diffuse[1023], specular[1023]) = (255, 200);
+    let d = [2048, 0, -2048];
+    assert_eq!(Lighting::cos_index([15, -4, 0], d), (989, true));
+    assert_eq!(Lighting::cos_index([0, 0, -9], d), (1023, true));
     Shader {
-        reflectance: Some(ReflectanceMap { table }),
+        lighting: Some(Lighting {
+            light: d,
+            half: d,
+            diffuse,
+            specular,
+        }),
         needs_gradient: true,
         ..shader(mode)
     }
@@ -180,7 +190,7 @@ fn composite_weights_colour_by_opacity() {
 }
 
 #[test]
-fn composite_with_reflectance() {
+fn composite_with_lighting() {
     let s = lit_shader(Mode::Composite);
     assert_eq!(quantize_normal([30, -8, 0]), [15, -4, 0]);
     // v = 200: alpha 200, colour (200, 55, 40), [d, s] = [128, 40]:
@@ -210,7 +220,7 @@ fn first_opaque_thresholds_the_opacity() {
     // At and above it: fully opaque, unweighted colour.
     assert_eq!(value(&s, 128, &inside(), [0; 3]), [128, 127, 40, 255]);
     assert_eq!(value(&s, 200, &inside(), [0; 3]), [200, 55, 40, 255]);
-    // With reflectance: shaded colour at full opacity.
+    // With lighting: shaded colour at full opacity.
     let s = lit_shader(Mode::FirstOpaque);
     assert_eq!(value(&s, 200, &inside(), [30, -8, 0]), [140, 68, 60, 255]);
     assert_eq!(value(&s, 100, &inside(), [30, -8, 0]), [0; 4]);
@@ -264,7 +274,7 @@ fn shader_of(scene: &Scene) -> (Shader, f64) {
 fn shader_units_follow_the_scene() {
     let (s, spacing) = shader_of(&scene(""));
     assert!(spacing > 1.05, "an oblique view: {spacing}");
-    assert!(s.needs_gradient && s.reflectance.is_some());
+    assert!(s.needs_gradient && s.lighting.is_some());
     assert_eq!(s.threshold, 128);
     let op = s.opacity.as_ref().unwrap();
     assert_eq!(op.gm_shift, None);
@@ -276,7 +286,7 @@ fn shader_units_follow_the_scene() {
     assert_eq!(s.colour.as_ref().unwrap().table[200], [255, 255, 255]);
 
     let (s, _) = shader_of(&scene(r#", "shading": {"enabled": false}"#));
-    assert!(!s.needs_gradient && s.reflectance.is_none());
+    assert!(!s.needs_gradient && s.lighting.is_none());
 
     // First-opaque: opacities are not corrected for the spacing.
     let (s, _) = shader_of(&scene(
@@ -287,7 +297,7 @@ fn shader_units_follow_the_scene() {
     assert_eq!(s.opacity.as_ref().unwrap().table[200], 191);
 
     let (s, _) = shader_of(&scene(r#", "mode": "xray""#));
-    assert!(!s.needs_gradient && s.colour.is_none() && s.reflectance.is_none());
+    assert!(!s.needs_gradient && s.colour.is_none() && s.lighting.is_none());
     assert_eq!(s.opacity.as_ref().unwrap().table[200], 191);
 
     for mode in ["mip", "minip"] {
@@ -300,6 +310,6 @@ fn shader_units_follow_the_scene() {
         r#", "shading": {"enabled": false}, "transfer": {"opacity": [[0, 1]],
             "color": [[0, 1, 1, 1]], "gradient_opacity": [[0, 0], [50, 1]]}"#,
     ));
-    assert!(s.needs_gradient && s.reflectance.is_none());
+    assert!(s.needs_gradient && s.lighting.is_none());
     assert_eq!(s.opacity.as_ref().unwrap().gm_shift, Some(4)); // 200: 8 bits
 }

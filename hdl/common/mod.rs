@@ -1,18 +1,23 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator), [`unorm`] (the exact unorm multiplier),
 //! [`delay_line`] and [`ram`] (block RAM as deep as the scene needs), the
-//! [`shader`] (classification and shading tables, with its [`int_sqrt`] and
-//! [`square`] for the gradient magnitude), and [`lanes`], the lane counts
-//! the RTL is built for.
+//! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
+//! (classification, with the [`gradient_bin`] of gradient opacity and its
+//! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
+//! and [`lanes`], the lane counts the RTL is built for.
 
 pub mod delay_line;
-pub mod int_sqrt;
+pub mod gradient_bin;
 pub mod lanes;
 pub mod lerp;
+pub mod lighting;
+pub mod normal_quantizer;
 pub mod over;
 pub mod ram;
+pub mod regs;
 pub mod shader;
 pub mod square;
+pub mod table;
 pub mod unorm;
 
 use rust_hdl::prelude::*;

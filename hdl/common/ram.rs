@@ -99,13 +99,8 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
         self._words.len()
     }
 
-    /// Initial contents, from word 0 (at most `depth` words). Only for
-    /// whole words or one field at bit 0.
+    /// Initial contents, from word 0 (at most `depth` words).
     pub fn preload(&mut self, words: impl IntoIterator<Item = D>) {
-        assert!(
-            self._fields.len() <= 1 && self._fields.first().is_none_or(|f| f.0 == 0),
-            "initial contents need whole words or one field at bit 0"
-        );
         self._words.fill(D::default());
         let mut n = 0;
         for (slot, w) in self._words.iter_mut().zip(words) {
@@ -137,17 +132,41 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam
     }
 
     fn hdl(&self) -> Verilog {
+        let msb = self._bits - 1;
+        // The stored word of `w`: its fields, the highest first.
+        let stored = |w: &str| -> String {
+            if self._fields.is_empty() {
+                return w.to_string();
+            }
+            let parts: Vec<String> = self
+                ._fields
+                .iter()
+                .rev()
+                .map(|&(lo, width)| format!("{w}[{}:{lo}]", lo + width - 1))
+                .collect();
+            format!("{{{}}}", parts.join(", "))
+        };
         let init = if self._init > 0 {
             let lines: Vec<String> = self._words[..self._init]
                 .iter()
                 .enumerate()
-                .map(|(i, w)| format!("   mem[{i}] = {}'({});", self.word_bits(), w.verilog()))
+                .map(|(i, w)| {
+                    format!(
+                        "   init_word = {}'({});\n   mem[{i}] = {};",
+                        D::BITS,
+                        w.verilog(),
+                        stored("init_word")
+                    )
+                })
                 .collect();
-            format!("initial begin\n{}\nend\n", lines.join("\n"))
+            format!(
+                "reg [{}:0] init_word;\ninitial begin\n{}\nend\n",
+                D::BITS - 1,
+                lines.join("\n")
+            )
         } else {
             String::new()
         };
-        let msb = self._bits - 1;
         // The stored word and the read word, as concatenations, MSB first.
         let (stored, read) = if self._fields.is_empty() {
             (

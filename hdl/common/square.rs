@@ -1,6 +1,6 @@
 //! The squared gradient component for the gradient magnitude (Cube-4L
 //! §3.4), from the 16x16 multipliers rust-hdl offers: a sub-block of
-//! [`super::shader::Shader`].
+//! [`super::gradient_bin::GradientBin`].
 
 use rust_hdl::prelude::*;
 

@@ -414,9 +414,18 @@ impl Cube3Config {
         super::trilin_lanes::cell_delay(self.segments)
             + super::trilin::LATENCY
             + self.abc_delay()
-            + 1
+            + self.leaf_latency()
             + super::compositor::latency(self.p)
             - 1
+    }
+
+    /// Clocks from a sample (with its gradient) to its RPC leaf: the leaf
+    /// stage's register, or the shader's pipeline.
+    pub fn leaf_latency(&self) -> usize {
+        match self.shading {
+            Some(_) => crate::common::shader::LATENCY,
+            None => 1,
+        }
     }
 
     /// Clocks from a sample leaving TRILIN to it and its gradient leaving

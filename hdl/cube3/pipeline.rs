@@ -44,7 +44,9 @@ use super::config::{Cube3Config, OPACITY_BITS};
 use super::ray_control::RayControl;
 use super::trilin_lanes::TrilinLanes;
 use crate::common::delay_line::DelayLine;
-use crate::common::shader::Shader;
+use crate::common::regs::ADDRESS_BITS;
+use crate::common::shader::{Shader, ShaderConfig, LATENCY as SHADER_LATENCY};
+use golden_model::host::ShaderTables;
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -52,6 +54,10 @@ use scene::Mode;
 #[derive(LogicBlock)]
 pub struct Cube3<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port (the shaders' tables and registers).
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     /// Restart at the first segment of the first ray.
     pub start: Signal<In, Bit>,
     /// A segment enters the streams this clock.
@@ -73,6 +79,9 @@ pub struct Cube3<const P: usize, const H: usize> {
     flags_q: [DFF<Bits<32>>; 7],
     flags_line: DelayLine<Bits<32>, H>,
     leaf_flags: Signal<Local, Bits<32>>,
+    /// The flags, on beside the shaders (`shader::LATENCY - 1` more clocks
+    /// than the leaf stage's one).
+    shade_flags_q: [DFF<Bits<32>>; 6],
     rpc_flags_q: DFF<Bits<32>>,
     /// The cast bits of the rays in the RPC (bit `latency - 1` is the
     /// pixel's): an uncast ray's pixel is 0 without a sample.
@@ -141,9 +150,26 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             )?,
             None => AbcUnit::left_out(c.segments)?,
         };
-        let shader = || match &c.shading {
-            Some(s) => Shader::for_cube3(s),
-            None => Ok(Shader::left_out()),
+        let shader = || -> Result<Shader, String> {
+            match &c.shading {
+                Some(s) => {
+                    let w = s.widths;
+                    if w.gradient_bits > 31 {
+                        return Err(format!(
+                            "cube3.gradient_bits {} unsupported by the shader (at most 31)",
+                            w.gradient_bits
+                        ));
+                    }
+                    let config = ShaderConfig::of(
+                        &s.tables(),
+                        w.voxel_bits,
+                        s.needs_gradient,
+                        w.gradient_bits > 17,
+                    );
+                    Ok(Shader::new(&config))
+                }
+                None => Ok(Shader::left_out()),
+            }
         };
         let mut shade = Vec::with_capacity(P);
         for _ in 0..P {
@@ -151,6 +177,9 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         }
         Ok(Cube3 {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             start: Default::default(),
             valid: Default::default(),
             cur: std::array::from_fn(|_| Default::default()),
@@ -170,6 +199,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
                 0x00ff_0fffu64.to_bits(),
             ),
             leaf_flags: Default::default(),
+            shade_flags_q: Default::default(),
             rpc_flags_q: Default::default(),
             cast_q: Default::default(),
             cast_bit: Constant::new((1u64 << (super::compositor::latency(P) - 1)).to_bits()),
@@ -196,6 +226,20 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         })
     }
 }
+
+impl<const P: usize, const H: usize> Cube3<P, H> {
+    /// Give every shader's tables the contents the host would load
+    /// (block-RAM initialisation, for simulation).
+    pub fn preload_tables(&mut self, tables: &ShaderTables) {
+        for s in self.shade.iter_mut() {
+            s.preload(tables);
+        }
+    }
+}
+
+// `hdl_gen` needs literal loop bounds: the flags' registers beside the
+// shaders are written for a 7-clock shader.
+const _: () = assert!(SHADER_LATENCY == 7, "update the shaders' flag registers");
 
 impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
     #[hdl_gen]
@@ -230,7 +274,17 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         if self.gradients.val() {
             self.leaf_flags.next = self.flags_line.data_out.val();
         }
+        for j in 0..6 {
+            self.shade_flags_q[j].clock.next = self.clock.val();
+        }
+        self.shade_flags_q[0].d.next = self.leaf_flags.val();
+        for j in 1..6 {
+            self.shade_flags_q[j].d.next = self.shade_flags_q[j - 1].q.val();
+        }
         self.rpc_flags_q.d.next = self.leaf_flags.val();
+        if self.shaded.val() {
+            self.rpc_flags_q.d.next = self.shade_flags_q[5].q.val();
+        }
         self.abc.dx_neg.next = self.control.dx_neg.val();
         self.abc.dx_mag.next = self.control.dx_mag.val();
         self.abc.dy_neg.next = self.control.dy_neg.val();
@@ -268,6 +322,9 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
                 self.gz[i].next = self.abc.gz[i].val();
             }
             self.shade[i].clock.next = self.clock.val();
+            self.shade[i].host_write.next = self.host_write.val();
+            self.shade[i].host_address.next = self.host_address.val();
+            self.shade[i].host_data.next = self.host_data.val();
             self.shade[i].value.next = self.index[i].val().get_bits::<16>(0);
             self.shade[i].invalid.next = !(self.leaf_flags.val() & self.lane_bit[i].val()).any();
             self.shade[i].at_edge.next = !(self.leaf_flags.val() & self.inner_bit[i].val()).any();

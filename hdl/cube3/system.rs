@@ -12,6 +12,8 @@
 use super::cfb::BeamFetch;
 use super::config::Cube3SystemConfig;
 use super::pipeline::Cube3;
+use crate::common::regs::ADDRESS_BITS;
+use golden_model::host::ShaderTables;
 use rust_hdl::prelude::*;
 
 /// Cube-3 with `P` units: `A`-bit memory, `B`-bit 2-DSB and `H`-bit
@@ -19,6 +21,11 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port: registers and tables, written between frames
+    /// (`golden_model::host`).
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     pub start: Signal<In, Bit>,
     pub done: Signal<Out, Bit>,
     pub pixel_r: Signal<Out, Bits<32>>,
@@ -42,6 +49,9 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System
     pub fn new(c: &Cube3SystemConfig) -> Result<Cube3System<P, A, B, H>, String> {
         Ok(Cube3System {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             start: Default::default(),
             done: Default::default(),
             pixel_r: Default::default(),
@@ -64,6 +74,11 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System
     pub fn preload(&mut self, modules: &[Vec<u16>]) {
         self.fetch.preload(modules);
     }
+
+    /// Give the shaders' tables the contents the host would load.
+    pub fn preload_tables(&mut self, tables: &ShaderTables) {
+        self.pipeline.preload_tables(tables);
+    }
 }
 
 impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
@@ -79,6 +94,9 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
         self.fetch.load_address.next = self.load_address.val();
         self.fetch.load_data.next = self.load_data.val();
         self.pipeline.start.next = self.start.val();
+        self.pipeline.host_write.next = self.host_write.val();
+        self.pipeline.host_address.next = self.host_address.val();
+        self.pipeline.host_data.next = self.host_data.val();
         self.pipeline.valid.next = self.fetch.valid.val();
         for i in 0..P {
             self.pipeline.cur[i].next = self.fetch.cur[i].val();

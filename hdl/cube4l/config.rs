@@ -7,6 +7,7 @@
 use super::abc_gradient;
 use super::bilinear;
 use crate::common::ram::bits_for;
+use crate::common::shader;
 use golden_model::cube4l::plan::{Rays, Sweep};
 use scene::Mode;
 
@@ -89,15 +90,25 @@ impl CfbConfig {
     }
 }
 
-/// Clocks from a beat's shader register (T) to its composited result.
+/// Clocks from a beat's gather (T: the taps, the 2x2 selection) to its
+/// composited result.
 pub const RESULT_AT: u32 = bilinear::LATENCY as u32 + 1;
 
+/// Clocks the gather waits beyond the one after the shader's input, so
+/// that the shader's sample (`shader::LATENCY` clocks after its input) meets
+/// the bilinear unit's output at the compositor: the shader's input is at
+/// `T - 1 - GATHER_DELAY`.
+pub const GATHER_DELAY: usize = shader::LATENCY - 1 - bilinear::LATENCY;
+// The shader's sample must not come before the bilinear unit's output (it
+// would need registers of its own, which the control delay does not build).
+const _: () = assert!(shader::LATENCY > bilinear::LATENCY);
+
 /// Clocks of a sweep beyond one beat per clock: the start register, the
-/// block-RAM read, the shader register and the bilinear unit's latency (the
-/// compositor register ends the last beat's own clock), and with a gradient
-/// unit one more (its output register).
+/// block-RAM read, the shader's input register, the gather's delay and the
+/// bilinear unit's latency (the compositor register ends the last beat's
+/// own clock), and with a gradient unit one more (its output register).
 pub fn fill_clocks(gradient: bool) -> u64 {
-    3 + bilinear::LATENCY as u64 + gradient as u64
+    3 + GATHER_DELAY as u64 + bilinear::LATENCY as u64 + gradient as u64
 }
 
 /// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per

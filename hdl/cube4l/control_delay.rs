@@ -1,27 +1,32 @@
 //! The control delay line of a Cube-4L pipeline (§3.5-3.7, Fig. 18): a
-//! beat's control travels beside its voxel, from the shader input (T-1) to
-//! the taps, the 2x2 selection and the bilinear unit (T) and on to the
-//! compositor's result (T+L+1, L the bilinear unit's latency), where it
-//! marks the result and, on ER, makes it a base-plane pixel; the shaded
-//! sample waits for the bilinear unit (T -> T+L).
+//! beat's control travels beside its voxel, from the shader's input to the
+//! taps, the 2x2 selection and the bilinear unit (the gather, T) and on to
+//! the compositor's result (T+L+1, L the bilinear unit's latency), where it
+//! marks the result and, on ER, makes it a base-plane pixel.
+//!
+//! The shader takes `shader::LATENCY` clocks, so its input is `T - 1 -
+//! GATHER_DELAY` and its sample meets the bilinear unit's output at the
+//! compositor at T+L with no register of its own (`config::GATHER_DELAY`).
 
 use super::bilinear::LATENCY;
+use super::config::GATHER_DELAY;
 use rust_hdl::prelude::*;
 
-/// Registers from the shader input to the result (T-1 -> T+L+1).
-const CONTROL: usize = LATENCY + 2;
+/// Registers from the shader input to the gather, and to the result.
+const GATHER: usize = 1 + GATHER_DELAY;
+const RESULT: usize = GATHER + LATENCY + 1;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
-// written for L = 5.
+// written for a gather 2 clocks and a result 8 clocks after the input.
 const _: () = assert!(
-    LATENCY == 5 && CONTROL == 7,
+    GATHER == 2 && RESULT == 8,
     "update the literals in ControlDelay::update"
 );
 
-/// Control and sample registers of one lane.
+/// Control registers of one lane.
 #[derive(LogicBlock, Default)]
 pub struct ControlDelay {
     pub clock: Signal<In, Clock>,
-    /// The beat's control at the shader input (T-1).
+    /// The beat's control at the shader input.
     pub valid: Signal<In, Bit>,
     pub er: Signal<In, Bit>,
     pub pad: Signal<In, Bit>,
@@ -35,13 +40,7 @@ pub struct ControlDelay {
     pub dx_mag: Signal<In, Bits<16>>,
     pub dy_neg: Signal<In, Bit>,
     pub dy_mag: Signal<In, Bits<16>>,
-    /// The shader's sample (T).
-    pub r: Signal<In, Bits<16>>,
-    pub g: Signal<In, Bits<16>>,
-    pub b: Signal<In, Bits<16>>,
-    pub a: Signal<In, Bits<16>>,
-    pub sample_valid: Signal<In, Bit>,
-    /// At T: the voxel's position, SR, dx and dy.
+    /// At the gather (T): the voxel's position, SR, dx and dy.
     pub x_t: Signal<Out, Bits<16>>,
     pub y_t: Signal<Out, Bits<16>>,
     pub sr_t: Signal<Out, Bit>,
@@ -49,12 +48,6 @@ pub struct ControlDelay {
     pub dx_mag_t: Signal<Out, Bits<16>>,
     pub dy_neg_t: Signal<Out, Bit>,
     pub dy_mag_t: Signal<Out, Bits<16>>,
-    /// The sample at T+L, as the compositor takes it.
-    pub new_r: Signal<Out, Bits<16>>,
-    pub new_g: Signal<Out, Bits<16>>,
-    pub new_b: Signal<Out, Bits<16>>,
-    pub new_a: Signal<Out, Bits<16>>,
-    pub new_valid: Signal<Out, Bit>,
     /// At T+L+1, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
@@ -63,33 +56,36 @@ pub struct ControlDelay {
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
     pub px_face: Signal<Out, Bits<3>>,
-    // Control from T-1 to T, and on to T+L+1.
-    x_q: DFF<Bits<16>>,
-    y_q: DFF<Bits<16>>,
-    sr_q: DFF<Bit>,
-    dxn_q: DFF<Bit>,
-    dxm_q: DFF<Bits<16>>,
-    dyn_q: DFF<Bit>,
-    dym_q: DFF<Bits<16>>,
-    v_q: [DFF<Bit>; CONTROL],
-    er_q: [DFF<Bit>; CONTROL],
-    pad_q: [DFF<Bit>; CONTROL],
-    bx_q: [DFF<Bits<16>>; CONTROL],
-    by_q: [DFF<Bits<16>>; CONTROL],
-    face_q: [DFF<Bits<3>>; CONTROL],
-    // The sample from T to T+L.
-    s_r: [DFF<Bits<16>>; LATENCY],
-    s_g: [DFF<Bits<16>>; LATENCY],
-    s_b: [DFF<Bits<16>>; LATENCY],
-    s_a: [DFF<Bits<16>>; LATENCY],
-    s_v: [DFF<Bit>; LATENCY],
+    // Control to the gather.
+    x_q: [DFF<Bits<16>>; GATHER],
+    y_q: [DFF<Bits<16>>; GATHER],
+    sr_q: [DFF<Bit>; GATHER],
+    dxn_q: [DFF<Bit>; GATHER],
+    dxm_q: [DFF<Bits<16>>; GATHER],
+    dyn_q: [DFF<Bit>; GATHER],
+    dym_q: [DFF<Bits<16>>; GATHER],
+    // Control to the result.
+    v_q: [DFF<Bit>; RESULT],
+    er_q: [DFF<Bit>; RESULT],
+    pad_q: [DFF<Bit>; RESULT],
+    bx_q: [DFF<Bits<16>>; RESULT],
+    by_q: [DFF<Bits<16>>; RESULT],
+    face_q: [DFF<Bits<3>>; RESULT],
 }
 
 impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, x_q, y_q, sr_q, dxn_q, dxm_q, dyn_q, dym_q);
-        for i in 0..7 {
+        for i in 0..2 {
+            self.x_q[i].clock.next = self.clock.val();
+            self.y_q[i].clock.next = self.clock.val();
+            self.sr_q[i].clock.next = self.clock.val();
+            self.dxn_q[i].clock.next = self.clock.val();
+            self.dxm_q[i].clock.next = self.clock.val();
+            self.dyn_q[i].clock.next = self.clock.val();
+            self.dym_q[i].clock.next = self.clock.val();
+        }
+        for i in 0..8 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -97,36 +93,36 @@ impl Logic for ControlDelay {
             self.by_q[i].clock.next = self.clock.val();
             self.face_q[i].clock.next = self.clock.val();
         }
-        for i in 0..5 {
-            self.s_r[i].clock.next = self.clock.val();
-            self.s_g[i].clock.next = self.clock.val();
-            self.s_b[i].clock.next = self.clock.val();
-            self.s_a[i].clock.next = self.clock.val();
-            self.s_v[i].clock.next = self.clock.val();
-        }
-        // T-1 -> T.
-        self.x_q.d.next = self.x.val();
-        self.y_q.d.next = self.y.val();
-        self.sr_q.d.next = self.sr.val();
-        self.dxn_q.d.next = self.dx_neg.val();
-        self.dxm_q.d.next = self.dx_mag.val();
-        self.dyn_q.d.next = self.dy_neg.val();
-        self.dym_q.d.next = self.dy_mag.val();
-        self.x_t.next = self.x_q.q.val();
-        self.y_t.next = self.y_q.q.val();
-        self.sr_t.next = self.sr_q.q.val();
-        self.dx_neg_t.next = self.dxn_q.q.val();
-        self.dx_mag_t.next = self.dxm_q.q.val();
-        self.dy_neg_t.next = self.dyn_q.q.val();
-        self.dy_mag_t.next = self.dym_q.q.val();
-        // T-1 -> T+L+1.
+        // The input -> the gather.
+        self.x_q[0].d.next = self.x.val();
+        self.y_q[0].d.next = self.y.val();
+        self.sr_q[0].d.next = self.sr.val();
+        self.dxn_q[0].d.next = self.dx_neg.val();
+        self.dxm_q[0].d.next = self.dx_mag.val();
+        self.dyn_q[0].d.next = self.dy_neg.val();
+        self.dym_q[0].d.next = self.dy_mag.val();
+        self.x_q[1].d.next = self.x_q[0].q.val();
+        self.y_q[1].d.next = self.y_q[0].q.val();
+        self.sr_q[1].d.next = self.sr_q[0].q.val();
+        self.dxn_q[1].d.next = self.dxn_q[0].q.val();
+        self.dxm_q[1].d.next = self.dxm_q[0].q.val();
+        self.dyn_q[1].d.next = self.dyn_q[0].q.val();
+        self.dym_q[1].d.next = self.dym_q[0].q.val();
+        self.x_t.next = self.x_q[1].q.val();
+        self.y_t.next = self.y_q[1].q.val();
+        self.sr_t.next = self.sr_q[1].q.val();
+        self.dx_neg_t.next = self.dxn_q[1].q.val();
+        self.dx_mag_t.next = self.dxm_q[1].q.val();
+        self.dy_neg_t.next = self.dyn_q[1].q.val();
+        self.dy_mag_t.next = self.dym_q[1].q.val();
+        // The input -> the result.
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();
         self.pad_q[0].d.next = self.pad.val();
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..7 {
+        for i in 1..8 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -134,29 +130,11 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[6].q.val();
-        self.res_valid.next = self.v_q[6].q.val() & !self.pad_q[6].q.val();
-        self.px_valid.next = self.v_q[6].q.val() & self.er_q[6].q.val() & !self.pad_q[6].q.val();
-        self.px_x.next = self.bx_q[6].q.val();
-        self.px_y.next = self.by_q[6].q.val();
-        self.px_face.next = self.face_q[6].q.val();
-        // The sample, T -> T+L.
-        self.s_r[0].d.next = self.r.val();
-        self.s_g[0].d.next = self.g.val();
-        self.s_b[0].d.next = self.b.val();
-        self.s_a[0].d.next = self.a.val();
-        self.s_v[0].d.next = self.sample_valid.val();
-        for i in 1..5 {
-            self.s_r[i].d.next = self.s_r[i - 1].q.val();
-            self.s_g[i].d.next = self.s_g[i - 1].q.val();
-            self.s_b[i].d.next = self.s_b[i - 1].q.val();
-            self.s_a[i].d.next = self.s_a[i - 1].q.val();
-            self.s_v[i].d.next = self.s_v[i - 1].q.val();
-        }
-        self.new_r.next = self.s_r[4].q.val();
-        self.new_g.next = self.s_g[4].q.val();
-        self.new_b.next = self.s_b[4].q.val();
-        self.new_a.next = self.s_a[4].q.val();
-        self.new_valid.next = self.s_v[4].q.val();
+        self.res_beat.next = self.v_q[7].q.val();
+        self.res_valid.next = self.v_q[7].q.val() & !self.pad_q[7].q.val();
+        self.px_valid.next = self.v_q[7].q.val() & self.er_q[7].q.val() & !self.pad_q[7].q.val();
+        self.px_x.next = self.bx_q[7].q.val();
+        self.px_y.next = self.by_q[7].q.val();
+        self.px_face.next = self.face_q[7].q.val();
     }
 }

@@ -11,7 +11,9 @@ use super::control_delay::ControlDelay;
 use super::lane_feed::LaneFeed;
 use super::select2x2::Select2x2;
 use super::tap_network::TapNetwork;
+use crate::common::regs::ADDRESS_BITS;
 use crate::common::shader::Shader;
+use golden_model::host::ShaderTables;
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -22,6 +24,10 @@ use scene::Mode;
 #[derive(LogicBlock)]
 pub struct PipeLane<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port (the shader's tables and registers).
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     /// The CFB lane's outputs: the live voxel, and its control, or with a
     /// gradient unit the late CFB's control for the voxel a slice back.
     pub beat_valid: Signal<In, Bit>,
@@ -101,6 +107,11 @@ pub struct PipeLane<const H: usize> {
 }
 
 impl<const H: usize> PipeLane<H> {
+    /// Give the shader's tables the contents the host would load.
+    pub fn preload_tables(&mut self, tables: &ShaderTables) {
+        self.shader.preload(tables);
+    }
+
     /// Bits of block RAM in the lane's buffers, as built.
     pub fn buffer_bits(&self) -> u64 {
         (self.taps.memory_bits() + self.feed.memory_bits()) as u64
@@ -109,6 +120,9 @@ impl<const H: usize> PipeLane<H> {
     pub fn new(c: &PipelineConfig, shader: Shader, mode: Mode) -> PipeLane<H> {
         PipeLane {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             beat_valid: Default::default(),
             value: Default::default(),
             x: Default::default(),
@@ -213,8 +227,11 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.g_to_left_xp.next = self.feed.g_to_left_xp.val();
         self.g_to_left_yp.next = self.feed.g_to_left_yp.val();
         self.g_to_left_zp.next = self.feed.g_to_left_zp.val();
-        // Shader (input at T-1, registered sample at T).
+        // Shader (input at T-1-GATHER_DELAY, the sample at T+L).
         self.shader.clock.next = self.clock.val();
+        self.shader.host_write.next = self.host_write.val();
+        self.shader.host_address.next = self.host_address.val();
+        self.shader.host_data.next = self.host_data.val();
         self.shader.value.next = self.feed.o_value.val();
         self.shader.invalid.next = self.feed.o_invalid.val();
         self.shader.at_edge.next = self.feed.o_edge.val();
@@ -224,8 +241,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.shader.gy_mag.next = bit_cast::<32, 16>(self.feed.gy_mag.val());
         self.shader.gz_neg.next = self.feed.gz_neg.val();
         self.shader.gz_mag.next = bit_cast::<32, 16>(self.feed.gz_mag.val());
-        // Control beside the voxel (T-1 to T and the result), the sample T
-        // to T+L.
+        // Control beside the voxel, to the gather (T) and the result.
         self.ctl.clock.next = self.clock.val();
         self.ctl.valid.next = self.feed.o_valid.val();
         self.ctl.er.next = self.feed.o_er.val();
@@ -240,11 +256,6 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.dx_mag.next = self.feed.o_dx_mag.val();
         self.ctl.dy_neg.next = self.feed.o_dy_neg.val();
         self.ctl.dy_mag.next = self.feed.o_dy_mag.val();
-        self.ctl.r.next = bit_cast::<16, 32>(self.shader.r.val());
-        self.ctl.g.next = self.shader.g.val();
-        self.ctl.b.next = self.shader.b.val();
-        self.ctl.a.next = self.shader.a.val();
-        self.ctl.sample_valid.next = self.shader.valid.val();
         // The compositing-buffer taps (T).
         self.taps.clock.next = self.clock.val();
         self.taps.x.next = self.ctl.x_t.val();
@@ -298,11 +309,12 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.compositor.acc_g.next = bit_cast::<16, 32>(self.bilinear.out[1].val());
         self.compositor.acc_b.next = bit_cast::<16, 32>(self.bilinear.out[2].val());
         self.compositor.acc_a.next = bit_cast::<16, 32>(self.bilinear.out[3].val());
-        self.compositor.new_r.next = bit_cast::<32, 16>(self.ctl.new_r.val());
-        self.compositor.new_g.next = self.ctl.new_g.val();
-        self.compositor.new_b.next = self.ctl.new_b.val();
-        self.compositor.new_a.next = self.ctl.new_a.val();
-        self.compositor.new_valid.next = self.ctl.new_valid.val();
+        // The shader's sample arrives at T+L (`ControlDelay`).
+        self.compositor.new_r.next = self.shader.r.val();
+        self.compositor.new_g.next = self.shader.g.val();
+        self.compositor.new_b.next = self.shader.b.val();
+        self.compositor.new_a.next = self.shader.a.val();
+        self.compositor.new_valid.next = self.shader.valid.val();
         self.res.next = bit_cast::<64, 32>(self.compositor.out_r.val())
             | (bit_cast::<64, 16>(self.compositor.out_g.val()) << 16)
             | (bit_cast::<64, 16>(self.compositor.out_b.val()) << 32)

@@ -50,7 +50,9 @@
 use super::cfb::Cfb;
 use super::config::{CfbConfig, PipelineConfig};
 use super::pipe_lane::PipeLane;
-use crate::common::shader::Shader;
+use crate::common::regs::ADDRESS_BITS;
+use crate::common::shader::{Shader, ShaderConfig};
+use golden_model::host::ShaderTables;
 use rust_hdl::prelude::*;
 
 /// The whole Cube-4L pipeline: CFB and `P` pipelines (`A`-bit memory
@@ -64,6 +66,11 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
+    /// The host port: registers and tables, written between sweeps
+    /// (`golden_model::host`).
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     /// Sweep status from the CFB's address generator: running, and the
     /// slice (N_s), beam (N_B) and partial beam (N_b) being read, with BS.
     pub busy: Signal<Out, Bit>,
@@ -121,9 +128,15 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
                 config.cfb.memory_bits
             ));
         }
+        let shading = ShaderConfig::of(
+            &golden.tables(),
+            golden.voxel_bits,
+            golden.needs_gradient,
+            false,
+        );
         let mut lanes = Vec::with_capacity(P);
         for _ in 0..P {
-            lanes.push(PipeLane::new(config, Shader::new(golden)?, golden.mode));
+            lanes.push(PipeLane::new(config, Shader::new(&shading), golden.mode));
         }
         let lanes = lanes
             .into_boxed_slice()
@@ -141,6 +154,14 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
     /// initialisation), `modules[k][i]` being word `i` of module `k`.
     pub fn preload(&mut self, modules: &[Vec<u16>]) {
         self.cfb.preload(modules);
+    }
+
+    /// Give every lane's shader tables the contents the host would load
+    /// (block-RAM initialisation, for simulation).
+    pub fn preload_tables(&mut self, tables: &ShaderTables) {
+        for lane in self.lanes.iter_mut() {
+            lane.preload_tables(tables);
+        }
     }
 
     /// Bits of block RAM in the pipelines' buffers, as built (not the CFB's
@@ -170,6 +191,9 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             busy: Default::default(),
             n_s: Default::default(),
             n_beam: Default::default(),
@@ -225,6 +249,9 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
         for k in 0..P {
             self.late.ext_data[k].next = 0.into();
             self.lanes[k].clock.next = self.clock.val();
+            self.lanes[k].host_write.next = self.host_write.val();
+            self.lanes[k].host_address.next = self.host_address.val();
+            self.lanes[k].host_data.next = self.host_data.val();
             self.cfb.ext_data[k].next = self.ext_data[k].val();
             self.ext_addr[k].next = self.cfb.ext_addr[k].val();
             self.px_valid[k].next = self.lanes[k].px_valid.val();

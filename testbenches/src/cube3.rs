@@ -12,6 +12,7 @@ use cosim::Engine;
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{prp, render_view};
+use golden_model::host::Write;
 use hdl::cube3::Cube3SystemConfig;
 use scene::volume::Volume;
 
@@ -28,6 +29,9 @@ pub struct Case {
     pub cur: Vec<Vec<u32>>,
     pub next: Vec<Vec<u32>>,
     pub want: Vec<Option<([u32; 4], bool)>>,
+    /// What the host writes before the stream: the shaders' registers (the
+    /// tables are preloaded).
+    pub loads: Vec<Write>,
 }
 
 pub fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
@@ -87,6 +91,11 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
             .any(|u| view.x.d(u).unsigned_abs() > 1 << view.weight_bits);
         assert!(cast > 10 && uncast, "{name}: cast {cast}, uncast {uncast}");
     }
+    let loads = system
+        .pipeline
+        .shading
+        .as_ref()
+        .map_or(vec![], |s| s.tables().register_writes());
     Case {
         name: format!("{name}, p={p}"),
         config: system,
@@ -94,6 +103,7 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
         cur,
         next,
         want,
+        loads,
     }
 }
 

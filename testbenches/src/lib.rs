@@ -193,6 +193,7 @@ clocked!(
     [const P: usize, const H: usize] hdl::cube3::trilin_lanes::TrilinLanes<P, H>,
     [const P: usize] hdl::cube3::compositor::Rpc<P>,
     [] hdl::cube3::trilin::Trilin,
+    [] hdl::common::shader::Shader,
 );
 
 /// A moment of a clock-by-clock testbench: before rising edge `t` (set

@@ -1,9 +1,10 @@
 //! A fault-injection campaign on the emitted Verilog of a shaded composite
 //! scene. Each fault is one textual edit in one module of the Verilog that
-//! `cube verilog` writes: a LUT bit flip, swapped neighbour links, an
-//! off-by-one delay, stuck control bits (SR, ER, the partial-beam start BS,
-//! invalid), wrong rounding constants, dropped saturations, a wrong 2x2
-//! selection, a gradient sign and a reflectance address wiring fault. Every
+//! `cube verilog` writes: a bit dropped on the host's table-load path,
+//! swapped neighbour links, an off-by-one delay, stuck control bits (SR, ER,
+//! the partial-beam start BS, invalid), wrong rounding constants, dropped
+//! saturations, a wrong 2x2 selection, a gradient sign and a wiring fault in
+//! the lighting's dot product. Every
 //! fault must be caught twice: by the pixel comparison with the golden model,
 //! and by the trace comparison (`cube vcd-diff`'s `compare`) against the
 //! fault-free trace from the same simulator, which names its first bad
@@ -70,13 +71,6 @@ fn line_of(verilog: &str, module: &str, prefix: &str) -> String {
         .to_string()
 }
 
-/// A hex literal `N'hV` at the end of `line` (before `;`), with `f` applied.
-fn edit_hex(line: &str, f: impl Fn(u64) -> u64) -> String {
-    let (head, tail) = line.rsplit_once("'h").unwrap();
-    let v = u64::from_str_radix(tail.trim_end_matches(';'), 16).unwrap();
-    format!("{head}'h{:x};", f(v))
-}
-
 #[test]
 fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     require_tool("iverilog");
@@ -109,8 +103,6 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         "the untouched Verilog matches the golden model"
     );
 
-    let lut = "top$lanes$0$shader$lut";
-    let lut_line = line_of(&verilog, lut, "12'hff:");
     let rows = "top$lanes$0$taps$rows";
     let pick0 = line_of(&verilog, rows, "localparam  pick$0");
     // With a gradient unit the lanes' control comes from the late CFB.
@@ -122,11 +114,11 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     };
     let faults = [
         fault(
-            "LUT bit flip",
-            "colour/opacity LUT entry 0xff: opacity bit 0 flipped",
-            lut,
-            &lut_line,
-            &edit_hex(&lut_line, |v| v ^ 1 << 48),
+            "table load",
+            "classification table: opacity bit 0 of every host write dropped",
+            "top$lanes$0$shader$lut",
+            "ram$write_data = 64'(host_data);",
+            "ram$write_data = 64'(host_data) & ~64'h1000000000000;",
         ),
         fault(
             "swapped neighbour link",
@@ -196,15 +188,15 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         fault(
             "wrong rounding constant",
             "normal quantizer rounds down",
-            "top$lanes$0$shader",
-            "half = (32'('h1) << s) >> 'h1;",
+            "top$lanes$0$shader$normal",
+            "half = (32'('h1) << s_q$q) >> 'h1;",
             "half = 'h0;",
         ),
         fault(
             "dropped saturation",
             "normal quantizer: x component not saturated",
-            "top$lanes$0$shader",
-            "if (qx > 'hf) begin",
+            "top$lanes$0$shader$normal",
+            "if (q$0 > 'hf) begin",
             "if (1'b0) begin",
         ),
         fault(
@@ -231,10 +223,10 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         ),
         fault(
             "wiring",
-            "reflectance map address: y and x normal components swapped",
-            "top$lanes$0$shader",
-            "reflectance$address = 15'(ix) | (15'(iy) << 'h5)",
-            "reflectance$address = 15'(iy) | (15'(ix) << 'h5)",
+            "lighting: the normal's z magnitude wired from its y",
+            "top$lanes$0$shader$lighting",
+            "qm$2 = 16'(q_mag$2);",
+            "qm$2 = 16'(q_mag$1);",
         ),
     ];
     let mut table = vec![

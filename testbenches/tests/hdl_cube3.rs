@@ -7,7 +7,7 @@
 //! as emitted Verilog under Icarus and Verilator. The 2-DSB streams are the
 //! golden model's PRPs (`prp::fetch`), as the beam fetch would fill them.
 
-use cosim::harness::ports;
+use cosim::harness::{host_writes, ports};
 use cosim::Engine;
 use hdl::cube3::Cube3;
 use rust_hdl::prelude::*;
@@ -18,6 +18,9 @@ const H: usize = 10;
 
 fn pipeline<const P: usize>(c: &Case) -> Cube3<P, H> {
     let mut uut = Cube3::<P, H>::new(&c.config.pipeline).unwrap();
+    if let Some(s) = &c.config.pipeline.shading {
+        uut.preload_tables(&s.tables());
+    }
     uut.connect_all();
     uut
 }
@@ -54,11 +57,18 @@ fn stream(c: &Case, t: usize) -> (bool, bool, &[u32], &[u32]) {
 fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = pipeline::<P>(&c);
-        let (n, name) = (clocks(&c), format!("cube3 {}", c.name));
+        let l = c.loads.len();
+        let (n, name) = (l + clocks(&c), format!("cube3 {}", c.name));
         let mut pixels = Pixels::new(&c, first_pixel(&c));
         run_clocks(uut, n, &name, move |e, x| match e {
+            Edge::Before(t) if t < l => {
+                x.host_write.next = true;
+                x.host_address.next = (c.loads[t].address as u64).to_bits();
+                x.host_data.next = c.loads[t].data.to_bits();
+            }
             Edge::Before(t) => {
-                let (start, valid, cur, next) = stream(&c, t);
+                x.host_write.next = false;
+                let (start, valid, cur, next) = stream(&c, t - l);
                 x.start.next = start;
                 x.valid.next = valid;
                 for i in 0..P {
@@ -66,7 +76,8 @@ fn rust_hdl_run<const P: usize>() {
                     x.next[i].next = (next[i] as u64).to_bits();
                 }
             }
-            Edge::After(t) => pixels.read("rust-hdl", t, pixel_port!(x)),
+            Edge::After(t) if t >= l => pixels.read("rust-hdl", t - l, pixel_port!(x)),
+            Edge::After(_) => {}
             Edge::End => {
                 let errors = pixels.finish();
                 assert!(errors.is_empty(), "{}", errors[0]);
@@ -83,22 +94,22 @@ fn cube3_pipeline_matches_golden_base_plane_in_rust_hdl() {
 /// Run a case's Verilog; its mismatches.
 fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str) -> Vec<String> {
     let ports = ports(verilog).unwrap();
-    let vectors: Vec<Vec<u64>> = (0..clocks(c))
-        .map(|t| {
-            let (start, valid, cur, next) = stream(c, t);
-            ports
-                .iter()
-                .filter(|p| p.input)
-                .map(|p| match p.name.split_once('$') {
-                    Some(("cur", i)) => cur[i.parse::<usize>().unwrap()] as u64,
-                    Some((_, i)) => next[i.parse::<usize>().unwrap()] as u64,
-                    None if p.name == "start" => start as u64,
-                    None => valid as u64,
-                })
-                .collect()
-        })
-        .collect();
-    verilog_pixels(engine, c, verilog, &vectors, first_pixel(c))
+    let mut vectors = host_writes(&ports, &c.loads);
+    vectors.extend((0..clocks(c)).map(|t| {
+        let (start, valid, cur, next) = stream(c, t);
+        ports
+            .iter()
+            .filter(|p| p.input)
+            .map(|p| match p.name.split_once('$') {
+                Some(("cur", i)) => cur[i.parse::<usize>().unwrap()] as u64,
+                Some((_, i)) => next[i.parse::<usize>().unwrap()] as u64,
+                None if p.name == "start" => start as u64,
+                None if p.name == "valid" => valid as u64,
+                None => 0,
+            })
+            .collect::<Vec<u64>>()
+    }));
+    verilog_pixels(engine, c, verilog, &vectors, c.loads.len() + first_pixel(c))
 }
 
 fn check<const P: usize>(engine: Engine) {

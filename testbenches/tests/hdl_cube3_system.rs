@@ -5,7 +5,7 @@
 //! views (one at exactly 45°) of non-cubic volumes, p = 1, 2, 4 and 8, in
 //! rust-hdl simulation and as emitted Verilog under Icarus and Verilator.
 
-use cosim::harness::{ports, start_only};
+use cosim::harness::{host_writes, ports, start_only};
 use cosim::Engine;
 use hdl::cube3::Cube3System;
 use rust_hdl::prelude::*;
@@ -19,6 +19,9 @@ const H: usize = 10;
 fn system<const P: usize>(c: &Case) -> Cube3System<P, A, B, H> {
     let mut uut = Cube3System::<P, A, B, H>::new(&c.config).unwrap();
     uut.preload(&c.modules);
+    if let Some(s) = &c.config.pipeline.shading {
+        uut.preload_tables(&s.tables());
+    }
     uut.connect_all();
     uut
 }
@@ -32,11 +35,22 @@ fn first_pixel(c: &Case) -> usize {
 fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = system::<P>(&c);
-        let (n, name) = (c.config.clocks(), format!("cube3 system {}", c.name));
+        let l = c.loads.len();
+        let (n, name) = (l + c.config.clocks(), format!("cube3 system {}", c.name));
         let mut pixels = Pixels::new(&c, first_pixel(&c));
+        let loads = c.loads.clone();
         run_clocks(uut, n, &name, move |e, x| match e {
-            Edge::Before(t) => x.start.next = t == 0,
-            Edge::After(t) => pixels.read("rust-hdl", t, pixel_port!(x)),
+            Edge::Before(t) if t < l => {
+                x.host_write.next = true;
+                x.host_address.next = (loads[t].address as u64).to_bits();
+                x.host_data.next = loads[t].data.to_bits();
+            }
+            Edge::Before(t) => {
+                x.host_write.next = false;
+                x.start.next = t == l;
+            }
+            Edge::After(t) if t >= l => pixels.read("rust-hdl", t - l, pixel_port!(x)),
+            Edge::After(_) => {}
             Edge::End => {
                 let errors = pixels.finish();
                 assert!(errors.is_empty(), "{}", errors[0]);
@@ -53,10 +67,9 @@ fn cube3_system_matches_golden_base_plane_in_rust_hdl() {
 /// Run a case's Verilog; its mismatches.
 fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str) -> Vec<String> {
     let ports = ports(verilog).unwrap();
-    let vectors: Vec<Vec<u64>> = (0..c.config.clocks())
-        .map(|t| start_only(&ports, t))
-        .collect();
-    verilog_pixels(engine, c, verilog, &vectors, first_pixel(c))
+    let mut vectors = host_writes(&ports, &c.loads);
+    vectors.extend((0..c.config.clocks()).map(|t| start_only(&ports, t)));
+    verilog_pixels(engine, c, verilog, &vectors, c.loads.len() + first_pixel(c))
 }
 
 fn check<const P: usize>(engine: Engine) {
@@ -111,18 +124,31 @@ fn cube3_system_loads_its_memory_through_the_load_port() {
         .enumerate()
         .flat_map(|(m, ws)| ws.iter().enumerate().map(move |(a, &w)| (m, a, w)))
         .collect();
-    let (loading, n) = (words.len(), words.len() + c.config.clocks());
+    if let Some(s) = &c.config.pipeline.shading {
+        uut.preload_tables(&s.tables());
+    }
+    let loads = c.loads.clone();
+    let writes = words.len() + loads.len();
+    let (loading, n) = (writes, writes + c.config.clocks());
     let mut pixels = Pixels::new(&c, first_pixel(&c));
     run_clocks(uut, n, "cube3 system load port", move |e, x| match e {
-        Edge::Before(t) if t < loading => {
+        Edge::Before(t) if t < words.len() => {
             let (m, a, w) = words[t];
             x.load_enable.next = true;
             x.load_module.next = (m as u64).to_bits();
             x.load_address.next = (a as u64).to_bits();
             x.load_data.next = (w as u64).to_bits();
         }
+        Edge::Before(t) if t < loading => {
+            let w = loads[t - words.len()];
+            x.load_enable.next = false;
+            x.host_write.next = true;
+            x.host_address.next = (w.address as u64).to_bits();
+            x.host_data.next = w.data.to_bits();
+        }
         Edge::Before(t) => {
             x.load_enable.next = false;
+            x.host_write.next = false;
             x.start.next = t == loading;
         }
         Edge::After(t) if t >= loading => pixels.read("rust-hdl", t - loading, pixel_port!(x)),

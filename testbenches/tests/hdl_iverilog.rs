@@ -8,7 +8,9 @@ use cosim::Engine;
 use scene::volume::builtin;
 use testbenches::{require_tool, scene};
 
-fn check(json: &str, vol_name: &str) {
+/// Both engines on one scene: pixels bit for bit, the same clocks (which
+/// `simulate` checks against the schedule's terms); the terms.
+fn check(json: &str, vol_name: &str) -> Vec<&'static str> {
     let s = scene(json);
     let vol = builtin(vol_name, s.volume.dims, 8).unwrap();
     let cam = s.camera().unwrap();
@@ -23,6 +25,7 @@ fn check(json: &str, vol_name: &str) {
         icarus.clocks, rust.clocks,
         "both engines count the same clocks"
     );
+    icarus.clock_terms.iter().map(|t| t.key).collect()
 }
 
 #[test]
@@ -43,6 +46,15 @@ fn emitted_verilog_matches_golden_model_under_icarus() {
             "mode": "xray", "image": [16, 16], "hardware": {"pipelines": 2}}"#,
         "phantom",
     );
+    // An eye inside the volume: sweeps that start inside it stream the
+    // slice before their first for the gradient, shaded through the host's
+    // tables and registers.
+    let terms = check(
+        r#"{"volume": {"builtin": "phantom", "dims": [10, 12, 11]}, "view": {"projection": "perspective", "eye": [5.3, 6.6, 4.2], "target": [6, 5, 11], "fov_deg": 120},
+            "mode": "composite", "shading": {"enabled": true}, "image": [16, 16], "hardware": {"pipelines": 2}}"#,
+        "phantom",
+    );
+    assert!(terms.contains(&"halo_slice"), "{terms:?}");
 }
 
 #[test]

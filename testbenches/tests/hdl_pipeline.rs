@@ -84,6 +84,11 @@ fn run_sweep<const P: usize>(
     let mem = SkewedMemory::new(vol, P);
     assert!(mem.modules[0].len() <= 1 << A);
     uut.preload(&mem.modules);
+    // Tables preloaded as a bitstream would hold them; the registers
+    // written through the host port before `start`.
+    let tables = golden.tables();
+    uut.preload_tables(&tables);
+    let loads = tables.register_writes();
     uut.connect_all();
     let expected_pixels = base.faces.iter().filter(|f| **f != Face::None).count();
     let beats = results.len();
@@ -96,6 +101,13 @@ fn run_sweep<const P: usize>(
     let label_for_vcd = label.clone();
     sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
         let mut x = sim.init()?;
+        for w in &loads {
+            x.host_write.next = true;
+            x.host_address.next = (w.address as u64).to_bits();
+            x.host_data.next = w.data.to_bits();
+            wait_clock_cycle!(sim, clock, x);
+        }
+        x.host_write.next = false;
         x.start.next = true;
         wait_clock_cycle!(sim, clock, x);
         x.start.next = false;
@@ -252,12 +264,14 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 8 clocks of fill: the start register, the
-    // block-RAM read, the shader register and the bilinear unit's five
-    // stages (the compositor register ends the last beat's own clock).
+    // One beat per clock plus 9 clocks of fill: the start register, the
+    // block-RAM read, the shader's input register, one clock of gather delay
+    // (the shader's 7 stages less the bilinear unit's 5, less the input
+    // register) and the bilinear unit's five stages (the compositor register
+    // ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 8,
+        ideal + 9,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }

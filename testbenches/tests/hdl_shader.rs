@@ -1,8 +1,10 @@
 //! `hdl::common::shader` alone against `golden_model::cube4l::shader::Shader::sample`,
-//! cycle by cycle in rust-hdl simulation: classification (1-D and 2-D with
-//! gradient opacity), the normal quantizer and reflectance map, shading and
-//! opacity weighting, for composite, first-opaque, X-ray and MIP, with edge
-//! and invalid voxels and gradients up to full scale.
+//! clock by clock in rust-hdl simulation, its sample `shader::LATENCY`
+//! clocks after its input: classification (1-D and 2-D with gradient
+//! opacity), the normal quantizer and lighting, shading and opacity
+//! weighting, for composite, first-opaque, X-ray and MIP, with edge and
+//! invalid voxels and gradients up to full scale; the tables preloaded, and
+//! loaded by the host through the host port.
 //!
 //! The `valid` flag is compared for MIP, where it means what the golden
 //! model's does (the voxel takes part in the maximum). In the other modes the
@@ -12,9 +14,9 @@
 
 use golden_model::cube4l::plan::{Control, Face, Plan};
 use golden_model::cube4l::shader::Shader as Golden;
-use hdl::common::shader::Shader;
+use hdl::common::shader::{Shader, ShaderConfig, LATENCY};
 use rust_hdl::prelude::*;
-use testbenches::{run_sim, scene, Vectors};
+use testbenches::{run_clocks, scene, Edge, Vectors};
 
 const N: usize = 500;
 
@@ -51,7 +53,9 @@ fn vectors(voxel_bits: u32, seed: u64) -> Vec<Vector> {
         .collect()
 }
 
-fn check(json: &str, seed: u64) {
+/// Check the shader of `json`'s first sweep on random voxels; its tables
+/// preloaded, or written by the host through the host port.
+fn check(json: &str, seed: u64, preload: bool) {
     let s = scene(json);
     let cam = s.camera().unwrap();
     let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
@@ -74,14 +78,33 @@ fn check(json: &str, seed: u64) {
             (out.value, out.valid || !compare_valid)
         })
         .collect();
-    let mut uut = Shader::new(&golden).unwrap();
+    let tables = golden.tables();
+    let mut uut = Shader::new(&ShaderConfig::of(
+        &tables,
+        golden.voxel_bits,
+        golden.needs_gradient,
+        false,
+    ));
+    let mut loads = tables.register_writes();
+    if preload {
+        uut.preload(&tables);
+    } else {
+        loads.splice(0..0, tables.table_writes());
+    }
     uut.connect_all();
-    let mut sim = Simulation::new();
-    sim.add_clock(5, |x: &mut Box<Shader>| x.clock.next = !x.clock.val());
-    let label = json.to_string();
-    sim.add_testbench(move |mut sim: Sim<Shader>| {
-        let mut x = sim.init()?;
-        for (cycle, v) in vs.iter().enumerate() {
+    let label = format!("{json} (tables preloaded: {preload})");
+    let n = loads.len();
+    // The host's writes, then a voxel a clock; its sample LATENCY clocks
+    // after its input.
+    run_clocks(uut, n + N + LATENCY, &label.clone(), move |e, x| match e {
+        Edge::Before(t) if t < n => {
+            x.host_write.next = true;
+            x.host_address.next = (loads[t].address as u64).to_bits();
+            x.host_data.next = loads[t].data.to_bits();
+        }
+        Edge::Before(t) => {
+            x.host_write.next = false;
+            let v = &vs[(t - n).min(N - 1)];
             x.value.next = (v.value as u64).to_bits();
             x.invalid.next = v.invalid;
             x.at_edge.next = v.edge;
@@ -92,8 +115,9 @@ fn check(json: &str, seed: u64) {
             x.gy_mag.next = (gy.unsigned_abs() as u64).to_bits();
             x.gz_neg.next = gz < 0;
             x.gz_mag.next = (gz.unsigned_abs() as u64).to_bits();
-            // The sample is registered: it is out one clock later.
-            wait_clock_cycle!(sim, clock, x);
+        }
+        Edge::After(t) if t + 1 >= n + LATENCY && t + 1 < n + LATENCY + N => {
+            let cycle = t + 1 - n - LATENCY;
             let got = (
                 [
                     x.r.val().to_u32(),
@@ -103,17 +127,16 @@ fn check(json: &str, seed: u64) {
                 ],
                 x.valid.val() || !compare_valid,
             );
-            let want = expected[cycle];
+            let (want, v) = (expected[cycle], &vs[cycle]);
             if got != want {
                 panic!(
-                    "{label}: first mismatch at cycle {cycle}, voxel {} invalid {} edge {} gradient {:?}: rtl {got:?}, golden {want:?}",
+                    "{label}: first mismatch at input {cycle} (clock {t}), voxel {} invalid {} edge {} gradient {:?}: rtl {got:?}, golden {want:?}",
                     v.value, v.invalid, v.edge, v.gradient
                 );
             }
         }
-        sim.done(x)
+        _ => {}
     });
-    run_sim(sim, Box::new(uut), 20 * (N as u64 + 4), "hdl_shader");
 }
 
 #[test]
@@ -128,6 +151,7 @@ fn shader_matches_golden_sample_by_sample() {
                               "gradient_opacity": [[0, 0.2], [60, 1.0]]}}}}"#
         ),
         3,
+        true,
     );
     check(
         &format!(
@@ -137,6 +161,7 @@ fn shader_matches_golden_sample_by_sample() {
                               "opaque_threshold": 0.25}}}}"#
         ),
         5,
+        true,
     );
     check(
         &format!(
@@ -144,11 +169,26 @@ fn shader_matches_golden_sample_by_sample() {
                 "transfer": {{"opacity": [[0, 0.0], [65535, 0.8]], "color": [[0, 1, 1, 1]]}}}}"#
         ),
         7,
+        true,
     );
     check(
         &format!(
             r#"{{"volume": {{"builtin": "sphere", "dims": [8, 8, 8]}}, {view}, "mode": "mip"}}"#
         ),
         11,
+        true,
+    );
+}
+
+/// The tables written by the host instead of preloaded: the same samples.
+#[test]
+fn shader_tables_load_through_the_host_port() {
+    check(
+        r#"{"volume": {"builtin": "sphere", "dims": [8, 8, 8]}, "view": {"projection": "parallel", "rotate_deg": [20, -40, 0]},
+            "image": [16, 16], "mode": "composite", "shading": {"enabled": true, "specular": 0.5},
+            "transfer": {"opacity": [[0, 0.0], [50, 0.3], [255, 0.9]], "color": [[0, 0.3, 0.9, 0.2], [255, 1, 0.5, 0.1]],
+                         "gradient_opacity": [[0, 0.3], [90, 1.0]]}}"#,
+        13,
+        false,
     );
 }

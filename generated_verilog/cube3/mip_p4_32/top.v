@@ -1,7 +1,10 @@
-module top(clock,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,load_enable,load_module,load_address,load_data);
+module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,load_enable,load_module,load_address,load_data);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  start;
     output reg  done;
     output reg  [31:0] pixel_r;
@@ -47,6 +50,9 @@ module top(clock,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$
     reg  [31:0] fetch$load_address;
     reg  [15:0] fetch$load_data;
     reg  pipeline$clock;
+    reg  pipeline$host_write;
+    reg  [23:0] pipeline$host_address;
+    reg  [63:0] pipeline$host_data;
     reg  pipeline$start;
     reg  pipeline$valid;
     reg  [15:0] pipeline$cur$0;
@@ -92,6 +98,9 @@ module top(clock,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$
     );
     top$pipeline pipeline(
         .clock(pipeline$clock),
+        .host_write(pipeline$host_write),
+        .host_address(pipeline$host_address),
+        .host_data(pipeline$host_data),
         .start(pipeline$start),
         .valid(pipeline$valid),
         .cur$0(pipeline$cur$0),
@@ -120,6 +129,9 @@ module top(clock,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$
         fetch$load_address = load_address;
         fetch$load_data = load_data;
         pipeline$start = start;
+        pipeline$host_write = host_write;
+        pipeline$host_address = host_address;
+        pipeline$host_data = host_data;
         pipeline$valid = fetch$valid;
         pipeline$cur$0 = fetch$cur$0;
         pipeline$next$0 = fetch$next$0;

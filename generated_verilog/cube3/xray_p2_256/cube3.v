@@ -1,7 +1,10 @@
-module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample);
+module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  start;
     input wire  valid;
     input wire  [15:0] cur$0;
@@ -96,6 +99,24 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     reg  [31:0] flags_line$data_in;
     reg  flags_line$write_enable;
     wire  [31:0] flags_line$data_out;
+    reg  [31:0] shade_flags_q$0$d;
+    wire  [31:0] shade_flags_q$0$q;
+    reg  shade_flags_q$0$clock;
+    reg  [31:0] shade_flags_q$1$d;
+    wire  [31:0] shade_flags_q$1$q;
+    reg  shade_flags_q$1$clock;
+    reg  [31:0] shade_flags_q$2$d;
+    wire  [31:0] shade_flags_q$2$q;
+    reg  shade_flags_q$2$clock;
+    reg  [31:0] shade_flags_q$3$d;
+    wire  [31:0] shade_flags_q$3$q;
+    reg  shade_flags_q$3$clock;
+    reg  [31:0] shade_flags_q$4$d;
+    wire  [31:0] shade_flags_q$4$q;
+    reg  shade_flags_q$4$clock;
+    reg  [31:0] shade_flags_q$5$d;
+    wire  [31:0] shade_flags_q$5$q;
+    reg  shade_flags_q$5$clock;
     reg  [31:0] rpc_flags_q$d;
     wire  [31:0] rpc_flags_q$q;
     reg  rpc_flags_q$clock;
@@ -134,6 +155,9 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     wire  [31:0] abc$gz$0 = 'h0;
     wire  [31:0] abc$gz$1 = 'h0;
     reg  shade$0$clock;
+    reg  shade$0$host_write;
+    reg  [23:0] shade$0$host_address;
+    reg  [63:0] shade$0$host_data;
     reg  [15:0] shade$0$value;
     reg  shade$0$invalid;
     reg  shade$0$at_edge;
@@ -149,6 +173,9 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
     wire  [15:0] shade$0$a = 'h0;
     wire  shade$0$valid = 'h0;
     reg  shade$1$clock;
+    reg  shade$1$host_write;
+    reg  [23:0] shade$1$host_address;
+    reg  [63:0] shade$1$host_data;
     reg  [15:0] shade$1$value;
     reg  shade$1$invalid;
     reg  shade$1$at_edge;
@@ -273,6 +300,36 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         .write_enable(flags_line$write_enable),
         .data_out(flags_line$data_out)
     );
+    top$pipeline$shade_flags_q$0 shade_flags_q$0(
+        .d(shade_flags_q$0$d),
+        .q(shade_flags_q$0$q),
+        .clock(shade_flags_q$0$clock)
+    );
+    top$pipeline$shade_flags_q$1 shade_flags_q$1(
+        .d(shade_flags_q$1$d),
+        .q(shade_flags_q$1$q),
+        .clock(shade_flags_q$1$clock)
+    );
+    top$pipeline$shade_flags_q$2 shade_flags_q$2(
+        .d(shade_flags_q$2$d),
+        .q(shade_flags_q$2$q),
+        .clock(shade_flags_q$2$clock)
+    );
+    top$pipeline$shade_flags_q$3 shade_flags_q$3(
+        .d(shade_flags_q$3$d),
+        .q(shade_flags_q$3$q),
+        .clock(shade_flags_q$3$clock)
+    );
+    top$pipeline$shade_flags_q$4 shade_flags_q$4(
+        .d(shade_flags_q$4$d),
+        .q(shade_flags_q$4$q),
+        .clock(shade_flags_q$4$clock)
+    );
+    top$pipeline$shade_flags_q$5 shade_flags_q$5(
+        .d(shade_flags_q$5$d),
+        .q(shade_flags_q$5$q),
+        .clock(shade_flags_q$5$clock)
+    );
     top$pipeline$rpc_flags_q rpc_flags_q(
         .d(rpc_flags_q$d),
         .q(rpc_flags_q$q),
@@ -370,7 +427,22 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
         if (gradients) begin
             leaf_flags = flags_line$data_out;
         end
+        shade_flags_q$0$clock = clock;
+        shade_flags_q$1$clock = clock;
+        shade_flags_q$2$clock = clock;
+        shade_flags_q$3$clock = clock;
+        shade_flags_q$4$clock = clock;
+        shade_flags_q$5$clock = clock;
+        shade_flags_q$0$d = leaf_flags;
+        shade_flags_q$1$d = shade_flags_q$0$q;
+        shade_flags_q$2$d = shade_flags_q$1$q;
+        shade_flags_q$3$d = shade_flags_q$2$q;
+        shade_flags_q$4$d = shade_flags_q$3$q;
+        shade_flags_q$5$d = shade_flags_q$4$q;
         rpc_flags_q$d = leaf_flags;
+        if (shaded) begin
+            rpc_flags_q$d = shade_flags_q$5$q;
+        end
         abc$dx_neg = control$dx_neg;
         abc$dx_mag = control$dx_mag;
         abc$dy_neg = control$dy_neg;
@@ -403,6 +475,9 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
             gz$0 = abc$gz$0;
         end
         shade$0$clock = clock;
+        shade$0$host_write = host_write;
+        shade$0$host_address = host_address;
+        shade$0$host_data = host_data;
         shade$0$value = index$0[('h0)+:(16)];
         shade$0$invalid = ~|(leaf_flags & lane_bit$0);
         shade$0$at_edge = ~|(leaf_flags & inner_bit$0);
@@ -461,6 +536,9 @@ module top$pipeline(clock,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pix
             gz$1 = abc$gz$1;
         end
         shade$1$clock = clock;
+        shade$1$host_write = host_write;
+        shade$1$host_address = host_address;
+        shade$1$host_data = host_data;
         shade$1$value = index$1[('h0)+:(16)];
         shade$1$invalid = ~|(leaf_flags & lane_bit$1);
         shade$1$at_edge = ~|(leaf_flags & inner_bit$1);
@@ -1417,3 +1495,105 @@ module top$pipeline$rpc_flags_q(d,q,clock);
     end
           
 endmodule // top$pipeline$rpc_flags_q
+module top$pipeline$shade_flags_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$0
+module top$pipeline$shade_flags_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$1
+module top$pipeline$shade_flags_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$2
+module top$pipeline$shade_flags_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$3
+module top$pipeline$shade_flags_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$4
+module top$pipeline$shade_flags_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$5

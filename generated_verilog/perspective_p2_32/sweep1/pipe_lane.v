@@ -1,7 +1,10 @@
-module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$0(clock,host_write,host_address,host_data,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -116,6 +119,9 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     wire  feed$gz_neg;
     wire  [15:0] feed$gz_mag;
     reg  shader$clock;
+    reg  shader$host_write;
+    reg  [23:0] shader$host_address;
+    reg  [63:0] shader$host_data;
     reg  [15:0] shader$value;
     reg  shader$invalid;
     reg  shader$at_edge;
@@ -144,11 +150,6 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
-    reg  [15:0] ctl$r;
-    reg  [15:0] ctl$g;
-    reg  [15:0] ctl$b;
-    reg  [15:0] ctl$a;
-    reg  ctl$sample_valid;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -156,11 +157,6 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  [15:0] ctl$new_r;
-    wire  [15:0] ctl$new_g;
-    wire  [15:0] ctl$new_b;
-    wire  [15:0] ctl$new_a;
-    wire  ctl$new_valid;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -330,6 +326,9 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     );
     top$lanes$0$shader shader(
         .clock(shader$clock),
+        .host_write(shader$host_write),
+        .host_address(shader$host_address),
+        .host_data(shader$host_data),
         .value(shader$value),
         .invalid(shader$invalid),
         .at_edge(shader$at_edge),
@@ -360,11 +359,6 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
-        .r(ctl$r),
-        .g(ctl$g),
-        .b(ctl$b),
-        .a(ctl$a),
-        .sample_valid(ctl$sample_valid),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -372,11 +366,6 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .new_r(ctl$new_r),
-        .new_g(ctl$new_g),
-        .new_b(ctl$new_b),
-        .new_a(ctl$new_a),
-        .new_valid(ctl$new_valid),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -531,6 +520,9 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         g_to_left_yp = feed$g_to_left_yp;
         g_to_left_zp = feed$g_to_left_zp;
         shader$clock = clock;
+        shader$host_write = host_write;
+        shader$host_address = host_address;
+        shader$host_data = host_data;
         shader$value = feed$o_value;
         shader$invalid = feed$o_invalid;
         shader$at_edge = feed$o_edge;
@@ -554,11 +546,6 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
-        ctl$r = 16'(shader$r);
-        ctl$g = shader$g;
-        ctl$b = shader$b;
-        ctl$a = shader$a;
-        ctl$sample_valid = shader$valid;
         taps$clock = clock;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
@@ -624,11 +611,11 @@ module top$lanes$0(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         compositor$acc_g = 16'(bilinear$out$1);
         compositor$acc_b = 16'(bilinear$out$2);
         compositor$acc_a = 16'(bilinear$out$3);
-        compositor$new_r = 32'(ctl$new_r);
-        compositor$new_g = ctl$new_g;
-        compositor$new_b = ctl$new_b;
-        compositor$new_a = ctl$new_a;
-        compositor$new_valid = ctl$new_valid;
+        compositor$new_r = shader$r;
+        compositor$new_g = shader$g;
+        compositor$new_b = shader$b;
+        compositor$new_a = shader$a;
+        compositor$new_valid = shader$valid;
         res = 64'(compositor$out_r) | (64'(compositor$out_g) << 'h10) | (64'(compositor$out_b) << 'h20) | (64'(compositor$out_a) << 'h30);
         taps$res = res;
         taps$res_beat = ctl$res_beat;
@@ -773,7 +760,7 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,r,g,b,a,sample_valid,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,new_r,new_g,new_b,new_a,new_valid,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -790,11 +777,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
-    input wire  [15:0] r;
-    input wire  [15:0] g;
-    input wire  [15:0] b;
-    input wire  [15:0] a;
-    input wire  sample_valid;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -802,11 +784,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  [15:0] new_r;
-    output reg  [15:0] new_g;
-    output reg  [15:0] new_b;
-    output reg  [15:0] new_a;
-    output reg  new_valid;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -815,27 +792,48 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
-    reg  [15:0] x_q$d;
-    wire  [15:0] x_q$q;
-    reg  x_q$clock;
-    reg  [15:0] y_q$d;
-    wire  [15:0] y_q$q;
-    reg  y_q$clock;
-    reg  sr_q$d;
-    wire  sr_q$q;
-    reg  sr_q$clock;
-    reg  dxn_q$d;
-    wire  dxn_q$q;
-    reg  dxn_q$clock;
-    reg  [15:0] dxm_q$d;
-    wire  [15:0] dxm_q$q;
-    reg  dxm_q$clock;
-    reg  dyn_q$d;
-    wire  dyn_q$q;
-    reg  dyn_q$clock;
-    reg  [15:0] dym_q$d;
-    wire  [15:0] dym_q$q;
-    reg  dym_q$clock;
+    reg  [15:0] x_q$0$d;
+    wire  [15:0] x_q$0$q;
+    reg  x_q$0$clock;
+    reg  [15:0] x_q$1$d;
+    wire  [15:0] x_q$1$q;
+    reg  x_q$1$clock;
+    reg  [15:0] y_q$0$d;
+    wire  [15:0] y_q$0$q;
+    reg  y_q$0$clock;
+    reg  [15:0] y_q$1$d;
+    wire  [15:0] y_q$1$q;
+    reg  y_q$1$clock;
+    reg  sr_q$0$d;
+    wire  sr_q$0$q;
+    reg  sr_q$0$clock;
+    reg  sr_q$1$d;
+    wire  sr_q$1$q;
+    reg  sr_q$1$clock;
+    reg  dxn_q$0$d;
+    wire  dxn_q$0$q;
+    reg  dxn_q$0$clock;
+    reg  dxn_q$1$d;
+    wire  dxn_q$1$q;
+    reg  dxn_q$1$clock;
+    reg  [15:0] dxm_q$0$d;
+    wire  [15:0] dxm_q$0$q;
+    reg  dxm_q$0$clock;
+    reg  [15:0] dxm_q$1$d;
+    wire  [15:0] dxm_q$1$q;
+    reg  dxm_q$1$clock;
+    reg  dyn_q$0$d;
+    wire  dyn_q$0$q;
+    reg  dyn_q$0$clock;
+    reg  dyn_q$1$d;
+    wire  dyn_q$1$q;
+    reg  dyn_q$1$clock;
+    reg  [15:0] dym_q$0$d;
+    wire  [15:0] dym_q$0$q;
+    reg  dym_q$0$clock;
+    reg  [15:0] dym_q$1$d;
+    wire  [15:0] dym_q$1$q;
+    reg  dym_q$1$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -857,6 +855,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$6$d;
     wire  v_q$6$q;
     reg  v_q$6$clock;
+    reg  v_q$7$d;
+    wire  v_q$7$q;
+    reg  v_q$7$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -878,6 +879,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$6$d;
     wire  er_q$6$q;
     reg  er_q$6$clock;
+    reg  er_q$7$d;
+    wire  er_q$7$q;
+    reg  er_q$7$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -899,6 +903,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$6$d;
     wire  pad_q$6$q;
     reg  pad_q$6$clock;
+    reg  pad_q$7$d;
+    wire  pad_q$7$q;
+    reg  pad_q$7$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -920,6 +927,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$6$d;
     wire  [15:0] bx_q$6$q;
     reg  bx_q$6$clock;
+    reg  [15:0] bx_q$7$d;
+    wire  [15:0] bx_q$7$q;
+    reg  bx_q$7$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -941,6 +951,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$6$d;
     wire  [15:0] by_q$6$q;
     reg  by_q$6$clock;
+    reg  [15:0] by_q$7$d;
+    wire  [15:0] by_q$7$q;
+    reg  by_q$7$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -962,117 +975,80 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$6$d;
     wire  [2:0] face_q$6$q;
     reg  face_q$6$clock;
-    reg  [15:0] s_r$0$d;
-    wire  [15:0] s_r$0$q;
-    reg  s_r$0$clock;
-    reg  [15:0] s_r$1$d;
-    wire  [15:0] s_r$1$q;
-    reg  s_r$1$clock;
-    reg  [15:0] s_r$2$d;
-    wire  [15:0] s_r$2$q;
-    reg  s_r$2$clock;
-    reg  [15:0] s_r$3$d;
-    wire  [15:0] s_r$3$q;
-    reg  s_r$3$clock;
-    reg  [15:0] s_r$4$d;
-    wire  [15:0] s_r$4$q;
-    reg  s_r$4$clock;
-    reg  [15:0] s_g$0$d;
-    wire  [15:0] s_g$0$q;
-    reg  s_g$0$clock;
-    reg  [15:0] s_g$1$d;
-    wire  [15:0] s_g$1$q;
-    reg  s_g$1$clock;
-    reg  [15:0] s_g$2$d;
-    wire  [15:0] s_g$2$q;
-    reg  s_g$2$clock;
-    reg  [15:0] s_g$3$d;
-    wire  [15:0] s_g$3$q;
-    reg  s_g$3$clock;
-    reg  [15:0] s_g$4$d;
-    wire  [15:0] s_g$4$q;
-    reg  s_g$4$clock;
-    reg  [15:0] s_b$0$d;
-    wire  [15:0] s_b$0$q;
-    reg  s_b$0$clock;
-    reg  [15:0] s_b$1$d;
-    wire  [15:0] s_b$1$q;
-    reg  s_b$1$clock;
-    reg  [15:0] s_b$2$d;
-    wire  [15:0] s_b$2$q;
-    reg  s_b$2$clock;
-    reg  [15:0] s_b$3$d;
-    wire  [15:0] s_b$3$q;
-    reg  s_b$3$clock;
-    reg  [15:0] s_b$4$d;
-    wire  [15:0] s_b$4$q;
-    reg  s_b$4$clock;
-    reg  [15:0] s_a$0$d;
-    wire  [15:0] s_a$0$q;
-    reg  s_a$0$clock;
-    reg  [15:0] s_a$1$d;
-    wire  [15:0] s_a$1$q;
-    reg  s_a$1$clock;
-    reg  [15:0] s_a$2$d;
-    wire  [15:0] s_a$2$q;
-    reg  s_a$2$clock;
-    reg  [15:0] s_a$3$d;
-    wire  [15:0] s_a$3$q;
-    reg  s_a$3$clock;
-    reg  [15:0] s_a$4$d;
-    wire  [15:0] s_a$4$q;
-    reg  s_a$4$clock;
-    reg  s_v$0$d;
-    wire  s_v$0$q;
-    reg  s_v$0$clock;
-    reg  s_v$1$d;
-    wire  s_v$1$q;
-    reg  s_v$1$clock;
-    reg  s_v$2$d;
-    wire  s_v$2$q;
-    reg  s_v$2$clock;
-    reg  s_v$3$d;
-    wire  s_v$3$q;
-    reg  s_v$3$clock;
-    reg  s_v$4$d;
-    wire  s_v$4$q;
-    reg  s_v$4$clock;
+    reg  [2:0] face_q$7$d;
+    wire  [2:0] face_q$7$q;
+    reg  face_q$7$clock;
     
     // Sub module instances
-    top$lanes$0$ctl$x_q x_q(
-        .d(x_q$d),
-        .q(x_q$q),
-        .clock(x_q$clock)
+    top$lanes$0$ctl$x_q$0 x_q$0(
+        .d(x_q$0$d),
+        .q(x_q$0$q),
+        .clock(x_q$0$clock)
     );
-    top$lanes$0$ctl$y_q y_q(
-        .d(y_q$d),
-        .q(y_q$q),
-        .clock(y_q$clock)
+    top$lanes$0$ctl$x_q$1 x_q$1(
+        .d(x_q$1$d),
+        .q(x_q$1$q),
+        .clock(x_q$1$clock)
     );
-    top$lanes$0$ctl$sr_q sr_q(
-        .d(sr_q$d),
-        .q(sr_q$q),
-        .clock(sr_q$clock)
+    top$lanes$0$ctl$y_q$0 y_q$0(
+        .d(y_q$0$d),
+        .q(y_q$0$q),
+        .clock(y_q$0$clock)
     );
-    top$lanes$0$ctl$dxn_q dxn_q(
-        .d(dxn_q$d),
-        .q(dxn_q$q),
-        .clock(dxn_q$clock)
+    top$lanes$0$ctl$y_q$1 y_q$1(
+        .d(y_q$1$d),
+        .q(y_q$1$q),
+        .clock(y_q$1$clock)
     );
-    top$lanes$0$ctl$dxm_q dxm_q(
-        .d(dxm_q$d),
-        .q(dxm_q$q),
-        .clock(dxm_q$clock)
+    top$lanes$0$ctl$sr_q$0 sr_q$0(
+        .d(sr_q$0$d),
+        .q(sr_q$0$q),
+        .clock(sr_q$0$clock)
     );
-    top$lanes$0$ctl$dyn_q dyn_q(
-        .d(dyn_q$d),
-        .q(dyn_q$q),
-        .clock(dyn_q$clock)
+    top$lanes$0$ctl$sr_q$1 sr_q$1(
+        .d(sr_q$1$d),
+        .q(sr_q$1$q),
+        .clock(sr_q$1$clock)
     );
-    top$lanes$0$ctl$dym_q dym_q(
-        .d(dym_q$d),
-        .q(dym_q$q),
-        .clock(dym_q$clock)
+    top$lanes$0$ctl$dxn_q$0 dxn_q$0(
+        .d(dxn_q$0$d),
+        .q(dxn_q$0$q),
+        .clock(dxn_q$0$clock)
+    );
+    top$lanes$0$ctl$dxn_q$1 dxn_q$1(
+        .d(dxn_q$1$d),
+        .q(dxn_q$1$q),
+        .clock(dxn_q$1$clock)
+    );
+    top$lanes$0$ctl$dxm_q$0 dxm_q$0(
+        .d(dxm_q$0$d),
+        .q(dxm_q$0$q),
+        .clock(dxm_q$0$clock)
+    );
+    top$lanes$0$ctl$dxm_q$1 dxm_q$1(
+        .d(dxm_q$1$d),
+        .q(dxm_q$1$q),
+        .clock(dxm_q$1$clock)
+    );
+    top$lanes$0$ctl$dyn_q$0 dyn_q$0(
+        .d(dyn_q$0$d),
+        .q(dyn_q$0$q),
+        .clock(dyn_q$0$clock)
+    );
+    top$lanes$0$ctl$dyn_q$1 dyn_q$1(
+        .d(dyn_q$1$d),
+        .q(dyn_q$1$q),
+        .clock(dyn_q$1$clock)
+    );
+    top$lanes$0$ctl$dym_q$0 dym_q$0(
+        .d(dym_q$0$d),
+        .q(dym_q$0$q),
+        .clock(dym_q$0$clock)
+    );
+    top$lanes$0$ctl$dym_q$1 dym_q$1(
+        .d(dym_q$1$d),
+        .q(dym_q$1$q),
+        .clock(dym_q$1$clock)
     );
     top$lanes$0$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -1109,6 +1085,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$6$q),
         .clock(v_q$6$clock)
     );
+    top$lanes$0$ctl$v_q$7 v_q$7(
+        .d(v_q$7$d),
+        .q(v_q$7$q),
+        .clock(v_q$7$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1143,6 +1124,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$6$d),
         .q(er_q$6$q),
         .clock(er_q$6$clock)
+    );
+    top$lanes$0$ctl$er_q$7 er_q$7(
+        .d(er_q$7$d),
+        .q(er_q$7$q),
+        .clock(er_q$7$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1179,6 +1165,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$6$q),
         .clock(pad_q$6$clock)
     );
+    top$lanes$0$ctl$pad_q$7 pad_q$7(
+        .d(pad_q$7$d),
+        .q(pad_q$7$q),
+        .clock(pad_q$7$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1213,6 +1204,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$6$d),
         .q(bx_q$6$q),
         .clock(bx_q$6$clock)
+    );
+    top$lanes$0$ctl$bx_q$7 bx_q$7(
+        .d(bx_q$7$d),
+        .q(bx_q$7$q),
+        .clock(bx_q$7$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -1249,6 +1245,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$6$q),
         .clock(by_q$6$clock)
     );
+    top$lanes$0$ctl$by_q$7 by_q$7(
+        .d(by_q$7$d),
+        .q(by_q$7$q),
+        .clock(by_q$7$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -1284,148 +1285,28 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$6$q),
         .clock(face_q$6$clock)
     );
-    top$lanes$0$ctl$s_r$0 s_r$0(
-        .d(s_r$0$d),
-        .q(s_r$0$q),
-        .clock(s_r$0$clock)
-    );
-    top$lanes$0$ctl$s_r$1 s_r$1(
-        .d(s_r$1$d),
-        .q(s_r$1$q),
-        .clock(s_r$1$clock)
-    );
-    top$lanes$0$ctl$s_r$2 s_r$2(
-        .d(s_r$2$d),
-        .q(s_r$2$q),
-        .clock(s_r$2$clock)
-    );
-    top$lanes$0$ctl$s_r$3 s_r$3(
-        .d(s_r$3$d),
-        .q(s_r$3$q),
-        .clock(s_r$3$clock)
-    );
-    top$lanes$0$ctl$s_r$4 s_r$4(
-        .d(s_r$4$d),
-        .q(s_r$4$q),
-        .clock(s_r$4$clock)
-    );
-    top$lanes$0$ctl$s_g$0 s_g$0(
-        .d(s_g$0$d),
-        .q(s_g$0$q),
-        .clock(s_g$0$clock)
-    );
-    top$lanes$0$ctl$s_g$1 s_g$1(
-        .d(s_g$1$d),
-        .q(s_g$1$q),
-        .clock(s_g$1$clock)
-    );
-    top$lanes$0$ctl$s_g$2 s_g$2(
-        .d(s_g$2$d),
-        .q(s_g$2$q),
-        .clock(s_g$2$clock)
-    );
-    top$lanes$0$ctl$s_g$3 s_g$3(
-        .d(s_g$3$d),
-        .q(s_g$3$q),
-        .clock(s_g$3$clock)
-    );
-    top$lanes$0$ctl$s_g$4 s_g$4(
-        .d(s_g$4$d),
-        .q(s_g$4$q),
-        .clock(s_g$4$clock)
-    );
-    top$lanes$0$ctl$s_b$0 s_b$0(
-        .d(s_b$0$d),
-        .q(s_b$0$q),
-        .clock(s_b$0$clock)
-    );
-    top$lanes$0$ctl$s_b$1 s_b$1(
-        .d(s_b$1$d),
-        .q(s_b$1$q),
-        .clock(s_b$1$clock)
-    );
-    top$lanes$0$ctl$s_b$2 s_b$2(
-        .d(s_b$2$d),
-        .q(s_b$2$q),
-        .clock(s_b$2$clock)
-    );
-    top$lanes$0$ctl$s_b$3 s_b$3(
-        .d(s_b$3$d),
-        .q(s_b$3$q),
-        .clock(s_b$3$clock)
-    );
-    top$lanes$0$ctl$s_b$4 s_b$4(
-        .d(s_b$4$d),
-        .q(s_b$4$q),
-        .clock(s_b$4$clock)
-    );
-    top$lanes$0$ctl$s_a$0 s_a$0(
-        .d(s_a$0$d),
-        .q(s_a$0$q),
-        .clock(s_a$0$clock)
-    );
-    top$lanes$0$ctl$s_a$1 s_a$1(
-        .d(s_a$1$d),
-        .q(s_a$1$q),
-        .clock(s_a$1$clock)
-    );
-    top$lanes$0$ctl$s_a$2 s_a$2(
-        .d(s_a$2$d),
-        .q(s_a$2$q),
-        .clock(s_a$2$clock)
-    );
-    top$lanes$0$ctl$s_a$3 s_a$3(
-        .d(s_a$3$d),
-        .q(s_a$3$q),
-        .clock(s_a$3$clock)
-    );
-    top$lanes$0$ctl$s_a$4 s_a$4(
-        .d(s_a$4$d),
-        .q(s_a$4$q),
-        .clock(s_a$4$clock)
-    );
-    top$lanes$0$ctl$s_v$0 s_v$0(
-        .d(s_v$0$d),
-        .q(s_v$0$q),
-        .clock(s_v$0$clock)
-    );
-    top$lanes$0$ctl$s_v$1 s_v$1(
-        .d(s_v$1$d),
-        .q(s_v$1$q),
-        .clock(s_v$1$clock)
-    );
-    top$lanes$0$ctl$s_v$2 s_v$2(
-        .d(s_v$2$d),
-        .q(s_v$2$q),
-        .clock(s_v$2$clock)
-    );
-    top$lanes$0$ctl$s_v$3 s_v$3(
-        .d(s_v$3$d),
-        .q(s_v$3$q),
-        .clock(s_v$3$clock)
-    );
-    top$lanes$0$ctl$s_v$4 s_v$4(
-        .d(s_v$4$d),
-        .q(s_v$4$q),
-        .clock(s_v$4$clock)
+    top$lanes$0$ctl$face_q$7 face_q$7(
+        .d(face_q$7$d),
+        .q(face_q$7$q),
+        .clock(face_q$7$clock)
     );
     
     // Update code
     always @(*) begin
-        x_q$clock = clock;
-        y_q$clock = clock;
-        sr_q$clock = clock;
-        dxn_q$clock = clock;
-        dxm_q$clock = clock;
-        dyn_q$clock = clock;
-        dym_q$clock = clock;
-        x_q$d = x_q$q;
-        y_q$d = y_q$q;
-        sr_q$d = sr_q$q;
-        dxn_q$d = dxn_q$q;
-        dxm_q$d = dxm_q$q;
-        dyn_q$d = dyn_q$q;
-        dym_q$d = dym_q$q;
+        x_q$0$clock = clock;
+        y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dxm_q$0$clock = clock;
+        dyn_q$0$clock = clock;
+        dym_q$0$clock = clock;
+        x_q$1$clock = clock;
+        y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dxm_q$1$clock = clock;
+        dyn_q$1$clock = clock;
+        dym_q$1$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -1468,45 +1349,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$6$clock = clock;
         by_q$6$clock = clock;
         face_q$6$clock = clock;
-        s_r$0$clock = clock;
-        s_g$0$clock = clock;
-        s_b$0$clock = clock;
-        s_a$0$clock = clock;
-        s_v$0$clock = clock;
-        s_r$1$clock = clock;
-        s_g$1$clock = clock;
-        s_b$1$clock = clock;
-        s_a$1$clock = clock;
-        s_v$1$clock = clock;
-        s_r$2$clock = clock;
-        s_g$2$clock = clock;
-        s_b$2$clock = clock;
-        s_a$2$clock = clock;
-        s_v$2$clock = clock;
-        s_r$3$clock = clock;
-        s_g$3$clock = clock;
-        s_b$3$clock = clock;
-        s_a$3$clock = clock;
-        s_v$3$clock = clock;
-        s_r$4$clock = clock;
-        s_g$4$clock = clock;
-        s_b$4$clock = clock;
-        s_a$4$clock = clock;
-        s_v$4$clock = clock;
-        x_q$d = x;
-        y_q$d = y;
-        sr_q$d = sr;
-        dxn_q$d = dx_neg;
-        dxm_q$d = dx_mag;
-        dyn_q$d = dy_neg;
-        dym_q$d = dy_mag;
-        x_t = x_q$q;
-        y_t = y_q$q;
-        sr_t = sr_q$q;
-        dx_neg_t = dxn_q$q;
-        dx_mag_t = dxm_q$q;
-        dy_neg_t = dyn_q$q;
-        dy_mag_t = dym_q$q;
+        v_q$7$clock = clock;
+        er_q$7$clock = clock;
+        pad_q$7$clock = clock;
+        bx_q$7$clock = clock;
+        by_q$7$clock = clock;
+        face_q$7$clock = clock;
+        x_q$0$d = x;
+        y_q$0$d = y;
+        sr_q$0$d = sr;
+        dxn_q$0$d = dx_neg;
+        dxm_q$0$d = dx_mag;
+        dyn_q$0$d = dy_neg;
+        dym_q$0$d = dy_mag;
+        x_q$1$d = x_q$0$q;
+        y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dxm_q$1$d = dxm_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
+        dym_q$1$d = dym_q$0$q;
+        x_t = x_q$1$q;
+        y_t = y_q$1$q;
+        sr_t = sr_q$1$q;
+        dx_neg_t = dxn_q$1$q;
+        dx_mag_t = dxm_q$1$q;
+        dy_neg_t = dyn_q$1$q;
+        dy_mag_t = dym_q$1$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -1549,42 +1418,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$6$d = bx_q$5$q;
         by_q$6$d = by_q$5$q;
         face_q$6$d = face_q$5$q;
-        res_beat = v_q$6$q;
-        res_valid = v_q$6$q & ~pad_q$6$q;
-        px_valid = v_q$6$q & er_q$6$q & ~pad_q$6$q;
-        px_x = bx_q$6$q;
-        px_y = by_q$6$q;
-        px_face = face_q$6$q;
-        s_r$0$d = r;
-        s_g$0$d = g;
-        s_b$0$d = b;
-        s_a$0$d = a;
-        s_v$0$d = sample_valid;
-        s_r$1$d = s_r$0$q;
-        s_g$1$d = s_g$0$q;
-        s_b$1$d = s_b$0$q;
-        s_a$1$d = s_a$0$q;
-        s_v$1$d = s_v$0$q;
-        s_r$2$d = s_r$1$q;
-        s_g$2$d = s_g$1$q;
-        s_b$2$d = s_b$1$q;
-        s_a$2$d = s_a$1$q;
-        s_v$2$d = s_v$1$q;
-        s_r$3$d = s_r$2$q;
-        s_g$3$d = s_g$2$q;
-        s_b$3$d = s_b$2$q;
-        s_a$3$d = s_a$2$q;
-        s_v$3$d = s_v$2$q;
-        s_r$4$d = s_r$3$q;
-        s_g$4$d = s_g$3$q;
-        s_b$4$d = s_b$3$q;
-        s_a$4$d = s_a$3$q;
-        s_v$4$d = s_v$3$q;
-        new_r = s_r$4$q;
-        new_g = s_g$4$q;
-        new_b = s_b$4$q;
-        new_a = s_a$4$q;
-        new_valid = s_v$4$q;
+        v_q$7$d = v_q$6$q;
+        er_q$7$d = er_q$6$q;
+        pad_q$7$d = pad_q$6$q;
+        bx_q$7$d = bx_q$6$q;
+        by_q$7$d = by_q$6$q;
+        face_q$7$d = face_q$6$q;
+        res_beat = v_q$7$q;
+        res_valid = v_q$7$q & ~pad_q$7$q;
+        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
+        px_x = bx_q$7$q;
+        px_y = by_q$7$q;
+        px_face = face_q$7$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -1707,6 +1552,23 @@ module top$lanes$0$ctl$bx_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$6
+module top$lanes$0$ctl$bx_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$7
 module top$lanes$0$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -1826,7 +1688,7 @@ module top$lanes$0$ctl$by_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$6
-module top$lanes$0$ctl$dxm_q(d,q,clock);
+module top$lanes$0$ctl$by_q$7(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1842,25 +1704,8 @@ module top$lanes$0$ctl$dxm_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$dxm_q
-module top$lanes$0$ctl$dxn_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$dxn_q
-module top$lanes$0$ctl$dym_q(d,q,clock);
+endmodule // top$lanes$0$ctl$by_q$7
+module top$lanes$0$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1876,8 +1721,25 @@ module top$lanes$0$ctl$dym_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$dym_q
-module top$lanes$0$ctl$dyn_q(d,q,clock);
+endmodule // top$lanes$0$ctl$dxm_q$0
+module top$lanes$0$ctl$dxm_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$1
+module top$lanes$0$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1893,7 +1755,92 @@ module top$lanes$0$ctl$dyn_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$dyn_q
+endmodule // top$lanes$0$ctl$dxn_q$0
+module top$lanes$0$ctl$dxn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$1
+module top$lanes$0$ctl$dym_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$0
+module top$lanes$0$ctl$dym_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$1
+module top$lanes$0$ctl$dyn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$0
+module top$lanes$0$ctl$dyn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$1
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -2013,6 +1960,23 @@ module top$lanes$0$ctl$er_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$6
+module top$lanes$0$ctl$er_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$7
 module top$lanes$0$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -2132,6 +2096,23 @@ module top$lanes$0$ctl$face_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$6
+module top$lanes$0$ctl$face_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$7
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -2251,347 +2232,7 @@ module top$lanes$0$ctl$pad_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$6
-module top$lanes$0$ctl$s_a$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_a$0
-module top$lanes$0$ctl$s_a$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_a$1
-module top$lanes$0$ctl$s_a$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_a$2
-module top$lanes$0$ctl$s_a$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_a$3
-module top$lanes$0$ctl$s_a$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_a$4
-module top$lanes$0$ctl$s_b$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_b$0
-module top$lanes$0$ctl$s_b$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_b$1
-module top$lanes$0$ctl$s_b$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_b$2
-module top$lanes$0$ctl$s_b$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_b$3
-module top$lanes$0$ctl$s_b$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_b$4
-module top$lanes$0$ctl$s_g$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_g$0
-module top$lanes$0$ctl$s_g$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_g$1
-module top$lanes$0$ctl$s_g$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_g$2
-module top$lanes$0$ctl$s_g$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_g$3
-module top$lanes$0$ctl$s_g$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_g$4
-module top$lanes$0$ctl$s_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_r$0
-module top$lanes$0$ctl$s_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_r$1
-module top$lanes$0$ctl$s_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_r$2
-module top$lanes$0$ctl$s_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_r$3
-module top$lanes$0$ctl$s_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_r$4
-module top$lanes$0$ctl$s_v$0(d,q,clock);
+module top$lanes$0$ctl$pad_q$7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2607,8 +2248,8 @@ module top$lanes$0$ctl$s_v$0(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$s_v$0
-module top$lanes$0$ctl$s_v$1(d,q,clock);
+endmodule // top$lanes$0$ctl$pad_q$7
+module top$lanes$0$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2624,8 +2265,8 @@ module top$lanes$0$ctl$s_v$1(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$s_v$1
-module top$lanes$0$ctl$s_v$2(d,q,clock);
+endmodule // top$lanes$0$ctl$sr_q$0
+module top$lanes$0$ctl$sr_q$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2641,58 +2282,7 @@ module top$lanes$0$ctl$s_v$2(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$s_v$2
-module top$lanes$0$ctl$s_v$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_v$3
-module top$lanes$0$ctl$s_v$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$s_v$4
-module top$lanes$0$ctl$sr_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$sr_q
+endmodule // top$lanes$0$ctl$sr_q$1
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -2812,7 +2402,24 @@ module top$lanes$0$ctl$v_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$6
-module top$lanes$0$ctl$x_q(d,q,clock);
+module top$lanes$0$ctl$v_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$7
+module top$lanes$0$ctl$x_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2828,8 +2435,8 @@ module top$lanes$0$ctl$x_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$x_q
-module top$lanes$0$ctl$y_q(d,q,clock);
+endmodule // top$lanes$0$ctl$x_q$0
+module top$lanes$0$ctl$x_q$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2845,7 +2452,41 @@ module top$lanes$0$ctl$y_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$ctl$y_q
+endmodule // top$lanes$0$ctl$x_q$1
+module top$lanes$0$ctl$y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$0
+module top$lanes$0$ctl$y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$1
 module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -2980,10 +2621,13 @@ module top$lanes$0$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x
     end
     
 endmodule // top$lanes$0$feed
-module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+module top$lanes$1(clock,host_write,host_address,host_data,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  beat_valid;
     input wire  [15:0] value;
     input wire  [15:0] x;
@@ -3098,6 +2742,9 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     wire  feed$gz_neg;
     wire  [15:0] feed$gz_mag;
     reg  shader$clock;
+    reg  shader$host_write;
+    reg  [23:0] shader$host_address;
+    reg  [63:0] shader$host_data;
     reg  [15:0] shader$value;
     reg  shader$invalid;
     reg  shader$at_edge;
@@ -3126,11 +2773,6 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
-    reg  [15:0] ctl$r;
-    reg  [15:0] ctl$g;
-    reg  [15:0] ctl$b;
-    reg  [15:0] ctl$a;
-    reg  ctl$sample_valid;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -3138,11 +2780,6 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  [15:0] ctl$new_r;
-    wire  [15:0] ctl$new_g;
-    wire  [15:0] ctl$new_b;
-    wire  [15:0] ctl$new_a;
-    wire  ctl$new_valid;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -3312,6 +2949,9 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
     );
     top$lanes$1$shader shader(
         .clock(shader$clock),
+        .host_write(shader$host_write),
+        .host_address(shader$host_address),
+        .host_data(shader$host_data),
         .value(shader$value),
         .invalid(shader$invalid),
         .at_edge(shader$at_edge),
@@ -3342,11 +2982,6 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
-        .r(ctl$r),
-        .g(ctl$g),
-        .b(ctl$b),
-        .a(ctl$a),
-        .sample_valid(ctl$sample_valid),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -3354,11 +2989,6 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .new_r(ctl$new_r),
-        .new_g(ctl$new_g),
-        .new_b(ctl$new_b),
-        .new_a(ctl$new_a),
-        .new_valid(ctl$new_valid),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -3513,6 +3143,9 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         g_to_left_yp = feed$g_to_left_yp;
         g_to_left_zp = feed$g_to_left_zp;
         shader$clock = clock;
+        shader$host_write = host_write;
+        shader$host_address = host_address;
+        shader$host_data = host_data;
         shader$value = feed$o_value;
         shader$invalid = feed$o_invalid;
         shader$at_edge = feed$o_edge;
@@ -3536,11 +3169,6 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
-        ctl$r = 16'(shader$r);
-        ctl$g = shader$g;
-        ctl$b = shader$b;
-        ctl$a = shader$a;
-        ctl$sample_valid = shader$valid;
         taps$clock = clock;
         taps$x = ctl$x_t;
         t0s0 = taps$t0s0;
@@ -3606,11 +3234,11 @@ module top$lanes$1(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base
         compositor$acc_g = 16'(bilinear$out$1);
         compositor$acc_b = 16'(bilinear$out$2);
         compositor$acc_a = 16'(bilinear$out$3);
-        compositor$new_r = 32'(ctl$new_r);
-        compositor$new_g = ctl$new_g;
-        compositor$new_b = ctl$new_b;
-        compositor$new_a = ctl$new_a;
-        compositor$new_valid = ctl$new_valid;
+        compositor$new_r = shader$r;
+        compositor$new_g = shader$g;
+        compositor$new_b = shader$b;
+        compositor$new_a = shader$a;
+        compositor$new_valid = shader$valid;
         res = 64'(compositor$out_r) | (64'(compositor$out_g) << 'h10) | (64'(compositor$out_b) << 'h20) | (64'(compositor$out_a) << 'h30);
         taps$res = res;
         taps$res_beat = ctl$res_beat;
@@ -3755,7 +3383,7 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,r,g,b,a,sample_valid,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,new_r,new_g,new_b,new_a,new_valid,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -3772,11 +3400,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
-    input wire  [15:0] r;
-    input wire  [15:0] g;
-    input wire  [15:0] b;
-    input wire  [15:0] a;
-    input wire  sample_valid;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -3784,11 +3407,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  [15:0] new_r;
-    output reg  [15:0] new_g;
-    output reg  [15:0] new_b;
-    output reg  [15:0] new_a;
-    output reg  new_valid;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -3797,27 +3415,48 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
-    reg  [15:0] x_q$d;
-    wire  [15:0] x_q$q;
-    reg  x_q$clock;
-    reg  [15:0] y_q$d;
-    wire  [15:0] y_q$q;
-    reg  y_q$clock;
-    reg  sr_q$d;
-    wire  sr_q$q;
-    reg  sr_q$clock;
-    reg  dxn_q$d;
-    wire  dxn_q$q;
-    reg  dxn_q$clock;
-    reg  [15:0] dxm_q$d;
-    wire  [15:0] dxm_q$q;
-    reg  dxm_q$clock;
-    reg  dyn_q$d;
-    wire  dyn_q$q;
-    reg  dyn_q$clock;
-    reg  [15:0] dym_q$d;
-    wire  [15:0] dym_q$q;
-    reg  dym_q$clock;
+    reg  [15:0] x_q$0$d;
+    wire  [15:0] x_q$0$q;
+    reg  x_q$0$clock;
+    reg  [15:0] x_q$1$d;
+    wire  [15:0] x_q$1$q;
+    reg  x_q$1$clock;
+    reg  [15:0] y_q$0$d;
+    wire  [15:0] y_q$0$q;
+    reg  y_q$0$clock;
+    reg  [15:0] y_q$1$d;
+    wire  [15:0] y_q$1$q;
+    reg  y_q$1$clock;
+    reg  sr_q$0$d;
+    wire  sr_q$0$q;
+    reg  sr_q$0$clock;
+    reg  sr_q$1$d;
+    wire  sr_q$1$q;
+    reg  sr_q$1$clock;
+    reg  dxn_q$0$d;
+    wire  dxn_q$0$q;
+    reg  dxn_q$0$clock;
+    reg  dxn_q$1$d;
+    wire  dxn_q$1$q;
+    reg  dxn_q$1$clock;
+    reg  [15:0] dxm_q$0$d;
+    wire  [15:0] dxm_q$0$q;
+    reg  dxm_q$0$clock;
+    reg  [15:0] dxm_q$1$d;
+    wire  [15:0] dxm_q$1$q;
+    reg  dxm_q$1$clock;
+    reg  dyn_q$0$d;
+    wire  dyn_q$0$q;
+    reg  dyn_q$0$clock;
+    reg  dyn_q$1$d;
+    wire  dyn_q$1$q;
+    reg  dyn_q$1$clock;
+    reg  [15:0] dym_q$0$d;
+    wire  [15:0] dym_q$0$q;
+    reg  dym_q$0$clock;
+    reg  [15:0] dym_q$1$d;
+    wire  [15:0] dym_q$1$q;
+    reg  dym_q$1$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -3839,6 +3478,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$6$d;
     wire  v_q$6$q;
     reg  v_q$6$clock;
+    reg  v_q$7$d;
+    wire  v_q$7$q;
+    reg  v_q$7$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -3860,6 +3502,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$6$d;
     wire  er_q$6$q;
     reg  er_q$6$clock;
+    reg  er_q$7$d;
+    wire  er_q$7$q;
+    reg  er_q$7$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -3881,6 +3526,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$6$d;
     wire  pad_q$6$q;
     reg  pad_q$6$clock;
+    reg  pad_q$7$d;
+    wire  pad_q$7$q;
+    reg  pad_q$7$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -3902,6 +3550,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$6$d;
     wire  [15:0] bx_q$6$q;
     reg  bx_q$6$clock;
+    reg  [15:0] bx_q$7$d;
+    wire  [15:0] bx_q$7$q;
+    reg  bx_q$7$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -3923,6 +3574,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$6$d;
     wire  [15:0] by_q$6$q;
     reg  by_q$6$clock;
+    reg  [15:0] by_q$7$d;
+    wire  [15:0] by_q$7$q;
+    reg  by_q$7$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -3944,117 +3598,80 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$6$d;
     wire  [2:0] face_q$6$q;
     reg  face_q$6$clock;
-    reg  [15:0] s_r$0$d;
-    wire  [15:0] s_r$0$q;
-    reg  s_r$0$clock;
-    reg  [15:0] s_r$1$d;
-    wire  [15:0] s_r$1$q;
-    reg  s_r$1$clock;
-    reg  [15:0] s_r$2$d;
-    wire  [15:0] s_r$2$q;
-    reg  s_r$2$clock;
-    reg  [15:0] s_r$3$d;
-    wire  [15:0] s_r$3$q;
-    reg  s_r$3$clock;
-    reg  [15:0] s_r$4$d;
-    wire  [15:0] s_r$4$q;
-    reg  s_r$4$clock;
-    reg  [15:0] s_g$0$d;
-    wire  [15:0] s_g$0$q;
-    reg  s_g$0$clock;
-    reg  [15:0] s_g$1$d;
-    wire  [15:0] s_g$1$q;
-    reg  s_g$1$clock;
-    reg  [15:0] s_g$2$d;
-    wire  [15:0] s_g$2$q;
-    reg  s_g$2$clock;
-    reg  [15:0] s_g$3$d;
-    wire  [15:0] s_g$3$q;
-    reg  s_g$3$clock;
-    reg  [15:0] s_g$4$d;
-    wire  [15:0] s_g$4$q;
-    reg  s_g$4$clock;
-    reg  [15:0] s_b$0$d;
-    wire  [15:0] s_b$0$q;
-    reg  s_b$0$clock;
-    reg  [15:0] s_b$1$d;
-    wire  [15:0] s_b$1$q;
-    reg  s_b$1$clock;
-    reg  [15:0] s_b$2$d;
-    wire  [15:0] s_b$2$q;
-    reg  s_b$2$clock;
-    reg  [15:0] s_b$3$d;
-    wire  [15:0] s_b$3$q;
-    reg  s_b$3$clock;
-    reg  [15:0] s_b$4$d;
-    wire  [15:0] s_b$4$q;
-    reg  s_b$4$clock;
-    reg  [15:0] s_a$0$d;
-    wire  [15:0] s_a$0$q;
-    reg  s_a$0$clock;
-    reg  [15:0] s_a$1$d;
-    wire  [15:0] s_a$1$q;
-    reg  s_a$1$clock;
-    reg  [15:0] s_a$2$d;
-    wire  [15:0] s_a$2$q;
-    reg  s_a$2$clock;
-    reg  [15:0] s_a$3$d;
-    wire  [15:0] s_a$3$q;
-    reg  s_a$3$clock;
-    reg  [15:0] s_a$4$d;
-    wire  [15:0] s_a$4$q;
-    reg  s_a$4$clock;
-    reg  s_v$0$d;
-    wire  s_v$0$q;
-    reg  s_v$0$clock;
-    reg  s_v$1$d;
-    wire  s_v$1$q;
-    reg  s_v$1$clock;
-    reg  s_v$2$d;
-    wire  s_v$2$q;
-    reg  s_v$2$clock;
-    reg  s_v$3$d;
-    wire  s_v$3$q;
-    reg  s_v$3$clock;
-    reg  s_v$4$d;
-    wire  s_v$4$q;
-    reg  s_v$4$clock;
+    reg  [2:0] face_q$7$d;
+    wire  [2:0] face_q$7$q;
+    reg  face_q$7$clock;
     
     // Sub module instances
-    top$lanes$1$ctl$x_q x_q(
-        .d(x_q$d),
-        .q(x_q$q),
-        .clock(x_q$clock)
+    top$lanes$1$ctl$x_q$0 x_q$0(
+        .d(x_q$0$d),
+        .q(x_q$0$q),
+        .clock(x_q$0$clock)
     );
-    top$lanes$1$ctl$y_q y_q(
-        .d(y_q$d),
-        .q(y_q$q),
-        .clock(y_q$clock)
+    top$lanes$1$ctl$x_q$1 x_q$1(
+        .d(x_q$1$d),
+        .q(x_q$1$q),
+        .clock(x_q$1$clock)
     );
-    top$lanes$1$ctl$sr_q sr_q(
-        .d(sr_q$d),
-        .q(sr_q$q),
-        .clock(sr_q$clock)
+    top$lanes$1$ctl$y_q$0 y_q$0(
+        .d(y_q$0$d),
+        .q(y_q$0$q),
+        .clock(y_q$0$clock)
     );
-    top$lanes$1$ctl$dxn_q dxn_q(
-        .d(dxn_q$d),
-        .q(dxn_q$q),
-        .clock(dxn_q$clock)
+    top$lanes$1$ctl$y_q$1 y_q$1(
+        .d(y_q$1$d),
+        .q(y_q$1$q),
+        .clock(y_q$1$clock)
     );
-    top$lanes$1$ctl$dxm_q dxm_q(
-        .d(dxm_q$d),
-        .q(dxm_q$q),
-        .clock(dxm_q$clock)
+    top$lanes$1$ctl$sr_q$0 sr_q$0(
+        .d(sr_q$0$d),
+        .q(sr_q$0$q),
+        .clock(sr_q$0$clock)
     );
-    top$lanes$1$ctl$dyn_q dyn_q(
-        .d(dyn_q$d),
-        .q(dyn_q$q),
-        .clock(dyn_q$clock)
+    top$lanes$1$ctl$sr_q$1 sr_q$1(
+        .d(sr_q$1$d),
+        .q(sr_q$1$q),
+        .clock(sr_q$1$clock)
     );
-    top$lanes$1$ctl$dym_q dym_q(
-        .d(dym_q$d),
-        .q(dym_q$q),
-        .clock(dym_q$clock)
+    top$lanes$1$ctl$dxn_q$0 dxn_q$0(
+        .d(dxn_q$0$d),
+        .q(dxn_q$0$q),
+        .clock(dxn_q$0$clock)
+    );
+    top$lanes$1$ctl$dxn_q$1 dxn_q$1(
+        .d(dxn_q$1$d),
+        .q(dxn_q$1$q),
+        .clock(dxn_q$1$clock)
+    );
+    top$lanes$1$ctl$dxm_q$0 dxm_q$0(
+        .d(dxm_q$0$d),
+        .q(dxm_q$0$q),
+        .clock(dxm_q$0$clock)
+    );
+    top$lanes$1$ctl$dxm_q$1 dxm_q$1(
+        .d(dxm_q$1$d),
+        .q(dxm_q$1$q),
+        .clock(dxm_q$1$clock)
+    );
+    top$lanes$1$ctl$dyn_q$0 dyn_q$0(
+        .d(dyn_q$0$d),
+        .q(dyn_q$0$q),
+        .clock(dyn_q$0$clock)
+    );
+    top$lanes$1$ctl$dyn_q$1 dyn_q$1(
+        .d(dyn_q$1$d),
+        .q(dyn_q$1$q),
+        .clock(dyn_q$1$clock)
+    );
+    top$lanes$1$ctl$dym_q$0 dym_q$0(
+        .d(dym_q$0$d),
+        .q(dym_q$0$q),
+        .clock(dym_q$0$clock)
+    );
+    top$lanes$1$ctl$dym_q$1 dym_q$1(
+        .d(dym_q$1$d),
+        .q(dym_q$1$q),
+        .clock(dym_q$1$clock)
     );
     top$lanes$1$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -4091,6 +3708,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$6$q),
         .clock(v_q$6$clock)
     );
+    top$lanes$1$ctl$v_q$7 v_q$7(
+        .d(v_q$7$d),
+        .q(v_q$7$q),
+        .clock(v_q$7$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -4125,6 +3747,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$6$d),
         .q(er_q$6$q),
         .clock(er_q$6$clock)
+    );
+    top$lanes$1$ctl$er_q$7 er_q$7(
+        .d(er_q$7$d),
+        .q(er_q$7$q),
+        .clock(er_q$7$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -4161,6 +3788,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$6$q),
         .clock(pad_q$6$clock)
     );
+    top$lanes$1$ctl$pad_q$7 pad_q$7(
+        .d(pad_q$7$d),
+        .q(pad_q$7$q),
+        .clock(pad_q$7$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -4195,6 +3827,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$6$d),
         .q(bx_q$6$q),
         .clock(bx_q$6$clock)
+    );
+    top$lanes$1$ctl$bx_q$7 bx_q$7(
+        .d(bx_q$7$d),
+        .q(bx_q$7$q),
+        .clock(bx_q$7$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -4231,6 +3868,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$6$q),
         .clock(by_q$6$clock)
     );
+    top$lanes$1$ctl$by_q$7 by_q$7(
+        .d(by_q$7$d),
+        .q(by_q$7$q),
+        .clock(by_q$7$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -4266,148 +3908,28 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$6$q),
         .clock(face_q$6$clock)
     );
-    top$lanes$1$ctl$s_r$0 s_r$0(
-        .d(s_r$0$d),
-        .q(s_r$0$q),
-        .clock(s_r$0$clock)
-    );
-    top$lanes$1$ctl$s_r$1 s_r$1(
-        .d(s_r$1$d),
-        .q(s_r$1$q),
-        .clock(s_r$1$clock)
-    );
-    top$lanes$1$ctl$s_r$2 s_r$2(
-        .d(s_r$2$d),
-        .q(s_r$2$q),
-        .clock(s_r$2$clock)
-    );
-    top$lanes$1$ctl$s_r$3 s_r$3(
-        .d(s_r$3$d),
-        .q(s_r$3$q),
-        .clock(s_r$3$clock)
-    );
-    top$lanes$1$ctl$s_r$4 s_r$4(
-        .d(s_r$4$d),
-        .q(s_r$4$q),
-        .clock(s_r$4$clock)
-    );
-    top$lanes$1$ctl$s_g$0 s_g$0(
-        .d(s_g$0$d),
-        .q(s_g$0$q),
-        .clock(s_g$0$clock)
-    );
-    top$lanes$1$ctl$s_g$1 s_g$1(
-        .d(s_g$1$d),
-        .q(s_g$1$q),
-        .clock(s_g$1$clock)
-    );
-    top$lanes$1$ctl$s_g$2 s_g$2(
-        .d(s_g$2$d),
-        .q(s_g$2$q),
-        .clock(s_g$2$clock)
-    );
-    top$lanes$1$ctl$s_g$3 s_g$3(
-        .d(s_g$3$d),
-        .q(s_g$3$q),
-        .clock(s_g$3$clock)
-    );
-    top$lanes$1$ctl$s_g$4 s_g$4(
-        .d(s_g$4$d),
-        .q(s_g$4$q),
-        .clock(s_g$4$clock)
-    );
-    top$lanes$1$ctl$s_b$0 s_b$0(
-        .d(s_b$0$d),
-        .q(s_b$0$q),
-        .clock(s_b$0$clock)
-    );
-    top$lanes$1$ctl$s_b$1 s_b$1(
-        .d(s_b$1$d),
-        .q(s_b$1$q),
-        .clock(s_b$1$clock)
-    );
-    top$lanes$1$ctl$s_b$2 s_b$2(
-        .d(s_b$2$d),
-        .q(s_b$2$q),
-        .clock(s_b$2$clock)
-    );
-    top$lanes$1$ctl$s_b$3 s_b$3(
-        .d(s_b$3$d),
-        .q(s_b$3$q),
-        .clock(s_b$3$clock)
-    );
-    top$lanes$1$ctl$s_b$4 s_b$4(
-        .d(s_b$4$d),
-        .q(s_b$4$q),
-        .clock(s_b$4$clock)
-    );
-    top$lanes$1$ctl$s_a$0 s_a$0(
-        .d(s_a$0$d),
-        .q(s_a$0$q),
-        .clock(s_a$0$clock)
-    );
-    top$lanes$1$ctl$s_a$1 s_a$1(
-        .d(s_a$1$d),
-        .q(s_a$1$q),
-        .clock(s_a$1$clock)
-    );
-    top$lanes$1$ctl$s_a$2 s_a$2(
-        .d(s_a$2$d),
-        .q(s_a$2$q),
-        .clock(s_a$2$clock)
-    );
-    top$lanes$1$ctl$s_a$3 s_a$3(
-        .d(s_a$3$d),
-        .q(s_a$3$q),
-        .clock(s_a$3$clock)
-    );
-    top$lanes$1$ctl$s_a$4 s_a$4(
-        .d(s_a$4$d),
-        .q(s_a$4$q),
-        .clock(s_a$4$clock)
-    );
-    top$lanes$1$ctl$s_v$0 s_v$0(
-        .d(s_v$0$d),
-        .q(s_v$0$q),
-        .clock(s_v$0$clock)
-    );
-    top$lanes$1$ctl$s_v$1 s_v$1(
-        .d(s_v$1$d),
-        .q(s_v$1$q),
-        .clock(s_v$1$clock)
-    );
-    top$lanes$1$ctl$s_v$2 s_v$2(
-        .d(s_v$2$d),
-        .q(s_v$2$q),
-        .clock(s_v$2$clock)
-    );
-    top$lanes$1$ctl$s_v$3 s_v$3(
-        .d(s_v$3$d),
-        .q(s_v$3$q),
-        .clock(s_v$3$clock)
-    );
-    top$lanes$1$ctl$s_v$4 s_v$4(
-        .d(s_v$4$d),
-        .q(s_v$4$q),
-        .clock(s_v$4$clock)
+    top$lanes$1$ctl$face_q$7 face_q$7(
+        .d(face_q$7$d),
+        .q(face_q$7$q),
+        .clock(face_q$7$clock)
     );
     
     // Update code
     always @(*) begin
-        x_q$clock = clock;
-        y_q$clock = clock;
-        sr_q$clock = clock;
-        dxn_q$clock = clock;
-        dxm_q$clock = clock;
-        dyn_q$clock = clock;
-        dym_q$clock = clock;
-        x_q$d = x_q$q;
-        y_q$d = y_q$q;
-        sr_q$d = sr_q$q;
-        dxn_q$d = dxn_q$q;
-        dxm_q$d = dxm_q$q;
-        dyn_q$d = dyn_q$q;
-        dym_q$d = dym_q$q;
+        x_q$0$clock = clock;
+        y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dxm_q$0$clock = clock;
+        dyn_q$0$clock = clock;
+        dym_q$0$clock = clock;
+        x_q$1$clock = clock;
+        y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dxm_q$1$clock = clock;
+        dyn_q$1$clock = clock;
+        dym_q$1$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -4450,45 +3972,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$6$clock = clock;
         by_q$6$clock = clock;
         face_q$6$clock = clock;
-        s_r$0$clock = clock;
-        s_g$0$clock = clock;
-        s_b$0$clock = clock;
-        s_a$0$clock = clock;
-        s_v$0$clock = clock;
-        s_r$1$clock = clock;
-        s_g$1$clock = clock;
-        s_b$1$clock = clock;
-        s_a$1$clock = clock;
-        s_v$1$clock = clock;
-        s_r$2$clock = clock;
-        s_g$2$clock = clock;
-        s_b$2$clock = clock;
-        s_a$2$clock = clock;
-        s_v$2$clock = clock;
-        s_r$3$clock = clock;
-        s_g$3$clock = clock;
-        s_b$3$clock = clock;
-        s_a$3$clock = clock;
-        s_v$3$clock = clock;
-        s_r$4$clock = clock;
-        s_g$4$clock = clock;
-        s_b$4$clock = clock;
-        s_a$4$clock = clock;
-        s_v$4$clock = clock;
-        x_q$d = x;
-        y_q$d = y;
-        sr_q$d = sr;
-        dxn_q$d = dx_neg;
-        dxm_q$d = dx_mag;
-        dyn_q$d = dy_neg;
-        dym_q$d = dy_mag;
-        x_t = x_q$q;
-        y_t = y_q$q;
-        sr_t = sr_q$q;
-        dx_neg_t = dxn_q$q;
-        dx_mag_t = dxm_q$q;
-        dy_neg_t = dyn_q$q;
-        dy_mag_t = dym_q$q;
+        v_q$7$clock = clock;
+        er_q$7$clock = clock;
+        pad_q$7$clock = clock;
+        bx_q$7$clock = clock;
+        by_q$7$clock = clock;
+        face_q$7$clock = clock;
+        x_q$0$d = x;
+        y_q$0$d = y;
+        sr_q$0$d = sr;
+        dxn_q$0$d = dx_neg;
+        dxm_q$0$d = dx_mag;
+        dyn_q$0$d = dy_neg;
+        dym_q$0$d = dy_mag;
+        x_q$1$d = x_q$0$q;
+        y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dxm_q$1$d = dxm_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
+        dym_q$1$d = dym_q$0$q;
+        x_t = x_q$1$q;
+        y_t = y_q$1$q;
+        sr_t = sr_q$1$q;
+        dx_neg_t = dxn_q$1$q;
+        dx_mag_t = dxm_q$1$q;
+        dy_neg_t = dyn_q$1$q;
+        dy_mag_t = dym_q$1$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -4531,42 +4041,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$6$d = bx_q$5$q;
         by_q$6$d = by_q$5$q;
         face_q$6$d = face_q$5$q;
-        res_beat = v_q$6$q;
-        res_valid = v_q$6$q & ~pad_q$6$q;
-        px_valid = v_q$6$q & er_q$6$q & ~pad_q$6$q;
-        px_x = bx_q$6$q;
-        px_y = by_q$6$q;
-        px_face = face_q$6$q;
-        s_r$0$d = r;
-        s_g$0$d = g;
-        s_b$0$d = b;
-        s_a$0$d = a;
-        s_v$0$d = sample_valid;
-        s_r$1$d = s_r$0$q;
-        s_g$1$d = s_g$0$q;
-        s_b$1$d = s_b$0$q;
-        s_a$1$d = s_a$0$q;
-        s_v$1$d = s_v$0$q;
-        s_r$2$d = s_r$1$q;
-        s_g$2$d = s_g$1$q;
-        s_b$2$d = s_b$1$q;
-        s_a$2$d = s_a$1$q;
-        s_v$2$d = s_v$1$q;
-        s_r$3$d = s_r$2$q;
-        s_g$3$d = s_g$2$q;
-        s_b$3$d = s_b$2$q;
-        s_a$3$d = s_a$2$q;
-        s_v$3$d = s_v$2$q;
-        s_r$4$d = s_r$3$q;
-        s_g$4$d = s_g$3$q;
-        s_b$4$d = s_b$3$q;
-        s_a$4$d = s_a$3$q;
-        s_v$4$d = s_v$3$q;
-        new_r = s_r$4$q;
-        new_g = s_g$4$q;
-        new_b = s_b$4$q;
-        new_a = s_a$4$q;
-        new_valid = s_v$4$q;
+        v_q$7$d = v_q$6$q;
+        er_q$7$d = er_q$6$q;
+        pad_q$7$d = pad_q$6$q;
+        bx_q$7$d = bx_q$6$q;
+        by_q$7$d = by_q$6$q;
+        face_q$7$d = face_q$6$q;
+        res_beat = v_q$7$q;
+        res_valid = v_q$7$q & ~pad_q$7$q;
+        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
+        px_x = bx_q$7$q;
+        px_y = by_q$7$q;
+        px_face = face_q$7$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -4689,6 +4175,23 @@ module top$lanes$1$ctl$bx_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$6
+module top$lanes$1$ctl$bx_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$7
 module top$lanes$1$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -4808,7 +4311,7 @@ module top$lanes$1$ctl$by_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$6
-module top$lanes$1$ctl$dxm_q(d,q,clock);
+module top$lanes$1$ctl$by_q$7(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4824,25 +4327,8 @@ module top$lanes$1$ctl$dxm_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$dxm_q
-module top$lanes$1$ctl$dxn_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$dxn_q
-module top$lanes$1$ctl$dym_q(d,q,clock);
+endmodule // top$lanes$1$ctl$by_q$7
+module top$lanes$1$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4858,8 +4344,25 @@ module top$lanes$1$ctl$dym_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$dym_q
-module top$lanes$1$ctl$dyn_q(d,q,clock);
+endmodule // top$lanes$1$ctl$dxm_q$0
+module top$lanes$1$ctl$dxm_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$1
+module top$lanes$1$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4875,7 +4378,92 @@ module top$lanes$1$ctl$dyn_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$dyn_q
+endmodule // top$lanes$1$ctl$dxn_q$0
+module top$lanes$1$ctl$dxn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$1
+module top$lanes$1$ctl$dym_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$0
+module top$lanes$1$ctl$dym_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$1
+module top$lanes$1$ctl$dyn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$0
+module top$lanes$1$ctl$dyn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$1
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -4995,6 +4583,23 @@ module top$lanes$1$ctl$er_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$6
+module top$lanes$1$ctl$er_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$7
 module top$lanes$1$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -5114,6 +4719,23 @@ module top$lanes$1$ctl$face_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$6
+module top$lanes$1$ctl$face_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$7
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -5233,347 +4855,7 @@ module top$lanes$1$ctl$pad_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$6
-module top$lanes$1$ctl$s_a$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_a$0
-module top$lanes$1$ctl$s_a$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_a$1
-module top$lanes$1$ctl$s_a$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_a$2
-module top$lanes$1$ctl$s_a$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_a$3
-module top$lanes$1$ctl$s_a$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_a$4
-module top$lanes$1$ctl$s_b$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_b$0
-module top$lanes$1$ctl$s_b$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_b$1
-module top$lanes$1$ctl$s_b$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_b$2
-module top$lanes$1$ctl$s_b$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_b$3
-module top$lanes$1$ctl$s_b$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_b$4
-module top$lanes$1$ctl$s_g$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_g$0
-module top$lanes$1$ctl$s_g$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_g$1
-module top$lanes$1$ctl$s_g$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_g$2
-module top$lanes$1$ctl$s_g$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_g$3
-module top$lanes$1$ctl$s_g$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_g$4
-module top$lanes$1$ctl$s_r$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_r$0
-module top$lanes$1$ctl$s_r$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_r$1
-module top$lanes$1$ctl$s_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_r$2
-module top$lanes$1$ctl$s_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_r$3
-module top$lanes$1$ctl$s_r$4(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_r$4
-module top$lanes$1$ctl$s_v$0(d,q,clock);
+module top$lanes$1$ctl$pad_q$7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5589,8 +4871,8 @@ module top$lanes$1$ctl$s_v$0(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$s_v$0
-module top$lanes$1$ctl$s_v$1(d,q,clock);
+endmodule // top$lanes$1$ctl$pad_q$7
+module top$lanes$1$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5606,8 +4888,8 @@ module top$lanes$1$ctl$s_v$1(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$s_v$1
-module top$lanes$1$ctl$s_v$2(d,q,clock);
+endmodule // top$lanes$1$ctl$sr_q$0
+module top$lanes$1$ctl$sr_q$1(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5623,58 +4905,7 @@ module top$lanes$1$ctl$s_v$2(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$s_v$2
-module top$lanes$1$ctl$s_v$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_v$3
-module top$lanes$1$ctl$s_v$4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$s_v$4
-module top$lanes$1$ctl$sr_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$sr_q
+endmodule // top$lanes$1$ctl$sr_q$1
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -5794,7 +5025,24 @@ module top$lanes$1$ctl$v_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$6
-module top$lanes$1$ctl$x_q(d,q,clock);
+module top$lanes$1$ctl$v_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$7
+module top$lanes$1$ctl$x_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5810,8 +5058,8 @@ module top$lanes$1$ctl$x_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$x_q
-module top$lanes$1$ctl$y_q(d,q,clock);
+endmodule // top$lanes$1$ctl$x_q$0
+module top$lanes$1$ctl$x_q$1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5827,7 +5075,41 @@ module top$lanes$1$ctl$y_q(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$ctl$y_q
+endmodule // top$lanes$1$ctl$x_q$1
+module top$lanes$1$ctl$y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$0
+module top$lanes$1$ctl$y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$1
 module top$lanes$1$feed(clock,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments

@@ -1,6 +1,6 @@
 //! Shading and classification of Cube-3's samples (§4, end; §5, the ABC
-//! shading units): a colour LUT, shading by a reflectance map indexed by the
-//! quantized gradient, and a 2-D opacity LUT indexed by sample value and
+//! shading units): a colour LUT, shading by the quantized gradient's
+//! lighting (`lut::Lighting`), and a 2-D opacity LUT indexed by sample value and
 //! gradient magnitude. The tables are the kit's (`lut`), filled from the
 //! scene's transfer function and lighting.
 //!
@@ -14,17 +14,17 @@
 //! 4. `gm = isqrt(gx² + gy² + gz²) >> F` (the gradient word is in sample
 //!    units); `alpha = opacity[index][gm]`, first-opaque: `alpha >= threshold
 //!    ? M : 0`.
-//! 5. `[d, s] = reflectance[quantize_normal(g)]`, `c = colour[index]`,
+//! 5. `[d, s] = lighting.reflect(quantize_normal(g))`, `c = colour[index]`,
 //!    `lut::shade_weight`: `[mul(sat(mul(c, d) + s), alpha)..., alpha]`.
 //! 6. MIP and MinIP: `[(s + 2^(F-1)) >> F, 0, 0, 0]`, the sample rounded to
 //!    voxel bits; X-ray: `[opacity[index][0], 0, 0, 0]`. They need no
-//!    gradient, colour or reflectance: those tables are left out.
+//!    gradient, colour or lighting: those tables are left out.
 
 use super::plan::{View, Widths};
 use super::rpc::Leaf;
 use crate::cube4l::gradient::{magnitude, quantize_normal};
 use crate::fixed::{max_of, quantize_unorm};
-use crate::lut::{shade_weight, unlit, ColourLut, OpacityLut, ReflectanceMap};
+use crate::lut::{shade_weight, unlit, ColourLut, Lighting, OpacityLut};
 use scene::transfer::TransferFn;
 use scene::{Camera, Mode, Scene};
 
@@ -35,7 +35,7 @@ pub struct Shader {
     pub widths: Widths,
     pub colour: Option<ColourLut>,
     pub opacity: Option<OpacityLut>,
-    pub reflectance: Option<ReflectanceMap>,
+    pub lighting: Option<Lighting>,
     pub needs_gradient: bool,
     pub threshold: u32,
 }
@@ -56,27 +56,36 @@ impl Shader {
         let opacity = matches!(mode, Mode::Composite | Mode::FirstOpaque | Mode::Xray)
             .then(|| OpacityLut::new(&tf, vb, rb, spacing, grad_opacity));
         let colour = mode.uses_colour().then(|| ColourLut::new(&tf, vb, rb));
-        let reflectance = shading.then(|| {
+        let lighting = shading.then(|| {
             let to_dataset = view.to_traversal().transpose();
             let light = camera
                 .camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir))
                 .normalize();
-            ReflectanceMap::new(
-                &scene.shading,
-                |g| to_dataset * g,
-                light,
-                -view.view_dir,
-                rb,
-            )
+            Lighting::new(&scene.shading, to_dataset, light, -view.view_dir, rb)
         });
         Shader {
             mode,
             widths,
             colour,
             opacity,
-            reflectance,
+            lighting,
             needs_gradient: shading || grad_opacity,
             threshold: quantize_unorm(scene.transfer.opaque_threshold, rb),
+        }
+    }
+
+    /// The tables and registers the hardware's shaders take from the host:
+    /// the value is the sample's integer part, the gradient's magnitude
+    /// shifted by the sample's fractional bits more.
+    pub fn tables(&self) -> crate::host::ShaderTables<'_> {
+        crate::host::ShaderTables {
+            mode: self.mode,
+            rgba_bits: self.widths.rgba_bits,
+            colour: self.colour.as_ref(),
+            opacity: self.opacity.as_ref(),
+            lighting: self.lighting.as_ref(),
+            threshold: self.threshold,
+            magnitude_shift: self.widths.sample_frac(),
         }
     }
 
@@ -156,11 +165,8 @@ impl Shader {
                     return clear;
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(self.index(s));
-                let ds = match &self.reflectance {
-                    Some(r) => {
-                        let [qx, qy, qz] = quantize_normal(g);
-                        r.table[ReflectanceMap::index(qx, qy, qz)]
-                    }
+                let ds = match &self.lighting {
+                    Some(l) => l.reflect(quantize_normal(g)),
                     None => unlit(self.widths.rgba_bits),
                 };
                 Leaf {

@@ -15,6 +15,7 @@ pub mod compositor;
 pub mod frame;
 pub mod gradient;
 pub mod plan;
+pub mod regs;
 pub mod shader;
 
 pub use frame::{BasePlane, Frame, Stats};

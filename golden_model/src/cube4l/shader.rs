@@ -1,18 +1,19 @@
 //! Shading and classification (Cube-4L §3.3-3.4): colour LUT by intensity,
-//! reflectance map by quantized gradient, opacity LUT by intensity and
-//! gradient magnitude, and opacity weighting of the colour.
+//! the reflectance of the quantized gradient (`lut::Lighting`: the cosines
+//! with the light and half vectors, each indexing a table), opacity LUT by
+//! intensity and gradient magnitude, and opacity weighting of the colour.
 //!
 //! Fixed-point steps, in order, all unorm of `rgba_bits` (M = 2^rgba_bits - 1):
 //! 1. `alpha = opacity_lut[v >> shift][gm >> gm_shift]` (0 on invalid voxels);
 //!    first-opaque: `alpha = alpha >= threshold ? M : 0`.
-//! 2. `c = colour_lut[v >> shift]`, `[d, s] = reflectance[quantize_normal(g)]`.
+//! 2. `c = colour_lut[v >> shift]`, `[d, s] = lighting.reflect(quantize_normal(g))`.
 //! 3. `shaded = sat(mul(c, d) + s)` per RGB channel (`sat`: clamp to M).
 //! 4. `weighted = mul(shaded, alpha)`, emitted as `[r, g, b, alpha]`.
 
 use super::gradient::{magnitude, quantize_normal};
 use super::plan::{Control, Sweep};
 use crate::fixed::{max_of, quantize_unorm};
-use crate::lut::{shade_weight, unlit, ColourLut, OpacityLut, ReflectanceMap};
+use crate::lut::{shade_weight, unlit, ColourLut, Lighting, OpacityLut};
 use scene::transfer::TransferFn;
 use scene::{Camera, Mode, Scene};
 
@@ -25,8 +26,8 @@ pub struct Shader {
     pub voxel_bits: u32,
     pub colour: Option<ColourLut>,
     pub opacity: Option<OpacityLut>,
-    /// `None` when shading is off: the reflectance unit is left out.
-    pub reflectance: Option<ReflectanceMap>,
+    /// `None` when shading is off: the lighting unit is left out.
+    pub lighting: Option<Lighting>,
     /// Gradients are computed only when shading or gradient-opacity needs them.
     pub needs_gradient: bool,
     /// First-opaque threshold, unorm.
@@ -60,14 +61,14 @@ impl Shader {
         let colour = mode
             .uses_colour()
             .then(|| ColourLut::new(&tf, hw.voxel_bits, hw.rgba_bits));
-        let reflectance = shading.then(|| {
+        let lighting = shading.then(|| {
             let to_dataset = sweep.to_dataset();
             let light = camera
                 .camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir))
                 .normalize();
-            ReflectanceMap::new(
+            Lighting::new(
                 &scene.shading,
-                |g| to_dataset * g,
+                to_dataset,
                 light,
                 -sweep.view_dir,
                 hw.rgba_bits,
@@ -79,9 +80,22 @@ impl Shader {
             voxel_bits: hw.voxel_bits,
             colour,
             opacity,
-            reflectance,
+            lighting,
             needs_gradient: shading || grad_opacity,
             threshold: quantize_unorm(scene.transfer.opaque_threshold, hw.rgba_bits),
+        }
+    }
+
+    /// The tables and registers the hardware's shader takes from the host.
+    pub fn tables(&self) -> crate::host::ShaderTables<'_> {
+        crate::host::ShaderTables {
+            mode: self.mode,
+            rgba_bits: self.rgba_bits,
+            colour: self.colour.as_ref(),
+            opacity: self.opacity.as_ref(),
+            lighting: self.lighting.as_ref(),
+            threshold: self.threshold,
+            magnitude_shift: 0,
         }
     }
 
@@ -137,11 +151,8 @@ impl Shader {
                     };
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(v);
-                let ds = match &self.reflectance {
-                    Some(r) => {
-                        let [qx, qy, qz] = quantize_normal(g);
-                        r.table[ReflectanceMap::index(qx, qy, qz)]
-                    }
+                let ds = match &self.lighting {
+                    Some(l) => l.reflect(quantize_normal(g)),
                     None => unlit(self.rgba_bits),
                 };
                 Sample {

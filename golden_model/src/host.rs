@@ -1,0 +1,255 @@
+//! What the host writes into the hardware between frames, as the
+//! VolumePro boards' hosts did: the view registers and the lookup tables,
+//! through one write port (`host_write`, a 24-bit `host_address`, a 64-bit
+//! `host_data`, one word a clock). The golden model computes exactly the
+//! words the host writes, so a testbench can write them and the hardware
+//! renders what the golden model renders.
+//!
+//! The address map (`docs/registers.md` describes every register):
+//!
+//! | addresses | what |
+//! |---|---|
+//! | `0x000000 ..= 0x0000ff` | registers, 64 bits each ([`Reg`]) |
+//! | `0x010000 + i` | classification LUT entry `i`: `r | g << 16 | b << 32 | alpha << 48` |
+//! | `0x020000 + i` | gradient-opacity LUT entry `(row << 4) | bin`: alpha |
+//! | `0x030000 + i` | diffuse term by cosine index `i` |
+//! | `0x031000 + i` | specular term by cosine index `i` |
+//!
+//! A table occupies the low addresses of its window; each unit that holds a
+//! copy of a table (a lane's shader, say) takes every write to its window,
+//! so one write loads all copies at once.
+
+use crate::fixed::max_of;
+use crate::lut::{ColourLut, Lighting, OpacityLut};
+use scene::Mode;
+
+/// One write of the host port.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Write {
+    pub address: u32,
+    pub data: u64,
+}
+
+/// Bits of the host port's address.
+pub const ADDRESS_BITS: usize = 24;
+
+/// The registers, by address.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(u32)]
+pub enum Reg {
+    /// The shader's light and half vectors in the gradient's space
+    /// (`lut::Lighting::light` and `half`): three 16-bit two's-complement
+    /// components, x in the low bits.
+    Light = 0x10,
+    Half = 0x11,
+    /// The gradient-opacity LUT's magnitude shift (`OpacityLut::gm_shift`
+    /// plus the sample's fractional bits for Cube-3).
+    GmShift = 0x12,
+    /// Cube-4L's view (`cube4l::regs::ViewRegs`): the pipeline-space dims
+    /// `nx | ny << 16 | nz << 32`;
+    Dims = 0x20,
+    /// the slices `z0 | z1 << 16 | stream_z0 << 32 | stream_z1 << 48`;
+    Slices = 0x21,
+    /// the pipeline axes of dataset u, v, w, two bits each;
+    Axes = 0x22,
+    /// the skewed memory's address: `b_u | slab << 16`;
+    Address = 0x23,
+    /// the frame registers dx and dy (two's complement);
+    Dx = 0x24,
+    Dy = 0x25,
+    /// the negated eye (two's complement);
+    EyeX = 0x26,
+    EyeY = 0x27,
+    EyeZ = 0x28,
+    /// the beats of a slice and of a beam: `slice | beam << 32`;
+    Beats = 0x29,
+    /// the order and the scalar mode: `front_to_back | minip << 1`.
+    Order = 0x2a,
+}
+
+impl Reg {
+    pub fn address(self) -> u32 {
+        self as u32
+    }
+}
+
+/// The lookup tables, by window.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Table {
+    /// Classification: colour and opacity by intensity (first-opaque's
+    /// threshold applied).
+    Classification,
+    /// Opacity by intensity row and gradient-magnitude bin.
+    GradientOpacity,
+    /// The lighting terms by cosine index.
+    Diffuse,
+    Specular,
+}
+
+impl Table {
+    pub fn base(self) -> u32 {
+        match self {
+            Table::Classification => 0x01_0000,
+            Table::GradientOpacity => 0x02_0000,
+            Table::Diffuse => 0x03_0000,
+            Table::Specular => 0x03_1000,
+        }
+    }
+
+    /// The writes that load `words` into the table from entry 0.
+    pub fn writes(self, words: impl IntoIterator<Item = u64>) -> Vec<Write> {
+        words
+            .into_iter()
+            .enumerate()
+            .map(|(i, data)| Write {
+                address: self.base() + i as u32,
+                data,
+            })
+            .collect()
+    }
+}
+
+/// Values in 16-bit fields, the first lowest.
+pub fn pack16(v: &[u64]) -> u64 {
+    v.iter()
+        .enumerate()
+        .fold(0, |w, (i, &c)| w | (c & 0xffff) << (16 * i))
+}
+
+/// Three signed components in 16-bit fields, x lowest.
+pub fn pack3(v: [i32; 3]) -> u64 {
+    v.iter()
+        .enumerate()
+        .fold(0, |w, (i, &c)| w | ((c as u16) as u64) << (16 * i))
+}
+
+/// What a shader is built from: the golden model's tables, Cube-4L's or
+/// Cube-3's.
+#[derive(Debug, Clone, Copy)]
+pub struct ShaderTables<'a> {
+    pub mode: Mode,
+    pub rgba_bits: u32,
+    pub colour: Option<&'a ColourLut>,
+    pub opacity: Option<&'a OpacityLut>,
+    pub lighting: Option<&'a Lighting>,
+    pub threshold: u32,
+    /// Right shift of the gradient magnitude before the opacity LUT's own
+    /// (Cube-3: the sample's fractional bits).
+    pub magnitude_shift: u32,
+}
+
+impl ShaderTables<'_> {
+    /// Opacity as the hardware's tables hold it: first-opaque's threshold
+    /// applied (`alpha >= threshold ? M : 0`).
+    fn alpha(&self, a: u32) -> u64 {
+        match self.mode {
+            Mode::FirstOpaque if a >= self.threshold => max_of(self.rgba_bits) as u64,
+            Mode::FirstOpaque => 0,
+            _ => a as u64,
+        }
+    }
+
+    /// The classification LUT's words: `r | g << 16 | b << 32 | alpha << 48`
+    /// (colour 0 without a colour LUT); empty without an opacity LUT.
+    pub fn classification(&self) -> Vec<u64> {
+        let Some(o) = self.opacity else {
+            return vec![];
+        };
+        // With a gradient dimension the first bin of each row stands for
+        // the row here; the gradient-opacity LUT holds every bin.
+        let bins = if o.gm_shift.is_some() { 16 } else { 1 };
+        (0..o.table.len() / bins)
+            .map(|i| {
+                let rgb = self.colour.map_or([0; 3], |c| c.table[i]);
+                rgb[0] as u64
+                    | (rgb[1] as u64) << 16
+                    | (rgb[2] as u64) << 32
+                    | self.alpha(o.table[i * bins]) << 48
+            })
+            .collect()
+    }
+
+    /// The gradient-opacity LUT's words; empty without gradient opacity.
+    pub fn gradient_opacity(&self) -> Vec<u64> {
+        match self.opacity {
+            Some(o) if o.gm_shift.is_some() => o.table.iter().map(|&a| self.alpha(a)).collect(),
+            _ => vec![],
+        }
+    }
+
+    /// The gradient magnitude's total shift, with gradient opacity.
+    pub fn gm_shift(&self) -> Option<u32> {
+        self.opacity
+            .and_then(|o| o.gm_shift)
+            .map(|s| s + self.magnitude_shift)
+    }
+
+    /// The writes that load this shader's tables (units the scene leaves
+    /// out get nothing).
+    pub fn table_writes(&self) -> Vec<Write> {
+        let mut w = Table::Classification.writes(self.classification());
+        w.extend(Table::GradientOpacity.writes(self.gradient_opacity()));
+        if let Some(l) = self.lighting {
+            w.extend(Table::Diffuse.writes(l.diffuse.iter().map(|&d| d as u64)));
+            w.extend(Table::Specular.writes(l.specular.iter().map(|&s| s as u64)));
+        }
+        w
+    }
+
+    /// The writes of this shader's registers.
+    pub fn register_writes(&self) -> Vec<Write> {
+        let mut w = Vec::new();
+        if let Some(s) = self.gm_shift() {
+            w.push(Write {
+                address: Reg::GmShift.address(),
+                data: s as u64,
+            });
+        }
+        if let Some(l) = self.lighting {
+            w.push(Write {
+                address: Reg::Light.address(),
+                data: pack3(l.light),
+            });
+            w.push(Write {
+                address: Reg::Half.address(),
+                data: pack3(l.half),
+            });
+        }
+        w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn signed_components_pack_into_16_bit_fields() {
+        assert_eq!(pack3([0, 0, 0]), 0);
+        assert_eq!(pack3([1, 2, 3]), 1 | 2 << 16 | 3 << 32);
+        assert_eq!(pack3([-1, 0, -2048]), 0xffff | 0xf800 << 32);
+    }
+
+    #[test]
+    fn tables_land_in_their_windows() {
+        let w = Table::Specular.writes([7, 8]);
+        assert_eq!(
+            w,
+            [
+                Write {
+                    address: 0x03_1000,
+                    data: 7
+                },
+                Write {
+                    address: 0x03_1001,
+                    data: 8
+                }
+            ]
+        );
+        // The windows do not overlap the registers or each other.
+        assert!(Reg::GmShift.address() < Table::Classification.base());
+        assert!(Table::Classification.base() + 4096 <= Table::GradientOpacity.base());
+        assert!(Table::GradientOpacity.base() + 65536 <= Table::Diffuse.base());
+        assert!(Table::Diffuse.base() + 1024 <= Table::Specular.base());
+    }
+}

@@ -1,0 +1,103 @@
+//! The gradient's quantized normal (Cube-4L §3.4; Cube-3's shading units),
+//! bit for bit as `golden_model::cube4l::gradient::quantize_normal`: all
+//! three components shift right (rounding half up) until the largest fits
+//! in 4 magnitude bits, then saturate to ±15. Two register stages: the
+//! largest component's bit length and the shift, then the rounded shift.
+
+use rust_hdl::prelude::*;
+
+/// Gradient (sign and magnitude per component) in, quantized normal (sign
+/// and a 4-bit magnitude per component) two clocks later.
+#[derive(LogicBlock)]
+pub struct NormalQuantizer {
+    pub clock: Signal<In, Clock>,
+    pub neg: [Signal<In, Bit>; 3],
+    pub mag: [Signal<In, Bits<32>>; 3],
+    pub q_neg: [Signal<Out, Bit>; 3],
+    pub q_mag: [Signal<Out, Bits<4>>; 3],
+    /// `bit_len[i] = i + 1`.
+    bit_len: [Constant<Bits<8>>; 32],
+    m: Signal<Local, Bits<32>>,
+    bl: Signal<Local, Bits<8>>,
+    /// Stage 1: the shift and the components.
+    s_q: DFF<Bits<8>>,
+    neg_q: [DFF<Bit>; 3],
+    mag_q: [DFF<Bits<32>>; 3],
+    half: Signal<Local, Bits<32>>,
+    q: [Signal<Local, Bits<32>>; 3],
+    /// Stage 2: the quantized components.
+    out_neg: [DFF<Bit>; 3],
+    out_mag: [DFF<Bits<4>>; 3],
+}
+
+impl Default for NormalQuantizer {
+    fn default() -> Self {
+        NormalQuantizer {
+            clock: Default::default(),
+            neg: Default::default(),
+            mag: Default::default(),
+            q_neg: Default::default(),
+            q_mag: Default::default(),
+            bit_len: std::array::from_fn(|i| Constant::new((i as u64 + 1).to_bits())),
+            m: Default::default(),
+            bl: Default::default(),
+            s_q: Default::default(),
+            neg_q: Default::default(),
+            mag_q: Default::default(),
+            half: Default::default(),
+            q: Default::default(),
+            out_neg: Default::default(),
+            out_mag: Default::default(),
+        }
+    }
+}
+
+impl Logic for NormalQuantizer {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s_q);
+        // Stage 1: the leading one of the largest component sets the shift.
+        self.m.next = self.mag[0].val();
+        if self.mag[1].val() > self.m.val() {
+            self.m.next = self.mag[1].val();
+        }
+        if self.mag[2].val() > self.m.val() {
+            self.m.next = self.mag[2].val();
+        }
+        self.bl.next = 0.into();
+        for i in 0..32 {
+            if self.m.val().get_bit(i) {
+                self.bl.next = self.bit_len[i].val();
+            }
+        }
+        self.s_q.d.next = 0.into();
+        if self.bl.val() > 4 {
+            self.s_q.d.next = self.bl.val() - 4;
+        }
+        // Stage 2: shift, rounding half up (a negative component's half
+        // rounds towards zero in magnitude), and saturate to 15.
+        self.half.next = 0.into();
+        if self.s_q.q.val() > 0 {
+            self.half.next = (bit_cast::<32, 16>(1.into()) << self.s_q.q.val()) >> 1;
+        }
+        for i in 0..3 {
+            self.neg_q[i].clock.next = self.clock.val();
+            self.mag_q[i].clock.next = self.clock.val();
+            self.out_neg[i].clock.next = self.clock.val();
+            self.out_mag[i].clock.next = self.clock.val();
+            self.neg_q[i].d.next = self.neg[i].val();
+            self.mag_q[i].d.next = self.mag[i].val();
+            self.q[i].next = (self.mag_q[i].q.val() + self.half.val()) >> self.s_q.q.val();
+            if self.neg_q[i].q.val() & (self.s_q.q.val() > 0) {
+                self.q[i].next = (self.mag_q[i].q.val() + self.half.val() - 1) >> self.s_q.q.val();
+            }
+            if self.q[i].val() > 15 {
+                self.q[i].next = 15.into();
+            }
+            self.out_mag[i].d.next = self.q[i].val().get_bits::<4>(0);
+            self.out_neg[i].d.next = self.neg_q[i].q.val() & (self.q[i].val() != 0);
+            self.q_neg[i].next = self.out_neg[i].q.val();
+            self.q_mag[i].next = self.out_mag[i].q.val();
+        }
+    }
+}
