@@ -70,7 +70,8 @@ pub fn rtl_clocks<A: cosim::arch::Arch>(
     camera: &scene::Camera,
     dims: [usize; 3],
 ) -> Option<u64> {
-    let parts = A::parts(scene, camera, dims).ok()?;
+    let build = A::needs(scene, camera, dims).ok()?;
+    let parts = A::parts(scene, camera, dims, &build).ok()?;
     Some(parts.iter().map(A::expected_clocks).sum())
 }
 
@@ -115,6 +116,74 @@ pub fn scene_name(scene_path: &Path) -> String {
         .file_name()
         .map(|n| n.to_string_lossy().to_string())
         .unwrap_or_default()
+}
+
+/// A scene named on the command line, loaded, with its name.
+pub struct Loaded {
+    pub name: String,
+    pub scene: Scene,
+    pub camera: scene::Camera,
+}
+
+impl Loaded {
+    /// The scene as an export takes it (dims after any crop).
+    pub fn export(&self) -> cosim::export::ExportScene<'_> {
+        cosim::export::ExportScene {
+            name: &self.name,
+            scene: &self.scene,
+            camera: &self.camera,
+            dims: self.scene.volume.render_dims(),
+        }
+    }
+}
+
+/// The build subcommand `cmd` works on: `config` by name, or the
+/// configuration the scene at `scene_path` needs; with both, the scene must
+/// be one the configuration renders (the refusal names why, and what the
+/// scene needs). Returns the loaded scene too.
+pub fn choose_build<A: cosim::arch::Arch>(
+    cmd: &str,
+    scene_path: Option<&Path>,
+    config: Option<&str>,
+) -> Result<(Option<Loaded>, A::Config)> {
+    let err = |e: String| anyhow::anyhow!("{cmd}: {e}");
+    let loaded = match scene_path {
+        Some(path) => {
+            let scene = Scene::load(path)?;
+            let camera = scene.camera()?;
+            Some(Loaded {
+                name: scene_name(path),
+                scene,
+                camera,
+            })
+        }
+        None => None,
+    };
+    let needed = match &loaded {
+        Some(l) => {
+            let s = l.export();
+            Some(A::needs(s.scene, s.camera, s.dims).map_err(err)?)
+        }
+        None => None,
+    };
+    let build = match (config, needed) {
+        (Some(name), needed) => {
+            let build = A::parse_config(name).map_err(err)?;
+            if let Some(n) = needed {
+                if let Some(why) = A::refuses(&build, &n) {
+                    bail!(
+                        "{cmd}: configuration {name} cannot render {}: {why} (it needs {})",
+                        scene_path.map_or(String::new(), |p| p.display().to_string()),
+                        A::config_name(&n)
+                    );
+                }
+            }
+            build
+        }
+        (None, Some(n)) => n,
+        (None, None) => bail!("{cmd}: give --scene, --config or both"),
+    };
+    Ok((loaded, build))
 }
 
 pub struct Rendered {

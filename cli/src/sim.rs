@@ -1,7 +1,9 @@
-//! `cube sim`: run the scene through an architecture's RTL in simulation
-//! (rust-hdl, or the emitted Verilog under Icarus or Verilator), warp its
+//! `cube sim`: run scenes through an architecture's RTL in simulation
+//! (rust-hdl, or the emitted Verilog under Icarus or Verilator), warp their
 //! base planes, and compare them with the golden model bit for bit; fails
-//! unless every pixel matches.
+//! unless every pixel matches. Several `--scene`s are consecutive frames on
+//! one build (one simulation of one design): between frames the testbench
+//! writes the next view's registers and the table words that changed.
 
 use crate::common::{load, HwArch};
 use crate::output::{self, write_json, write_png};
@@ -25,8 +27,14 @@ enum Engine {
 
 #[derive(clap::Args)]
 pub struct SimArgs {
+    /// The scene; give it several times for consecutive frames on one
+    /// build (they must share the volume).
+    #[arg(long, required = true)]
+    scene: Vec<PathBuf>,
+    /// The build, by name (`cube verilog`); by default the configuration
+    /// the first scene needs.
     #[arg(long)]
-    scene: PathBuf,
+    config: Option<String>,
     #[arg(long, value_enum, default_value = "cube4l")]
     arch: HwArch,
     #[arg(long, value_enum, default_value = "rust-hdl")]
@@ -34,7 +42,8 @@ pub struct SimArgs {
     /// Write the simulation's VCD (and a GTKWave .gtkw beside it).
     #[arg(long)]
     vcd: Option<PathBuf>,
-    /// The warped image of the RTL's base planes (PNG).
+    /// The warped image of the RTL's base planes (PNG; with several frames,
+    /// frame i goes to `<stem>-<i>.png`).
     #[arg(long)]
     out: Option<PathBuf>,
     #[arg(long)]
@@ -63,96 +72,179 @@ impl ForArch for Sim<'_> {
     fn run<A: Arch>(self) -> Result<()> {
         let Sim { args, engine } = self;
         let name = engine.name();
-        let (scene, vol) = load(&args.scene)?;
-        let cam = scene.camera()?;
-        for path in [&args.out, &args.json].into_iter().flatten() {
+        let err = |e: String| anyhow::anyhow!("sim: {e}");
+        let mut frames = Vec::new();
+        let mut vol = None;
+        for path in &args.scene {
+            let (scene, v) = load(path)?;
+            match &vol {
+                None => vol = Some(v),
+                Some(first) if first.dims == v.dims && first.data == v.data => {}
+                Some(_) => bail!(
+                    "sim: {} has another volume than {}: the frames of one run share the volume in the build's memory",
+                    path.display(),
+                    args.scene[0].display()
+                ),
+            }
+            let cam = scene.camera()?;
+            frames.push((scene, cam));
+        }
+        let vol = vol.expect("a scene");
+        let build = args
+            .config
+            .as_deref()
+            .map(A::parse_config)
+            .transpose()
+            .map_err(err)?;
+        let outs = frame_paths(&args.out, frames.len());
+        for path in outs.iter().chain(&args.json) {
             output::check_target(path)?;
         }
         let vcd_tmp = vcd_temp(&args.vcd)?;
-        let simulated = cosim::sim::simulate::<A>(&scene, &cam, &vol, engine, vcd_tmp.as_deref())
-            .map_err(|e| anyhow::anyhow!("sim: {e}"))
-            .and_then(|r| keep_vcd(&vcd_tmp, &args.vcd).map(|()| r));
+        let simulated = cosim::sim::simulate_frames::<A>(
+            &frames,
+            build.as_ref(),
+            &vol,
+            engine,
+            vcd_tmp.as_deref(),
+            &|v| v.to_string(),
+        )
+        .map_err(err)
+        .and_then(|r| keep_vcd(&vcd_tmp, &args.vcd).map(|()| r));
         drop_vcd_temp(&vcd_tmp);
-        let r = simulated?;
-        let cps = if r.sim_seconds > 0.0 {
-            r.clocks as f64 / r.sim_seconds
+        let run = simulated?;
+        let several = frames.len() > 1;
+        if several {
+            println!(
+                "{} frames on one build of {} configuration {} ({} design{} simulated)",
+                frames.len(),
+                A::TITLE,
+                A::config_name(&run.config),
+                run.designs,
+                if run.designs == 1 { "" } else { "s" }
+            );
+        }
+        // Clocks simulated: every frame's parts and the host's writes.
+        let simulated: u64 = run.frames.iter().map(|r| r.clocks + r.reload_clocks).sum();
+        let (seconds, sim_seconds, build_seconds) =
+            run.frames.first().map_or((0.0, 0.0, 0.0), |r| {
+                (r.seconds, r.sim_seconds, r.build_seconds)
+            });
+        let cps = if sim_seconds > 0.0 {
+            simulated as f64 / sim_seconds
         } else {
             0.0
         };
-        println!(
-            "{name} ({}): {} clocks, ideal n_x*n_y*n_z/p = {} ({:.2}x), {:.2} s in all ({:.2} s simulating, {:.0} clocks/s; {:.1} s building); {} base-plane pixels differ from the golden model",
-            A::NAME,
-            r.clocks,
-            r.ideal_clocks,
-            r.clocks as f64 / r.ideal_clocks as f64,
-            r.seconds,
-            r.sim_seconds,
-            cps,
-            r.build_seconds,
-            r.mismatches
-        );
-        if !r.clock_terms.is_empty() {
-            let mut line = String::new();
-            for (i, t) in r.clock_terms.iter().enumerate() {
-                let sign = match (i, t.clocks < 0) {
-                    (0, _) => "",
-                    (_, true) => " - ",
-                    (_, false) => " + ",
-                };
-                line += &format!("{sign}{} {}", t.clocks.unsigned_abs(), t.what);
-            }
-            println!("clocks: {line}");
-        }
-        println!(
-            "units left out: {}",
-            if r.left_out.is_empty() {
-                "none".to_string()
+        let mut reports = Vec::new();
+        let mut mismatches = 0;
+        for (i, (r, (scene, cam))) in run.frames.into_iter().zip(&frames).enumerate() {
+            let label = if several {
+                format!("frame {} ({}) ", i + 1, args.scene[i].display())
             } else {
-                r.left_out.join(", ")
+                String::new()
+            };
+            println!(
+                "{label}{name} ({}): {} clocks, ideal n_x*n_y*n_z/p = {} ({:.2}x), after {} clocks of host writes; {} base-plane pixels differ from the golden model",
+                A::NAME,
+                r.clocks,
+                r.ideal_clocks,
+                r.clocks as f64 / r.ideal_clocks as f64,
+                r.reload_clocks,
+                r.mismatches
+            );
+            if !r.clock_terms.is_empty() {
+                let mut line = String::new();
+                for (i, t) in r.clock_terms.iter().enumerate() {
+                    let sign = match (i, t.clocks < 0) {
+                        (0, _) => "",
+                        (_, true) => " - ",
+                        (_, false) => " + ",
+                    };
+                    line += &format!("{sign}{} {}", t.clocks.unsigned_abs(), t.what);
+                }
+                println!("clocks: {line}");
             }
-        );
-        for m in &r.first {
-            println!("  {m}");
-        }
-        let parts = r.bases.len();
-        if let Some(o) = &args.out {
-            let img = A::image(&scene, &cam, r.bases).map_err(|e| anyhow::anyhow!("sim: {e}"))?;
-            write_png(o, &img)?;
-        }
-        if let Some(j) = &args.json {
+            if i == 0 {
+                println!(
+                    "units left out: {}",
+                    if r.left_out.is_empty() {
+                        "none".to_string()
+                    } else {
+                        r.left_out.join(", ")
+                    }
+                );
+            }
+            for m in &r.first {
+                println!("  {m}");
+            }
             let terms: serde_json::Map<String, serde_json::Value> = r
                 .clock_terms
                 .iter()
                 .map(|t| (t.key.to_string(), json!(t.clocks)))
                 .collect();
-            write_json(
-                j,
-                &json!({
-                    "engine": name,
-                    "arch": A::NAME,
-                    "scene": args.scene.display().to_string(),
-                    "cycles": r.clocks,
-                    "ideal_cycles": r.ideal_clocks,
-                    "clocks": terms,
-                    "mismatches": r.mismatches,
-                    "seconds": r.seconds,
-                    "sim_seconds": r.sim_seconds,
-                    "build_seconds": r.build_seconds,
-                    "cycles_per_second": cps,
-                    "pipelines": scene.hardware.pipelines,
-                    format!("{}s", A::PART): parts,
-                    "units_left_out": r.left_out,
-                }),
-            )?;
+            reports.push(json!({
+                "scene": args.scene[i].display().to_string(),
+                "cycles": r.clocks,
+                "ideal_cycles": r.ideal_clocks,
+                "clocks": terms,
+                "reload_clocks": r.reload_clocks,
+                "mismatches": r.mismatches,
+                format!("{}s", A::PART): r.bases.len(),
+            }));
+            mismatches += r.mismatches;
+            if let Some(o) = outs.get(i) {
+                let img = A::image(scene, cam, r.bases).map_err(err)?;
+                write_png(o, &img)?;
+            }
+            if i + 1 == frames.len() {
+                if let Some(j) = &args.json {
+                    let mut doc = json!({
+                        "engine": name,
+                        "arch": A::NAME,
+                        "configuration": A::config_name(&run.config),
+                        "designs": run.designs,
+                        "seconds": seconds,
+                        "sim_seconds": sim_seconds,
+                        "build_seconds": build_seconds,
+                        "cycles_per_second": cps,
+                        "pipelines": scene.hardware.pipelines,
+                        "units_left_out": r.left_out,
+                    });
+                    if several {
+                        doc["frames"] = json!(reports);
+                    } else if let (Some(d), serde_json::Value::Object(f)) =
+                        (doc.as_object_mut(), reports.remove(0))
+                    {
+                        d.extend(f);
+                    }
+                    write_json(j, &doc)?;
+                }
+            }
         }
-        if r.mismatches > 0 {
-            bail!(
-                "{} base-plane pixels differ from the golden model",
-                r.mismatches
-            );
+        println!(
+            "{seconds:.2} s in all ({sim_seconds:.2} s simulating {simulated} clocks, {cps:.0} clocks/s; {build_seconds:.1} s building)"
+        );
+        if mismatches > 0 {
+            bail!("{mismatches} base-plane pixels differ from the golden model");
         }
         Ok(())
     }
+}
+
+/// Where each frame's image goes: `--out` for one frame, `<stem>-<i>.png`
+/// beside it for several.
+fn frame_paths(out: &Option<PathBuf>, frames: usize) -> Vec<PathBuf> {
+    let Some(o) = out else { return vec![] };
+    if frames == 1 {
+        return vec![o.clone()];
+    }
+    let stem = o
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_string())
+        .unwrap_or_default();
+    (1..=frames)
+        .map(|i| o.with_file_name(format!("{stem}-{i}.png")))
+        .collect()
 }
 
 /// The temporary path the simulation traces to, beside `--vcd` (checked

@@ -1,19 +1,19 @@
-//! `cube synth`: synthesize the scene's hardware with yosys and report
-//! cells, LUTs, flip-flops, block RAMs and DSPs (also per pipeline), and the
-//! buffer memory against the least the scene needs; a design that fits the
-//! target's part (iCE40: an UP5K, ECP5: an LFE5U-85F) is placed and routed
-//! with nextpnr for fmax (ECP5: with its critical path), and the frame rate
-//! is given for this scene and, where the architecture projects it, for
-//! 256³ and 512³ volumes against the VolumePro 500's 30 frames/s at 256³.
+//! `cube synth`: synthesize a build (`--config`, or the configuration
+//! `--scene` needs) with yosys and report cells, LUTs, flip-flops, block
+//! RAMs and DSPs (also per pipeline), and the buffer memory against the
+//! least its largest volume needs; a design that fits the target's part
+//! (iCE40: an UP5K, ECP5: an LFE5U-85F) is placed and routed with nextpnr
+//! for fmax (ECP5: with its critical path), and the frame rate is given for
+//! the scene and, where the architecture projects it, for 256³ and 512³
+//! volumes against the VolumePro 500's 30 frames/s at 256³.
 
-use crate::common::{scene_name, HwArch};
+use crate::common::{choose_build, HwArch, Loaded};
 use crate::output::write_json;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 use cosim::arch::Arch;
 use cosim::archs::ForArch;
 use cosim::synth::{synthesize, Target};
-use scene::Scene;
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -27,8 +27,12 @@ enum SynthTarget {
 
 #[derive(clap::Args)]
 pub struct SynthArgs {
+    /// A scene: its configuration is the build, unless --config names one.
     #[arg(long)]
-    scene: PathBuf,
+    scene: Option<PathBuf>,
+    /// A configuration by name (see `cube verilog`).
+    #[arg(long)]
+    config: Option<String>,
     #[arg(long, value_enum, default_value = "cube4l")]
     arch: HwArch,
     #[arg(long, value_enum, default_value = "ice40")]
@@ -59,22 +63,26 @@ impl ForArch for Synth<'_> {
         if let Some(j) = &args.json {
             crate::output::check_target(j)?;
         }
-        let scene = Scene::load(&args.scene)?;
-        let cam = scene.camera()?;
-        let dims = scene.volume.render_dims();
-        let name = scene_name(&args.scene);
-        let parts = A::parts(&scene, &cam, dims).map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+        let err = |e: String| anyhow::anyhow!("synth: {e}");
+        let (loaded, build) =
+            choose_build::<A>("synth", args.scene.as_deref(), args.config.as_deref())?;
+        let scene = loaded.as_ref().map(Loaded::export);
+        let parts = match &scene {
+            Some(s) => A::parts(s.scene, s.camera, s.dims, &build).map_err(err)?,
+            None => vec![],
+        };
+        let name = A::config_name(&build);
         // Removed when dropped, on every path out of this function.
         let work = tempfile::Builder::new()
             .prefix("cube-synth-")
             .tempdir()
             .context("creating a temporary directory for yosys")?;
         let dir = work.path().join("design");
-        let m = cosim::export::write_export::<A>(&name, &scene, &cam, dims, &dir)
-            .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
-        // The parts are one build but for their constants: the first
-        // stands for them.
-        let first = &m[format!("{}s", A::PART)][0];
+        let m = cosim::export::write_export::<A>(&dir, &build, scene.as_ref()).map_err(err)?;
+        // One design per build; where views are still constants (a design
+        // per part), the first stands for the others.
+        let designs = m["designs"].as_array().map_or(0, |a| a.len());
+        let first = &m["designs"][0];
         let files: Vec<String> = first["files"]
             .as_array()
             .context("manifest files")?
@@ -84,9 +92,9 @@ impl ForArch for Synth<'_> {
         let sub = dir.join(first["dir"].as_str().unwrap_or("."));
         let r = synthesize(&sub, &files, target, !args.no_pnr)
             .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
-        let p = scene.hardware.pipelines as u64;
+        let p = m["parameters"]["pipelines"].as_u64().unwrap_or(1);
         println!(
-            "{} ({}): {} cells, {} LUTs, {} flip-flops, {} block RAMs, {} DSPs ({:.1} s); per pipeline {:.1} LUTs, {:.1} DSPs",
+            "{} ({} {name}): {} cells, {} LUTs, {} flip-flops, {} block RAMs, {} DSPs ({:.1} s); per pipeline {:.1} LUTs, {:.1} DSPs",
             target.name(),
             A::TITLE,
             r.cells,
@@ -98,20 +106,19 @@ impl ForArch for Synth<'_> {
             r.luts as f64 / p as f64,
             r.dsps as f64 / p as f64
         );
-        if parts.len() > 1 {
+        if designs > 1 {
             println!(
-                "({} 0 of {}; every {} has the same structure, with its own constants)",
+                "({} 0 of {designs}; every {} has the same structure, with its own constants)",
                 A::PART.replace('_', " "),
-                parts.len(),
                 A::PART.replace('_', " ")
             );
         }
         // Memory: the buffers as designed against the scene's least, and
         // what the RAM primitives hold after synthesis.
-        let buffer = A::buffer_memory(&parts);
-        let on_chip_volume = parts.iter().all(|p| !A::external(p));
+        let buffer = A::buffer_memory(&build, &parts);
+        let on_chip_volume = !A::external(&build);
         println!(
-            "buffer memory ({}): {} bits designed, {} the least the scene needs ({}x); RAM primitives after synthesis: {} bits{}",
+            "buffer memory ({}): {} bits designed, {} the least its largest volume needs ({}x); RAM primitives after synthesis: {} bits{}",
             buffer.what,
             buffer.bits,
             buffer.minimum_bits,
@@ -128,7 +135,8 @@ impl ForArch for Synth<'_> {
         if let Some(x) = synthesized_ratio {
             println!("  synthesized buffer memory: {x}x the least");
         }
-        let frame: u64 = parts.iter().map(A::expected_clocks).sum();
+        let frame: Option<u64> =
+            (!parts.is_empty()).then(|| parts.iter().map(A::expected_clocks).sum());
         let mut projection = serde_json::Map::new();
         match (r.part, r.fits, r.fmax_mhz) {
             (Some(part), Some(false), _) => println!(
@@ -159,12 +167,14 @@ impl ForArch for Synth<'_> {
                         "not reached"
                     }
                 );
-                println!(
-                    "  this scene: {frame} clocks per frame, {:.2} frames/s",
-                    f * 1e6 / frame as f64
-                );
+                if let Some(frame) = frame {
+                    println!(
+                        "  the scene: {frame} clocks per frame, {:.2} frames/s",
+                        f * 1e6 / frame as f64
+                    );
+                }
                 for n in [256u64, 512] {
-                    if let Some(clocks) = A::projected_clocks(n, &parts) {
+                    if let Some(clocks) = A::projected_clocks(n, &build) {
                         let fps = f * 1e6 / clocks as f64;
                         println!("  {n}³ at p = {p}: {clocks} clocks per frame, {fps:.2} frames/s");
                         projection.insert(
@@ -180,7 +190,8 @@ impl ForArch for Synth<'_> {
             write_json(
                 j,
                 &json!({
-                    "scene": name,
+                    "configuration": name,
+                    "scene": loaded.as_ref().map(|l| &l.name),
                     "architecture": A::NAME,
                     "target": target.name(),
                     "pipelines": p,
@@ -217,7 +228,7 @@ impl ForArch for Synth<'_> {
                     })),
                     "pnr_seconds": r.pnr_seconds,
                     "frame_clocks": frame,
-                    "frames_per_second": r.fmax_mhz.map(|f| f * 1e6 / frame as f64),
+                    "frames_per_second": r.fmax_mhz.zip(frame).map(|(f, c)| f * 1e6 / c as f64),
                     "projected": projection,
                     "units_left_out": m["units_left_out"],
                     "parameters": m["parameters"],

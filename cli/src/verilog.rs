@@ -1,18 +1,25 @@
-//! `cube verilog`: write the scene's pruned hardware as Verilog (one file per
-//! stage, a top, Verilator lint waivers and a manifest of parameters and
-//! left-out units) and summarize what was written.
+//! `cube verilog`: write a build's hardware as Verilog (one file per stage,
+//! a top, Verilator lint waivers and a manifest of its configuration,
+//! parameters and left-out units). The build is `--config`, or the
+//! configuration `--scene` needs; with both, the scene must be one the
+//! configuration renders (the refusal names why not), and the manifest
+//! lists the scene's parts and the register writes each takes.
 
-use crate::common::{scene_name, HwArch};
+use crate::common::{choose_build, HwArch, Loaded};
 use anyhow::Result;
 use cosim::arch::Arch;
 use cosim::archs::ForArch;
-use scene::Scene;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct VerilogArgs {
+    /// A scene: its configuration is the build, unless --config names one.
     #[arg(long)]
-    scene: PathBuf,
+    scene: Option<PathBuf>,
+    /// A configuration by name (`cube verilog --scene S` prints the one S
+    /// needs), e.g. composite_shaded_p4_256.
+    #[arg(long)]
+    config: Option<String>,
     #[arg(long)]
     out: PathBuf,
     #[arg(long, value_enum, default_value = "cube4l")]
@@ -29,31 +36,38 @@ impl ForArch for Export<'_> {
     type Output = Result<()>;
     fn run<A: Arch>(self) -> Result<()> {
         let args = self.0;
-        let scene = Scene::load(&args.scene)?;
-        let cam = scene.camera()?;
-        let m = cosim::export::write_export::<A>(
-            &scene_name(&args.scene),
-            &scene,
-            &cam,
-            scene.volume.render_dims(),
-            &args.out,
-        )
-        .map_err(|e| anyhow::anyhow!("verilog: {e}"))?;
-        let parts = m[format!("{}s", A::PART)].as_array().map_or(0, |a| a.len());
+        let err = |e: String| anyhow::anyhow!("verilog: {e}");
+        let (loaded, build) =
+            choose_build::<A>("verilog", args.scene.as_deref(), args.config.as_deref())?;
+        let scene = loaded.as_ref().map(Loaded::export);
+        let m = cosim::export::write_export::<A>(&args.out, &build, scene.as_ref()).map_err(err)?;
+        let designs = m["designs"].as_array().map_or(0, |a| a.len());
         let left_out: Vec<&str> = m["units_left_out"]
             .as_array()
             .map(|a| a.iter().filter_map(|v| v.as_str()).collect())
             .unwrap_or_default();
         println!(
-            "wrote {} ({}, {} {}{}, {} memory); units left out: {}",
+            "wrote {} ({} configuration {}{}, {} memory); units left out: {}",
             args.out.display(),
             A::TITLE,
-            parts,
-            A::PART.replace('_', " "),
-            if parts == 1 { "" } else { "s" },
-            m["parameters"]["memory"]["kind"].as_str().unwrap_or("?"),
-            left_out.join(", ")
+            A::config_name(&build),
+            if designs > 1 {
+                format!(", one design per {} ({designs})", A::PART.replace('_', " "))
+            } else {
+                String::new()
+            },
+            memory_kind(&m["parameters"]["memory"]),
+            if left_out.is_empty() {
+                "none".into()
+            } else {
+                left_out.join(", ")
+            }
         );
         Ok(())
     }
+}
+
+/// The manifest's memory kind (a string, or an object with `kind`).
+fn memory_kind(m: &serde_json::Value) -> &str {
+    m.as_str().or_else(|| m["kind"].as_str()).unwrap_or("?")
 }

@@ -366,7 +366,8 @@ fn verilog_writes_stage_files_lint_waivers_and_manifest() {
     let m = read_json(&out.join("manifest.json"));
     assert_eq!(m["parameters"]["pipelines"], 2);
     assert_eq!(m["parameters"]["memory"]["kind"], "on-chip");
-    assert_eq!(m["scene"], "mip.json");
+    assert_eq!(m["scene"]["name"], "mip.json");
+    assert_eq!(m["configuration"], "mip_p2_16");
     let left: Vec<&str> = m["units_left_out"]
         .as_array()
         .unwrap()
@@ -377,7 +378,8 @@ fn verilog_writes_stage_files_lint_waivers_and_manifest() {
         left.contains(&"abc_gradient") && left.contains(&"sight_ray_divider"),
         "{left:?}"
     );
-    assert_eq!(m["sweeps"].as_array().unwrap().len(), 1);
+    assert_eq!(m["scene"]["sweeps"].as_array().unwrap().len(), 1);
+    assert_eq!(m["designs"].as_array().unwrap().len(), 1);
     let bad = write(
         d.path(),
         "bad.json",
@@ -390,6 +392,86 @@ fn verilog_writes_stage_files_lint_waivers_and_manifest() {
     assert!(
         !d.path().join("out2").exists(),
         "nothing is written on error"
+    );
+}
+
+/// `--config` builds a configuration by name and refuses, naming why, a
+/// scene it cannot render; `sim` renders several scenes as frames of one
+/// build, each checked, each after the host writes that changed.
+#[test]
+fn configurations_by_name_and_frames_in_sequence() {
+    let d = tempfile::tempdir().unwrap();
+    let scene = |view: &str, mode: &str| {
+        format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [12, 12, 10]}}, "view": {{"projection": "parallel", "rotate_deg": {view}}},
+                "mode": "{mode}", "image": [16, 16], "hardware": {{"pipelines": 2}}}}"#
+        )
+    };
+    let a = write(d.path(), "a.json", &scene("[70, 30, 0]", "mip"));
+    let b = write(d.path(), "b.json", &scene("[-20, 135, 10]", "minip"));
+    let c = write(d.path(), "c.json", &scene("[-20, 135, 10]", "composite"));
+    let o = cube(
+        &["verilog", "--config", "mip_p2_16", "--out", "v"],
+        d.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("configuration mip_p2_16"));
+    let m = read_json(&d.path().join("v/manifest.json"));
+    assert_eq!(m["configuration"], "mip_p2_16");
+    assert!(m.get("scene").is_none(), "{m}");
+    assert_clean_error(
+        &cube(
+            &[
+                "verilog",
+                "--config",
+                "mip_p2_16",
+                "--scene",
+                &c,
+                "--out",
+                "w",
+            ],
+            d.path(),
+        ),
+        "the scene's mode needs the composite hardware",
+    );
+    assert_clean_error(
+        &cube(
+            &[
+                "verilog", "--config", "mip_p2_8", "--scene", &a, "--out", "w",
+            ],
+            d.path(),
+        ),
+        "mip_p2_8 cannot render",
+    );
+    assert_clean_error(
+        &cube(
+            &["verilog", "--config", "mip_q2_16", "--out", "w"],
+            d.path(),
+        ),
+        "mip_q2_16",
+    );
+    assert!(!d.path().join("w").exists(), "nothing is written on error");
+    // MIP then MinIP, a new view: one build, the Order register rewritten.
+    let o = cube(
+        &[
+            "sim", "--scene", &a, "--scene", &b, "--json", "f.json", "--out", "f.png",
+        ],
+        d.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j = read_json(&d.path().join("f.json"));
+    assert_eq!(j["designs"], 1, "{j}");
+    assert_eq!(j["configuration"], "mip_p2_12");
+    let frames = j["frames"].as_array().unwrap();
+    assert_eq!(frames.len(), 2);
+    for f in frames {
+        assert_eq!(f["mismatches"], 0, "{f}");
+        assert!(f["reload_clocks"].as_u64().unwrap() > 0, "{f}");
+    }
+    assert!(d.path().join("f-1.png").exists() && d.path().join("f-2.png").exists());
+    assert_clean_error(
+        &cube(&["sim", "--scene", &a, "--scene", &c], d.path()),
+        "frame 2 needs configuration composite",
     );
 }
 
@@ -971,7 +1053,11 @@ fn cube3_sim_verilog_and_their_refusals() {
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let m = read_json(&d.path().join("pv/manifest.json"));
-    assert_eq!(m["base_planes"].as_array().map(|b| b.len()), Some(2));
+    assert_eq!(
+        m["scene"]["base_planes"].as_array().map(|b| b.len()),
+        Some(2)
+    );
+    assert_eq!(m["designs"].as_array().map(|b| b.len()), Some(2));
     for b in ["base_plane0", "base_plane1"] {
         assert!(d.path().join("pv").join(b).join("beam_fetch.v").exists());
     }

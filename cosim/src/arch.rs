@@ -35,9 +35,12 @@ pub struct ClockTerm {
     pub clocks: i64,
 }
 
-/// An architecture, as the flows see it. A frame runs in *parts* the
-/// hardware renders one after another with one build: Cube-4L's sweeps,
-/// Cube-3's base planes.
+/// An architecture, as the flows see it. A build is a *configuration*:
+/// what the hardware is made of (p, the mode class, which units, the
+/// widths, the largest volume), never a view. A frame runs in *parts* the
+/// build renders one after another, each after the host has written its
+/// registers and tables: Cube-4L's sweeps, Cube-3's base planes. Frames
+/// follow each other on the same build.
 pub trait Arch: 'static {
     /// The `--arch` value and the manifest's `architecture`.
     const NAME: &'static str;
@@ -49,40 +52,64 @@ pub trait Arch: 'static {
     /// The export's stage files and lint waivers.
     const LAYOUT: Layout;
 
-    /// One part: its plan, the hardware's configuration and the golden
-    /// model's tables.
+    /// A build's configuration.
+    type Config: Clone + PartialEq + std::fmt::Debug + Send + Sync;
+    /// One part: its plan, the build's configuration, the golden model's
+    /// tables and the registers the host writes.
     type Part: Send + Sync;
     /// A part's base plane, from the golden model or the RTL.
     type Base: BasePixels + Clone + Send;
 
-    /// The scene's parts, for a volume of `dims` (after any crop).
-    fn parts(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Vec<Self::Part>, String>;
-    /// The units the part's hardware leaves out.
-    fn left_out(part: &Self::Part) -> Vec<LeftOut>;
-    /// Whether the voxels live in external memory.
-    fn external(part: &Self::Part) -> bool;
+    /// The configuration a scene needs, for a volume of `dims` (after any
+    /// crop): the smallest build that renders it.
+    fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Self::Config, String>;
+    /// A configuration's name (`composite_shaded_p4_256`), which
+    /// [`Arch::parse_config`] reads back.
+    fn config_name(config: &Self::Config) -> String;
+    fn parse_config(name: &str) -> Result<Self::Config, String>;
+    /// Why build `build` cannot render what `needed` describes, or `None`.
+    fn refuses(build: &Self::Config, needed: &Self::Config) -> Option<String>;
+    /// The scene's parts on build `build`, for a volume of `dims`; an error
+    /// names a view the build cannot render.
+    fn parts(
+        scene: &Scene,
+        camera: &Camera,
+        dims: [usize; 3],
+        build: &Self::Config,
+    ) -> Result<Vec<Self::Part>, String>;
+    /// The units the build leaves out.
+    fn left_out(config: &Self::Config) -> Vec<LeftOut>;
+    /// Whether the build's voxels live in external memory.
+    fn external(config: &Self::Config) -> bool;
     /// The memory modules' contents for the part, module by module.
     fn modules(part: &Self::Part, vol: &Volume) -> Vec<Vec<u16>>;
-    /// The part's Verilog as the kit exports it; `preload` initialises
-    /// on-chip voxel memory (simulation only: hardware loads it through the
-    /// load port). The tables start empty: the host writes them.
+    /// The Verilog that renders the part, as the kit exports it (the same
+    /// for every part of a build whose views are all registers); `preload`
+    /// initialises on-chip voxel memory (simulation only: hardware loads it
+    /// through the load port). The tables start empty: the host writes
+    /// them.
     fn verilog(part: &Self::Part, preload: Option<&[Vec<u16>]>) -> Result<String, String>;
+    /// The build's Verilog without a scene, or why the architecture needs
+    /// one.
+    fn design(config: &Self::Config) -> Result<String, String>;
+    /// Whether two parts run on one build, one after the other (every
+    /// part of a build whose views are all registers does).
+    fn same_build(a: &Self::Part, b: &Self::Part) -> bool;
     /// What the host writes through the host port before the part starts:
     /// its tables, then its registers (`golden_model::host`). Every engine
     /// gets the same writes, so traces line up cycle for cycle.
     fn loads(part: &Self::Part) -> Vec<Write>;
     /// The pixel bus: what a frame's run logs, and the pulses that end it.
     fn bus(part: &Self::Part) -> (Stop, Vec<Group>);
-    /// Run the part in rust-hdl's simulator (memory preloaded, then the
-    /// host's `loads` one a clock, then `start`), logging
-    /// [`Arch::bus`] as the Verilog harness does; the records and the clock
-    /// count from `start`.
+    /// Run the parts one after another on one rust-hdl build (memory
+    /// preloaded; before each part the host's writes, one a clock, then
+    /// `start`), logging [`Arch::bus`] as the Verilog harness does; per
+    /// part the records and the clock count, both from its `start`.
     fn rust_hdl(
-        part: &Self::Part,
+        runs: &[(&Self::Part, Vec<Write>)],
         modules: &[Vec<u16>],
-        loads: &[Write],
         trace: Option<&Path>,
-    ) -> Result<(Vec<Record>, u64), String>;
+    ) -> Result<Vec<(Vec<Record>, u64)>, String>;
     /// The base plane of the logged pixels, or why the golden model could
     /// never have put one of them out.
     fn decode(part: &Self::Part, records: &[Record]) -> Result<Self::Base, String>;
@@ -111,23 +138,19 @@ pub trait Arch: 'static {
             Engine::Verilator => 1 << 28,
         }
     }
-    /// The buffer memory the part's hardware builds (not the voxel memory),
-    /// in bits, against the least the scene needs, and what it is.
-    fn buffer_memory(parts: &[Self::Part]) -> BufferMemory;
-    /// Clocks of a frame of an `n`³ volume on the parts' hardware, where
-    /// the architecture can project them.
-    fn projected_clocks(n: u64, parts: &[Self::Part]) -> Option<u64>;
-    /// The signal groups of a trace of the part, under `top` (the design's
+    /// The buffer memory the build holds (not the voxel memory), in bits,
+    /// against the least its largest volume needs, and what it is.
+    fn buffer_memory(config: &Self::Config, parts: &[Self::Part]) -> BufferMemory;
+    /// Clocks of a frame of an `n`³ volume on the build, where the
+    /// architecture can project them.
+    fn projected_clocks(n: u64, config: &Self::Config) -> Option<u64>;
+    /// The signal groups of a trace of the build, under `top` (the design's
     /// scope: `uut` in rust-hdl, `TOP.top` in Verilator, `tb.uut` in Icarus).
     fn waves(part: &Self::Part, top: &str) -> Vec<Wave>;
-    /// The manifest's entry for one part.
+    /// The manifest's entry for one part of a scene.
     fn manifest_part(part: &Self::Part) -> serde_json::Value;
-    /// The manifest's `parameters`.
-    fn manifest_parameters(
-        scene: &Scene,
-        dims: [usize; 3],
-        parts: &[Self::Part],
-    ) -> serde_json::Value;
+    /// The manifest's `parameters` of a build.
+    fn manifest_parameters(config: &Self::Config) -> serde_json::Value;
 }
 
 /// A design's buffer memory: bits as built and the least the scene needs.

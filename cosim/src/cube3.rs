@@ -3,6 +3,11 @@
 //! shaders, RPC), its pixels one per stream ray, in stream order, on the
 //! `done` port. The volume is loaded into the memory modules in each base
 //! plane's traversal order.
+//!
+//! The shader's light and tables are host registers and RAM, but the view
+//! (templates, bounds, de-fanning groups, the base plane) is still built
+//! into each base plane's system: a Cube-3 configuration names the units,
+//! and each base plane is a build of its own.
 
 use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
 use crate::gtkw::Wave;
@@ -13,10 +18,11 @@ use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
+use hdl::common::mode_class::ModeClass;
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use scene::{Camera, Image, Mode, Scene};
+use scene::{Camera, Image, Scene};
 use std::path::Path;
 
 /// 2-DSB and delay-line address bits of every Cube-3 build (the ABC
@@ -27,6 +33,52 @@ pub const H: usize = 16;
 
 /// Cube-3 (Pfister, Wessels and Kaufman): ray-parallel casting.
 pub struct Cube3;
+
+/// What a Cube-3 build is made of beyond its views: p, the mode class, the
+/// units and the widths.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Cube3Build {
+    pub p: usize,
+    pub mode: ModeClass,
+    pub shading: bool,
+    pub gradient_opacity: bool,
+    pub perspective: bool,
+    pub neighbourhood: Neighbourhood,
+    pub voxel_bits: u32,
+    pub frac_bits: u32,
+    pub rgba_bits: u32,
+    /// The voxels live in external RAM (a base plane's module holds more
+    /// than 2^16 words).
+    pub external_memory: bool,
+}
+
+impl Cube3Build {
+    /// `{mode}[_shaded][_gm][_perspective]_n{6|12|...}_p{p}`, with the
+    /// widths when not 8 bits.
+    pub fn name(&self) -> String {
+        let mut s = self.mode.name().to_string();
+        for (on, w) in [
+            (self.shading, "_shaded"),
+            (self.gradient_opacity, "_gm"),
+            (self.perspective, "_perspective"),
+        ] {
+            if on {
+                s += w;
+            }
+        }
+        s += &format!("_n{}_p{}", self.neighbourhood.count(), self.p);
+        for (bits, tag) in [
+            (self.voxel_bits, 'v'),
+            (self.rgba_bits, 'c'),
+            (self.frac_bits, 'f'),
+        ] {
+            if bits != 8 {
+                s += &format!("_{tag}{bits}");
+            }
+        }
+        s
+    }
+}
 
 /// One base plane: its view, the golden model's shading tables and
 /// neighbourhood, and the system's configuration.
@@ -88,65 +140,120 @@ lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not use
 lint_off -rule UNUSEDSIGNAL -file "*abc_unit.v" -match "*Signal is not used: 'lanes$*$t*"
 "#;
 
-/// The units a Cube-3 system leaves out for its scene.
-pub fn left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
-    let p = &c.pipeline;
-    let mut v = vec![];
-    if !p.perspective {
-        v.push(LeftOut {
-            name: "de-fanning (a parallel view's beams shift as a whole: no group ROMs, one template entry a plane)",
-            instances: &["groups", "group_x$*"],
-        });
+/// The units a Cube-3 build has.
+struct Units {
+    perspective: bool,
+    gradient: bool,
+    /// The shaders (composite and first-opaque), with lighting and
+    /// gradient opacity.
+    shaders: bool,
+    lighting: bool,
+    gradient_opacity: bool,
+    xray: bool,
+}
+
+impl Units {
+    fn of_build(b: &Cube3Build) -> Units {
+        let shaders = b.mode == ModeClass::Over;
+        Units {
+            perspective: b.perspective,
+            gradient: shaders && (b.shading || b.gradient_opacity),
+            shaders,
+            lighting: b.shading,
+            gradient_opacity: b.gradient_opacity,
+            xray: b.mode == ModeClass::Xray,
+        }
     }
-    if p.abc.is_none() {
-        v.push(LeftOut {
-            name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
-            instances: &["abc"],
-        });
+
+    fn of_system(c: &Cube3SystemConfig) -> Units {
+        let p = &c.pipeline;
+        Units {
+            perspective: p.perspective,
+            gradient: p.abc.is_some(),
+            shaders: p.shading.is_some(),
+            lighting: p.shading.as_ref().is_some_and(|s| s.lighting.is_some()),
+            gradient_opacity: p
+                .shading
+                .as_ref()
+                .is_some_and(|s| s.opacity.as_ref().and_then(|o| o.gm_shift).is_some()),
+            xray: p.opacity.is_some(),
+        }
     }
-    match &p.shading {
-        None => v.push(LeftOut {
-            name: "shaders (MIP, MinIP and X-ray take the leaf stage)",
-            instances: &["shade$*"],
-        }),
-        Some(s) => {
+
+    /// The units left out.
+    fn left_out(&self) -> Vec<LeftOut> {
+        let mut v = vec![];
+        if !self.perspective {
+            v.push(LeftOut {
+                name: "de-fanning (a parallel view's beams shift as a whole: no group ROMs, one template entry a plane)",
+                instances: &["groups", "group_x$*"],
+            });
+        }
+        if !self.gradient {
+            v.push(LeftOut {
+                name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
+                instances: &["abc"],
+            });
+        }
+        if self.shaders {
             v.push(LeftOut {
                 name: "leaf_stage (composite and first-opaque take the shaders; disabled by constants, for synthesis to remove)",
                 instances: &[],
             });
-            if s.lighting.is_none() {
+            if !self.lighting {
                 v.push(LeftOut {
                     name: "lighting (the normal's dot products, their tables and registers)",
                     instances: &["lighting", "normal"],
                 });
             }
-            if s.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+            if !self.gradient_opacity {
                 v.push(LeftOut {
                     name: "gradient_opacity (the magnitude bin and its table)",
                     instances: &["alpha_gm", "gm_bin"],
                 });
             }
+        } else {
+            v.push(LeftOut {
+                name: "shaders (MIP, MinIP and X-ray take the leaf stage)",
+                instances: &["shade$*"],
+            });
+            v.push(LeftOut {
+                name: "rpc_over_operator_multipliers",
+                instances: &["ch_r", "ch_g", "ch_b", "ch_a"],
+            });
         }
+        if !self.xray {
+            v.push(LeftOut {
+                name: "opacity_table (X-ray only)",
+                instances: &["opacity"],
+            });
+        }
+        v
     }
-    if !matches!(p.mode, Mode::Composite | Mode::FirstOpaque) {
-        v.push(LeftOut {
-            name: "rpc_over_operator_multipliers",
-            instances: &["ch_r", "ch_g", "ch_b", "ch_a"],
-        });
-    }
-    if p.opacity.is_none() {
-        v.push(LeftOut {
-            name: "opacity_table (X-ray only)",
-            instances: &["opacity"],
-        });
-    }
-    if p.on_grid {
-        v.push(LeftOut {
-            name: "trilin_arithmetic (samples on the grid: zero weights, folded by synthesis)",
-            instances: &[],
-        });
-    }
-    v
+}
+
+/// The units a Cube-3 system leaves out.
+pub fn left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
+    Units::of_system(c).left_out()
+}
+
+/// The scene's base planes, each with the system that renders it.
+fn scene_parts(scene: &Scene, camera: &Camera) -> Result<Vec<Part>, String> {
+    let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+    let n = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
+    plan.views
+        .into_iter()
+        .map(|view| {
+            let shader = Shader::new(scene, camera, &view);
+            let config = config(scene, &view, &shader, n)?;
+            Ok(Part {
+                view,
+                shader,
+                neighbourhood: n,
+                config,
+            })
+        })
+        .collect()
 }
 
 /// The Verilog of a Cube-3 system with its unneeded units pruned;
@@ -257,6 +364,7 @@ impl ForP for RustHdl<'_> {
 }
 
 impl Arch for Cube3 {
+    type Config = Cube3Build;
     const NAME: &'static str = "cube3";
     const TITLE: &'static str = "Cube-3";
     const PART: &'static str = "base_plane";
@@ -278,30 +386,70 @@ impl Arch for Cube3 {
     type Part = Part;
     type Base = BasePlane;
 
-    fn parts(scene: &Scene, camera: &Camera, _dims: [usize; 3]) -> Result<Vec<Part>, String> {
-        let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
-        let n = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
-        plan.views
-            .into_iter()
-            .map(|view| {
-                let shader = Shader::new(scene, camera, &view);
-                let config = config(scene, &view, &shader, n)?;
-                Ok(Part {
-                    view,
-                    shader,
-                    neighbourhood: n,
-                    config,
-                })
-            })
-            .collect()
+    fn needs(scene: &Scene, camera: &Camera, _dims: [usize; 3]) -> Result<Cube3Build, String> {
+        let parts = scene_parts(scene, camera)?;
+        let first = parts.first().ok_or("the view needs no base plane")?;
+        let hw = scene.hardware;
+        Ok(Cube3Build {
+            p: hw.pipelines,
+            mode: ModeClass::of(scene.mode),
+            shading: first.shader.lighting.is_some(),
+            gradient_opacity: first
+                .shader
+                .opacity
+                .as_ref()
+                .is_some_and(|o| o.gm_shift.is_some()),
+            perspective: first.config.pipeline.perspective,
+            neighbourhood: first.neighbourhood,
+            voxel_bits: hw.voxel_bits,
+            frac_bits: hw.frac_bits,
+            rgba_bits: hw.rgba_bits,
+            external_memory: parts.iter().any(|p| p.config.fetch.external),
+        })
     }
 
-    fn left_out(part: &Part) -> Vec<LeftOut> {
-        left_out(&part.config)
+    fn config_name(config: &Cube3Build) -> String {
+        config.name()
     }
 
-    fn external(part: &Part) -> bool {
-        part.config.fetch.external
+    fn parse_config(name: &str) -> Result<Cube3Build, String> {
+        Err(format!(
+            "configuration '{name}': a Cube-3 build is made for its scene's base planes (their templates, bounds and groups are built in); give --scene"
+        ))
+    }
+
+    fn refuses(build: &Cube3Build, needed: &Cube3Build) -> Option<String> {
+        (build != needed).then(|| {
+            format!(
+                "the scene needs {}, the configuration is {}",
+                needed.name(),
+                build.name()
+            )
+        })
+    }
+
+    fn parts(
+        scene: &Scene,
+        camera: &Camera,
+        dims: [usize; 3],
+        build: &Cube3Build,
+    ) -> Result<Vec<Part>, String> {
+        let needed = Self::needs(scene, camera, dims)?;
+        if let Some(why) = Self::refuses(build, &needed) {
+            return Err(format!(
+                "configuration {} cannot render the scene: {why}",
+                build.name()
+            ));
+        }
+        scene_parts(scene, camera)
+    }
+
+    fn left_out(config: &Cube3Build) -> Vec<LeftOut> {
+        Units::of_build(config).left_out()
+    }
+
+    fn external(config: &Cube3Build) -> bool {
+        config.external_memory
     }
 
     fn modules(part: &Part, vol: &Volume) -> Vec<Vec<u16>> {
@@ -310,6 +458,14 @@ impl Arch for Cube3 {
 
     fn verilog(part: &Part, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
         verilog(&part.config, preload)
+    }
+
+    fn design(config: &Cube3Build) -> Result<String, String> {
+        Self::parse_config(&config.name()).map(|_| String::new())
+    }
+
+    fn same_build(_a: &Part, _b: &Part) -> bool {
+        false
     }
 
     fn bus(part: &Part) -> (Stop, Vec<Group>) {
@@ -336,12 +492,16 @@ impl Arch for Cube3 {
     }
 
     fn rust_hdl(
-        part: &Part,
+        runs: &[(&Part, Vec<Write>)],
         modules: &[Vec<u16>],
-        loads: &[Write],
         trace: Option<&Path>,
-    ) -> Result<(Vec<Record>, u64), String> {
-        with_p(part.config.pipeline.p, RustHdl(part, modules, loads, trace))?
+    ) -> Result<Vec<(Vec<Record>, u64)>, String> {
+        // Each base plane is a build of its own (`same_build`).
+        runs.iter()
+            .map(|(part, loads)| {
+                with_p(part.config.pipeline.p, RustHdl(part, modules, loads, trace))?
+            })
+            .collect()
     }
 
     fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {
@@ -421,7 +581,7 @@ impl Arch for Cube3 {
         terms
     }
 
-    fn buffer_memory(parts: &[Part]) -> BufferMemory {
+    fn buffer_memory(_config: &Cube3Build, parts: &[Part]) -> BufferMemory {
         // Base planes run one after another on one system: the largest
         // one's 2-DSBs are what is built. Each holds a PRP of `R` rays,
         // `G·P` 16-bit words a ray, where the least is `K` planes of voxel
@@ -439,7 +599,7 @@ impl Arch for Cube3 {
         }
     }
 
-    fn projected_clocks(_n: u64, _parts: &[Part]) -> Option<u64> {
+    fn projected_clocks(_n: u64, _config: &Cube3Build) -> Option<u64> {
         None
     }
 
@@ -539,37 +699,25 @@ impl Arch for Cube3 {
             "scanlines": c.fetch.scanlines,
             "period_clocks": c.fetch.period(),
             "clocks": c.clocks(),
+            "segments_per_ray": c.fetch.segments,
+            "voxels_per_module": c.fetch.module_words(),
+            "words_per_buffer_module": c.fetch.rays * c.fetch.segments,
         })
     }
 
-    fn manifest_parameters(scene: &Scene, dims: [usize; 3], parts: &[Part]) -> serde_json::Value {
-        let c = &parts[0].config;
-        let (f, p) = (&c.fetch, &c.pipeline);
-        let hw = scene.hardware;
+    fn manifest_parameters(config: &Cube3Build) -> serde_json::Value {
         serde_json::json!({
-            "pipelines": p.p,
-            "volume_dims": dims,
-            "traversal_dims": f.dims,
-            "voxel_bits": hw.voxel_bits,
-            "frac_bits": hw.frac_bits,
-            "sample_bits": p.voxel_bits + p.sample_frac,
-            "rgba_bits": hw.rgba_bits,
-            "mode": format!("{:?}", scene.mode),
-            "offset": p.offset,
-            "rays": f.rays,
-            "scanlines": f.scanlines,
-            "segments_per_ray": f.segments,
-            "period_clocks": f.period(),
-            "frame_clocks": parts.iter().map(|d| d.config.clocks()).sum::<usize>(),
-            "memory": {
-                "kind": if f.external { "external" } else { "on-chip" },
-                "voxels_per_module": f.module_words(),
-                "module_address_bits": if f.external { 32 } else { A },
-            },
-            "buffers": {
-                "two_d_skewed_buffers": 3,
-                "words_per_buffer_module": f.rays * f.segments,
-            },
+            "configuration": config.name(),
+            "pipelines": config.p,
+            "modes": config.mode.modes(),
+            "shading": config.shading,
+            "gradient_opacity": config.gradient_opacity,
+            "rays": if config.perspective { "perspective" } else { "parallel" },
+            "neighbourhood": config.neighbourhood.count(),
+            "voxel_bits": config.voxel_bits,
+            "frac_bits": config.frac_bits,
+            "rgba_bits": config.rgba_bits,
+            "memory": if config.external_memory { "external" } else { "on-chip" },
         })
     }
 }

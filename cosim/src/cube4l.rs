@@ -1,17 +1,22 @@
-//! Cube-4L in the flows: a part is a sweep, its hardware the
-//! [`hdl::cube4l::Pipeline`] of CFB and `P` pipelines, its pixels the base
-//! plane's cells that leave on ER through each lane's pixel port.
+//! Cube-4L in the flows: a build is a [`PipelineConfig`], its hardware the
+//! [`hdl::cube4l::Pipeline`] of CFB and `P` pipelines; a part is a sweep,
+//! rendered after the host writes its view registers
+//! ([`golden_model::cube4l::regs::ViewRegs`]) and the shader's tables; its
+//! pixels are the base plane's cells that leave on ER through each lane's
+//! pixel port.
 
 use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
 use crate::gtkw::Wave;
 use crate::harness::{Group, Record, Stop};
-use crate::verilog::{clean_verilog, Layout, LeftOut, Memory, ON_CHIP_BITS as A};
+use crate::verilog::{clean_verilog, Layout, LeftOut, ON_CHIP_BITS as A};
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan, Rays, Sweep};
+use golden_model::cube4l::regs::ViewRegs;
 use golden_model::cube4l::shader::Shader as GoldenShader;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
+use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::config::unpack;
 use hdl::cube4l::{Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
@@ -26,14 +31,14 @@ pub const H: usize = 16;
 /// Cube-4L (Bitter and Kaufman): ray-slice sweeping.
 pub struct Cube4l;
 
-/// One sweep: its plan, the golden model's shader (whose tables the
-/// hardware copies), the pipeline's configuration and where its voxels live.
+/// One sweep: its plan, the golden model's shader (whose tables the host
+/// loads), the build and the view registers the host writes.
 #[derive(Debug, Clone)]
 pub struct Part {
     pub sweep: Sweep,
     pub golden: GoldenShader,
     pub config: PipelineConfig,
-    pub memory: Memory,
+    pub regs: ViewRegs,
 }
 
 impl Part {
@@ -64,7 +69,22 @@ fn stage_file(name: &str) -> &'static str {
 
 /// The lint waivers every emitted Cube-4L design needs beyond those of
 /// every design (`verilog::lint_waivers`).
-pub const LINT_WAIVERS: &str = r#"// Each CFB lane's dataset z and memory address are observability outputs:
+pub const LINT_WAIVERS: &str = r#"// The view registers are 64-bit words of 16-bit, or for the axes 2-bit,
+// fields that the host writes; each stage reads the fields it needs, see
+// docs/registers.md.
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dims'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'slices'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'axes'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'address_reg'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'beats'*"
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'dims'*"
+lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'order'*"
+lint_off -rule UNUSEDSIGNAL -file "*compositor.v" -match "*Bits of signal are not used: 'order'*"
+// dx and dy are 64-bit two's-complement words; their magnitude is at most
+// one in the sweep's fraction bits, so the upper half is unread.
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dx_abs'*"
+lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dy_abs'*"
+// Each CFB lane's dataset z and memory address are observability outputs:
 // the CFB testbench compares them with the golden model's stream, and the
 // waveforms show them; the pipeline itself needs neither.
 lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'cfb$z$*'*"
@@ -95,86 +115,87 @@ lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'shader$r'*"
 "#;
 
-/// The units a sweep's pipeline leaves out.
-pub fn left_out(config: &PipelineConfig, golden: &GoldenShader) -> Vec<LeftOut> {
+/// The units a build leaves out.
+pub fn left_out(config: &PipelineConfig) -> Vec<LeftOut> {
     let mut v = Vec::new();
-    if !config.gradient {
+    if !config.gradient() {
         v.push(LeftOut {
             name: "abc_gradient",
             instances: &["abc", "late"],
         });
     }
-    if golden.lighting.is_none() {
+    if !config.shading {
         v.push(LeftOut {
             name: "lighting (the normal's dot products, their tables and registers)",
             instances: &["lighting", "normal"],
         });
     }
-    if golden.colour.is_none() && golden.opacity.is_none() {
+    if config.mode == ModeClass::Scalar {
         v.push(LeftOut {
             name: "classification_table",
             instances: &["lut"],
         });
     }
-    if golden.opacity.as_ref().and_then(|o| o.gm_shift).is_none() {
+    if !config.gradient_opacity {
         v.push(LeftOut {
             name: "gradient_opacity (the magnitude bin and its table)",
             instances: &["alpha_gm", "gm_bin"],
         });
     }
-    if !golden.mode.uses_colour() {
+    if config.mode != ModeClass::Over {
         v.push(LeftOut {
             name: "shading_and_weighting_multipliers",
             instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
         });
     }
-    if config.cfb.eye.is_none() {
+    if !config.perspective {
         v.push(LeftOut {
             name: "sight_ray_divider",
             instances: &["div_x", "div_y"],
         });
     }
-    if !config.reads_row_below() {
-        v.push(LeftOut {
-            name: "compositing_buffer_row_y-1_line (a register)",
-            instances: &[],
-        });
-    }
     v
 }
 
-/// Build the sweep's pipeline for `P` lanes and emit its Verilog.
-struct Emit<'a>(&'a Part, Option<&'a [Vec<u16>]>);
+/// Build the pipeline for `P` lanes and emit its Verilog.
+struct Emit<'a>(&'a PipelineConfig, Option<&'a [Vec<u16>]>);
 
 impl ForP for Emit<'_> {
     type Output = Result<String, String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let Emit(part, preload) = self;
-        let mut uut = Pipeline::<P, A, H>::new(&part.config, &part.golden)?;
-        if let Some(m) = preload.filter(|_| part.memory == Memory::OnChip) {
+        let Emit(config, preload) = self;
+        let mut uut = Pipeline::<P, A, H>::new(config)?;
+        if let Some(m) = preload.filter(|_| !config.external_memory()) {
             uut.preload(m);
         }
         uut.connect_all();
-        clean_verilog(&generate_verilog(&uut), &Cube4l::left_out(part))
+        clean_verilog(&generate_verilog(&uut), &left_out(config))
     }
 }
 
-/// Simulate the sweep's pipeline for `P` lanes in rust-hdl.
-struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], &'a [Write], Option<&'a Path>);
+/// Simulate sweeps one after another on one rust-hdl build of `P` lanes.
+struct RustHdl<'a>(
+    &'a [(&'a Part, Vec<Write>)],
+    &'a [Vec<u16>],
+    Option<&'a Path>,
+);
 
-/// What the rust-hdl testbench collects: the records and the clock count.
-type Collected = std::sync::Arc<std::sync::Mutex<(Vec<Record>, u64)>>;
+/// What the rust-hdl testbench collects: per sweep, the records and the
+/// clock count.
+type Collected = std::sync::Arc<std::sync::Mutex<Vec<(Vec<Record>, u64)>>>;
 
 impl ForP for RustHdl<'_> {
-    type Output = Result<(Vec<Record>, u64), String>;
+    type Output = Result<Vec<(Vec<Record>, u64)>, String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let RustHdl(part, modules, loads, trace) = self;
-        let mut uut = Pipeline::<P, A, H>::new(&part.config, &part.golden)?;
+        let RustHdl(runs, modules, trace) = self;
+        let mut uut = Pipeline::<P, A, H>::new(&runs[0].0.config)?;
         uut.preload(modules);
         uut.connect_all();
-        let loads = loads.to_vec();
-        let n_loads = loads.len() as u64;
-        let beats = part.beats();
+        let runs: Vec<(Vec<Write>, u64)> = runs
+            .iter()
+            .map(|(part, w)| (w.clone(), part.beats()))
+            .collect();
+        let clocks: u64 = runs.iter().map(|(w, b)| w.len() as u64 + 2 * b + 200).sum();
         let out: Collected = Default::default();
         let sink = out.clone();
         let mut sim = Simulation::new();
@@ -183,45 +204,49 @@ impl ForP for RustHdl<'_> {
         });
         sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
             let mut x = sim.init()?;
-            for w in &loads {
-                x.host_write.next = true;
-                x.host_address.next = (w.address as u64).to_bits();
-                x.host_data.next = w.data.to_bits();
-                wait_clock_cycle!(sim, clock, x);
-            }
-            // As the Verilog harness: every host input low after the loads.
-            x.host_write.next = false;
-            x.host_address.next = 0.into();
-            x.host_data.next = 0.into();
-            x.start.next = true;
-            wait_clock_cycle!(sim, clock, x);
-            x.start.next = false;
-            let (mut seen, mut t) = (0u64, 0u64);
-            while seen < beats {
-                wait_clock_cycle!(sim, clock, x);
-                t += 1;
-                let mut o = sink.lock().unwrap();
-                for k in 0..P {
-                    if x.px_valid[k].val() {
-                        let v = [x.px_x[k].val(), x.px_y[k].val()].map(|b| b.to_u64());
-                        o.0.push(Record {
-                            clock: t,
-                            group: k,
-                            values: vec![
-                                Some(v[0]),
-                                Some(v[1]),
-                                Some(x.px_face[k].val().to_u64()),
-                                Some(x.res[k].val().to_u64()),
-                            ],
-                        });
-                    }
+            for (loads, beats) in &runs {
+                for w in loads {
+                    x.host_write.next = true;
+                    x.host_address.next = (w.address as u64).to_bits();
+                    x.host_data.next = w.data.to_bits();
+                    wait_clock_cycle!(sim, clock, x);
                 }
-                seen += x.res_beat[0].val() as u64;
-                o.1 = t + 1;
+                // As the Verilog harness: every host input low after the loads.
+                x.host_write.next = false;
+                x.host_address.next = 0.into();
+                x.host_data.next = 0.into();
+                x.start.next = true;
+                wait_clock_cycle!(sim, clock, x);
+                x.start.next = false;
+                sink.lock().unwrap().push((vec![], 1));
+                let (mut seen, mut t) = (0u64, 0u64);
+                while seen < *beats {
+                    wait_clock_cycle!(sim, clock, x);
+                    t += 1;
+                    let mut o = sink.lock().unwrap();
+                    let o = o.last_mut().unwrap();
+                    for k in 0..P {
+                        if x.px_valid[k].val() {
+                            let v = [x.px_x[k].val(), x.px_y[k].val()].map(|b| b.to_u64());
+                            o.0.push(Record {
+                                clock: t,
+                                group: k,
+                                values: vec![
+                                    Some(v[0]),
+                                    Some(v[1]),
+                                    Some(x.px_face[k].val().to_u64()),
+                                    Some(x.res[k].val().to_u64()),
+                                ],
+                            });
+                        }
+                    }
+                    seen += x.res_beat[0].val() as u64;
+                    o.1 = t + 1;
+                }
             }
             sim.done(x)
         });
-        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (2 * beats + 200 + n_loads), trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * clocks, trace)?;
         let o = out.lock().unwrap();
         Ok(o.clone())
     }
@@ -285,35 +310,69 @@ impl Arch for Cube4l {
         stage_file,
         waivers: LINT_WAIVERS,
     };
+    type Config = PipelineConfig;
     type Part = Part;
     type Base = BasePlane;
 
-    fn parts(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Vec<Part>, String> {
+    fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<PipelineConfig, String> {
         let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
-        let p = scene.hardware.pipelines;
-        let memory = Memory::for_volume(dims, p);
+        let sweep = plan.sweeps.first().ok_or("the view needs no sweep")?;
+        let golden = GoldenShader::new(scene, camera, sweep);
+        let c = PipelineConfig::for_view(sweep, dims, scene.hardware.pipelines, &golden);
+        c.validate()?;
+        Ok(c)
+    }
+
+    fn config_name(config: &PipelineConfig) -> String {
+        config.name()
+    }
+
+    fn parse_config(name: &str) -> Result<PipelineConfig, String> {
+        PipelineConfig::parse(name)
+    }
+
+    fn refuses(build: &PipelineConfig, needed: &PipelineConfig) -> Option<String> {
+        build.refuses(needed)
+    }
+
+    fn parts(
+        scene: &Scene,
+        camera: &Camera,
+        dims: [usize; 3],
+        build: &PipelineConfig,
+    ) -> Result<Vec<Part>, String> {
+        let needed = Self::needs(scene, camera, dims)?;
+        if let Some(why) = build.refuses(&needed) {
+            return Err(format!(
+                "configuration {build} cannot render the scene: {why}"
+            ));
+        }
+        let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
+        let p = build.p as usize;
         plan.sweeps
             .into_iter()
             .map(|sweep| {
                 let golden = GoldenShader::new(scene, camera, &sweep);
-                let mut config = PipelineConfig::new(&sweep, dims, p, &golden)?;
-                config.cfb.external_memory = memory == Memory::External;
+                let regs = ViewRegs::new(&sweep, dims, p, build.gradient(), scene.mode);
+                build.check_view(&regs).map_err(|why| {
+                    format!("configuration {build} cannot render a sweep of the view: {why}")
+                })?;
                 Ok(Part {
                     sweep,
                     golden,
-                    config,
-                    memory,
+                    config: *build,
+                    regs,
                 })
             })
             .collect()
     }
 
-    fn left_out(part: &Part) -> Vec<LeftOut> {
-        left_out(&part.config, &part.golden)
+    fn left_out(config: &PipelineConfig) -> Vec<LeftOut> {
+        left_out(config)
     }
 
-    fn external(part: &Part) -> bool {
-        part.memory == Memory::External
+    fn external(config: &PipelineConfig) -> bool {
+        config.external_memory()
     }
 
     fn modules(part: &Part, vol: &Volume) -> Vec<Vec<u16>> {
@@ -321,7 +380,15 @@ impl Arch for Cube4l {
     }
 
     fn verilog(part: &Part, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
-        with_p(part.config.p as usize, Emit(part, preload))?
+        with_p(part.config.p as usize, Emit(&part.config, preload))?
+    }
+
+    fn design(config: &PipelineConfig) -> Result<String, String> {
+        with_p(config.p as usize, Emit(config, None))?
+    }
+
+    fn same_build(a: &Part, b: &Part) -> bool {
+        a.config == b.config
     }
 
     fn bus(part: &Part) -> (Stop, Vec<Group>) {
@@ -344,16 +411,16 @@ impl Arch for Cube4l {
 
     fn loads(part: &Part) -> Vec<Write> {
         let t = part.golden.tables();
-        [t.table_writes(), t.register_writes()].concat()
+        [t.table_writes(), t.register_writes(), part.regs.writes()].concat()
     }
 
     fn rust_hdl(
-        part: &Part,
+        runs: &[(&Part, Vec<Write>)],
         modules: &[Vec<u16>],
-        loads: &[Write],
         trace: Option<&Path>,
-    ) -> Result<(Vec<Record>, u64), String> {
-        with_p(part.config.p as usize, RustHdl(part, modules, loads, trace))?
+    ) -> Result<Vec<(Vec<Record>, u64)>, String> {
+        let p = runs.first().ok_or("no sweep to simulate")?.0.config.p as usize;
+        with_p(p, RustHdl(runs, modules, trace))?
     }
 
     fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {
@@ -408,21 +475,21 @@ impl Arch for Cube4l {
     }
 
     fn clock_terms(part: &Part) -> Vec<ClockTerm> {
-        let c = &part.config;
-        let slice = (c.slice_beats) as i64;
+        let (c, r) = (&part.config, &part.regs);
+        let slice = r.slice_beats as i64;
         let mut v = vec![ClockTerm {
             key: "beats",
             what: "beats (one voxel per pipeline per clock)",
             clocks: part.beats() as i64,
         }];
-        if c.gradient {
+        if c.gradient() {
             v.push(ClockTerm {
                 key: "gradient_slice",
                 what: "gradient unit's slice",
                 clocks: slice,
             });
         }
-        if c.gradient && c.cfb.stream_z0 < c.cfb.z0 {
+        if c.gradient() && r.stream_z0 < r.z0 {
             // A sweep that starts inside the volume streams the slice before
             // its first as the gradient's halo.
             v.push(ClockTerm {
@@ -434,29 +501,25 @@ impl Arch for Cube4l {
         v.push(ClockTerm {
             key: "fill",
             what: "fill",
-            clocks: hdl::cube4l::config::fill_clocks(c.gradient) as i64,
+            clocks: hdl::cube4l::config::fill_clocks(c.gradient()) as i64,
         });
         v
     }
 
-    fn buffer_memory(parts: &[Part]) -> BufferMemory {
-        // Sweeps run one after another on one pipeline: the largest
-        // sweep's buffers are what is built.
-        let c = parts
-            .iter()
-            .map(|d| &d.config)
-            .max_by_key(|c| c.buffer_bits())
-            .expect("a part per sweep");
+    fn buffer_memory(config: &PipelineConfig, _parts: &[Part]) -> BufferMemory {
         BufferMemory {
             what: "compositing-buffer history and gradient slices",
-            bits: c.buffer_bits(),
-            minimum_bits: c.minimum_buffer_bits(),
+            bits: config.buffer_bits(),
+            minimum_bits: config.minimum_buffer_bits(),
         }
     }
 
-    fn projected_clocks(n: u64, parts: &[Part]) -> Option<u64> {
-        let c = &parts[0].config;
-        Some(hdl::cube4l::config::frame_clocks(n, c.p as u64, c.gradient))
+    fn projected_clocks(n: u64, config: &PipelineConfig) -> Option<u64> {
+        Some(hdl::cube4l::config::frame_clocks(
+            n,
+            config.p as u64,
+            config.gradient(),
+        ))
     }
 
     fn waves(part: &Part, top: &str) -> Vec<Wave> {
@@ -540,28 +603,29 @@ impl Arch for Cube4l {
             "slices": [s.z0, s.z1],
             "order": format!("{:?}", s.order),
             "rays": rays,
-            "history_bits_needed": part.config.history_bits(),
+            "register_writes": part.regs.writes().len(),
         })
     }
 
-    fn manifest_parameters(scene: &Scene, dims: [usize; 3], parts: &[Part]) -> serde_json::Value {
-        let hw = scene.hardware;
-        let p = hw.pipelines;
-        let config = &parts[0].config;
-        let memory = parts[0].memory;
-        let buffer = Self::buffer_memory(parts);
+    fn manifest_parameters(config: &PipelineConfig) -> serde_json::Value {
+        let buffer = Self::buffer_memory(config, &[]);
         serde_json::json!({
-            "pipelines": p,
-            "volume_dims": dims,
-            "voxel_bits": hw.voxel_bits,
-            "frac_bits": hw.frac_bits,
-            "rgba_bits": hw.rgba_bits,
-            "mode": format!("{:?}", scene.mode),
+            "configuration": config.name(),
+            "pipelines": config.p,
+            "modes": config.mode.modes(),
+            "shading": config.shading,
+            "gradient_opacity": config.gradient_opacity,
+            "rays": if config.perspective { "perspective" } else { "parallel" },
+            "largest_volume": config.max_dim,
+            "voxel_bits": config.voxel_bits,
+            "frac_bits": config.frac_bits,
+            "rgba_bits": config.rgba_bits,
             "memory": {
-                "kind": memory.name(),
-                "voxels_per_module": dims[0].div_ceil(p) * dims[1] * dims[2],
-                "module_address_bits": if memory == Memory::OnChip { config.cfb.memory_bits } else { 32 },
+                "kind": if config.external_memory() { "external" } else { "on-chip" },
+                "voxels_per_module": config.module_words(),
+                "module_address_bits": if config.external_memory() { 32 } else { config.memory_bits() },
             },
+            "delay_line_pointer_bits": config.history_bits(),
             "buffer_memory": {
                 "bits": buffer.bits,
                 "minimum_bits": buffer.minimum_bits,
@@ -582,7 +646,10 @@ mod tests {
         )
         .unwrap();
         let cam = s.camera().unwrap();
-        Cube4l::parts(&s, &cam, s.volume.dims).unwrap().remove(0)
+        let build = Cube4l::needs(&s, &cam, s.volume.dims).unwrap();
+        Cube4l::parts(&s, &cam, s.volume.dims, &build)
+            .unwrap()
+            .remove(0)
     }
 
     fn pixel(clock: u64, values: [Option<u64>; 4]) -> Record {

@@ -60,54 +60,80 @@ fn replaceable(out: &Path) -> Result<(), String> {
     }
 }
 
-/// Export `scene` (named `name` in the manifest) for architecture `A` into
-/// `out`: the stage files and lint waivers of each part's design (in `out`
-/// for one part, in `out/<PART><i>` for several) and `manifest.json`. The
-/// directory is built beside `out` and renamed over it, so it is written
-/// whole or not at all. Returns the manifest.
+/// What an export is of: a build, and the scene that asked for it.
+pub struct ExportScene<'a> {
+    /// The scene's name in the manifest.
+    pub name: &'a str,
+    pub scene: &'a Scene,
+    pub camera: &'a Camera,
+    /// The volume's dims (after any crop).
+    pub dims: [usize; 3],
+}
+
+/// Export build `build` of architecture `A` into `out`: its stage files,
+/// lint waivers and `manifest.json` (its configuration, parameters and the
+/// units left out; with a scene, the scene's parts and the register writes
+/// each takes). A build whose views are all registers is one design, in
+/// `out`; an architecture that builds a view's constants into its
+/// hardware (Cube-3 for now) exports the scene's parts, in `out/<PART><i>`.
+/// The directory is built beside `out` and renamed over it, so it is
+/// written whole or not at all. Returns the manifest.
 pub fn write_export<A: Arch>(
-    name: &str,
-    scene: &Scene,
-    camera: &Camera,
-    dims: [usize; 3],
     out: &Path,
+    build: &A::Config,
+    scene: Option<&ExportScene>,
 ) -> Result<serde_json::Value, String> {
     replaceable(out)?;
-    let parts = A::parts(scene, camera, dims)?;
-    let verilog: Vec<String> = parts
-        .iter()
-        .map(|p| A::verilog(p, None))
-        .collect::<Result<_, _>>()?;
+    let parts = match scene {
+        Some(s) => A::parts(s.scene, s.camera, s.dims, build)?,
+        None => vec![],
+    };
+    // One design for the build, or one a part.
+    let designs: Vec<(String, String)> = match A::design(build) {
+        Ok(v) => vec![(".".to_string(), v)],
+        Err(e) if parts.is_empty() => return Err(e),
+        Err(_) => parts
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let sub = if parts.len() == 1 {
+                    ".".to_string()
+                } else {
+                    format!("{}{i}", A::PART)
+                };
+                A::verilog(p, None).map(|v| (sub, v))
+            })
+            .collect::<Result<_, _>>()?,
+    };
+    let left_out = A::left_out(build);
     write_dir(out, |tmp| {
         let io = |e: std::io::Error| format!("{}: {e}", out.display());
-        let mut entries = Vec::new();
-        for (i, (part, v)) in parts.iter().zip(&verilog).enumerate() {
-            let sub = if parts.len() == 1 {
-                ".".to_string()
-            } else {
-                format!("{}{i}", A::PART)
-            };
-            let dir = tmp.join(&sub);
+        let mut files = Vec::new();
+        for (sub, v) in &designs {
+            let dir = tmp.join(sub);
             std::fs::create_dir_all(&dir).map_err(io)?;
-            let files = write_stage_files(&dir, v, &A::left_out(part), &A::LAYOUT).map_err(io)?;
-            let mut entry = serde_json::json!({"dir": sub, "files": files});
-            if let (Some(e), serde_json::Value::Object(more)) =
-                (entry.as_object_mut(), A::manifest_part(part))
-            {
-                e.extend(more);
-            }
-            entries.push(entry);
+            let written = write_stage_files(&dir, v, &left_out, &A::LAYOUT).map_err(io)?;
+            files.push(serde_json::json!({"dir": sub, "files": written}));
         }
-        Ok(serde_json::json!({
-            "scene": name,
+        let mut manifest = serde_json::json!({
             "architecture": A::NAME,
+            "configuration": A::config_name(build),
             "generator": format!("cube {} with rust-hdl 0.46", env!("CARGO_PKG_VERSION")),
             "top": "top",
-            "parameters": A::manifest_parameters(scene, dims, &parts),
-            "units_left_out": names(&A::left_out(&parts[0])),
-            format!("{}s", A::PART): entries,
+            "parameters": A::manifest_parameters(build),
+            "units_left_out": names(&left_out),
+            "designs": files,
             "lint": "verilator --lint-only -Wall lint.vlt <files>",
-        }))
+        });
+        if let Some(s) = scene {
+            let entries: Vec<serde_json::Value> = parts.iter().map(A::manifest_part).collect();
+            manifest["scene"] = serde_json::json!({
+                "name": s.name,
+                "volume_dims": s.dims,
+                format!("{}s", A::PART): entries,
+            });
+        }
+        Ok(manifest)
     })
 }
 

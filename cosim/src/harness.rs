@@ -9,9 +9,11 @@
 //! before edge `t`), so traces line up with rust-hdl's cycle for cycle. After
 //! each rising edge it logs the outputs a [`Spec`] asks for: every output on
 //! every clock (a stage), or groups of outputs on the clocks a flag output
-//! is high (a frame's pixel bus). It stops after a number of clocks, or on
-//! the clock an output has pulsed a number of times (a frame's last beat),
-//! and reports that clock count.
+//! is high (a frame's pixel bus). A spec is a sequence of [`Run`]s on one
+//! build (a frame's sweeps, or several frames): each applies its vectors and
+//! ends after a number of clocks, or on the clock an output has pulsed a
+//! number of times (a part's last beat); the next begins on the following
+//! clock. The log reports each run's clocks.
 //!
 //! With external memory (Verilator only), the harness is the RAM behind
 //! every `ext_addr$m` / `ext_data$m` port pair: the word at the address
@@ -158,7 +160,8 @@ fn host_vector(ports: &[Port], w: Option<&golden_model::host::Write>, start: boo
 
 /// The inputs of a design that the host loads through its host port
 /// (`writes`, one a clock) and then starts with `start`: a vector per
-/// write, the start, and one with everything low.
+/// write, the start, and one with everything low (which holds to the end of
+/// the run).
 pub fn load_then_start(ports: &[Port], writes: &[golden_model::host::Write]) -> Vec<Vec<u64>> {
     let mut v = host_writes(ports, writes);
     v.push(host_vector(ports, None, true));
@@ -206,14 +209,20 @@ pub struct Group {
     pub fields: Vec<String>,
 }
 
-/// One harness run.
+/// One run of a spec: its inputs and when it ends.
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// `vectors[t]`: the inputs (in [`ports`] order, inputs only) set before
+    /// the run's edge `t`; the last vector holds after them.
+    pub vectors: Vec<Vec<u64>>,
+    pub stop: Stop,
+}
+
+/// One harness invocation: runs in sequence on one build.
 #[derive(Debug, Clone)]
 pub struct Spec<'a> {
     pub verilog: &'a str,
-    /// `vectors[t]`: the inputs (in [`ports`] order, inputs only) set before
-    /// edge `t`; the last vector holds after them.
-    pub vectors: &'a [Vec<u64>],
-    pub stop: Stop,
+    pub runs: &'a [Run],
     pub groups: &'a [Group],
     /// External memory modules (Verilator only).
     pub memory: Option<&'a [Vec<u16>]>,
@@ -223,7 +232,8 @@ pub struct Spec<'a> {
 }
 
 /// A logged clock of one group: `values[i]` is field `i`, `None` where a bit
-/// is unknown (Icarus).
+/// is unknown (Icarus). The clock counts from the spec's first edge (the
+/// flows make it relative to a run's `start`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Record {
     pub clock: u64,
@@ -231,12 +241,13 @@ pub struct Record {
     pub values: Vec<Option<u64>>,
 }
 
-/// What a run logged, its clocks, and where its time went.
+/// What a spec's runs logged, their clocks, and where the time went.
 #[derive(Debug, Clone)]
 pub struct Logged {
     pub records: Vec<Record>,
-    /// Rising edges from the first (clock 0) to the one the run stopped on.
-    pub clocks: u64,
+    /// Per run: rising edges from its first to the one it stopped on
+    /// (inclusive). Run `i` starts at the sum of the runs before it.
+    pub clocks: Vec<u64>,
     /// Compiling the Verilog (0 for a cached Verilator build).
     pub build_seconds: f64,
     pub run_seconds: f64,
@@ -259,8 +270,9 @@ pub fn run(engine: Engine, spec: &Spec) -> Result<Logged, String> {
     let result = (|| {
         let io = |e: std::io::Error| format!("{}: {e}", dir.display());
         let lines: Vec<String> = spec
-            .vectors
+            .runs
             .iter()
+            .flat_map(|r| &r.vectors)
             .map(|v| {
                 v.iter()
                     .map(|x| format!("{x:x}"))
@@ -301,8 +313,8 @@ pub fn run(engine: Engine, spec: &Spec) -> Result<Logged, String> {
     result
 }
 
-/// Run a stage for `vectors.len()` clocks; the outputs (in [`ports`]
-/// order) after each rising edge, `None` where a bit is unknown.
+/// Run a stage for `vectors.len()` clocks (one run); the outputs (in
+/// [`ports`] order) after each rising edge, `None` where a bit is unknown.
 pub fn run_stage(
     engine: Engine,
     verilog: &str,
@@ -317,10 +329,13 @@ pub fn run_stage(
         when: None,
         fields: outputs,
     }];
+    let runs = [Run {
+        vectors: vectors.to_vec(),
+        stop: Stop::Clocks(vectors.len() as u64),
+    }];
     let spec = Spec {
         verilog,
-        vectors,
-        stop: Stop::Clocks(vectors.len() as u64),
+        runs: &runs,
         groups: &groups,
         memory: None,
         trace: None,
@@ -335,10 +350,9 @@ struct Plan {
     outputs: Vec<Port>,
     /// Per group: the index of `when` among the outputs, and its fields'.
     groups: Vec<(Option<usize>, Vec<usize>)>,
-    /// The stop output's index (or none) with its count, and the clock limit.
-    stop: Option<(usize, u64)>,
-    limit: u64,
-    vectors: usize,
+    /// Per run: its vectors, the stop output's index (or none) with its
+    /// count, and its clock limit.
+    runs: Vec<PlanRun>,
     /// External memory modules: their number, with a VCD or not.
     modules: usize,
     trace: bool,
@@ -363,16 +377,30 @@ impl Plan {
                 Ok((when, fields))
             })
             .collect::<Result<_, String>>()?;
-        let (stop, limit) = match &spec.stop {
-            Stop::Clocks(n) => (None, *n),
-            Stop::Pulses {
-                output,
-                count,
-                limit,
-            } => (Some((find(output)?, *count)), *limit),
-        };
-        if spec.vectors.iter().any(|v| v.len() != inputs.len()) {
-            return Err(format!("every input vector needs {} values", inputs.len()));
+        let runs = spec
+            .runs
+            .iter()
+            .map(|r| {
+                let (stop, limit) = match &r.stop {
+                    Stop::Clocks(n) => (None, *n),
+                    Stop::Pulses {
+                        output,
+                        count,
+                        limit,
+                    } => (Some((find(output)?, *count)), *limit),
+                };
+                if r.vectors.iter().any(|v| v.len() != inputs.len()) {
+                    return Err(format!("every input vector needs {} values", inputs.len()));
+                }
+                Ok(PlanRun {
+                    vectors: r.vectors.len(),
+                    stop,
+                    limit,
+                })
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        if runs.is_empty() {
+            return Err("a harness spec needs a run".into());
         }
         let modules = spec.memory.map_or(0, |m| m.len());
         let ext = outputs
@@ -388,25 +416,29 @@ impl Plan {
             inputs,
             outputs,
             groups,
-            stop,
-            limit,
-            vectors: spec.vectors.len(),
+            runs,
             modules,
             trace: spec.trace.is_some(),
         })
     }
 
-    /// The run's parameters as the C++ harness reads them (`run.cfg`).
+    /// The runs' parameters as the C++ harness reads them (`run.cfg`).
     fn config(&self) -> String {
         let mut s = format!(
-            "{} {} {} {} {} {}\n",
-            self.limit,
-            self.vectors,
-            self.stop.map_or(-1, |(i, _)| i as i64),
-            self.stop.map_or(0, |(_, n)| n),
+            "{} {} {}\n",
+            self.runs.len(),
             self.modules,
             self.trace as u8
         );
+        for r in &self.runs {
+            s += &format!(
+                "{} {} {} {}\n",
+                r.limit,
+                r.vectors,
+                r.stop.map_or(-1, |(i, _)| i as i64),
+                r.stop.map_or(0, |(_, n)| n),
+            );
+        }
         s += &format!("{}\n", self.groups.len());
         for (when, fields) in &self.groups {
             s += &format!("{} {}", when.map_or(-1, |w| w as i64), fields.len());
@@ -419,26 +451,32 @@ impl Plan {
     }
 }
 
-/// The log's records and clock count: `t g v...` lines, then `clocks N`
-/// or `timeout`.
-fn parse(log: &str, spec: &Spec) -> Result<(Vec<Record>, u64), String> {
+/// The log's records and each run's clock count: `t g v...` lines, a
+/// `clocks N` line ending each run, or `timeout` ending the log.
+fn parse(log: &str, spec: &Spec) -> Result<(Vec<Record>, Vec<u64>), String> {
     let mut records = Vec::new();
-    let mut clocks = None;
+    let mut clocks = Vec::new();
     for line in log.lines() {
         let mut words = line.split_whitespace();
         match words.next() {
-            Some("clocks") => clocks = words.next().and_then(|w| w.parse().ok()),
+            Some("clocks") => clocks.push(
+                words
+                    .next()
+                    .and_then(|w| w.parse().ok())
+                    .ok_or_else(|| format!("log '{line}': no clock count"))?,
+            ),
             Some("timeout") => {
-                let Stop::Pulses {
+                let run = clocks.len();
+                let Some(Stop::Pulses {
                     output,
                     count,
                     limit,
-                } = &spec.stop
+                }) = spec.runs.get(run).map(|r| &r.stop)
                 else {
                     return Err("the harness timed out".into());
                 };
                 return Err(format!(
-                    "the design did not pulse {output} {count} times within {limit} clocks"
+                    "run {run}: the design did not pulse {output} {count} times within {limit} clocks"
                 ));
             }
             Some(t) => {
@@ -457,7 +495,22 @@ fn parse(log: &str, spec: &Spec) -> Result<(Vec<Record>, u64), String> {
             None => {}
         }
     }
-    Ok((records, clocks.ok_or("the harness log has no clock count")?))
+    if clocks.len() != spec.runs.len() {
+        return Err(format!(
+            "the harness log ends after {} of {} runs",
+            clocks.len(),
+            spec.runs.len()
+        ));
+    }
+    Ok((records, clocks))
+}
+
+/// One run in port indices.
+#[derive(Debug, Clone, Copy)]
+struct PlanRun {
+    vectors: usize,
+    stop: Option<(usize, u64)>,
+    limit: u64,
 }
 
 /// The C++ name of a port of the Verilated model.
@@ -521,10 +574,13 @@ int main(int argc, char** argv) {{
   const std::string dir = argv[1];
   FILE* cfg = fopen((dir + "/run.cfg").c_str(), "r");
   if (!cfg) {{ perror("run.cfg"); return 2; }}
-  unsigned long long limit, vectors, count;
-  long long stop;
-  int mems, tracing, ngroups;
-  if (fscanf(cfg, "%llu %llu %lld %llu %d %d %d", &limit, &vectors, &stop, &count, &mems, &tracing, &ngroups) != 7) return 2;
+  int nruns, mems, tracing, ngroups;
+  if (fscanf(cfg, "%d %d %d", &nruns, &mems, &tracing) != 3) return 2;
+  std::vector<unsigned long long> limit(nruns), vectors(nruns), count(nruns);
+  std::vector<long long> stop(nruns);
+  for (int r = 0; r < nruns; r++)
+    if (fscanf(cfg, "%llu %llu %lld %llu", &limit[r], &vectors[r], &stop[r], &count[r]) != 4) return 2;
+  if (fscanf(cfg, "%d", &ngroups) != 1) return 2;
   std::vector<long long> when(ngroups);
   std::vector<std::vector<int>> fields(ngroups);
   for (int g = 0; g < ngroups; g++) {{
@@ -559,36 +615,39 @@ int main(int argc, char** argv) {{
     vcd->open((dir + "/trace.vcd").c_str());
   }}
   uint64_t v[NIN + 1] = {{0}}, o[NOUT + 1] = {{0}}, a[NEXT + 1] = {{0}};
-  uint64_t seen = 0, t = 0;
-  bool stopped = false;
+  uint64_t g = 0;
   top->clock = 0;
-  for (; t < limit && !stopped; t++) {{
-    if (t < vectors) {{
-      for (int i = 0; i < NIN; i++) if (fscanf(in, "%llx", (unsigned long long*)&v[i]) != 1) return 1;
-      set_inputs(top.get(), v);
+  for (int r = 0; r < nruns; r++) {{
+    uint64_t seen = 0, t = 0;
+    bool stopped = false;
+    for (; t < limit[r] && !stopped; t++, g++) {{
+      if (t < vectors[r]) {{
+        for (int i = 0; i < NIN; i++) if (fscanf(in, "%llx", (unsigned long long*)&v[i]) != 1) return 1;
+        set_inputs(top.get(), v);
+      }}
+      top->eval();
+      if (vcd) vcd->dump(10 * g);
+      // Rising edge; the external RAM registers the address presented
+      // before it and answers after it.
+      get_addresses(top.get(), a, mems);
+      top->clock = 1;
+      top->eval();
+      set_data(top.get(), a, mem, mems);
+      if (vcd) vcd->dump(10 * g + 5);
+      top->clock = 0;
+      top->eval();
+      get_outputs(top.get(), o);
+      for (int k = 0; k < ngroups; k++) {{
+        if (when[k] >= 0 && !o[when[k]]) continue;
+        fprintf(out, "%llx %d", (unsigned long long)g, k);
+        for (int f : fields[k]) fprintf(out, " %llx", (unsigned long long)o[f]);
+        fputc('\n', out);
+      }}
+      if (stop[r] >= 0 && o[stop[r]] && ++seen == count[r]) stopped = true;
     }}
-    top->eval();
-    if (vcd) vcd->dump(10 * t);
-    // Rising edge; the external RAM registers the address presented
-    // before it and answers after it.
-    get_addresses(top.get(), a, mems);
-    top->clock = 1;
-    top->eval();
-    set_data(top.get(), a, mem, mems);
-    if (vcd) vcd->dump(10 * t + 5);
-    top->clock = 0;
-    top->eval();
-    get_outputs(top.get(), o);
-    for (int g = 0; g < ngroups; g++) {{
-      if (when[g] >= 0 && !o[when[g]]) continue;
-      fprintf(out, "%llx %d", (unsigned long long)t, g);
-      for (int f : fields[g]) fprintf(out, " %llx", (unsigned long long)o[f]);
-      fputc('\n', out);
-    }}
-    if (stop >= 0 && o[stop] && ++seen == count) stopped = true;
+    if (stop[r] >= 0 && !stopped) {{ fprintf(out, "timeout\n"); break; }}
+    fprintf(out, "clocks %llu\n", (unsigned long long)t);
   }}
-  if (stop >= 0 && !stopped) fprintf(out, "timeout\n");
-  else fprintf(out, "clocks %llu\n", (unsigned long long)t);
   fclose(out);
   if (vcd) vcd->close();
   top->final();
@@ -722,45 +781,49 @@ fn testbench_verilog(plan: &Plan) -> String {
     // allows in a name but not first; named connections keep them as they are.
     v += &format!("    top uut({});\n", conns.join(", "));
     v += &crate::tool::heartbeat_verilog();
-    v += "    integer fin, fout, r;\n    reg [63:0] t;\n    reg [63:0] seen;\n    reg stopped;\n    initial begin\n";
+    v += "    integer fin, fout, r;\n    reg [63:0] t;\n    reg [63:0] g;\n    reg [63:0] seen;\n    reg stopped;\n    initial begin\n";
     if plan.trace {
         v += "        $dumpfile(\"trace.vcd\");\n        $dumpvars(0, uut);\n";
     }
     v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
-    v += "        seen = 0;\n        stopped = 0;\n";
-    v += &format!(
-        "        for (t = 0; t < {} && !stopped; t = t + 1) begin\n",
-        plan.limit
-    );
-    if !plan.inputs.is_empty() {
-        let fmt = vec!["%h"; plan.inputs.len()].join(" ");
-        let list: Vec<String> = (0..plan.inputs.len()).map(|i| format!("i{i}")).collect();
+    v += "        g = 0;\n        stopped = 1;\n";
+    // The runs one after another, each a loop of its own (a run after a
+    // timeout does not start).
+    for run in &plan.runs {
+        v += "        if (stopped) begin\n            seen = 0;\n            stopped = 0;\n";
         v += &format!(
-            "            if (t < {}) r = $fscanf(fin, \"{fmt}\\n\", {});\n",
-            plan.vectors,
-            list.join(", ")
+            "            for (t = 0; t < {} && !stopped; t = t + 1) begin\n",
+            run.limit
         );
-    }
-    v += "            #5 clock = 1;\n            #1;\n";
-    for (g, (when, fields)) in plan.groups.iter().enumerate() {
-        let cond = when.map_or("1'b1".to_string(), |w| format!("o{w} === 1'b1"));
-        let fmt = vec!["%h"; fields.len()].join(" ");
-        let list: Vec<String> = fields.iter().map(|f| format!(", o{f}")).collect();
-        v += &format!(
-            "            if ({cond}) $fwrite(fout, \"%h {g} {fmt}\\n\", t{});\n",
-            list.join("")
-        );
-    }
-    if let Some((s, count)) = plan.stop {
-        v += &format!(
-            "            if (o{s} === 1'b1) begin\n                seen = seen + 1;\n                if (seen == {count}) stopped = 1;\n            end\n"
-        );
-    }
-    v += "            #4 clock = 0;\n        end\n";
-    if plan.stop.is_some() {
-        v += "        if (!stopped) $fwrite(fout, \"timeout\\n\");\n        else $fwrite(fout, \"clocks %0d\\n\", t);\n";
-    } else {
-        v += "        $fwrite(fout, \"clocks %0d\\n\", t);\n";
+        if !plan.inputs.is_empty() {
+            let fmt = vec!["%h"; plan.inputs.len()].join(" ");
+            let list: Vec<String> = (0..plan.inputs.len()).map(|i| format!("i{i}")).collect();
+            v += &format!(
+                "                if (t < {}) r = $fscanf(fin, \"{fmt}\\n\", {});\n",
+                run.vectors,
+                list.join(", ")
+            );
+        }
+        v += "                #5 clock = 1;\n                #1;\n";
+        for (k, (when, fields)) in plan.groups.iter().enumerate() {
+            let cond = when.map_or("1'b1".to_string(), |w| format!("o{w} === 1'b1"));
+            let fmt = vec!["%h"; fields.len()].join(" ");
+            let list: Vec<String> = fields.iter().map(|f| format!(", o{f}")).collect();
+            v += &format!(
+                "                if ({cond}) $fwrite(fout, \"%h {k} {fmt}\\n\", g{});\n",
+                list.join("")
+            );
+        }
+        match run.stop {
+            Some((s, count)) => {
+                v += &format!(
+                    "                if (o{s} === 1'b1) begin\n                    seen = seen + 1;\n                    if (seen == {count}) stopped = 1;\n                end\n"
+                );
+            }
+            None => v += &format!("                if (t + 1 == {}) stopped = 1;\n", run.limit),
+        }
+        v += "                g = g + 1;\n                #4 clock = 0;\n            end\n";
+        v += "            if (!stopped) $fwrite(fout, \"timeout\\n\");\n            else $fwrite(fout, \"clocks %0d\\n\", t);\n        end\n";
     }
     v += "        $fclose(fout);\n        $finish;\n    end\nendmodule\n";
     v

@@ -1,15 +1,23 @@
-//! A whole scene through an architecture's RTL in simulation, its base
-//! planes compared with the golden model's pixel by pixel. Three engines:
+//! Scenes through an architecture's RTL in simulation, their base planes
+//! compared with the golden model's pixel by pixel. Three engines:
 //! rust-hdl's own simulator, and Icarus Verilog and Verilator running the
 //! Verilog that rust-hdl emits ([`crate::harness`]), so that the emitted
-//! Verilog itself is checked against the golden model. Every engine can
-//! write a VCD, with a GTKWave save file beside it grouping the signals by
-//! stage ([`crate::gtkw`]).
+//! Verilog itself is checked against the golden model.
+//!
+//! One build renders every frame: the frames' parts (sweeps or base
+//! planes) run one after another on one simulation of one design, and
+//! before each part the testbench writes, through the host port, the
+//! registers and table words that differ from what the hardware holds (a
+//! frame's first part writes its view, transfer function and light). Every
+//! engine can write a VCD of the whole run, with a GTKWave save file beside
+//! it grouping the signals by stage ([`crate::gtkw`]).
 
 use crate::arch::{Arch, BasePixels, ClockTerm};
-use crate::harness::{Engine, Spec};
+use crate::harness::{Engine, Run, Spec};
+use golden_model::host::Write;
 use scene::volume::Volume;
 use scene::{Camera, Scene};
+use std::collections::HashMap;
 use std::path::Path;
 use std::time::Instant;
 
@@ -18,28 +26,43 @@ use std::time::Instant;
 pub struct Outcome<A: Arch> {
     /// The RTL's base planes, one per part.
     pub bases: Vec<A::Base>,
-    /// Clocks the RTL took, summed over the parts.
+    /// Clocks the RTL took from each part's `start`, summed over the parts.
     pub clocks: u64,
     /// One sample per unit per clock, summed over the parts.
     pub ideal_clocks: u64,
     /// Where the clocks go as the RTL's schedule predicts them (summed over
     /// the parts; empty where the architecture predicts none).
     pub clock_terms: Vec<ClockTerm>,
+    /// Clocks of host writes before the parts (one word a clock): the
+    /// registers and table words that changed.
+    pub reload_clocks: u64,
     pub mismatches: usize,
     /// The first few mismatching pixels, described.
     pub first: Vec<String>,
     /// Wall time, the simulator alone, and compiling the Verilog
-    /// (Icarus; Verilator when its build was not cached).
+    /// (Icarus; Verilator when its build was not cached). For a run of
+    /// several frames these are the whole run's.
     pub seconds: f64,
     pub sim_seconds: f64,
     pub build_seconds: f64,
-    /// The units the scene's hardware leaves out.
+    /// The units the build leaves out.
     pub left_out: Vec<&'static str>,
 }
 
-/// Simulate `scene` on `vol` with `engine`; `trace` names a VCD of the
-/// first part's run to write, with a `.gtkw` beside it. Errors name what
-/// the RTL cannot do or why a scene is too large for the engine.
+/// Several frames on one build.
+#[derive(Clone)]
+pub struct Frames<A: Arch> {
+    /// The build's configuration.
+    pub config: A::Config,
+    /// Distinct designs simulated: 1 when every part's view is registers.
+    pub designs: usize,
+    pub frames: Vec<Outcome<A>>,
+}
+
+/// Simulate `scene` on `vol` with `engine` on the build the scene needs;
+/// `trace` names a VCD of the run to write, with a `.gtkw` beside it.
+/// Errors name what the RTL cannot do or why a scene is too large for the
+/// engine.
 pub fn simulate<A: Arch>(
     scene: &Scene,
     camera: &Camera,
@@ -60,9 +83,43 @@ pub fn simulate_altered<A: Arch>(
     trace: Option<&Path>,
     alter: &dyn Fn(&str) -> String,
 ) -> Result<Outcome<A>, String> {
-    let parts = A::parts(scene, camera, vol.dims)?;
-    let ideal: u64 = parts.iter().map(A::ideal_clocks).sum();
-    let expected: u64 = parts.iter().map(A::expected_clocks).sum();
+    let frames = [(scene.clone(), camera.clone())];
+    let mut r = simulate_frames::<A>(&frames, None, vol, engine, trace, alter)?;
+    Ok(r.frames.remove(0))
+}
+
+/// Simulate `frames` (scene and camera each) on `vol`, one after another on
+/// one build: `build`, or the configuration the first frame needs. Every
+/// frame must be one the build renders (the error names why not).
+pub fn simulate_frames<A: Arch>(
+    frames: &[(Scene, Camera)],
+    build: Option<&A::Config>,
+    vol: &Volume,
+    engine: Engine,
+    trace: Option<&Path>,
+    alter: &dyn Fn(&str) -> String,
+) -> Result<Frames<A>, String> {
+    let (first, _) = frames.first().ok_or("no frame to simulate")?;
+    let config = match build {
+        Some(c) => c.clone(),
+        None => A::needs(first, &frames[0].1, vol.dims)?,
+    };
+    let mut parts = Vec::new();
+    for (i, (scene, camera)) in frames.iter().enumerate() {
+        let needed = A::needs(scene, camera, vol.dims)?;
+        if let Some(why) = A::refuses(&config, &needed) {
+            return Err(format!(
+                "frame {} needs configuration {}, not {}: {why}",
+                i + 1,
+                A::config_name(&needed),
+                A::config_name(&config)
+            ));
+        }
+        for part in A::parts(scene, camera, vol.dims, &config)? {
+            parts.push((i, part));
+        }
+    }
+    let expected: u64 = parts.iter().map(|(_, p)| A::expected_clocks(p)).sum();
     let limit = A::clock_limit(engine);
     if expected > limit {
         return Err(format!(
@@ -75,112 +132,222 @@ pub fn simulate_altered<A: Arch>(
             }
         ));
     }
-    if engine != Engine::Verilator {
-        if let Some(part) = parts.iter().find(|p| A::external(p)) {
-            let words = A::modules(part, vol).first().map_or(0, |m| m.len());
-            return Err(format!(
-                "{words} voxels per memory module exceed on-chip memory (2^{}); such volumes need the external memory model of --engine verilator",
-                crate::verilog::ON_CHIP_BITS
-            ));
-        }
+    let external = A::external(&config);
+    if engine != Engine::Verilator && external {
+        let words = A::modules(&parts[0].1, vol).first().map_or(0, |m| m.len());
+        return Err(format!(
+            "{words} voxels per memory module exceed on-chip memory (2^{}); such volumes need the external memory model of --engine verilator",
+            crate::verilog::ON_CHIP_BITS
+        ));
     }
     let t = Instant::now();
-    let mut out = Outcome {
-        bases: vec![],
-        clocks: 0,
-        ideal_clocks: ideal,
-        clock_terms: vec![],
-        mismatches: 0,
-        first: vec![],
-        seconds: 0.0,
-        sim_seconds: 0.0,
-        build_seconds: 0.0,
-        left_out: crate::verilog::names(&A::left_out(&parts[0])),
-    };
-    for (i, part) in parts.iter().enumerate() {
-        let trace = if i == 0 { trace } else { None };
-        let modules = A::modules(part, vol);
+    // Consecutive parts on one build run in one simulation; before each
+    // part the host writes what differs from the build's registers and
+    // tables (all of it on a fresh build).
+    let mut groups: Vec<std::ops::Range<usize>> = Vec::new();
+    for i in 0..parts.len() {
+        match groups.last_mut() {
+            Some(g) if A::same_build(&parts[g.start].1, &parts[i].1) => g.end = i + 1,
+            _ => groups.push(i..i + 1),
+        }
+    }
+    let loads: Vec<Vec<Write>> = groups
+        .iter()
+        .flat_map(|g| incremental_loads(parts[g.clone()].iter().map(|(_, p)| A::loads(p))))
+        .collect();
+    let mut results = Vec::new();
+    let (mut sim_seconds, mut build_seconds) = (0.0, 0.0);
+    for (n, g) in groups.iter().enumerate() {
+        let trace = if n == 0 { trace } else { None };
+        let modules = A::modules(&parts[g.start].1, vol);
         let started = Instant::now();
-        let (records, clocks, built) = match engine {
+        match engine {
             Engine::RustHdl => {
-                let (r, c) = A::rust_hdl(part, &modules, &A::loads(part), trace)?;
-                (r, c, 0.0)
+                let runs: Vec<(&A::Part, Vec<Write>)> = parts[g.clone()]
+                    .iter()
+                    .zip(&loads[g.clone()])
+                    .map(|((_, p), w)| (p, w.clone()))
+                    .collect();
+                results.extend(A::rust_hdl(&runs, &modules, trace)?);
+                sim_seconds += started.elapsed().as_secs_f64();
             }
             _ => {
-                let external = A::external(part);
-                let verilog = alter(&A::verilog(part, (!external).then_some(&modules[..]))?);
-                let ports = crate::harness::ports(&verilog)?;
-                let loads = A::loads(part);
-                let vectors = crate::harness::load_then_start(&ports, &loads);
-                let (stop, groups) = A::bus(part);
-                let logged = crate::harness::run(
+                let (r, sim, build) = run_verilog::<A>(
+                    &parts[g.clone()],
+                    &loads[g.clone()],
+                    &modules,
                     engine,
-                    &Spec {
-                        verilog: &verilog,
-                        vectors: &vectors,
-                        stop: stop.after(loads.len() as u64),
-                        groups: &groups,
-                        memory: external.then_some(&modules[..]),
-                        trace,
-                    },
+                    trace,
+                    alter,
+                    external,
                 )?;
-                // Clocks from `start`, as rust-hdl's testbench counts them.
-                let n = loads.len() as u64;
-                let records = logged
-                    .records
-                    .into_iter()
-                    .map(|mut r| {
-                        r.clock -= n;
-                        r
-                    })
-                    .collect();
-                (records, logged.clocks - n, logged.build_seconds)
+                results.extend(r);
+                sim_seconds += sim;
+                build_seconds += build;
             }
-        };
-        out.sim_seconds += started.elapsed().as_secs_f64() - built;
-        out.build_seconds += built;
-        if let Some(path) = trace {
-            let top = match engine {
-                Engine::RustHdl => "uut",
-                Engine::Iverilog => "tb.uut",
-                Engine::Verilator => "TOP.top",
-            };
-            crate::gtkw::write_gtkw(path, top, &A::waves(part, top))
-                .map_err(|e| format!("{}: {e}", path.display()))?;
         }
+    }
+    let designs = groups.len();
+    if let Some(path) = trace {
+        let top = match engine {
+            Engine::RustHdl => "uut",
+            Engine::Iverilog => "tb.uut",
+            Engine::Verilator => "TOP.top",
+        };
+        crate::gtkw::write_gtkw(path, top, &A::waves(&parts[0].1, top))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    let left_out = crate::verilog::names(&A::left_out(&config));
+    let mut out: Vec<Outcome<A>> = frames
+        .iter()
+        .map(|_| Outcome {
+            bases: vec![],
+            clocks: 0,
+            ideal_clocks: 0,
+            clock_terms: vec![],
+            reload_clocks: 0,
+            mismatches: 0,
+            first: vec![],
+            seconds: 0.0,
+            sim_seconds,
+            build_seconds,
+            left_out: left_out.clone(),
+        })
+        .collect();
+    for (((frame, part), (records, clocks)), writes) in parts.iter().zip(results).zip(&loads) {
+        let o = &mut out[*frame];
+        let i = o.bases.len();
         let terms = A::clock_terms(part);
         let predicted: i64 = terms.iter().map(|t| t.clocks).sum();
         if !terms.is_empty() && predicted != clocks as i64 {
             return Err(format!(
-                "{} {i} took {clocks} clocks; its schedule predicts {predicted}",
-                A::PART
+                "{} {i}{} took {clocks} clocks; its schedule predicts {predicted}",
+                A::PART,
+                frame_label(frames.len(), *frame)
             ));
         }
         for term in terms {
-            match out.clock_terms.iter_mut().find(|t| t.key == term.key) {
+            match o.clock_terms.iter_mut().find(|t| t.key == term.key) {
                 Some(t) => t.clocks += term.clocks,
-                None => out.clock_terms.push(term),
+                None => o.clock_terms.push(term),
             }
         }
-        out.clocks += clocks;
-        let got = A::decode(part, &records)?;
+        o.clocks += clocks;
+        o.ideal_clocks += A::ideal_clocks(part);
+        o.reload_clocks += writes.len() as u64;
+        let got = A::decode(part, &records)
+            .map_err(|e| format!("{} {i}{}: {e}", A::PART, frame_label(frames.len(), *frame)))?;
         let want = A::golden(part, vol);
-        for j in 0..want.count() {
-            let ((at, g), (_, r)) = (want.at(j), got.at(j));
+        for k in 0..want.count() {
+            let ((at, g), (_, r)) = (want.at(k), got.at(k));
             if r != g {
-                out.mismatches += 1;
-                if out.first.len() < 8 {
-                    out.first.push(format!(
-                        "{} {i} pixel ({}, {}): rtl {r:?}, golden {g:?}",
+                o.mismatches += 1;
+                if o.first.len() < 8 {
+                    o.first.push(format!(
+                        "{} {i}{} pixel ({}, {}): rtl {r:?}, golden {g:?}",
                         A::PART.replace('_', " "),
+                        frame_label(frames.len(), *frame),
                         at[0],
                         at[1]
                     ));
                 }
             }
         }
-        out.bases.push(got);
+        o.bases.push(got);
     }
-    out.seconds = t.elapsed().as_secs_f64();
-    Ok(out)
+    let seconds = t.elapsed().as_secs_f64();
+    for o in &mut out {
+        o.seconds = seconds;
+    }
+    Ok(Frames {
+        config,
+        designs,
+        frames: out,
+    })
+}
+
+/// ` of frame N` when a run has several frames.
+fn frame_label(frames: usize, frame: usize) -> String {
+    if frames > 1 {
+        format!(" of frame {}", frame + 1)
+    } else {
+        String::new()
+    }
+}
+
+/// Per part, the writes that change what the hardware holds: the host
+/// skips a register or table word that already has its value.
+pub fn incremental_loads(parts: impl IntoIterator<Item = Vec<Write>>) -> Vec<Vec<Write>> {
+    let mut held: HashMap<u32, u64> = HashMap::new();
+    parts
+        .into_iter()
+        .map(|writes| {
+            writes
+                .into_iter()
+                .filter(|w| held.insert(w.address, w.data) != Some(w.data))
+                .collect()
+        })
+        .collect()
+}
+
+/// Run the parts of one build on its Verilog: one harness invocation,
+/// each part a run of its own; per part the records and the clocks, both
+/// from its `start`, then the simulator's and the build's seconds.
+#[allow(clippy::type_complexity)]
+fn run_verilog<A: Arch>(
+    parts: &[(usize, A::Part)],
+    loads: &[Vec<Write>],
+    modules: &[Vec<u16>],
+    engine: Engine,
+    trace: Option<&Path>,
+    alter: &dyn Fn(&str) -> String,
+    external: bool,
+) -> Result<(Vec<(Vec<crate::harness::Record>, u64)>, f64, f64), String> {
+    let verilog = alter(&A::verilog(&parts[0].1, (!external).then_some(modules))?);
+    let ports = crate::harness::ports(&verilog)?;
+    let mut groups = None;
+    let runs: Vec<Run> = parts
+        .iter()
+        .zip(loads)
+        .map(|((_, part), w)| {
+            let (stop, g) = A::bus(part);
+            groups.get_or_insert(g);
+            Run {
+                vectors: crate::harness::load_then_start(&ports, w),
+                stop: stop.after(w.len() as u64),
+            }
+        })
+        .collect();
+    let logged = crate::harness::run(
+        engine,
+        &Spec {
+            verilog: &verilog,
+            runs: &runs,
+            groups: &groups.unwrap_or_default(),
+            memory: external.then_some(modules),
+            trace,
+        },
+    )?;
+    // Split the records by run, with clocks from each run's `start`.
+    let mut by_run: Vec<(Vec<crate::harness::Record>, u64)> = logged
+        .clocks
+        .iter()
+        .zip(loads)
+        .map(|(&clocks, w)| (vec![], clocks - w.len() as u64))
+        .collect();
+    let starts: Vec<u64> = logged
+        .clocks
+        .iter()
+        .scan(0u64, |s, &c| {
+            let b = *s;
+            *s += c;
+            Some(b)
+        })
+        .collect();
+    for mut r in logged.records {
+        let k = starts.partition_point(|&s| s <= r.clock) - 1;
+        r.clock -= starts[k] + loads[k].len() as u64;
+        by_run[k].0.push(r);
+    }
+    Ok((by_run, logged.run_seconds, logged.build_seconds))
 }

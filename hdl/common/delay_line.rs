@@ -1,14 +1,18 @@
 //! A delay line of block RAM (the beam- and slice-length delays of §3.5-3.7
 //! and Fig. 21's SFG): `data_out` at clock t is `data_in` of clock t - L,
-//! for any length L >= 1, so each buffer holds exactly the words its delay
-//! needs, not the next power of two.
+//! for a length L from 1 to the longest the line is built for, set at run
+//! time through `last` (L - 1: the view's slice and beam lengths are
+//! registers the host writes). The line holds the words of its longest
+//! delay, not the next power of two.
 //!
-//! A pointer counts 0..L-1 and wraps; each clock the word at the pointer is
-//! written and the word after it, the oldest, is read (a registered read, so
-//! the two addresses never collide). A length of 1 is a register. Without
-//! `write_enable` the slot keeps its older word, as a ring buffer addressed
-//! by time does. Words can store only some bit fields, as
-//! [`DepthRam::fields`].
+//! A pointer counts 0..L-1 and wraps (and never passes the built length,
+//! whatever `last` says); each clock the word at the pointer is
+//! written and the word after it, the oldest, is read (a registered read).
+//! A length of 1 is the register `one` beside the RAM (where the two
+//! addresses would meet and the read would take the old word); a line
+//! built for a length of 1 is that register alone. Without `write_enable` the slot
+//! keeps its older word, as a ring buffer addressed by time does. Words can
+//! store only some bit fields, as [`DepthRam::fields`].
 
 use super::ram::DepthRam;
 use rust_hdl::prelude::*;
@@ -20,36 +24,41 @@ pub struct DelayLine<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
     pub data_in: Signal<In, D>,
     pub write_enable: Signal<In, Bit>,
     pub data_out: Signal<Out, D>,
+    /// The delay less one, at most the longest less one.
+    pub last: Signal<In, Bits<N>>,
     ram: DepthRam<D, N>,
     ptr: DFF<Bits<N>>,
     next: Signal<Local, Bits<N>>,
-    last: Constant<Bits<N>>,
-    /// Length 1: the register `one` instead of the RAM (a 2-word stub).
+    /// The built length less one: the pointer's bound.
+    longest_last: Constant<Bits<N>>,
+    /// Built for a length of 1: the register `one` instead of the RAM (a
+    /// 2-word stub). `one` also serves a longer line set to a length of 1.
     single: Constant<Bit>,
     one: DFF<D>,
     mask: Constant<D>,
 }
 
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DelayLine<D, N> {
-    /// A delay of `length` clocks (1 <= length < 2^N) storing `fields` of
-    /// each word; `mask` has exactly their bits (every bit when `fields` is
-    /// empty).
-    pub fn new(length: usize, fields: &[(usize, usize)], mask: D) -> Self {
+    /// A delay of up to `longest` clocks (1 <= longest < 2^N) storing
+    /// `fields` of each word; `mask` has exactly their bits (every bit when
+    /// `fields` is empty).
+    pub fn new(longest: usize, fields: &[(usize, usize)], mask: D) -> Self {
         assert!(
-            length >= 1 && length < 1 << N,
-            "a delay line with an {N}-bit pointer is 1 to 2^{N} - 1 clocks long, not {length}"
+            longest >= 1 && longest < 1 << N,
+            "a delay line with an {N}-bit pointer is 1 to 2^{N} - 1 clocks long, not {longest}"
         );
-        let words = length.max(2);
+        let words = longest.max(2);
         DelayLine {
             clock: Default::default(),
             data_in: Default::default(),
             write_enable: Default::default(),
             data_out: Default::default(),
+            last: Default::default(),
             ram: DepthRam::with_words(words).fields(fields, mask),
             ptr: Default::default(),
             next: Default::default(),
-            last: Constant::new(((words - 1) as u64).to_bits()),
-            single: Constant::new(length == 1),
+            longest_last: Constant::new(((words - 1) as u64).to_bits()),
+            single: Constant::new(longest == 1),
             one: Default::default(),
             mask: Constant::new(mask),
         }
@@ -72,7 +81,7 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DelayLin
         self.ram.read_clock.next = self.clock.val();
         self.ram.write_clock.next = self.clock.val();
         self.next.next = self.ptr.q.val() + 1;
-        if self.ptr.q.val() == self.last.val() {
+        if (self.ptr.q.val() >= self.last.val()) | (self.ptr.q.val() >= self.longest_last.val()) {
             self.next.next = 0.into();
         }
         self.ptr.d.next = self.next.val();
@@ -84,7 +93,7 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DelayLin
         if self.write_enable.val() {
             self.one.d.next = self.data_in.val() & self.mask.val();
         }
-        if self.single.val() {
+        if self.single.val() | (self.last.val() == 0) {
             self.data_out.next = self.one.q.val();
         } else {
             self.data_out.next = self.ram.read_data.val();
@@ -101,6 +110,7 @@ mod tests {
         clock: Signal<In, Clock>,
         data_in: Signal<In, Bits<16>>,
         write_enable: Signal<In, Bit>,
+        last: Signal<In, Bits<8>>,
         data_out: Signal<Out, Bits<16>>,
         line: DelayLine<Bits<16>, 8>,
     }
@@ -109,21 +119,24 @@ mod tests {
         #[hdl_gen]
         fn update(&mut self) {
             self.line.clock.next = self.clock.val();
+            self.line.last.next = self.last.val();
             self.line.data_in.next = self.data_in.val();
             self.line.write_enable.next = self.write_enable.val();
             self.data_out.next = self.line.data_out.val();
         }
     }
 
-    /// Drive a pseudo-random stream with gaps in `write_enable`; the output
-    /// must be the input `length` clocks back, or that slot's older word.
-    fn check(length: usize) {
+    /// Drive a pseudo-random stream with gaps in `write_enable` into a line
+    /// built for `longest` and set to `length`; the output must be the
+    /// input `length` clocks back, or that slot's older word.
+    fn check(longest: usize, length: usize) {
         let mut uut = Bench {
             clock: Default::default(),
             data_in: Default::default(),
             write_enable: Default::default(),
+            last: Default::default(),
             data_out: Default::default(),
-            line: DelayLine::new(length, &[(0, 12)], 0x0fffu64.to_bits()),
+            line: DelayLine::new(longest, &[(0, 12)], 0x0fffu64.to_bits()),
         };
         uut.connect_all();
         let mut sim = Simulation::new();
@@ -140,6 +153,7 @@ mod tests {
                 let we = t % 7 != 3;
                 x.data_in.next = word.to_bits();
                 x.write_enable.next = we;
+                x.last.next = ((length - 1) as u64).to_bits();
                 x = sim.wait(10, x)?;
                 if we {
                     slots[t % length] = word & 0x0fff;
@@ -156,7 +170,11 @@ mod tests {
     #[test]
     fn output_is_the_input_length_clocks_back() {
         for length in [1, 2, 3, 7, 33] {
-            check(length);
+            check(length, length);
+        }
+        // Lines built longer, set shorter at run time.
+        for (longest, length) in [(2, 1), (7, 1), (7, 3), (33, 2), (33, 20)] {
+            check(longest, length);
         }
     }
 }

@@ -110,7 +110,7 @@ impl Lighting {
             lit_3: Default::default(),
             half_ulp: Constant::new((1u64 << (DIR_FRAC + RNORM_FRAC - 1)).to_bits()),
             shift: Constant::new(((DIR_FRAC + RNORM_FRAC) as u64).to_bits()),
-            last: Constant::new((((1u64 << COS_BITS) - 1) as u64).to_bits()),
+            last: Constant::new(((1u64 << COS_BITS) - 1).to_bits()),
         }
     }
 

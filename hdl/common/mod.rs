@@ -11,6 +11,7 @@ pub mod gradient_bin;
 pub mod lanes;
 pub mod lerp;
 pub mod lighting;
+pub mod mode_class;
 pub mod normal_quantizer;
 pub mod over;
 pub mod ram;

@@ -239,7 +239,11 @@ end
     }
 }
 
-/// Address bits that count `n` words (at least 1).
+/// Address bits of an on-chip memory module: 2^16 words. Larger voxel
+/// memories are external RAM.
+pub const ON_CHIP_BITS: usize = 16;
+
+/// Address bits for `n` words (at least 1).
 pub fn bits_for(n: u64) -> u32 {
     (64 - n.saturating_sub(1).leading_zeros()).max(1)
 }

@@ -96,7 +96,7 @@ pub struct Shader {
     alpha: Signal<Local, Bits<16>>,
     alpha_q: [DFF<Bits<16>>; 2],
     /// The intensity and the validity, on to the output.
-    value_q: [DFF<Bits<16>>; 7],
+    value_q: [DFF<Bits<16>>; 6],
     valid_q: [DFF<Bit>; 7],
     diffuse: Signal<Local, Bits<16>>,
     specular: Signal<Local, Bits<16>>,
@@ -336,14 +336,18 @@ impl Logic for Shader {
             self.lut_q[i].d.next = self.lut_q[i - 1].q.val();
             self.gate_q[i].d.next = self.gate_q[i - 1].q.val();
         }
-        for i in 0..7 {
+        for i in 0..6 {
             self.value_q[i].clock.next = self.clock.val();
+        }
+        for i in 0..7 {
             self.valid_q[i].clock.next = self.clock.val();
         }
         self.value_q[0].d.next = self.value.val();
         self.valid_q[0].d.next = !self.invalid.val() | self.xray.val();
-        for i in 1..7 {
+        for i in 1..6 {
             self.value_q[i].d.next = self.value_q[i - 1].q.val();
+        }
+        for i in 1..7 {
             self.valid_q[i].d.next = self.valid_q[i - 1].q.val();
         }
         // Stage 4: the gradient-opacity read.

@@ -20,6 +20,7 @@ pub struct Increments<const H: usize> {
     pub dy_neg: Signal<Out, Bit>,
     pub dy_mag: Signal<Out, Bits<16>>,
     centre_line: DelayLine<Bits<32>, H>,
+    centre_last: Constant<Bits<H>>,
     mask: Constant<Bits<16>>,
     dx_address: Signal<Local, Bits<16>>,
     dy_address: Signal<Local, Bits<16>>,
@@ -51,6 +52,9 @@ impl<const H: usize> Increments<H> {
                 &[],
                 u32::MAX.to_bits(),
             ),
+            centre_last: Constant::new(
+                ((if t.perspective { centre_delay } else { 1 } - 1) as u64).to_bits(),
+            ),
             mask: Constant::new((if t.perspective { 0xffffu64 } else { 0 }).to_bits()),
             dx_address: Default::default(),
             dy_address: Default::default(),
@@ -64,6 +68,7 @@ impl<const H: usize> Logic for Increments<H> {
     #[hdl_gen]
     fn update(&mut self) {
         self.centre_line.clock.next = self.clock.val();
+        self.centre_line.last.next = self.centre_last.val();
         self.centre_line.write_enable.next = true;
         self.centre_line.data_in.next =
             bit_cast::<32, 16>(self.ray.val()) | (bit_cast::<32, 16>(self.scanline.val()) << 16);

@@ -78,6 +78,7 @@ pub struct Cube3<const P: usize, const H: usize> {
     /// through the ABC delay (`flags_line`), and to the RPC (one more).
     flags_q: [DFF<Bits<32>>; 7],
     flags_line: DelayLine<Bits<32>, H>,
+    flags_last: Constant<Bits<H>>,
     leaf_flags: Signal<Local, Bits<32>>,
     /// The flags, on beside the shaders (`shader::LATENCY - 1` more clocks
     /// than the leaf stage's one).
@@ -198,6 +199,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
                 &[(0, 12), (16, 8)],
                 0x00ff_0fffu64.to_bits(),
             ),
+            flags_last: Constant::new(((abc_delay.max(1) - 1) as u64).to_bits()),
             leaf_flags: Default::default(),
             shade_flags_q: Default::default(),
             rpc_flags_q: Default::default(),
@@ -249,6 +251,7 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         self.abc.clock.next = self.clock.val();
         self.rpc.clock.next = self.clock.val();
         self.flags_line.clock.next = self.clock.val();
+        self.flags_line.last.next = self.flags_last.val();
         self.rpc_flags_q.clock.next = self.clock.val();
         self.cast_q.clock.next = self.clock.val();
         self.control.start.next = self.start.val();

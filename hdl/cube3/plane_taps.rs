@@ -69,6 +69,8 @@ pub struct PlaneTaps<const H: usize> {
     one: [DFF<Bits<32>>; 9],
     two: [DFF<Bits<32>>; 9],
     lines: [DelayLine<Bits<32>, H>; 8],
+    /// The lines' lengths less one.
+    line_last: [Constant<Bits<H>>; 8],
 }
 
 impl<const H: usize> PlaneTaps<H> {
@@ -113,6 +115,7 @@ impl<const H: usize> PlaneTaps<H> {
             one: Default::default(),
             two: Default::default(),
             lines: lengths.map(|l| DelayLine::new(l, &[], (u32::MAX as u64).to_bits())),
+            line_last: lengths.map(|l| Constant::new(((l - 1) as u64).to_bits())),
         })
     }
 
@@ -131,6 +134,7 @@ impl<const H: usize> Logic for PlaneTaps<H> {
         // Verilator).
         for t in 0..8 {
             self.lines[t].clock.next = self.clock.val();
+            self.lines[t].last.next = self.line_last[t].val();
             self.lines[t].write_enable.next = true;
             self.lines[t].data_in.next = self.two[t].q.val();
             self.head[t + 1].next = self.lines[t].data_out.val();

@@ -81,6 +81,8 @@ pub struct RayControl<const P: usize, const H: usize> {
     scanline: DFF<Bits<16>>,
     /// `[valid, segment, ray, scanline]` delayed to the units.
     late: DelayLine<Bits<64>, H>,
+    /// The late line's length less one.
+    late_last: Constant<Bits<H>>,
     unit_segment: Signal<Local, Bits<16>>,
     unit_ray: Signal<Local, Bits<16>>,
     unit_scanline: Signal<Local, Bits<16>>,
@@ -156,6 +158,9 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
                 &[],
                 u64::MAX.to_bits(),
             ),
+            late_last: Constant::new(
+                ((super::trilin_lanes::cell_delay(t.segments) - 1) as u64).to_bits(),
+            ),
             unit_segment: Default::default(),
             unit_ray: Default::default(),
             unit_scanline: Default::default(),
@@ -181,6 +186,7 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
     fn update(&mut self) {
         dff_setup!(self, clock, segment, ray, scanline);
         self.late.clock.next = self.clock.val();
+        self.late.last.next = self.late_last.val();
         self.late.write_enable.next = true;
         self.increments.clock.next = self.clock.val();
         // The stream counters: segment, ray, scanline of the entering

@@ -51,6 +51,8 @@ pub struct TrilinLanes<const P: usize, const H: usize> {
     next_b: [DFF<Bits<16>>; P],
     next_line: [DelayLine<Bits<16>, H>; P],
     next_a: [DFF<Bits<16>>; P],
+    /// The lines' length less one.
+    line_last: Constant<Bits<H>>,
     /// Plane k + 1 of lane P - 1: lane 0 one clock later, 0 across rays.
     wrap_cur_b: Signal<Local, Bits<16>>,
     wrap_cur_a: Signal<Local, Bits<16>>,
@@ -96,6 +98,7 @@ impl<const P: usize, const H: usize> TrilinLanes<P, H> {
             next_b: std::array::from_fn(|_| Default::default()),
             next_line: std::array::from_fn(|_| line()),
             next_a: std::array::from_fn(|_| Default::default()),
+            line_last: Constant::new(((segments - 2) as u64).to_bits()),
             wrap_cur_b: Default::default(),
             wrap_cur_a: Default::default(),
             wrap_next_b: Default::default(),
@@ -117,6 +120,8 @@ impl<const P: usize, const H: usize> Logic for TrilinLanes<P, H> {
             self.cur_line[i].clock.next = self.clock.val();
             self.next_line[i].clock.next = self.clock.val();
             self.units[i].clock.next = self.clock.val();
+            self.cur_line[i].last.next = self.line_last.val();
+            self.next_line[i].last.next = self.line_last.val();
             self.cur_line[i].write_enable.next = true;
             self.next_line[i].write_enable.next = true;
             self.cur_b[i].d.next = self.cur[i].val();

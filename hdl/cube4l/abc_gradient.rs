@@ -28,7 +28,11 @@
 //! instead of Fig. 16's four slices and two links. Voxels with a neighbour
 //! outside the dataset (`at_edge`) get garbage gradients and are made
 //! transparent by the shader, as in the golden model.
+//!
+//! The lines are built for the configuration's largest slice; their
+//! lengths for a view come from the `Beats` register (S and B).
 
+use super::config::PipelineConfig;
 use crate::common::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
@@ -42,6 +46,8 @@ pub fn line_lengths(s: u32, b: u32) -> [u32; 4] {
 #[derive(LogicBlock)]
 pub struct AbcGradient<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The `Beats` register: S in the low word, B in the high.
+    pub beats: Signal<In, Bits<64>>,
     /// The CFB lane's live voxel.
     pub value: Signal<In, Bits<16>>,
     /// The x of the voxel leaving the unit (the late control), for the
@@ -92,14 +98,19 @@ pub struct AbcGradient<const H: usize> {
     xp: Signal<Local, Bits<16>>,
     p_mask: Constant<Bits<16>>,
     enabled: Constant<Bit>,
+    /// The lines' lengths less one: S - B - 2, B - 1 (twice), S - B - 1.
+    last_a: DFF<Bits<H>>,
+    last_b: DFF<Bits<H>>,
+    last_d: DFF<Bits<H>>,
 }
 
 impl<const H: usize> AbcGradient<H> {
-    /// `s` beats per slice, `b` per beam, `p` pipelines, voxels of
-    /// `voxel_bits`. Without `enabled` (a scene without gradients) the lines
-    /// are registers.
-    pub fn new(s: u32, b: u32, p: u32, voxel_bits: u32, enabled: bool) -> AbcGradient<H> {
-        let [a_len, b_len, c_len, d_len] = line_lengths(s, b);
+    /// The unit of `c`'s lanes. Without a gradient (a configuration that
+    /// neither shades nor has gradient opacity) the lines are registers.
+    pub fn new(c: &PipelineConfig) -> AbcGradient<H> {
+        let enabled = c.gradient();
+        let voxel_bits = c.voxel_bits;
+        let [a_len, b_len, c_len, d_len] = line_lengths(c.slice_beats(), c.beam_beats());
         let line = |length: u32| {
             DelayLine::new(
                 if enabled { length as usize } else { 1 },
@@ -109,6 +120,7 @@ impl<const H: usize> AbcGradient<H> {
         };
         AbcGradient {
             clock: Default::default(),
+            beats: Default::default(),
             value: Default::default(),
             x: Default::default(),
             from_left_xm: Default::default(),
@@ -147,8 +159,11 @@ impl<const H: usize> AbcGradient<H> {
             prev_xp: Default::default(),
             xm: Default::default(),
             xp: Default::default(),
-            p_mask: Constant::new(((p - 1) as u64).to_bits()),
+            p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
             enabled: Constant::new(enabled),
+            last_a: Default::default(),
+            last_b: Default::default(),
+            last_d: Default::default(),
         }
     }
 
@@ -166,8 +181,19 @@ impl<const H: usize> Logic for AbcGradient<H> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, reg_yp, reg_xm, reg_c, hop_xm, hop_ym, hop_zm, hop_xp, hop_yp, hop_zp,
-            prev_xm, prev_xp
+            prev_xm, prev_xp, last_a, last_b, last_d
         );
+        // The lines' lengths for the view (registered: `Beats` holds still
+        // through a sweep).
+        self.last_d.d.next = bit_cast::<H, 32>(
+            self.beats.val().get_bits::<32>(0) - self.beats.val().get_bits::<32>(32),
+        ) - 1;
+        self.last_a.d.next = self.last_d.d.val() - 1;
+        self.last_b.d.next = bit_cast::<H, 32>(self.beats.val().get_bits::<32>(32)) - 1;
+        self.line_a.last.next = self.last_a.q.val();
+        self.line_b.last.next = self.last_b.q.val();
+        self.line_c.last.next = self.last_b.q.val();
+        self.line_d.last.next = self.last_d.q.val();
         self.line_a.clock.next = self.clock.val();
         self.line_b.clock.next = self.clock.val();
         self.line_c.clock.next = self.clock.val();
@@ -227,7 +253,7 @@ impl<const H: usize> Logic for AbcGradient<H> {
             self.gz_mag.next = self.hop_zm.q.val() - self.hop_zp.q.val();
         }
         self.o_value.next = self.reg_c.q.val();
-        // Left out of the scene's hardware (see `export::prune`): every
+        // Left out of the configuration's hardware (see `export::prune`): every
         // output is zero, as in the emitted Verilog, which has no unit.
         if !self.enabled.val() {
             self.to_right_xm.next = 0.into();

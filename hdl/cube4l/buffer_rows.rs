@@ -9,13 +9,15 @@
 //! register to its result). Row e_y's taps lie within 4 clocks of
 //! R(e_y) = S - e_y*B - r - 4:
 //! the ring delays the result R(+1), one beam-length line more gives R(0),
-//! another R(-1), and four registers per row give the rest. A scene whose
-//! taps never look at row -1 gets a register for that row's line.
+//! another R(-1), and four registers per row give the rest. Which register
+//! a tap takes does not depend on the view; the lines' lengths do, and
+//! come from the `Beats` register (S and B) at run time.
 //!
-//! Memory: S - B - r - 4 words for the ring and 2B for the lines, where each
-//! tap used to keep its own ring of the next power of two above S + B.
+//! Memory: S - B - r - 4 words for the ring and 2B for the lines at the
+//! configuration's largest slice, where each tap used to keep its own ring
+//! of the next power of two above S + B.
 
-use super::config::{PipelineConfig, TAPS};
+use super::config::{tap_offset, PipelineConfig, RESULT_AT, TAPS};
 use crate::common::delay_line::DelayLine;
 use rust_hdl::prelude::*;
 
@@ -23,6 +25,8 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct BufferRows<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The `Beats` register: S in the low word, B in the high.
+    pub beats: Signal<In, Bits<64>>,
     /// The lane's composited value (T + `RESULT_AT`) and its beat flag.
     pub res: Signal<In, Bits<64>>,
     pub res_beat: Signal<In, Bit>,
@@ -38,19 +42,26 @@ pub struct BufferRows<const H: usize> {
     /// One-hot: the candidate each tap takes.
     pick: [Constant<Bits<15>>; 9],
     sel: [Signal<Local, Bits<64>>; 9],
+    /// The lines' lengths less one, from `Beats`: S - B - r - 5 and B - 1.
+    ring_last: DFF<Bits<H>>,
+    beam_last: DFF<Bits<H>>,
+    ring_less: Constant<Bits<H>>,
 }
 
 impl<const H: usize> BufferRows<H> {
     pub fn new(c: &PipelineConfig) -> BufferRows<H> {
         let mask = c
-            .ring_fields
+            .ring_fields()
             .iter()
             .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo)
             .to_bits();
-        let line = |length: u32| DelayLine::new(length as usize, &c.ring_fields, mask);
+        let fields = c.ring_fields();
+        let line = |length: u32| DelayLine::new(length as usize, &fields, mask);
         let [ring, beam0, beam1] = c.history_lines();
+        let taps = c.taps();
         BufferRows {
             clock: Default::default(),
+            beats: Default::default(),
             res: Default::default(),
             res_beat: Default::default(),
             tap: Default::default(),
@@ -60,13 +71,14 @@ impl<const H: usize> BufferRows<H> {
             stage: Default::default(),
             cand: Default::default(),
             pick: std::array::from_fn(|t| {
-                let ey = TAPS[t].1;
-                let row = (1 - ey) as u64;
-                let i = (c.tap_wait(t) - c.row_wait(ey)) as u64;
-                assert!(i <= 4, "tap {t} lies {i} clocks into its row");
+                let row = (1 - TAPS[t].1) as u64;
+                let i = tap_offset(TAPS[t], taps[t].hops) as u64;
                 Constant::new((1u64 << (5 * row + i)).to_bits())
             }),
             sel: Default::default(),
+            ring_last: Default::default(),
+            beam_last: Default::default(),
+            ring_less: Constant::new(((RESULT_AT + 5) as u64).to_bits()),
         }
     }
 
@@ -79,6 +91,16 @@ impl<const H: usize> BufferRows<H> {
 impl<const H: usize> Logic for BufferRows<H> {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(self, clock, ring_last, beam_last);
+        // The lines' lengths for the view (registered: `Beats` holds still
+        // through a sweep).
+        self.ring_last.d.next = bit_cast::<H, 32>(
+            self.beats.val().get_bits::<32>(0) - self.beats.val().get_bits::<32>(32),
+        ) - self.ring_less.val();
+        self.beam_last.d.next = bit_cast::<H, 32>(self.beats.val().get_bits::<32>(32)) - 1;
+        self.ring.last.next = self.ring_last.q.val();
+        self.beam0.last.next = self.beam_last.q.val();
+        self.beam1.last.next = self.beam_last.q.val();
         self.ring.clock.next = self.clock.val();
         self.beam0.clock.next = self.clock.val();
         self.beam1.clock.next = self.clock.val();

@@ -3,8 +3,10 @@
 //! N_B and N_s, the pipeline-to-dataset transform for the sweep's major axis,
 //! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
 //! dy, and the base-plane pixel address. Each beat it reads one voxel per
-//! pipeline and emits it with its control one clock later (the block RAM's
-//! read latency), exactly as `golden_model::cube4l::cfb::CfbStream`.
+//! pipeline and emits it with its control `ADDRESS_STAGES + 1` clocks after
+//! the counters issue it (the address pipeline: the skew and transform,
+//! the three stride products, their sum, each registered, then the block
+//! RAM's registered read), exactly as `golden_model::cube4l::cfb::CfbStream`.
 //!
 //! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
 //! `N_s`. Dataset voxel `(u, v, w)` is at address `u div P + v*b + w*b*n_v`
@@ -13,19 +15,21 @@
 //!
 //! The memory is loaded through the `load_*` port (one write per clock into
 //! module `load_module`) and maps to block RAM (`A` address bits per module).
-//! For volumes beyond on-chip memory, [`CfbConfig::external_memory`] makes
-//! each lane present its read address on `ext_addr` and take the voxel from
-//! `ext_data` one clock later, as a synchronous external RAM answers.
+//! For volumes beyond on-chip memory
+//! ([`PipelineConfig::external_memory`]), each lane presents its read
+//! address on `ext_addr` and takes the voxel from `ext_data` one clock
+//! later, as a synchronous external RAM answers.
 //!
-//! dx and dy are frame registers for parallel views. Perspective views add
+//! The view is the host's registers (`golden_model::cube4l::regs`): the
+//! dims, the slices streamed, the axes, the memory's address layout, the
+//! beats of a beam, and dx and dy (parallel views) or the eye (perspective). Perspective views add
 //! the per-voxel divider: `S = P - V` in fixed point, then
 //! `dx = round(S_x * 2^f / S_z)` with halves away from zero. `|dx| > 1` or
 //! `S_z = 0` sets *invalid*, and such voxels carry the golden model's
 //! saturated direction, `sign(S_x) * sign(S_z)`.
 
 use super::cfb_lane::CfbLane;
-use super::config::CfbConfig;
-use crate::common::bits16;
+use super::config::PipelineConfig;
 use golden_model::cube4l::plan::Face;
 use rust_hdl::prelude::*;
 
@@ -33,6 +37,17 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct Cfb<const P: usize, const A: usize> {
     pub clock: Signal<In, Clock>,
+    /// The view registers (see `CfbLane`), and `Beats`.
+    pub dims: Signal<In, Bits<64>>,
+    pub slices: Signal<In, Bits<64>>,
+    pub axes: Signal<In, Bits<64>>,
+    pub address_reg: Signal<In, Bits<64>>,
+    pub dx: Signal<In, Bits<64>>,
+    pub dy: Signal<In, Bits<64>>,
+    pub eye_x: Signal<In, Bits<64>>,
+    pub eye_y: Signal<In, Bits<64>>,
+    pub eye_z: Signal<In, Bits<64>>,
+    pub beats: Signal<In, Bits<64>>,
     /// Pulse to start a sweep; `busy` stays high until its last beat is issued.
     pub start: Signal<In, Bit>,
     pub busy: Signal<Out, Bit>,
@@ -40,7 +55,8 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
-    /// The beat on the lanes is valid (one clock after it was issued).
+    /// The beat on the lanes is valid (`ADDRESS_STAGES + 1` clocks after
+    /// it was issued).
     pub valid: Signal<Out, Bit>,
     pub n_s: Signal<Out, Bits<16>>,
     pub n_beam: Signal<Out, Bits<16>>,
@@ -77,22 +93,48 @@ pub struct Cfb<const P: usize, const A: usize> {
     ns_c: DFF<Bits<16>>,
     nbeam_c: DFF<Bits<16>>,
     nb_c: DFF<Bits<16>>,
+    /// The counters and `running` through the lanes' address pipeline
+    /// (`ADDRESS_STAGES`, three clocks: `_d1` to `_d3`), then the RAM
+    /// read's clock (`_q`).
+    run_d1: DFF<Bit>,
+    run_d2: DFF<Bit>,
+    run_d3: DFF<Bit>,
+    ns_d1: DFF<Bits<16>>,
+    ns_d2: DFF<Bits<16>>,
+    ns_d3: DFF<Bits<16>>,
+    nbeam_d1: DFF<Bits<16>>,
+    nbeam_d2: DFF<Bits<16>>,
+    nbeam_d3: DFF<Bits<16>>,
+    nb_d1: DFF<Bits<16>>,
+    nb_d2: DFF<Bits<16>>,
+    nb_d3: DFF<Bits<16>>,
     valid_q: DFF<Bit>,
     ns_q: DFF<Bits<16>>,
     nbeam_q: DFF<Bits<16>>,
     nb_q: DFF<Bits<16>>,
-    z0: Constant<Bits<16>>,
-    z1: Constant<Bits<16>>,
-    ny_last: Constant<Bits<16>>,
-    b_last: Constant<Bits<16>>,
+    z0: Signal<Local, Bits<16>>,
+    z1: Signal<Local, Bits<16>>,
+    ny_last: Signal<Local, Bits<16>>,
+    b_last: Signal<Local, Bits<16>>,
 }
 
 impl<const P: usize, const A: usize> Cfb<P, A> {
-    pub fn new(c: &CfbConfig) -> Cfb<P, A> {
+    /// The CFB of `c`; `external`: its voxels come from external RAM (or
+    /// from none, for the late CFB).
+    pub fn new(c: &PipelineConfig, external: bool) -> Cfb<P, A> {
         assert!(P.is_power_of_two(), "P must be a power of two");
-        let b = c.dims[0].div_ceil(P as u32);
         Cfb {
             clock: Default::default(),
+            dims: Default::default(),
+            slices: Default::default(),
+            axes: Default::default(),
+            address_reg: Default::default(),
+            dx: Default::default(),
+            dy: Default::default(),
+            eye_x: Default::default(),
+            eye_y: Default::default(),
+            eye_z: Default::default(),
+            beats: Default::default(),
             start: Default::default(),
             busy: Default::default(),
             load_enable: Default::default(),
@@ -124,19 +166,31 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             dx_mag: std::array::from_fn(|_| Default::default()),
             dy_neg: std::array::from_fn(|_| Default::default()),
             dy_mag: std::array::from_fn(|_| Default::default()),
-            lanes: std::array::from_fn(|k| CfbLane::new(k as u32, P as u32, c)),
+            lanes: std::array::from_fn(|k| CfbLane::new(k as u32, c, external)),
             running: Default::default(),
             ns_c: Default::default(),
             nbeam_c: Default::default(),
             nb_c: Default::default(),
+            run_d1: Default::default(),
+            run_d2: Default::default(),
+            run_d3: Default::default(),
+            ns_d1: Default::default(),
+            ns_d2: Default::default(),
+            ns_d3: Default::default(),
+            nbeam_d1: Default::default(),
+            nbeam_d2: Default::default(),
+            nbeam_d3: Default::default(),
+            nb_d1: Default::default(),
+            nb_d2: Default::default(),
+            nb_d3: Default::default(),
             valid_q: Default::default(),
             ns_q: Default::default(),
             nbeam_q: Default::default(),
             nb_q: Default::default(),
-            z0: Constant::new(bits16(c.stream_z0)),
-            z1: Constant::new(bits16(c.stream_z1)),
-            ny_last: Constant::new(bits16(c.dims[1] - 1)),
-            b_last: Constant::new(bits16(b - 1)),
+            z0: Default::default(),
+            z1: Default::default(),
+            ny_last: Default::default(),
+            b_last: Default::default(),
         }
     }
 }
@@ -144,12 +198,44 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
 impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q);
+        dff_setup!(
+            self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q, run_d1,
+            run_d2, run_d3, ns_d1, ns_d2, ns_d3, nbeam_d1, nbeam_d2, nbeam_d3, nb_d1, nb_d2, nb_d3
+        );
+        self.run_d1.d.next = self.running.q.val();
+        self.ns_d1.d.next = self.ns_c.q.val();
+        self.nbeam_d1.d.next = self.nbeam_c.q.val();
+        self.nb_d1.d.next = self.nb_c.q.val();
+        self.run_d2.d.next = self.run_d1.q.val();
+        self.ns_d2.d.next = self.ns_d1.q.val();
+        self.nbeam_d2.d.next = self.nbeam_d1.q.val();
+        self.nb_d2.d.next = self.nb_d1.q.val();
+        self.run_d3.d.next = self.run_d2.q.val();
+        self.ns_d3.d.next = self.ns_d2.q.val();
+        self.nbeam_d3.d.next = self.nbeam_d2.q.val();
+        self.nb_d3.d.next = self.nb_d2.q.val();
+        // The slices streamed, the last beam, the last partial beam.
+        self.z0.next = self.slices.val().get_bits::<16>(32);
+        self.z1.next = self.slices.val().get_bits::<16>(48);
+        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.b_last.next = self.beats.val().get_bits::<16>(32) - 1;
         for k in 0..P {
             self.lanes[k].clock.next = self.clock.val();
-            self.lanes[k].n_s.next = self.ns_c.q.val();
-            self.lanes[k].n_beam.next = self.nbeam_c.q.val();
-            self.lanes[k].n_b.next = self.nb_c.q.val();
+            self.lanes[k].dims.next = self.dims.val();
+            self.lanes[k].slices.next = self.slices.val();
+            self.lanes[k].axes.next = self.axes.val();
+            self.lanes[k].address_reg.next = self.address_reg.val();
+            self.lanes[k].dx.next = self.dx.val();
+            self.lanes[k].dy.next = self.dy.val();
+            self.lanes[k].eye_x.next = self.eye_x.val();
+            self.lanes[k].eye_y.next = self.eye_y.val();
+            self.lanes[k].eye_z.next = self.eye_z.val();
+            self.lanes[k].a_n_s.next = self.ns_c.q.val();
+            self.lanes[k].a_n_beam.next = self.nbeam_c.q.val();
+            self.lanes[k].a_n_b.next = self.nb_c.q.val();
+            self.lanes[k].n_s.next = self.ns_d3.q.val();
+            self.lanes[k].n_beam.next = self.nbeam_d3.q.val();
+            self.lanes[k].n_b.next = self.nb_d3.q.val();
             self.lanes[k].load_enable.next = self.load_enable.val();
             self.lanes[k].load_module.next = self.load_module.val();
             self.lanes[k].load_address.next = self.load_address.val();
@@ -199,10 +285,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
                 }
             }
         }
-        self.valid_q.d.next = self.running.q.val();
-        self.ns_q.d.next = self.ns_c.q.val();
-        self.nbeam_q.d.next = self.nbeam_c.q.val();
-        self.nb_q.d.next = self.nb_c.q.val();
+        self.valid_q.d.next = self.run_d3.q.val();
+        self.ns_q.d.next = self.ns_d3.q.val();
+        self.nbeam_q.d.next = self.nbeam_d3.q.val();
+        self.nb_q.d.next = self.nb_d3.q.val();
         self.busy.next = self.running.q.val();
         self.valid.next = self.valid_q.q.val();
         self.n_s.next = self.ns_q.q.val();

@@ -2,9 +2,10 @@
 //! and 13): its skewed memory module, the pipeline-to-dataset transform,
 //! the module address, the control bits and, for perspective views, the
 //! per-voxel divider. A sub-block of [`super::cfb::Cfb`], which holds the
-//! shared counters.
+//! shared counters. The view comes from the host's registers
+//! (`golden_model::cube4l::regs::ViewRegs`, one 64-bit word each).
 
-use super::config::CfbConfig;
+use super::config::PipelineConfig;
 use super::divider::Divider;
 use crate::common::bits16;
 use crate::common::ram::DepthRam;
@@ -14,7 +15,23 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct CfbLane<const A: usize> {
     pub clock: Signal<In, Clock>,
-    /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam).
+    /// The view registers: `Dims`, `Slices`, `Axes`, `Address`, `Dx`, `Dy`
+    /// and the negated eye.
+    pub dims: Signal<In, Bits<64>>,
+    pub slices: Signal<In, Bits<64>>,
+    pub axes: Signal<In, Bits<64>>,
+    pub address_reg: Signal<In, Bits<64>>,
+    pub dx: Signal<In, Bits<64>>,
+    pub dy: Signal<In, Bits<64>>,
+    pub eye_x: Signal<In, Bits<64>>,
+    pub eye_y: Signal<In, Bits<64>>,
+    pub eye_z: Signal<In, Bits<64>>,
+    /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam)
+    /// as issued, for the address, and `ADDRESS_STAGES` clocks later, for
+    /// the control computed beside the memory read.
+    pub a_n_s: Signal<In, Bits<16>>,
+    pub a_n_beam: Signal<In, Bits<16>>,
+    pub a_n_b: Signal<In, Bits<16>>,
     pub n_s: Signal<In, Bits<16>>,
     pub n_beam: Signal<In, Bits<16>>,
     pub n_b: Signal<In, Bits<16>>,
@@ -27,7 +44,8 @@ pub struct CfbLane<const A: usize> {
     /// clock later.
     pub ext_addr: Signal<Out, Bits<32>>,
     pub ext_data: Signal<In, Bits<16>>,
-    /// Outputs, one clock after the counters.
+    /// Outputs, one clock after the delayed counters (`ADDRESS_STAGES + 1`
+    /// after the issued ones).
     pub value: Signal<Out, Bits<16>>,
     pub x: Signal<Out, Bits<16>>,
     pub y: Signal<Out, Bits<16>>,
@@ -54,31 +72,31 @@ pub struct CfbLane<const A: usize> {
     lane: Constant<Bits<16>>,
     p_mask: Constant<Bits<16>>,
     p_shift: Constant<Bits<8>>,
-    nx: Constant<Bits<16>>,
-    nx_last: Constant<Bits<16>>,
-    ny_last: Constant<Bits<16>>,
-    nz_last: Constant<Bits<16>>,
-    z0: Constant<Bits<16>>,
-    z1: Constant<Bits<16>>,
-    border: Constant<Bits<16>>,
-    u_from: Constant<Bits<2>>,
-    v_from: Constant<Bits<2>>,
-    w_from: Constant<Bits<2>>,
-    b_u: Constant<Bits<16>>,
-    /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
-    slab_lo: Constant<Bits<16>>,
-    slab_hi: Constant<Bits<16>>,
     perspective: Constant<Bit>,
     external: Constant<Bit>,
-    neg_ex: Constant<Bits<64>>,
-    neg_ey: Constant<Bits<64>>,
-    neg_ez: Constant<Bits<64>>,
     frac: Constant<Bits<8>>,
     one: Constant<Bits<32>>,
-    par_dx_neg: Constant<Bit>,
-    par_dx_mag: Constant<Bits<32>>,
-    par_dy_neg: Constant<Bit>,
-    par_dy_mag: Constant<Bits<32>>,
+    // The registers' fields.
+    nx: Signal<Local, Bits<16>>,
+    nx_last: Signal<Local, Bits<16>>,
+    ny_last: Signal<Local, Bits<16>>,
+    nz_last: Signal<Local, Bits<16>>,
+    z0: Signal<Local, Bits<16>>,
+    z1: Signal<Local, Bits<16>>,
+    border: Signal<Local, Bits<16>>,
+    u_from: Signal<Local, Bits<2>>,
+    v_from: Signal<Local, Bits<2>>,
+    w_from: Signal<Local, Bits<2>>,
+    b_u: Signal<Local, Bits<16>>,
+    /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
+    slab_lo: Signal<Local, Bits<16>>,
+    slab_hi: Signal<Local, Bits<16>>,
+    dx_abs: Signal<Local, Bits<64>>,
+    dy_abs: Signal<Local, Bits<64>>,
+    par_dx_neg: Signal<Local, Bit>,
+    par_dx_mag: Signal<Local, Bits<32>>,
+    par_dy_neg: Signal<Local, Bit>,
+    par_dy_mag: Signal<Local, Bits<32>>,
     div_x: Divider,
     div_y: Divider,
     sx: Signal<Local, Bits<64>>,
@@ -103,10 +121,19 @@ pub struct CfbLane<const A: usize> {
     inval_q: DFF<Bit>,
     halo_q: DFF<Bit>,
     xc: Signal<Local, Bits<16>>,
-    u: Signal<Local, Bits<16>>,
-    v: Signal<Local, Bits<16>>,
-    w: Signal<Local, Bits<16>>,
-    addr: Signal<Local, Bits<32>>,
+    // The address pipeline: the issued counters' skewed x and dataset
+    // (u, v, w), registered; the products, registered; their sum.
+    a_xc: Signal<Local, Bits<16>>,
+    a_u: DFF<Bits<16>>,
+    a_v: DFF<Bits<16>>,
+    a_w: DFF<Bits<16>>,
+    a_pad: DFF<Bit>,
+    m_u: DFF<Bits<32>>,
+    m_v: DFF<Bits<32>>,
+    m_w_lo: DFF<Bits<32>>,
+    m_w_hi: DFF<Bits<32>>,
+    m_pad: DFF<Bit>,
+    addr: DFF<Bits<32>>,
     is_pad: Signal<Local, Bit>,
     face_c: Signal<Local, Bits<3>>,
     depth: Signal<Local, Bits<16>>,
@@ -125,10 +152,24 @@ pub struct CfbLane<const A: usize> {
 }
 
 impl<const A: usize> CfbLane<A> {
-    pub fn new(k: u32, p: u32, c: &CfbConfig) -> CfbLane<A> {
-        let slab = c.b_u * c.n_v;
+    /// Lane `k` of `c`'s CFB; `external`: the voxels come from external RAM
+    /// (or from none: the late CFB recomputes the control only).
+    pub fn new(k: u32, c: &PipelineConfig, external: bool) -> CfbLane<A> {
+        let p = c.p;
         CfbLane {
             clock: Default::default(),
+            dims: Default::default(),
+            slices: Default::default(),
+            axes: Default::default(),
+            address_reg: Default::default(),
+            dx: Default::default(),
+            dy: Default::default(),
+            eye_x: Default::default(),
+            eye_y: Default::default(),
+            eye_z: Default::default(),
+            a_n_s: Default::default(),
+            a_n_beam: Default::default(),
+            a_n_b: Default::default(),
             n_s: Default::default(),
             n_beam: Default::default(),
             n_b: Default::default(),
@@ -157,10 +198,10 @@ impl<const A: usize> CfbLane<A> {
             dy_mag: Default::default(),
             invalid: Default::default(),
             // A 2-word stub when the voxels live in external RAM.
-            memory: DepthRam::new(if c.external_memory {
+            memory: DepthRam::new(if external {
                 1
             } else {
-                (c.memory_bits as usize).min(A)
+                (c.memory_bits() as usize).min(A)
             })
             .fields(
                 &[(0, c.voxel_bits as usize)],
@@ -169,32 +210,31 @@ impl<const A: usize> CfbLane<A> {
             lane: Constant::new(bits16(k)),
             p_mask: Constant::new(bits16(p - 1)),
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
-            nx: Constant::new(bits16(c.dims[0])),
-            nx_last: Constant::new(bits16(c.dims[0] - 1)),
-            ny_last: Constant::new(bits16(c.dims[1] - 1)),
-            nz_last: Constant::new(bits16(c.dims[2] - 1)),
-            z0: Constant::new(bits16(c.z0)),
-            z1: Constant::new(bits16(c.z1)),
-            border: Constant::new(bits16(c.z1 - c.z0)),
-            u_from: Constant::new((c.u_from as u64).to_bits()),
-            v_from: Constant::new((c.v_from as u64).to_bits()),
-            w_from: Constant::new((c.w_from as u64).to_bits()),
-            b_u: Constant::new(bits16(c.b_u)),
-            slab_lo: Constant::new(bits16(slab & 0xffff)),
-            slab_hi: Constant::new(bits16(slab >> 16)),
-            perspective: Constant::new(c.eye.is_some()),
-            external: Constant::new(c.external_memory),
-            neg_ex: Constant::new((c.eye.map_or(0, |e| e[0]).wrapping_neg() as u64).to_bits()),
-            neg_ey: Constant::new((c.eye.map_or(0, |e| e[1]).wrapping_neg() as u64).to_bits()),
-            neg_ez: Constant::new((c.eye.map_or(0, |e| e[2]).wrapping_neg() as u64).to_bits()),
-            frac: Constant::new((c.frac as u64).to_bits()),
-            one: Constant::new((1u64 << c.frac).to_bits()),
-            par_dx_neg: Constant::new(c.dx < 0),
-            par_dx_mag: Constant::new((c.dx.unsigned_abs() as u64).to_bits()),
-            par_dy_neg: Constant::new(c.dy < 0),
-            par_dy_mag: Constant::new((c.dy.unsigned_abs() as u64).to_bits()),
-            div_x: Divider::new(c.eye.is_some()),
-            div_y: Divider::new(c.eye.is_some()),
+            perspective: Constant::new(c.perspective),
+            external: Constant::new(external),
+            frac: Constant::new((c.frac_bits as u64).to_bits()),
+            one: Constant::new((1u64 << c.frac_bits).to_bits()),
+            nx: Default::default(),
+            nx_last: Default::default(),
+            ny_last: Default::default(),
+            nz_last: Default::default(),
+            z0: Default::default(),
+            z1: Default::default(),
+            border: Default::default(),
+            u_from: Default::default(),
+            v_from: Default::default(),
+            w_from: Default::default(),
+            b_u: Default::default(),
+            slab_lo: Default::default(),
+            slab_hi: Default::default(),
+            dx_abs: Default::default(),
+            dy_abs: Default::default(),
+            par_dx_neg: Default::default(),
+            par_dx_mag: Default::default(),
+            par_dy_neg: Default::default(),
+            par_dy_mag: Default::default(),
+            div_x: Divider::new(c.perspective),
+            div_y: Divider::new(c.perspective),
             sx: Default::default(),
             sy: Default::default(),
             sz: Default::default(),
@@ -217,9 +257,16 @@ impl<const A: usize> CfbLane<A> {
             inval_q: Default::default(),
             halo_q: Default::default(),
             xc: Default::default(),
-            u: Default::default(),
-            v: Default::default(),
-            w: Default::default(),
+            a_xc: Default::default(),
+            a_u: Default::default(),
+            a_v: Default::default(),
+            a_w: Default::default(),
+            a_pad: Default::default(),
+            m_u: Default::default(),
+            m_v: Default::default(),
+            m_w_lo: Default::default(),
+            m_w_hi: Default::default(),
+            m_pad: Default::default(),
             addr: Default::default(),
             is_pad: Default::default(),
             face_c: Default::default(),
@@ -254,55 +301,93 @@ impl<const A: usize> Logic for CfbLane<A> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
-            dxm_q, dyn_q, dym_q, inval_q, halo_q
+            dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v, m_w_lo, m_w_hi,
+            m_pad, addr
         );
+        // The view registers' fields.
+        self.nx.next = self.dims.val().get_bits::<16>(0);
+        self.nx_last.next = self.dims.val().get_bits::<16>(0) - 1;
+        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.nz_last.next = self.dims.val().get_bits::<16>(32) - 1;
+        self.z0.next = self.slices.val().get_bits::<16>(0);
+        self.z1.next = self.slices.val().get_bits::<16>(16);
+        self.border.next =
+            self.slices.val().get_bits::<16>(16) - self.slices.val().get_bits::<16>(0);
+        self.u_from.next = self.axes.val().get_bits::<2>(0);
+        self.v_from.next = self.axes.val().get_bits::<2>(2);
+        self.w_from.next = self.axes.val().get_bits::<2>(4);
+        self.b_u.next = self.address_reg.val().get_bits::<16>(0);
+        self.slab_lo.next = self.address_reg.val().get_bits::<16>(16);
+        self.slab_hi.next = self.address_reg.val().get_bits::<16>(32);
+        self.dx_abs.next = self.dx.val();
+        if self.dx.val().get_bit(63) {
+            self.dx_abs.next = 0 - self.dx.val();
+        }
+        self.dy_abs.next = self.dy.val();
+        if self.dy.val().get_bit(63) {
+            self.dy_abs.next = 0 - self.dy.val();
+        }
+        self.par_dx_neg.next = self.dx.val().get_bit(63);
+        self.par_dx_mag.next = self.dx_abs.val().get_bits::<32>(0);
+        self.par_dy_neg.next = self.dy.val().get_bit(63);
+        self.par_dy_mag.next = self.dy_abs.val().get_bits::<32>(0);
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
         self.memory.write_enable.next =
             self.load_enable.val() & (bit_cast::<16, 8>(self.load_module.val()) == self.lane.val());
         self.memory.write_address.next = self.load_address.val();
         self.memory.write_data.next = self.load_data.val();
-        // Skew: the lane's x within the partial beam.
+        // The address, in four clocks (`ADDRESS_STAGES` and the RAM's
+        // registered read). 1: skew, the lane's x within the partial beam,
+        // and pipeline to dataset coordinates.
+        self.a_xc.next = (self.a_n_b.val() << self.p_shift.val())
+            | ((self.lane.val() - self.a_n_beam.val() - self.a_n_s.val()) & self.p_mask.val());
+        self.a_pad.d.next = self.a_xc.val() >= self.nx.val();
+        self.a_u.d.next = self.a_xc.val();
+        if self.u_from.val() == 1 {
+            self.a_u.d.next = self.a_n_beam.val();
+        }
+        if self.u_from.val() == 2 {
+            self.a_u.d.next = self.a_n_s.val();
+        }
+        self.a_v.d.next = self.a_xc.val();
+        if self.v_from.val() == 1 {
+            self.a_v.d.next = self.a_n_beam.val();
+        }
+        if self.v_from.val() == 2 {
+            self.a_v.d.next = self.a_n_s.val();
+        }
+        self.a_w.d.next = self.a_xc.val();
+        if self.w_from.val() == 1 {
+            self.a_w.d.next = self.a_n_beam.val();
+        }
+        if self.w_from.val() == 2 {
+            self.a_w.d.next = self.a_n_s.val();
+        }
+        // 2: the products of i = u div P + v*b + w*b*n_v.
+        self.m_u.d.next = bit_cast::<32, 16>(self.a_u.q.val()) >> self.p_shift.val();
+        self.m_v.d.next = self.a_v.q.val() * self.b_u.val();
+        self.m_w_lo.d.next = self.a_w.q.val() * self.slab_lo.val();
+        self.m_w_hi.d.next = self.a_w.q.val() * self.slab_hi.val();
+        self.m_pad.d.next = self.a_pad.q.val();
+        // 3: their sum, registered apart from the RAM's address register
+        // (it fans out to every block RAM of the module).
+        self.addr.d.next =
+            self.m_u.q.val() + self.m_v.q.val() + self.m_w_lo.q.val() + (self.m_w_hi.q.val() << 16);
+        if self.m_pad.q.val() {
+            self.addr.d.next = 0.into();
+        }
+        self.memory.read_address.next = bit_cast::<A, 32>(self.addr.q.val());
+        self.ext_addr.next = self.addr.q.val();
+        // The control, from the delayed counters: the same skew.
         self.xc.next = (self.n_b.val() << self.p_shift.val())
             | ((self.lane.val() - self.n_beam.val() - self.n_s.val()) & self.p_mask.val());
         self.is_pad.next = self.xc.val() >= self.nx.val();
-        // Pipeline to dataset coordinates.
-        self.u.next = self.xc.val();
-        if self.u_from.val() == 1 {
-            self.u.next = self.n_beam.val();
-        }
-        if self.u_from.val() == 2 {
-            self.u.next = self.n_s.val();
-        }
-        self.v.next = self.xc.val();
-        if self.v_from.val() == 1 {
-            self.v.next = self.n_beam.val();
-        }
-        if self.v_from.val() == 2 {
-            self.v.next = self.n_s.val();
-        }
-        self.w.next = self.xc.val();
-        if self.w_from.val() == 1 {
-            self.w.next = self.n_beam.val();
-        }
-        if self.w_from.val() == 2 {
-            self.w.next = self.n_s.val();
-        }
-        // i = u div P + v*b + w*b*n_v
-        self.addr.next = (bit_cast::<32, 16>(self.u.val()) >> self.p_shift.val())
-            + self.v.val() * self.b_u.val()
-            + self.w.val() * self.slab_lo.val()
-            + ((self.w.val() * self.slab_hi.val()) << 16);
-        if self.is_pad.val() {
-            self.addr.next = 0.into();
-        }
-        self.memory.read_address.next = bit_cast::<A, 32>(self.addr.val());
-        self.ext_addr.next = self.addr.val();
         // Sight-ray increments: frame registers, or the per-voxel divider.
-        self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.neg_ex.val();
+        self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.eye_x.val();
         self.sy.next =
-            (bit_cast::<64, 16>(self.n_beam.val()) << self.frac.val()) + self.neg_ey.val();
-        self.sz.next = (bit_cast::<64, 16>(self.n_s.val()) << self.frac.val()) + self.neg_ez.val();
+            (bit_cast::<64, 16>(self.n_beam.val()) << self.frac.val()) + self.eye_y.val();
+        self.sz.next = (bit_cast::<64, 16>(self.n_s.val()) << self.frac.val()) + self.eye_z.val();
         self.sx_mag.next = self.sx.val();
         if self.sx.val().get_bit(63) {
             self.sx_mag.next = 0 - self.sx.val();
@@ -395,7 +480,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.x_q.d.next = self.xc.val();
         self.y_q.d.next = self.n_beam.val();
         self.z_q.d.next = self.n_s.val();
-        self.addr_q.d.next = self.addr.val();
+        self.addr_q.d.next = self.addr.q.val();
         self.pad_q.d.next = self.is_pad.val();
         self.sr_q.d.next = self.n_s.val() == self.z0.val();
         self.edge_q.d.next = self.is_pad.val()

@@ -9,14 +9,14 @@
 //! - MIP / MinIP: the larger / smaller of the accumulated value and a valid voxel;
 //! - X-ray: the accumulated sum plus the voxel's opacity.
 //!
-//! The mode and order are fixed by the scene when the unit is built; the
-//! logic of the other modes is constant-folded away by synthesis.
-//! The over operator is [`Over`], one 16x16 multiplier per channel.
+//! The mode class is built in (the logic of the other classes is
+//! constant-folded away by synthesis); the order, and MIP or MinIP, come
+//! from the `Order` register, bits 0 and 1. The over operator is [`Over`],
+//! one 16x16 multiplier per channel.
 
+use crate::common::mode_class::ModeClass;
 use crate::common::over::Over;
-use golden_model::cube4l::plan::Order;
 use rust_hdl::prelude::*;
-use scene::Mode;
 
 /// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
 /// channel r only and carry 0 in the others. Channel r is 32 bits wide for
@@ -38,10 +38,10 @@ pub struct Compositor {
     pub out_g: Signal<Out, Bits<16>>,
     pub out_b: Signal<Out, Bits<16>>,
     pub out_a: Signal<Out, Bits<16>>,
-    front_to_back: Constant<Bit>,
+    /// The `Order` register: front to back (bit 0), MinIP (bit 1).
+    pub order: Signal<In, Bits<64>>,
     over: Constant<Bit>,
-    mip: Constant<Bit>,
-    minip: Constant<Bit>,
+    scalar: Constant<Bit>,
     ch_r: Over,
     ch_g: Over,
     ch_b: Over,
@@ -53,7 +53,7 @@ pub struct Compositor {
 }
 
 impl Compositor {
-    pub fn new(mode: Mode, order: Order, rgba_bits: u32) -> Compositor {
+    pub fn new(mode: ModeClass, rgba_bits: u32) -> Compositor {
         Compositor {
             clock: Default::default(),
             acc_r: Default::default(),
@@ -69,10 +69,9 @@ impl Compositor {
             out_g: Default::default(),
             out_b: Default::default(),
             out_a: Default::default(),
-            front_to_back: Constant::new(order == Order::FrontToBack),
-            over: Constant::new(matches!(mode, Mode::Composite | Mode::FirstOpaque)),
-            mip: Constant::new(mode == Mode::Mip),
-            minip: Constant::new(mode == Mode::Minip),
+            order: Default::default(),
+            over: Constant::new(mode == ModeClass::Over),
+            scalar: Constant::new(mode == ModeClass::Scalar),
             ch_r: Over::new(rgba_bits),
             ch_g: Over::new(rgba_bits),
             ch_b: Over::new(rgba_bits),
@@ -90,7 +89,7 @@ impl Logic for Compositor {
     fn update(&mut self) {
         dff_setup!(self, clock, reg_r, reg_g, reg_b, reg_a);
         // Front and back operands of the over operator.
-        if self.front_to_back.val() {
+        if self.order.val().get_bit(0) {
             self.ch_r.front.next = bit_cast::<16, 32>(self.acc_r.val());
             self.ch_g.front.next = self.acc_g.val();
             self.ch_b.front.next = self.acc_b.val();
@@ -126,14 +125,13 @@ impl Logic for Compositor {
             self.reg_g.d.next = self.ch_g.result.val();
             self.reg_b.d.next = self.ch_b.result.val();
             self.reg_a.d.next = self.ch_a.result.val();
-        } else if self.mip.val() {
+        } else if self.scalar.val() {
             self.reg_r.d.next = self.acc_r.val();
-            if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
-                self.reg_r.d.next = self.new_r.val();
-            }
-        } else if self.minip.val() {
-            self.reg_r.d.next = self.acc_r.val();
-            if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
+            if self.order.val().get_bit(1) {
+                if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
+                    self.reg_r.d.next = self.new_r.val();
+                }
+            } else if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
                 self.reg_r.d.next = self.new_r.val();
             }
         } else {

@@ -1,92 +1,325 @@
-//! What a Cube-4L pipeline is built from (§3): the CFB's sweep parameters
-//! ([`CfbConfig`]), and the pipeline's ([`PipelineConfig`]): the
-//! compositing-buffer taps and their delays, the buffers' lengths and
-//! widths, and the constants the stages share. The stages take their
-//! configuration from here, never from the pipeline that holds them.
+//! What a Cube-4L build is made of (§3): its structural configuration
+//! ([`PipelineConfig`]: p, the mode class, which units, the widths and the
+//! largest volume), from which the stages size their units and buffers, and
+//! the constants the stages share. Everything a view changes (dims, slices,
+//! axes, dx and dy or the eye, the order) is a register the host writes
+//! (`golden_model::cube4l::regs::ViewRegs`), so one build renders every view
+//! of its class. The stages take their configuration from here, never from
+//! the pipeline that holds them.
 
 use super::abc_gradient;
 use super::bilinear;
-use crate::common::ram::bits_for;
+use crate::common::mode_class::ModeClass;
+use crate::common::ram::{bits_for, ON_CHIP_BITS};
 use crate::common::shader;
 use golden_model::cube4l::plan::{Rays, Sweep};
+use golden_model::cube4l::regs::ViewRegs;
 use scene::Mode;
+use std::fmt;
 
-/// Sweep parameters the CFB is built for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct CfbConfig {
-    /// Pipeline-space dims `[nx, ny, nz]` and the swept slices.
-    pub dims: [u32; 3],
-    pub z0: u32,
-    pub z1: u32,
-    /// Slices streamed: `z0..=z1`, plus, for a gradient unit, the halo slices
-    /// z0 - 1 and z1 + 1 inside the dataset (streamed but not composited).
-    pub stream_z0: u32,
-    pub stream_z1: u32,
-    /// Pipeline axis (0 = x, 1 = y, 2 = z) that holds dataset u, v and w.
-    pub u_from: u32,
-    pub v_from: u32,
-    pub w_from: u32,
-    /// Dataset partial beams per u beam (`ceil(n_u / P)`) and dataset n_v.
-    pub b_u: u32,
-    pub n_v: u32,
-    /// Parallel views: the frame registers (fixed point with `frac` bits).
-    pub dx: i32,
-    pub dy: i32,
-    /// Perspective views: the eye in pipeline space, fixed point.
-    pub eye: Option<[i64; 3]>,
-    pub frac: u32,
-    /// Voxels come from an external RAM through `ext_addr`/`ext_data`.
-    pub external_memory: bool,
-    /// Address bits of an on-chip memory module: it holds
-    /// `ceil(n_u / P) * n_v * n_w` voxels.
-    pub memory_bits: u32,
-    /// Bits stored per voxel (the scene's voxel bits; 16 by default).
+/// What a Cube-4L build is made of: the shape of the hardware, not a view.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct PipelineConfig {
+    pub p: u32,
+    pub mode: ModeClass,
+    /// The lighting unit (composite and first-opaque with shading).
+    pub shading: bool,
+    /// Opacity by gradient magnitude as well as intensity.
+    pub gradient_opacity: bool,
+    /// The per-voxel divider of perspective views; without it the rays are
+    /// parallel (dx and dy registers).
+    pub perspective: bool,
+    /// The largest volume: `max_dim` voxels along every axis.
+    pub max_dim: u32,
     pub voxel_bits: u32,
+    pub rgba_bits: u32,
+    pub frac_bits: u32,
 }
 
-impl CfbConfig {
-    /// The configuration for one sweep over a dataset of `vol_dims`.
-    pub fn from_sweep(sweep: &Sweep, vol_dims: [usize; 3], p: usize) -> Result<CfbConfig, String> {
-        let (dx, dy, eye) = match sweep.rays {
-            Rays::Parallel { dx, dy } => (dx, dy, None),
-            Rays::Perspective { eye } => (0, 0, Some(eye)),
-        };
-        if eye.is_some_and(|e| e.iter().any(|c| c.abs() >= 1 << 40)) {
-            return Err("the eye is too far away for the RTL divider's 64-bit datapath".into());
+/// The widths a configuration's name leaves out.
+const DEFAULT_BITS: u32 = 8;
+
+impl PipelineConfig {
+    /// The configuration a sweep of a volume of `vol_dims` needs, with the
+    /// golden model's shader of that sweep: the volume's largest dimension
+    /// sets the buffers and the memory.
+    pub fn for_view(
+        sweep: &Sweep,
+        vol_dims: [usize; 3],
+        p: usize,
+        shader: &golden_model::cube4l::shader::Shader,
+    ) -> PipelineConfig {
+        PipelineConfig {
+            p: p as u32,
+            mode: ModeClass::of(shader.mode),
+            shading: shader.lighting.is_some(),
+            gradient_opacity: shader
+                .opacity
+                .as_ref()
+                .is_some_and(|o| o.gm_shift.is_some()),
+            perspective: matches!(sweep.rays, Rays::Perspective { .. }),
+            max_dim: vol_dims.iter().copied().max().unwrap_or(1) as u32,
+            voxel_bits: shader.voxel_bits,
+            rgba_bits: shader.rgba_bits,
+            frac_bits: sweep.frac,
         }
-        if vol_dims.iter().any(|&n| n > 4095) {
-            return Err(format!(
-                "dims {vol_dims:?}: the RTL CFB counts positions in 12 bits"
-            ));
-        }
-        let from = |axis: usize| sweep.perm.iter().position(|&a| a == axis).unwrap() as u32;
-        Ok(CfbConfig {
-            dims: sweep.dims.map(|n| n as u32),
-            z0: sweep.z0 as u32,
-            z1: sweep.z1 as u32,
-            stream_z0: sweep.z0 as u32,
-            stream_z1: sweep.z1 as u32,
-            u_from: from(0),
-            v_from: from(1),
-            w_from: from(2),
-            b_u: vol_dims[0].div_ceil(p) as u32,
-            n_v: vol_dims[1] as u32,
-            dx,
-            dy,
-            eye,
-            frac: sweep.frac,
-            external_memory: false,
-            memory_bits: bits_for((vol_dims[0].div_ceil(p) * vol_dims[1] * vol_dims[2]) as u64),
-            voxel_bits: 16,
-        })
     }
 
-    /// Stream one halo slice beyond each end of the sweep that lies inside
-    /// the dataset, for the gradient unit's B and A slices.
-    pub fn with_halo(mut self) -> CfbConfig {
-        self.stream_z0 = self.z0.saturating_sub(1);
-        self.stream_z1 = (self.z1 + 1).min(self.dims[2] - 1);
-        self
+    /// The ABC gradient unit: shading or gradient opacity needs it (and
+    /// delays everything a slice).
+    pub fn gradient(&self) -> bool {
+        self.shading || self.gradient_opacity
+    }
+
+    /// The most beats of a beam and of a slice.
+    pub fn beam_beats(&self) -> u32 {
+        self.max_dim.div_ceil(self.p)
+    }
+    pub fn slice_beats(&self) -> u32 {
+        self.max_dim * self.beam_beats()
+    }
+
+    /// Voxels per skewed memory module, and its address bits.
+    pub fn module_words(&self) -> u64 {
+        self.beam_beats() as u64 * self.max_dim as u64 * self.max_dim as u64
+    }
+    pub fn memory_bits(&self) -> u32 {
+        bits_for(self.module_words())
+    }
+
+    /// The voxels live in external RAM: a module holds more than on-chip
+    /// memory's 2^16 words.
+    pub fn external_memory(&self) -> bool {
+        self.memory_bits() as usize > ON_CHIP_BITS
+    }
+
+    /// The configuration's name: `{mode}[_shaded][_gm][_perspective]_p{p}_{n}`
+    /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`
+    /// (`composite_shaded_p4_256`). [`PipelineConfig::parse`] reads it back.
+    pub fn name(&self) -> String {
+        let mut s = self.mode.name().to_string();
+        for (on, word) in [
+            (self.shading, "shaded"),
+            (self.gradient_opacity, "gm"),
+            (self.perspective, "perspective"),
+        ] {
+            if on {
+                s += "_";
+                s += word;
+            }
+        }
+        s += &format!("_p{}_{}", self.p, self.max_dim);
+        for (bits, tag) in [
+            (self.voxel_bits, 'v'),
+            (self.rgba_bits, 'c'),
+            (self.frac_bits, 'f'),
+        ] {
+            if bits != DEFAULT_BITS {
+                s += &format!("_{tag}{bits}");
+            }
+        }
+        s
+    }
+
+    /// The configuration that [`PipelineConfig::name`] names.
+    pub fn parse(name: &str) -> Result<PipelineConfig, String> {
+        let bad = |why: String| format!("configuration '{name}': {why}");
+        let mut words = name.split('_');
+        let first = words.next().unwrap_or_default();
+        let mode = ModeClass::ALL
+            .into_iter()
+            .find(|m| m.name() == first)
+            .ok_or_else(|| bad(format!("'{first}' is no mode class (composite, mip, xray)")))?;
+        let mut c = PipelineConfig {
+            p: 0,
+            mode,
+            shading: false,
+            gradient_opacity: false,
+            perspective: false,
+            max_dim: 0,
+            voxel_bits: DEFAULT_BITS,
+            rgba_bits: DEFAULT_BITS,
+            frac_bits: DEFAULT_BITS,
+        };
+        let number = |w: &str, what: &str| {
+            w.parse::<u32>()
+                .map_err(|_| bad(format!("'{w}' is no {what}")))
+        };
+        for w in words {
+            match w {
+                "shaded" => c.shading = true,
+                "gm" => c.gradient_opacity = true,
+                "perspective" => c.perspective = true,
+                _ if c.p == 0 => {
+                    let p = w
+                        .strip_prefix('p')
+                        .ok_or_else(|| bad(format!("'{w}' where p<pipelines> belongs")))?;
+                    c.p = number(p, "pipeline count")?;
+                }
+                _ if c.max_dim == 0 => c.max_dim = number(w, "volume size")?,
+                _ => {
+                    let (tag, bits) = w.split_at(1.min(w.len()));
+                    let bits = number(bits, "width")?;
+                    match tag {
+                        "v" => c.voxel_bits = bits,
+                        "c" => c.rgba_bits = bits,
+                        "f" => c.frac_bits = bits,
+                        _ => return Err(bad(format!("'{w}' is no width (v, c or f and bits)"))),
+                    }
+                }
+            }
+        }
+        if c.p == 0 || c.max_dim == 0 {
+            return Err(bad(
+                "it needs p<pipelines> and the largest volume size".into()
+            ));
+        }
+        if c.name() != name {
+            return Err(bad(format!("it reads as {}", c.name())));
+        }
+        c.validate().map_err(bad)?;
+        Ok(c)
+    }
+
+    /// What the stages can build: p of 1, 2, 4 or 8, volumes of 2 to 4095
+    /// voxels a side whose slices leave the compositing buffer a word,
+    /// shading only where colour is composited, the configuration's widths.
+    pub fn validate(&self) -> Result<(), String> {
+        if !matches!(self.p, 1 | 2 | 4 | 8) {
+            return Err(format!(
+                "{} pipelines (hardware.pipelines): the RTL is built for 1, 2, 4 or 8 pipelines",
+                self.p
+            ));
+        }
+        if !(2..=4095).contains(&self.max_dim) {
+            return Err(format!(
+                "volumes of {} voxels a side: the RTL CFB counts positions in 12 bits",
+                self.max_dim
+            ));
+        }
+        if (self.max_dim - 1) * self.beam_beats() < RESULT_AT + 5 {
+            return Err(format!(
+                "volumes of at most {} voxels a side are too small for the compositing-buffer taps at p = {}",
+                self.max_dim, self.p
+            ));
+        }
+        if self.mode != ModeClass::Over && (self.shading || self.gradient_opacity) {
+            return Err(format!(
+                "{} composite no colour: no shading or gradient opacity",
+                self.mode.modes()
+            ));
+        }
+        // The scene's own limits (`scene::Scene::validate`).
+        if ![8, 12, 16].contains(&self.voxel_bits) {
+            return Err(format!("{}-bit voxels: 8, 12 or 16", self.voxel_bits));
+        }
+        if !(4..=15).contains(&self.rgba_bits) {
+            return Err(format!("{}-bit RGBA channels: 4 to 15", self.rgba_bits));
+        }
+        if !(2..=15).contains(&self.frac_bits) {
+            return Err(format!("{} fractional bits: 2 to 15", self.frac_bits));
+        }
+        Ok(())
+    }
+
+    /// Why this build cannot render what `needed` describes (a scene's own
+    /// configuration), or `None`: every feature must match, and the volume
+    /// must fit.
+    pub fn refuses(&self, needed: &PipelineConfig) -> Option<String> {
+        let yes_no = |b: bool| if b { "has" } else { "has no" };
+        let unit = |what: &str, build: bool, scene: bool| {
+            (build != scene).then(|| {
+                format!(
+                    "the scene {} {what}, the configuration {}",
+                    if scene { "needs" } else { "has no" },
+                    yes_no(build)
+                )
+            })
+        };
+        if self.mode != needed.mode {
+            return Some(format!(
+                "the scene's mode needs the {} hardware ({}); this configuration renders {}",
+                needed.mode.name(),
+                needed.mode.modes(),
+                self.mode.modes()
+            ));
+        }
+        if self.p != needed.p {
+            return Some(format!(
+                "the scene asks for {} pipelines, the configuration has {}",
+                needed.p, self.p
+            ));
+        }
+        unit("shading", self.shading, needed.shading)
+            .or_else(|| {
+                unit(
+                    "gradient opacity",
+                    self.gradient_opacity,
+                    needed.gradient_opacity,
+                )
+            })
+            .or_else(|| {
+                (self.perspective != needed.perspective).then(|| {
+                    format!(
+                        "the scene's view is {}, the configuration's rays are {}",
+                        if needed.perspective {
+                            "perspective"
+                        } else {
+                            "parallel"
+                        },
+                        if self.perspective {
+                            "perspective"
+                        } else {
+                            "parallel"
+                        }
+                    )
+                })
+            })
+            .or_else(|| {
+                [
+                    ("voxel_bits", self.voxel_bits, needed.voxel_bits),
+                    ("rgba_bits", self.rgba_bits, needed.rgba_bits),
+                    ("frac_bits", self.frac_bits, needed.frac_bits),
+                ]
+                .into_iter()
+                .find(|(_, a, b)| a != b)
+                .map(|(what, a, b)| format!("the scene's {what} is {b}, the configuration's {a}"))
+            })
+            .or_else(|| {
+                (needed.max_dim > self.max_dim).then(|| {
+                    format!(
+                        "the volume is {} voxels along an axis, the configuration holds at most {}",
+                        needed.max_dim, self.max_dim
+                    )
+                })
+            })
+    }
+
+    /// Whether the build can render one sweep with these registers: its
+    /// slices fit the buffers, and leave the compositing buffer's ring a
+    /// word.
+    pub fn check_view(&self, v: &ViewRegs) -> Result<(), String> {
+        if v.dims.iter().any(|&d| d > self.max_dim) {
+            return Err(format!(
+                "a sweep of {:?} voxels does not fit a configuration of at most {} a side",
+                v.dims, self.max_dim
+            ));
+        }
+        if (v.dims[1] - 1) * v.beam_beats < RESULT_AT + 5 {
+            return Err(format!(
+                "a slice of {} beams of {} partial beams is too short for the compositing-buffer taps (need (n_y - 1) * b >= {})",
+                v.dims[1],
+                v.beam_beats,
+                RESULT_AT + 5
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl fmt::Display for PipelineConfig {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str(&self.name())
     }
 }
 
@@ -103,12 +336,17 @@ pub const GATHER_DELAY: usize = shader::LATENCY - 1 - bilinear::LATENCY;
 // would need registers of its own, which the control delay does not build).
 const _: () = assert!(shader::LATENCY > bilinear::LATENCY);
 
+/// Registered stages of the CFB's address before the block-RAM read: the
+/// skew and pipeline-to-dataset transform, the stride products, their sum.
+pub const ADDRESS_STAGES: usize = 3;
+
 /// Clocks of a sweep beyond one beat per clock: the start register, the
-/// block-RAM read, the shader's input register, the gather's delay and the
-/// bilinear unit's latency (the compositor register ends the last beat's
-/// own clock), and with a gradient unit one more (its output register).
+/// CFB's address stages, the block-RAM read, the shader's input register,
+/// the gather's delay and the bilinear unit's latency (the compositor
+/// register ends the last beat's own clock), and with a gradient unit one
+/// more (its output register).
 pub fn fill_clocks(gradient: bool) -> u64 {
-    3 + GATHER_DELAY as u64 + bilinear::LATENCY as u64 + gradient as u64
+    3 + ADDRESS_STAGES as u64 + GATHER_DELAY as u64 + bilinear::LATENCY as u64 + gradient as u64
 }
 
 /// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per
@@ -132,159 +370,78 @@ pub const TAPS: [(i32, i32); 9] = [
     (1, 1),
 ];
 
-/// Where one tap of the 3x3 neighbourhood comes from.
+/// Where one tap of the 3x3 neighbourhood comes from: the lanes it crosses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Tap {
     /// Neighbour links the value crosses, each from lane j to lane j+1;
     /// with `left`, one link from lane k+1 to lane k instead.
     pub hops: u32,
     pub left: bool,
-    /// Beat delay of the tap stream (its previous value is one beat older).
-    pub delay: u32,
 }
 
-/// Everything the pipeline is built from.
-#[derive(Debug, Clone)]
-pub struct PipelineConfig {
-    pub cfb: CfbConfig,
-    pub p: u32,
-    pub taps: [Tap; 9],
-    pub frac_bits: u32,
-    pub rgba_bits: u32,
-    pub order: golden_model::cube4l::plan::Order,
-    pub reset: [u32; 4],
-    /// Shading needs the ABC gradient unit (and delays everything a slice).
-    pub gradient: bool,
-    /// Beats per slice and per beam.
-    pub slice_beats: u32,
-    pub beam_beats: u32,
-    pub voxel_bits: u32,
+/// Clocks between the history's row `e_y` and tap `(e_x, e_y)`'s read, for
+/// a tap over `hops` links: the candidate `BufferRows` picks. It does not
+/// depend on the view: the tap waits `S - e_y B - [e_x = 1]` beats, the
+/// row `S - e_y B - RESULT_AT - 4`.
+pub fn tap_offset((ex, _): (i32, i32), hops: u32) -> u32 {
+    4 - (ex == 1) as u32 - hops
+}
+
+impl PipelineConfig {
+    /// The nine taps in `TAPS` order, by the lane count alone.
+    pub fn taps(&self) -> [Tap; 9] {
+        let p = self.p as i32;
+        TAPS.map(|(ex, ey)| {
+            let m = 1 - ex - ey;
+            if m == -1 && p > 2 {
+                Tap {
+                    hops: 1,
+                    left: true,
+                }
+            } else {
+                Tap {
+                    hops: m.rem_euclid(p) as u32,
+                    left: false,
+                }
+            }
+        })
+    }
+
     /// Bit fields `(lowest bit, width)` of a composited word that can be
     /// non-zero, which the compositing-buffer rings store: four `rgba_bits`
     /// channels in 16-bit slots; the intensity for MIP/MinIP; the 32-bit sum
     /// for X-ray.
-    pub ring_fields: Vec<(usize, usize)>,
-    /// The taps (in `TAPS` order) that the 2x2 selection can pick: all for
-    /// perspective views; for parallel views the four that the constant
-    /// signs of dx and dy select, fewer when dx or dy is 0. The history
-    /// builds only the rows they need.
-    pub taps_used: [bool; 9],
-}
-
-impl PipelineConfig {
-    pub fn new(
-        sweep: &Sweep,
-        vol_dims: [usize; 3],
-        p: usize,
-        shader: &golden_model::cube4l::shader::Shader,
-    ) -> Result<PipelineConfig, String> {
-        let mut cfb = CfbConfig::from_sweep(sweep, vol_dims, p)?;
-        cfb.voxel_bits = shader.voxel_bits;
-        let cfb = if shader.needs_gradient {
-            cfb.with_halo()
-        } else {
-            cfb
-        };
-        let pu = p as u32;
-        let b = cfb.dims[0].div_ceil(pu);
-        let s = cfb.dims[1] * b;
-        if (cfb.dims[1] - 1) * b < RESULT_AT + 5 {
-            return Err(format!(
-                "a slice of {} beams of {b} partial beams is too short for the compositing-buffer taps (need (n_y - 1) * b >= {})",
-                cfb.dims[1],
-                RESULT_AT + 5
-            ));
+    pub fn ring_fields(&self) -> Vec<(usize, usize)> {
+        match self.mode {
+            ModeClass::Scalar => vec![(0, self.voxel_bits as usize)],
+            ModeClass::Xray => vec![(0, 32)],
+            ModeClass::Over => (0..4).map(|c| (16 * c, self.rgba_bits as usize)).collect(),
         }
-        let taps = TAPS.map(|(ex, ey)| {
-            let m = 1 - ex - ey;
-            let delay = (s as i32 - ey * b as i32 - (ex == 1) as i32) as u32;
-            if m == -1 && pu > 2 {
-                Tap {
-                    hops: 1,
-                    left: true,
-                    delay,
-                }
-            } else {
-                Tap {
-                    hops: m.rem_euclid(pu as i32) as u32,
-                    left: false,
-                    delay,
-                }
-            }
-        });
-        Ok(PipelineConfig {
-            cfb,
-            p: pu,
-            taps,
-            frac_bits: sweep.frac,
-            rgba_bits: shader.rgba_bits,
-            order: sweep.order,
-            gradient: shader.needs_gradient,
-            slice_beats: s,
-            beam_beats: b,
-            voxel_bits: shader.voxel_bits,
-            taps_used: match sweep.rays {
-                Rays::Parallel { dx, dy } => {
-                    // Tap (e_x, e_y) serves x - sign(dx), y - sign(dy).
-                    let (sx, sy) = (-dx.signum(), -dy.signum());
-                    TAPS.map(|(ex, ey)| (ex == 0 || ex == sx) && (ey == 0 || ey == sy))
-                }
-                Rays::Perspective { .. } => [true; 9],
-            },
-            ring_fields: match shader.mode {
-                Mode::Mip | Mode::Minip => vec![(0, shader.voxel_bits as usize)],
-                Mode::Xray => vec![(0, 32)],
-                Mode::Composite | Mode::FirstOpaque => (0..4)
-                    .map(|c| (16 * c, shader.rgba_bits as usize))
-                    .collect(),
-            },
-            reset: golden_model::cube4l::compositor::reset_value(shader.mode, shader.voxel_bits),
-        })
     }
 
-    /// Stored bits of a composited word (`ring_fields`).
+    /// Stored bits of a composited word ([`PipelineConfig::ring_fields`]).
     pub fn word_bits(&self) -> u64 {
-        self.ring_fields.iter().map(|f| f.1 as u64).sum()
+        self.ring_fields().iter().map(|f| f.1 as u64).sum()
     }
 
-    /// Whether a tap the 2x2 selection can pick reads row y - 1.
-    pub fn reads_row_below(&self) -> bool {
-        (0..9).any(|t| self.taps_used[t] && TAPS[t].1 == -1)
-    }
-
-    /// The clocks tap `tap`'s value waits after the lane's result (`E` in
-    /// `buffer_rows`).
-    pub fn tap_wait(&self, tap: usize) -> u32 {
-        let t = &self.taps[tap];
-        t.delay - t.hops - RESULT_AT
-    }
-
-    /// Clocks from the result to row `e_y`'s first register (`R(e_y)`).
-    pub fn row_wait(&self, ey: i32) -> u32 {
-        (self.slice_beats as i32 - ey * self.beam_beats as i32) as u32 - RESULT_AT - 4
-    }
-
-    /// The history's ring and two beam lines, in clocks: row y-1's line is
-    /// a register (length 1) when no tap the 2x2 can select reads that row.
+    /// The history's ring and two beam lines, at their longest (a slice of
+    /// `max_dim` beams of the most partial beams): the ring holds
+    /// `S - B - RESULT_AT - 4` words of a view, the lines `B`.
     pub fn history_lines(&self) -> [u32; 3] {
-        let below = if self.reads_row_below() {
-            self.beam_beats
-        } else {
-            1
-        };
-        [self.row_wait(1), self.beam_beats, below]
+        let (s, b) = (self.slice_beats(), self.beam_beats());
+        [s - b - RESULT_AT - 4, b, b]
     }
 
-    /// Every delay line of a lane, in clocks, with its word bits.
+    /// Every delay line of a lane at its longest, with its word bits.
     fn lines(&self) -> Vec<(u32, u64)> {
         let mut v: Vec<(u32, u64)> = self
             .history_lines()
             .iter()
             .map(|&l| (l, self.word_bits()))
             .collect();
-        if self.gradient {
+        if self.gradient() {
             v.extend(
-                abc_gradient::line_lengths(self.slice_beats, self.beam_beats)
+                abc_gradient::line_lengths(self.slice_beats(), self.beam_beats())
                     .iter()
                     .map(|&l| (l, self.voxel_bits as u64)),
             );
@@ -312,13 +469,13 @@ impl PipelineConfig {
         self.p as u64 * lane
     }
 
-    /// The least the scene's buffers can hold (Tables 1 and 2 of the paper):
-    /// one slice of composited words, and with gradients two slices of
-    /// voxels, for the pipeline-space slice `n_x * n_y`.
+    /// The least the largest volume's buffers can hold (Tables 1 and 2 of
+    /// the paper): one slice of composited words, and with gradients two
+    /// slices of voxels, for the pipeline-space slice `n_x * n_y`.
     pub fn minimum_buffer_bits(&self) -> u64 {
-        let slice = self.cfb.dims[0] as u64 * self.cfb.dims[1] as u64;
+        let slice = self.max_dim as u64 * self.max_dim as u64;
         slice * self.word_bits()
-            + if self.gradient {
+            + if self.gradient() {
                 2 * slice * self.voxel_bits as u64
             } else {
                 0

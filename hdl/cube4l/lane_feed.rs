@@ -19,8 +19,10 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct LaneFeed<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The `Beats` register (the gradient unit's line lengths).
+    pub beats: Signal<In, Bits<64>>,
     /// The CFB lane's outputs (as `PipeLane`'s ports; the control is the
-    /// late CFB's when the scene has gradients).
+    /// late CFB's when the configuration has a gradient unit).
     pub beat_valid: Signal<In, Bit>,
     pub value: Signal<In, Bits<16>>,
     pub x: Signal<In, Bits<16>>,
@@ -88,6 +90,7 @@ impl<const H: usize> LaneFeed<H> {
     pub fn new(c: &PipelineConfig) -> LaneFeed<H> {
         LaneFeed {
             clock: Default::default(),
+            beats: Default::default(),
             beat_valid: Default::default(),
             value: Default::default(),
             x: Default::default(),
@@ -139,8 +142,8 @@ impl<const H: usize> LaneFeed<H> {
             gy_mag: Default::default(),
             gz_neg: Default::default(),
             gz_mag: Default::default(),
-            abc: AbcGradient::new(c.slice_beats, c.beam_beats, c.p, c.voxel_bits, c.gradient),
-            use_gradient: Constant::new(c.gradient),
+            abc: AbcGradient::new(c),
+            use_gradient: Constant::new(c.gradient()),
         }
     }
 }
@@ -150,6 +153,7 @@ impl<const H: usize> Logic for LaneFeed<H> {
     fn update(&mut self) {
         // ABC gradient unit: fed by the CFB, linked to the neighbours.
         self.abc.clock.next = self.clock.val();
+        self.abc.beats.next = self.beats.val();
         self.abc.value.next = self.value.val();
         self.abc.x.next = self.x.val();
         self.abc.from_left_xm.next = self.g_from_left_xm.val();

@@ -28,5 +28,5 @@ pub mod pipeline;
 pub mod select2x2;
 pub mod tap_network;
 
-pub use config::{CfbConfig, PipelineConfig};
+pub use config::PipelineConfig;
 pub use pipeline::Pipeline;

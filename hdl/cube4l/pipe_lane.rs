@@ -11,11 +11,11 @@ use super::control_delay::ControlDelay;
 use super::lane_feed::LaneFeed;
 use super::select2x2::Select2x2;
 use super::tap_network::TapNetwork;
+use crate::common::mode_class::ModeClass;
 use crate::common::regs::ADDRESS_BITS;
 use crate::common::shader::Shader;
 use golden_model::host::ShaderTables;
 use rust_hdl::prelude::*;
-use scene::Mode;
 
 /// One pipeline after the CFB: input selection ([`LaneFeed`], with the ABC
 /// gradient unit), shader, the compositing-buffer taps ([`TapNetwork`]),
@@ -28,6 +28,10 @@ pub struct PipeLane<const H: usize> {
     pub host_write: Signal<In, Bit>,
     pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
     pub host_data: Signal<In, Bits<64>>,
+    /// The view registers the lane reads: `Dims`, `Beats` and `Order`.
+    pub dims: Signal<In, Bits<64>>,
+    pub beats: Signal<In, Bits<64>>,
+    pub order: Signal<In, Bits<64>>,
     /// The CFB lane's outputs: the live voxel, and its control, or with a
     /// gradient unit the late CFB's control for the voxel a slice back.
     pub beat_valid: Signal<In, Bit>,
@@ -117,8 +121,11 @@ impl<const H: usize> PipeLane<H> {
         (self.taps.memory_bits() + self.feed.memory_bits()) as u64
     }
 
-    pub fn new(c: &PipelineConfig, shader: Shader, mode: Mode) -> PipeLane<H> {
+    pub fn new(c: &PipelineConfig, shader: Shader) -> PipeLane<H> {
         PipeLane {
+            dims: Default::default(),
+            beats: Default::default(),
+            order: Default::default(),
             clock: Default::default(),
             host_write: Default::default(),
             host_address: Default::default(),
@@ -186,9 +193,9 @@ impl<const H: usize> PipeLane<H> {
             shader,
             ctl: Default::default(),
             taps: TapNetwork::new(c),
-            cells: Select2x2::new(c, mode),
-            bilinear: Bilinear::new(c.frac_bits, mode == Mode::Xray),
-            compositor: Compositor::new(mode, c.order, c.rgba_bits),
+            cells: Select2x2::new(c),
+            bilinear: Bilinear::new(c.frac_bits, c.mode == ModeClass::Xray),
+            compositor: Compositor::new(c.mode, c.rgba_bits),
         }
     }
 }
@@ -198,6 +205,7 @@ impl<const H: usize> Logic for PipeLane<H> {
     fn update(&mut self) {
         // Input selection (T-1): the CFB's beat, or the gradient unit's.
         self.feed.clock.next = self.clock.val();
+        self.feed.beats.next = self.beats.val();
         self.feed.beat_valid.next = self.beat_valid.val();
         self.feed.value.next = self.value.val();
         self.feed.x.next = self.x.val();
@@ -258,6 +266,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.dy_mag.next = self.feed.o_dy_mag.val();
         // The compositing-buffer taps (T).
         self.taps.clock.next = self.clock.val();
+        self.taps.beats.next = self.beats.val();
         self.taps.x.next = self.ctl.x_t.val();
         self.t0s0.next = self.taps.t0s0.val();
         self.taps.t0i1.next = self.t0i1.val();
@@ -286,6 +295,8 @@ impl<const H: usize> Logic for PipeLane<H> {
         for c in 0..9 {
             self.cells.a[c].next = self.taps.a[c].val();
         }
+        self.cells.dims.next = self.dims.val();
+        self.cells.order.next = self.order.val();
         self.cells.x.next = self.ctl.x_t.val();
         self.cells.y.next = self.ctl.y_t.val();
         self.cells.sr.next = self.ctl.sr_t.val();
@@ -305,6 +316,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.bilinear.wy.next = self.ctl.dy_mag_t.val();
         // Compositing unit (T+L -> the result).
         self.compositor.clock.next = self.clock.val();
+        self.compositor.order.next = self.order.val();
         self.compositor.acc_r.next = self.bilinear.out[0].val();
         self.compositor.acc_g.next = bit_cast::<16, 32>(self.bilinear.out[1].val());
         self.compositor.acc_b.next = bit_cast::<16, 32>(self.bilinear.out[2].val());

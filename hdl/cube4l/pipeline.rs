@@ -1,5 +1,5 @@
 //! The Cube-4L rendering pipelines (§3, Figs. 4, 6, 18-21): the CFB feeds
-//! `P` pipelines, each with the ABC gradient unit (when the scene shades), a
+//! `P` pipelines, each with the ABC gradient unit (when the configuration shades), a
 //! shader, a compositing-buffer history, the bilinear unit and the
 //! compositing unit. Pipelines talk only to their nearest neighbours.
 //!
@@ -20,12 +20,13 @@
 //! 3x3 region to 2x2 (Figs. 19-21). Cells outside the slice, and every cell at
 //! the start of a ray (SR), read as the reset value.
 //!
-//! **Timing.** Shader input at T-1 (the CFB's output, or the gradient unit's a
-//! slice later), shader register at T, gather at T, the bilinear unit
-//! T..T+L (`bilinear::LATENCY`, pipelined for speed), compositor register at
-//! T+L+1 ([`RESULT_AT`]), where the result enters the lane's history and, on
-//! ER, goes out as a base-plane pixel. The history's ring needs at least
-//! one word: (n_y - 1) * b >= L + 6.
+//! **Timing.** Shader input at T-1-G (the CFB's output, or the gradient
+//! unit's a slice later; G = `GATHER_DELAY`), gather at T, the bilinear unit
+//! T..T+L (`bilinear::LATENCY`, pipelined for speed), the shader's sample at
+//! T+L (`shader::LATENCY` after its input), compositor register at T+L+1
+//! (`config::RESULT_AT`), where the result enters the lane's history and, on ER,
+//! goes out as a base-plane pixel. The history's ring needs at least one
+//! word: (n_y - 1) * b >= L + 6.
 //!
 //! **Lane.** [`PipeLane`] wires its blocks in this order: the input
 //! selection ([`LaneFeed`], which holds the ABC gradient unit), the shader,
@@ -39,20 +40,26 @@
 //! started S + 1 clocks after the CFB, so the control of the voxel leaving
 //! the gradient unit is recomputed rather than stored a slice long.
 //!
-//! Units a scene does not need are built disabled, with empty tables and
-//! one-register delay lines, and drive zero; `export::prune` removes them
-//! from the emitted Verilog (see `export::left_out`). The delay lines are
-//! exactly as long as their delays and store only the bits the mode can set
-//! (`PipelineConfig::ring_fields`); when no tap the 2x2 selection can pick
-//! looks at row y - 1 (parallel views, `PipelineConfig::taps_used`), that
-//! row's beam-length line is a register.
+//! **Registers.** The view is a register file the host writes through the
+//! host port before a sweep (`golden_model::cube4l::regs::ViewRegs`; the
+//! map is `golden_model::host::Reg`), as are the shader's light and tables:
+//! one build renders every view of its configuration. The delay lines are
+//! built for the configuration's largest slice and take their lengths from
+//! the `Beats` register.
+//!
+//! Units a configuration does not need are built disabled, with empty
+//! tables and one-register delay lines, and drive zero; the export prunes
+//! them from the emitted Verilog (`cosim::cube4l::left_out`). The delay
+//! lines store only the bits the mode can set
+//! (`PipelineConfig::ring_fields`).
 
 use super::cfb::Cfb;
-use super::config::{CfbConfig, PipelineConfig};
+use super::config::PipelineConfig;
 use super::pipe_lane::PipeLane;
-use crate::common::regs::ADDRESS_BITS;
+use crate::common::regs::{Regs, ADDRESS_BITS};
 use crate::common::shader::{Shader, ShaderConfig};
-use golden_model::host::ShaderTables;
+use golden_model::cube4l::regs::REGS;
+use golden_model::host::{Reg, ShaderTables};
 use rust_hdl::prelude::*;
 
 /// The whole Cube-4L pipeline: CFB and `P` pipelines (`A`-bit memory
@@ -91,6 +98,8 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub res_beat: [Signal<Out, Bit>; P],
     pub res_valid: [Signal<Out, Bit>; P],
     pub res: [Signal<Out, Bits<64>>; P],
+    /// The view registers (`golden_model::cube4l::regs::REGS`).
+    view: Regs<11>,
     cfb: Cfb<P, A>,
     lanes: [PipeLane<H>; P],
     /// With a gradient unit: the CFB's address generator again, without
@@ -99,17 +108,13 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     /// rather than stored.
     late: Cfb<P, A>,
     late_wait: DFF<Bits<32>>,
-    late_delay: Constant<Bits<32>>,
     gradient: Constant<Bit>,
 }
 
 impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
-    /// Build the pipeline for one sweep; `golden` is the golden model's
-    /// shader of that sweep, whose LUTs the hardware copies.
-    pub fn new(
-        config: &PipelineConfig,
-        golden: &golden_model::cube4l::shader::Shader,
-    ) -> Result<Pipeline<P, A, H>, String> {
+    /// Build the pipeline of configuration `config`.
+    pub fn new(config: &PipelineConfig) -> Result<Pipeline<P, A, H>, String> {
+        config.validate()?;
         if config.p as usize != P {
             return Err(format!(
                 "configuration for {} pipelines, built with {P}",
@@ -122,31 +127,31 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
                 config.history_bits()
             ));
         }
-        if !config.cfb.external_memory && config.cfb.memory_bits as usize > A {
+        if !config.external_memory() && config.memory_bits() as usize > A {
             return Err(format!(
                 "{}-bit memory modules needed, built with {A}: use external memory",
-                config.cfb.memory_bits
+                config.memory_bits()
             ));
         }
-        let shading = ShaderConfig::of(
-            &golden.tables(),
-            golden.voxel_bits,
-            golden.needs_gradient,
-            false,
-        );
+        let shading = ShaderConfig {
+            mode: config.mode.mode(),
+            voxel_bits: config.voxel_bits,
+            rgba_bits: config.rgba_bits,
+            lighting: config.shading,
+            gradient_opacity: config.gradient_opacity,
+            needs_gradient: config.gradient(),
+            wide: false,
+        };
         let mut lanes = Vec::with_capacity(P);
         for _ in 0..P {
-            lanes.push(PipeLane::new(config, Shader::new(&shading), golden.mode));
+            lanes.push(PipeLane::new(config, Shader::new(&shading)));
         }
         let lanes = lanes
             .into_boxed_slice()
             .try_into()
             .unwrap_or_else(|_| unreachable!());
-        let cfb = Box::new(Cfb::new(&config.cfb));
-        let late = Box::new(Cfb::new(&CfbConfig {
-            external_memory: true,
-            ..config.cfb
-        }));
+        let cfb = Box::new(Cfb::new(config, config.external_memory()));
+        let late = Box::new(Cfb::new(config, true));
         Ok(Self::with_lanes(config, lanes, cfb, late))
     }
 
@@ -208,12 +213,12 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             res_beat: std::array::from_fn(|_| Default::default()),
             res_valid: std::array::from_fn(|_| Default::default()),
             res: std::array::from_fn(|_| Default::default()),
+            view: Regs::new(REGS.map(Reg::address)),
             cfb: *cfb,
             lanes: *lanes,
             late: *late,
             late_wait: Default::default(),
-            late_delay: Constant::new(((config.slice_beats + 1) as u64).to_bits()),
-            gradient: Constant::new(config.gradient),
+            gradient: Constant::new(config.gradient()),
         }
     }
 }
@@ -222,6 +227,31 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, late_wait);
+        // The view registers, to both CFBs and every lane.
+        self.view.clock.next = self.clock.val();
+        self.view.host_write.next = self.host_write.val();
+        self.view.host_address.next = self.host_address.val();
+        self.view.host_data.next = self.host_data.val();
+        self.cfb.dims.next = self.view.q[0].val();
+        self.cfb.slices.next = self.view.q[1].val();
+        self.cfb.axes.next = self.view.q[2].val();
+        self.cfb.address_reg.next = self.view.q[3].val();
+        self.cfb.dx.next = self.view.q[4].val();
+        self.cfb.dy.next = self.view.q[5].val();
+        self.cfb.eye_x.next = self.view.q[6].val();
+        self.cfb.eye_y.next = self.view.q[7].val();
+        self.cfb.eye_z.next = self.view.q[8].val();
+        self.cfb.beats.next = self.view.q[9].val();
+        self.late.dims.next = self.view.q[0].val();
+        self.late.slices.next = self.view.q[1].val();
+        self.late.axes.next = self.view.q[2].val();
+        self.late.address_reg.next = self.view.q[3].val();
+        self.late.dx.next = self.view.q[4].val();
+        self.late.dy.next = self.view.q[5].val();
+        self.late.eye_x.next = self.view.q[6].val();
+        self.late.eye_y.next = self.view.q[7].val();
+        self.late.eye_z.next = self.view.q[8].val();
+        self.late.beats.next = self.view.q[9].val();
         self.cfb.clock.next = self.clock.val();
         self.cfb.start.next = self.start.val();
         self.cfb.load_enable.next = self.load_enable.val();
@@ -236,7 +266,7 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
         // The late CFB starts S + 1 clocks after the CFB took its start.
         self.late_wait.d.next = self.late_wait.q.val();
         if self.start.val() & !self.cfb.busy.val() {
-            self.late_wait.d.next = self.late_delay.val();
+            self.late_wait.d.next = self.view.q[9].val().get_bits::<32>(0) + 1;
         } else if self.late_wait.q.val() != 0 {
             self.late_wait.d.next = self.late_wait.q.val() - 1;
         }
@@ -252,6 +282,9 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].host_write.next = self.host_write.val();
             self.lanes[k].host_address.next = self.host_address.val();
             self.lanes[k].host_data.next = self.host_data.val();
+            self.lanes[k].dims.next = self.view.q[0].val();
+            self.lanes[k].beats.next = self.view.q[9].val();
+            self.lanes[k].order.next = self.view.q[10].val();
             self.cfb.ext_data[k].next = self.ext_data[k].val();
             self.ext_addr[k].next = self.cfb.ext_addr[k].val();
             self.px_valid[k].next = self.lanes[k].px_valid.val();

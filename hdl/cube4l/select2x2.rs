@@ -7,11 +7,13 @@
 //! `golden_model::cube4l::compositor::gather`; with dx = 0 (dy = 0) the
 //! x (y) neighbour is the voxel's own cell, whose weight is 0. A neighbour
 //! outside the slice, and every cell at the start of a ray (SR), reads as
-//! the reset value.
+//! the reset value (the intensity's maximum for MinIP, else 0). The slice's
+//! size and MinIP come from the `Dims` and `Order` registers.
 
-use super::config::{pack, PipelineConfig};
+use super::config::PipelineConfig;
+use crate::common::mode_class::ModeClass;
+use golden_model::fixed::max_of;
 use rust_hdl::prelude::*;
-use scene::Mode;
 
 /// The 2x2 selection for one lane.
 #[derive(LogicBlock)]
@@ -32,9 +34,14 @@ pub struct Select2x2 {
     pub c10: [Signal<Out, Bits<32>>; 4],
     pub c01: [Signal<Out, Bits<32>>; 4],
     pub c11: [Signal<Out, Bits<32>>; 4],
-    nx_last: Constant<Bits<16>>,
-    ny_last: Constant<Bits<16>>,
-    reset: Constant<Bits<64>>,
+    /// The `Dims` and `Order` registers.
+    pub dims: Signal<In, Bits<64>>,
+    pub order: Signal<In, Bits<64>>,
+    nx_last: Signal<Local, Bits<16>>,
+    ny_last: Signal<Local, Bits<16>>,
+    reset: Signal<Local, Bits<64>>,
+    /// MinIP's reset value: the largest intensity.
+    vmax: Constant<Bits<64>>,
     /// Channel masks of the packed word: X-ray keeps a 32-bit sum in channel
     /// 0 and nothing else.
     r_mask: Constant<Bits<64>>,
@@ -48,8 +55,8 @@ pub struct Select2x2 {
 }
 
 impl Select2x2 {
-    pub fn new(c: &PipelineConfig, mode: Mode) -> Select2x2 {
-        let xray = mode == Mode::Xray;
+    pub fn new(c: &PipelineConfig) -> Select2x2 {
+        let xray = c.mode == ModeClass::Xray;
         Select2x2 {
             a: Default::default(),
             x: Default::default(),
@@ -63,9 +70,12 @@ impl Select2x2 {
             c10: Default::default(),
             c01: Default::default(),
             c11: Default::default(),
-            nx_last: Constant::new(((c.cfb.dims[0] - 1) as u64).to_bits()),
-            ny_last: Constant::new(((c.cfb.dims[1] - 1) as u64).to_bits()),
-            reset: Constant::new(pack(c.reset).to_bits()),
+            dims: Default::default(),
+            order: Default::default(),
+            nx_last: Default::default(),
+            ny_last: Default::default(),
+            reset: Default::default(),
+            vmax: Constant::new((max_of(c.voxel_bits) as u64).to_bits()),
             r_mask: Constant::new((if xray { 0xffff_ffffu64 } else { 0xffff }).to_bits()),
             gba_mask: Constant::new((if xray { 0u64 } else { 0xffff }).to_bits()),
             w00: Default::default(),
@@ -81,6 +91,12 @@ impl Select2x2 {
 impl Logic for Select2x2 {
     #[hdl_gen]
     fn update(&mut self) {
+        self.nx_last.next = self.dims.val().get_bits::<16>(0) - 1;
+        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.reset.next = 0.into();
+        if self.order.val().get_bit(1) {
+            self.reset.next = self.vmax.val();
+        }
         // The packed words: the voxel's own cell, then its neighbours.
         self.w00.next = self.a[0].val();
         self.w10.next = self.a[0].val();

@@ -21,6 +21,8 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct TapNetwork<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The `Beats` register (the history's line lengths).
+    pub beats: Signal<In, Bits<64>>,
     /// The voxel's x at T (for the partial-beam ends).
     pub x: Signal<In, Bits<16>>,
     /// The lane's composited value (T + `RESULT_AT`) and its beat flag.
@@ -76,8 +78,10 @@ impl<const H: usize> TapNetwork<H> {
     }
 
     pub fn new(c: &PipelineConfig) -> TapNetwork<H> {
+        let taps = c.taps();
         TapNetwork {
             clock: Default::default(),
+            beats: Default::default(),
             x: Default::default(),
             res: Default::default(),
             res_beat: Default::default(),
@@ -106,16 +110,16 @@ impl<const H: usize> TapNetwork<H> {
             t8il: Default::default(),
             a: Default::default(),
             rows: BufferRows::new(c),
-            t0: BufferTap::new(&c.taps[0]),
-            t1: BufferTap::new(&c.taps[1]),
-            t2: BufferTap::new(&c.taps[2]),
-            t3: BufferTap::new(&c.taps[3]),
-            t4: BufferTap::new(&c.taps[4]),
-            t5: BufferTap::new(&c.taps[5]),
-            t6: BufferTap::new(&c.taps[6]),
-            t7: BufferTap::new(&c.taps[7]),
-            t8: BufferTap::new(&c.taps[8]),
-            left8: Constant::new(c.taps[8].left),
+            t0: BufferTap::new(&taps[0]),
+            t1: BufferTap::new(&taps[1]),
+            t2: BufferTap::new(&taps[2]),
+            t3: BufferTap::new(&taps[3]),
+            t4: BufferTap::new(&taps[4]),
+            t5: BufferTap::new(&taps[5]),
+            t6: BufferTap::new(&taps[6]),
+            t7: BufferTap::new(&taps[7]),
+            t8: BufferTap::new(&taps[8]),
+            left8: Constant::new(taps[8].left),
             p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
             first: Default::default(),
             last: Default::default(),
@@ -128,6 +132,7 @@ impl<const H: usize> Logic for TapNetwork<H> {
     fn update(&mut self) {
         // The lane's history, read once.
         self.rows.clock.next = self.clock.val();
+        self.rows.beats.next = self.beats.val();
         self.rows.res.next = self.res.val();
         self.rows.res_beat.next = self.res_beat.val();
         // Partial-beam ends.

@@ -23,6 +23,8 @@ use std::sync::{Arc, Mutex};
 const MODE: Mode = Mode::Composite;
 const ORDER: Order = Order::FrontToBack;
 const BITS: u32 = 8;
+/// The `Order` register's word: front to back (bit 0), MinIP (bit 1).
+const ORDER_WORD: u64 = matches!(ORDER, Order::FrontToBack) as u64;
 
 /// One clock's operands: the accumulated colour, the new sample and its
 /// validity.
@@ -54,7 +56,8 @@ fn golden((acc, new, valid): Operands) -> [u32; 4] {
 
 fn main() {
     let vs = operands(1000);
-    let mut uut = hdl::cube4l::compositor::Compositor::new(MODE, ORDER, BITS);
+    let class = hdl::common::mode_class::ModeClass::of(MODE);
+    let mut uut = hdl::cube4l::compositor::Compositor::new(class, BITS);
     uut.connect_all();
     let verilog = generate_verilog(&uut);
 
@@ -68,6 +71,7 @@ fn main() {
     });
     sim.add_testbench(move |mut sim: Sim<hdl::cube4l::compositor::Compositor>| {
         let mut x = sim.init()?;
+        x.order.next = ORDER_WORD.to_bits();
         for &(acc, new, valid) in &tb {
             x.acc_r.next = (acc[0] as u64).to_bits();
             x.acc_g.next = (acc[1] as u64).to_bits();
@@ -100,14 +104,14 @@ fn main() {
     );
 
     // The emitted Verilog under Icarus: inputs in port order (acc_r, acc_g,
-    // acc_b, acc_a, new_r, ..., new_valid), outputs after each edge.
+    // acc_b, acc_a, new_r, ..., new_valid, order), outputs after each edge.
     let vectors: Vec<Vec<u64>> = vs
         .iter()
         .map(|(acc, new, valid)| {
             acc.iter()
                 .chain(new)
                 .map(|&v| v as u64)
-                .chain([*valid as u64])
+                .chain([*valid as u64, ORDER_WORD])
                 .collect()
         })
         .collect();

@@ -285,7 +285,10 @@ pub fn emitted_sweep(scene: &Scene, vol: &Volume) -> EmittedSweep {
     use cosim::arch::Arch;
     use cosim::cube4l::Cube4l;
     let cam = scene.camera().unwrap();
-    let part = Cube4l::parts(scene, &cam, vol.dims).unwrap().remove(0);
+    let build = Cube4l::needs(scene, &cam, vol.dims).unwrap();
+    let part = Cube4l::parts(scene, &cam, vol.dims, &build)
+        .unwrap()
+        .remove(0);
     let modules = Cube4l::modules(&part, vol);
     let verilog = Cube4l::verilog(&part, Some(&modules)).unwrap();
     EmittedSweep { part, verilog }

@@ -106,8 +106,13 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     let rows = "top$lanes$0$taps$rows";
     let pick0 = line_of(&verilog, rows, "localparam  pick$0");
     // With a gradient unit the lanes' control comes from the late CFB.
-    let ctl = if config.gradient { "late" } else { "cfb" };
-    let (used, other) = if config.taps_used[5] { (5, 7) } else { (7, 5) };
+    let ctl = if config.gradient() { "late" } else { "cfb" };
+    // Tap (e_x, e_y) serves x - sign(dx), y - sign(dy): tap 5 is (-1, -1),
+    // tap 7 is (-1, 1).
+    let (used, other) = match sweep.rays {
+        golden_model::cube4l::plan::Rays::Parallel { dy, .. } if dy < 0 => (7, 5),
+        _ => (5, 7),
+    };
     let x_tap = match sweep.rays {
         golden_model::cube4l::plan::Rays::Parallel { dx, .. } if dx < 0 => 2,
         _ => 1,

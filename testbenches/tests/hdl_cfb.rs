@@ -1,18 +1,39 @@
 //! `hdl::cube4l::cfb` against `golden_model::cube4l::cfb::CfbStream`: the memory is loaded
-//! through the load port, then every beat of the sweep is compared lane by
-//! lane, cycle by cycle, in rust-hdl simulation.
+//! through the load port, the view's registers are set
+//! (`golden_model::cube4l::regs::ViewRegs`), then every beat of the sweep
+//! is compared lane by lane, cycle by cycle, in rust-hdl simulation. One
+//! CFB serves every view of a test: it is built for the largest volume the
+//! test uses.
 
 use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
-use golden_model::cube4l::plan::Plan;
+use golden_model::cube4l::plan::{Plan, Rays};
+use golden_model::cube4l::regs::ViewRegs;
+use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::{
     cfb::{face_code, Cfb},
-    CfbConfig,
+    config::ADDRESS_STAGES,
+    PipelineConfig,
 };
 use rust_hdl::prelude::*;
 use scene::volume::builtin;
 use testbenches::{require_tool, run_sim, scene};
 
 const A: usize = 12;
+
+/// The CFB of a build for volumes of up to 16 voxels a side.
+fn build(p: usize, perspective: bool, frac_bits: u32) -> PipelineConfig {
+    PipelineConfig {
+        p: p as u32,
+        mode: ModeClass::Over,
+        shading: false,
+        gradient_opacity: false,
+        perspective,
+        max_dim: 16,
+        voxel_bits: 8,
+        rgba_bits: 8,
+        frac_bits,
+    }
+}
 
 fn views() -> [&'static str; 8] {
     [
@@ -66,11 +87,13 @@ fn run_sweep_memory<const P: usize>(
         "test volume too large for {A} address bits"
     );
     let beats: Vec<_> = CfbStream::new(&mem, vol.dims, sweep).collect();
-    let config = CfbConfig {
-        external_memory: external,
-        ..CfbConfig::from_sweep(sweep, vol.dims, P).unwrap()
-    };
-    let mut uut = Cfb::<P, A>::new(&config);
+    let config = build(
+        P,
+        matches!(sweep.rays, Rays::Perspective { .. }),
+        sweep.frac,
+    );
+    let words = ViewRegs::new(sweep, vol.dims, P, false, scene::Mode::Composite).words();
+    let mut uut = Cfb::<P, A>::new(&config, external);
     uut.connect_all();
     let mut sim = Simulation::new();
     sim.add_clock(5, |x: &mut Box<Cfb<P, A>>| x.clock.next = !x.clock.val());
@@ -79,6 +102,17 @@ fn run_sweep_memory<const P: usize>(
     let label_for_vcd = label.clone();
     sim.add_testbench(move |mut sim: Sim<Cfb<P, A>>| {
         let mut x = sim.init()?;
+        // The view's registers (the pipeline's register file drives them).
+        x.dims.next = words[0].to_bits();
+        x.slices.next = words[1].to_bits();
+        x.axes.next = words[2].to_bits();
+        x.address_reg.next = words[3].to_bits();
+        x.dx.next = words[4].to_bits();
+        x.dy.next = words[5].to_bits();
+        x.eye_x.next = words[6].to_bits();
+        x.eye_y.next = words[7].to_bits();
+        x.eye_z.next = words[8].to_bits();
+        x.beats.next = words[9].to_bits();
         // Load the skewed memory, one word per clock (the internal memory).
         for (k, module) in modules.iter().enumerate().filter(|_| !external) {
             for (i, &v) in module.iter().enumerate() {
@@ -154,8 +188,13 @@ fn run_sweep_memory<const P: usize>(
         }
         // One beat per clock with no gaps: counted from the clock after the
         // start pulse is registered (the RAM read latency overlaps it), the
-        // last beat is out after exactly as many clocks as there are beats.
-        assert_eq!(cycles, beats.len() as u64, "{label}: clocks per sweep");
+        // last beat is out after as many clocks as there are beats, and the
+        // address stages.
+        assert_eq!(
+            cycles,
+            beats.len() as u64 + ADDRESS_STAGES as u64,
+            "{label}: clocks per sweep"
+        );
         sim.done(x)
     });
     run_sim(
@@ -206,8 +245,7 @@ fn cfb_verilog_passes_yosys() {
         r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [8, 8]}"#,
     );
     let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
-    let config = CfbConfig::from_sweep(&plan.sweeps[0], [16, 16, 16], 4).unwrap();
-    let mut uut = Cfb::<4, 10>::new(&config);
+    let mut uut = Cfb::<4, 10>::new(&build(4, false, plan.sweeps[0].frac), false);
     uut.connect_all();
     yosys_validate("cfb", &generate_verilog(&uut))
         .unwrap_or_else(|e| panic!("yosys rejects the CFB: {e:?}"));

@@ -5,6 +5,7 @@
 
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan};
+use golden_model::cube4l::regs::ViewRegs;
 use golden_model::cube4l::shader::Shader as GoldenShader;
 use hdl::cube4l::{config::unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
@@ -74,8 +75,9 @@ fn run_sweep<const P: usize>(
     let golden = GoldenShader::new(s, cam, sweep);
     let mode = golden.mode;
     let (base, results) = stream_results(vol, sweep, &golden, P);
-    let config = PipelineConfig::new(sweep, vol.dims, P, &golden).unwrap();
-    let mut uut = Pipeline::<P, A, H>::new(&config, &golden).unwrap();
+    let config = PipelineConfig::for_view(sweep, vol.dims, P, &golden);
+    config.validate().unwrap();
+    let mut uut = Pipeline::<P, A, H>::new(&config).unwrap();
     assert_eq!(
         uut.buffer_bits(),
         config.buffer_bits(),
@@ -84,11 +86,12 @@ fn run_sweep<const P: usize>(
     let mem = SkewedMemory::new(vol, P);
     assert!(mem.modules[0].len() <= 1 << A);
     uut.preload(&mem.modules);
-    // Tables preloaded as a bitstream would hold them; the registers
-    // written through the host port before `start`.
+    // Tables preloaded as a bitstream would hold them; the shader's and
+    // the view's registers written through the host port before `start`.
     let tables = golden.tables();
     uut.preload_tables(&tables);
-    let loads = tables.register_writes();
+    let view = ViewRegs::new(sweep, vol.dims, P, config.gradient(), s.mode);
+    let loads = [tables.register_writes(), view.writes()].concat();
     uut.connect_all();
     let expected_pixels = base.faces.iter().filter(|f| **f != Face::None).count();
     let beats = results.len();
@@ -264,14 +267,15 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 9 clocks of fill: the start register, the
-    // block-RAM read, the shader's input register, one clock of gather delay
+    // One beat per clock plus 12 clocks of fill: the start register, the
+    // CFB's three address stages, the block-RAM read, the shader's input
+    // register, one clock of gather delay
     // (the shader's 7 stages less the bilinear unit's 5, less the input
     // register) and the bilinear unit's five stages (the compositor register
     // ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 9,
+        ideal + 12,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }
@@ -285,8 +289,8 @@ fn pipeline_verilog_passes_yosys() {
     let cam = s.camera().unwrap();
     let plan = Plan::new(&s, &cam).unwrap();
     let golden = GoldenShader::new(&s, &cam, &plan.sweeps[0]);
-    let config = PipelineConfig::new(&plan.sweeps[0], [16, 16, 16], 2, &golden).unwrap();
-    let mut uut = Pipeline::<2, 11, 10>::new(&config, &golden).unwrap();
+    let config = PipelineConfig::for_view(&plan.sweeps[0], [16, 16, 16], 2, &golden);
+    let mut uut = Pipeline::<2, 11, 10>::new(&config).unwrap();
     uut.connect_all();
     yosys_validate("pipeline", &generate_verilog(&uut))
         .unwrap_or_else(|e| panic!("yosys rejects the pipeline: {e:?}"));

@@ -2,6 +2,7 @@
 //! pipeline (the suite's one placed and routed design; the committed
 //! configurations go through `scripts/synth-reports`).
 
+use cosim::arch::Arch;
 use cosim::cube4l::Cube4l;
 use cosim::synth::{parse_stat, synthesize, Target};
 use hdl::cube4l::config::frame_clocks;
@@ -27,15 +28,10 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     );
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mip");
-    let m = cosim::export::write_export::<Cube4l>(
-        "mip.json",
-        &s,
-        &s.camera().unwrap(),
-        s.volume.dims,
-        &out,
-    )
-    .unwrap();
-    let files: Vec<String> = m["sweeps"][0]["files"]
+    let camera = s.camera().unwrap();
+    let build = Cube4l::needs(&s, &camera, s.volume.dims).unwrap();
+    let m = cosim::export::write_export::<Cube4l>(&out, &build, None).unwrap();
+    let files: Vec<String> = m["designs"][0]["files"]
         .as_array()
         .unwrap()
         .iter()
@@ -78,6 +74,6 @@ fn stat_parsing_and_frame_clocks() {
     assert_eq!(types["LUT4"], 486);
     assert_eq!(types.len(), 2);
     // 256 slices of 256 beams of 64 partial beams, one gradient slice, fill.
-    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 10);
-    assert_eq!(frame_clocks(8, 1, false), 512 + 9);
+    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 13);
+    assert_eq!(frame_clocks(8, 1, false), 512 + 12);
 }

@@ -1,10 +1,12 @@
-//! `generated_verilog/` against a fresh `cube verilog` export, and every
-//! committed file through `verilator --lint-only -Wall` and `iverilog`.
+//! `generated_verilog/` against a fresh `cube verilog` export of each build
+//! in `generated_verilog/configurations.txt`, the scenes each Cube-4L build
+//! claims to render, and every committed file through `verilator
+//! --lint-only -Wall` and `iverilog`.
 
 use cosim::arch::Arch;
 use cosim::cube3::Cube3;
 use cosim::cube4l::Cube4l;
-use cosim::export::write_export;
+use cosim::export::{write_export, ExportScene};
 use cosim::verilog::lint_waivers;
 use scene::Scene;
 use std::path::{Path, PathBuf};
@@ -15,40 +17,90 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// The committed configurations: (name, scene path), Cube-4L's in
-/// `scenes/verilog/`, Cube-3's in `scenes/verilog/cube3/` (named
-/// `cube3/NAME`, as their directories under `generated_verilog/`).
-fn configs() -> Vec<(String, PathBuf)> {
-    let scenes = |dir: &str, prefix: &str| -> Vec<(String, PathBuf)> {
-        let mut v: Vec<(String, PathBuf)> = std::fs::read_dir(root().join(dir))
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|e| e == "json"))
-            .map(|p| {
-                (
-                    format!("{prefix}{}", p.file_stem().unwrap().to_string_lossy()),
-                    p,
-                )
-            })
-            .collect();
-        v.sort();
-        v
-    };
-    let (cube4l, cube3) = (
-        scenes("scenes/verilog", ""),
-        scenes("scenes/verilog/cube3", "cube3/"),
-    );
-    assert!(
-        cube4l.len() >= 3,
-        "scenes/verilog holds {} configurations",
-        cube4l.len()
-    );
-    assert!(
-        cube3.len() >= 2,
-        "scenes/verilog/cube3 holds {} configurations",
-        cube3.len()
-    );
-    cube4l.into_iter().chain(cube3).collect()
+/// One committed build (a line of `generated_verilog/configurations.txt`):
+/// its directory under `generated_verilog/` (`cube4l/NAME`, `cube3/NAME`),
+/// its architecture, its configuration name or Cube-3 scene, and the scenes
+/// a Cube-4L build renders.
+struct Committed {
+    dir: String,
+    arch: String,
+    what: String,
+    scenes: Vec<String>,
+}
+
+fn configs() -> Vec<Committed> {
+    let list =
+        std::fs::read_to_string(root().join("generated_verilog/configurations.txt")).unwrap();
+    let out: Vec<Committed> = list
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| {
+            let mut w = l.split_whitespace().map(String::from);
+            let (arch, what) = (w.next().unwrap(), w.next().unwrap());
+            let stem = Path::new(&what)
+                .file_stem()
+                .unwrap()
+                .to_string_lossy()
+                .to_string();
+            Committed {
+                dir: format!("{arch}/{stem}"),
+                arch,
+                what,
+                scenes: w.collect(),
+            }
+        })
+        .collect();
+    for arch in ["cube4l", "cube3"] {
+        let n = out.iter().filter(|c| c.arch == arch).count();
+        assert!(n >= 3, "configurations.txt holds {n} {arch} builds");
+    }
+    out
+}
+
+/// Export a committed build afresh into `out`.
+fn export(c: &Committed, out: &Path) {
+    match c.arch.as_str() {
+        "cube4l" => {
+            let build = Cube4l::parse_config(&c.what).unwrap();
+            write_export::<Cube4l>(out, &build, None)
+        }
+        "cube3" => {
+            let path = root().join(&c.what);
+            let scene = Scene::load(&path).unwrap();
+            let camera = scene.camera().unwrap();
+            let dims = scene.volume.render_dims();
+            let build = Cube3::needs(&scene, &camera, dims).unwrap();
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            let s = ExportScene {
+                name: &name,
+                scene: &scene,
+                camera: &camera,
+                dims,
+            };
+            write_export::<Cube3>(out, &build, Some(&s))
+        }
+        a => panic!("configurations.txt: unknown architecture {a}"),
+    }
+    .unwrap();
+}
+
+/// Each Cube-4L build renders the scenes it lists, and what they need is
+/// also the build's: its register file takes their views, tables and light.
+#[test]
+fn each_committed_build_renders_its_scenes() {
+    for c in configs().iter().filter(|c| c.arch == "cube4l") {
+        let build = Cube4l::parse_config(&c.what).unwrap();
+        assert!(!c.scenes.is_empty(), "{}: no scene listed", c.what);
+        for s in &c.scenes {
+            let scene = Scene::load(&root().join(s)).unwrap();
+            let camera = scene.camera().unwrap();
+            let dims = scene.volume.render_dims();
+            let needed = Cube4l::needs(&scene, &camera, dims).unwrap();
+            assert_eq!(Cube4l::refuses(&build, &needed), None, "{}: {s}", c.what);
+            Cube4l::parts(&scene, &camera, dims, &build)
+                .unwrap_or_else(|e| panic!("{}: {s}: {e}", c.what));
+        }
+    }
 }
 
 /// Every file under `dir`, relative to it, sorted.
@@ -72,16 +124,11 @@ fn files_under(dir: &Path) -> Vec<PathBuf> {
 #[test]
 fn committed_verilog_is_fresh() {
     let tmp = tempfile::tempdir().unwrap();
-    for (name, scene_path) in configs() {
-        let scene = Scene::load(&scene_path).unwrap();
-        let cam = scene.camera().unwrap();
+    for c in configs() {
+        let name = c.dir.clone();
         let fresh = tmp.path().join(&name);
-        let dims = scene.volume.render_dims();
-        match name.strip_prefix("cube3/") {
-            Some(n) => write_export::<Cube3>(&format!("{n}.json"), &scene, &cam, dims, &fresh),
-            None => write_export::<Cube4l>(&format!("{name}.json"), &scene, &cam, dims, &fresh),
-        }
-        .unwrap();
+        std::fs::create_dir_all(fresh.parent().unwrap()).unwrap();
+        export(&c, &fresh);
         let committed = root().join("generated_verilog").join(&name);
         let stale = "generated_verilog is stale: run scripts/generate-verilog";
         assert_eq!(
@@ -113,17 +160,12 @@ fn committed_verilog_is_fresh() {
 /// Each design directory (one per sweep) with its Verilog files, top first.
 fn designs() -> Vec<(PathBuf, Vec<String>)> {
     let mut out = Vec::new();
-    for (name, _) in configs() {
-        let dir = root().join("generated_verilog").join(&name);
+    for c in configs() {
+        let dir = root().join("generated_verilog").join(&c.dir);
         let m: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
                 .unwrap();
-        let key = if name.starts_with("cube3/") {
-            "base_planes"
-        } else {
-            "sweeps"
-        };
-        for s in m[key].as_array().unwrap() {
+        for s in m["designs"].as_array().unwrap() {
             let files = s["files"]
                 .as_array()
                 .unwrap()
@@ -165,7 +207,7 @@ fn committed_verilog_lints_clean() {
 fn lint_without_waivers_flags_exactly_the_waived_rules() {
     require_tool("verilator");
     for (design, waivers) in [
-        ("mip_p4_64/.", lint_waivers(&[], &Cube4l::LAYOUT)),
+        ("cube4l/mip_p4_64/.", lint_waivers(&[], &Cube4l::LAYOUT)),
         ("cube3/mip_p4_32/.", lint_waivers(&[], &Cube3::LAYOUT)),
     ] {
         let (dir, files) = designs()

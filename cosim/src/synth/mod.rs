@@ -324,6 +324,7 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
                 "12",
                 "--seed",
                 "1",
+                "--timing-allow-fail",
             ])
             .current_dir(dir),
         "nextpnr-ice40",

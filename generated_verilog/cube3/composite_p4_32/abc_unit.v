@@ -10032,6 +10032,16 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h1;
+    localparam  line_last$1 = 16'h1;
+    localparam  line_last$2 = 16'h86;
+    localparam  line_last$3 = 16'h1;
+    localparam  line_last$4 = 16'h1;
+    localparam  line_last$5 = 16'h86;
+    localparam  line_last$6 = 16'h1;
+    localparam  line_last$7 = 16'h1;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -10091,34 +10101,42 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -10226,83 +10244,99 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$0$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$0$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$0$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$0$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$0$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$0$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$0$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -10372,16 +10406,17 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$0
-module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10434,7 +10469,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -10446,7 +10481,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -10514,16 +10549,17 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$0$ram
-module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10576,7 +10612,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -10588,7 +10624,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -10656,16 +10692,17 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$1$ram
-module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10718,7 +10755,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -10730,7 +10767,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -10798,16 +10835,17 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$2$ram
-module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10860,7 +10898,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -10872,7 +10910,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -10940,16 +10978,17 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$3$ram
-module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -11002,7 +11041,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -11014,7 +11053,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -11082,16 +11121,17 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$4$ram
-module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -11144,7 +11184,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -11156,7 +11196,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -11224,16 +11264,17 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$5$ram
-module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -11286,7 +11327,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -11298,7 +11339,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -11366,16 +11407,17 @@ module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$6$ram
-module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -11428,7 +11470,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -11440,7 +11482,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -11847,6 +11889,16 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h1;
+    localparam  line_last$1 = 16'h1;
+    localparam  line_last$2 = 16'h86;
+    localparam  line_last$3 = 16'h1;
+    localparam  line_last$4 = 16'h1;
+    localparam  line_last$5 = 16'h86;
+    localparam  line_last$6 = 16'h1;
+    localparam  line_last$7 = 16'h1;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -11906,34 +11958,42 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -12041,83 +12101,99 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$1$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$1$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$1$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$1$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$1$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$1$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$1$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -12187,16 +12263,17 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$1
-module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12249,7 +12326,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12261,7 +12338,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -12329,16 +12406,17 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$0$ram
-module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12391,7 +12469,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12403,7 +12481,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -12471,16 +12549,17 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$1$ram
-module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12533,7 +12612,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12545,7 +12624,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -12613,16 +12692,17 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$2$ram
-module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12675,7 +12755,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12687,7 +12767,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -12755,16 +12835,17 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$3$ram
-module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12817,7 +12898,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12829,7 +12910,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -12897,16 +12978,17 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$4$ram
-module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -12959,7 +13041,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -12971,7 +13053,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -13039,16 +13121,17 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$5$ram
-module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -13101,7 +13184,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -13113,7 +13196,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -13181,16 +13264,17 @@ module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$6$ram
-module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -13243,7 +13327,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -13255,7 +13339,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -13662,6 +13746,16 @@ module top$pipeline$abc$lanes$2(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h1;
+    localparam  line_last$1 = 16'h1;
+    localparam  line_last$2 = 16'h86;
+    localparam  line_last$3 = 16'h1;
+    localparam  line_last$4 = 16'h1;
+    localparam  line_last$5 = 16'h86;
+    localparam  line_last$6 = 16'h1;
+    localparam  line_last$7 = 16'h1;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -13721,34 +13815,42 @@ module top$pipeline$abc$lanes$2(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -13856,83 +13958,99 @@ module top$pipeline$abc$lanes$2(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$2$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$2$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$2$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$2$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$2$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$2$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$2$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -14002,16 +14120,17 @@ module top$pipeline$abc$lanes$2(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$2
-module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14064,7 +14183,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14076,7 +14195,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14144,16 +14263,17 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$0$ram
-module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14206,7 +14326,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14218,7 +14338,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14286,16 +14406,17 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$1$ram
-module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14348,7 +14469,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14360,7 +14481,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14428,16 +14549,17 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$2$ram
-module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14490,7 +14612,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14502,7 +14624,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14570,16 +14692,17 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$3$ram
-module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14632,7 +14755,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14644,7 +14767,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14712,16 +14835,17 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$4$ram
-module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14774,7 +14898,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14786,7 +14910,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14854,16 +14978,17 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$5$ram
-module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14916,7 +15041,7 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -14928,7 +15053,7 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -14996,16 +15121,17 @@ module top$pipeline$abc$lanes$2$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$6$ram
-module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15058,7 +15184,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -15070,7 +15196,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -15477,6 +15603,16 @@ module top$pipeline$abc$lanes$3(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h1;
+    localparam  line_last$1 = 16'h1;
+    localparam  line_last$2 = 16'h86;
+    localparam  line_last$3 = 16'h1;
+    localparam  line_last$4 = 16'h1;
+    localparam  line_last$5 = 16'h86;
+    localparam  line_last$6 = 16'h1;
+    localparam  line_last$7 = 16'h1;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -15536,34 +15672,42 @@ module top$pipeline$abc$lanes$3(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -15671,83 +15815,99 @@ module top$pipeline$abc$lanes$3(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$3$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$3$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$3$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$3$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$3$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$3$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$3$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -15817,16 +15977,17 @@ module top$pipeline$abc$lanes$3(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$3
-module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15879,7 +16040,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -15891,7 +16052,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -15959,16 +16120,17 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$0$ram
-module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16021,7 +16183,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16033,7 +16195,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16101,16 +16263,17 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$1$ram
-module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16163,7 +16326,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16175,7 +16338,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16243,16 +16406,17 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$2$ram
-module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16305,7 +16469,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16317,7 +16481,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16385,16 +16549,17 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$3$ram
-module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16447,7 +16612,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16459,7 +16624,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16527,16 +16692,17 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$4$ram
-module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h86;
+    localparam  longest_last = 16'h86;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16589,7 +16755,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16601,7 +16767,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16669,16 +16835,17 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$5$ram
-module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16731,7 +16898,7 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16743,7 +16910,7 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -16811,16 +16978,17 @@ module top$pipeline$abc$lanes$3$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$6$ram
-module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16873,7 +17041,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -16885,7 +17053,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

@@ -27,6 +27,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     // Constant declarations
     localparam  last_segment = 16'h3;
     localparam  last_ray = 16'h23;
+    localparam  late_last = 16'h4;
     localparam  cast_ray_lo = 16'h0;
     localparam  cast_ray_span = 16'h23;
     localparam  cast_line_lo = 16'h0;
@@ -56,6 +57,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     reg  [63:0] late$data_in;
     reg  late$write_enable;
     wire  [63:0] late$data_out;
+    reg  [15:0] late$last;
     reg  [15:0] templates$ray;
     reg  [15:0] templates$scanline;
     reg  [15:0] templates$segment;
@@ -132,7 +134,8 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         .clock(late$clock),
         .data_in(late$data_in),
         .write_enable(late$write_enable),
-        .data_out(late$data_out)
+        .data_out(late$data_out),
+        .last(late$last)
     );
     top$pipeline$control$templates templates(
         .ray(templates$ray),
@@ -198,6 +201,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         ray$d = ray$q;
         scanline$d = scanline$q;
         late$clock = clock;
+        late$last = late_last;
         late$write_enable = 1'b1;
         increments$clock = clock;
         if (valid) begin
@@ -378,6 +382,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     output reg  [15:0] dy_mag;
     
     // Constant declarations
+    localparam  centre_last = 16'h0;
     localparam  mask = 16'h0;
     
     // Stub signals
@@ -385,6 +390,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     reg  [31:0] centre_line$data_in;
     reg  centre_line$write_enable;
     wire  [31:0] centre_line$data_out;
+    reg  [15:0] centre_line$last;
     reg  [15:0] dx_rom$address;
     wire  [16:0] dx_rom$data;
     reg  [15:0] dy_rom$address;
@@ -399,7 +405,8 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
         .clock(centre_line$clock),
         .data_in(centre_line$data_in),
         .write_enable(centre_line$write_enable),
-        .data_out(centre_line$data_out)
+        .data_out(centre_line$data_out),
+        .last(centre_line$last)
     );
     top$pipeline$control$increments$dx_rom dx_rom(
         .address(dx_rom$address),
@@ -413,6 +420,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     // Update code
     always @(*) begin
         centre_line$clock = clock;
+        centre_line$last = centre_last;
         centre_line$write_enable = 1'b1;
         centre_line$data_in = 32'(ray) | (32'(scanline) << 'h10);
         dx_address = centre_line$data_out[('h0)+:(16)] & mask;
@@ -426,16 +434,17 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     end
     
 endmodule // top$pipeline$control$increments
-module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out);
+module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b1;
     localparam  mask = 'hffffffff;
     
@@ -488,7 +497,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -500,7 +509,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -664,16 +673,17 @@ module top$pipeline$control$inner$3(address,data);
     endcase
             
 endmodule // top$pipeline$control$inner$3
-module top$pipeline$control$late(clock,data_in,write_enable,data_out);
+module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [63:0] data_in;
     input wire  write_enable;
     output reg  [63:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h4;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
     
@@ -726,7 +736,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -738,7 +748,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

@@ -23,6 +23,7 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     output reg  has_sample;
     
     // Constant declarations
+    localparam  flags_last = 16'h0;
     localparam  cast_bit = 8'h8;
     localparam  gradients = 1'b0;
     localparam  shaded = 1'b0;
@@ -117,6 +118,7 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  [31:0] flags_line$data_in;
     reg  flags_line$write_enable;
     wire  [31:0] flags_line$data_out;
+    reg  [15:0] flags_line$last;
     reg  [31:0] shade_flags_q$0$d;
     wire  [31:0] shade_flags_q$0$q;
     reg  shade_flags_q$0$clock;
@@ -412,7 +414,8 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .clock(flags_line$clock),
         .data_in(flags_line$data_in),
         .write_enable(flags_line$write_enable),
-        .data_out(flags_line$data_out)
+        .data_out(flags_line$data_out),
+        .last(flags_line$last)
     );
     top$pipeline$shade_flags_q$0 shade_flags_q$0(
         .d(shade_flags_q$0$d),
@@ -554,6 +557,7 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         abc$clock = clock;
         rpc$clock = clock;
         flags_line$clock = clock;
+        flags_line$last = flags_last;
         rpc_flags_q$clock = clock;
         cast_q$clock = clock;
         control$start = start;
@@ -885,16 +889,17 @@ module top$pipeline$cast_q(d,q,clock);
     end
           
 endmodule // top$pipeline$cast_q
-module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
+module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h1;
+    localparam  longest_last = 16'h1;
     localparam  single = 1'b1;
     localparam  mask = 'hff0fff;
     
@@ -947,7 +952,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -959,7 +964,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

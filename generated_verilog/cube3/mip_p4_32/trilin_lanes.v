@@ -26,6 +26,7 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
     
     // Constant declarations
     localparam  offset = 16'h10;
+    localparam  line_last = 16'h6;
     
     // Stub signals
     reg  [15:0] cur_b$0$d;
@@ -44,18 +45,22 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
     reg  [15:0] cur_line$0$data_in;
     reg  cur_line$0$write_enable;
     wire  [15:0] cur_line$0$data_out;
+    reg  [15:0] cur_line$0$last;
     reg  cur_line$1$clock;
     reg  [15:0] cur_line$1$data_in;
     reg  cur_line$1$write_enable;
     wire  [15:0] cur_line$1$data_out;
+    reg  [15:0] cur_line$1$last;
     reg  cur_line$2$clock;
     reg  [15:0] cur_line$2$data_in;
     reg  cur_line$2$write_enable;
     wire  [15:0] cur_line$2$data_out;
+    reg  [15:0] cur_line$2$last;
     reg  cur_line$3$clock;
     reg  [15:0] cur_line$3$data_in;
     reg  cur_line$3$write_enable;
     wire  [15:0] cur_line$3$data_out;
+    reg  [15:0] cur_line$3$last;
     reg  [15:0] cur_a$0$d;
     wire  [15:0] cur_a$0$q;
     reg  cur_a$0$clock;
@@ -84,18 +89,22 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
     reg  [15:0] next_line$0$data_in;
     reg  next_line$0$write_enable;
     wire  [15:0] next_line$0$data_out;
+    reg  [15:0] next_line$0$last;
     reg  next_line$1$clock;
     reg  [15:0] next_line$1$data_in;
     reg  next_line$1$write_enable;
     wire  [15:0] next_line$1$data_out;
+    reg  [15:0] next_line$1$last;
     reg  next_line$2$clock;
     reg  [15:0] next_line$2$data_in;
     reg  next_line$2$write_enable;
     wire  [15:0] next_line$2$data_out;
+    reg  [15:0] next_line$2$last;
     reg  next_line$3$clock;
     reg  [15:0] next_line$3$data_in;
     reg  next_line$3$write_enable;
     wire  [15:0] next_line$3$data_out;
+    reg  [15:0] next_line$3$last;
     reg  [15:0] next_a$0$d;
     wire  [15:0] next_a$0$q;
     reg  next_a$0$clock;
@@ -192,25 +201,29 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         .clock(cur_line$0$clock),
         .data_in(cur_line$0$data_in),
         .write_enable(cur_line$0$write_enable),
-        .data_out(cur_line$0$data_out)
+        .data_out(cur_line$0$data_out),
+        .last(cur_line$0$last)
     );
     top$pipeline$lanes$cur_line$1 cur_line$1(
         .clock(cur_line$1$clock),
         .data_in(cur_line$1$data_in),
         .write_enable(cur_line$1$write_enable),
-        .data_out(cur_line$1$data_out)
+        .data_out(cur_line$1$data_out),
+        .last(cur_line$1$last)
     );
     top$pipeline$lanes$cur_line$2 cur_line$2(
         .clock(cur_line$2$clock),
         .data_in(cur_line$2$data_in),
         .write_enable(cur_line$2$write_enable),
-        .data_out(cur_line$2$data_out)
+        .data_out(cur_line$2$data_out),
+        .last(cur_line$2$last)
     );
     top$pipeline$lanes$cur_line$3 cur_line$3(
         .clock(cur_line$3$clock),
         .data_in(cur_line$3$data_in),
         .write_enable(cur_line$3$write_enable),
-        .data_out(cur_line$3$data_out)
+        .data_out(cur_line$3$data_out),
+        .last(cur_line$3$last)
     );
     top$pipeline$lanes$cur_a$0 cur_a$0(
         .d(cur_a$0$d),
@@ -256,25 +269,29 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         .clock(next_line$0$clock),
         .data_in(next_line$0$data_in),
         .write_enable(next_line$0$write_enable),
-        .data_out(next_line$0$data_out)
+        .data_out(next_line$0$data_out),
+        .last(next_line$0$last)
     );
     top$pipeline$lanes$next_line$1 next_line$1(
         .clock(next_line$1$clock),
         .data_in(next_line$1$data_in),
         .write_enable(next_line$1$write_enable),
-        .data_out(next_line$1$data_out)
+        .data_out(next_line$1$data_out),
+        .last(next_line$1$last)
     );
     top$pipeline$lanes$next_line$2 next_line$2(
         .clock(next_line$2$clock),
         .data_in(next_line$2$data_in),
         .write_enable(next_line$2$write_enable),
-        .data_out(next_line$2$data_out)
+        .data_out(next_line$2$data_out),
+        .last(next_line$2$last)
     );
     top$pipeline$lanes$next_line$3 next_line$3(
         .clock(next_line$3$clock),
         .data_in(next_line$3$data_in),
         .write_enable(next_line$3$write_enable),
-        .data_out(next_line$3$data_out)
+        .data_out(next_line$3$data_out),
+        .last(next_line$3$last)
     );
     top$pipeline$lanes$next_a$0 next_a$0(
         .d(next_a$0$d),
@@ -366,6 +383,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         cur_line$0$clock = clock;
         next_line$0$clock = clock;
         units$0$clock = clock;
+        cur_line$0$last = line_last;
+        next_line$0$last = line_last;
         cur_line$0$write_enable = 1'b1;
         next_line$0$write_enable = 1'b1;
         cur_b$0$d = cur$0;
@@ -389,6 +408,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         cur_line$1$clock = clock;
         next_line$1$clock = clock;
         units$1$clock = clock;
+        cur_line$1$last = line_last;
+        next_line$1$last = line_last;
         cur_line$1$write_enable = 1'b1;
         next_line$1$write_enable = 1'b1;
         cur_b$1$d = cur$1;
@@ -412,6 +433,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         cur_line$2$clock = clock;
         next_line$2$clock = clock;
         units$2$clock = clock;
+        cur_line$2$last = line_last;
+        next_line$2$last = line_last;
         cur_line$2$write_enable = 1'b1;
         next_line$2$write_enable = 1'b1;
         cur_b$2$d = cur$2;
@@ -435,6 +458,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,nex
         cur_line$3$clock = clock;
         next_line$3$clock = clock;
         units$3$clock = clock;
+        cur_line$3$last = line_last;
+        next_line$3$last = line_last;
         cur_line$3$write_enable = 1'b1;
         next_line$3$write_enable = 1'b1;
         cur_b$3$d = cur$3;
@@ -616,16 +641,17 @@ module top$pipeline$lanes$cur_b$3(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$cur_b$3
-module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -678,7 +704,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -690,7 +716,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -758,16 +784,17 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$0$ram
-module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -820,7 +847,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -832,7 +859,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -900,16 +927,17 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$1$ram
-module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -962,7 +990,7 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -974,7 +1002,7 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -1042,16 +1070,17 @@ module top$pipeline$lanes$cur_line$2$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$2$ram
-module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -1104,7 +1133,7 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -1116,7 +1145,7 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -1320,16 +1349,17 @@ module top$pipeline$lanes$next_b$3(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$next_b$3
-module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -1382,7 +1412,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -1394,7 +1424,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -1462,16 +1492,17 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$0$ram
-module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -1524,7 +1555,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -1536,7 +1567,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -1604,16 +1635,17 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$1$ram
-module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -1666,7 +1698,7 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -1678,7 +1710,7 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -1746,16 +1778,17 @@ module top$pipeline$lanes$next_line$2$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$2$ram
-module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h6;
+    localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -1808,7 +1841,7 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -1820,7 +1853,7 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

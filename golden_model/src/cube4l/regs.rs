@@ -8,6 +8,21 @@ use super::plan::{Order, Rays, Sweep};
 use crate::host::{pack16, Reg, Write};
 use scene::Mode;
 
+/// The view registers, in the order of [`ViewRegs::words`].
+pub const REGS: [Reg; 11] = [
+    Reg::Dims,
+    Reg::Slices,
+    Reg::Axes,
+    Reg::Address,
+    Reg::Dx,
+    Reg::Dy,
+    Reg::EyeX,
+    Reg::EyeY,
+    Reg::EyeZ,
+    Reg::Beats,
+    Reg::Order,
+];
+
 /// One sweep's registers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ViewRegs {
@@ -82,40 +97,35 @@ impl ViewRegs {
         }
     }
 
+    /// The registers' words, in [`REGS`] order.
+    pub fn words(&self) -> [u64; 11] {
+        let d = self.dims.map(|n| n as u64);
+        [
+            pack16(&[d[0], d[1], d[2]]),
+            pack16(&[self.z0, self.z1, self.stream_z0, self.stream_z1].map(|z| z as u64)),
+            self.axes
+                .iter()
+                .enumerate()
+                .fold(0, |a, (i, &x)| a | (x as u64) << (2 * i)),
+            self.b_u as u64 | (self.slab as u64) << 16,
+            self.dx as i64 as u64,
+            self.dy as i64 as u64,
+            self.neg_eye[0] as u64,
+            self.neg_eye[1] as u64,
+            self.neg_eye[2] as u64,
+            self.slice_beats as u64 | (self.beam_beats as u64) << 32,
+            self.front_to_back as u64 | (self.minip as u64) << 1,
+        ]
+    }
+
     /// The words the host writes.
     pub fn writes(&self) -> Vec<Write> {
-        let w = |reg: Reg, data: u64| Write {
-            address: reg.address(),
-            data,
-        };
-        let d = self.dims.map(|n| n as u64);
-        vec![
-            w(Reg::Dims, pack16(&[d[0], d[1], d[2]])),
-            w(
-                Reg::Slices,
-                pack16(&[self.z0, self.z1, self.stream_z0, self.stream_z1].map(|z| z as u64)),
-            ),
-            w(
-                Reg::Axes,
-                self.axes
-                    .iter()
-                    .enumerate()
-                    .fold(0, |a, (i, &x)| a | (x as u64) << (2 * i)),
-            ),
-            w(Reg::Address, self.b_u as u64 | (self.slab as u64) << 16),
-            w(Reg::Dx, self.dx as i64 as u64),
-            w(Reg::Dy, self.dy as i64 as u64),
-            w(Reg::EyeX, self.neg_eye[0] as u64),
-            w(Reg::EyeY, self.neg_eye[1] as u64),
-            w(Reg::EyeZ, self.neg_eye[2] as u64),
-            w(
-                Reg::Beats,
-                self.slice_beats as u64 | (self.beam_beats as u64) << 32,
-            ),
-            w(
-                Reg::Order,
-                self.front_to_back as u64 | (self.minip as u64) << 1,
-            ),
-        ]
+        REGS.iter()
+            .zip(self.words())
+            .map(|(r, data)| Write {
+                address: r.address(),
+                data,
+            })
+            .collect()
     }
 }

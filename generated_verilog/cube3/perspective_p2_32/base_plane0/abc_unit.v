@@ -5042,6 +5042,16 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h7;
+    localparam  line_last$1 = 16'h7;
+    localparam  line_last$2 = 16'hd4;
+    localparam  line_last$3 = 16'h7;
+    localparam  line_last$4 = 16'h7;
+    localparam  line_last$5 = 16'hd4;
+    localparam  line_last$6 = 16'h7;
+    localparam  line_last$7 = 16'h7;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -5101,34 +5111,42 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -5236,83 +5254,99 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$0$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$0$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$0$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$0$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$0$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$0$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$0$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -5382,16 +5416,17 @@ module top$pipeline$abc$lanes$0(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$0
-module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -5444,7 +5479,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -5456,7 +5491,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -5524,16 +5559,17 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$0$ram
-module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -5586,7 +5622,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -5598,7 +5634,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -5666,16 +5702,17 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$1$ram
-module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'hd4;
+    localparam  longest_last = 16'hd4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -5728,7 +5765,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -5740,7 +5777,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -5808,16 +5845,17 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$2$ram
-module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -5870,7 +5908,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -5882,7 +5920,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -5950,16 +5988,17 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$3$ram
-module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -6012,7 +6051,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -6024,7 +6063,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -6092,16 +6131,17 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$4$ram
-module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'hd4;
+    localparam  longest_last = 16'hd4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -6154,7 +6194,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -6166,7 +6206,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -6234,16 +6274,17 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$5$ram
-module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -6296,7 +6337,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -6308,7 +6349,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -6376,16 +6417,17 @@ module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$6$ram
-module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -6438,7 +6480,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -6450,7 +6492,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -6857,6 +6899,16 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     output reg  [31:0] t221;
     output reg  [31:0] t222;
     
+    // Constant declarations
+    localparam  line_last$0 = 16'h7;
+    localparam  line_last$1 = 16'h7;
+    localparam  line_last$2 = 16'hd4;
+    localparam  line_last$3 = 16'h7;
+    localparam  line_last$4 = 16'h7;
+    localparam  line_last$5 = 16'hd4;
+    localparam  line_last$6 = 16'h7;
+    localparam  line_last$7 = 16'h7;
+    
     // Stub signals
     reg  [31:0] one$0$d;
     wire  [31:0] one$0$q;
@@ -6916,34 +6968,42 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     reg  [31:0] lines$0$data_in;
     reg  lines$0$write_enable;
     wire  [31:0] lines$0$data_out;
+    reg  [15:0] lines$0$last;
     reg  lines$1$clock;
     reg  [31:0] lines$1$data_in;
     reg  lines$1$write_enable;
     wire  [31:0] lines$1$data_out;
+    reg  [15:0] lines$1$last;
     reg  lines$2$clock;
     reg  [31:0] lines$2$data_in;
     reg  lines$2$write_enable;
     wire  [31:0] lines$2$data_out;
+    reg  [15:0] lines$2$last;
     reg  lines$3$clock;
     reg  [31:0] lines$3$data_in;
     reg  lines$3$write_enable;
     wire  [31:0] lines$3$data_out;
+    reg  [15:0] lines$3$last;
     reg  lines$4$clock;
     reg  [31:0] lines$4$data_in;
     reg  lines$4$write_enable;
     wire  [31:0] lines$4$data_out;
+    reg  [15:0] lines$4$last;
     reg  lines$5$clock;
     reg  [31:0] lines$5$data_in;
     reg  lines$5$write_enable;
     wire  [31:0] lines$5$data_out;
+    reg  [15:0] lines$5$last;
     reg  lines$6$clock;
     reg  [31:0] lines$6$data_in;
     reg  lines$6$write_enable;
     wire  [31:0] lines$6$data_out;
+    reg  [15:0] lines$6$last;
     reg  lines$7$clock;
     reg  [31:0] lines$7$data_in;
     reg  lines$7$write_enable;
     wire  [31:0] lines$7$data_out;
+    reg  [15:0] lines$7$last;
     
     // Local signals
     reg  [31:0] head$0;
@@ -7051,83 +7111,99 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
         .clock(lines$0$clock),
         .data_in(lines$0$data_in),
         .write_enable(lines$0$write_enable),
-        .data_out(lines$0$data_out)
+        .data_out(lines$0$data_out),
+        .last(lines$0$last)
     );
     top$pipeline$abc$lanes$1$lines$1 lines$1(
         .clock(lines$1$clock),
         .data_in(lines$1$data_in),
         .write_enable(lines$1$write_enable),
-        .data_out(lines$1$data_out)
+        .data_out(lines$1$data_out),
+        .last(lines$1$last)
     );
     top$pipeline$abc$lanes$1$lines$2 lines$2(
         .clock(lines$2$clock),
         .data_in(lines$2$data_in),
         .write_enable(lines$2$write_enable),
-        .data_out(lines$2$data_out)
+        .data_out(lines$2$data_out),
+        .last(lines$2$last)
     );
     top$pipeline$abc$lanes$1$lines$3 lines$3(
         .clock(lines$3$clock),
         .data_in(lines$3$data_in),
         .write_enable(lines$3$write_enable),
-        .data_out(lines$3$data_out)
+        .data_out(lines$3$data_out),
+        .last(lines$3$last)
     );
     top$pipeline$abc$lanes$1$lines$4 lines$4(
         .clock(lines$4$clock),
         .data_in(lines$4$data_in),
         .write_enable(lines$4$write_enable),
-        .data_out(lines$4$data_out)
+        .data_out(lines$4$data_out),
+        .last(lines$4$last)
     );
     top$pipeline$abc$lanes$1$lines$5 lines$5(
         .clock(lines$5$clock),
         .data_in(lines$5$data_in),
         .write_enable(lines$5$write_enable),
-        .data_out(lines$5$data_out)
+        .data_out(lines$5$data_out),
+        .last(lines$5$last)
     );
     top$pipeline$abc$lanes$1$lines$6 lines$6(
         .clock(lines$6$clock),
         .data_in(lines$6$data_in),
         .write_enable(lines$6$write_enable),
-        .data_out(lines$6$data_out)
+        .data_out(lines$6$data_out),
+        .last(lines$6$last)
     );
     top$pipeline$abc$lanes$1$lines$7 lines$7(
         .clock(lines$7$clock),
         .data_in(lines$7$data_in),
         .write_enable(lines$7$write_enable),
-        .data_out(lines$7$data_out)
+        .data_out(lines$7$data_out),
+        .last(lines$7$last)
     );
     
     // Update code
     always @(*) begin
         head$0 = sample;
         lines$0$clock = clock;
+        lines$0$last = line_last$0;
         lines$0$write_enable = 1'b1;
         lines$0$data_in = two$0$q;
         head$1 = lines$0$data_out;
         lines$1$clock = clock;
+        lines$1$last = line_last$1;
         lines$1$write_enable = 1'b1;
         lines$1$data_in = two$1$q;
         head$2 = lines$1$data_out;
         lines$2$clock = clock;
+        lines$2$last = line_last$2;
         lines$2$write_enable = 1'b1;
         lines$2$data_in = two$2$q;
         head$3 = lines$2$data_out;
         lines$3$clock = clock;
+        lines$3$last = line_last$3;
         lines$3$write_enable = 1'b1;
         lines$3$data_in = two$3$q;
         head$4 = lines$3$data_out;
         lines$4$clock = clock;
+        lines$4$last = line_last$4;
         lines$4$write_enable = 1'b1;
         lines$4$data_in = two$4$q;
         head$5 = lines$4$data_out;
         lines$5$clock = clock;
+        lines$5$last = line_last$5;
         lines$5$write_enable = 1'b1;
         lines$5$data_in = two$5$q;
         head$6 = lines$5$data_out;
         lines$6$clock = clock;
+        lines$6$last = line_last$6;
         lines$6$write_enable = 1'b1;
         lines$6$data_in = two$6$q;
         head$7 = lines$6$data_out;
         lines$7$clock = clock;
+        lines$7$last = line_last$7;
         lines$7$write_enable = 1'b1;
         lines$7$data_in = two$7$q;
         head$8 = lines$7$data_out;
@@ -7197,16 +7273,17 @@ module top$pipeline$abc$lanes$1(clock,sample,t000,t001,t002,t010,t011,t012,t020,
     end
     
 endmodule // top$pipeline$abc$lanes$1
-module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7259,7 +7336,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7271,7 +7348,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -7339,16 +7416,17 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$0$ram
-module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7401,7 +7479,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7413,7 +7491,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -7481,16 +7559,17 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$1$ram
-module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'hd4;
+    localparam  longest_last = 16'hd4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7543,7 +7622,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7555,7 +7634,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -7623,16 +7702,17 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$2$ram
-module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7685,7 +7765,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7697,7 +7777,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -7765,16 +7845,17 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$3$ram
-module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7827,7 +7908,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7839,7 +7920,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -7907,16 +7988,17 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$4$ram
-module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'hd4;
+    localparam  longest_last = 16'hd4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7969,7 +8051,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -7981,7 +8063,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -8049,16 +8131,17 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$5$ram
-module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8111,7 +8194,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -8123,7 +8206,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -8191,16 +8274,17 @@ module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$6$ram
-module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
+module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8253,7 +8337,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -8265,7 +8349,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

@@ -16,6 +16,7 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
     
     // Constant declarations
     localparam  offset = 16'h0;
+    localparam  line_last = 16'h7;
     
     // Stub signals
     reg  [15:0] cur_b$0$d;
@@ -28,10 +29,12 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
     reg  [15:0] cur_line$0$data_in;
     reg  cur_line$0$write_enable;
     wire  [15:0] cur_line$0$data_out;
+    reg  [15:0] cur_line$0$last;
     reg  cur_line$1$clock;
     reg  [15:0] cur_line$1$data_in;
     reg  cur_line$1$write_enable;
     wire  [15:0] cur_line$1$data_out;
+    reg  [15:0] cur_line$1$last;
     reg  [15:0] cur_a$0$d;
     wire  [15:0] cur_a$0$q;
     reg  cur_a$0$clock;
@@ -48,10 +51,12 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
     reg  [15:0] next_line$0$data_in;
     reg  next_line$0$write_enable;
     wire  [15:0] next_line$0$data_out;
+    reg  [15:0] next_line$0$last;
     reg  next_line$1$clock;
     reg  [15:0] next_line$1$data_in;
     reg  next_line$1$write_enable;
     wire  [15:0] next_line$1$data_out;
+    reg  [15:0] next_line$1$last;
     reg  [15:0] next_a$0$d;
     wire  [15:0] next_a$0$q;
     reg  next_a$0$clock;
@@ -106,13 +111,15 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
         .clock(cur_line$0$clock),
         .data_in(cur_line$0$data_in),
         .write_enable(cur_line$0$write_enable),
-        .data_out(cur_line$0$data_out)
+        .data_out(cur_line$0$data_out),
+        .last(cur_line$0$last)
     );
     top$pipeline$lanes$cur_line$1 cur_line$1(
         .clock(cur_line$1$clock),
         .data_in(cur_line$1$data_in),
         .write_enable(cur_line$1$write_enable),
-        .data_out(cur_line$1$data_out)
+        .data_out(cur_line$1$data_out),
+        .last(cur_line$1$last)
     );
     top$pipeline$lanes$cur_a$0 cur_a$0(
         .d(cur_a$0$d),
@@ -138,13 +145,15 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
         .clock(next_line$0$clock),
         .data_in(next_line$0$data_in),
         .write_enable(next_line$0$write_enable),
-        .data_out(next_line$0$data_out)
+        .data_out(next_line$0$data_out),
+        .last(next_line$0$last)
     );
     top$pipeline$lanes$next_line$1 next_line$1(
         .clock(next_line$1$clock),
         .data_in(next_line$1$data_in),
         .write_enable(next_line$1$write_enable),
-        .data_out(next_line$1$data_out)
+        .data_out(next_line$1$data_out),
+        .last(next_line$1$last)
     );
     top$pipeline$lanes$next_a$0 next_a$0(
         .d(next_a$0$d),
@@ -196,6 +205,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
         cur_line$0$clock = clock;
         next_line$0$clock = clock;
         units$0$clock = clock;
+        cur_line$0$last = line_last;
+        next_line$0$last = line_last;
         cur_line$0$write_enable = 1'b1;
         next_line$0$write_enable = 1'b1;
         cur_b$0$d = cur$0;
@@ -219,6 +230,8 @@ module top$pipeline$lanes(clock,cur$0,cur$1,next$0,next$1,first,wx$0,wx$1,wy$0,w
         cur_line$1$clock = clock;
         next_line$1$clock = clock;
         units$1$clock = clock;
+        cur_line$1$last = line_last;
+        next_line$1$last = line_last;
         cur_line$1$write_enable = 1'b1;
         next_line$1$write_enable = 1'b1;
         cur_b$1$d = cur$1;
@@ -324,16 +337,17 @@ module top$pipeline$lanes$cur_b$1(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$cur_b$1
-module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -386,7 +400,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -398,7 +412,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -466,16 +480,17 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$0$ram
-module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -528,7 +543,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -540,7 +555,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -676,16 +691,17 @@ module top$pipeline$lanes$next_b$1(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$next_b$1
-module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -738,7 +754,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -750,7 +766,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -818,16 +834,17 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$0$ram
-module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
+module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] data_in;
     input wire  write_enable;
     output reg  [15:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h7;
+    localparam  longest_last = 16'h7;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
     
@@ -880,7 +897,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -892,7 +909,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

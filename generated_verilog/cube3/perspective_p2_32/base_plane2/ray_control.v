@@ -23,6 +23,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     // Constant declarations
     localparam  last_segment = 16'h7;
     localparam  last_ray = 16'hb;
+    localparam  late_last = 16'h8;
     localparam  cast_ray_lo = 16'h0;
     localparam  cast_ray_span = 16'h9;
     localparam  cast_line_lo = 16'h0;
@@ -52,6 +53,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
     reg  [63:0] late$data_in;
     reg  late$write_enable;
     wire  [63:0] late$data_out;
+    reg  [15:0] late$last;
     reg  [15:0] templates$ray;
     reg  [15:0] templates$scanline;
     reg  [15:0] templates$segment;
@@ -116,7 +118,8 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         .clock(late$clock),
         .data_in(late$data_in),
         .write_enable(late$write_enable),
-        .data_out(late$data_out)
+        .data_out(late$data_out),
+        .last(late$last)
     );
     top$pipeline$control$templates templates(
         .ray(templates$ray),
@@ -162,6 +165,7 @@ module top$pipeline$control(clock,start,valid,first,unit_valid,unit_first,unit_l
         ray$d = ray$q;
         scanline$d = scanline$q;
         late$clock = clock;
+        late$last = late_last;
         late$write_enable = 1'b1;
         increments$clock = clock;
         if (valid) begin
@@ -296,6 +300,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     output reg  [15:0] dy_mag;
     
     // Constant declarations
+    localparam  centre_last = 16'hf;
     localparam  mask = 16'hffff;
     
     // Stub signals
@@ -303,6 +308,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     reg  [31:0] centre_line$data_in;
     reg  centre_line$write_enable;
     wire  [31:0] centre_line$data_out;
+    reg  [15:0] centre_line$last;
     reg  [15:0] dx_rom$address;
     wire  [16:0] dx_rom$data;
     reg  [15:0] dy_rom$address;
@@ -317,7 +323,8 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
         .clock(centre_line$clock),
         .data_in(centre_line$data_in),
         .write_enable(centre_line$write_enable),
-        .data_out(centre_line$data_out)
+        .data_out(centre_line$data_out),
+        .last(centre_line$last)
     );
     top$pipeline$control$increments$dx_rom dx_rom(
         .address(dx_rom$address),
@@ -331,6 +338,7 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     // Update code
     always @(*) begin
         centre_line$clock = clock;
+        centre_line$last = centre_last;
         centre_line$write_enable = 1'b1;
         centre_line$data_in = 32'(ray) | (32'(scanline) << 'h10);
         dx_address = centre_line$data_out[('h0)+:(16)] & mask;
@@ -344,16 +352,17 @@ module top$pipeline$control$increments(clock,ray,scanline,dx_neg,dx_mag,dy_neg,d
     end
     
 endmodule // top$pipeline$control$increments
-module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out);
+module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [31:0] data_in;
     input wire  write_enable;
     output reg  [31:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'hf;
+    localparam  longest_last = 16'hf;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -406,7 +415,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -418,7 +427,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin
@@ -581,16 +590,17 @@ module top$pipeline$control$inner$1(address,data);
     endcase
             
 endmodule // top$pipeline$control$inner$1
-module top$pipeline$control$late(clock,data_in,write_enable,data_out);
+module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
     input wire  [63:0] data_in;
     input wire  write_enable;
     output reg  [63:0] data_out;
+    input wire  [15:0] last;
     
     // Constant declarations
-    localparam  last = 16'h8;
+    localparam  longest_last = 16'h8;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
     
@@ -643,7 +653,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
         ram$read_clock = clock;
         ram$write_clock = clock;
         next = ptr$q + 'h1;
-        if (ptr$q == last) begin
+        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
             next = 'h0;
         end
         ptr$d = next;
@@ -655,7 +665,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single) begin
+        if (single | (last == 'h0)) begin
             data_out_pass = one$q;
         end
         else begin

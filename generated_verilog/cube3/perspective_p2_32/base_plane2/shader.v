@@ -133,9 +133,6 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
-    reg  [15:0] value_q$6$d;
-    wire  [15:0] value_q$6$q;
-    reg  value_q$6$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -343,11 +340,6 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(value_q$5$q),
         .clock(value_q$5$clock)
     );
-    top$pipeline$shade$0$value_q$6 value_q$6(
-        .d(value_q$6$d),
-        .q(value_q$6$q),
-        .clock(value_q$6$clock)
-    );
     top$pipeline$shade$0$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
         .q(valid_q$0$q),
@@ -533,32 +525,30 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         lut_q$3$d = lut_q$2$q;
         gate_q$3$d = gate_q$2$q;
         value_q$0$clock = clock;
-        valid_q$0$clock = clock;
         value_q$1$clock = clock;
-        valid_q$1$clock = clock;
         value_q$2$clock = clock;
-        valid_q$2$clock = clock;
         value_q$3$clock = clock;
-        valid_q$3$clock = clock;
         value_q$4$clock = clock;
-        valid_q$4$clock = clock;
         value_q$5$clock = clock;
+        valid_q$0$clock = clock;
+        valid_q$1$clock = clock;
+        valid_q$2$clock = clock;
+        valid_q$3$clock = clock;
+        valid_q$4$clock = clock;
         valid_q$5$clock = clock;
-        value_q$6$clock = clock;
         valid_q$6$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
-        valid_q$1$d = valid_q$0$q;
         value_q$2$d = value_q$1$q;
-        valid_q$2$d = valid_q$1$q;
         value_q$3$d = value_q$2$q;
-        valid_q$3$d = valid_q$2$q;
         value_q$4$d = value_q$3$q;
-        valid_q$4$d = valid_q$3$q;
         value_q$5$d = value_q$4$q;
+        valid_q$1$d = valid_q$0$q;
+        valid_q$2$d = valid_q$1$q;
+        valid_q$3$d = valid_q$2$q;
+        valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
-        value_q$6$d = value_q$5$q;
         valid_q$6$d = valid_q$5$q;
         alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
@@ -3664,23 +3654,6 @@ module top$pipeline$shade$0$value_q$5(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$value_q$5
-module top$pipeline$shade$0$value_q$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$value_q$6
 module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -3816,9 +3789,6 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
-    reg  [15:0] value_q$6$d;
-    wire  [15:0] value_q$6$q;
-    reg  value_q$6$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -4026,11 +3996,6 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(value_q$5$q),
         .clock(value_q$5$clock)
     );
-    top$pipeline$shade$1$value_q$6 value_q$6(
-        .d(value_q$6$d),
-        .q(value_q$6$q),
-        .clock(value_q$6$clock)
-    );
     top$pipeline$shade$1$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
         .q(valid_q$0$q),
@@ -4216,32 +4181,30 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         lut_q$3$d = lut_q$2$q;
         gate_q$3$d = gate_q$2$q;
         value_q$0$clock = clock;
-        valid_q$0$clock = clock;
         value_q$1$clock = clock;
-        valid_q$1$clock = clock;
         value_q$2$clock = clock;
-        valid_q$2$clock = clock;
         value_q$3$clock = clock;
-        valid_q$3$clock = clock;
         value_q$4$clock = clock;
-        valid_q$4$clock = clock;
         value_q$5$clock = clock;
+        valid_q$0$clock = clock;
+        valid_q$1$clock = clock;
+        valid_q$2$clock = clock;
+        valid_q$3$clock = clock;
+        valid_q$4$clock = clock;
         valid_q$5$clock = clock;
-        value_q$6$clock = clock;
         valid_q$6$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
-        valid_q$1$d = valid_q$0$q;
         value_q$2$d = value_q$1$q;
-        valid_q$2$d = valid_q$1$q;
         value_q$3$d = value_q$2$q;
-        valid_q$3$d = valid_q$2$q;
         value_q$4$d = value_q$3$q;
-        valid_q$4$d = valid_q$3$q;
         value_q$5$d = value_q$4$q;
+        valid_q$1$d = valid_q$0$q;
+        valid_q$2$d = valid_q$1$q;
+        valid_q$3$d = valid_q$2$q;
+        valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
-        value_q$6$d = value_q$5$q;
         valid_q$6$d = valid_q$5$q;
         alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
@@ -7347,20 +7310,3 @@ module top$pipeline$shade$1$value_q$5(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$value_q$5
-module top$pipeline$shade$1$value_q$6(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$value_q$6

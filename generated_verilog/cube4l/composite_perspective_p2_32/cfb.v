@@ -1,0 +1,3045 @@
+module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,x$0,x$1,y$0,y$1,z$0,z$1,address$0,address$1,pad$0,pad$1,sr$0,sr$1,er$0,er$1,base_x$0,base_x$1,base_y$0,base_y$1,face$0,face$1,at_edge$0,at_edge$1,invalid$0,invalid$1,halo$0,halo$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,dx_neg$0,dx_neg$1,dx_mag$0,dx_mag$1,dy_neg$0,dy_neg$1,dy_mag$0,dy_mag$1);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] dims;
+    input wire  [63:0] slices;
+    input wire  [63:0] axes;
+    input wire  [63:0] address_reg;
+    input wire  [63:0] dx;
+    input wire  [63:0] dy;
+    input wire  [63:0] eye_x;
+    input wire  [63:0] eye_y;
+    input wire  [63:0] eye_z;
+    input wire  [63:0] beats;
+    input wire  start;
+    output reg  busy;
+    input wire  load_enable;
+    input wire  [7:0] load_module;
+    input wire  [15:0] load_address;
+    input wire  [15:0] load_data;
+    output reg  valid;
+    output reg  [15:0] n_s;
+    output reg  [15:0] n_beam;
+    output reg  [15:0] n_b;
+    output reg  bs;
+    output reg  [15:0] value$0;
+    output reg  [15:0] value$1;
+    output reg  [15:0] x$0;
+    output reg  [15:0] x$1;
+    output reg  [15:0] y$0;
+    output reg  [15:0] y$1;
+    output reg  [15:0] z$0;
+    output reg  [15:0] z$1;
+    output reg  [31:0] address$0;
+    output reg  [31:0] address$1;
+    output reg  pad$0;
+    output reg  pad$1;
+    output reg  sr$0;
+    output reg  sr$1;
+    output reg  er$0;
+    output reg  er$1;
+    output reg  [15:0] base_x$0;
+    output reg  [15:0] base_x$1;
+    output reg  [15:0] base_y$0;
+    output reg  [15:0] base_y$1;
+    output reg  [2:0] face$0;
+    output reg  [2:0] face$1;
+    output reg  at_edge$0;
+    output reg  at_edge$1;
+    output reg  invalid$0;
+    output reg  invalid$1;
+    output reg  halo$0;
+    output reg  halo$1;
+    output reg  [31:0] ext_addr$0;
+    output reg  [31:0] ext_addr$1;
+    input wire  [15:0] ext_data$0;
+    input wire  [15:0] ext_data$1;
+    output reg  dx_neg$0;
+    output reg  dx_neg$1;
+    output reg  [15:0] dx_mag$0;
+    output reg  [15:0] dx_mag$1;
+    output reg  dy_neg$0;
+    output reg  dy_neg$1;
+    output reg  [15:0] dy_mag$0;
+    output reg  [15:0] dy_mag$1;
+    
+    // Stub signals
+    reg  lanes$0$clock;
+    reg  [63:0] lanes$0$dims;
+    reg  [63:0] lanes$0$slices;
+    reg  [63:0] lanes$0$axes;
+    reg  [63:0] lanes$0$address_reg;
+    reg  [63:0] lanes$0$dx;
+    reg  [63:0] lanes$0$dy;
+    reg  [63:0] lanes$0$eye_x;
+    reg  [63:0] lanes$0$eye_y;
+    reg  [63:0] lanes$0$eye_z;
+    reg  [15:0] lanes$0$a_n_s;
+    reg  [15:0] lanes$0$a_n_beam;
+    reg  [15:0] lanes$0$a_n_b;
+    reg  [15:0] lanes$0$n_s;
+    reg  [15:0] lanes$0$n_beam;
+    reg  [15:0] lanes$0$n_b;
+    reg  lanes$0$load_enable;
+    reg  [7:0] lanes$0$load_module;
+    reg  [15:0] lanes$0$load_address;
+    reg  [15:0] lanes$0$load_data;
+    wire  [31:0] lanes$0$ext_addr;
+    reg  [15:0] lanes$0$ext_data;
+    wire  [15:0] lanes$0$value;
+    wire  [15:0] lanes$0$x;
+    wire  [15:0] lanes$0$y;
+    wire  [15:0] lanes$0$z;
+    wire  [31:0] lanes$0$address;
+    wire  lanes$0$pad;
+    wire  lanes$0$sr;
+    wire  lanes$0$er;
+    wire  lanes$0$at_edge;
+    wire  [2:0] lanes$0$face;
+    wire  [15:0] lanes$0$base_x;
+    wire  [15:0] lanes$0$base_y;
+    wire  lanes$0$halo;
+    wire  lanes$0$dx_neg;
+    wire  [15:0] lanes$0$dx_mag;
+    wire  lanes$0$dy_neg;
+    wire  [15:0] lanes$0$dy_mag;
+    wire  lanes$0$invalid;
+    reg  lanes$1$clock;
+    reg  [63:0] lanes$1$dims;
+    reg  [63:0] lanes$1$slices;
+    reg  [63:0] lanes$1$axes;
+    reg  [63:0] lanes$1$address_reg;
+    reg  [63:0] lanes$1$dx;
+    reg  [63:0] lanes$1$dy;
+    reg  [63:0] lanes$1$eye_x;
+    reg  [63:0] lanes$1$eye_y;
+    reg  [63:0] lanes$1$eye_z;
+    reg  [15:0] lanes$1$a_n_s;
+    reg  [15:0] lanes$1$a_n_beam;
+    reg  [15:0] lanes$1$a_n_b;
+    reg  [15:0] lanes$1$n_s;
+    reg  [15:0] lanes$1$n_beam;
+    reg  [15:0] lanes$1$n_b;
+    reg  lanes$1$load_enable;
+    reg  [7:0] lanes$1$load_module;
+    reg  [15:0] lanes$1$load_address;
+    reg  [15:0] lanes$1$load_data;
+    wire  [31:0] lanes$1$ext_addr;
+    reg  [15:0] lanes$1$ext_data;
+    wire  [15:0] lanes$1$value;
+    wire  [15:0] lanes$1$x;
+    wire  [15:0] lanes$1$y;
+    wire  [15:0] lanes$1$z;
+    wire  [31:0] lanes$1$address;
+    wire  lanes$1$pad;
+    wire  lanes$1$sr;
+    wire  lanes$1$er;
+    wire  lanes$1$at_edge;
+    wire  [2:0] lanes$1$face;
+    wire  [15:0] lanes$1$base_x;
+    wire  [15:0] lanes$1$base_y;
+    wire  lanes$1$halo;
+    wire  lanes$1$dx_neg;
+    wire  [15:0] lanes$1$dx_mag;
+    wire  lanes$1$dy_neg;
+    wire  [15:0] lanes$1$dy_mag;
+    wire  lanes$1$invalid;
+    reg  running$d;
+    wire  running$q;
+    reg  running$clock;
+    reg  [15:0] ns_c$d;
+    wire  [15:0] ns_c$q;
+    reg  ns_c$clock;
+    reg  [15:0] nbeam_c$d;
+    wire  [15:0] nbeam_c$q;
+    reg  nbeam_c$clock;
+    reg  [15:0] nb_c$d;
+    wire  [15:0] nb_c$q;
+    reg  nb_c$clock;
+    reg  run_d1$d;
+    wire  run_d1$q;
+    reg  run_d1$clock;
+    reg  run_d2$d;
+    wire  run_d2$q;
+    reg  run_d2$clock;
+    reg  run_d3$d;
+    wire  run_d3$q;
+    reg  run_d3$clock;
+    reg  [15:0] ns_d1$d;
+    wire  [15:0] ns_d1$q;
+    reg  ns_d1$clock;
+    reg  [15:0] ns_d2$d;
+    wire  [15:0] ns_d2$q;
+    reg  ns_d2$clock;
+    reg  [15:0] ns_d3$d;
+    wire  [15:0] ns_d3$q;
+    reg  ns_d3$clock;
+    reg  [15:0] nbeam_d1$d;
+    wire  [15:0] nbeam_d1$q;
+    reg  nbeam_d1$clock;
+    reg  [15:0] nbeam_d2$d;
+    wire  [15:0] nbeam_d2$q;
+    reg  nbeam_d2$clock;
+    reg  [15:0] nbeam_d3$d;
+    wire  [15:0] nbeam_d3$q;
+    reg  nbeam_d3$clock;
+    reg  [15:0] nb_d1$d;
+    wire  [15:0] nb_d1$q;
+    reg  nb_d1$clock;
+    reg  [15:0] nb_d2$d;
+    wire  [15:0] nb_d2$q;
+    reg  nb_d2$clock;
+    reg  [15:0] nb_d3$d;
+    wire  [15:0] nb_d3$q;
+    reg  nb_d3$clock;
+    reg  valid_q$d;
+    wire  valid_q$q;
+    reg  valid_q$clock;
+    reg  [15:0] ns_q$d;
+    wire  [15:0] ns_q$q;
+    reg  ns_q$clock;
+    reg  [15:0] nbeam_q$d;
+    wire  [15:0] nbeam_q$q;
+    reg  nbeam_q$clock;
+    reg  [15:0] nb_q$d;
+    wire  [15:0] nb_q$q;
+    reg  nb_q$clock;
+    
+    // Local signals
+    reg  [15:0] z0;
+    reg  [15:0] z1;
+    reg  [15:0] ny_last;
+    reg  [15:0] b_last;
+    
+    // Sub module instances
+    top$cfb$lanes$0 lanes$0(
+        .clock(lanes$0$clock),
+        .dims(lanes$0$dims),
+        .slices(lanes$0$slices),
+        .axes(lanes$0$axes),
+        .address_reg(lanes$0$address_reg),
+        .dx(lanes$0$dx),
+        .dy(lanes$0$dy),
+        .eye_x(lanes$0$eye_x),
+        .eye_y(lanes$0$eye_y),
+        .eye_z(lanes$0$eye_z),
+        .a_n_s(lanes$0$a_n_s),
+        .a_n_beam(lanes$0$a_n_beam),
+        .a_n_b(lanes$0$a_n_b),
+        .n_s(lanes$0$n_s),
+        .n_beam(lanes$0$n_beam),
+        .n_b(lanes$0$n_b),
+        .load_enable(lanes$0$load_enable),
+        .load_module(lanes$0$load_module),
+        .load_address(lanes$0$load_address),
+        .load_data(lanes$0$load_data),
+        .ext_addr(lanes$0$ext_addr),
+        .ext_data(lanes$0$ext_data),
+        .value(lanes$0$value),
+        .x(lanes$0$x),
+        .y(lanes$0$y),
+        .z(lanes$0$z),
+        .address(lanes$0$address),
+        .pad(lanes$0$pad),
+        .sr(lanes$0$sr),
+        .er(lanes$0$er),
+        .at_edge(lanes$0$at_edge),
+        .face(lanes$0$face),
+        .base_x(lanes$0$base_x),
+        .base_y(lanes$0$base_y),
+        .halo(lanes$0$halo),
+        .dx_neg(lanes$0$dx_neg),
+        .dx_mag(lanes$0$dx_mag),
+        .dy_neg(lanes$0$dy_neg),
+        .dy_mag(lanes$0$dy_mag),
+        .invalid(lanes$0$invalid)
+    );
+    top$cfb$lanes$1 lanes$1(
+        .clock(lanes$1$clock),
+        .dims(lanes$1$dims),
+        .slices(lanes$1$slices),
+        .axes(lanes$1$axes),
+        .address_reg(lanes$1$address_reg),
+        .dx(lanes$1$dx),
+        .dy(lanes$1$dy),
+        .eye_x(lanes$1$eye_x),
+        .eye_y(lanes$1$eye_y),
+        .eye_z(lanes$1$eye_z),
+        .a_n_s(lanes$1$a_n_s),
+        .a_n_beam(lanes$1$a_n_beam),
+        .a_n_b(lanes$1$a_n_b),
+        .n_s(lanes$1$n_s),
+        .n_beam(lanes$1$n_beam),
+        .n_b(lanes$1$n_b),
+        .load_enable(lanes$1$load_enable),
+        .load_module(lanes$1$load_module),
+        .load_address(lanes$1$load_address),
+        .load_data(lanes$1$load_data),
+        .ext_addr(lanes$1$ext_addr),
+        .ext_data(lanes$1$ext_data),
+        .value(lanes$1$value),
+        .x(lanes$1$x),
+        .y(lanes$1$y),
+        .z(lanes$1$z),
+        .address(lanes$1$address),
+        .pad(lanes$1$pad),
+        .sr(lanes$1$sr),
+        .er(lanes$1$er),
+        .at_edge(lanes$1$at_edge),
+        .face(lanes$1$face),
+        .base_x(lanes$1$base_x),
+        .base_y(lanes$1$base_y),
+        .halo(lanes$1$halo),
+        .dx_neg(lanes$1$dx_neg),
+        .dx_mag(lanes$1$dx_mag),
+        .dy_neg(lanes$1$dy_neg),
+        .dy_mag(lanes$1$dy_mag),
+        .invalid(lanes$1$invalid)
+    );
+    top$cfb$running running(
+        .d(running$d),
+        .q(running$q),
+        .clock(running$clock)
+    );
+    top$cfb$ns_c ns_c(
+        .d(ns_c$d),
+        .q(ns_c$q),
+        .clock(ns_c$clock)
+    );
+    top$cfb$nbeam_c nbeam_c(
+        .d(nbeam_c$d),
+        .q(nbeam_c$q),
+        .clock(nbeam_c$clock)
+    );
+    top$cfb$nb_c nb_c(
+        .d(nb_c$d),
+        .q(nb_c$q),
+        .clock(nb_c$clock)
+    );
+    top$cfb$run_d1 run_d1(
+        .d(run_d1$d),
+        .q(run_d1$q),
+        .clock(run_d1$clock)
+    );
+    top$cfb$run_d2 run_d2(
+        .d(run_d2$d),
+        .q(run_d2$q),
+        .clock(run_d2$clock)
+    );
+    top$cfb$run_d3 run_d3(
+        .d(run_d3$d),
+        .q(run_d3$q),
+        .clock(run_d3$clock)
+    );
+    top$cfb$ns_d1 ns_d1(
+        .d(ns_d1$d),
+        .q(ns_d1$q),
+        .clock(ns_d1$clock)
+    );
+    top$cfb$ns_d2 ns_d2(
+        .d(ns_d2$d),
+        .q(ns_d2$q),
+        .clock(ns_d2$clock)
+    );
+    top$cfb$ns_d3 ns_d3(
+        .d(ns_d3$d),
+        .q(ns_d3$q),
+        .clock(ns_d3$clock)
+    );
+    top$cfb$nbeam_d1 nbeam_d1(
+        .d(nbeam_d1$d),
+        .q(nbeam_d1$q),
+        .clock(nbeam_d1$clock)
+    );
+    top$cfb$nbeam_d2 nbeam_d2(
+        .d(nbeam_d2$d),
+        .q(nbeam_d2$q),
+        .clock(nbeam_d2$clock)
+    );
+    top$cfb$nbeam_d3 nbeam_d3(
+        .d(nbeam_d3$d),
+        .q(nbeam_d3$q),
+        .clock(nbeam_d3$clock)
+    );
+    top$cfb$nb_d1 nb_d1(
+        .d(nb_d1$d),
+        .q(nb_d1$q),
+        .clock(nb_d1$clock)
+    );
+    top$cfb$nb_d2 nb_d2(
+        .d(nb_d2$d),
+        .q(nb_d2$q),
+        .clock(nb_d2$clock)
+    );
+    top$cfb$nb_d3 nb_d3(
+        .d(nb_d3$d),
+        .q(nb_d3$q),
+        .clock(nb_d3$clock)
+    );
+    top$cfb$valid_q valid_q(
+        .d(valid_q$d),
+        .q(valid_q$q),
+        .clock(valid_q$clock)
+    );
+    top$cfb$ns_q ns_q(
+        .d(ns_q$d),
+        .q(ns_q$q),
+        .clock(ns_q$clock)
+    );
+    top$cfb$nbeam_q nbeam_q(
+        .d(nbeam_q$d),
+        .q(nbeam_q$q),
+        .clock(nbeam_q$clock)
+    );
+    top$cfb$nb_q nb_q(
+        .d(nb_q$d),
+        .q(nb_q$q),
+        .clock(nb_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        running$clock = clock;
+        ns_c$clock = clock;
+        nbeam_c$clock = clock;
+        nb_c$clock = clock;
+        valid_q$clock = clock;
+        ns_q$clock = clock;
+        nbeam_q$clock = clock;
+        nb_q$clock = clock;
+        run_d1$clock = clock;
+        run_d2$clock = clock;
+        run_d3$clock = clock;
+        ns_d1$clock = clock;
+        ns_d2$clock = clock;
+        ns_d3$clock = clock;
+        nbeam_d1$clock = clock;
+        nbeam_d2$clock = clock;
+        nbeam_d3$clock = clock;
+        nb_d1$clock = clock;
+        nb_d2$clock = clock;
+        nb_d3$clock = clock;
+        running$d = running$q;
+        ns_c$d = ns_c$q;
+        nbeam_c$d = nbeam_c$q;
+        nb_c$d = nb_c$q;
+        valid_q$d = valid_q$q;
+        ns_q$d = ns_q$q;
+        nbeam_q$d = nbeam_q$q;
+        nb_q$d = nb_q$q;
+        run_d1$d = run_d1$q;
+        run_d2$d = run_d2$q;
+        run_d3$d = run_d3$q;
+        ns_d1$d = ns_d1$q;
+        ns_d2$d = ns_d2$q;
+        ns_d3$d = ns_d3$q;
+        nbeam_d1$d = nbeam_d1$q;
+        nbeam_d2$d = nbeam_d2$q;
+        nbeam_d3$d = nbeam_d3$q;
+        nb_d1$d = nb_d1$q;
+        nb_d2$d = nb_d2$q;
+        nb_d3$d = nb_d3$q;
+        run_d1$d = running$q;
+        ns_d1$d = ns_c$q;
+        nbeam_d1$d = nbeam_c$q;
+        nb_d1$d = nb_c$q;
+        run_d2$d = run_d1$q;
+        ns_d2$d = ns_d1$q;
+        nbeam_d2$d = nbeam_d1$q;
+        nb_d2$d = nb_d1$q;
+        run_d3$d = run_d2$q;
+        ns_d3$d = ns_d2$q;
+        nbeam_d3$d = nbeam_d2$q;
+        nb_d3$d = nb_d2$q;
+        z0 = slices[('h20)+:(16)];
+        z1 = slices[('h30)+:(16)];
+        ny_last = dims[('h10)+:(16)] - 'h1;
+        b_last = beats[('h20)+:(16)] - 'h1;
+        lanes$0$clock = clock;
+        lanes$0$dims = dims;
+        lanes$0$slices = slices;
+        lanes$0$axes = axes;
+        lanes$0$address_reg = address_reg;
+        lanes$0$dx = dx;
+        lanes$0$dy = dy;
+        lanes$0$eye_x = eye_x;
+        lanes$0$eye_y = eye_y;
+        lanes$0$eye_z = eye_z;
+        lanes$0$a_n_s = ns_c$q;
+        lanes$0$a_n_beam = nbeam_c$q;
+        lanes$0$a_n_b = nb_c$q;
+        lanes$0$n_s = ns_d3$q;
+        lanes$0$n_beam = nbeam_d3$q;
+        lanes$0$n_b = nb_d3$q;
+        lanes$0$load_enable = load_enable;
+        lanes$0$load_module = load_module;
+        lanes$0$load_address = load_address;
+        lanes$0$load_data = load_data;
+        value$0 = lanes$0$value;
+        x$0 = lanes$0$x;
+        z$0 = lanes$0$z;
+        address$0 = lanes$0$address;
+        y$0 = lanes$0$y;
+        pad$0 = lanes$0$pad;
+        sr$0 = lanes$0$sr;
+        er$0 = lanes$0$er;
+        base_x$0 = lanes$0$base_x;
+        base_y$0 = lanes$0$base_y;
+        face$0 = lanes$0$face;
+        at_edge$0 = lanes$0$at_edge;
+        invalid$0 = lanes$0$invalid;
+        halo$0 = lanes$0$halo;
+        ext_addr$0 = lanes$0$ext_addr;
+        lanes$0$ext_data = ext_data$0;
+        dx_neg$0 = lanes$0$dx_neg;
+        dx_mag$0 = lanes$0$dx_mag;
+        dy_neg$0 = lanes$0$dy_neg;
+        dy_mag$0 = lanes$0$dy_mag;
+        lanes$1$clock = clock;
+        lanes$1$dims = dims;
+        lanes$1$slices = slices;
+        lanes$1$axes = axes;
+        lanes$1$address_reg = address_reg;
+        lanes$1$dx = dx;
+        lanes$1$dy = dy;
+        lanes$1$eye_x = eye_x;
+        lanes$1$eye_y = eye_y;
+        lanes$1$eye_z = eye_z;
+        lanes$1$a_n_s = ns_c$q;
+        lanes$1$a_n_beam = nbeam_c$q;
+        lanes$1$a_n_b = nb_c$q;
+        lanes$1$n_s = ns_d3$q;
+        lanes$1$n_beam = nbeam_d3$q;
+        lanes$1$n_b = nb_d3$q;
+        lanes$1$load_enable = load_enable;
+        lanes$1$load_module = load_module;
+        lanes$1$load_address = load_address;
+        lanes$1$load_data = load_data;
+        value$1 = lanes$1$value;
+        x$1 = lanes$1$x;
+        z$1 = lanes$1$z;
+        address$1 = lanes$1$address;
+        y$1 = lanes$1$y;
+        pad$1 = lanes$1$pad;
+        sr$1 = lanes$1$sr;
+        er$1 = lanes$1$er;
+        base_x$1 = lanes$1$base_x;
+        base_y$1 = lanes$1$base_y;
+        face$1 = lanes$1$face;
+        at_edge$1 = lanes$1$at_edge;
+        invalid$1 = lanes$1$invalid;
+        halo$1 = lanes$1$halo;
+        ext_addr$1 = lanes$1$ext_addr;
+        lanes$1$ext_data = ext_data$1;
+        dx_neg$1 = lanes$1$dx_neg;
+        dx_mag$1 = lanes$1$dx_mag;
+        dy_neg$1 = lanes$1$dy_neg;
+        dy_mag$1 = lanes$1$dy_mag;
+        if (start & ~running$q) begin
+            running$d = 1'b1;
+            ns_c$d = z0;
+            nbeam_c$d = 'h0;
+            nb_c$d = 'h0;
+        end
+        if (running$q) begin
+            if (nb_c$q != b_last) begin
+                nb_c$d = nb_c$q + 'h1;
+            end
+            else begin
+                nb_c$d = 'h0;
+                if (nbeam_c$q != ny_last) begin
+                    nbeam_c$d = nbeam_c$q + 'h1;
+                end
+                else begin
+                    nbeam_c$d = 'h0;
+                    if (ns_c$q != z1) begin
+                        ns_c$d = ns_c$q + 'h1;
+                    end
+                    else begin
+                        running$d = 1'b0;
+                    end
+                end
+            end
+        end
+        valid_q$d = run_d3$q;
+        ns_q$d = ns_d3$q;
+        nbeam_q$d = nbeam_d3$q;
+        nb_q$d = nb_d3$q;
+        busy = running$q;
+        valid = valid_q$q;
+        n_s = ns_q$q;
+        n_beam = nbeam_q$q;
+        n_b = nb_q$q;
+        bs = nb_q$q == 'h0;
+    end
+    
+endmodule // top$cfb
+module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] dims;
+    input wire  [63:0] slices;
+    input wire  [63:0] axes;
+    input wire  [63:0] address_reg;
+    input wire  [63:0] dx;
+    input wire  [63:0] dy;
+    input wire  [63:0] eye_x;
+    input wire  [63:0] eye_y;
+    input wire  [63:0] eye_z;
+    input wire  [15:0] a_n_s;
+    input wire  [15:0] a_n_beam;
+    input wire  [15:0] a_n_b;
+    input wire  [15:0] n_s;
+    input wire  [15:0] n_beam;
+    input wire  [15:0] n_b;
+    input wire  load_enable;
+    input wire  [7:0] load_module;
+    input wire  [15:0] load_address;
+    input wire  [15:0] load_data;
+    output reg  [31:0] ext_addr;
+    input wire  [15:0] ext_data;
+    output reg  [15:0] value;
+    output reg  [15:0] x;
+    output reg  [15:0] y;
+    output reg  [15:0] z;
+    output reg  [31:0] address;
+    output reg  pad;
+    output reg  sr;
+    output reg  er;
+    output reg  at_edge;
+    output reg  [2:0] face;
+    output reg  [15:0] base_x;
+    output reg  [15:0] base_y;
+    output reg  halo;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
+    output reg  invalid;
+    
+    // Constant declarations
+    localparam  lane = 16'h0;
+    localparam  p_mask = 16'h1;
+    localparam  p_shift = 8'h1;
+    localparam  perspective = 1'b1;
+    localparam  external = 1'b0;
+    localparam  frac = 8'h8;
+    localparam  one = 'h100;
+    
+    // Stub signals
+    reg  [15:0] memory$read_address;
+    reg  memory$read_clock;
+    wire  [15:0] memory$read_data;
+    reg  [15:0] memory$write_address;
+    reg  memory$write_clock;
+    reg  [15:0] memory$write_data;
+    reg  memory$write_enable;
+    reg  [63:0] div_x$num;
+    reg  [63:0] div_x$den;
+    wire  [31:0] div_x$q;
+    wire  div_x$overflow;
+    reg  [63:0] div_y$num;
+    reg  [63:0] div_y$den;
+    wire  [31:0] div_y$q;
+    wire  div_y$overflow;
+    reg  dxn_q$d;
+    wire  dxn_q$q;
+    reg  dxn_q$clock;
+    reg  [15:0] dxm_q$d;
+    wire  [15:0] dxm_q$q;
+    reg  dxm_q$clock;
+    reg  dyn_q$d;
+    wire  dyn_q$q;
+    reg  dyn_q$clock;
+    reg  [15:0] dym_q$d;
+    wire  [15:0] dym_q$q;
+    reg  dym_q$clock;
+    reg  inval_q$d;
+    wire  inval_q$q;
+    reg  inval_q$clock;
+    reg  halo_q$d;
+    wire  halo_q$q;
+    reg  halo_q$clock;
+    reg  [15:0] a_u$d;
+    wire  [15:0] a_u$q;
+    reg  a_u$clock;
+    reg  [15:0] a_v$d;
+    wire  [15:0] a_v$q;
+    reg  a_v$clock;
+    reg  [15:0] a_w$d;
+    wire  [15:0] a_w$q;
+    reg  a_w$clock;
+    reg  a_pad$d;
+    wire  a_pad$q;
+    reg  a_pad$clock;
+    reg  [31:0] m_u$d;
+    wire  [31:0] m_u$q;
+    reg  m_u$clock;
+    reg  [31:0] m_v$d;
+    wire  [31:0] m_v$q;
+    reg  m_v$clock;
+    reg  [31:0] m_w_lo$d;
+    wire  [31:0] m_w_lo$q;
+    reg  m_w_lo$clock;
+    reg  [31:0] m_w_hi$d;
+    wire  [31:0] m_w_hi$q;
+    reg  m_w_hi$clock;
+    reg  m_pad$d;
+    wire  m_pad$q;
+    reg  m_pad$clock;
+    reg  [31:0] addr$d;
+    wire  [31:0] addr$q;
+    reg  addr$clock;
+    reg  [15:0] x_q$d;
+    wire  [15:0] x_q$q;
+    reg  x_q$clock;
+    reg  [15:0] y_q$d;
+    wire  [15:0] y_q$q;
+    reg  y_q$clock;
+    reg  [15:0] z_q$d;
+    wire  [15:0] z_q$q;
+    reg  z_q$clock;
+    reg  [31:0] addr_q$d;
+    wire  [31:0] addr_q$q;
+    reg  addr_q$clock;
+    reg  pad_q$d;
+    wire  pad_q$q;
+    reg  pad_q$clock;
+    reg  sr_q$d;
+    wire  sr_q$q;
+    reg  sr_q$clock;
+    reg  edge_q$d;
+    wire  edge_q$q;
+    reg  edge_q$clock;
+    reg  [2:0] face_q$d;
+    wire  [2:0] face_q$q;
+    reg  face_q$clock;
+    reg  [15:0] bx_q$d;
+    wire  [15:0] bx_q$q;
+    reg  bx_q$clock;
+    reg  [15:0] by_q$d;
+    wire  [15:0] by_q$q;
+    reg  by_q$clock;
+    
+    // Local signals
+    reg  [15:0] nx;
+    reg  [15:0] nx_last;
+    reg  [15:0] ny_last;
+    reg  [15:0] nz_last;
+    reg  [15:0] z0;
+    reg  [15:0] z1;
+    reg  [15:0] border;
+    reg  [1:0] u_from;
+    reg  [1:0] v_from;
+    reg  [1:0] w_from;
+    reg  [15:0] b_u;
+    reg  [15:0] slab_lo;
+    reg  [15:0] slab_hi;
+    reg  [63:0] dx_abs;
+    reg  [63:0] dy_abs;
+    reg  par_dx_neg;
+    reg  [31:0] par_dx_mag;
+    reg  par_dy_neg;
+    reg  [31:0] par_dy_mag;
+    reg  [63:0] sx;
+    reg  [63:0] sy;
+    reg  [63:0] sz;
+    reg  [63:0] sx_mag;
+    reg  [63:0] sy_mag;
+    reg  [63:0] sz_mag;
+    reg  dxn;
+    reg  [31:0] dxm;
+    reg  dyn_;
+    reg  [31:0] dym;
+    reg  inval;
+    reg  dx_pos;
+    reg  dx_neg_nz;
+    reg  dy_pos;
+    reg  dy_neg_nz;
+    reg  [15:0] xc;
+    reg  [15:0] a_xc;
+    reg  is_pad;
+    reg  [2:0] face_c;
+    reg  [15:0] depth;
+    reg  [15:0] bx;
+    reg  [15:0] by;
+    
+    // Sub module instances
+    top$cfb$lanes$0$memory memory(
+        .read_address(memory$read_address),
+        .read_clock(memory$read_clock),
+        .read_data(memory$read_data),
+        .write_address(memory$write_address),
+        .write_clock(memory$write_clock),
+        .write_data(memory$write_data),
+        .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$div_x div_x(
+        .num(div_x$num),
+        .den(div_x$den),
+        .q(div_x$q),
+        .overflow(div_x$overflow)
+    );
+    top$cfb$lanes$0$div_y div_y(
+        .num(div_y$num),
+        .den(div_y$den),
+        .q(div_y$q),
+        .overflow(div_y$overflow)
+    );
+    top$cfb$lanes$0$dxn_q dxn_q(
+        .d(dxn_q$d),
+        .q(dxn_q$q),
+        .clock(dxn_q$clock)
+    );
+    top$cfb$lanes$0$dxm_q dxm_q(
+        .d(dxm_q$d),
+        .q(dxm_q$q),
+        .clock(dxm_q$clock)
+    );
+    top$cfb$lanes$0$dyn_q dyn_q(
+        .d(dyn_q$d),
+        .q(dyn_q$q),
+        .clock(dyn_q$clock)
+    );
+    top$cfb$lanes$0$dym_q dym_q(
+        .d(dym_q$d),
+        .q(dym_q$q),
+        .clock(dym_q$clock)
+    );
+    top$cfb$lanes$0$inval_q inval_q(
+        .d(inval_q$d),
+        .q(inval_q$q),
+        .clock(inval_q$clock)
+    );
+    top$cfb$lanes$0$halo_q halo_q(
+        .d(halo_q$d),
+        .q(halo_q$q),
+        .clock(halo_q$clock)
+    );
+    top$cfb$lanes$0$a_u a_u(
+        .d(a_u$d),
+        .q(a_u$q),
+        .clock(a_u$clock)
+    );
+    top$cfb$lanes$0$a_v a_v(
+        .d(a_v$d),
+        .q(a_v$q),
+        .clock(a_v$clock)
+    );
+    top$cfb$lanes$0$a_w a_w(
+        .d(a_w$d),
+        .q(a_w$q),
+        .clock(a_w$clock)
+    );
+    top$cfb$lanes$0$a_pad a_pad(
+        .d(a_pad$d),
+        .q(a_pad$q),
+        .clock(a_pad$clock)
+    );
+    top$cfb$lanes$0$m_u m_u(
+        .d(m_u$d),
+        .q(m_u$q),
+        .clock(m_u$clock)
+    );
+    top$cfb$lanes$0$m_v m_v(
+        .d(m_v$d),
+        .q(m_v$q),
+        .clock(m_v$clock)
+    );
+    top$cfb$lanes$0$m_w_lo m_w_lo(
+        .d(m_w_lo$d),
+        .q(m_w_lo$q),
+        .clock(m_w_lo$clock)
+    );
+    top$cfb$lanes$0$m_w_hi m_w_hi(
+        .d(m_w_hi$d),
+        .q(m_w_hi$q),
+        .clock(m_w_hi$clock)
+    );
+    top$cfb$lanes$0$m_pad m_pad(
+        .d(m_pad$d),
+        .q(m_pad$q),
+        .clock(m_pad$clock)
+    );
+    top$cfb$lanes$0$addr addr(
+        .d(addr$d),
+        .q(addr$q),
+        .clock(addr$clock)
+    );
+    top$cfb$lanes$0$x_q x_q(
+        .d(x_q$d),
+        .q(x_q$q),
+        .clock(x_q$clock)
+    );
+    top$cfb$lanes$0$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    top$cfb$lanes$0$z_q z_q(
+        .d(z_q$d),
+        .q(z_q$q),
+        .clock(z_q$clock)
+    );
+    top$cfb$lanes$0$addr_q addr_q(
+        .d(addr_q$d),
+        .q(addr_q$q),
+        .clock(addr_q$clock)
+    );
+    top$cfb$lanes$0$pad_q pad_q(
+        .d(pad_q$d),
+        .q(pad_q$q),
+        .clock(pad_q$clock)
+    );
+    top$cfb$lanes$0$sr_q sr_q(
+        .d(sr_q$d),
+        .q(sr_q$q),
+        .clock(sr_q$clock)
+    );
+    top$cfb$lanes$0$edge_q edge_q(
+        .d(edge_q$d),
+        .q(edge_q$q),
+        .clock(edge_q$clock)
+    );
+    top$cfb$lanes$0$face_q face_q(
+        .d(face_q$d),
+        .q(face_q$q),
+        .clock(face_q$clock)
+    );
+    top$cfb$lanes$0$bx_q bx_q(
+        .d(bx_q$d),
+        .q(bx_q$q),
+        .clock(bx_q$clock)
+    );
+    top$cfb$lanes$0$by_q by_q(
+        .d(by_q$d),
+        .q(by_q$q),
+        .clock(by_q$clock)
+    );
+    
+    // Update code
+    reg  [15:0] value_pass;
+    always @(*) begin
+        x_q$clock = clock;
+        y_q$clock = clock;
+        z_q$clock = clock;
+        addr_q$clock = clock;
+        pad_q$clock = clock;
+        sr_q$clock = clock;
+        edge_q$clock = clock;
+        face_q$clock = clock;
+        bx_q$clock = clock;
+        by_q$clock = clock;
+        dxn_q$clock = clock;
+        dxm_q$clock = clock;
+        dyn_q$clock = clock;
+        dym_q$clock = clock;
+        inval_q$clock = clock;
+        halo_q$clock = clock;
+        a_u$clock = clock;
+        a_v$clock = clock;
+        a_w$clock = clock;
+        a_pad$clock = clock;
+        m_u$clock = clock;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_pad$clock = clock;
+        addr$clock = clock;
+        x_q$d = x_q$q;
+        y_q$d = y_q$q;
+        z_q$d = z_q$q;
+        addr_q$d = addr_q$q;
+        pad_q$d = pad_q$q;
+        sr_q$d = sr_q$q;
+        edge_q$d = edge_q$q;
+        face_q$d = face_q$q;
+        bx_q$d = bx_q$q;
+        by_q$d = by_q$q;
+        dxn_q$d = dxn_q$q;
+        dxm_q$d = dxm_q$q;
+        dyn_q$d = dyn_q$q;
+        dym_q$d = dym_q$q;
+        inval_q$d = inval_q$q;
+        halo_q$d = halo_q$q;
+        a_u$d = a_u$q;
+        a_v$d = a_v$q;
+        a_w$d = a_w$q;
+        a_pad$d = a_pad$q;
+        m_u$d = m_u$q;
+        m_v$d = m_v$q;
+        m_w_lo$d = m_w_lo$q;
+        m_w_hi$d = m_w_hi$q;
+        m_pad$d = m_pad$q;
+        addr$d = addr$q;
+        nx = dims[('h0)+:(16)];
+        nx_last = dims[('h0)+:(16)] - 'h1;
+        ny_last = dims[('h10)+:(16)] - 'h1;
+        nz_last = dims[('h20)+:(16)] - 'h1;
+        z0 = slices[('h0)+:(16)];
+        z1 = slices[('h10)+:(16)];
+        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        u_from = axes[('h0)+:(2)];
+        v_from = axes[('h2)+:(2)];
+        w_from = axes[('h4)+:(2)];
+        b_u = address_reg[('h0)+:(16)];
+        slab_lo = address_reg[('h10)+:(16)];
+        slab_hi = address_reg[('h20)+:(16)];
+        dx_abs = dx;
+        if (dx['h3f]) begin
+            dx_abs = 'h0 - dx;
+        end
+        dy_abs = dy;
+        if (dy['h3f]) begin
+            dy_abs = 'h0 - dy;
+        end
+        par_dx_neg = dx['h3f];
+        par_dx_mag = dx_abs[('h0)+:(32)];
+        par_dy_neg = dy['h3f];
+        par_dy_mag = dy_abs[('h0)+:(32)];
+        memory$read_clock = clock;
+        memory$write_clock = clock;
+        memory$write_enable = load_enable & (16'(load_module) == lane);
+        memory$write_address = load_address;
+        memory$write_data = load_data;
+        a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
+        a_pad$d = a_xc >= nx;
+        a_u$d = a_xc;
+        if (u_from == 'h1) begin
+            a_u$d = a_n_beam;
+        end
+        if (u_from == 'h2) begin
+            a_u$d = a_n_s;
+        end
+        a_v$d = a_xc;
+        if (v_from == 'h1) begin
+            a_v$d = a_n_beam;
+        end
+        if (v_from == 'h2) begin
+            a_v$d = a_n_s;
+        end
+        a_w$d = a_xc;
+        if (w_from == 'h1) begin
+            a_w$d = a_n_beam;
+        end
+        if (w_from == 'h2) begin
+            a_w$d = a_n_s;
+        end
+        m_u$d = 32'(a_u$q) >> p_shift;
+        m_v$d = a_v$q * b_u;
+        m_w_lo$d = a_w$q * slab_lo;
+        m_w_hi$d = a_w$q * slab_hi;
+        m_pad$d = a_pad$q;
+        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        if (m_pad$q) begin
+            addr$d = 'h0;
+        end
+        memory$read_address = 16'(addr$q);
+        ext_addr = addr$q;
+        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
+        is_pad = xc >= nx;
+        sx = (64'(xc) << frac) + eye_x;
+        sy = (64'(n_beam) << frac) + eye_y;
+        sz = (64'(n_s) << frac) + eye_z;
+        sx_mag = sx;
+        if (sx['h3f]) begin
+            sx_mag = 'h0 - sx;
+        end
+        sy_mag = sy;
+        if (sy['h3f]) begin
+            sy_mag = 'h0 - sy;
+        end
+        sz_mag = sz;
+        if (sz['h3f]) begin
+            sz_mag = 'h0 - sz;
+        end
+        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
+        div_x$den = sz_mag;
+        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
+        div_y$den = sz_mag;
+        dxn = par_dx_neg;
+        dxm = par_dx_mag;
+        dyn_ = par_dy_neg;
+        dym = par_dy_mag;
+        inval = 1'b0;
+        if (perspective) begin
+            dxn = sx['h3f] ^ sz['h3f];
+            dyn_ = sy['h3f] ^ sz['h3f];
+            dxm = div_x$q;
+            dym = div_y$q;
+            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
+            if (inval) begin
+                dxm = 'h0;
+                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
+                    dxm = one;
+                end
+                dym = 'h0;
+                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
+                    dym = one;
+                end
+            end
+        end
+        if (dxm == 'h0) begin
+            dxn = 1'b0;
+        end
+        if (dym == 'h0) begin
+            dyn_ = 1'b0;
+        end
+        if (is_pad) begin
+            dxm = 'h0;
+            dym = 'h0;
+            dxn = 1'b0;
+            dyn_ = 1'b0;
+        end
+        dx_pos = ~dxn & (dxm != 'h0);
+        dx_neg_nz = dxn & (dxm != 'h0);
+        dy_pos = ~dyn_ & (dym != 'h0);
+        dy_neg_nz = dyn_ & (dym != 'h0);
+        face_c = 'h0;
+        depth = z1 - n_s;
+        bx = border + xc;
+        by = border + n_beam;
+        if ((xc == nx_last) & dx_pos) begin
+            face_c = 'h2;
+            bx = border + xc + depth;
+        end
+        else if ((xc == 'h0) & dx_neg_nz) begin
+            face_c = 'h3;
+            bx = border - depth;
+        end
+        else if ((n_beam == ny_last) & dy_pos) begin
+            face_c = 'h4;
+            by = border + n_beam + depth;
+        end
+        else if ((n_beam == 'h0) & dy_neg_nz) begin
+            face_c = 'h5;
+            by = border - depth;
+        end
+        if (n_s == z1) begin
+            face_c = 'h1;
+            bx = border + xc;
+            by = border + n_beam;
+        end
+        if (is_pad | inval) begin
+            face_c = 'h0;
+        end
+        if (face_c == 'h0) begin
+            bx = 'h0;
+            by = 'h0;
+        end
+        x_q$d = xc;
+        y_q$d = n_beam;
+        z_q$d = n_s;
+        addr_q$d = addr$q;
+        pad_q$d = is_pad;
+        sr_q$d = n_s == z0;
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        face_q$d = face_c;
+        bx_q$d = bx;
+        by_q$d = by;
+        dxn_q$d = dxn;
+        dxm_q$d = 16'(dxm);
+        dyn_q$d = dyn_;
+        dym_q$d = 16'(dym);
+        inval_q$d = inval | is_pad;
+        halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
+        value_pass = memory$read_data;
+        if (external) begin
+            value_pass = ext_data;
+        end
+        if (pad_q$q) begin
+            value_pass = 'h0;
+        end
+        x = x_q$q;
+        y = y_q$q;
+        z = z_q$q;
+        address = addr_q$q;
+        pad = pad_q$q;
+        sr = sr_q$q;
+        er = face_q$q != 'h0;
+        at_edge = edge_q$q;
+        face = face_q$q;
+        base_x = bx_q$q;
+        base_y = by_q$q;
+        dx_neg = dxn_q$q;
+        dx_mag = dxm_q$q;
+        dy_neg = dyn_q$q;
+        dy_mag = dym_q$q;
+        invalid = inval_q$q;
+        halo = halo_q$q;
+        value = value_pass;
+    end
+    
+endmodule // top$cfb$lanes$0
+module top$cfb$lanes$0$a_pad(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$a_pad
+module top$cfb$lanes$0$a_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$a_u
+module top$cfb$lanes$0$a_v(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$a_v
+module top$cfb$lanes$0$a_w(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$a_w
+module top$cfb$lanes$0$addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr
+module top$cfb$lanes$0$addr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q
+module top$cfb$lanes$0$bx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$bx_q
+module top$cfb$lanes$0$by_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$by_q
+module top$cfb$lanes$0$dxm_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$dxm_q
+module top$cfb$lanes$0$dxn_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$dxn_q
+module top$cfb$lanes$0$dym_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$dym_q
+module top$cfb$lanes$0$dyn_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$dyn_q
+module top$cfb$lanes$0$edge_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$edge_q
+module top$cfb$lanes$0$face_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$face_q
+module top$cfb$lanes$0$halo_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$halo_q
+module top$cfb$lanes$0$inval_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$inval_q
+module top$cfb$lanes$0$m_pad(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$m_pad
+module top$cfb$lanes$0$m_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$m_u
+module top$cfb$lanes$0$m_v(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$m_v
+module top$cfb$lanes$0$m_w_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$m_w_hi
+module top$cfb$lanes$0$m_w_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$m_w_lo
+module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16383:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$pad_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$pad_q
+module top$cfb$lanes$0$sr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$x_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$x_q
+module top$cfb$lanes$0$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$y_q
+module top$cfb$lanes$0$z_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$z_q
+module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] dims;
+    input wire  [63:0] slices;
+    input wire  [63:0] axes;
+    input wire  [63:0] address_reg;
+    input wire  [63:0] dx;
+    input wire  [63:0] dy;
+    input wire  [63:0] eye_x;
+    input wire  [63:0] eye_y;
+    input wire  [63:0] eye_z;
+    input wire  [15:0] a_n_s;
+    input wire  [15:0] a_n_beam;
+    input wire  [15:0] a_n_b;
+    input wire  [15:0] n_s;
+    input wire  [15:0] n_beam;
+    input wire  [15:0] n_b;
+    input wire  load_enable;
+    input wire  [7:0] load_module;
+    input wire  [15:0] load_address;
+    input wire  [15:0] load_data;
+    output reg  [31:0] ext_addr;
+    input wire  [15:0] ext_data;
+    output reg  [15:0] value;
+    output reg  [15:0] x;
+    output reg  [15:0] y;
+    output reg  [15:0] z;
+    output reg  [31:0] address;
+    output reg  pad;
+    output reg  sr;
+    output reg  er;
+    output reg  at_edge;
+    output reg  [2:0] face;
+    output reg  [15:0] base_x;
+    output reg  [15:0] base_y;
+    output reg  halo;
+    output reg  dx_neg;
+    output reg  [15:0] dx_mag;
+    output reg  dy_neg;
+    output reg  [15:0] dy_mag;
+    output reg  invalid;
+    
+    // Constant declarations
+    localparam  lane = 16'h1;
+    localparam  p_mask = 16'h1;
+    localparam  p_shift = 8'h1;
+    localparam  perspective = 1'b1;
+    localparam  external = 1'b0;
+    localparam  frac = 8'h8;
+    localparam  one = 'h100;
+    
+    // Stub signals
+    reg  [15:0] memory$read_address;
+    reg  memory$read_clock;
+    wire  [15:0] memory$read_data;
+    reg  [15:0] memory$write_address;
+    reg  memory$write_clock;
+    reg  [15:0] memory$write_data;
+    reg  memory$write_enable;
+    reg  [63:0] div_x$num;
+    reg  [63:0] div_x$den;
+    wire  [31:0] div_x$q;
+    wire  div_x$overflow;
+    reg  [63:0] div_y$num;
+    reg  [63:0] div_y$den;
+    wire  [31:0] div_y$q;
+    wire  div_y$overflow;
+    reg  dxn_q$d;
+    wire  dxn_q$q;
+    reg  dxn_q$clock;
+    reg  [15:0] dxm_q$d;
+    wire  [15:0] dxm_q$q;
+    reg  dxm_q$clock;
+    reg  dyn_q$d;
+    wire  dyn_q$q;
+    reg  dyn_q$clock;
+    reg  [15:0] dym_q$d;
+    wire  [15:0] dym_q$q;
+    reg  dym_q$clock;
+    reg  inval_q$d;
+    wire  inval_q$q;
+    reg  inval_q$clock;
+    reg  halo_q$d;
+    wire  halo_q$q;
+    reg  halo_q$clock;
+    reg  [15:0] a_u$d;
+    wire  [15:0] a_u$q;
+    reg  a_u$clock;
+    reg  [15:0] a_v$d;
+    wire  [15:0] a_v$q;
+    reg  a_v$clock;
+    reg  [15:0] a_w$d;
+    wire  [15:0] a_w$q;
+    reg  a_w$clock;
+    reg  a_pad$d;
+    wire  a_pad$q;
+    reg  a_pad$clock;
+    reg  [31:0] m_u$d;
+    wire  [31:0] m_u$q;
+    reg  m_u$clock;
+    reg  [31:0] m_v$d;
+    wire  [31:0] m_v$q;
+    reg  m_v$clock;
+    reg  [31:0] m_w_lo$d;
+    wire  [31:0] m_w_lo$q;
+    reg  m_w_lo$clock;
+    reg  [31:0] m_w_hi$d;
+    wire  [31:0] m_w_hi$q;
+    reg  m_w_hi$clock;
+    reg  m_pad$d;
+    wire  m_pad$q;
+    reg  m_pad$clock;
+    reg  [31:0] addr$d;
+    wire  [31:0] addr$q;
+    reg  addr$clock;
+    reg  [15:0] x_q$d;
+    wire  [15:0] x_q$q;
+    reg  x_q$clock;
+    reg  [15:0] y_q$d;
+    wire  [15:0] y_q$q;
+    reg  y_q$clock;
+    reg  [15:0] z_q$d;
+    wire  [15:0] z_q$q;
+    reg  z_q$clock;
+    reg  [31:0] addr_q$d;
+    wire  [31:0] addr_q$q;
+    reg  addr_q$clock;
+    reg  pad_q$d;
+    wire  pad_q$q;
+    reg  pad_q$clock;
+    reg  sr_q$d;
+    wire  sr_q$q;
+    reg  sr_q$clock;
+    reg  edge_q$d;
+    wire  edge_q$q;
+    reg  edge_q$clock;
+    reg  [2:0] face_q$d;
+    wire  [2:0] face_q$q;
+    reg  face_q$clock;
+    reg  [15:0] bx_q$d;
+    wire  [15:0] bx_q$q;
+    reg  bx_q$clock;
+    reg  [15:0] by_q$d;
+    wire  [15:0] by_q$q;
+    reg  by_q$clock;
+    
+    // Local signals
+    reg  [15:0] nx;
+    reg  [15:0] nx_last;
+    reg  [15:0] ny_last;
+    reg  [15:0] nz_last;
+    reg  [15:0] z0;
+    reg  [15:0] z1;
+    reg  [15:0] border;
+    reg  [1:0] u_from;
+    reg  [1:0] v_from;
+    reg  [1:0] w_from;
+    reg  [15:0] b_u;
+    reg  [15:0] slab_lo;
+    reg  [15:0] slab_hi;
+    reg  [63:0] dx_abs;
+    reg  [63:0] dy_abs;
+    reg  par_dx_neg;
+    reg  [31:0] par_dx_mag;
+    reg  par_dy_neg;
+    reg  [31:0] par_dy_mag;
+    reg  [63:0] sx;
+    reg  [63:0] sy;
+    reg  [63:0] sz;
+    reg  [63:0] sx_mag;
+    reg  [63:0] sy_mag;
+    reg  [63:0] sz_mag;
+    reg  dxn;
+    reg  [31:0] dxm;
+    reg  dyn_;
+    reg  [31:0] dym;
+    reg  inval;
+    reg  dx_pos;
+    reg  dx_neg_nz;
+    reg  dy_pos;
+    reg  dy_neg_nz;
+    reg  [15:0] xc;
+    reg  [15:0] a_xc;
+    reg  is_pad;
+    reg  [2:0] face_c;
+    reg  [15:0] depth;
+    reg  [15:0] bx;
+    reg  [15:0] by;
+    
+    // Sub module instances
+    top$cfb$lanes$1$memory memory(
+        .read_address(memory$read_address),
+        .read_clock(memory$read_clock),
+        .read_data(memory$read_data),
+        .write_address(memory$write_address),
+        .write_clock(memory$write_clock),
+        .write_data(memory$write_data),
+        .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$div_x div_x(
+        .num(div_x$num),
+        .den(div_x$den),
+        .q(div_x$q),
+        .overflow(div_x$overflow)
+    );
+    top$cfb$lanes$1$div_y div_y(
+        .num(div_y$num),
+        .den(div_y$den),
+        .q(div_y$q),
+        .overflow(div_y$overflow)
+    );
+    top$cfb$lanes$1$dxn_q dxn_q(
+        .d(dxn_q$d),
+        .q(dxn_q$q),
+        .clock(dxn_q$clock)
+    );
+    top$cfb$lanes$1$dxm_q dxm_q(
+        .d(dxm_q$d),
+        .q(dxm_q$q),
+        .clock(dxm_q$clock)
+    );
+    top$cfb$lanes$1$dyn_q dyn_q(
+        .d(dyn_q$d),
+        .q(dyn_q$q),
+        .clock(dyn_q$clock)
+    );
+    top$cfb$lanes$1$dym_q dym_q(
+        .d(dym_q$d),
+        .q(dym_q$q),
+        .clock(dym_q$clock)
+    );
+    top$cfb$lanes$1$inval_q inval_q(
+        .d(inval_q$d),
+        .q(inval_q$q),
+        .clock(inval_q$clock)
+    );
+    top$cfb$lanes$1$halo_q halo_q(
+        .d(halo_q$d),
+        .q(halo_q$q),
+        .clock(halo_q$clock)
+    );
+    top$cfb$lanes$1$a_u a_u(
+        .d(a_u$d),
+        .q(a_u$q),
+        .clock(a_u$clock)
+    );
+    top$cfb$lanes$1$a_v a_v(
+        .d(a_v$d),
+        .q(a_v$q),
+        .clock(a_v$clock)
+    );
+    top$cfb$lanes$1$a_w a_w(
+        .d(a_w$d),
+        .q(a_w$q),
+        .clock(a_w$clock)
+    );
+    top$cfb$lanes$1$a_pad a_pad(
+        .d(a_pad$d),
+        .q(a_pad$q),
+        .clock(a_pad$clock)
+    );
+    top$cfb$lanes$1$m_u m_u(
+        .d(m_u$d),
+        .q(m_u$q),
+        .clock(m_u$clock)
+    );
+    top$cfb$lanes$1$m_v m_v(
+        .d(m_v$d),
+        .q(m_v$q),
+        .clock(m_v$clock)
+    );
+    top$cfb$lanes$1$m_w_lo m_w_lo(
+        .d(m_w_lo$d),
+        .q(m_w_lo$q),
+        .clock(m_w_lo$clock)
+    );
+    top$cfb$lanes$1$m_w_hi m_w_hi(
+        .d(m_w_hi$d),
+        .q(m_w_hi$q),
+        .clock(m_w_hi$clock)
+    );
+    top$cfb$lanes$1$m_pad m_pad(
+        .d(m_pad$d),
+        .q(m_pad$q),
+        .clock(m_pad$clock)
+    );
+    top$cfb$lanes$1$addr addr(
+        .d(addr$d),
+        .q(addr$q),
+        .clock(addr$clock)
+    );
+    top$cfb$lanes$1$x_q x_q(
+        .d(x_q$d),
+        .q(x_q$q),
+        .clock(x_q$clock)
+    );
+    top$cfb$lanes$1$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    top$cfb$lanes$1$z_q z_q(
+        .d(z_q$d),
+        .q(z_q$q),
+        .clock(z_q$clock)
+    );
+    top$cfb$lanes$1$addr_q addr_q(
+        .d(addr_q$d),
+        .q(addr_q$q),
+        .clock(addr_q$clock)
+    );
+    top$cfb$lanes$1$pad_q pad_q(
+        .d(pad_q$d),
+        .q(pad_q$q),
+        .clock(pad_q$clock)
+    );
+    top$cfb$lanes$1$sr_q sr_q(
+        .d(sr_q$d),
+        .q(sr_q$q),
+        .clock(sr_q$clock)
+    );
+    top$cfb$lanes$1$edge_q edge_q(
+        .d(edge_q$d),
+        .q(edge_q$q),
+        .clock(edge_q$clock)
+    );
+    top$cfb$lanes$1$face_q face_q(
+        .d(face_q$d),
+        .q(face_q$q),
+        .clock(face_q$clock)
+    );
+    top$cfb$lanes$1$bx_q bx_q(
+        .d(bx_q$d),
+        .q(bx_q$q),
+        .clock(bx_q$clock)
+    );
+    top$cfb$lanes$1$by_q by_q(
+        .d(by_q$d),
+        .q(by_q$q),
+        .clock(by_q$clock)
+    );
+    
+    // Update code
+    reg  [15:0] value_pass;
+    always @(*) begin
+        x_q$clock = clock;
+        y_q$clock = clock;
+        z_q$clock = clock;
+        addr_q$clock = clock;
+        pad_q$clock = clock;
+        sr_q$clock = clock;
+        edge_q$clock = clock;
+        face_q$clock = clock;
+        bx_q$clock = clock;
+        by_q$clock = clock;
+        dxn_q$clock = clock;
+        dxm_q$clock = clock;
+        dyn_q$clock = clock;
+        dym_q$clock = clock;
+        inval_q$clock = clock;
+        halo_q$clock = clock;
+        a_u$clock = clock;
+        a_v$clock = clock;
+        a_w$clock = clock;
+        a_pad$clock = clock;
+        m_u$clock = clock;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_pad$clock = clock;
+        addr$clock = clock;
+        x_q$d = x_q$q;
+        y_q$d = y_q$q;
+        z_q$d = z_q$q;
+        addr_q$d = addr_q$q;
+        pad_q$d = pad_q$q;
+        sr_q$d = sr_q$q;
+        edge_q$d = edge_q$q;
+        face_q$d = face_q$q;
+        bx_q$d = bx_q$q;
+        by_q$d = by_q$q;
+        dxn_q$d = dxn_q$q;
+        dxm_q$d = dxm_q$q;
+        dyn_q$d = dyn_q$q;
+        dym_q$d = dym_q$q;
+        inval_q$d = inval_q$q;
+        halo_q$d = halo_q$q;
+        a_u$d = a_u$q;
+        a_v$d = a_v$q;
+        a_w$d = a_w$q;
+        a_pad$d = a_pad$q;
+        m_u$d = m_u$q;
+        m_v$d = m_v$q;
+        m_w_lo$d = m_w_lo$q;
+        m_w_hi$d = m_w_hi$q;
+        m_pad$d = m_pad$q;
+        addr$d = addr$q;
+        nx = dims[('h0)+:(16)];
+        nx_last = dims[('h0)+:(16)] - 'h1;
+        ny_last = dims[('h10)+:(16)] - 'h1;
+        nz_last = dims[('h20)+:(16)] - 'h1;
+        z0 = slices[('h0)+:(16)];
+        z1 = slices[('h10)+:(16)];
+        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        u_from = axes[('h0)+:(2)];
+        v_from = axes[('h2)+:(2)];
+        w_from = axes[('h4)+:(2)];
+        b_u = address_reg[('h0)+:(16)];
+        slab_lo = address_reg[('h10)+:(16)];
+        slab_hi = address_reg[('h20)+:(16)];
+        dx_abs = dx;
+        if (dx['h3f]) begin
+            dx_abs = 'h0 - dx;
+        end
+        dy_abs = dy;
+        if (dy['h3f]) begin
+            dy_abs = 'h0 - dy;
+        end
+        par_dx_neg = dx['h3f];
+        par_dx_mag = dx_abs[('h0)+:(32)];
+        par_dy_neg = dy['h3f];
+        par_dy_mag = dy_abs[('h0)+:(32)];
+        memory$read_clock = clock;
+        memory$write_clock = clock;
+        memory$write_enable = load_enable & (16'(load_module) == lane);
+        memory$write_address = load_address;
+        memory$write_data = load_data;
+        a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
+        a_pad$d = a_xc >= nx;
+        a_u$d = a_xc;
+        if (u_from == 'h1) begin
+            a_u$d = a_n_beam;
+        end
+        if (u_from == 'h2) begin
+            a_u$d = a_n_s;
+        end
+        a_v$d = a_xc;
+        if (v_from == 'h1) begin
+            a_v$d = a_n_beam;
+        end
+        if (v_from == 'h2) begin
+            a_v$d = a_n_s;
+        end
+        a_w$d = a_xc;
+        if (w_from == 'h1) begin
+            a_w$d = a_n_beam;
+        end
+        if (w_from == 'h2) begin
+            a_w$d = a_n_s;
+        end
+        m_u$d = 32'(a_u$q) >> p_shift;
+        m_v$d = a_v$q * b_u;
+        m_w_lo$d = a_w$q * slab_lo;
+        m_w_hi$d = a_w$q * slab_hi;
+        m_pad$d = a_pad$q;
+        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        if (m_pad$q) begin
+            addr$d = 'h0;
+        end
+        memory$read_address = 16'(addr$q);
+        ext_addr = addr$q;
+        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
+        is_pad = xc >= nx;
+        sx = (64'(xc) << frac) + eye_x;
+        sy = (64'(n_beam) << frac) + eye_y;
+        sz = (64'(n_s) << frac) + eye_z;
+        sx_mag = sx;
+        if (sx['h3f]) begin
+            sx_mag = 'h0 - sx;
+        end
+        sy_mag = sy;
+        if (sy['h3f]) begin
+            sy_mag = 'h0 - sy;
+        end
+        sz_mag = sz;
+        if (sz['h3f]) begin
+            sz_mag = 'h0 - sz;
+        end
+        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
+        div_x$den = sz_mag;
+        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
+        div_y$den = sz_mag;
+        dxn = par_dx_neg;
+        dxm = par_dx_mag;
+        dyn_ = par_dy_neg;
+        dym = par_dy_mag;
+        inval = 1'b0;
+        if (perspective) begin
+            dxn = sx['h3f] ^ sz['h3f];
+            dyn_ = sy['h3f] ^ sz['h3f];
+            dxm = div_x$q;
+            dym = div_y$q;
+            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
+            if (inval) begin
+                dxm = 'h0;
+                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
+                    dxm = one;
+                end
+                dym = 'h0;
+                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
+                    dym = one;
+                end
+            end
+        end
+        if (dxm == 'h0) begin
+            dxn = 1'b0;
+        end
+        if (dym == 'h0) begin
+            dyn_ = 1'b0;
+        end
+        if (is_pad) begin
+            dxm = 'h0;
+            dym = 'h0;
+            dxn = 1'b0;
+            dyn_ = 1'b0;
+        end
+        dx_pos = ~dxn & (dxm != 'h0);
+        dx_neg_nz = dxn & (dxm != 'h0);
+        dy_pos = ~dyn_ & (dym != 'h0);
+        dy_neg_nz = dyn_ & (dym != 'h0);
+        face_c = 'h0;
+        depth = z1 - n_s;
+        bx = border + xc;
+        by = border + n_beam;
+        if ((xc == nx_last) & dx_pos) begin
+            face_c = 'h2;
+            bx = border + xc + depth;
+        end
+        else if ((xc == 'h0) & dx_neg_nz) begin
+            face_c = 'h3;
+            bx = border - depth;
+        end
+        else if ((n_beam == ny_last) & dy_pos) begin
+            face_c = 'h4;
+            by = border + n_beam + depth;
+        end
+        else if ((n_beam == 'h0) & dy_neg_nz) begin
+            face_c = 'h5;
+            by = border - depth;
+        end
+        if (n_s == z1) begin
+            face_c = 'h1;
+            bx = border + xc;
+            by = border + n_beam;
+        end
+        if (is_pad | inval) begin
+            face_c = 'h0;
+        end
+        if (face_c == 'h0) begin
+            bx = 'h0;
+            by = 'h0;
+        end
+        x_q$d = xc;
+        y_q$d = n_beam;
+        z_q$d = n_s;
+        addr_q$d = addr$q;
+        pad_q$d = is_pad;
+        sr_q$d = n_s == z0;
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        face_q$d = face_c;
+        bx_q$d = bx;
+        by_q$d = by;
+        dxn_q$d = dxn;
+        dxm_q$d = 16'(dxm);
+        dyn_q$d = dyn_;
+        dym_q$d = 16'(dym);
+        inval_q$d = inval | is_pad;
+        halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
+        value_pass = memory$read_data;
+        if (external) begin
+            value_pass = ext_data;
+        end
+        if (pad_q$q) begin
+            value_pass = 'h0;
+        end
+        x = x_q$q;
+        y = y_q$q;
+        z = z_q$q;
+        address = addr_q$q;
+        pad = pad_q$q;
+        sr = sr_q$q;
+        er = face_q$q != 'h0;
+        at_edge = edge_q$q;
+        face = face_q$q;
+        base_x = bx_q$q;
+        base_y = by_q$q;
+        dx_neg = dxn_q$q;
+        dx_mag = dxm_q$q;
+        dy_neg = dyn_q$q;
+        dy_mag = dym_q$q;
+        invalid = inval_q$q;
+        halo = halo_q$q;
+        value = value_pass;
+    end
+    
+endmodule // top$cfb$lanes$1
+module top$cfb$lanes$1$a_pad(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$a_pad
+module top$cfb$lanes$1$a_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$a_u
+module top$cfb$lanes$1$a_v(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$a_v
+module top$cfb$lanes$1$a_w(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$a_w
+module top$cfb$lanes$1$addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr
+module top$cfb$lanes$1$addr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q
+module top$cfb$lanes$1$bx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$bx_q
+module top$cfb$lanes$1$by_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$by_q
+module top$cfb$lanes$1$dxm_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$dxm_q
+module top$cfb$lanes$1$dxn_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$dxn_q
+module top$cfb$lanes$1$dym_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$dym_q
+module top$cfb$lanes$1$dyn_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$dyn_q
+module top$cfb$lanes$1$edge_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$edge_q
+module top$cfb$lanes$1$face_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$face_q
+module top$cfb$lanes$1$halo_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$halo_q
+module top$cfb$lanes$1$inval_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$inval_q
+module top$cfb$lanes$1$m_pad(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$m_pad
+module top$cfb$lanes$1$m_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$m_u
+module top$cfb$lanes$1$m_v(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$m_v
+module top$cfb$lanes$1$m_w_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$m_w_hi
+module top$cfb$lanes$1$m_w_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$m_w_lo
+module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16383:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$pad_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$pad_q
+module top$cfb$lanes$1$sr_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$x_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$x_q
+module top$cfb$lanes$1$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$y_q
+module top$cfb$lanes$1$z_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$z_q
+module top$cfb$nb_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_c
+module top$cfb$nb_d1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d1
+module top$cfb$nb_d2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d2
+module top$cfb$nb_d3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d3
+module top$cfb$nb_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_q
+module top$cfb$nbeam_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_c
+module top$cfb$nbeam_d1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d1
+module top$cfb$nbeam_d2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d2
+module top$cfb$nbeam_d3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d3
+module top$cfb$nbeam_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_q
+module top$cfb$ns_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_c
+module top$cfb$ns_d1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d1
+module top$cfb$ns_d2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d2
+module top$cfb$ns_d3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d3
+module top$cfb$ns_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_q
+module top$cfb$run_d1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d1
+module top$cfb$run_d2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d2
+module top$cfb$run_d3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d3
+module top$cfb$running(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$running
+module top$cfb$valid_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$valid_q

@@ -1,0 +1,1006 @@
+module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] acc_r;
+    input wire  [15:0] acc_g;
+    input wire  [15:0] acc_b;
+    input wire  [15:0] acc_a;
+    input wire  [31:0] new_r;
+    input wire  [15:0] new_g;
+    input wire  [15:0] new_b;
+    input wire  [15:0] new_a;
+    input wire  new_valid;
+    output reg  [31:0] out_r;
+    output reg  [15:0] out_g;
+    output reg  [15:0] out_b;
+    output reg  [15:0] out_a;
+    input wire  [63:0] order;
+    
+    // Constant declarations
+    localparam  over = 1'b1;
+    localparam  scalar = 1'b0;
+    
+    // Stub signals
+    reg  [15:0] ch_r$front;
+    reg  [15:0] ch_r$back;
+    reg  [15:0] ch_r$front_alpha;
+    wire  [15:0] ch_r$result;
+    reg  [15:0] ch_g$front;
+    reg  [15:0] ch_g$back;
+    reg  [15:0] ch_g$front_alpha;
+    wire  [15:0] ch_g$result;
+    reg  [15:0] ch_b$front;
+    reg  [15:0] ch_b$back;
+    reg  [15:0] ch_b$front_alpha;
+    wire  [15:0] ch_b$result;
+    reg  [15:0] ch_a$front;
+    reg  [15:0] ch_a$back;
+    reg  [15:0] ch_a$front_alpha;
+    wire  [15:0] ch_a$result;
+    reg  [31:0] reg_r$d;
+    wire  [31:0] reg_r$q;
+    reg  reg_r$clock;
+    reg  [15:0] reg_g$d;
+    wire  [15:0] reg_g$q;
+    reg  reg_g$clock;
+    reg  [15:0] reg_b$d;
+    wire  [15:0] reg_b$q;
+    reg  reg_b$clock;
+    reg  [15:0] reg_a$d;
+    wire  [15:0] reg_a$q;
+    reg  reg_a$clock;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_r ch_r(
+        .front(ch_r$front),
+        .back(ch_r$back),
+        .front_alpha(ch_r$front_alpha),
+        .result(ch_r$result)
+    );
+    top$lanes$0$compositor$ch_g ch_g(
+        .front(ch_g$front),
+        .back(ch_g$back),
+        .front_alpha(ch_g$front_alpha),
+        .result(ch_g$result)
+    );
+    top$lanes$0$compositor$ch_b ch_b(
+        .front(ch_b$front),
+        .back(ch_b$back),
+        .front_alpha(ch_b$front_alpha),
+        .result(ch_b$result)
+    );
+    top$lanes$0$compositor$ch_a ch_a(
+        .front(ch_a$front),
+        .back(ch_a$back),
+        .front_alpha(ch_a$front_alpha),
+        .result(ch_a$result)
+    );
+    top$lanes$0$compositor$reg_r reg_r(
+        .d(reg_r$d),
+        .q(reg_r$q),
+        .clock(reg_r$clock)
+    );
+    top$lanes$0$compositor$reg_g reg_g(
+        .d(reg_g$d),
+        .q(reg_g$q),
+        .clock(reg_g$clock)
+    );
+    top$lanes$0$compositor$reg_b reg_b(
+        .d(reg_b$d),
+        .q(reg_b$q),
+        .clock(reg_b$clock)
+    );
+    top$lanes$0$compositor$reg_a reg_a(
+        .d(reg_a$d),
+        .q(reg_a$q),
+        .clock(reg_a$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        reg_r$clock = clock;
+        reg_g$clock = clock;
+        reg_b$clock = clock;
+        reg_a$clock = clock;
+        reg_r$d = reg_r$q;
+        reg_g$d = reg_g$q;
+        reg_b$d = reg_b$q;
+        reg_a$d = reg_a$q;
+        if (order['h0]) begin
+            ch_r$front = 16'(acc_r);
+            ch_g$front = acc_g;
+            ch_b$front = acc_b;
+            ch_a$front = acc_a;
+            ch_r$back = 16'(new_r);
+            ch_g$back = new_g;
+            ch_b$back = new_b;
+            ch_a$back = new_a;
+            ch_r$front_alpha = acc_a;
+            ch_g$front_alpha = acc_a;
+            ch_b$front_alpha = acc_a;
+            ch_a$front_alpha = acc_a;
+        end
+        else begin
+            ch_r$front = 16'(new_r);
+            ch_g$front = new_g;
+            ch_b$front = new_b;
+            ch_a$front = new_a;
+            ch_r$back = 16'(acc_r);
+            ch_g$back = acc_g;
+            ch_b$back = acc_b;
+            ch_a$back = acc_a;
+            ch_r$front_alpha = new_a;
+            ch_g$front_alpha = new_a;
+            ch_b$front_alpha = new_a;
+            ch_a$front_alpha = new_a;
+        end
+        reg_g$d = 'h0;
+        reg_b$d = 'h0;
+        reg_a$d = 'h0;
+        if (over) begin
+            reg_r$d = 32'(ch_r$result);
+            reg_g$d = ch_g$result;
+            reg_b$d = ch_b$result;
+            reg_a$d = ch_a$result;
+        end
+        else if (scalar) begin
+            reg_r$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    reg_r$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                reg_r$d = new_r;
+            end
+        end
+        else begin
+            reg_r$d = acc_r + new_r;
+        end
+        out_r = reg_r$q;
+        out_g = reg_g$q;
+        out_b = reg_b$q;
+        out_a = reg_a$q;
+    end
+    
+endmodule // top$lanes$0$compositor
+module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_a$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_a
+module top$lanes$0$compositor$ch_a$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_a$mul
+module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_b$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_b
+module top$lanes$0$compositor$ch_b$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_b$mul
+module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_g$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_g
+module top$lanes$0$compositor$ch_g$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_g$mul
+module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_r$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_r
+module top$lanes$0$compositor$ch_r$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$0$compositor$ch_r$mul
+module top$lanes$0$compositor$reg_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$reg_a
+module top$lanes$0$compositor$reg_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$reg_b
+module top$lanes$0$compositor$reg_g(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$reg_g
+module top$lanes$0$compositor$reg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$reg_r
+module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] acc_r;
+    input wire  [15:0] acc_g;
+    input wire  [15:0] acc_b;
+    input wire  [15:0] acc_a;
+    input wire  [31:0] new_r;
+    input wire  [15:0] new_g;
+    input wire  [15:0] new_b;
+    input wire  [15:0] new_a;
+    input wire  new_valid;
+    output reg  [31:0] out_r;
+    output reg  [15:0] out_g;
+    output reg  [15:0] out_b;
+    output reg  [15:0] out_a;
+    input wire  [63:0] order;
+    
+    // Constant declarations
+    localparam  over = 1'b1;
+    localparam  scalar = 1'b0;
+    
+    // Stub signals
+    reg  [15:0] ch_r$front;
+    reg  [15:0] ch_r$back;
+    reg  [15:0] ch_r$front_alpha;
+    wire  [15:0] ch_r$result;
+    reg  [15:0] ch_g$front;
+    reg  [15:0] ch_g$back;
+    reg  [15:0] ch_g$front_alpha;
+    wire  [15:0] ch_g$result;
+    reg  [15:0] ch_b$front;
+    reg  [15:0] ch_b$back;
+    reg  [15:0] ch_b$front_alpha;
+    wire  [15:0] ch_b$result;
+    reg  [15:0] ch_a$front;
+    reg  [15:0] ch_a$back;
+    reg  [15:0] ch_a$front_alpha;
+    wire  [15:0] ch_a$result;
+    reg  [31:0] reg_r$d;
+    wire  [31:0] reg_r$q;
+    reg  reg_r$clock;
+    reg  [15:0] reg_g$d;
+    wire  [15:0] reg_g$q;
+    reg  reg_g$clock;
+    reg  [15:0] reg_b$d;
+    wire  [15:0] reg_b$q;
+    reg  reg_b$clock;
+    reg  [15:0] reg_a$d;
+    wire  [15:0] reg_a$q;
+    reg  reg_a$clock;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_r ch_r(
+        .front(ch_r$front),
+        .back(ch_r$back),
+        .front_alpha(ch_r$front_alpha),
+        .result(ch_r$result)
+    );
+    top$lanes$1$compositor$ch_g ch_g(
+        .front(ch_g$front),
+        .back(ch_g$back),
+        .front_alpha(ch_g$front_alpha),
+        .result(ch_g$result)
+    );
+    top$lanes$1$compositor$ch_b ch_b(
+        .front(ch_b$front),
+        .back(ch_b$back),
+        .front_alpha(ch_b$front_alpha),
+        .result(ch_b$result)
+    );
+    top$lanes$1$compositor$ch_a ch_a(
+        .front(ch_a$front),
+        .back(ch_a$back),
+        .front_alpha(ch_a$front_alpha),
+        .result(ch_a$result)
+    );
+    top$lanes$1$compositor$reg_r reg_r(
+        .d(reg_r$d),
+        .q(reg_r$q),
+        .clock(reg_r$clock)
+    );
+    top$lanes$1$compositor$reg_g reg_g(
+        .d(reg_g$d),
+        .q(reg_g$q),
+        .clock(reg_g$clock)
+    );
+    top$lanes$1$compositor$reg_b reg_b(
+        .d(reg_b$d),
+        .q(reg_b$q),
+        .clock(reg_b$clock)
+    );
+    top$lanes$1$compositor$reg_a reg_a(
+        .d(reg_a$d),
+        .q(reg_a$q),
+        .clock(reg_a$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        reg_r$clock = clock;
+        reg_g$clock = clock;
+        reg_b$clock = clock;
+        reg_a$clock = clock;
+        reg_r$d = reg_r$q;
+        reg_g$d = reg_g$q;
+        reg_b$d = reg_b$q;
+        reg_a$d = reg_a$q;
+        if (order['h0]) begin
+            ch_r$front = 16'(acc_r);
+            ch_g$front = acc_g;
+            ch_b$front = acc_b;
+            ch_a$front = acc_a;
+            ch_r$back = 16'(new_r);
+            ch_g$back = new_g;
+            ch_b$back = new_b;
+            ch_a$back = new_a;
+            ch_r$front_alpha = acc_a;
+            ch_g$front_alpha = acc_a;
+            ch_b$front_alpha = acc_a;
+            ch_a$front_alpha = acc_a;
+        end
+        else begin
+            ch_r$front = 16'(new_r);
+            ch_g$front = new_g;
+            ch_b$front = new_b;
+            ch_a$front = new_a;
+            ch_r$back = 16'(acc_r);
+            ch_g$back = acc_g;
+            ch_b$back = acc_b;
+            ch_a$back = acc_a;
+            ch_r$front_alpha = new_a;
+            ch_g$front_alpha = new_a;
+            ch_b$front_alpha = new_a;
+            ch_a$front_alpha = new_a;
+        end
+        reg_g$d = 'h0;
+        reg_b$d = 'h0;
+        reg_a$d = 'h0;
+        if (over) begin
+            reg_r$d = 32'(ch_r$result);
+            reg_g$d = ch_g$result;
+            reg_b$d = ch_b$result;
+            reg_a$d = ch_a$result;
+        end
+        else if (scalar) begin
+            reg_r$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    reg_r$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                reg_r$d = new_r;
+            end
+        end
+        else begin
+            reg_r$d = acc_r + new_r;
+        end
+        out_r = reg_r$q;
+        out_g = reg_g$q;
+        out_b = reg_b$q;
+        out_a = reg_a$q;
+    end
+    
+endmodule // top$lanes$1$compositor
+module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_a$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_a
+module top$lanes$1$compositor$ch_a$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_a$mul
+module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_b$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_b
+module top$lanes$1$compositor$ch_b$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_b$mul
+module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_g$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_g
+module top$lanes$1$compositor$ch_g$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_g$mul
+module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  [15:0] front;
+    input wire  [15:0] back;
+    input wire  [15:0] front_alpha;
+    output reg  [15:0] result;
+    
+    // Constant declarations
+    localparam  m = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] mul$a;
+    reg  [15:0] mul$b;
+    wire  [15:0] mul$y;
+    
+    // Local signals
+    reg  [31:0] sum;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_r$mul mul(
+        .a(mul$a),
+        .b(mul$b),
+        .y(mul$y)
+    );
+    
+    // Update code
+    reg  [15:0] result_pass;
+    always @(*) begin
+        mul$a = m - front_alpha;
+        mul$b = back;
+        sum = 32'(front) + 32'(mul$y);
+        result_pass = 16'(sum);
+        if (sum > 32'(m)) begin
+            result_pass = m;
+        end
+        result = result_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_r
+module top$lanes$1$compositor$ch_r$mul(a,b,y);
+    
+    // Module arguments
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [15:0] y;
+    
+    // Constant declarations
+    localparam  half = 'h80;
+    localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
+    
+    // Local signals
+    reg  [31:0] t;
+    
+    // Update code
+    reg  [15:0] y_pass;
+    always @(*) begin
+        t = a * b + half;
+        y_pass = 16'((t + (t >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
+    end
+    
+endmodule // top$lanes$1$compositor$ch_r$mul
+module top$lanes$1$compositor$reg_a(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$reg_a
+module top$lanes$1$compositor$reg_b(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$reg_b
+module top$lanes$1$compositor$reg_g(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$reg_g
+module top$lanes$1$compositor$reg_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$reg_r

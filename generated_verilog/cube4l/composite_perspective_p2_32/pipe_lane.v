@@ -1,0 +1,5705 @@
+module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
+    input wire  [63:0] dims;
+    input wire  [63:0] beats;
+    input wire  [63:0] order;
+    input wire  beat_valid;
+    input wire  [15:0] value;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  pad;
+    input wire  invalid;
+    input wire  halo;
+    input wire  sr;
+    input wire  er;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  at_edge;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    input wire  [15:0] g_from_left_xm;
+    input wire  [15:0] g_from_left_ym;
+    input wire  [15:0] g_from_left_zm;
+    input wire  [15:0] g_from_right_xp;
+    input wire  [15:0] g_from_right_yp;
+    input wire  [15:0] g_from_right_zp;
+    output reg  [15:0] g_to_right_xm;
+    output reg  [15:0] g_to_right_ym;
+    output reg  [15:0] g_to_right_zm;
+    output reg  [15:0] g_to_left_xp;
+    output reg  [15:0] g_to_left_yp;
+    output reg  [15:0] g_to_left_zp;
+    output reg  [63:0] t0s0;
+    input wire  [63:0] t0i1;
+    output reg  [63:0] t1s0;
+    output reg  [63:0] t1s1;
+    input wire  [63:0] t1i1;
+    input wire  [63:0] t1i2;
+    output reg  [63:0] t3s0;
+    output reg  [63:0] t3s1;
+    input wire  [63:0] t3i1;
+    input wire  [63:0] t3i2;
+    output reg  [63:0] t5s0;
+    output reg  [63:0] t5s1;
+    output reg  [63:0] t5s2;
+    input wire  [63:0] t5i1;
+    input wire  [63:0] t5i2;
+    input wire  [63:0] t5i3;
+    output reg  [63:0] t6s0;
+    input wire  [63:0] t6i1;
+    output reg  [63:0] t7s0;
+    input wire  [63:0] t7i1;
+    output reg  [63:0] t8s0;
+    input wire  [63:0] t8i1;
+    input wire  [63:0] t8il;
+    output reg  res_beat;
+    output reg  res_valid;
+    output reg  [63:0] res;
+    output reg  px_valid;
+    output reg  [15:0] px_x;
+    output reg  [15:0] px_y;
+    output reg  [2:0] px_face;
+    
+    // Stub signals
+    reg  feed$clock;
+    reg  [63:0] feed$beats;
+    reg  feed$beat_valid;
+    reg  [15:0] feed$value;
+    reg  [15:0] feed$x;
+    reg  [15:0] feed$y;
+    reg  feed$pad;
+    reg  feed$invalid;
+    reg  feed$halo;
+    reg  feed$sr;
+    reg  feed$er;
+    reg  [15:0] feed$base_x;
+    reg  [15:0] feed$base_y;
+    reg  [2:0] feed$face;
+    reg  feed$at_edge;
+    reg  feed$dx_neg;
+    reg  [15:0] feed$dx_mag;
+    reg  feed$dy_neg;
+    reg  [15:0] feed$dy_mag;
+    reg  [15:0] feed$g_from_left_xm;
+    reg  [15:0] feed$g_from_left_ym;
+    reg  [15:0] feed$g_from_left_zm;
+    reg  [15:0] feed$g_from_right_xp;
+    reg  [15:0] feed$g_from_right_yp;
+    reg  [15:0] feed$g_from_right_zp;
+    wire  [15:0] feed$g_to_right_xm;
+    wire  [15:0] feed$g_to_right_ym;
+    wire  [15:0] feed$g_to_right_zm;
+    wire  [15:0] feed$g_to_left_xp;
+    wire  [15:0] feed$g_to_left_yp;
+    wire  [15:0] feed$g_to_left_zp;
+    wire  feed$o_valid;
+    wire  [15:0] feed$o_value;
+    wire  [15:0] feed$o_x;
+    wire  [15:0] feed$o_y;
+    wire  feed$o_pad;
+    wire  feed$o_invalid;
+    wire  feed$o_sr;
+    wire  feed$o_er;
+    wire  feed$o_edge;
+    wire  [2:0] feed$o_face;
+    wire  [15:0] feed$o_base_x;
+    wire  [15:0] feed$o_base_y;
+    wire  feed$o_dx_neg;
+    wire  [15:0] feed$o_dx_mag;
+    wire  feed$o_dy_neg;
+    wire  [15:0] feed$o_dy_mag;
+    wire  feed$gx_neg;
+    wire  [15:0] feed$gx_mag;
+    wire  feed$gy_neg;
+    wire  [15:0] feed$gy_mag;
+    wire  feed$gz_neg;
+    wire  [15:0] feed$gz_mag;
+    reg  shader$clock;
+    reg  shader$host_write;
+    reg  [23:0] shader$host_address;
+    reg  [63:0] shader$host_data;
+    reg  [15:0] shader$value;
+    reg  shader$invalid;
+    reg  shader$at_edge;
+    reg  shader$gx_neg;
+    reg  [31:0] shader$gx_mag;
+    reg  shader$gy_neg;
+    reg  [31:0] shader$gy_mag;
+    reg  shader$gz_neg;
+    reg  [31:0] shader$gz_mag;
+    wire  [31:0] shader$r;
+    wire  [15:0] shader$g;
+    wire  [15:0] shader$b;
+    wire  [15:0] shader$a;
+    wire  shader$valid;
+    reg  ctl$clock;
+    reg  ctl$valid;
+    reg  ctl$er;
+    reg  ctl$pad;
+    reg  [15:0] ctl$base_x;
+    reg  [15:0] ctl$base_y;
+    reg  [2:0] ctl$face;
+    reg  [15:0] ctl$x;
+    reg  [15:0] ctl$y;
+    reg  ctl$sr;
+    reg  ctl$dx_neg;
+    reg  [15:0] ctl$dx_mag;
+    reg  ctl$dy_neg;
+    reg  [15:0] ctl$dy_mag;
+    wire  [15:0] ctl$x_t;
+    wire  [15:0] ctl$y_t;
+    wire  ctl$sr_t;
+    wire  ctl$dx_neg_t;
+    wire  [15:0] ctl$dx_mag_t;
+    wire  ctl$dy_neg_t;
+    wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$res_beat;
+    wire  ctl$res_valid;
+    wire  ctl$px_valid;
+    wire  [15:0] ctl$px_x;
+    wire  [15:0] ctl$px_y;
+    wire  [2:0] ctl$px_face;
+    reg  taps$clock;
+    reg  [63:0] taps$beats;
+    reg  [15:0] taps$x;
+    reg  [63:0] taps$res;
+    reg  taps$res_beat;
+    wire  [63:0] taps$t0s0;
+    reg  [63:0] taps$t0i1;
+    wire  [63:0] taps$t1s0;
+    wire  [63:0] taps$t1s1;
+    reg  [63:0] taps$t1i1;
+    reg  [63:0] taps$t1i2;
+    wire  [63:0] taps$t3s0;
+    wire  [63:0] taps$t3s1;
+    reg  [63:0] taps$t3i1;
+    reg  [63:0] taps$t3i2;
+    wire  [63:0] taps$t5s0;
+    wire  [63:0] taps$t5s1;
+    wire  [63:0] taps$t5s2;
+    reg  [63:0] taps$t5i1;
+    reg  [63:0] taps$t5i2;
+    reg  [63:0] taps$t5i3;
+    wire  [63:0] taps$t6s0;
+    reg  [63:0] taps$t6i1;
+    wire  [63:0] taps$t7s0;
+    reg  [63:0] taps$t7i1;
+    wire  [63:0] taps$t8s0;
+    reg  [63:0] taps$t8i1;
+    reg  [63:0] taps$t8il;
+    wire  [63:0] taps$a$0;
+    wire  [63:0] taps$a$1;
+    wire  [63:0] taps$a$2;
+    wire  [63:0] taps$a$3;
+    wire  [63:0] taps$a$4;
+    wire  [63:0] taps$a$5;
+    wire  [63:0] taps$a$6;
+    wire  [63:0] taps$a$7;
+    wire  [63:0] taps$a$8;
+    reg  [63:0] cells$a$0;
+    reg  [63:0] cells$a$1;
+    reg  [63:0] cells$a$2;
+    reg  [63:0] cells$a$3;
+    reg  [63:0] cells$a$4;
+    reg  [63:0] cells$a$5;
+    reg  [63:0] cells$a$6;
+    reg  [63:0] cells$a$7;
+    reg  [63:0] cells$a$8;
+    reg  [15:0] cells$x;
+    reg  [15:0] cells$y;
+    reg  cells$sr;
+    reg  cells$dx_neg;
+    reg  [15:0] cells$dx_mag;
+    reg  cells$dy_neg;
+    reg  [15:0] cells$dy_mag;
+    wire  [31:0] cells$c00$0;
+    wire  [31:0] cells$c00$1;
+    wire  [31:0] cells$c00$2;
+    wire  [31:0] cells$c00$3;
+    wire  [31:0] cells$c10$0;
+    wire  [31:0] cells$c10$1;
+    wire  [31:0] cells$c10$2;
+    wire  [31:0] cells$c10$3;
+    wire  [31:0] cells$c01$0;
+    wire  [31:0] cells$c01$1;
+    wire  [31:0] cells$c01$2;
+    wire  [31:0] cells$c01$3;
+    wire  [31:0] cells$c11$0;
+    wire  [31:0] cells$c11$1;
+    wire  [31:0] cells$c11$2;
+    wire  [31:0] cells$c11$3;
+    reg  [63:0] cells$dims;
+    reg  [63:0] cells$order;
+    reg  bilinear$clock;
+    reg  [31:0] bilinear$c00$0;
+    reg  [31:0] bilinear$c00$1;
+    reg  [31:0] bilinear$c00$2;
+    reg  [31:0] bilinear$c00$3;
+    reg  [31:0] bilinear$c10$0;
+    reg  [31:0] bilinear$c10$1;
+    reg  [31:0] bilinear$c10$2;
+    reg  [31:0] bilinear$c10$3;
+    reg  [31:0] bilinear$c01$0;
+    reg  [31:0] bilinear$c01$1;
+    reg  [31:0] bilinear$c01$2;
+    reg  [31:0] bilinear$c01$3;
+    reg  [31:0] bilinear$c11$0;
+    reg  [31:0] bilinear$c11$1;
+    reg  [31:0] bilinear$c11$2;
+    reg  [31:0] bilinear$c11$3;
+    reg  [15:0] bilinear$wx;
+    reg  [15:0] bilinear$wy;
+    wire  [31:0] bilinear$out$0;
+    wire  [31:0] bilinear$out$1;
+    wire  [31:0] bilinear$out$2;
+    wire  [31:0] bilinear$out$3;
+    reg  compositor$clock;
+    reg  [31:0] compositor$acc_r;
+    reg  [15:0] compositor$acc_g;
+    reg  [15:0] compositor$acc_b;
+    reg  [15:0] compositor$acc_a;
+    reg  [31:0] compositor$new_r;
+    reg  [15:0] compositor$new_g;
+    reg  [15:0] compositor$new_b;
+    reg  [15:0] compositor$new_a;
+    reg  compositor$new_valid;
+    wire  [31:0] compositor$out_r;
+    wire  [15:0] compositor$out_g;
+    wire  [15:0] compositor$out_b;
+    wire  [15:0] compositor$out_a;
+    reg  [63:0] compositor$order;
+    
+    // Sub module instances
+    top$lanes$0$feed feed(
+        .clock(feed$clock),
+        .beats(feed$beats),
+        .beat_valid(feed$beat_valid),
+        .value(feed$value),
+        .x(feed$x),
+        .y(feed$y),
+        .pad(feed$pad),
+        .invalid(feed$invalid),
+        .halo(feed$halo),
+        .sr(feed$sr),
+        .er(feed$er),
+        .base_x(feed$base_x),
+        .base_y(feed$base_y),
+        .face(feed$face),
+        .at_edge(feed$at_edge),
+        .dx_neg(feed$dx_neg),
+        .dx_mag(feed$dx_mag),
+        .dy_neg(feed$dy_neg),
+        .dy_mag(feed$dy_mag),
+        .g_from_left_xm(feed$g_from_left_xm),
+        .g_from_left_ym(feed$g_from_left_ym),
+        .g_from_left_zm(feed$g_from_left_zm),
+        .g_from_right_xp(feed$g_from_right_xp),
+        .g_from_right_yp(feed$g_from_right_yp),
+        .g_from_right_zp(feed$g_from_right_zp),
+        .g_to_right_xm(feed$g_to_right_xm),
+        .g_to_right_ym(feed$g_to_right_ym),
+        .g_to_right_zm(feed$g_to_right_zm),
+        .g_to_left_xp(feed$g_to_left_xp),
+        .g_to_left_yp(feed$g_to_left_yp),
+        .g_to_left_zp(feed$g_to_left_zp),
+        .o_valid(feed$o_valid),
+        .o_value(feed$o_value),
+        .o_x(feed$o_x),
+        .o_y(feed$o_y),
+        .o_pad(feed$o_pad),
+        .o_invalid(feed$o_invalid),
+        .o_sr(feed$o_sr),
+        .o_er(feed$o_er),
+        .o_edge(feed$o_edge),
+        .o_face(feed$o_face),
+        .o_base_x(feed$o_base_x),
+        .o_base_y(feed$o_base_y),
+        .o_dx_neg(feed$o_dx_neg),
+        .o_dx_mag(feed$o_dx_mag),
+        .o_dy_neg(feed$o_dy_neg),
+        .o_dy_mag(feed$o_dy_mag),
+        .gx_neg(feed$gx_neg),
+        .gx_mag(feed$gx_mag),
+        .gy_neg(feed$gy_neg),
+        .gy_mag(feed$gy_mag),
+        .gz_neg(feed$gz_neg),
+        .gz_mag(feed$gz_mag)
+    );
+    top$lanes$0$shader shader(
+        .clock(shader$clock),
+        .host_write(shader$host_write),
+        .host_address(shader$host_address),
+        .host_data(shader$host_data),
+        .value(shader$value),
+        .invalid(shader$invalid),
+        .at_edge(shader$at_edge),
+        .gx_neg(shader$gx_neg),
+        .gx_mag(shader$gx_mag),
+        .gy_neg(shader$gy_neg),
+        .gy_mag(shader$gy_mag),
+        .gz_neg(shader$gz_neg),
+        .gz_mag(shader$gz_mag),
+        .r(shader$r),
+        .g(shader$g),
+        .b(shader$b),
+        .a(shader$a),
+        .valid(shader$valid)
+    );
+    top$lanes$0$ctl ctl(
+        .clock(ctl$clock),
+        .valid(ctl$valid),
+        .er(ctl$er),
+        .pad(ctl$pad),
+        .base_x(ctl$base_x),
+        .base_y(ctl$base_y),
+        .face(ctl$face),
+        .x(ctl$x),
+        .y(ctl$y),
+        .sr(ctl$sr),
+        .dx_neg(ctl$dx_neg),
+        .dx_mag(ctl$dx_mag),
+        .dy_neg(ctl$dy_neg),
+        .dy_mag(ctl$dy_mag),
+        .x_t(ctl$x_t),
+        .y_t(ctl$y_t),
+        .sr_t(ctl$sr_t),
+        .dx_neg_t(ctl$dx_neg_t),
+        .dx_mag_t(ctl$dx_mag_t),
+        .dy_neg_t(ctl$dy_neg_t),
+        .dy_mag_t(ctl$dy_mag_t),
+        .res_beat(ctl$res_beat),
+        .res_valid(ctl$res_valid),
+        .px_valid(ctl$px_valid),
+        .px_x(ctl$px_x),
+        .px_y(ctl$px_y),
+        .px_face(ctl$px_face)
+    );
+    top$lanes$0$taps taps(
+        .clock(taps$clock),
+        .beats(taps$beats),
+        .x(taps$x),
+        .res(taps$res),
+        .res_beat(taps$res_beat),
+        .t0s0(taps$t0s0),
+        .t0i1(taps$t0i1),
+        .t1s0(taps$t1s0),
+        .t1s1(taps$t1s1),
+        .t1i1(taps$t1i1),
+        .t1i2(taps$t1i2),
+        .t3s0(taps$t3s0),
+        .t3s1(taps$t3s1),
+        .t3i1(taps$t3i1),
+        .t3i2(taps$t3i2),
+        .t5s0(taps$t5s0),
+        .t5s1(taps$t5s1),
+        .t5s2(taps$t5s2),
+        .t5i1(taps$t5i1),
+        .t5i2(taps$t5i2),
+        .t5i3(taps$t5i3),
+        .t6s0(taps$t6s0),
+        .t6i1(taps$t6i1),
+        .t7s0(taps$t7s0),
+        .t7i1(taps$t7i1),
+        .t8s0(taps$t8s0),
+        .t8i1(taps$t8i1),
+        .t8il(taps$t8il),
+        .a$0(taps$a$0),
+        .a$1(taps$a$1),
+        .a$2(taps$a$2),
+        .a$3(taps$a$3),
+        .a$4(taps$a$4),
+        .a$5(taps$a$5),
+        .a$6(taps$a$6),
+        .a$7(taps$a$7),
+        .a$8(taps$a$8)
+    );
+    top$lanes$0$cells cells(
+        .a$0(cells$a$0),
+        .a$1(cells$a$1),
+        .a$2(cells$a$2),
+        .a$3(cells$a$3),
+        .a$4(cells$a$4),
+        .a$5(cells$a$5),
+        .a$6(cells$a$6),
+        .a$7(cells$a$7),
+        .a$8(cells$a$8),
+        .x(cells$x),
+        .y(cells$y),
+        .sr(cells$sr),
+        .dx_neg(cells$dx_neg),
+        .dx_mag(cells$dx_mag),
+        .dy_neg(cells$dy_neg),
+        .dy_mag(cells$dy_mag),
+        .c00$0(cells$c00$0),
+        .c00$1(cells$c00$1),
+        .c00$2(cells$c00$2),
+        .c00$3(cells$c00$3),
+        .c10$0(cells$c10$0),
+        .c10$1(cells$c10$1),
+        .c10$2(cells$c10$2),
+        .c10$3(cells$c10$3),
+        .c01$0(cells$c01$0),
+        .c01$1(cells$c01$1),
+        .c01$2(cells$c01$2),
+        .c01$3(cells$c01$3),
+        .c11$0(cells$c11$0),
+        .c11$1(cells$c11$1),
+        .c11$2(cells$c11$2),
+        .c11$3(cells$c11$3),
+        .dims(cells$dims),
+        .order(cells$order)
+    );
+    top$lanes$0$bilinear bilinear(
+        .clock(bilinear$clock),
+        .c00$0(bilinear$c00$0),
+        .c00$1(bilinear$c00$1),
+        .c00$2(bilinear$c00$2),
+        .c00$3(bilinear$c00$3),
+        .c10$0(bilinear$c10$0),
+        .c10$1(bilinear$c10$1),
+        .c10$2(bilinear$c10$2),
+        .c10$3(bilinear$c10$3),
+        .c01$0(bilinear$c01$0),
+        .c01$1(bilinear$c01$1),
+        .c01$2(bilinear$c01$2),
+        .c01$3(bilinear$c01$3),
+        .c11$0(bilinear$c11$0),
+        .c11$1(bilinear$c11$1),
+        .c11$2(bilinear$c11$2),
+        .c11$3(bilinear$c11$3),
+        .wx(bilinear$wx),
+        .wy(bilinear$wy),
+        .out$0(bilinear$out$0),
+        .out$1(bilinear$out$1),
+        .out$2(bilinear$out$2),
+        .out$3(bilinear$out$3)
+    );
+    top$lanes$0$compositor compositor(
+        .clock(compositor$clock),
+        .acc_r(compositor$acc_r),
+        .acc_g(compositor$acc_g),
+        .acc_b(compositor$acc_b),
+        .acc_a(compositor$acc_a),
+        .new_r(compositor$new_r),
+        .new_g(compositor$new_g),
+        .new_b(compositor$new_b),
+        .new_a(compositor$new_a),
+        .new_valid(compositor$new_valid),
+        .out_r(compositor$out_r),
+        .out_g(compositor$out_g),
+        .out_b(compositor$out_b),
+        .out_a(compositor$out_a),
+        .order(compositor$order)
+    );
+    
+    // Update code
+    always @(*) begin
+        feed$clock = clock;
+        feed$beats = beats;
+        feed$beat_valid = beat_valid;
+        feed$value = value;
+        feed$x = x;
+        feed$y = y;
+        feed$pad = pad;
+        feed$invalid = invalid;
+        feed$halo = halo;
+        feed$sr = sr;
+        feed$er = er;
+        feed$base_x = base_x;
+        feed$base_y = base_y;
+        feed$face = face;
+        feed$at_edge = at_edge;
+        feed$dx_neg = dx_neg;
+        feed$dx_mag = dx_mag;
+        feed$dy_neg = dy_neg;
+        feed$dy_mag = dy_mag;
+        feed$g_from_left_xm = g_from_left_xm;
+        feed$g_from_left_ym = g_from_left_ym;
+        feed$g_from_left_zm = g_from_left_zm;
+        feed$g_from_right_xp = g_from_right_xp;
+        feed$g_from_right_yp = g_from_right_yp;
+        feed$g_from_right_zp = g_from_right_zp;
+        g_to_right_xm = feed$g_to_right_xm;
+        g_to_right_ym = feed$g_to_right_ym;
+        g_to_right_zm = feed$g_to_right_zm;
+        g_to_left_xp = feed$g_to_left_xp;
+        g_to_left_yp = feed$g_to_left_yp;
+        g_to_left_zp = feed$g_to_left_zp;
+        shader$clock = clock;
+        shader$host_write = host_write;
+        shader$host_address = host_address;
+        shader$host_data = host_data;
+        shader$value = feed$o_value;
+        shader$invalid = feed$o_invalid;
+        shader$at_edge = feed$o_edge;
+        shader$gx_neg = feed$gx_neg;
+        shader$gx_mag = 32'(feed$gx_mag);
+        shader$gy_neg = feed$gy_neg;
+        shader$gy_mag = 32'(feed$gy_mag);
+        shader$gz_neg = feed$gz_neg;
+        shader$gz_mag = 32'(feed$gz_mag);
+        ctl$clock = clock;
+        ctl$valid = feed$o_valid;
+        ctl$er = feed$o_er;
+        ctl$pad = feed$o_pad;
+        ctl$base_x = feed$o_base_x;
+        ctl$base_y = feed$o_base_y;
+        ctl$face = feed$o_face;
+        ctl$x = feed$o_x;
+        ctl$y = feed$o_y;
+        ctl$sr = feed$o_sr;
+        ctl$dx_neg = feed$o_dx_neg;
+        ctl$dx_mag = feed$o_dx_mag;
+        ctl$dy_neg = feed$o_dy_neg;
+        ctl$dy_mag = feed$o_dy_mag;
+        taps$clock = clock;
+        taps$beats = beats;
+        taps$x = ctl$x_t;
+        t0s0 = taps$t0s0;
+        taps$t0i1 = t0i1;
+        t1s0 = taps$t1s0;
+        t1s1 = taps$t1s1;
+        taps$t1i1 = t1i1;
+        taps$t1i2 = t1i2;
+        t3s0 = taps$t3s0;
+        t3s1 = taps$t3s1;
+        taps$t3i1 = t3i1;
+        taps$t3i2 = t3i2;
+        t5s0 = taps$t5s0;
+        t5s1 = taps$t5s1;
+        t5s2 = taps$t5s2;
+        taps$t5i1 = t5i1;
+        taps$t5i2 = t5i2;
+        taps$t5i3 = t5i3;
+        t6s0 = taps$t6s0;
+        taps$t6i1 = t6i1;
+        t7s0 = taps$t7s0;
+        taps$t7i1 = t7i1;
+        t8s0 = taps$t8s0;
+        taps$t8i1 = t8i1;
+        taps$t8il = t8il;
+        cells$a$0 = taps$a$0;
+        cells$a$1 = taps$a$1;
+        cells$a$2 = taps$a$2;
+        cells$a$3 = taps$a$3;
+        cells$a$4 = taps$a$4;
+        cells$a$5 = taps$a$5;
+        cells$a$6 = taps$a$6;
+        cells$a$7 = taps$a$7;
+        cells$a$8 = taps$a$8;
+        cells$dims = dims;
+        cells$order = order;
+        cells$x = ctl$x_t;
+        cells$y = ctl$y_t;
+        cells$sr = ctl$sr_t;
+        cells$dx_neg = ctl$dx_neg_t;
+        cells$dx_mag = ctl$dx_mag_t;
+        cells$dy_neg = ctl$dy_neg_t;
+        cells$dy_mag = ctl$dy_mag_t;
+        bilinear$clock = clock;
+        bilinear$c00$0 = cells$c00$0;
+        bilinear$c10$0 = cells$c10$0;
+        bilinear$c01$0 = cells$c01$0;
+        bilinear$c11$0 = cells$c11$0;
+        bilinear$c00$1 = cells$c00$1;
+        bilinear$c10$1 = cells$c10$1;
+        bilinear$c01$1 = cells$c01$1;
+        bilinear$c11$1 = cells$c11$1;
+        bilinear$c00$2 = cells$c00$2;
+        bilinear$c10$2 = cells$c10$2;
+        bilinear$c01$2 = cells$c01$2;
+        bilinear$c11$2 = cells$c11$2;
+        bilinear$c00$3 = cells$c00$3;
+        bilinear$c10$3 = cells$c10$3;
+        bilinear$c01$3 = cells$c01$3;
+        bilinear$c11$3 = cells$c11$3;
+        bilinear$wx = ctl$dx_mag_t;
+        bilinear$wy = ctl$dy_mag_t;
+        compositor$clock = clock;
+        compositor$order = order;
+        compositor$acc_r = bilinear$out$0;
+        compositor$acc_g = 16'(bilinear$out$1);
+        compositor$acc_b = 16'(bilinear$out$2);
+        compositor$acc_a = 16'(bilinear$out$3);
+        compositor$new_r = shader$r;
+        compositor$new_g = shader$g;
+        compositor$new_b = shader$b;
+        compositor$new_a = shader$a;
+        compositor$new_valid = shader$valid;
+        res = 64'(compositor$out_r) | (64'(compositor$out_g) << 'h10) | (64'(compositor$out_b) << 'h20) | (64'(compositor$out_a) << 'h30);
+        taps$res = res;
+        taps$res_beat = ctl$res_beat;
+        res_beat = ctl$res_beat;
+        res_valid = ctl$res_valid;
+        px_valid = ctl$px_valid;
+        px_x = ctl$px_x;
+        px_y = ctl$px_y;
+        px_face = ctl$px_face;
+    end
+    
+endmodule // top$lanes$0
+module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+    
+    // Module arguments
+    input wire  [63:0] a$0;
+    input wire  [63:0] a$1;
+    input wire  [63:0] a$2;
+    input wire  [63:0] a$3;
+    input wire  [63:0] a$4;
+    input wire  [63:0] a$5;
+    input wire  [63:0] a$6;
+    input wire  [63:0] a$7;
+    input wire  [63:0] a$8;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  sr;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    output reg  [31:0] c00$0;
+    output reg  [31:0] c00$1;
+    output reg  [31:0] c00$2;
+    output reg  [31:0] c00$3;
+    output reg  [31:0] c10$0;
+    output reg  [31:0] c10$1;
+    output reg  [31:0] c10$2;
+    output reg  [31:0] c10$3;
+    output reg  [31:0] c01$0;
+    output reg  [31:0] c01$1;
+    output reg  [31:0] c01$2;
+    output reg  [31:0] c01$3;
+    output reg  [31:0] c11$0;
+    output reg  [31:0] c11$1;
+    output reg  [31:0] c11$2;
+    output reg  [31:0] c11$3;
+    input wire  [63:0] dims;
+    input wire  [63:0] order;
+    
+    // Constant declarations
+    localparam  vmax = 64'hff;
+    localparam  r_mask = 64'hffff;
+    localparam  gba_mask = 64'hffff;
+    
+    // Local signals
+    reg  [15:0] nx_last;
+    reg  [15:0] ny_last;
+    reg  [63:0] reset;
+    reg  [63:0] w00;
+    reg  [63:0] w10;
+    reg  [63:0] w01;
+    reg  [63:0] w11;
+    reg  x_out;
+    reg  y_out;
+    
+    // Update code
+    always @(*) begin
+        nx_last = dims[('h0)+:(16)] - 'h1;
+        ny_last = dims[('h10)+:(16)] - 'h1;
+        reset = 'h0;
+        if (order['h1]) begin
+            reset = vmax;
+        end
+        w00 = a$0;
+        w10 = a$0;
+        w01 = a$0;
+        w11 = a$0;
+        x_out = 1'b0;
+        y_out = 1'b0;
+        if (dx_mag != 'h0) begin
+            if (dx_neg) begin
+                w10 = a$2;
+                x_out = x == nx_last;
+            end
+            else begin
+                w10 = a$1;
+                x_out = x == 'h0;
+            end
+        end
+        if (dy_mag != 'h0) begin
+            if (dy_neg) begin
+                w01 = a$4;
+                y_out = y == ny_last;
+            end
+            else begin
+                w01 = a$3;
+                y_out = y == 'h0;
+            end
+        end
+        w11 = w01;
+        if (dx_mag != 'h0) begin
+            w11 = w10;
+            if (dy_mag != 'h0) begin
+                if (dx_neg) begin
+                    if (dy_neg) begin
+                        w11 = a$8;
+                    end
+                    else begin
+                        w11 = a$6;
+                    end
+                end
+                else if (dy_neg) begin
+                    w11 = a$7;
+                end
+                else begin
+                    w11 = a$5;
+                end
+            end
+        end
+        if (x_out) begin
+            w10 = reset;
+            w11 = reset;
+        end
+        if (y_out) begin
+            w01 = reset;
+            w11 = reset;
+        end
+        if (sr) begin
+            w00 = reset;
+            w10 = reset;
+            w01 = reset;
+            w11 = reset;
+        end
+        c00$0 = 32'(w00 & r_mask);
+        c00$1 = 32'((w00 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10 & r_mask);
+        c10$1 = 32'((w10 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01 & r_mask);
+        c01$1 = 32'((w01 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11 & r_mask);
+        c11$1 = 32'((w11 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+    end
+    
+endmodule // top$lanes$0$cells
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  valid;
+    input wire  er;
+    input wire  pad;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  sr;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    output reg  [15:0] x_t;
+    output reg  [15:0] y_t;
+    output reg  sr_t;
+    output reg  dx_neg_t;
+    output reg  [15:0] dx_mag_t;
+    output reg  dy_neg_t;
+    output reg  [15:0] dy_mag_t;
+    output reg  res_beat;
+    output reg  res_valid;
+    output reg  px_valid;
+    output reg  [15:0] px_x;
+    output reg  [15:0] px_y;
+    output reg  [2:0] px_face;
+    
+    // Stub signals
+    reg  [15:0] x_q$0$d;
+    wire  [15:0] x_q$0$q;
+    reg  x_q$0$clock;
+    reg  [15:0] x_q$1$d;
+    wire  [15:0] x_q$1$q;
+    reg  x_q$1$clock;
+    reg  [15:0] y_q$0$d;
+    wire  [15:0] y_q$0$q;
+    reg  y_q$0$clock;
+    reg  [15:0] y_q$1$d;
+    wire  [15:0] y_q$1$q;
+    reg  y_q$1$clock;
+    reg  sr_q$0$d;
+    wire  sr_q$0$q;
+    reg  sr_q$0$clock;
+    reg  sr_q$1$d;
+    wire  sr_q$1$q;
+    reg  sr_q$1$clock;
+    reg  dxn_q$0$d;
+    wire  dxn_q$0$q;
+    reg  dxn_q$0$clock;
+    reg  dxn_q$1$d;
+    wire  dxn_q$1$q;
+    reg  dxn_q$1$clock;
+    reg  [15:0] dxm_q$0$d;
+    wire  [15:0] dxm_q$0$q;
+    reg  dxm_q$0$clock;
+    reg  [15:0] dxm_q$1$d;
+    wire  [15:0] dxm_q$1$q;
+    reg  dxm_q$1$clock;
+    reg  dyn_q$0$d;
+    wire  dyn_q$0$q;
+    reg  dyn_q$0$clock;
+    reg  dyn_q$1$d;
+    wire  dyn_q$1$q;
+    reg  dyn_q$1$clock;
+    reg  [15:0] dym_q$0$d;
+    wire  [15:0] dym_q$0$q;
+    reg  dym_q$0$clock;
+    reg  [15:0] dym_q$1$d;
+    wire  [15:0] dym_q$1$q;
+    reg  dym_q$1$clock;
+    reg  v_q$0$d;
+    wire  v_q$0$q;
+    reg  v_q$0$clock;
+    reg  v_q$1$d;
+    wire  v_q$1$q;
+    reg  v_q$1$clock;
+    reg  v_q$2$d;
+    wire  v_q$2$q;
+    reg  v_q$2$clock;
+    reg  v_q$3$d;
+    wire  v_q$3$q;
+    reg  v_q$3$clock;
+    reg  v_q$4$d;
+    wire  v_q$4$q;
+    reg  v_q$4$clock;
+    reg  v_q$5$d;
+    wire  v_q$5$q;
+    reg  v_q$5$clock;
+    reg  v_q$6$d;
+    wire  v_q$6$q;
+    reg  v_q$6$clock;
+    reg  v_q$7$d;
+    wire  v_q$7$q;
+    reg  v_q$7$clock;
+    reg  er_q$0$d;
+    wire  er_q$0$q;
+    reg  er_q$0$clock;
+    reg  er_q$1$d;
+    wire  er_q$1$q;
+    reg  er_q$1$clock;
+    reg  er_q$2$d;
+    wire  er_q$2$q;
+    reg  er_q$2$clock;
+    reg  er_q$3$d;
+    wire  er_q$3$q;
+    reg  er_q$3$clock;
+    reg  er_q$4$d;
+    wire  er_q$4$q;
+    reg  er_q$4$clock;
+    reg  er_q$5$d;
+    wire  er_q$5$q;
+    reg  er_q$5$clock;
+    reg  er_q$6$d;
+    wire  er_q$6$q;
+    reg  er_q$6$clock;
+    reg  er_q$7$d;
+    wire  er_q$7$q;
+    reg  er_q$7$clock;
+    reg  pad_q$0$d;
+    wire  pad_q$0$q;
+    reg  pad_q$0$clock;
+    reg  pad_q$1$d;
+    wire  pad_q$1$q;
+    reg  pad_q$1$clock;
+    reg  pad_q$2$d;
+    wire  pad_q$2$q;
+    reg  pad_q$2$clock;
+    reg  pad_q$3$d;
+    wire  pad_q$3$q;
+    reg  pad_q$3$clock;
+    reg  pad_q$4$d;
+    wire  pad_q$4$q;
+    reg  pad_q$4$clock;
+    reg  pad_q$5$d;
+    wire  pad_q$5$q;
+    reg  pad_q$5$clock;
+    reg  pad_q$6$d;
+    wire  pad_q$6$q;
+    reg  pad_q$6$clock;
+    reg  pad_q$7$d;
+    wire  pad_q$7$q;
+    reg  pad_q$7$clock;
+    reg  [15:0] bx_q$0$d;
+    wire  [15:0] bx_q$0$q;
+    reg  bx_q$0$clock;
+    reg  [15:0] bx_q$1$d;
+    wire  [15:0] bx_q$1$q;
+    reg  bx_q$1$clock;
+    reg  [15:0] bx_q$2$d;
+    wire  [15:0] bx_q$2$q;
+    reg  bx_q$2$clock;
+    reg  [15:0] bx_q$3$d;
+    wire  [15:0] bx_q$3$q;
+    reg  bx_q$3$clock;
+    reg  [15:0] bx_q$4$d;
+    wire  [15:0] bx_q$4$q;
+    reg  bx_q$4$clock;
+    reg  [15:0] bx_q$5$d;
+    wire  [15:0] bx_q$5$q;
+    reg  bx_q$5$clock;
+    reg  [15:0] bx_q$6$d;
+    wire  [15:0] bx_q$6$q;
+    reg  bx_q$6$clock;
+    reg  [15:0] bx_q$7$d;
+    wire  [15:0] bx_q$7$q;
+    reg  bx_q$7$clock;
+    reg  [15:0] by_q$0$d;
+    wire  [15:0] by_q$0$q;
+    reg  by_q$0$clock;
+    reg  [15:0] by_q$1$d;
+    wire  [15:0] by_q$1$q;
+    reg  by_q$1$clock;
+    reg  [15:0] by_q$2$d;
+    wire  [15:0] by_q$2$q;
+    reg  by_q$2$clock;
+    reg  [15:0] by_q$3$d;
+    wire  [15:0] by_q$3$q;
+    reg  by_q$3$clock;
+    reg  [15:0] by_q$4$d;
+    wire  [15:0] by_q$4$q;
+    reg  by_q$4$clock;
+    reg  [15:0] by_q$5$d;
+    wire  [15:0] by_q$5$q;
+    reg  by_q$5$clock;
+    reg  [15:0] by_q$6$d;
+    wire  [15:0] by_q$6$q;
+    reg  by_q$6$clock;
+    reg  [15:0] by_q$7$d;
+    wire  [15:0] by_q$7$q;
+    reg  by_q$7$clock;
+    reg  [2:0] face_q$0$d;
+    wire  [2:0] face_q$0$q;
+    reg  face_q$0$clock;
+    reg  [2:0] face_q$1$d;
+    wire  [2:0] face_q$1$q;
+    reg  face_q$1$clock;
+    reg  [2:0] face_q$2$d;
+    wire  [2:0] face_q$2$q;
+    reg  face_q$2$clock;
+    reg  [2:0] face_q$3$d;
+    wire  [2:0] face_q$3$q;
+    reg  face_q$3$clock;
+    reg  [2:0] face_q$4$d;
+    wire  [2:0] face_q$4$q;
+    reg  face_q$4$clock;
+    reg  [2:0] face_q$5$d;
+    wire  [2:0] face_q$5$q;
+    reg  face_q$5$clock;
+    reg  [2:0] face_q$6$d;
+    wire  [2:0] face_q$6$q;
+    reg  face_q$6$clock;
+    reg  [2:0] face_q$7$d;
+    wire  [2:0] face_q$7$q;
+    reg  face_q$7$clock;
+    
+    // Sub module instances
+    top$lanes$0$ctl$x_q$0 x_q$0(
+        .d(x_q$0$d),
+        .q(x_q$0$q),
+        .clock(x_q$0$clock)
+    );
+    top$lanes$0$ctl$x_q$1 x_q$1(
+        .d(x_q$1$d),
+        .q(x_q$1$q),
+        .clock(x_q$1$clock)
+    );
+    top$lanes$0$ctl$y_q$0 y_q$0(
+        .d(y_q$0$d),
+        .q(y_q$0$q),
+        .clock(y_q$0$clock)
+    );
+    top$lanes$0$ctl$y_q$1 y_q$1(
+        .d(y_q$1$d),
+        .q(y_q$1$q),
+        .clock(y_q$1$clock)
+    );
+    top$lanes$0$ctl$sr_q$0 sr_q$0(
+        .d(sr_q$0$d),
+        .q(sr_q$0$q),
+        .clock(sr_q$0$clock)
+    );
+    top$lanes$0$ctl$sr_q$1 sr_q$1(
+        .d(sr_q$1$d),
+        .q(sr_q$1$q),
+        .clock(sr_q$1$clock)
+    );
+    top$lanes$0$ctl$dxn_q$0 dxn_q$0(
+        .d(dxn_q$0$d),
+        .q(dxn_q$0$q),
+        .clock(dxn_q$0$clock)
+    );
+    top$lanes$0$ctl$dxn_q$1 dxn_q$1(
+        .d(dxn_q$1$d),
+        .q(dxn_q$1$q),
+        .clock(dxn_q$1$clock)
+    );
+    top$lanes$0$ctl$dxm_q$0 dxm_q$0(
+        .d(dxm_q$0$d),
+        .q(dxm_q$0$q),
+        .clock(dxm_q$0$clock)
+    );
+    top$lanes$0$ctl$dxm_q$1 dxm_q$1(
+        .d(dxm_q$1$d),
+        .q(dxm_q$1$q),
+        .clock(dxm_q$1$clock)
+    );
+    top$lanes$0$ctl$dyn_q$0 dyn_q$0(
+        .d(dyn_q$0$d),
+        .q(dyn_q$0$q),
+        .clock(dyn_q$0$clock)
+    );
+    top$lanes$0$ctl$dyn_q$1 dyn_q$1(
+        .d(dyn_q$1$d),
+        .q(dyn_q$1$q),
+        .clock(dyn_q$1$clock)
+    );
+    top$lanes$0$ctl$dym_q$0 dym_q$0(
+        .d(dym_q$0$d),
+        .q(dym_q$0$q),
+        .clock(dym_q$0$clock)
+    );
+    top$lanes$0$ctl$dym_q$1 dym_q$1(
+        .d(dym_q$1$d),
+        .q(dym_q$1$q),
+        .clock(dym_q$1$clock)
+    );
+    top$lanes$0$ctl$v_q$0 v_q$0(
+        .d(v_q$0$d),
+        .q(v_q$0$q),
+        .clock(v_q$0$clock)
+    );
+    top$lanes$0$ctl$v_q$1 v_q$1(
+        .d(v_q$1$d),
+        .q(v_q$1$q),
+        .clock(v_q$1$clock)
+    );
+    top$lanes$0$ctl$v_q$2 v_q$2(
+        .d(v_q$2$d),
+        .q(v_q$2$q),
+        .clock(v_q$2$clock)
+    );
+    top$lanes$0$ctl$v_q$3 v_q$3(
+        .d(v_q$3$d),
+        .q(v_q$3$q),
+        .clock(v_q$3$clock)
+    );
+    top$lanes$0$ctl$v_q$4 v_q$4(
+        .d(v_q$4$d),
+        .q(v_q$4$q),
+        .clock(v_q$4$clock)
+    );
+    top$lanes$0$ctl$v_q$5 v_q$5(
+        .d(v_q$5$d),
+        .q(v_q$5$q),
+        .clock(v_q$5$clock)
+    );
+    top$lanes$0$ctl$v_q$6 v_q$6(
+        .d(v_q$6$d),
+        .q(v_q$6$q),
+        .clock(v_q$6$clock)
+    );
+    top$lanes$0$ctl$v_q$7 v_q$7(
+        .d(v_q$7$d),
+        .q(v_q$7$q),
+        .clock(v_q$7$clock)
+    );
+    top$lanes$0$ctl$er_q$0 er_q$0(
+        .d(er_q$0$d),
+        .q(er_q$0$q),
+        .clock(er_q$0$clock)
+    );
+    top$lanes$0$ctl$er_q$1 er_q$1(
+        .d(er_q$1$d),
+        .q(er_q$1$q),
+        .clock(er_q$1$clock)
+    );
+    top$lanes$0$ctl$er_q$2 er_q$2(
+        .d(er_q$2$d),
+        .q(er_q$2$q),
+        .clock(er_q$2$clock)
+    );
+    top$lanes$0$ctl$er_q$3 er_q$3(
+        .d(er_q$3$d),
+        .q(er_q$3$q),
+        .clock(er_q$3$clock)
+    );
+    top$lanes$0$ctl$er_q$4 er_q$4(
+        .d(er_q$4$d),
+        .q(er_q$4$q),
+        .clock(er_q$4$clock)
+    );
+    top$lanes$0$ctl$er_q$5 er_q$5(
+        .d(er_q$5$d),
+        .q(er_q$5$q),
+        .clock(er_q$5$clock)
+    );
+    top$lanes$0$ctl$er_q$6 er_q$6(
+        .d(er_q$6$d),
+        .q(er_q$6$q),
+        .clock(er_q$6$clock)
+    );
+    top$lanes$0$ctl$er_q$7 er_q$7(
+        .d(er_q$7$d),
+        .q(er_q$7$q),
+        .clock(er_q$7$clock)
+    );
+    top$lanes$0$ctl$pad_q$0 pad_q$0(
+        .d(pad_q$0$d),
+        .q(pad_q$0$q),
+        .clock(pad_q$0$clock)
+    );
+    top$lanes$0$ctl$pad_q$1 pad_q$1(
+        .d(pad_q$1$d),
+        .q(pad_q$1$q),
+        .clock(pad_q$1$clock)
+    );
+    top$lanes$0$ctl$pad_q$2 pad_q$2(
+        .d(pad_q$2$d),
+        .q(pad_q$2$q),
+        .clock(pad_q$2$clock)
+    );
+    top$lanes$0$ctl$pad_q$3 pad_q$3(
+        .d(pad_q$3$d),
+        .q(pad_q$3$q),
+        .clock(pad_q$3$clock)
+    );
+    top$lanes$0$ctl$pad_q$4 pad_q$4(
+        .d(pad_q$4$d),
+        .q(pad_q$4$q),
+        .clock(pad_q$4$clock)
+    );
+    top$lanes$0$ctl$pad_q$5 pad_q$5(
+        .d(pad_q$5$d),
+        .q(pad_q$5$q),
+        .clock(pad_q$5$clock)
+    );
+    top$lanes$0$ctl$pad_q$6 pad_q$6(
+        .d(pad_q$6$d),
+        .q(pad_q$6$q),
+        .clock(pad_q$6$clock)
+    );
+    top$lanes$0$ctl$pad_q$7 pad_q$7(
+        .d(pad_q$7$d),
+        .q(pad_q$7$q),
+        .clock(pad_q$7$clock)
+    );
+    top$lanes$0$ctl$bx_q$0 bx_q$0(
+        .d(bx_q$0$d),
+        .q(bx_q$0$q),
+        .clock(bx_q$0$clock)
+    );
+    top$lanes$0$ctl$bx_q$1 bx_q$1(
+        .d(bx_q$1$d),
+        .q(bx_q$1$q),
+        .clock(bx_q$1$clock)
+    );
+    top$lanes$0$ctl$bx_q$2 bx_q$2(
+        .d(bx_q$2$d),
+        .q(bx_q$2$q),
+        .clock(bx_q$2$clock)
+    );
+    top$lanes$0$ctl$bx_q$3 bx_q$3(
+        .d(bx_q$3$d),
+        .q(bx_q$3$q),
+        .clock(bx_q$3$clock)
+    );
+    top$lanes$0$ctl$bx_q$4 bx_q$4(
+        .d(bx_q$4$d),
+        .q(bx_q$4$q),
+        .clock(bx_q$4$clock)
+    );
+    top$lanes$0$ctl$bx_q$5 bx_q$5(
+        .d(bx_q$5$d),
+        .q(bx_q$5$q),
+        .clock(bx_q$5$clock)
+    );
+    top$lanes$0$ctl$bx_q$6 bx_q$6(
+        .d(bx_q$6$d),
+        .q(bx_q$6$q),
+        .clock(bx_q$6$clock)
+    );
+    top$lanes$0$ctl$bx_q$7 bx_q$7(
+        .d(bx_q$7$d),
+        .q(bx_q$7$q),
+        .clock(bx_q$7$clock)
+    );
+    top$lanes$0$ctl$by_q$0 by_q$0(
+        .d(by_q$0$d),
+        .q(by_q$0$q),
+        .clock(by_q$0$clock)
+    );
+    top$lanes$0$ctl$by_q$1 by_q$1(
+        .d(by_q$1$d),
+        .q(by_q$1$q),
+        .clock(by_q$1$clock)
+    );
+    top$lanes$0$ctl$by_q$2 by_q$2(
+        .d(by_q$2$d),
+        .q(by_q$2$q),
+        .clock(by_q$2$clock)
+    );
+    top$lanes$0$ctl$by_q$3 by_q$3(
+        .d(by_q$3$d),
+        .q(by_q$3$q),
+        .clock(by_q$3$clock)
+    );
+    top$lanes$0$ctl$by_q$4 by_q$4(
+        .d(by_q$4$d),
+        .q(by_q$4$q),
+        .clock(by_q$4$clock)
+    );
+    top$lanes$0$ctl$by_q$5 by_q$5(
+        .d(by_q$5$d),
+        .q(by_q$5$q),
+        .clock(by_q$5$clock)
+    );
+    top$lanes$0$ctl$by_q$6 by_q$6(
+        .d(by_q$6$d),
+        .q(by_q$6$q),
+        .clock(by_q$6$clock)
+    );
+    top$lanes$0$ctl$by_q$7 by_q$7(
+        .d(by_q$7$d),
+        .q(by_q$7$q),
+        .clock(by_q$7$clock)
+    );
+    top$lanes$0$ctl$face_q$0 face_q$0(
+        .d(face_q$0$d),
+        .q(face_q$0$q),
+        .clock(face_q$0$clock)
+    );
+    top$lanes$0$ctl$face_q$1 face_q$1(
+        .d(face_q$1$d),
+        .q(face_q$1$q),
+        .clock(face_q$1$clock)
+    );
+    top$lanes$0$ctl$face_q$2 face_q$2(
+        .d(face_q$2$d),
+        .q(face_q$2$q),
+        .clock(face_q$2$clock)
+    );
+    top$lanes$0$ctl$face_q$3 face_q$3(
+        .d(face_q$3$d),
+        .q(face_q$3$q),
+        .clock(face_q$3$clock)
+    );
+    top$lanes$0$ctl$face_q$4 face_q$4(
+        .d(face_q$4$d),
+        .q(face_q$4$q),
+        .clock(face_q$4$clock)
+    );
+    top$lanes$0$ctl$face_q$5 face_q$5(
+        .d(face_q$5$d),
+        .q(face_q$5$q),
+        .clock(face_q$5$clock)
+    );
+    top$lanes$0$ctl$face_q$6 face_q$6(
+        .d(face_q$6$d),
+        .q(face_q$6$q),
+        .clock(face_q$6$clock)
+    );
+    top$lanes$0$ctl$face_q$7 face_q$7(
+        .d(face_q$7$d),
+        .q(face_q$7$q),
+        .clock(face_q$7$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_q$0$clock = clock;
+        y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dxm_q$0$clock = clock;
+        dyn_q$0$clock = clock;
+        dym_q$0$clock = clock;
+        x_q$1$clock = clock;
+        y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dxm_q$1$clock = clock;
+        dyn_q$1$clock = clock;
+        dym_q$1$clock = clock;
+        v_q$0$clock = clock;
+        er_q$0$clock = clock;
+        pad_q$0$clock = clock;
+        bx_q$0$clock = clock;
+        by_q$0$clock = clock;
+        face_q$0$clock = clock;
+        v_q$1$clock = clock;
+        er_q$1$clock = clock;
+        pad_q$1$clock = clock;
+        bx_q$1$clock = clock;
+        by_q$1$clock = clock;
+        face_q$1$clock = clock;
+        v_q$2$clock = clock;
+        er_q$2$clock = clock;
+        pad_q$2$clock = clock;
+        bx_q$2$clock = clock;
+        by_q$2$clock = clock;
+        face_q$2$clock = clock;
+        v_q$3$clock = clock;
+        er_q$3$clock = clock;
+        pad_q$3$clock = clock;
+        bx_q$3$clock = clock;
+        by_q$3$clock = clock;
+        face_q$3$clock = clock;
+        v_q$4$clock = clock;
+        er_q$4$clock = clock;
+        pad_q$4$clock = clock;
+        bx_q$4$clock = clock;
+        by_q$4$clock = clock;
+        face_q$4$clock = clock;
+        v_q$5$clock = clock;
+        er_q$5$clock = clock;
+        pad_q$5$clock = clock;
+        bx_q$5$clock = clock;
+        by_q$5$clock = clock;
+        face_q$5$clock = clock;
+        v_q$6$clock = clock;
+        er_q$6$clock = clock;
+        pad_q$6$clock = clock;
+        bx_q$6$clock = clock;
+        by_q$6$clock = clock;
+        face_q$6$clock = clock;
+        v_q$7$clock = clock;
+        er_q$7$clock = clock;
+        pad_q$7$clock = clock;
+        bx_q$7$clock = clock;
+        by_q$7$clock = clock;
+        face_q$7$clock = clock;
+        x_q$0$d = x;
+        y_q$0$d = y;
+        sr_q$0$d = sr;
+        dxn_q$0$d = dx_neg;
+        dxm_q$0$d = dx_mag;
+        dyn_q$0$d = dy_neg;
+        dym_q$0$d = dy_mag;
+        x_q$1$d = x_q$0$q;
+        y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dxm_q$1$d = dxm_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
+        dym_q$1$d = dym_q$0$q;
+        x_t = x_q$1$q;
+        y_t = y_q$1$q;
+        sr_t = sr_q$1$q;
+        dx_neg_t = dxn_q$1$q;
+        dx_mag_t = dxm_q$1$q;
+        dy_neg_t = dyn_q$1$q;
+        dy_mag_t = dym_q$1$q;
+        v_q$0$d = valid;
+        er_q$0$d = er;
+        pad_q$0$d = pad;
+        bx_q$0$d = base_x;
+        by_q$0$d = base_y;
+        face_q$0$d = face;
+        v_q$1$d = v_q$0$q;
+        er_q$1$d = er_q$0$q;
+        pad_q$1$d = pad_q$0$q;
+        bx_q$1$d = bx_q$0$q;
+        by_q$1$d = by_q$0$q;
+        face_q$1$d = face_q$0$q;
+        v_q$2$d = v_q$1$q;
+        er_q$2$d = er_q$1$q;
+        pad_q$2$d = pad_q$1$q;
+        bx_q$2$d = bx_q$1$q;
+        by_q$2$d = by_q$1$q;
+        face_q$2$d = face_q$1$q;
+        v_q$3$d = v_q$2$q;
+        er_q$3$d = er_q$2$q;
+        pad_q$3$d = pad_q$2$q;
+        bx_q$3$d = bx_q$2$q;
+        by_q$3$d = by_q$2$q;
+        face_q$3$d = face_q$2$q;
+        v_q$4$d = v_q$3$q;
+        er_q$4$d = er_q$3$q;
+        pad_q$4$d = pad_q$3$q;
+        bx_q$4$d = bx_q$3$q;
+        by_q$4$d = by_q$3$q;
+        face_q$4$d = face_q$3$q;
+        v_q$5$d = v_q$4$q;
+        er_q$5$d = er_q$4$q;
+        pad_q$5$d = pad_q$4$q;
+        bx_q$5$d = bx_q$4$q;
+        by_q$5$d = by_q$4$q;
+        face_q$5$d = face_q$4$q;
+        v_q$6$d = v_q$5$q;
+        er_q$6$d = er_q$5$q;
+        pad_q$6$d = pad_q$5$q;
+        bx_q$6$d = bx_q$5$q;
+        by_q$6$d = by_q$5$q;
+        face_q$6$d = face_q$5$q;
+        v_q$7$d = v_q$6$q;
+        er_q$7$d = er_q$6$q;
+        pad_q$7$d = pad_q$6$q;
+        bx_q$7$d = bx_q$6$q;
+        by_q$7$d = by_q$6$q;
+        face_q$7$d = face_q$6$q;
+        res_beat = v_q$7$q;
+        res_valid = v_q$7$q & ~pad_q$7$q;
+        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
+        px_x = bx_q$7$q;
+        px_y = by_q$7$q;
+        px_face = face_q$7$q;
+    end
+    
+endmodule // top$lanes$0$ctl
+module top$lanes$0$ctl$bx_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$0
+module top$lanes$0$ctl$bx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$1
+module top$lanes$0$ctl$bx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$2
+module top$lanes$0$ctl$bx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$3
+module top$lanes$0$ctl$bx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$4
+module top$lanes$0$ctl$bx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$5
+module top$lanes$0$ctl$bx_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$6
+module top$lanes$0$ctl$bx_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$7
+module top$lanes$0$ctl$by_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$0
+module top$lanes$0$ctl$by_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$1
+module top$lanes$0$ctl$by_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$2
+module top$lanes$0$ctl$by_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$3
+module top$lanes$0$ctl$by_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$4
+module top$lanes$0$ctl$by_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$5
+module top$lanes$0$ctl$by_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$6
+module top$lanes$0$ctl$by_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$7
+module top$lanes$0$ctl$dxm_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$0
+module top$lanes$0$ctl$dxm_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$1
+module top$lanes$0$ctl$dxn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$0
+module top$lanes$0$ctl$dxn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$1
+module top$lanes$0$ctl$dym_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$0
+module top$lanes$0$ctl$dym_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$1
+module top$lanes$0$ctl$dyn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$0
+module top$lanes$0$ctl$dyn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$1
+module top$lanes$0$ctl$er_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$0
+module top$lanes$0$ctl$er_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$1
+module top$lanes$0$ctl$er_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$2
+module top$lanes$0$ctl$er_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$3
+module top$lanes$0$ctl$er_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$4
+module top$lanes$0$ctl$er_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$5
+module top$lanes$0$ctl$er_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$6
+module top$lanes$0$ctl$er_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$7
+module top$lanes$0$ctl$face_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$0
+module top$lanes$0$ctl$face_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$1
+module top$lanes$0$ctl$face_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$2
+module top$lanes$0$ctl$face_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$3
+module top$lanes$0$ctl$face_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$4
+module top$lanes$0$ctl$face_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$5
+module top$lanes$0$ctl$face_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$6
+module top$lanes$0$ctl$face_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$7
+module top$lanes$0$ctl$pad_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$0
+module top$lanes$0$ctl$pad_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$1
+module top$lanes$0$ctl$pad_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$2
+module top$lanes$0$ctl$pad_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$3
+module top$lanes$0$ctl$pad_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$4
+module top$lanes$0$ctl$pad_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$5
+module top$lanes$0$ctl$pad_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$6
+module top$lanes$0$ctl$pad_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$7
+module top$lanes$0$ctl$sr_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$0
+module top$lanes$0$ctl$sr_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$1
+module top$lanes$0$ctl$v_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$0
+module top$lanes$0$ctl$v_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$1
+module top$lanes$0$ctl$v_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$2
+module top$lanes$0$ctl$v_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$3
+module top$lanes$0$ctl$v_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$4
+module top$lanes$0$ctl$v_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$5
+module top$lanes$0$ctl$v_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$6
+module top$lanes$0$ctl$v_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$7
+module top$lanes$0$ctl$x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$0
+module top$lanes$0$ctl$x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$1
+module top$lanes$0$ctl$y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$0
+module top$lanes$0$ctl$y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$1
+module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] beats;
+    input wire  beat_valid;
+    input wire  [15:0] value;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  pad;
+    input wire  invalid;
+    input wire  halo;
+    input wire  sr;
+    input wire  er;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  at_edge;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    input wire  [15:0] g_from_left_xm;
+    input wire  [15:0] g_from_left_ym;
+    input wire  [15:0] g_from_left_zm;
+    input wire  [15:0] g_from_right_xp;
+    input wire  [15:0] g_from_right_yp;
+    input wire  [15:0] g_from_right_zp;
+    output reg  [15:0] g_to_right_xm;
+    output reg  [15:0] g_to_right_ym;
+    output reg  [15:0] g_to_right_zm;
+    output reg  [15:0] g_to_left_xp;
+    output reg  [15:0] g_to_left_yp;
+    output reg  [15:0] g_to_left_zp;
+    output reg  o_valid;
+    output reg  [15:0] o_value;
+    output reg  [15:0] o_x;
+    output reg  [15:0] o_y;
+    output reg  o_pad;
+    output reg  o_invalid;
+    output reg  o_sr;
+    output reg  o_er;
+    output reg  o_edge;
+    output reg  [2:0] o_face;
+    output reg  [15:0] o_base_x;
+    output reg  [15:0] o_base_y;
+    output reg  o_dx_neg;
+    output reg  [15:0] o_dx_mag;
+    output reg  o_dy_neg;
+    output reg  [15:0] o_dy_mag;
+    output reg  gx_neg;
+    output reg  [15:0] gx_mag;
+    output reg  gy_neg;
+    output reg  [15:0] gy_mag;
+    output reg  gz_neg;
+    output reg  [15:0] gz_mag;
+    
+    // Constant declarations
+    localparam  use_gradient = 1'b0;
+    
+    // Stub signals
+    reg  abc$clock;
+    reg  [63:0] abc$beats;
+    reg  [15:0] abc$value;
+    reg  [15:0] abc$x;
+    reg  [15:0] abc$from_left_xm;
+    reg  [15:0] abc$from_left_ym;
+    reg  [15:0] abc$from_left_zm;
+    reg  [15:0] abc$from_right_xp;
+    reg  [15:0] abc$from_right_yp;
+    reg  [15:0] abc$from_right_zp;
+    wire  [15:0] abc$to_right_xm = 'h0;
+    wire  [15:0] abc$to_right_ym = 'h0;
+    wire  [15:0] abc$to_right_zm = 'h0;
+    wire  [15:0] abc$to_left_xp = 'h0;
+    wire  [15:0] abc$to_left_yp = 'h0;
+    wire  [15:0] abc$to_left_zp = 'h0;
+    wire  [15:0] abc$o_value = 'h0;
+    wire  abc$gx_neg = 'h0;
+    wire  [15:0] abc$gx_mag = 'h0;
+    wire  abc$gy_neg = 'h0;
+    wire  [15:0] abc$gy_mag = 'h0;
+    wire  abc$gz_neg = 'h0;
+    wire  [15:0] abc$gz_mag = 'h0;
+    
+    // Sub module instances
+    
+    // Update code
+    reg  [15:0] o_value_pass;
+    always @(*) begin
+        abc$clock = clock;
+        abc$beats = beats;
+        abc$value = value;
+        abc$x = x;
+        abc$from_left_xm = g_from_left_xm;
+        abc$from_left_ym = g_from_left_ym;
+        abc$from_left_zm = g_from_left_zm;
+        abc$from_right_xp = g_from_right_xp;
+        abc$from_right_yp = g_from_right_yp;
+        abc$from_right_zp = g_from_right_zp;
+        g_to_right_xm = abc$to_right_xm;
+        g_to_right_ym = abc$to_right_ym;
+        g_to_right_zm = abc$to_right_zm;
+        g_to_left_xp = abc$to_left_xp;
+        g_to_left_yp = abc$to_left_yp;
+        g_to_left_zp = abc$to_left_zp;
+        gx_neg = abc$gx_neg;
+        gx_mag = abc$gx_mag;
+        gy_neg = abc$gy_neg;
+        gy_mag = abc$gy_mag;
+        gz_neg = abc$gz_neg;
+        gz_mag = abc$gz_mag;
+        if (use_gradient) begin
+            o_value_pass = abc$o_value;
+        end
+        else begin
+            o_value_pass = value;
+        end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
+        o_value = o_value_pass;
+    end
+    
+endmodule // top$lanes$0$feed
+module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
+    input wire  [63:0] dims;
+    input wire  [63:0] beats;
+    input wire  [63:0] order;
+    input wire  beat_valid;
+    input wire  [15:0] value;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  pad;
+    input wire  invalid;
+    input wire  halo;
+    input wire  sr;
+    input wire  er;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  at_edge;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    input wire  [15:0] g_from_left_xm;
+    input wire  [15:0] g_from_left_ym;
+    input wire  [15:0] g_from_left_zm;
+    input wire  [15:0] g_from_right_xp;
+    input wire  [15:0] g_from_right_yp;
+    input wire  [15:0] g_from_right_zp;
+    output reg  [15:0] g_to_right_xm;
+    output reg  [15:0] g_to_right_ym;
+    output reg  [15:0] g_to_right_zm;
+    output reg  [15:0] g_to_left_xp;
+    output reg  [15:0] g_to_left_yp;
+    output reg  [15:0] g_to_left_zp;
+    output reg  [63:0] t0s0;
+    input wire  [63:0] t0i1;
+    output reg  [63:0] t1s0;
+    output reg  [63:0] t1s1;
+    input wire  [63:0] t1i1;
+    input wire  [63:0] t1i2;
+    output reg  [63:0] t3s0;
+    output reg  [63:0] t3s1;
+    input wire  [63:0] t3i1;
+    input wire  [63:0] t3i2;
+    output reg  [63:0] t5s0;
+    output reg  [63:0] t5s1;
+    output reg  [63:0] t5s2;
+    input wire  [63:0] t5i1;
+    input wire  [63:0] t5i2;
+    input wire  [63:0] t5i3;
+    output reg  [63:0] t6s0;
+    input wire  [63:0] t6i1;
+    output reg  [63:0] t7s0;
+    input wire  [63:0] t7i1;
+    output reg  [63:0] t8s0;
+    input wire  [63:0] t8i1;
+    input wire  [63:0] t8il;
+    output reg  res_beat;
+    output reg  res_valid;
+    output reg  [63:0] res;
+    output reg  px_valid;
+    output reg  [15:0] px_x;
+    output reg  [15:0] px_y;
+    output reg  [2:0] px_face;
+    
+    // Stub signals
+    reg  feed$clock;
+    reg  [63:0] feed$beats;
+    reg  feed$beat_valid;
+    reg  [15:0] feed$value;
+    reg  [15:0] feed$x;
+    reg  [15:0] feed$y;
+    reg  feed$pad;
+    reg  feed$invalid;
+    reg  feed$halo;
+    reg  feed$sr;
+    reg  feed$er;
+    reg  [15:0] feed$base_x;
+    reg  [15:0] feed$base_y;
+    reg  [2:0] feed$face;
+    reg  feed$at_edge;
+    reg  feed$dx_neg;
+    reg  [15:0] feed$dx_mag;
+    reg  feed$dy_neg;
+    reg  [15:0] feed$dy_mag;
+    reg  [15:0] feed$g_from_left_xm;
+    reg  [15:0] feed$g_from_left_ym;
+    reg  [15:0] feed$g_from_left_zm;
+    reg  [15:0] feed$g_from_right_xp;
+    reg  [15:0] feed$g_from_right_yp;
+    reg  [15:0] feed$g_from_right_zp;
+    wire  [15:0] feed$g_to_right_xm;
+    wire  [15:0] feed$g_to_right_ym;
+    wire  [15:0] feed$g_to_right_zm;
+    wire  [15:0] feed$g_to_left_xp;
+    wire  [15:0] feed$g_to_left_yp;
+    wire  [15:0] feed$g_to_left_zp;
+    wire  feed$o_valid;
+    wire  [15:0] feed$o_value;
+    wire  [15:0] feed$o_x;
+    wire  [15:0] feed$o_y;
+    wire  feed$o_pad;
+    wire  feed$o_invalid;
+    wire  feed$o_sr;
+    wire  feed$o_er;
+    wire  feed$o_edge;
+    wire  [2:0] feed$o_face;
+    wire  [15:0] feed$o_base_x;
+    wire  [15:0] feed$o_base_y;
+    wire  feed$o_dx_neg;
+    wire  [15:0] feed$o_dx_mag;
+    wire  feed$o_dy_neg;
+    wire  [15:0] feed$o_dy_mag;
+    wire  feed$gx_neg;
+    wire  [15:0] feed$gx_mag;
+    wire  feed$gy_neg;
+    wire  [15:0] feed$gy_mag;
+    wire  feed$gz_neg;
+    wire  [15:0] feed$gz_mag;
+    reg  shader$clock;
+    reg  shader$host_write;
+    reg  [23:0] shader$host_address;
+    reg  [63:0] shader$host_data;
+    reg  [15:0] shader$value;
+    reg  shader$invalid;
+    reg  shader$at_edge;
+    reg  shader$gx_neg;
+    reg  [31:0] shader$gx_mag;
+    reg  shader$gy_neg;
+    reg  [31:0] shader$gy_mag;
+    reg  shader$gz_neg;
+    reg  [31:0] shader$gz_mag;
+    wire  [31:0] shader$r;
+    wire  [15:0] shader$g;
+    wire  [15:0] shader$b;
+    wire  [15:0] shader$a;
+    wire  shader$valid;
+    reg  ctl$clock;
+    reg  ctl$valid;
+    reg  ctl$er;
+    reg  ctl$pad;
+    reg  [15:0] ctl$base_x;
+    reg  [15:0] ctl$base_y;
+    reg  [2:0] ctl$face;
+    reg  [15:0] ctl$x;
+    reg  [15:0] ctl$y;
+    reg  ctl$sr;
+    reg  ctl$dx_neg;
+    reg  [15:0] ctl$dx_mag;
+    reg  ctl$dy_neg;
+    reg  [15:0] ctl$dy_mag;
+    wire  [15:0] ctl$x_t;
+    wire  [15:0] ctl$y_t;
+    wire  ctl$sr_t;
+    wire  ctl$dx_neg_t;
+    wire  [15:0] ctl$dx_mag_t;
+    wire  ctl$dy_neg_t;
+    wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$res_beat;
+    wire  ctl$res_valid;
+    wire  ctl$px_valid;
+    wire  [15:0] ctl$px_x;
+    wire  [15:0] ctl$px_y;
+    wire  [2:0] ctl$px_face;
+    reg  taps$clock;
+    reg  [63:0] taps$beats;
+    reg  [15:0] taps$x;
+    reg  [63:0] taps$res;
+    reg  taps$res_beat;
+    wire  [63:0] taps$t0s0;
+    reg  [63:0] taps$t0i1;
+    wire  [63:0] taps$t1s0;
+    wire  [63:0] taps$t1s1;
+    reg  [63:0] taps$t1i1;
+    reg  [63:0] taps$t1i2;
+    wire  [63:0] taps$t3s0;
+    wire  [63:0] taps$t3s1;
+    reg  [63:0] taps$t3i1;
+    reg  [63:0] taps$t3i2;
+    wire  [63:0] taps$t5s0;
+    wire  [63:0] taps$t5s1;
+    wire  [63:0] taps$t5s2;
+    reg  [63:0] taps$t5i1;
+    reg  [63:0] taps$t5i2;
+    reg  [63:0] taps$t5i3;
+    wire  [63:0] taps$t6s0;
+    reg  [63:0] taps$t6i1;
+    wire  [63:0] taps$t7s0;
+    reg  [63:0] taps$t7i1;
+    wire  [63:0] taps$t8s0;
+    reg  [63:0] taps$t8i1;
+    reg  [63:0] taps$t8il;
+    wire  [63:0] taps$a$0;
+    wire  [63:0] taps$a$1;
+    wire  [63:0] taps$a$2;
+    wire  [63:0] taps$a$3;
+    wire  [63:0] taps$a$4;
+    wire  [63:0] taps$a$5;
+    wire  [63:0] taps$a$6;
+    wire  [63:0] taps$a$7;
+    wire  [63:0] taps$a$8;
+    reg  [63:0] cells$a$0;
+    reg  [63:0] cells$a$1;
+    reg  [63:0] cells$a$2;
+    reg  [63:0] cells$a$3;
+    reg  [63:0] cells$a$4;
+    reg  [63:0] cells$a$5;
+    reg  [63:0] cells$a$6;
+    reg  [63:0] cells$a$7;
+    reg  [63:0] cells$a$8;
+    reg  [15:0] cells$x;
+    reg  [15:0] cells$y;
+    reg  cells$sr;
+    reg  cells$dx_neg;
+    reg  [15:0] cells$dx_mag;
+    reg  cells$dy_neg;
+    reg  [15:0] cells$dy_mag;
+    wire  [31:0] cells$c00$0;
+    wire  [31:0] cells$c00$1;
+    wire  [31:0] cells$c00$2;
+    wire  [31:0] cells$c00$3;
+    wire  [31:0] cells$c10$0;
+    wire  [31:0] cells$c10$1;
+    wire  [31:0] cells$c10$2;
+    wire  [31:0] cells$c10$3;
+    wire  [31:0] cells$c01$0;
+    wire  [31:0] cells$c01$1;
+    wire  [31:0] cells$c01$2;
+    wire  [31:0] cells$c01$3;
+    wire  [31:0] cells$c11$0;
+    wire  [31:0] cells$c11$1;
+    wire  [31:0] cells$c11$2;
+    wire  [31:0] cells$c11$3;
+    reg  [63:0] cells$dims;
+    reg  [63:0] cells$order;
+    reg  bilinear$clock;
+    reg  [31:0] bilinear$c00$0;
+    reg  [31:0] bilinear$c00$1;
+    reg  [31:0] bilinear$c00$2;
+    reg  [31:0] bilinear$c00$3;
+    reg  [31:0] bilinear$c10$0;
+    reg  [31:0] bilinear$c10$1;
+    reg  [31:0] bilinear$c10$2;
+    reg  [31:0] bilinear$c10$3;
+    reg  [31:0] bilinear$c01$0;
+    reg  [31:0] bilinear$c01$1;
+    reg  [31:0] bilinear$c01$2;
+    reg  [31:0] bilinear$c01$3;
+    reg  [31:0] bilinear$c11$0;
+    reg  [31:0] bilinear$c11$1;
+    reg  [31:0] bilinear$c11$2;
+    reg  [31:0] bilinear$c11$3;
+    reg  [15:0] bilinear$wx;
+    reg  [15:0] bilinear$wy;
+    wire  [31:0] bilinear$out$0;
+    wire  [31:0] bilinear$out$1;
+    wire  [31:0] bilinear$out$2;
+    wire  [31:0] bilinear$out$3;
+    reg  compositor$clock;
+    reg  [31:0] compositor$acc_r;
+    reg  [15:0] compositor$acc_g;
+    reg  [15:0] compositor$acc_b;
+    reg  [15:0] compositor$acc_a;
+    reg  [31:0] compositor$new_r;
+    reg  [15:0] compositor$new_g;
+    reg  [15:0] compositor$new_b;
+    reg  [15:0] compositor$new_a;
+    reg  compositor$new_valid;
+    wire  [31:0] compositor$out_r;
+    wire  [15:0] compositor$out_g;
+    wire  [15:0] compositor$out_b;
+    wire  [15:0] compositor$out_a;
+    reg  [63:0] compositor$order;
+    
+    // Sub module instances
+    top$lanes$1$feed feed(
+        .clock(feed$clock),
+        .beats(feed$beats),
+        .beat_valid(feed$beat_valid),
+        .value(feed$value),
+        .x(feed$x),
+        .y(feed$y),
+        .pad(feed$pad),
+        .invalid(feed$invalid),
+        .halo(feed$halo),
+        .sr(feed$sr),
+        .er(feed$er),
+        .base_x(feed$base_x),
+        .base_y(feed$base_y),
+        .face(feed$face),
+        .at_edge(feed$at_edge),
+        .dx_neg(feed$dx_neg),
+        .dx_mag(feed$dx_mag),
+        .dy_neg(feed$dy_neg),
+        .dy_mag(feed$dy_mag),
+        .g_from_left_xm(feed$g_from_left_xm),
+        .g_from_left_ym(feed$g_from_left_ym),
+        .g_from_left_zm(feed$g_from_left_zm),
+        .g_from_right_xp(feed$g_from_right_xp),
+        .g_from_right_yp(feed$g_from_right_yp),
+        .g_from_right_zp(feed$g_from_right_zp),
+        .g_to_right_xm(feed$g_to_right_xm),
+        .g_to_right_ym(feed$g_to_right_ym),
+        .g_to_right_zm(feed$g_to_right_zm),
+        .g_to_left_xp(feed$g_to_left_xp),
+        .g_to_left_yp(feed$g_to_left_yp),
+        .g_to_left_zp(feed$g_to_left_zp),
+        .o_valid(feed$o_valid),
+        .o_value(feed$o_value),
+        .o_x(feed$o_x),
+        .o_y(feed$o_y),
+        .o_pad(feed$o_pad),
+        .o_invalid(feed$o_invalid),
+        .o_sr(feed$o_sr),
+        .o_er(feed$o_er),
+        .o_edge(feed$o_edge),
+        .o_face(feed$o_face),
+        .o_base_x(feed$o_base_x),
+        .o_base_y(feed$o_base_y),
+        .o_dx_neg(feed$o_dx_neg),
+        .o_dx_mag(feed$o_dx_mag),
+        .o_dy_neg(feed$o_dy_neg),
+        .o_dy_mag(feed$o_dy_mag),
+        .gx_neg(feed$gx_neg),
+        .gx_mag(feed$gx_mag),
+        .gy_neg(feed$gy_neg),
+        .gy_mag(feed$gy_mag),
+        .gz_neg(feed$gz_neg),
+        .gz_mag(feed$gz_mag)
+    );
+    top$lanes$1$shader shader(
+        .clock(shader$clock),
+        .host_write(shader$host_write),
+        .host_address(shader$host_address),
+        .host_data(shader$host_data),
+        .value(shader$value),
+        .invalid(shader$invalid),
+        .at_edge(shader$at_edge),
+        .gx_neg(shader$gx_neg),
+        .gx_mag(shader$gx_mag),
+        .gy_neg(shader$gy_neg),
+        .gy_mag(shader$gy_mag),
+        .gz_neg(shader$gz_neg),
+        .gz_mag(shader$gz_mag),
+        .r(shader$r),
+        .g(shader$g),
+        .b(shader$b),
+        .a(shader$a),
+        .valid(shader$valid)
+    );
+    top$lanes$1$ctl ctl(
+        .clock(ctl$clock),
+        .valid(ctl$valid),
+        .er(ctl$er),
+        .pad(ctl$pad),
+        .base_x(ctl$base_x),
+        .base_y(ctl$base_y),
+        .face(ctl$face),
+        .x(ctl$x),
+        .y(ctl$y),
+        .sr(ctl$sr),
+        .dx_neg(ctl$dx_neg),
+        .dx_mag(ctl$dx_mag),
+        .dy_neg(ctl$dy_neg),
+        .dy_mag(ctl$dy_mag),
+        .x_t(ctl$x_t),
+        .y_t(ctl$y_t),
+        .sr_t(ctl$sr_t),
+        .dx_neg_t(ctl$dx_neg_t),
+        .dx_mag_t(ctl$dx_mag_t),
+        .dy_neg_t(ctl$dy_neg_t),
+        .dy_mag_t(ctl$dy_mag_t),
+        .res_beat(ctl$res_beat),
+        .res_valid(ctl$res_valid),
+        .px_valid(ctl$px_valid),
+        .px_x(ctl$px_x),
+        .px_y(ctl$px_y),
+        .px_face(ctl$px_face)
+    );
+    top$lanes$1$taps taps(
+        .clock(taps$clock),
+        .beats(taps$beats),
+        .x(taps$x),
+        .res(taps$res),
+        .res_beat(taps$res_beat),
+        .t0s0(taps$t0s0),
+        .t0i1(taps$t0i1),
+        .t1s0(taps$t1s0),
+        .t1s1(taps$t1s1),
+        .t1i1(taps$t1i1),
+        .t1i2(taps$t1i2),
+        .t3s0(taps$t3s0),
+        .t3s1(taps$t3s1),
+        .t3i1(taps$t3i1),
+        .t3i2(taps$t3i2),
+        .t5s0(taps$t5s0),
+        .t5s1(taps$t5s1),
+        .t5s2(taps$t5s2),
+        .t5i1(taps$t5i1),
+        .t5i2(taps$t5i2),
+        .t5i3(taps$t5i3),
+        .t6s0(taps$t6s0),
+        .t6i1(taps$t6i1),
+        .t7s0(taps$t7s0),
+        .t7i1(taps$t7i1),
+        .t8s0(taps$t8s0),
+        .t8i1(taps$t8i1),
+        .t8il(taps$t8il),
+        .a$0(taps$a$0),
+        .a$1(taps$a$1),
+        .a$2(taps$a$2),
+        .a$3(taps$a$3),
+        .a$4(taps$a$4),
+        .a$5(taps$a$5),
+        .a$6(taps$a$6),
+        .a$7(taps$a$7),
+        .a$8(taps$a$8)
+    );
+    top$lanes$1$cells cells(
+        .a$0(cells$a$0),
+        .a$1(cells$a$1),
+        .a$2(cells$a$2),
+        .a$3(cells$a$3),
+        .a$4(cells$a$4),
+        .a$5(cells$a$5),
+        .a$6(cells$a$6),
+        .a$7(cells$a$7),
+        .a$8(cells$a$8),
+        .x(cells$x),
+        .y(cells$y),
+        .sr(cells$sr),
+        .dx_neg(cells$dx_neg),
+        .dx_mag(cells$dx_mag),
+        .dy_neg(cells$dy_neg),
+        .dy_mag(cells$dy_mag),
+        .c00$0(cells$c00$0),
+        .c00$1(cells$c00$1),
+        .c00$2(cells$c00$2),
+        .c00$3(cells$c00$3),
+        .c10$0(cells$c10$0),
+        .c10$1(cells$c10$1),
+        .c10$2(cells$c10$2),
+        .c10$3(cells$c10$3),
+        .c01$0(cells$c01$0),
+        .c01$1(cells$c01$1),
+        .c01$2(cells$c01$2),
+        .c01$3(cells$c01$3),
+        .c11$0(cells$c11$0),
+        .c11$1(cells$c11$1),
+        .c11$2(cells$c11$2),
+        .c11$3(cells$c11$3),
+        .dims(cells$dims),
+        .order(cells$order)
+    );
+    top$lanes$1$bilinear bilinear(
+        .clock(bilinear$clock),
+        .c00$0(bilinear$c00$0),
+        .c00$1(bilinear$c00$1),
+        .c00$2(bilinear$c00$2),
+        .c00$3(bilinear$c00$3),
+        .c10$0(bilinear$c10$0),
+        .c10$1(bilinear$c10$1),
+        .c10$2(bilinear$c10$2),
+        .c10$3(bilinear$c10$3),
+        .c01$0(bilinear$c01$0),
+        .c01$1(bilinear$c01$1),
+        .c01$2(bilinear$c01$2),
+        .c01$3(bilinear$c01$3),
+        .c11$0(bilinear$c11$0),
+        .c11$1(bilinear$c11$1),
+        .c11$2(bilinear$c11$2),
+        .c11$3(bilinear$c11$3),
+        .wx(bilinear$wx),
+        .wy(bilinear$wy),
+        .out$0(bilinear$out$0),
+        .out$1(bilinear$out$1),
+        .out$2(bilinear$out$2),
+        .out$3(bilinear$out$3)
+    );
+    top$lanes$1$compositor compositor(
+        .clock(compositor$clock),
+        .acc_r(compositor$acc_r),
+        .acc_g(compositor$acc_g),
+        .acc_b(compositor$acc_b),
+        .acc_a(compositor$acc_a),
+        .new_r(compositor$new_r),
+        .new_g(compositor$new_g),
+        .new_b(compositor$new_b),
+        .new_a(compositor$new_a),
+        .new_valid(compositor$new_valid),
+        .out_r(compositor$out_r),
+        .out_g(compositor$out_g),
+        .out_b(compositor$out_b),
+        .out_a(compositor$out_a),
+        .order(compositor$order)
+    );
+    
+    // Update code
+    always @(*) begin
+        feed$clock = clock;
+        feed$beats = beats;
+        feed$beat_valid = beat_valid;
+        feed$value = value;
+        feed$x = x;
+        feed$y = y;
+        feed$pad = pad;
+        feed$invalid = invalid;
+        feed$halo = halo;
+        feed$sr = sr;
+        feed$er = er;
+        feed$base_x = base_x;
+        feed$base_y = base_y;
+        feed$face = face;
+        feed$at_edge = at_edge;
+        feed$dx_neg = dx_neg;
+        feed$dx_mag = dx_mag;
+        feed$dy_neg = dy_neg;
+        feed$dy_mag = dy_mag;
+        feed$g_from_left_xm = g_from_left_xm;
+        feed$g_from_left_ym = g_from_left_ym;
+        feed$g_from_left_zm = g_from_left_zm;
+        feed$g_from_right_xp = g_from_right_xp;
+        feed$g_from_right_yp = g_from_right_yp;
+        feed$g_from_right_zp = g_from_right_zp;
+        g_to_right_xm = feed$g_to_right_xm;
+        g_to_right_ym = feed$g_to_right_ym;
+        g_to_right_zm = feed$g_to_right_zm;
+        g_to_left_xp = feed$g_to_left_xp;
+        g_to_left_yp = feed$g_to_left_yp;
+        g_to_left_zp = feed$g_to_left_zp;
+        shader$clock = clock;
+        shader$host_write = host_write;
+        shader$host_address = host_address;
+        shader$host_data = host_data;
+        shader$value = feed$o_value;
+        shader$invalid = feed$o_invalid;
+        shader$at_edge = feed$o_edge;
+        shader$gx_neg = feed$gx_neg;
+        shader$gx_mag = 32'(feed$gx_mag);
+        shader$gy_neg = feed$gy_neg;
+        shader$gy_mag = 32'(feed$gy_mag);
+        shader$gz_neg = feed$gz_neg;
+        shader$gz_mag = 32'(feed$gz_mag);
+        ctl$clock = clock;
+        ctl$valid = feed$o_valid;
+        ctl$er = feed$o_er;
+        ctl$pad = feed$o_pad;
+        ctl$base_x = feed$o_base_x;
+        ctl$base_y = feed$o_base_y;
+        ctl$face = feed$o_face;
+        ctl$x = feed$o_x;
+        ctl$y = feed$o_y;
+        ctl$sr = feed$o_sr;
+        ctl$dx_neg = feed$o_dx_neg;
+        ctl$dx_mag = feed$o_dx_mag;
+        ctl$dy_neg = feed$o_dy_neg;
+        ctl$dy_mag = feed$o_dy_mag;
+        taps$clock = clock;
+        taps$beats = beats;
+        taps$x = ctl$x_t;
+        t0s0 = taps$t0s0;
+        taps$t0i1 = t0i1;
+        t1s0 = taps$t1s0;
+        t1s1 = taps$t1s1;
+        taps$t1i1 = t1i1;
+        taps$t1i2 = t1i2;
+        t3s0 = taps$t3s0;
+        t3s1 = taps$t3s1;
+        taps$t3i1 = t3i1;
+        taps$t3i2 = t3i2;
+        t5s0 = taps$t5s0;
+        t5s1 = taps$t5s1;
+        t5s2 = taps$t5s2;
+        taps$t5i1 = t5i1;
+        taps$t5i2 = t5i2;
+        taps$t5i3 = t5i3;
+        t6s0 = taps$t6s0;
+        taps$t6i1 = t6i1;
+        t7s0 = taps$t7s0;
+        taps$t7i1 = t7i1;
+        t8s0 = taps$t8s0;
+        taps$t8i1 = t8i1;
+        taps$t8il = t8il;
+        cells$a$0 = taps$a$0;
+        cells$a$1 = taps$a$1;
+        cells$a$2 = taps$a$2;
+        cells$a$3 = taps$a$3;
+        cells$a$4 = taps$a$4;
+        cells$a$5 = taps$a$5;
+        cells$a$6 = taps$a$6;
+        cells$a$7 = taps$a$7;
+        cells$a$8 = taps$a$8;
+        cells$dims = dims;
+        cells$order = order;
+        cells$x = ctl$x_t;
+        cells$y = ctl$y_t;
+        cells$sr = ctl$sr_t;
+        cells$dx_neg = ctl$dx_neg_t;
+        cells$dx_mag = ctl$dx_mag_t;
+        cells$dy_neg = ctl$dy_neg_t;
+        cells$dy_mag = ctl$dy_mag_t;
+        bilinear$clock = clock;
+        bilinear$c00$0 = cells$c00$0;
+        bilinear$c10$0 = cells$c10$0;
+        bilinear$c01$0 = cells$c01$0;
+        bilinear$c11$0 = cells$c11$0;
+        bilinear$c00$1 = cells$c00$1;
+        bilinear$c10$1 = cells$c10$1;
+        bilinear$c01$1 = cells$c01$1;
+        bilinear$c11$1 = cells$c11$1;
+        bilinear$c00$2 = cells$c00$2;
+        bilinear$c10$2 = cells$c10$2;
+        bilinear$c01$2 = cells$c01$2;
+        bilinear$c11$2 = cells$c11$2;
+        bilinear$c00$3 = cells$c00$3;
+        bilinear$c10$3 = cells$c10$3;
+        bilinear$c01$3 = cells$c01$3;
+        bilinear$c11$3 = cells$c11$3;
+        bilinear$wx = ctl$dx_mag_t;
+        bilinear$wy = ctl$dy_mag_t;
+        compositor$clock = clock;
+        compositor$order = order;
+        compositor$acc_r = bilinear$out$0;
+        compositor$acc_g = 16'(bilinear$out$1);
+        compositor$acc_b = 16'(bilinear$out$2);
+        compositor$acc_a = 16'(bilinear$out$3);
+        compositor$new_r = shader$r;
+        compositor$new_g = shader$g;
+        compositor$new_b = shader$b;
+        compositor$new_a = shader$a;
+        compositor$new_valid = shader$valid;
+        res = 64'(compositor$out_r) | (64'(compositor$out_g) << 'h10) | (64'(compositor$out_b) << 'h20) | (64'(compositor$out_a) << 'h30);
+        taps$res = res;
+        taps$res_beat = ctl$res_beat;
+        res_beat = ctl$res_beat;
+        res_valid = ctl$res_valid;
+        px_valid = ctl$px_valid;
+        px_x = ctl$px_x;
+        px_y = ctl$px_y;
+        px_face = ctl$px_face;
+    end
+    
+endmodule // top$lanes$1
+module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+    
+    // Module arguments
+    input wire  [63:0] a$0;
+    input wire  [63:0] a$1;
+    input wire  [63:0] a$2;
+    input wire  [63:0] a$3;
+    input wire  [63:0] a$4;
+    input wire  [63:0] a$5;
+    input wire  [63:0] a$6;
+    input wire  [63:0] a$7;
+    input wire  [63:0] a$8;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  sr;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    output reg  [31:0] c00$0;
+    output reg  [31:0] c00$1;
+    output reg  [31:0] c00$2;
+    output reg  [31:0] c00$3;
+    output reg  [31:0] c10$0;
+    output reg  [31:0] c10$1;
+    output reg  [31:0] c10$2;
+    output reg  [31:0] c10$3;
+    output reg  [31:0] c01$0;
+    output reg  [31:0] c01$1;
+    output reg  [31:0] c01$2;
+    output reg  [31:0] c01$3;
+    output reg  [31:0] c11$0;
+    output reg  [31:0] c11$1;
+    output reg  [31:0] c11$2;
+    output reg  [31:0] c11$3;
+    input wire  [63:0] dims;
+    input wire  [63:0] order;
+    
+    // Constant declarations
+    localparam  vmax = 64'hff;
+    localparam  r_mask = 64'hffff;
+    localparam  gba_mask = 64'hffff;
+    
+    // Local signals
+    reg  [15:0] nx_last;
+    reg  [15:0] ny_last;
+    reg  [63:0] reset;
+    reg  [63:0] w00;
+    reg  [63:0] w10;
+    reg  [63:0] w01;
+    reg  [63:0] w11;
+    reg  x_out;
+    reg  y_out;
+    
+    // Update code
+    always @(*) begin
+        nx_last = dims[('h0)+:(16)] - 'h1;
+        ny_last = dims[('h10)+:(16)] - 'h1;
+        reset = 'h0;
+        if (order['h1]) begin
+            reset = vmax;
+        end
+        w00 = a$0;
+        w10 = a$0;
+        w01 = a$0;
+        w11 = a$0;
+        x_out = 1'b0;
+        y_out = 1'b0;
+        if (dx_mag != 'h0) begin
+            if (dx_neg) begin
+                w10 = a$2;
+                x_out = x == nx_last;
+            end
+            else begin
+                w10 = a$1;
+                x_out = x == 'h0;
+            end
+        end
+        if (dy_mag != 'h0) begin
+            if (dy_neg) begin
+                w01 = a$4;
+                y_out = y == ny_last;
+            end
+            else begin
+                w01 = a$3;
+                y_out = y == 'h0;
+            end
+        end
+        w11 = w01;
+        if (dx_mag != 'h0) begin
+            w11 = w10;
+            if (dy_mag != 'h0) begin
+                if (dx_neg) begin
+                    if (dy_neg) begin
+                        w11 = a$8;
+                    end
+                    else begin
+                        w11 = a$6;
+                    end
+                end
+                else if (dy_neg) begin
+                    w11 = a$7;
+                end
+                else begin
+                    w11 = a$5;
+                end
+            end
+        end
+        if (x_out) begin
+            w10 = reset;
+            w11 = reset;
+        end
+        if (y_out) begin
+            w01 = reset;
+            w11 = reset;
+        end
+        if (sr) begin
+            w00 = reset;
+            w10 = reset;
+            w01 = reset;
+            w11 = reset;
+        end
+        c00$0 = 32'(w00 & r_mask);
+        c00$1 = 32'((w00 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10 & r_mask);
+        c10$1 = 32'((w10 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01 & r_mask);
+        c01$1 = 32'((w01 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11 & r_mask);
+        c11$1 = 32'((w11 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+    end
+    
+endmodule // top$lanes$1$cells
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  valid;
+    input wire  er;
+    input wire  pad;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  sr;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    output reg  [15:0] x_t;
+    output reg  [15:0] y_t;
+    output reg  sr_t;
+    output reg  dx_neg_t;
+    output reg  [15:0] dx_mag_t;
+    output reg  dy_neg_t;
+    output reg  [15:0] dy_mag_t;
+    output reg  res_beat;
+    output reg  res_valid;
+    output reg  px_valid;
+    output reg  [15:0] px_x;
+    output reg  [15:0] px_y;
+    output reg  [2:0] px_face;
+    
+    // Stub signals
+    reg  [15:0] x_q$0$d;
+    wire  [15:0] x_q$0$q;
+    reg  x_q$0$clock;
+    reg  [15:0] x_q$1$d;
+    wire  [15:0] x_q$1$q;
+    reg  x_q$1$clock;
+    reg  [15:0] y_q$0$d;
+    wire  [15:0] y_q$0$q;
+    reg  y_q$0$clock;
+    reg  [15:0] y_q$1$d;
+    wire  [15:0] y_q$1$q;
+    reg  y_q$1$clock;
+    reg  sr_q$0$d;
+    wire  sr_q$0$q;
+    reg  sr_q$0$clock;
+    reg  sr_q$1$d;
+    wire  sr_q$1$q;
+    reg  sr_q$1$clock;
+    reg  dxn_q$0$d;
+    wire  dxn_q$0$q;
+    reg  dxn_q$0$clock;
+    reg  dxn_q$1$d;
+    wire  dxn_q$1$q;
+    reg  dxn_q$1$clock;
+    reg  [15:0] dxm_q$0$d;
+    wire  [15:0] dxm_q$0$q;
+    reg  dxm_q$0$clock;
+    reg  [15:0] dxm_q$1$d;
+    wire  [15:0] dxm_q$1$q;
+    reg  dxm_q$1$clock;
+    reg  dyn_q$0$d;
+    wire  dyn_q$0$q;
+    reg  dyn_q$0$clock;
+    reg  dyn_q$1$d;
+    wire  dyn_q$1$q;
+    reg  dyn_q$1$clock;
+    reg  [15:0] dym_q$0$d;
+    wire  [15:0] dym_q$0$q;
+    reg  dym_q$0$clock;
+    reg  [15:0] dym_q$1$d;
+    wire  [15:0] dym_q$1$q;
+    reg  dym_q$1$clock;
+    reg  v_q$0$d;
+    wire  v_q$0$q;
+    reg  v_q$0$clock;
+    reg  v_q$1$d;
+    wire  v_q$1$q;
+    reg  v_q$1$clock;
+    reg  v_q$2$d;
+    wire  v_q$2$q;
+    reg  v_q$2$clock;
+    reg  v_q$3$d;
+    wire  v_q$3$q;
+    reg  v_q$3$clock;
+    reg  v_q$4$d;
+    wire  v_q$4$q;
+    reg  v_q$4$clock;
+    reg  v_q$5$d;
+    wire  v_q$5$q;
+    reg  v_q$5$clock;
+    reg  v_q$6$d;
+    wire  v_q$6$q;
+    reg  v_q$6$clock;
+    reg  v_q$7$d;
+    wire  v_q$7$q;
+    reg  v_q$7$clock;
+    reg  er_q$0$d;
+    wire  er_q$0$q;
+    reg  er_q$0$clock;
+    reg  er_q$1$d;
+    wire  er_q$1$q;
+    reg  er_q$1$clock;
+    reg  er_q$2$d;
+    wire  er_q$2$q;
+    reg  er_q$2$clock;
+    reg  er_q$3$d;
+    wire  er_q$3$q;
+    reg  er_q$3$clock;
+    reg  er_q$4$d;
+    wire  er_q$4$q;
+    reg  er_q$4$clock;
+    reg  er_q$5$d;
+    wire  er_q$5$q;
+    reg  er_q$5$clock;
+    reg  er_q$6$d;
+    wire  er_q$6$q;
+    reg  er_q$6$clock;
+    reg  er_q$7$d;
+    wire  er_q$7$q;
+    reg  er_q$7$clock;
+    reg  pad_q$0$d;
+    wire  pad_q$0$q;
+    reg  pad_q$0$clock;
+    reg  pad_q$1$d;
+    wire  pad_q$1$q;
+    reg  pad_q$1$clock;
+    reg  pad_q$2$d;
+    wire  pad_q$2$q;
+    reg  pad_q$2$clock;
+    reg  pad_q$3$d;
+    wire  pad_q$3$q;
+    reg  pad_q$3$clock;
+    reg  pad_q$4$d;
+    wire  pad_q$4$q;
+    reg  pad_q$4$clock;
+    reg  pad_q$5$d;
+    wire  pad_q$5$q;
+    reg  pad_q$5$clock;
+    reg  pad_q$6$d;
+    wire  pad_q$6$q;
+    reg  pad_q$6$clock;
+    reg  pad_q$7$d;
+    wire  pad_q$7$q;
+    reg  pad_q$7$clock;
+    reg  [15:0] bx_q$0$d;
+    wire  [15:0] bx_q$0$q;
+    reg  bx_q$0$clock;
+    reg  [15:0] bx_q$1$d;
+    wire  [15:0] bx_q$1$q;
+    reg  bx_q$1$clock;
+    reg  [15:0] bx_q$2$d;
+    wire  [15:0] bx_q$2$q;
+    reg  bx_q$2$clock;
+    reg  [15:0] bx_q$3$d;
+    wire  [15:0] bx_q$3$q;
+    reg  bx_q$3$clock;
+    reg  [15:0] bx_q$4$d;
+    wire  [15:0] bx_q$4$q;
+    reg  bx_q$4$clock;
+    reg  [15:0] bx_q$5$d;
+    wire  [15:0] bx_q$5$q;
+    reg  bx_q$5$clock;
+    reg  [15:0] bx_q$6$d;
+    wire  [15:0] bx_q$6$q;
+    reg  bx_q$6$clock;
+    reg  [15:0] bx_q$7$d;
+    wire  [15:0] bx_q$7$q;
+    reg  bx_q$7$clock;
+    reg  [15:0] by_q$0$d;
+    wire  [15:0] by_q$0$q;
+    reg  by_q$0$clock;
+    reg  [15:0] by_q$1$d;
+    wire  [15:0] by_q$1$q;
+    reg  by_q$1$clock;
+    reg  [15:0] by_q$2$d;
+    wire  [15:0] by_q$2$q;
+    reg  by_q$2$clock;
+    reg  [15:0] by_q$3$d;
+    wire  [15:0] by_q$3$q;
+    reg  by_q$3$clock;
+    reg  [15:0] by_q$4$d;
+    wire  [15:0] by_q$4$q;
+    reg  by_q$4$clock;
+    reg  [15:0] by_q$5$d;
+    wire  [15:0] by_q$5$q;
+    reg  by_q$5$clock;
+    reg  [15:0] by_q$6$d;
+    wire  [15:0] by_q$6$q;
+    reg  by_q$6$clock;
+    reg  [15:0] by_q$7$d;
+    wire  [15:0] by_q$7$q;
+    reg  by_q$7$clock;
+    reg  [2:0] face_q$0$d;
+    wire  [2:0] face_q$0$q;
+    reg  face_q$0$clock;
+    reg  [2:0] face_q$1$d;
+    wire  [2:0] face_q$1$q;
+    reg  face_q$1$clock;
+    reg  [2:0] face_q$2$d;
+    wire  [2:0] face_q$2$q;
+    reg  face_q$2$clock;
+    reg  [2:0] face_q$3$d;
+    wire  [2:0] face_q$3$q;
+    reg  face_q$3$clock;
+    reg  [2:0] face_q$4$d;
+    wire  [2:0] face_q$4$q;
+    reg  face_q$4$clock;
+    reg  [2:0] face_q$5$d;
+    wire  [2:0] face_q$5$q;
+    reg  face_q$5$clock;
+    reg  [2:0] face_q$6$d;
+    wire  [2:0] face_q$6$q;
+    reg  face_q$6$clock;
+    reg  [2:0] face_q$7$d;
+    wire  [2:0] face_q$7$q;
+    reg  face_q$7$clock;
+    
+    // Sub module instances
+    top$lanes$1$ctl$x_q$0 x_q$0(
+        .d(x_q$0$d),
+        .q(x_q$0$q),
+        .clock(x_q$0$clock)
+    );
+    top$lanes$1$ctl$x_q$1 x_q$1(
+        .d(x_q$1$d),
+        .q(x_q$1$q),
+        .clock(x_q$1$clock)
+    );
+    top$lanes$1$ctl$y_q$0 y_q$0(
+        .d(y_q$0$d),
+        .q(y_q$0$q),
+        .clock(y_q$0$clock)
+    );
+    top$lanes$1$ctl$y_q$1 y_q$1(
+        .d(y_q$1$d),
+        .q(y_q$1$q),
+        .clock(y_q$1$clock)
+    );
+    top$lanes$1$ctl$sr_q$0 sr_q$0(
+        .d(sr_q$0$d),
+        .q(sr_q$0$q),
+        .clock(sr_q$0$clock)
+    );
+    top$lanes$1$ctl$sr_q$1 sr_q$1(
+        .d(sr_q$1$d),
+        .q(sr_q$1$q),
+        .clock(sr_q$1$clock)
+    );
+    top$lanes$1$ctl$dxn_q$0 dxn_q$0(
+        .d(dxn_q$0$d),
+        .q(dxn_q$0$q),
+        .clock(dxn_q$0$clock)
+    );
+    top$lanes$1$ctl$dxn_q$1 dxn_q$1(
+        .d(dxn_q$1$d),
+        .q(dxn_q$1$q),
+        .clock(dxn_q$1$clock)
+    );
+    top$lanes$1$ctl$dxm_q$0 dxm_q$0(
+        .d(dxm_q$0$d),
+        .q(dxm_q$0$q),
+        .clock(dxm_q$0$clock)
+    );
+    top$lanes$1$ctl$dxm_q$1 dxm_q$1(
+        .d(dxm_q$1$d),
+        .q(dxm_q$1$q),
+        .clock(dxm_q$1$clock)
+    );
+    top$lanes$1$ctl$dyn_q$0 dyn_q$0(
+        .d(dyn_q$0$d),
+        .q(dyn_q$0$q),
+        .clock(dyn_q$0$clock)
+    );
+    top$lanes$1$ctl$dyn_q$1 dyn_q$1(
+        .d(dyn_q$1$d),
+        .q(dyn_q$1$q),
+        .clock(dyn_q$1$clock)
+    );
+    top$lanes$1$ctl$dym_q$0 dym_q$0(
+        .d(dym_q$0$d),
+        .q(dym_q$0$q),
+        .clock(dym_q$0$clock)
+    );
+    top$lanes$1$ctl$dym_q$1 dym_q$1(
+        .d(dym_q$1$d),
+        .q(dym_q$1$q),
+        .clock(dym_q$1$clock)
+    );
+    top$lanes$1$ctl$v_q$0 v_q$0(
+        .d(v_q$0$d),
+        .q(v_q$0$q),
+        .clock(v_q$0$clock)
+    );
+    top$lanes$1$ctl$v_q$1 v_q$1(
+        .d(v_q$1$d),
+        .q(v_q$1$q),
+        .clock(v_q$1$clock)
+    );
+    top$lanes$1$ctl$v_q$2 v_q$2(
+        .d(v_q$2$d),
+        .q(v_q$2$q),
+        .clock(v_q$2$clock)
+    );
+    top$lanes$1$ctl$v_q$3 v_q$3(
+        .d(v_q$3$d),
+        .q(v_q$3$q),
+        .clock(v_q$3$clock)
+    );
+    top$lanes$1$ctl$v_q$4 v_q$4(
+        .d(v_q$4$d),
+        .q(v_q$4$q),
+        .clock(v_q$4$clock)
+    );
+    top$lanes$1$ctl$v_q$5 v_q$5(
+        .d(v_q$5$d),
+        .q(v_q$5$q),
+        .clock(v_q$5$clock)
+    );
+    top$lanes$1$ctl$v_q$6 v_q$6(
+        .d(v_q$6$d),
+        .q(v_q$6$q),
+        .clock(v_q$6$clock)
+    );
+    top$lanes$1$ctl$v_q$7 v_q$7(
+        .d(v_q$7$d),
+        .q(v_q$7$q),
+        .clock(v_q$7$clock)
+    );
+    top$lanes$1$ctl$er_q$0 er_q$0(
+        .d(er_q$0$d),
+        .q(er_q$0$q),
+        .clock(er_q$0$clock)
+    );
+    top$lanes$1$ctl$er_q$1 er_q$1(
+        .d(er_q$1$d),
+        .q(er_q$1$q),
+        .clock(er_q$1$clock)
+    );
+    top$lanes$1$ctl$er_q$2 er_q$2(
+        .d(er_q$2$d),
+        .q(er_q$2$q),
+        .clock(er_q$2$clock)
+    );
+    top$lanes$1$ctl$er_q$3 er_q$3(
+        .d(er_q$3$d),
+        .q(er_q$3$q),
+        .clock(er_q$3$clock)
+    );
+    top$lanes$1$ctl$er_q$4 er_q$4(
+        .d(er_q$4$d),
+        .q(er_q$4$q),
+        .clock(er_q$4$clock)
+    );
+    top$lanes$1$ctl$er_q$5 er_q$5(
+        .d(er_q$5$d),
+        .q(er_q$5$q),
+        .clock(er_q$5$clock)
+    );
+    top$lanes$1$ctl$er_q$6 er_q$6(
+        .d(er_q$6$d),
+        .q(er_q$6$q),
+        .clock(er_q$6$clock)
+    );
+    top$lanes$1$ctl$er_q$7 er_q$7(
+        .d(er_q$7$d),
+        .q(er_q$7$q),
+        .clock(er_q$7$clock)
+    );
+    top$lanes$1$ctl$pad_q$0 pad_q$0(
+        .d(pad_q$0$d),
+        .q(pad_q$0$q),
+        .clock(pad_q$0$clock)
+    );
+    top$lanes$1$ctl$pad_q$1 pad_q$1(
+        .d(pad_q$1$d),
+        .q(pad_q$1$q),
+        .clock(pad_q$1$clock)
+    );
+    top$lanes$1$ctl$pad_q$2 pad_q$2(
+        .d(pad_q$2$d),
+        .q(pad_q$2$q),
+        .clock(pad_q$2$clock)
+    );
+    top$lanes$1$ctl$pad_q$3 pad_q$3(
+        .d(pad_q$3$d),
+        .q(pad_q$3$q),
+        .clock(pad_q$3$clock)
+    );
+    top$lanes$1$ctl$pad_q$4 pad_q$4(
+        .d(pad_q$4$d),
+        .q(pad_q$4$q),
+        .clock(pad_q$4$clock)
+    );
+    top$lanes$1$ctl$pad_q$5 pad_q$5(
+        .d(pad_q$5$d),
+        .q(pad_q$5$q),
+        .clock(pad_q$5$clock)
+    );
+    top$lanes$1$ctl$pad_q$6 pad_q$6(
+        .d(pad_q$6$d),
+        .q(pad_q$6$q),
+        .clock(pad_q$6$clock)
+    );
+    top$lanes$1$ctl$pad_q$7 pad_q$7(
+        .d(pad_q$7$d),
+        .q(pad_q$7$q),
+        .clock(pad_q$7$clock)
+    );
+    top$lanes$1$ctl$bx_q$0 bx_q$0(
+        .d(bx_q$0$d),
+        .q(bx_q$0$q),
+        .clock(bx_q$0$clock)
+    );
+    top$lanes$1$ctl$bx_q$1 bx_q$1(
+        .d(bx_q$1$d),
+        .q(bx_q$1$q),
+        .clock(bx_q$1$clock)
+    );
+    top$lanes$1$ctl$bx_q$2 bx_q$2(
+        .d(bx_q$2$d),
+        .q(bx_q$2$q),
+        .clock(bx_q$2$clock)
+    );
+    top$lanes$1$ctl$bx_q$3 bx_q$3(
+        .d(bx_q$3$d),
+        .q(bx_q$3$q),
+        .clock(bx_q$3$clock)
+    );
+    top$lanes$1$ctl$bx_q$4 bx_q$4(
+        .d(bx_q$4$d),
+        .q(bx_q$4$q),
+        .clock(bx_q$4$clock)
+    );
+    top$lanes$1$ctl$bx_q$5 bx_q$5(
+        .d(bx_q$5$d),
+        .q(bx_q$5$q),
+        .clock(bx_q$5$clock)
+    );
+    top$lanes$1$ctl$bx_q$6 bx_q$6(
+        .d(bx_q$6$d),
+        .q(bx_q$6$q),
+        .clock(bx_q$6$clock)
+    );
+    top$lanes$1$ctl$bx_q$7 bx_q$7(
+        .d(bx_q$7$d),
+        .q(bx_q$7$q),
+        .clock(bx_q$7$clock)
+    );
+    top$lanes$1$ctl$by_q$0 by_q$0(
+        .d(by_q$0$d),
+        .q(by_q$0$q),
+        .clock(by_q$0$clock)
+    );
+    top$lanes$1$ctl$by_q$1 by_q$1(
+        .d(by_q$1$d),
+        .q(by_q$1$q),
+        .clock(by_q$1$clock)
+    );
+    top$lanes$1$ctl$by_q$2 by_q$2(
+        .d(by_q$2$d),
+        .q(by_q$2$q),
+        .clock(by_q$2$clock)
+    );
+    top$lanes$1$ctl$by_q$3 by_q$3(
+        .d(by_q$3$d),
+        .q(by_q$3$q),
+        .clock(by_q$3$clock)
+    );
+    top$lanes$1$ctl$by_q$4 by_q$4(
+        .d(by_q$4$d),
+        .q(by_q$4$q),
+        .clock(by_q$4$clock)
+    );
+    top$lanes$1$ctl$by_q$5 by_q$5(
+        .d(by_q$5$d),
+        .q(by_q$5$q),
+        .clock(by_q$5$clock)
+    );
+    top$lanes$1$ctl$by_q$6 by_q$6(
+        .d(by_q$6$d),
+        .q(by_q$6$q),
+        .clock(by_q$6$clock)
+    );
+    top$lanes$1$ctl$by_q$7 by_q$7(
+        .d(by_q$7$d),
+        .q(by_q$7$q),
+        .clock(by_q$7$clock)
+    );
+    top$lanes$1$ctl$face_q$0 face_q$0(
+        .d(face_q$0$d),
+        .q(face_q$0$q),
+        .clock(face_q$0$clock)
+    );
+    top$lanes$1$ctl$face_q$1 face_q$1(
+        .d(face_q$1$d),
+        .q(face_q$1$q),
+        .clock(face_q$1$clock)
+    );
+    top$lanes$1$ctl$face_q$2 face_q$2(
+        .d(face_q$2$d),
+        .q(face_q$2$q),
+        .clock(face_q$2$clock)
+    );
+    top$lanes$1$ctl$face_q$3 face_q$3(
+        .d(face_q$3$d),
+        .q(face_q$3$q),
+        .clock(face_q$3$clock)
+    );
+    top$lanes$1$ctl$face_q$4 face_q$4(
+        .d(face_q$4$d),
+        .q(face_q$4$q),
+        .clock(face_q$4$clock)
+    );
+    top$lanes$1$ctl$face_q$5 face_q$5(
+        .d(face_q$5$d),
+        .q(face_q$5$q),
+        .clock(face_q$5$clock)
+    );
+    top$lanes$1$ctl$face_q$6 face_q$6(
+        .d(face_q$6$d),
+        .q(face_q$6$q),
+        .clock(face_q$6$clock)
+    );
+    top$lanes$1$ctl$face_q$7 face_q$7(
+        .d(face_q$7$d),
+        .q(face_q$7$q),
+        .clock(face_q$7$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        x_q$0$clock = clock;
+        y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dxm_q$0$clock = clock;
+        dyn_q$0$clock = clock;
+        dym_q$0$clock = clock;
+        x_q$1$clock = clock;
+        y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dxm_q$1$clock = clock;
+        dyn_q$1$clock = clock;
+        dym_q$1$clock = clock;
+        v_q$0$clock = clock;
+        er_q$0$clock = clock;
+        pad_q$0$clock = clock;
+        bx_q$0$clock = clock;
+        by_q$0$clock = clock;
+        face_q$0$clock = clock;
+        v_q$1$clock = clock;
+        er_q$1$clock = clock;
+        pad_q$1$clock = clock;
+        bx_q$1$clock = clock;
+        by_q$1$clock = clock;
+        face_q$1$clock = clock;
+        v_q$2$clock = clock;
+        er_q$2$clock = clock;
+        pad_q$2$clock = clock;
+        bx_q$2$clock = clock;
+        by_q$2$clock = clock;
+        face_q$2$clock = clock;
+        v_q$3$clock = clock;
+        er_q$3$clock = clock;
+        pad_q$3$clock = clock;
+        bx_q$3$clock = clock;
+        by_q$3$clock = clock;
+        face_q$3$clock = clock;
+        v_q$4$clock = clock;
+        er_q$4$clock = clock;
+        pad_q$4$clock = clock;
+        bx_q$4$clock = clock;
+        by_q$4$clock = clock;
+        face_q$4$clock = clock;
+        v_q$5$clock = clock;
+        er_q$5$clock = clock;
+        pad_q$5$clock = clock;
+        bx_q$5$clock = clock;
+        by_q$5$clock = clock;
+        face_q$5$clock = clock;
+        v_q$6$clock = clock;
+        er_q$6$clock = clock;
+        pad_q$6$clock = clock;
+        bx_q$6$clock = clock;
+        by_q$6$clock = clock;
+        face_q$6$clock = clock;
+        v_q$7$clock = clock;
+        er_q$7$clock = clock;
+        pad_q$7$clock = clock;
+        bx_q$7$clock = clock;
+        by_q$7$clock = clock;
+        face_q$7$clock = clock;
+        x_q$0$d = x;
+        y_q$0$d = y;
+        sr_q$0$d = sr;
+        dxn_q$0$d = dx_neg;
+        dxm_q$0$d = dx_mag;
+        dyn_q$0$d = dy_neg;
+        dym_q$0$d = dy_mag;
+        x_q$1$d = x_q$0$q;
+        y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dxm_q$1$d = dxm_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
+        dym_q$1$d = dym_q$0$q;
+        x_t = x_q$1$q;
+        y_t = y_q$1$q;
+        sr_t = sr_q$1$q;
+        dx_neg_t = dxn_q$1$q;
+        dx_mag_t = dxm_q$1$q;
+        dy_neg_t = dyn_q$1$q;
+        dy_mag_t = dym_q$1$q;
+        v_q$0$d = valid;
+        er_q$0$d = er;
+        pad_q$0$d = pad;
+        bx_q$0$d = base_x;
+        by_q$0$d = base_y;
+        face_q$0$d = face;
+        v_q$1$d = v_q$0$q;
+        er_q$1$d = er_q$0$q;
+        pad_q$1$d = pad_q$0$q;
+        bx_q$1$d = bx_q$0$q;
+        by_q$1$d = by_q$0$q;
+        face_q$1$d = face_q$0$q;
+        v_q$2$d = v_q$1$q;
+        er_q$2$d = er_q$1$q;
+        pad_q$2$d = pad_q$1$q;
+        bx_q$2$d = bx_q$1$q;
+        by_q$2$d = by_q$1$q;
+        face_q$2$d = face_q$1$q;
+        v_q$3$d = v_q$2$q;
+        er_q$3$d = er_q$2$q;
+        pad_q$3$d = pad_q$2$q;
+        bx_q$3$d = bx_q$2$q;
+        by_q$3$d = by_q$2$q;
+        face_q$3$d = face_q$2$q;
+        v_q$4$d = v_q$3$q;
+        er_q$4$d = er_q$3$q;
+        pad_q$4$d = pad_q$3$q;
+        bx_q$4$d = bx_q$3$q;
+        by_q$4$d = by_q$3$q;
+        face_q$4$d = face_q$3$q;
+        v_q$5$d = v_q$4$q;
+        er_q$5$d = er_q$4$q;
+        pad_q$5$d = pad_q$4$q;
+        bx_q$5$d = bx_q$4$q;
+        by_q$5$d = by_q$4$q;
+        face_q$5$d = face_q$4$q;
+        v_q$6$d = v_q$5$q;
+        er_q$6$d = er_q$5$q;
+        pad_q$6$d = pad_q$5$q;
+        bx_q$6$d = bx_q$5$q;
+        by_q$6$d = by_q$5$q;
+        face_q$6$d = face_q$5$q;
+        v_q$7$d = v_q$6$q;
+        er_q$7$d = er_q$6$q;
+        pad_q$7$d = pad_q$6$q;
+        bx_q$7$d = bx_q$6$q;
+        by_q$7$d = by_q$6$q;
+        face_q$7$d = face_q$6$q;
+        res_beat = v_q$7$q;
+        res_valid = v_q$7$q & ~pad_q$7$q;
+        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
+        px_x = bx_q$7$q;
+        px_y = by_q$7$q;
+        px_face = face_q$7$q;
+    end
+    
+endmodule // top$lanes$1$ctl
+module top$lanes$1$ctl$bx_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$0
+module top$lanes$1$ctl$bx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$1
+module top$lanes$1$ctl$bx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$2
+module top$lanes$1$ctl$bx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$3
+module top$lanes$1$ctl$bx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$4
+module top$lanes$1$ctl$bx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$5
+module top$lanes$1$ctl$bx_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$6
+module top$lanes$1$ctl$bx_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$7
+module top$lanes$1$ctl$by_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$0
+module top$lanes$1$ctl$by_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$1
+module top$lanes$1$ctl$by_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$2
+module top$lanes$1$ctl$by_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$3
+module top$lanes$1$ctl$by_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$4
+module top$lanes$1$ctl$by_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$5
+module top$lanes$1$ctl$by_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$6
+module top$lanes$1$ctl$by_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$7
+module top$lanes$1$ctl$dxm_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$0
+module top$lanes$1$ctl$dxm_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$1
+module top$lanes$1$ctl$dxn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$0
+module top$lanes$1$ctl$dxn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$1
+module top$lanes$1$ctl$dym_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$0
+module top$lanes$1$ctl$dym_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$1
+module top$lanes$1$ctl$dyn_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$0
+module top$lanes$1$ctl$dyn_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$1
+module top$lanes$1$ctl$er_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$0
+module top$lanes$1$ctl$er_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$1
+module top$lanes$1$ctl$er_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$2
+module top$lanes$1$ctl$er_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$3
+module top$lanes$1$ctl$er_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$4
+module top$lanes$1$ctl$er_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$5
+module top$lanes$1$ctl$er_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$6
+module top$lanes$1$ctl$er_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$7
+module top$lanes$1$ctl$face_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$0
+module top$lanes$1$ctl$face_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$1
+module top$lanes$1$ctl$face_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$2
+module top$lanes$1$ctl$face_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$3
+module top$lanes$1$ctl$face_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$4
+module top$lanes$1$ctl$face_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$5
+module top$lanes$1$ctl$face_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$6
+module top$lanes$1$ctl$face_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$7
+module top$lanes$1$ctl$pad_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$0
+module top$lanes$1$ctl$pad_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$1
+module top$lanes$1$ctl$pad_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$2
+module top$lanes$1$ctl$pad_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$3
+module top$lanes$1$ctl$pad_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$4
+module top$lanes$1$ctl$pad_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$5
+module top$lanes$1$ctl$pad_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$6
+module top$lanes$1$ctl$pad_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$7
+module top$lanes$1$ctl$sr_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$0
+module top$lanes$1$ctl$sr_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$1
+module top$lanes$1$ctl$v_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$0
+module top$lanes$1$ctl$v_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$1
+module top$lanes$1$ctl$v_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$2
+module top$lanes$1$ctl$v_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$3
+module top$lanes$1$ctl$v_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$4
+module top$lanes$1$ctl$v_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$5
+module top$lanes$1$ctl$v_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$6
+module top$lanes$1$ctl$v_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$7
+module top$lanes$1$ctl$x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$0
+module top$lanes$1$ctl$x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$1
+module top$lanes$1$ctl$y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$0
+module top$lanes$1$ctl$y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$1
+module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] beats;
+    input wire  beat_valid;
+    input wire  [15:0] value;
+    input wire  [15:0] x;
+    input wire  [15:0] y;
+    input wire  pad;
+    input wire  invalid;
+    input wire  halo;
+    input wire  sr;
+    input wire  er;
+    input wire  [15:0] base_x;
+    input wire  [15:0] base_y;
+    input wire  [2:0] face;
+    input wire  at_edge;
+    input wire  dx_neg;
+    input wire  [15:0] dx_mag;
+    input wire  dy_neg;
+    input wire  [15:0] dy_mag;
+    input wire  [15:0] g_from_left_xm;
+    input wire  [15:0] g_from_left_ym;
+    input wire  [15:0] g_from_left_zm;
+    input wire  [15:0] g_from_right_xp;
+    input wire  [15:0] g_from_right_yp;
+    input wire  [15:0] g_from_right_zp;
+    output reg  [15:0] g_to_right_xm;
+    output reg  [15:0] g_to_right_ym;
+    output reg  [15:0] g_to_right_zm;
+    output reg  [15:0] g_to_left_xp;
+    output reg  [15:0] g_to_left_yp;
+    output reg  [15:0] g_to_left_zp;
+    output reg  o_valid;
+    output reg  [15:0] o_value;
+    output reg  [15:0] o_x;
+    output reg  [15:0] o_y;
+    output reg  o_pad;
+    output reg  o_invalid;
+    output reg  o_sr;
+    output reg  o_er;
+    output reg  o_edge;
+    output reg  [2:0] o_face;
+    output reg  [15:0] o_base_x;
+    output reg  [15:0] o_base_y;
+    output reg  o_dx_neg;
+    output reg  [15:0] o_dx_mag;
+    output reg  o_dy_neg;
+    output reg  [15:0] o_dy_mag;
+    output reg  gx_neg;
+    output reg  [15:0] gx_mag;
+    output reg  gy_neg;
+    output reg  [15:0] gy_mag;
+    output reg  gz_neg;
+    output reg  [15:0] gz_mag;
+    
+    // Constant declarations
+    localparam  use_gradient = 1'b0;
+    
+    // Stub signals
+    reg  abc$clock;
+    reg  [63:0] abc$beats;
+    reg  [15:0] abc$value;
+    reg  [15:0] abc$x;
+    reg  [15:0] abc$from_left_xm;
+    reg  [15:0] abc$from_left_ym;
+    reg  [15:0] abc$from_left_zm;
+    reg  [15:0] abc$from_right_xp;
+    reg  [15:0] abc$from_right_yp;
+    reg  [15:0] abc$from_right_zp;
+    wire  [15:0] abc$to_right_xm = 'h0;
+    wire  [15:0] abc$to_right_ym = 'h0;
+    wire  [15:0] abc$to_right_zm = 'h0;
+    wire  [15:0] abc$to_left_xp = 'h0;
+    wire  [15:0] abc$to_left_yp = 'h0;
+    wire  [15:0] abc$to_left_zp = 'h0;
+    wire  [15:0] abc$o_value = 'h0;
+    wire  abc$gx_neg = 'h0;
+    wire  [15:0] abc$gx_mag = 'h0;
+    wire  abc$gy_neg = 'h0;
+    wire  [15:0] abc$gy_mag = 'h0;
+    wire  abc$gz_neg = 'h0;
+    wire  [15:0] abc$gz_mag = 'h0;
+    
+    // Sub module instances
+    
+    // Update code
+    reg  [15:0] o_value_pass;
+    always @(*) begin
+        abc$clock = clock;
+        abc$beats = beats;
+        abc$value = value;
+        abc$x = x;
+        abc$from_left_xm = g_from_left_xm;
+        abc$from_left_ym = g_from_left_ym;
+        abc$from_left_zm = g_from_left_zm;
+        abc$from_right_xp = g_from_right_xp;
+        abc$from_right_yp = g_from_right_yp;
+        abc$from_right_zp = g_from_right_zp;
+        g_to_right_xm = abc$to_right_xm;
+        g_to_right_ym = abc$to_right_ym;
+        g_to_right_zm = abc$to_right_zm;
+        g_to_left_xp = abc$to_left_xp;
+        g_to_left_yp = abc$to_left_yp;
+        g_to_left_zp = abc$to_left_zp;
+        gx_neg = abc$gx_neg;
+        gx_mag = abc$gx_mag;
+        gy_neg = abc$gy_neg;
+        gy_mag = abc$gy_mag;
+        gz_neg = abc$gz_neg;
+        gz_mag = abc$gz_mag;
+        if (use_gradient) begin
+            o_value_pass = abc$o_value;
+        end
+        else begin
+            o_value_pass = value;
+        end
+        o_valid = beat_valid & ~halo;
+        o_x = x;
+        o_y = y;
+        o_pad = pad;
+        o_invalid = invalid;
+        o_sr = sr;
+        o_er = er;
+        o_edge = at_edge;
+        o_face = face;
+        o_base_x = base_x;
+        o_base_y = base_y;
+        o_dx_neg = dx_neg;
+        o_dx_mag = dx_mag;
+        o_dy_neg = dy_neg;
+        o_dy_mag = dy_mag;
+        o_value = o_value_pass;
+    end
+    
+endmodule // top$lanes$1$feed
+module top$late_wait(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late_wait
+module top$view(clock,host_write,host_address,host_data,q$0,q$1,q$2,q$3,q$4,q$5,q$6,q$7,q$8,q$9,q$10);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
+    output reg  [63:0] q$0;
+    output reg  [63:0] q$1;
+    output reg  [63:0] q$2;
+    output reg  [63:0] q$3;
+    output reg  [63:0] q$4;
+    output reg  [63:0] q$5;
+    output reg  [63:0] q$6;
+    output reg  [63:0] q$7;
+    output reg  [63:0] q$8;
+    output reg  [63:0] q$9;
+    output reg  [63:0] q$10;
+    
+    // Constant declarations
+    localparam  address$0 = 24'h20;
+    localparam  address$1 = 24'h21;
+    localparam  address$2 = 24'h22;
+    localparam  address$3 = 24'h23;
+    localparam  address$4 = 24'h24;
+    localparam  address$5 = 24'h25;
+    localparam  address$6 = 24'h26;
+    localparam  address$7 = 24'h27;
+    localparam  address$8 = 24'h28;
+    localparam  address$9 = 24'h29;
+    localparam  address$10 = 24'h2a;
+    
+    // Stub signals
+    reg  [63:0] r$0$d;
+    wire  [63:0] r$0$q;
+    reg  r$0$clock;
+    reg  [63:0] r$1$d;
+    wire  [63:0] r$1$q;
+    reg  r$1$clock;
+    reg  [63:0] r$2$d;
+    wire  [63:0] r$2$q;
+    reg  r$2$clock;
+    reg  [63:0] r$3$d;
+    wire  [63:0] r$3$q;
+    reg  r$3$clock;
+    reg  [63:0] r$4$d;
+    wire  [63:0] r$4$q;
+    reg  r$4$clock;
+    reg  [63:0] r$5$d;
+    wire  [63:0] r$5$q;
+    reg  r$5$clock;
+    reg  [63:0] r$6$d;
+    wire  [63:0] r$6$q;
+    reg  r$6$clock;
+    reg  [63:0] r$7$d;
+    wire  [63:0] r$7$q;
+    reg  r$7$clock;
+    reg  [63:0] r$8$d;
+    wire  [63:0] r$8$q;
+    reg  r$8$clock;
+    reg  [63:0] r$9$d;
+    wire  [63:0] r$9$q;
+    reg  r$9$clock;
+    reg  [63:0] r$10$d;
+    wire  [63:0] r$10$q;
+    reg  r$10$clock;
+    
+    // Sub module instances
+    top$view$r$0 r$0(
+        .d(r$0$d),
+        .q(r$0$q),
+        .clock(r$0$clock)
+    );
+    top$view$r$1 r$1(
+        .d(r$1$d),
+        .q(r$1$q),
+        .clock(r$1$clock)
+    );
+    top$view$r$2 r$2(
+        .d(r$2$d),
+        .q(r$2$q),
+        .clock(r$2$clock)
+    );
+    top$view$r$3 r$3(
+        .d(r$3$d),
+        .q(r$3$q),
+        .clock(r$3$clock)
+    );
+    top$view$r$4 r$4(
+        .d(r$4$d),
+        .q(r$4$q),
+        .clock(r$4$clock)
+    );
+    top$view$r$5 r$5(
+        .d(r$5$d),
+        .q(r$5$q),
+        .clock(r$5$clock)
+    );
+    top$view$r$6 r$6(
+        .d(r$6$d),
+        .q(r$6$q),
+        .clock(r$6$clock)
+    );
+    top$view$r$7 r$7(
+        .d(r$7$d),
+        .q(r$7$q),
+        .clock(r$7$clock)
+    );
+    top$view$r$8 r$8(
+        .d(r$8$d),
+        .q(r$8$q),
+        .clock(r$8$clock)
+    );
+    top$view$r$9 r$9(
+        .d(r$9$d),
+        .q(r$9$q),
+        .clock(r$9$clock)
+    );
+    top$view$r$10 r$10(
+        .d(r$10$d),
+        .q(r$10$q),
+        .clock(r$10$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        r$0$clock = clock;
+        r$0$d = r$0$q;
+        if (host_write & (host_address == address$0)) begin
+            r$0$d = host_data;
+        end
+        q$0 = r$0$q;
+        r$1$clock = clock;
+        r$1$d = r$1$q;
+        if (host_write & (host_address == address$1)) begin
+            r$1$d = host_data;
+        end
+        q$1 = r$1$q;
+        r$2$clock = clock;
+        r$2$d = r$2$q;
+        if (host_write & (host_address == address$2)) begin
+            r$2$d = host_data;
+        end
+        q$2 = r$2$q;
+        r$3$clock = clock;
+        r$3$d = r$3$q;
+        if (host_write & (host_address == address$3)) begin
+            r$3$d = host_data;
+        end
+        q$3 = r$3$q;
+        r$4$clock = clock;
+        r$4$d = r$4$q;
+        if (host_write & (host_address == address$4)) begin
+            r$4$d = host_data;
+        end
+        q$4 = r$4$q;
+        r$5$clock = clock;
+        r$5$d = r$5$q;
+        if (host_write & (host_address == address$5)) begin
+            r$5$d = host_data;
+        end
+        q$5 = r$5$q;
+        r$6$clock = clock;
+        r$6$d = r$6$q;
+        if (host_write & (host_address == address$6)) begin
+            r$6$d = host_data;
+        end
+        q$6 = r$6$q;
+        r$7$clock = clock;
+        r$7$d = r$7$q;
+        if (host_write & (host_address == address$7)) begin
+            r$7$d = host_data;
+        end
+        q$7 = r$7$q;
+        r$8$clock = clock;
+        r$8$d = r$8$q;
+        if (host_write & (host_address == address$8)) begin
+            r$8$d = host_data;
+        end
+        q$8 = r$8$q;
+        r$9$clock = clock;
+        r$9$d = r$9$q;
+        if (host_write & (host_address == address$9)) begin
+            r$9$d = host_data;
+        end
+        q$9 = r$9$q;
+        r$10$clock = clock;
+        r$10$d = r$10$q;
+        if (host_write & (host_address == address$10)) begin
+            r$10$d = host_data;
+        end
+        q$10 = r$10$q;
+    end
+    
+endmodule // top$view
+module top$view$r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$0
+module top$view$r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$1
+module top$view$r$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$10
+module top$view$r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$2
+module top$view$r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$3
+module top$view$r$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$4
+module top$view$r$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$5
+module top$view$r$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$6
+module top$view$r$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$7
+module top$view$r$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$8
+module top$view$r$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$view$r$9

@@ -1,0 +1,11476 @@
+module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00$0;
+    input wire  [31:0] c00$1;
+    input wire  [31:0] c00$2;
+    input wire  [31:0] c00$3;
+    input wire  [31:0] c10$0;
+    input wire  [31:0] c10$1;
+    input wire  [31:0] c10$2;
+    input wire  [31:0] c10$3;
+    input wire  [31:0] c01$0;
+    input wire  [31:0] c01$1;
+    input wire  [31:0] c01$2;
+    input wire  [31:0] c01$3;
+    input wire  [31:0] c11$0;
+    input wire  [31:0] c11$1;
+    input wire  [31:0] c11$2;
+    input wire  [31:0] c11$3;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] out$0;
+    output reg  [31:0] out$1;
+    output reg  [31:0] out$2;
+    output reg  [31:0] out$3;
+    
+    // Stub signals
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
+    reg  ch$0$clock;
+    reg  [31:0] ch$0$c00;
+    reg  [31:0] ch$0$c10;
+    reg  [31:0] ch$0$c01;
+    reg  [31:0] ch$0$c11;
+    reg  [15:0] ch$0$wx;
+    reg  [15:0] ch$0$wy;
+    wire  [31:0] ch$0$y;
+    reg  ch$1$clock;
+    reg  [31:0] ch$1$c00;
+    reg  [31:0] ch$1$c10;
+    reg  [31:0] ch$1$c01;
+    reg  [31:0] ch$1$c11;
+    reg  [15:0] ch$1$wx;
+    reg  [15:0] ch$1$wy;
+    wire  [31:0] ch$1$y;
+    reg  ch$2$clock;
+    reg  [31:0] ch$2$c00;
+    reg  [31:0] ch$2$c10;
+    reg  [31:0] ch$2$c01;
+    reg  [31:0] ch$2$c11;
+    reg  [15:0] ch$2$wx;
+    reg  [15:0] ch$2$wy;
+    wire  [31:0] ch$2$y;
+    reg  ch$3$clock;
+    reg  [31:0] ch$3$c00;
+    reg  [31:0] ch$3$c10;
+    reg  [31:0] ch$3$c01;
+    reg  [31:0] ch$3$c11;
+    reg  [15:0] ch$3$wx;
+    reg  [15:0] ch$3$wy;
+    wire  [31:0] ch$3$y;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$0$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$0$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$0$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$0 ch$0(
+        .clock(ch$0$clock),
+        .c00(ch$0$c00),
+        .c10(ch$0$c10),
+        .c01(ch$0$c01),
+        .c11(ch$0$c11),
+        .wx(ch$0$wx),
+        .wy(ch$0$wy),
+        .y(ch$0$y)
+    );
+    top$lanes$0$bilinear$ch$1 ch$1(
+        .clock(ch$1$clock),
+        .c00(ch$1$c00),
+        .c10(ch$1$c10),
+        .c01(ch$1$c01),
+        .c11(ch$1$c11),
+        .wx(ch$1$wx),
+        .wy(ch$1$wy),
+        .y(ch$1$y)
+    );
+    top$lanes$0$bilinear$ch$2 ch$2(
+        .clock(ch$2$clock),
+        .c00(ch$2$c00),
+        .c10(ch$2$c10),
+        .c01(ch$2$c01),
+        .c11(ch$2$c11),
+        .wx(ch$2$wx),
+        .wy(ch$2$wy),
+        .y(ch$2$y)
+    );
+    top$lanes$0$bilinear$ch$3 ch$3(
+        .clock(ch$3$clock),
+        .c00(ch$3$c00),
+        .c10(ch$3$c10),
+        .c01(ch$3$c01),
+        .c11(ch$3$c11),
+        .wx(ch$3$wx),
+        .wy(ch$3$wy),
+        .y(ch$3$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
+        ch$0$clock = clock;
+        ch$0$c00 = c00$0;
+        ch$0$c10 = c10$0;
+        ch$0$c01 = c01$0;
+        ch$0$c11 = c11$0;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
+        out$0 = ch$0$y;
+        ch$1$clock = clock;
+        ch$1$c00 = c00$1;
+        ch$1$c10 = c10$1;
+        ch$1$c01 = c01$1;
+        ch$1$c11 = c11$1;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
+        out$1 = ch$1$y;
+        ch$2$clock = clock;
+        ch$2$c00 = c00$2;
+        ch$2$c10 = c10$2;
+        ch$2$c01 = c01$2;
+        ch$2$c11 = c11$2;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
+        out$2 = ch$2$y;
+        ch$3$clock = clock;
+        ch$3$c00 = c00$3;
+        ch$3$c10 = c10$3;
+        ch$3$c01 = c01$3;
+        ch$3$c11 = c11$3;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
+        out$3 = ch$3$y;
+    end
+    
+endmodule // top$lanes$0$bilinear
+module top$lanes$0$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$0$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$0$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$0$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$0$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$0$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$0
+module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$0$bottom
+module top$lanes$0$bilinear$ch$0$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q
+module top$lanes$0$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$prod_q
+module top$lanes$0$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q
+module top$lanes$0$bilinear$ch$0$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$y_q
+module top$lanes$0$bilinear$ch$0$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$0
+module top$lanes$0$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$1
+module top$lanes$0$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$2
+module top$lanes$0$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$cells_q$3
+module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$0$top
+module top$lanes$0$bilinear$ch$0$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$a_q
+module top$lanes$0$bilinear$ch$0$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$prod_q
+module top$lanes$0$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$up_q
+module top$lanes$0$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$y_q
+module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$0$vertical
+module top$lanes$0$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q
+module top$lanes$0$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$prod_q
+module top$lanes$0$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q
+module top$lanes$0$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$y_q
+module top$lanes$0$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$0$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$0$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$0$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$0$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$0$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$1
+module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$1$bottom
+module top$lanes$0$bilinear$ch$1$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q
+module top$lanes$0$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$prod_q
+module top$lanes$0$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q
+module top$lanes$0$bilinear$ch$1$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$y_q
+module top$lanes$0$bilinear$ch$1$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$0
+module top$lanes$0$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$1
+module top$lanes$0$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$2
+module top$lanes$0$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$cells_q$3
+module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$1$top
+module top$lanes$0$bilinear$ch$1$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$a_q
+module top$lanes$0$bilinear$ch$1$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$prod_q
+module top$lanes$0$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$up_q
+module top$lanes$0$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$y_q
+module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$1$vertical
+module top$lanes$0$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q
+module top$lanes$0$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$prod_q
+module top$lanes$0$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q
+module top$lanes$0$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$y_q
+module top$lanes$0$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$0$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$0$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$0$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$0$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$0$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$2
+module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$2$bottom
+module top$lanes$0$bilinear$ch$2$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q
+module top$lanes$0$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$prod_q
+module top$lanes$0$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q
+module top$lanes$0$bilinear$ch$2$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$y_q
+module top$lanes$0$bilinear$ch$2$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$0
+module top$lanes$0$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$1
+module top$lanes$0$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$2
+module top$lanes$0$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$cells_q$3
+module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$2$top
+module top$lanes$0$bilinear$ch$2$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$a_q
+module top$lanes$0$bilinear$ch$2$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$prod_q
+module top$lanes$0$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$up_q
+module top$lanes$0$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$y_q
+module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$2$vertical
+module top$lanes$0$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q
+module top$lanes$0$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$prod_q
+module top$lanes$0$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q
+module top$lanes$0$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$y_q
+module top$lanes$0$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$0$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$0$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$0$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$0$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$0$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$3
+module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$3$bottom
+module top$lanes$0$bilinear$ch$3$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q
+module top$lanes$0$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$prod_q
+module top$lanes$0$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q
+module top$lanes$0$bilinear$ch$3$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$y_q
+module top$lanes$0$bilinear$ch$3$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$0
+module top$lanes$0$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$1
+module top$lanes$0$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$2
+module top$lanes$0$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$cells_q$3
+module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$3$top
+module top$lanes$0$bilinear$ch$3$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$a_q
+module top$lanes$0$bilinear$ch$3$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$prod_q
+module top$lanes$0$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$up_q
+module top$lanes$0$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$y_q
+module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$0$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$0$bilinear$ch$3$vertical
+module top$lanes$0$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q
+module top$lanes$0$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$prod_q
+module top$lanes$0$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q
+module top$lanes$0$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$y_q
+module top$lanes$0$bilinear$wx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wx_q
+module top$lanes$0$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$0
+module top$lanes$0$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$1
+module top$lanes$0$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$2
+module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00$0;
+    input wire  [31:0] c00$1;
+    input wire  [31:0] c00$2;
+    input wire  [31:0] c00$3;
+    input wire  [31:0] c10$0;
+    input wire  [31:0] c10$1;
+    input wire  [31:0] c10$2;
+    input wire  [31:0] c10$3;
+    input wire  [31:0] c01$0;
+    input wire  [31:0] c01$1;
+    input wire  [31:0] c01$2;
+    input wire  [31:0] c01$3;
+    input wire  [31:0] c11$0;
+    input wire  [31:0] c11$1;
+    input wire  [31:0] c11$2;
+    input wire  [31:0] c11$3;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] out$0;
+    output reg  [31:0] out$1;
+    output reg  [31:0] out$2;
+    output reg  [31:0] out$3;
+    
+    // Stub signals
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
+    reg  ch$0$clock;
+    reg  [31:0] ch$0$c00;
+    reg  [31:0] ch$0$c10;
+    reg  [31:0] ch$0$c01;
+    reg  [31:0] ch$0$c11;
+    reg  [15:0] ch$0$wx;
+    reg  [15:0] ch$0$wy;
+    wire  [31:0] ch$0$y;
+    reg  ch$1$clock;
+    reg  [31:0] ch$1$c00;
+    reg  [31:0] ch$1$c10;
+    reg  [31:0] ch$1$c01;
+    reg  [31:0] ch$1$c11;
+    reg  [15:0] ch$1$wx;
+    reg  [15:0] ch$1$wy;
+    wire  [31:0] ch$1$y;
+    reg  ch$2$clock;
+    reg  [31:0] ch$2$c00;
+    reg  [31:0] ch$2$c10;
+    reg  [31:0] ch$2$c01;
+    reg  [31:0] ch$2$c11;
+    reg  [15:0] ch$2$wx;
+    reg  [15:0] ch$2$wy;
+    wire  [31:0] ch$2$y;
+    reg  ch$3$clock;
+    reg  [31:0] ch$3$c00;
+    reg  [31:0] ch$3$c10;
+    reg  [31:0] ch$3$c01;
+    reg  [31:0] ch$3$c11;
+    reg  [15:0] ch$3$wx;
+    reg  [15:0] ch$3$wy;
+    wire  [31:0] ch$3$y;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$1$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$1$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$1$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$0 ch$0(
+        .clock(ch$0$clock),
+        .c00(ch$0$c00),
+        .c10(ch$0$c10),
+        .c01(ch$0$c01),
+        .c11(ch$0$c11),
+        .wx(ch$0$wx),
+        .wy(ch$0$wy),
+        .y(ch$0$y)
+    );
+    top$lanes$1$bilinear$ch$1 ch$1(
+        .clock(ch$1$clock),
+        .c00(ch$1$c00),
+        .c10(ch$1$c10),
+        .c01(ch$1$c01),
+        .c11(ch$1$c11),
+        .wx(ch$1$wx),
+        .wy(ch$1$wy),
+        .y(ch$1$y)
+    );
+    top$lanes$1$bilinear$ch$2 ch$2(
+        .clock(ch$2$clock),
+        .c00(ch$2$c00),
+        .c10(ch$2$c10),
+        .c01(ch$2$c01),
+        .c11(ch$2$c11),
+        .wx(ch$2$wx),
+        .wy(ch$2$wy),
+        .y(ch$2$y)
+    );
+    top$lanes$1$bilinear$ch$3 ch$3(
+        .clock(ch$3$clock),
+        .c00(ch$3$c00),
+        .c10(ch$3$c10),
+        .c01(ch$3$c01),
+        .c11(ch$3$c11),
+        .wx(ch$3$wx),
+        .wy(ch$3$wy),
+        .y(ch$3$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
+        ch$0$clock = clock;
+        ch$0$c00 = c00$0;
+        ch$0$c10 = c10$0;
+        ch$0$c01 = c01$0;
+        ch$0$c11 = c11$0;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
+        out$0 = ch$0$y;
+        ch$1$clock = clock;
+        ch$1$c00 = c00$1;
+        ch$1$c10 = c10$1;
+        ch$1$c01 = c01$1;
+        ch$1$c11 = c11$1;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
+        out$1 = ch$1$y;
+        ch$2$clock = clock;
+        ch$2$c00 = c00$2;
+        ch$2$c10 = c10$2;
+        ch$2$c01 = c01$2;
+        ch$2$c11 = c11$2;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
+        out$2 = ch$2$y;
+        ch$3$clock = clock;
+        ch$3$c00 = c00$3;
+        ch$3$c10 = c10$3;
+        ch$3$c01 = c01$3;
+        ch$3$c11 = c11$3;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
+        out$3 = ch$3$y;
+    end
+    
+endmodule // top$lanes$1$bilinear
+module top$lanes$1$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$1$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$1$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$1$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$1$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$1$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$0
+module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$0$bottom
+module top$lanes$1$bilinear$ch$0$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q
+module top$lanes$1$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$prod_q
+module top$lanes$1$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q
+module top$lanes$1$bilinear$ch$0$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$y_q
+module top$lanes$1$bilinear$ch$0$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$0
+module top$lanes$1$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$1
+module top$lanes$1$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$2
+module top$lanes$1$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$cells_q$3
+module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$0$top
+module top$lanes$1$bilinear$ch$0$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$a_q
+module top$lanes$1$bilinear$ch$0$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$prod_q
+module top$lanes$1$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$up_q
+module top$lanes$1$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$y_q
+module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$0$vertical
+module top$lanes$1$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q
+module top$lanes$1$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$prod_q
+module top$lanes$1$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q
+module top$lanes$1$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$y_q
+module top$lanes$1$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$1$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$1$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$1$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$1$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$1$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$1
+module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$1$bottom
+module top$lanes$1$bilinear$ch$1$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q
+module top$lanes$1$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$prod_q
+module top$lanes$1$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q
+module top$lanes$1$bilinear$ch$1$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$y_q
+module top$lanes$1$bilinear$ch$1$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$0
+module top$lanes$1$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$1
+module top$lanes$1$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$2
+module top$lanes$1$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$cells_q$3
+module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$1$top
+module top$lanes$1$bilinear$ch$1$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$a_q
+module top$lanes$1$bilinear$ch$1$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$prod_q
+module top$lanes$1$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$up_q
+module top$lanes$1$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$y_q
+module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$1$vertical
+module top$lanes$1$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q
+module top$lanes$1$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$prod_q
+module top$lanes$1$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q
+module top$lanes$1$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$y_q
+module top$lanes$1$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$1$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$1$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$1$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$1$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$1$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$2
+module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$2$bottom
+module top$lanes$1$bilinear$ch$2$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q
+module top$lanes$1$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$prod_q
+module top$lanes$1$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q
+module top$lanes$1$bilinear$ch$2$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$y_q
+module top$lanes$1$bilinear$ch$2$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$0
+module top$lanes$1$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$1
+module top$lanes$1$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$2
+module top$lanes$1$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$cells_q$3
+module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$2$top
+module top$lanes$1$bilinear$ch$2$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$a_q
+module top$lanes$1$bilinear$ch$2$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$prod_q
+module top$lanes$1$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$up_q
+module top$lanes$1$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$y_q
+module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$2$vertical
+module top$lanes$1$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q
+module top$lanes$1$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$prod_q
+module top$lanes$1$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q
+module top$lanes$1$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$y_q
+module top$lanes$1$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$1$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$1$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$1$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$1$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$1$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$3
+module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$3$bottom
+module top$lanes$1$bilinear$ch$3$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q
+module top$lanes$1$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$prod_q
+module top$lanes$1$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q
+module top$lanes$1$bilinear$ch$3$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$y_q
+module top$lanes$1$bilinear$ch$3$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$0
+module top$lanes$1$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$1
+module top$lanes$1$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$2
+module top$lanes$1$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$cells_q$3
+module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$3$top
+module top$lanes$1$bilinear$ch$3$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$a_q
+module top$lanes$1$bilinear$ch$3$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$prod_q
+module top$lanes$1$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$up_q
+module top$lanes$1$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$y_q
+module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$1$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$1$bilinear$ch$3$vertical
+module top$lanes$1$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q
+module top$lanes$1$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$prod_q
+module top$lanes$1$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q
+module top$lanes$1$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$y_q
+module top$lanes$1$bilinear$wx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wx_q
+module top$lanes$1$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$0
+module top$lanes$1$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$1
+module top$lanes$1$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$2
+module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00$0;
+    input wire  [31:0] c00$1;
+    input wire  [31:0] c00$2;
+    input wire  [31:0] c00$3;
+    input wire  [31:0] c10$0;
+    input wire  [31:0] c10$1;
+    input wire  [31:0] c10$2;
+    input wire  [31:0] c10$3;
+    input wire  [31:0] c01$0;
+    input wire  [31:0] c01$1;
+    input wire  [31:0] c01$2;
+    input wire  [31:0] c01$3;
+    input wire  [31:0] c11$0;
+    input wire  [31:0] c11$1;
+    input wire  [31:0] c11$2;
+    input wire  [31:0] c11$3;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] out$0;
+    output reg  [31:0] out$1;
+    output reg  [31:0] out$2;
+    output reg  [31:0] out$3;
+    
+    // Stub signals
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
+    reg  ch$0$clock;
+    reg  [31:0] ch$0$c00;
+    reg  [31:0] ch$0$c10;
+    reg  [31:0] ch$0$c01;
+    reg  [31:0] ch$0$c11;
+    reg  [15:0] ch$0$wx;
+    reg  [15:0] ch$0$wy;
+    wire  [31:0] ch$0$y;
+    reg  ch$1$clock;
+    reg  [31:0] ch$1$c00;
+    reg  [31:0] ch$1$c10;
+    reg  [31:0] ch$1$c01;
+    reg  [31:0] ch$1$c11;
+    reg  [15:0] ch$1$wx;
+    reg  [15:0] ch$1$wy;
+    wire  [31:0] ch$1$y;
+    reg  ch$2$clock;
+    reg  [31:0] ch$2$c00;
+    reg  [31:0] ch$2$c10;
+    reg  [31:0] ch$2$c01;
+    reg  [31:0] ch$2$c11;
+    reg  [15:0] ch$2$wx;
+    reg  [15:0] ch$2$wy;
+    wire  [31:0] ch$2$y;
+    reg  ch$3$clock;
+    reg  [31:0] ch$3$c00;
+    reg  [31:0] ch$3$c10;
+    reg  [31:0] ch$3$c01;
+    reg  [31:0] ch$3$c11;
+    reg  [15:0] ch$3$wx;
+    reg  [15:0] ch$3$wy;
+    wire  [31:0] ch$3$y;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$2$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$2$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$2$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
+    );
+    top$lanes$2$bilinear$ch$0 ch$0(
+        .clock(ch$0$clock),
+        .c00(ch$0$c00),
+        .c10(ch$0$c10),
+        .c01(ch$0$c01),
+        .c11(ch$0$c11),
+        .wx(ch$0$wx),
+        .wy(ch$0$wy),
+        .y(ch$0$y)
+    );
+    top$lanes$2$bilinear$ch$1 ch$1(
+        .clock(ch$1$clock),
+        .c00(ch$1$c00),
+        .c10(ch$1$c10),
+        .c01(ch$1$c01),
+        .c11(ch$1$c11),
+        .wx(ch$1$wx),
+        .wy(ch$1$wy),
+        .y(ch$1$y)
+    );
+    top$lanes$2$bilinear$ch$2 ch$2(
+        .clock(ch$2$clock),
+        .c00(ch$2$c00),
+        .c10(ch$2$c10),
+        .c01(ch$2$c01),
+        .c11(ch$2$c11),
+        .wx(ch$2$wx),
+        .wy(ch$2$wy),
+        .y(ch$2$y)
+    );
+    top$lanes$2$bilinear$ch$3 ch$3(
+        .clock(ch$3$clock),
+        .c00(ch$3$c00),
+        .c10(ch$3$c10),
+        .c01(ch$3$c01),
+        .c11(ch$3$c11),
+        .wx(ch$3$wx),
+        .wy(ch$3$wy),
+        .y(ch$3$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
+        ch$0$clock = clock;
+        ch$0$c00 = c00$0;
+        ch$0$c10 = c10$0;
+        ch$0$c01 = c01$0;
+        ch$0$c11 = c11$0;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
+        out$0 = ch$0$y;
+        ch$1$clock = clock;
+        ch$1$c00 = c00$1;
+        ch$1$c10 = c10$1;
+        ch$1$c01 = c01$1;
+        ch$1$c11 = c11$1;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
+        out$1 = ch$1$y;
+        ch$2$clock = clock;
+        ch$2$c00 = c00$2;
+        ch$2$c10 = c10$2;
+        ch$2$c01 = c01$2;
+        ch$2$c11 = c11$2;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
+        out$2 = ch$2$y;
+        ch$3$clock = clock;
+        ch$3$c00 = c00$3;
+        ch$3$c10 = c10$3;
+        ch$3$c01 = c01$3;
+        ch$3$c11 = c11$3;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
+        out$3 = ch$3$y;
+    end
+    
+endmodule // top$lanes$2$bilinear
+module top$lanes$2$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$0$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$2$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$2$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$2$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$2$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$2$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$2$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$0
+module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$0$bottom
+module top$lanes$2$bilinear$ch$0$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$a_q
+module top$lanes$2$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$prod_q
+module top$lanes$2$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$up_q
+module top$lanes$2$bilinear$ch$0$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$y_q
+module top$lanes$2$bilinear$ch$0$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$cells_q$0
+module top$lanes$2$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$cells_q$1
+module top$lanes$2$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$cells_q$2
+module top$lanes$2$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$cells_q$3
+module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$0$top
+module top$lanes$2$bilinear$ch$0$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$a_q
+module top$lanes$2$bilinear$ch$0$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$prod_q
+module top$lanes$2$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$up_q
+module top$lanes$2$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$y_q
+module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$0$vertical
+module top$lanes$2$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$a_q
+module top$lanes$2$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$prod_q
+module top$lanes$2$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$up_q
+module top$lanes$2$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$y_q
+module top$lanes$2$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$1$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$2$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$2$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$2$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$2$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$2$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$2$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$1
+module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$1$bottom
+module top$lanes$2$bilinear$ch$1$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$a_q
+module top$lanes$2$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$prod_q
+module top$lanes$2$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$up_q
+module top$lanes$2$bilinear$ch$1$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$y_q
+module top$lanes$2$bilinear$ch$1$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$cells_q$0
+module top$lanes$2$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$cells_q$1
+module top$lanes$2$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$cells_q$2
+module top$lanes$2$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$cells_q$3
+module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$1$top
+module top$lanes$2$bilinear$ch$1$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$a_q
+module top$lanes$2$bilinear$ch$1$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$prod_q
+module top$lanes$2$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$up_q
+module top$lanes$2$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$y_q
+module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$1$vertical
+module top$lanes$2$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$a_q
+module top$lanes$2$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$prod_q
+module top$lanes$2$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$up_q
+module top$lanes$2$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$y_q
+module top$lanes$2$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$2$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$2$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$2$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$2$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$2$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$2$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$2$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$2
+module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$2$bottom
+module top$lanes$2$bilinear$ch$2$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$a_q
+module top$lanes$2$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$prod_q
+module top$lanes$2$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$up_q
+module top$lanes$2$bilinear$ch$2$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$y_q
+module top$lanes$2$bilinear$ch$2$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$cells_q$0
+module top$lanes$2$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$cells_q$1
+module top$lanes$2$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$cells_q$2
+module top$lanes$2$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$cells_q$3
+module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$2$top
+module top$lanes$2$bilinear$ch$2$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$a_q
+module top$lanes$2$bilinear$ch$2$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$prod_q
+module top$lanes$2$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$up_q
+module top$lanes$2$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$y_q
+module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$2$vertical
+module top$lanes$2$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$a_q
+module top$lanes$2$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$prod_q
+module top$lanes$2$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$up_q
+module top$lanes$2$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$y_q
+module top$lanes$2$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$3$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$2$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$2$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$2$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$2$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$2$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$2$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$3
+module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$3$bottom
+module top$lanes$2$bilinear$ch$3$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$a_q
+module top$lanes$2$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$prod_q
+module top$lanes$2$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$up_q
+module top$lanes$2$bilinear$ch$3$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$y_q
+module top$lanes$2$bilinear$ch$3$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$cells_q$0
+module top$lanes$2$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$cells_q$1
+module top$lanes$2$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$cells_q$2
+module top$lanes$2$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$cells_q$3
+module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$3$top
+module top$lanes$2$bilinear$ch$3$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$a_q
+module top$lanes$2$bilinear$ch$3$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$prod_q
+module top$lanes$2$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$up_q
+module top$lanes$2$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$y_q
+module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$2$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$2$bilinear$ch$3$vertical
+module top$lanes$2$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$a_q
+module top$lanes$2$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$prod_q
+module top$lanes$2$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$up_q
+module top$lanes$2$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$y_q
+module top$lanes$2$bilinear$wx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$wx_q
+module top$lanes$2$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$wy_q$0
+module top$lanes$2$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$wy_q$1
+module top$lanes$2$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$wy_q$2
+module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00$0;
+    input wire  [31:0] c00$1;
+    input wire  [31:0] c00$2;
+    input wire  [31:0] c00$3;
+    input wire  [31:0] c10$0;
+    input wire  [31:0] c10$1;
+    input wire  [31:0] c10$2;
+    input wire  [31:0] c10$3;
+    input wire  [31:0] c01$0;
+    input wire  [31:0] c01$1;
+    input wire  [31:0] c01$2;
+    input wire  [31:0] c01$3;
+    input wire  [31:0] c11$0;
+    input wire  [31:0] c11$1;
+    input wire  [31:0] c11$2;
+    input wire  [31:0] c11$3;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] out$0;
+    output reg  [31:0] out$1;
+    output reg  [31:0] out$2;
+    output reg  [31:0] out$3;
+    
+    // Stub signals
+    reg  [15:0] wx_q$d;
+    wire  [15:0] wx_q$q;
+    reg  wx_q$clock;
+    reg  [15:0] wy_q$0$d;
+    wire  [15:0] wy_q$0$q;
+    reg  wy_q$0$clock;
+    reg  [15:0] wy_q$1$d;
+    wire  [15:0] wy_q$1$q;
+    reg  wy_q$1$clock;
+    reg  [15:0] wy_q$2$d;
+    wire  [15:0] wy_q$2$q;
+    reg  wy_q$2$clock;
+    reg  ch$0$clock;
+    reg  [31:0] ch$0$c00;
+    reg  [31:0] ch$0$c10;
+    reg  [31:0] ch$0$c01;
+    reg  [31:0] ch$0$c11;
+    reg  [15:0] ch$0$wx;
+    reg  [15:0] ch$0$wy;
+    wire  [31:0] ch$0$y;
+    reg  ch$1$clock;
+    reg  [31:0] ch$1$c00;
+    reg  [31:0] ch$1$c10;
+    reg  [31:0] ch$1$c01;
+    reg  [31:0] ch$1$c11;
+    reg  [15:0] ch$1$wx;
+    reg  [15:0] ch$1$wy;
+    wire  [31:0] ch$1$y;
+    reg  ch$2$clock;
+    reg  [31:0] ch$2$c00;
+    reg  [31:0] ch$2$c10;
+    reg  [31:0] ch$2$c01;
+    reg  [31:0] ch$2$c11;
+    reg  [15:0] ch$2$wx;
+    reg  [15:0] ch$2$wy;
+    wire  [31:0] ch$2$y;
+    reg  ch$3$clock;
+    reg  [31:0] ch$3$c00;
+    reg  [31:0] ch$3$c10;
+    reg  [31:0] ch$3$c01;
+    reg  [31:0] ch$3$c11;
+    reg  [15:0] ch$3$wx;
+    reg  [15:0] ch$3$wy;
+    wire  [31:0] ch$3$y;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$wx_q wx_q(
+        .d(wx_q$d),
+        .q(wx_q$q),
+        .clock(wx_q$clock)
+    );
+    top$lanes$3$bilinear$wy_q$0 wy_q$0(
+        .d(wy_q$0$d),
+        .q(wy_q$0$q),
+        .clock(wy_q$0$clock)
+    );
+    top$lanes$3$bilinear$wy_q$1 wy_q$1(
+        .d(wy_q$1$d),
+        .q(wy_q$1$q),
+        .clock(wy_q$1$clock)
+    );
+    top$lanes$3$bilinear$wy_q$2 wy_q$2(
+        .d(wy_q$2$d),
+        .q(wy_q$2$q),
+        .clock(wy_q$2$clock)
+    );
+    top$lanes$3$bilinear$ch$0 ch$0(
+        .clock(ch$0$clock),
+        .c00(ch$0$c00),
+        .c10(ch$0$c10),
+        .c01(ch$0$c01),
+        .c11(ch$0$c11),
+        .wx(ch$0$wx),
+        .wy(ch$0$wy),
+        .y(ch$0$y)
+    );
+    top$lanes$3$bilinear$ch$1 ch$1(
+        .clock(ch$1$clock),
+        .c00(ch$1$c00),
+        .c10(ch$1$c10),
+        .c01(ch$1$c01),
+        .c11(ch$1$c11),
+        .wx(ch$1$wx),
+        .wy(ch$1$wy),
+        .y(ch$1$y)
+    );
+    top$lanes$3$bilinear$ch$2 ch$2(
+        .clock(ch$2$clock),
+        .c00(ch$2$c00),
+        .c10(ch$2$c10),
+        .c01(ch$2$c01),
+        .c11(ch$2$c11),
+        .wx(ch$2$wx),
+        .wy(ch$2$wy),
+        .y(ch$2$y)
+    );
+    top$lanes$3$bilinear$ch$3 ch$3(
+        .clock(ch$3$clock),
+        .c00(ch$3$c00),
+        .c10(ch$3$c10),
+        .c01(ch$3$c01),
+        .c11(ch$3$c11),
+        .wx(ch$3$wx),
+        .wy(ch$3$wy),
+        .y(ch$3$y)
+    );
+    
+    // Update code
+    always @(*) begin
+        wx_q$clock = clock;
+        wx_q$d = wx_q$q;
+        wy_q$0$clock = clock;
+        wy_q$1$clock = clock;
+        wy_q$2$clock = clock;
+        wx_q$d = wx;
+        wy_q$0$d = wy;
+        wy_q$1$d = wy_q$0$q;
+        wy_q$2$d = wy_q$1$q;
+        ch$0$clock = clock;
+        ch$0$c00 = c00$0;
+        ch$0$c10 = c10$0;
+        ch$0$c01 = c01$0;
+        ch$0$c11 = c11$0;
+        ch$0$wx = wx_q$q;
+        ch$0$wy = wy_q$2$q;
+        out$0 = ch$0$y;
+        ch$1$clock = clock;
+        ch$1$c00 = c00$1;
+        ch$1$c10 = c10$1;
+        ch$1$c01 = c01$1;
+        ch$1$c11 = c11$1;
+        ch$1$wx = wx_q$q;
+        ch$1$wy = wy_q$2$q;
+        out$1 = ch$1$y;
+        ch$2$clock = clock;
+        ch$2$c00 = c00$2;
+        ch$2$c10 = c10$2;
+        ch$2$c01 = c01$2;
+        ch$2$c11 = c11$2;
+        ch$2$wx = wx_q$q;
+        ch$2$wy = wy_q$2$q;
+        out$2 = ch$2$y;
+        ch$3$clock = clock;
+        ch$3$c00 = c00$3;
+        ch$3$c10 = c10$3;
+        ch$3$c01 = c01$3;
+        ch$3$c11 = c11$3;
+        ch$3$wx = wx_q$q;
+        ch$3$wy = wy_q$2$q;
+        out$3 = ch$3$y;
+    end
+    
+endmodule // top$lanes$3$bilinear
+module top$lanes$3$bilinear$ch$0(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$0$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$3$bilinear$ch$0$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$3$bilinear$ch$0$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$3$bilinear$ch$0$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$3$bilinear$ch$0$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$3$bilinear$ch$0$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$3$bilinear$ch$0$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$0
+module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$0$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$0$bottom
+module top$lanes$3$bilinear$ch$0$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$a_q
+module top$lanes$3$bilinear$ch$0$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$prod_q
+module top$lanes$3$bilinear$ch$0$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$up_q
+module top$lanes$3$bilinear$ch$0$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$y_q
+module top$lanes$3$bilinear$ch$0$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$cells_q$0
+module top$lanes$3$bilinear$ch$0$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$cells_q$1
+module top$lanes$3$bilinear$ch$0$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$cells_q$2
+module top$lanes$3$bilinear$ch$0$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$cells_q$3
+module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$0$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$0$top
+module top$lanes$3$bilinear$ch$0$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$a_q
+module top$lanes$3$bilinear$ch$0$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$prod_q
+module top$lanes$3$bilinear$ch$0$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$up_q
+module top$lanes$3$bilinear$ch$0$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$y_q
+module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$0$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$0$vertical
+module top$lanes$3$bilinear$ch$0$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$a_q
+module top$lanes$3$bilinear$ch$0$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$prod_q
+module top$lanes$3$bilinear$ch$0$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$up_q
+module top$lanes$3$bilinear$ch$0$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$y_q
+module top$lanes$3$bilinear$ch$1(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$1$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$3$bilinear$ch$1$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$3$bilinear$ch$1$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$3$bilinear$ch$1$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$3$bilinear$ch$1$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$3$bilinear$ch$1$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$3$bilinear$ch$1$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$1
+module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$1$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$1$bottom
+module top$lanes$3$bilinear$ch$1$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$a_q
+module top$lanes$3$bilinear$ch$1$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$prod_q
+module top$lanes$3$bilinear$ch$1$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$up_q
+module top$lanes$3$bilinear$ch$1$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$y_q
+module top$lanes$3$bilinear$ch$1$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$cells_q$0
+module top$lanes$3$bilinear$ch$1$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$cells_q$1
+module top$lanes$3$bilinear$ch$1$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$cells_q$2
+module top$lanes$3$bilinear$ch$1$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$cells_q$3
+module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$1$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$1$top
+module top$lanes$3$bilinear$ch$1$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$a_q
+module top$lanes$3$bilinear$ch$1$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$prod_q
+module top$lanes$3$bilinear$ch$1$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$up_q
+module top$lanes$3$bilinear$ch$1$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$y_q
+module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$1$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$1$vertical
+module top$lanes$3$bilinear$ch$1$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$a_q
+module top$lanes$3$bilinear$ch$1$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$prod_q
+module top$lanes$3$bilinear$ch$1$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$up_q
+module top$lanes$3$bilinear$ch$1$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$y_q
+module top$lanes$3$bilinear$ch$2(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$2$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$3$bilinear$ch$2$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$3$bilinear$ch$2$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$3$bilinear$ch$2$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$3$bilinear$ch$2$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$3$bilinear$ch$2$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$3$bilinear$ch$2$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$2
+module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$2$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$2$bottom
+module top$lanes$3$bilinear$ch$2$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$a_q
+module top$lanes$3$bilinear$ch$2$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$prod_q
+module top$lanes$3$bilinear$ch$2$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$up_q
+module top$lanes$3$bilinear$ch$2$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$y_q
+module top$lanes$3$bilinear$ch$2$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$cells_q$0
+module top$lanes$3$bilinear$ch$2$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$cells_q$1
+module top$lanes$3$bilinear$ch$2$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$cells_q$2
+module top$lanes$3$bilinear$ch$2$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$cells_q$3
+module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$2$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$2$top
+module top$lanes$3$bilinear$ch$2$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$a_q
+module top$lanes$3$bilinear$ch$2$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$prod_q
+module top$lanes$3$bilinear$ch$2$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$up_q
+module top$lanes$3$bilinear$ch$2$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$y_q
+module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$2$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$2$vertical
+module top$lanes$3$bilinear$ch$2$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$a_q
+module top$lanes$3$bilinear$ch$2$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$prod_q
+module top$lanes$3$bilinear$ch$2$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$up_q
+module top$lanes$3$bilinear$ch$2$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$y_q
+module top$lanes$3$bilinear$ch$3(clock,c00,c10,c01,c11,wx,wy,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] c00;
+    input wire  [31:0] c10;
+    input wire  [31:0] c01;
+    input wire  [31:0] c11;
+    input wire  [15:0] wx;
+    input wire  [15:0] wy;
+    output reg  [31:0] y;
+    
+    // Stub signals
+    reg  top$clock;
+    reg  [31:0] top$a;
+    reg  [31:0] top$b;
+    reg  [15:0] top$w;
+    wire  [31:0] top$y;
+    reg  bottom$clock;
+    reg  [31:0] bottom$a;
+    reg  [31:0] bottom$b;
+    reg  [15:0] bottom$w;
+    wire  [31:0] bottom$y;
+    reg  vertical$clock;
+    reg  [31:0] vertical$a;
+    reg  [31:0] vertical$b;
+    reg  [15:0] vertical$w;
+    wire  [31:0] vertical$y;
+    reg  [31:0] cells_q$0$d;
+    wire  [31:0] cells_q$0$q;
+    reg  cells_q$0$clock;
+    reg  [31:0] cells_q$1$d;
+    wire  [31:0] cells_q$1$q;
+    reg  cells_q$1$clock;
+    reg  [31:0] cells_q$2$d;
+    wire  [31:0] cells_q$2$q;
+    reg  cells_q$2$clock;
+    reg  [31:0] cells_q$3$d;
+    wire  [31:0] cells_q$3$q;
+    reg  cells_q$3$clock;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$3$top top(
+        .clock(top$clock),
+        .a(top$a),
+        .b(top$b),
+        .w(top$w),
+        .y(top$y)
+    );
+    top$lanes$3$bilinear$ch$3$bottom bottom(
+        .clock(bottom$clock),
+        .a(bottom$a),
+        .b(bottom$b),
+        .w(bottom$w),
+        .y(bottom$y)
+    );
+    top$lanes$3$bilinear$ch$3$vertical vertical(
+        .clock(vertical$clock),
+        .a(vertical$a),
+        .b(vertical$b),
+        .w(vertical$w),
+        .y(vertical$y)
+    );
+    top$lanes$3$bilinear$ch$3$cells_q$0 cells_q$0(
+        .d(cells_q$0$d),
+        .q(cells_q$0$q),
+        .clock(cells_q$0$clock)
+    );
+    top$lanes$3$bilinear$ch$3$cells_q$1 cells_q$1(
+        .d(cells_q$1$d),
+        .q(cells_q$1$q),
+        .clock(cells_q$1$clock)
+    );
+    top$lanes$3$bilinear$ch$3$cells_q$2 cells_q$2(
+        .d(cells_q$2$d),
+        .q(cells_q$2$q),
+        .clock(cells_q$2$clock)
+    );
+    top$lanes$3$bilinear$ch$3$cells_q$3 cells_q$3(
+        .d(cells_q$3$d),
+        .q(cells_q$3$q),
+        .clock(cells_q$3$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        cells_q$0$clock = clock;
+        cells_q$1$clock = clock;
+        cells_q$2$clock = clock;
+        cells_q$3$clock = clock;
+        top$clock = clock;
+        bottom$clock = clock;
+        vertical$clock = clock;
+        cells_q$0$d = c00;
+        cells_q$1$d = c10;
+        cells_q$2$d = c01;
+        cells_q$3$d = c11;
+        top$a = cells_q$0$q;
+        top$b = cells_q$1$q;
+        top$w = wx;
+        bottom$a = cells_q$2$q;
+        bottom$b = cells_q$3$q;
+        bottom$w = wx;
+        vertical$a = top$y;
+        vertical$b = bottom$y;
+        vertical$w = wy;
+        y = vertical$y;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$3
+module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$3$bottom$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$3$bottom
+module top$lanes$3$bilinear$ch$3$bottom$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$a_q
+module top$lanes$3$bilinear$ch$3$bottom$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$prod_q
+module top$lanes$3$bilinear$ch$3$bottom$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$up_q
+module top$lanes$3$bilinear$ch$3$bottom$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$y_q
+module top$lanes$3$bilinear$ch$3$cells_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$cells_q$0
+module top$lanes$3$bilinear$ch$3$cells_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$cells_q$1
+module top$lanes$3$bilinear$ch$3$cells_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$cells_q$2
+module top$lanes$3$bilinear$ch$3$cells_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$cells_q$3
+module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$3$top$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$3$top
+module top$lanes$3$bilinear$ch$3$top$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$a_q
+module top$lanes$3$bilinear$ch$3$top$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$prod_q
+module top$lanes$3$bilinear$ch$3$top$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$up_q
+module top$lanes$3$bilinear$ch$3$top$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$y_q
+module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] a;
+    input wire  [31:0] b;
+    input wire  [15:0] w;
+    output reg  [31:0] y;
+    
+    // Constant declarations
+    localparam  half = 64'h80;
+    localparam  shift = 8'h8;
+    localparam  wide = 1'b0;
+    
+    // Stub signals
+    reg  up_q$d;
+    wire  up_q$q;
+    reg  up_q$clock;
+    reg  [31:0] a_q$d;
+    wire  [31:0] a_q$q;
+    reg  a_q$clock;
+    reg  [63:0] prod_q$d;
+    wire  [63:0] prod_q$q;
+    reg  prod_q$clock;
+    reg  [31:0] y_q$d;
+    wire  [31:0] y_q$q;
+    reg  y_q$clock;
+    
+    // Local signals
+    reg  [31:0] diff;
+    reg  [63:0] prod;
+    reg  [31:0] step_up;
+    reg  [31:0] step_down;
+    
+    // Sub module instances
+    top$lanes$3$bilinear$ch$3$vertical$up_q up_q(
+        .d(up_q$d),
+        .q(up_q$q),
+        .clock(up_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$a_q a_q(
+        .d(a_q$d),
+        .q(a_q$q),
+        .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$prod_q prod_q(
+        .d(prod_q$d),
+        .q(prod_q$q),
+        .clock(prod_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$y_q y_q(
+        .d(y_q$d),
+        .q(y_q$q),
+        .clock(y_q$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        up_q$clock = clock;
+        a_q$clock = clock;
+        prod_q$clock = clock;
+        y_q$clock = clock;
+        up_q$d = up_q$q;
+        a_q$d = a_q$q;
+        prod_q$d = prod_q$q;
+        y_q$d = y_q$q;
+        if (b >= a) begin
+            diff = b - a;
+        end
+        else begin
+            diff = a - b;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
+        end
+        up_q$d = b >= a;
+        a_q$d = a;
+        prod_q$d = prod;
+        step_up = 32'((prod_q$q + half) >> shift);
+        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        if (up_q$q) begin
+            y_q$d = a_q$q + step_up;
+        end
+        else begin
+            y_q$d = a_q$q - step_down;
+        end
+        y = y_q$q;
+    end
+    
+endmodule // top$lanes$3$bilinear$ch$3$vertical
+module top$lanes$3$bilinear$ch$3$vertical$a_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$a_q
+module top$lanes$3$bilinear$ch$3$vertical$prod_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$prod_q
+module top$lanes$3$bilinear$ch$3$vertical$up_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$up_q
+module top$lanes$3$bilinear$ch$3$vertical$y_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$y_q
+module top$lanes$3$bilinear$wx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$wx_q
+module top$lanes$3$bilinear$wy_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$wy_q$0
+module top$lanes$3$bilinear$wy_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$wy_q$1
+module top$lanes$3$bilinear$wy_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$wy_q$2
