@@ -317,15 +317,10 @@ impl ForP for RustHdl<'_> {
         sim.add_testbench(move |mut sim: Sim<Cube3System<P, A, B, H>>| {
             let mut x = sim.init()?;
             for w in &loads {
-                x.host_write.next = true;
-                x.host_address.next = (w.address as u64).to_bits();
-                x.host_data.next = w.data.to_bits();
+                crate::drive_host_port!(x, Some(w));
                 wait_clock_cycle!(sim, clock, x);
             }
-            // As the Verilog harness: every host input low after the loads.
-            x.host_write.next = false;
-            x.host_address.next = 0.into();
-            x.host_data.next = 0.into();
+            crate::drive_host_port!(x, None::<&Write>);
             let mut seen = 0;
             let mut t = 0;
             while seen < count && t < limit {

@@ -206,15 +206,10 @@ impl ForP for RustHdl<'_> {
             let mut x = sim.init()?;
             for (loads, beats) in &runs {
                 for w in loads {
-                    x.host_write.next = true;
-                    x.host_address.next = (w.address as u64).to_bits();
-                    x.host_data.next = w.data.to_bits();
+                    crate::drive_host_port!(x, Some(w));
                     wait_clock_cycle!(sim, clock, x);
                 }
-                // As the Verilog harness: every host input low after the loads.
-                x.host_write.next = false;
-                x.host_address.next = 0.into();
-                x.host_data.next = 0.into();
+                crate::drive_host_port!(x, None::<&Write>);
                 x.start.next = true;
                 wait_clock_cycle!(sim, clock, x);
                 x.start.next = false;

@@ -134,6 +134,27 @@ pub fn start_only(ports: &[Port], t: usize) -> Vec<u64> {
         .collect()
 }
 
+/// In a rust-hdl testbench, set a top's host-port inputs for one clock:
+/// `Some(write)` (a `golden_model::host::Write`), or with `None` every host
+/// input low, as the Verilog harness drives them between writes.
+#[macro_export]
+macro_rules! drive_host_port {
+    ($x:expr, $w:expr) => {
+        match $w {
+            Some(w) => {
+                $x.host_write.next = true;
+                $x.host_address.next = (w.address as u64).to_bits();
+                $x.host_data.next = w.data.to_bits();
+            }
+            None => {
+                $x.host_write.next = false;
+                $x.host_address.next = 0.into();
+                $x.host_data.next = 0.into();
+            }
+        }
+    };
+}
+
 /// The inputs of the clocks that write `writes` through the design's host
 /// port, one a clock, every other input 0.
 pub fn host_writes(ports: &[Port], writes: &[golden_model::host::Write]) -> Vec<Vec<u64>> {

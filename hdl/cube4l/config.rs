@@ -483,12 +483,7 @@ impl PipelineConfig {
     }
 }
 
-/// A lane's packed result word from `[r, g, b, a]` (see [`unpack`]).
-pub fn pack(v: [u32; 4]) -> u64 {
-    v[0] as u64 | (v[1] as u64) << 16 | (v[2] as u64) << 32 | (v[3] as u64) << 48
-}
-
-/// A lane's packed result word as `[r, g, b, a]`: four 16-bit channels, or
+/// A lane's result word as `[r, g, b, a]`: four 16-bit channels, or
 /// for X-ray a 32-bit sum in channel 0.
 pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
     if mode == Mode::Xray {

@@ -7,6 +7,7 @@
 //! as emitted Verilog under Icarus and Verilator. The 2-DSB streams are the
 //! golden model's PRPs (`prp::fetch`), as the beam fetch would fill them.
 
+use cosim::drive_host_port;
 use cosim::harness::{host_writes, ports};
 use cosim::Engine;
 use hdl::cube3::Cube3;
@@ -61,13 +62,9 @@ fn rust_hdl_run<const P: usize>() {
         let (n, name) = (l + clocks(&c), format!("cube3 {}", c.name));
         let mut pixels = Pixels::new(&c, first_pixel(&c));
         run_clocks(uut, n, &name, move |e, x| match e {
-            Edge::Before(t) if t < l => {
-                x.host_write.next = true;
-                x.host_address.next = (c.loads[t].address as u64).to_bits();
-                x.host_data.next = c.loads[t].data.to_bits();
-            }
+            Edge::Before(t) if t < l => drive_host_port!(x, Some(&c.loads[t])),
             Edge::Before(t) => {
-                x.host_write.next = false;
+                drive_host_port!(x, None::<&golden_model::host::Write>);
                 let (start, valid, cur, next) = stream(&c, t - l);
                 x.start.next = start;
                 x.valid.next = valid;

@@ -5,6 +5,7 @@
 //! views (one at exactly 45°) of non-cubic volumes, p = 1, 2, 4 and 8, in
 //! rust-hdl simulation and as emitted Verilog under Icarus and Verilator.
 
+use cosim::drive_host_port;
 use cosim::harness::{host_writes, ports, start_only};
 use cosim::Engine;
 use hdl::cube3::Cube3System;
@@ -40,13 +41,9 @@ fn rust_hdl_run<const P: usize>() {
         let mut pixels = Pixels::new(&c, first_pixel(&c));
         let loads = c.loads.clone();
         run_clocks(uut, n, &name, move |e, x| match e {
-            Edge::Before(t) if t < l => {
-                x.host_write.next = true;
-                x.host_address.next = (loads[t].address as u64).to_bits();
-                x.host_data.next = loads[t].data.to_bits();
-            }
+            Edge::Before(t) if t < l => drive_host_port!(x, Some(&loads[t])),
             Edge::Before(t) => {
-                x.host_write.next = false;
+                drive_host_port!(x, None::<&golden_model::host::Write>);
                 x.start.next = t == l;
             }
             Edge::After(t) if t >= l => pixels.read("rust-hdl", t - l, pixel_port!(x)),
@@ -142,13 +139,11 @@ fn cube3_system_loads_its_memory_through_the_load_port() {
         Edge::Before(t) if t < loading => {
             let w = loads[t - words.len()];
             x.load_enable.next = false;
-            x.host_write.next = true;
-            x.host_address.next = (w.address as u64).to_bits();
-            x.host_data.next = w.data.to_bits();
+            drive_host_port!(x, Some(&w));
         }
         Edge::Before(t) => {
             x.load_enable.next = false;
-            x.host_write.next = false;
+            drive_host_port!(x, None::<&golden_model::host::Write>);
             x.start.next = t == loading;
         }
         Edge::After(t) if t >= loading => pixels.read("rust-hdl", t - loading, pixel_port!(x)),

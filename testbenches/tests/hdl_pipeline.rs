@@ -3,6 +3,7 @@
 //! the golden model: every lane's composited value every cycle, every
 //! base-plane pixel and its address, and the clocks per sweep.
 
+use cosim::drive_host_port;
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan};
 use golden_model::cube4l::regs::ViewRegs;
@@ -105,12 +106,10 @@ fn run_sweep<const P: usize>(
     sim.add_testbench(move |mut sim: Sim<Pipeline<P, A, H>>| {
         let mut x = sim.init()?;
         for w in &loads {
-            x.host_write.next = true;
-            x.host_address.next = (w.address as u64).to_bits();
-            x.host_data.next = w.data.to_bits();
+            drive_host_port!(x, Some(w));
             wait_clock_cycle!(sim, clock, x);
         }
-        x.host_write.next = false;
+        drive_host_port!(x, None::<&golden_model::host::Write>);
         x.start.next = true;
         wait_clock_cycle!(sim, clock, x);
         x.start.next = false;

@@ -12,6 +12,7 @@
 //! the two differ on invalid voxels (the RTL's is `!invalid`, the golden
 //! model's `true` for a transparent sample); that is not compared.
 
+use cosim::drive_host_port;
 use golden_model::cube4l::plan::{Control, Face, Plan};
 use golden_model::cube4l::shader::Shader as Golden;
 use hdl::common::shader::{Shader, ShaderConfig, LATENCY};
@@ -97,13 +98,9 @@ fn check(json: &str, seed: u64, preload: bool) {
     // The host's writes, then a voxel a clock; its sample LATENCY clocks
     // after its input.
     run_clocks(uut, n + N + LATENCY, &label.clone(), move |e, x| match e {
-        Edge::Before(t) if t < n => {
-            x.host_write.next = true;
-            x.host_address.next = (loads[t].address as u64).to_bits();
-            x.host_data.next = loads[t].data.to_bits();
-        }
+        Edge::Before(t) if t < n => drive_host_port!(x, Some(&loads[t])),
         Edge::Before(t) => {
-            x.host_write.next = false;
+            drive_host_port!(x, None::<&golden_model::host::Write>);
             let v = &vs[(t - n).min(N - 1)];
             x.value.next = (v.value as u64).to_bits();
             x.invalid.next = v.invalid;
