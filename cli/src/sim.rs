@@ -116,12 +116,12 @@ impl ForArch for Sim<'_> {
         let several = frames.len() > 1;
         if several {
             println!(
-                "{} frames on one build of {} configuration {} ({} design{} simulated)",
+                "{} frames on one build of {} configuration {} (the volume loaded {} time{})",
                 frames.len(),
                 A::TITLE,
                 A::config_name(&run.config),
-                run.designs,
-                if run.designs == 1 { "" } else { "s" }
+                run.memory_loads,
+                if run.memory_loads == 1 { "" } else { "s" }
             );
         }
         // Clocks simulated: every frame's parts and the host's writes.
@@ -202,7 +202,7 @@ impl ForArch for Sim<'_> {
                         "engine": name,
                         "arch": A::NAME,
                         "configuration": A::config_name(&run.config),
-                        "designs": run.designs,
+                        "memory_loads": run.memory_loads,
                         "seconds": seconds,
                         "sim_seconds": sim_seconds,
                         "build_seconds": build_seconds,

@@ -79,9 +79,7 @@ impl ForArch for Synth<'_> {
             .context("creating a temporary directory for yosys")?;
         let dir = work.path().join("design");
         let m = cosim::export::write_export::<A>(&dir, &build, scene.as_ref()).map_err(err)?;
-        // One design per build; where views are still constants (a design
-        // per part), the first stands for the others.
-        let designs = m["designs"].as_array().map_or(0, |a| a.len());
+        // One design per build.
         let first = &m["designs"][0];
         let files: Vec<String> = first["files"]
             .as_array()
@@ -106,13 +104,6 @@ impl ForArch for Synth<'_> {
             r.luts as f64 / p as f64,
             r.dsps as f64 / p as f64
         );
-        if designs > 1 {
-            println!(
-                "({} 0 of {designs}; every {} has the same structure, with its own constants)",
-                A::PART.replace('_', " "),
-                A::PART.replace('_', " ")
-            );
-        }
         // Memory: the buffers as designed against the scene's least, and
         // what the RAM primitives hold after synthesis.
         let buffer = A::buffer_memory(&build, &parts);

@@ -41,21 +41,15 @@ impl ForArch for Export<'_> {
             choose_build::<A>("verilog", args.scene.as_deref(), args.config.as_deref())?;
         let scene = loaded.as_ref().map(Loaded::export);
         let m = cosim::export::write_export::<A>(&args.out, &build, scene.as_ref()).map_err(err)?;
-        let designs = m["designs"].as_array().map_or(0, |a| a.len());
         let left_out: Vec<&str> = m["units_left_out"]
             .as_array()
             .map(|a| a.iter().filter_map(|v| v.as_str()).collect())
             .unwrap_or_default();
         println!(
-            "wrote {} ({} configuration {}{}, {} memory); units left out: {}",
+            "wrote {} ({} configuration {}, {} memory); units left out: {}",
             args.out.display(),
             A::TITLE,
             A::config_name(&build),
-            if designs > 1 {
-                format!(", one design per {} ({designs})", A::PART.replace('_', " "))
-            } else {
-                String::new()
-            },
             memory_kind(&m["parameters"]["memory"]),
             if left_out.is_empty() {
                 "none".into()

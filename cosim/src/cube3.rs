@@ -4,10 +4,14 @@
 //! `done` port. The volume is loaded into the memory modules in each base
 //! plane's traversal order.
 //!
-//! The shader's light and tables are host registers and RAM, but the view
-//! (templates, bounds, de-fanning groups, the base plane) is still built
-//! into each base plane's system: a Cube-3 configuration names the units,
-//! and each base plane is a build of its own.
+//! A build is a configuration ([`Cube3Build`]): its units, widths and the
+//! largest volume side it serves. The view (templates, bounds, increments,
+//! de-fanning groups, the stream's extent) and the shader's tables and
+//! light are registers and tables the host writes before each base plane
+//! (`Cube3SystemConfig::view_writes`), so one build renders every view of
+//! its class. Base planes of another traversal order need the volume
+//! reloaded in that order: they run on the same design, one simulation
+//! each.
 
 use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
 use crate::gtkw::Wave;
@@ -19,27 +23,30 @@ use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::common::mode_class::ModeClass;
+use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
-use scene::{Camera, Image, Scene};
+use scene::{Camera, Image, Mode, Scene};
 use std::path::Path;
 
-/// 2-DSB and delay-line address bits of every Cube-3 build (the ABC
-/// units' sample-plane lines are a scanline period long: 13 313 clocks for
-/// the engine at p = 4).
-pub const B: usize = 16;
+/// 2-DSB and delay-line address bits of every Cube-3 build: a 2-DSB module
+/// of a 256-a-side build holds 516 rays of 128 segments (p = 2), and the
+/// ABC units' sample-plane lines are a scanline period long (13 313 clocks
+/// for the engine at p = 4).
+pub const B: usize = 17;
 pub const H: usize = 16;
 
 /// Cube-3 (Pfister, Wessels and Kaufman): ray-parallel casting.
 pub struct Cube3;
 
-/// What a Cube-3 build is made of beyond its views: p, the mode class, the
-/// units and the widths.
+/// What a Cube-3 build is made of beyond its views: p, the mode (the
+/// RPC's operator and reset value), the units, the widths and the largest
+/// volume side.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Cube3Build {
     pub p: usize,
-    pub mode: ModeClass,
+    pub mode: Mode,
     pub shading: bool,
     pub gradient_opacity: bool,
     pub perspective: bool,
@@ -47,16 +54,27 @@ pub struct Cube3Build {
     pub voxel_bits: u32,
     pub frac_bits: u32,
     pub rgba_bits: u32,
-    /// The voxels live in external RAM (a base plane's module holds more
-    /// than 2^16 words).
-    pub external_memory: bool,
+    /// The largest volume side served.
+    pub n: usize,
+}
+
+/// A mode as a scene and a build's name spell it.
+fn mode_name(m: Mode) -> &'static str {
+    match m {
+        Mode::Composite => "composite",
+        Mode::FirstOpaque => "first_opaque",
+        Mode::Mip => "mip",
+        Mode::Minip => "minip",
+        Mode::Xray => "xray",
+    }
 }
 
 impl Cube3Build {
-    /// `{mode}[_shaded][_gm][_perspective]_n{6|12|...}_p{p}`, with the
-    /// widths when not 8 bits.
+    /// `{mode}[_shaded][_gm][_perspective]_n{6|12}_p{p}_{n}`, with the
+    /// widths when not 8 bits; the mode exactly (the RPC is built for
+    /// one).
     pub fn name(&self) -> String {
-        let mut s = self.mode.name().to_string();
+        let mut s = mode_name(self.mode).to_string();
         for (on, w) in [
             (self.shading, "_shaded"),
             (self.gradient_opacity, "_gm"),
@@ -66,7 +84,7 @@ impl Cube3Build {
                 s += w;
             }
         }
-        s += &format!("_n{}_p{}", self.neighbourhood.count(), self.p);
+        s += &format!("_n{}_p{}_{}", self.neighbourhood.count(), self.p, self.n);
         for (bits, tag) in [
             (self.voxel_bits, 'v'),
             (self.rgba_bits, 'c'),
@@ -78,16 +96,104 @@ impl Cube3Build {
         }
         s
     }
+
+    /// The configuration a name spells ([`Cube3Build::name`]).
+    pub fn parse(name: &str) -> Result<Cube3Build, String> {
+        let bad = |why: &str| format!("configuration '{name}': {why}");
+        let mut words: Vec<&str> = name.split('_').collect();
+        let mode = match words.first().copied() {
+            Some("first") if words.get(1) == Some(&"opaque") => {
+                words.remove(0);
+                Mode::FirstOpaque
+            }
+            Some("composite") => Mode::Composite,
+            Some("mip") => Mode::Mip,
+            Some("minip") => Mode::Minip,
+            Some("xray") => Mode::Xray,
+            _ => {
+                return Err(bad(
+                    "the mode is composite, first_opaque, mip, minip or xray",
+                ))
+            }
+        };
+        let mut b = Cube3Build {
+            p: 0,
+            mode,
+            shading: false,
+            gradient_opacity: false,
+            perspective: false,
+            neighbourhood: Neighbourhood::N12,
+            voxel_bits: 8,
+            frac_bits: 8,
+            rgba_bits: 8,
+            n: 0,
+        };
+        let mut rest = words[1..].iter().peekable();
+        for (flag, word) in [
+            (&mut b.shading, "shaded"),
+            (&mut b.gradient_opacity, "gm"),
+            (&mut b.perspective, "perspective"),
+        ] {
+            *flag = rest.next_if(|w| **w == word).is_some();
+        }
+        let number = |w: Option<&&str>, tag: &str, what: &str| {
+            w.and_then(|w| w.strip_prefix(tag))
+                .and_then(|n| n.parse::<usize>().ok())
+                .ok_or_else(|| bad(&format!("expected {what} ({tag}<number>)")))
+        };
+        b.neighbourhood = match number(rest.next(), "n", "the gradient neighbourhood")? {
+            6 => Neighbourhood::N6,
+            12 => Neighbourhood::N12,
+            k => {
+                return Err(bad(&format!(
+                    "the {k}-neighbourhood is not built (6 or 12)"
+                )))
+            }
+        };
+        b.p = number(rest.next(), "p", "the pipelines")?;
+        b.n = number(rest.next(), "", "the largest volume side")?;
+        for w in rest {
+            let bits = |tag| number(Some(w), tag, "a width").map(|v| v as u32);
+            match w.chars().next() {
+                Some('v') => b.voxel_bits = bits("v")?,
+                Some('c') => b.rgba_bits = bits("c")?,
+                Some('f') => b.frac_bits = bits("f")?,
+                _ => return Err(bad(&format!("unknown field '{w}'"))),
+            }
+        }
+        if b.name() != name {
+            return Err(bad(&format!("it reads as {}", b.name())));
+        }
+        Ok(b)
+    }
+
+    /// What the build's memories and tables are sized for.
+    pub fn sizes(&self) -> Cube3Sizes {
+        Cube3Sizes {
+            n: self.n,
+            p: self.p,
+            perspective: self.perspective,
+            gradients: Units::of_build(self).gradient,
+        }
+    }
+
+    /// The voxels live in external RAM (a module holds more than 2^16
+    /// words).
+    pub fn external_memory(&self) -> bool {
+        self.sizes().external()
+    }
 }
 
 /// One base plane: its view, the golden model's shading tables and
-/// neighbourhood, and the system's configuration.
+/// neighbourhood, the system's configuration for this view, and what the
+/// build is sized for.
 #[derive(Debug, Clone)]
 pub struct Part {
     pub view: View,
     pub shader: Shader,
     pub neighbourhood: Neighbourhood,
     pub config: Cube3SystemConfig,
+    pub sizes: Cube3Sizes,
 }
 
 /// The file (one per stage) of a Cube-3 system's module.
@@ -134,6 +240,16 @@ lint_off -rule UNUSEDSIGNAL -file "*rpc.v" -match "*Bits of signal are not used:
 // The shaders' value is the sample's integer part, voxel bits wide: the
 // top bits of s >> F are zero.
 lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'index$*"
+// The host port carries 64-bit words: each view register block keeps the
+// fields its stage reads, each view table the bits of its entries, and a
+// table's read address is as wide as its largest view's (the low bits
+// address its words);
+lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'host_data'*"
+lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'regs$q$*'*"
+lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'address'*"
+// the entry arithmetic of the templates and rows is 32 bits wide.
+lint_off -rule UNUSEDSIGNAL -file "*ray_control.v" -match "*Bits of signal are not used: 'w?_entry'*"
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'row_entry'*"
 // Each lane's sample-plane history offers all 27 taps; the neighbouring
 // lanes read their middle ones (plane k), and only the first and the last
 // lane's taps of the next and previous segment cross to the other end.
@@ -154,14 +270,14 @@ struct Units {
 
 impl Units {
     fn of_build(b: &Cube3Build) -> Units {
-        let shaders = b.mode == ModeClass::Over;
+        let shaders = ModeClass::of(b.mode) == ModeClass::Over;
         Units {
             perspective: b.perspective,
             gradient: shaders && (b.shading || b.gradient_opacity),
             shaders,
             lighting: b.shading,
             gradient_opacity: b.gradient_opacity,
-            xray: b.mode == ModeClass::Xray,
+            xray: b.mode == Mode::Xray,
         }
     }
 
@@ -185,7 +301,7 @@ impl Units {
         let mut v = vec![];
         if !self.perspective {
             v.push(LeftOut {
-                name: "de-fanning (a parallel view's beams shift as a whole: no group ROMs, one template entry a plane)",
+                name: "de-fanning (a parallel view's beams shift as a whole: no group tables, one template entry a plane)",
                 instances: &["groups", "group_x$*"],
             });
         }
@@ -237,39 +353,49 @@ pub fn left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
     Units::of_system(c).left_out()
 }
 
-/// The scene's base planes, each with the system that renders it.
-fn scene_parts(scene: &Scene, camera: &Camera) -> Result<Vec<Part>, String> {
+/// The scene's base planes, each with the system that renders it, for a
+/// build sized for volumes of `n` a side (the scene's own largest side
+/// without one).
+fn scene_parts(scene: &Scene, camera: &Camera, n: Option<usize>) -> Result<Vec<Part>, String> {
     let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
-    let n = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
+    let nb = golden_model::cube3::neighbourhood(scene, None).map_err(|e| e.to_string())?;
     plan.views
         .into_iter()
         .map(|view| {
             let shader = Shader::new(scene, camera, &view);
-            let config = config(scene, &view, &shader, n)?;
+            let config = config(scene, &view, &shader, nb)?;
+            let sizes = Cube3Sizes {
+                n: n.unwrap_or_else(|| view.dims.iter().copied().max().unwrap_or(1)),
+                p: config.pipeline.p,
+                perspective: config.pipeline.perspective,
+                gradients: config.pipeline.abc.is_some(),
+            };
             Ok(Part {
                 view,
                 shader,
-                neighbourhood: n,
+                neighbourhood: nb,
                 config,
+                sizes,
             })
         })
         .collect()
 }
 
-/// The Verilog of a Cube-3 system with its unneeded units pruned;
+/// The Verilog of the build that renders `part`, its unneeded units pruned;
 /// `preload` initialises on-chip memory (simulation only).
-pub fn verilog(c: &Cube3SystemConfig, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
-    with_p(c.pipeline.p, Emit(c, preload))?
+pub fn verilog(part: &Part, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
+    with_p(part.config.pipeline.p, Emit(part, preload))?
 }
 
-struct Emit<'a>(&'a Cube3SystemConfig, Option<&'a [Vec<u16>]>);
+struct Emit<'a>(&'a Part, Option<&'a [Vec<u16>]>);
 
 impl ForP for Emit<'_> {
     type Output = Result<String, String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let Emit(c, preload) = self;
-        let mut uut = Cube3System::<P, A, B, H>::new(c)?;
-        if let Some(m) = preload.filter(|_| !c.fetch.external) {
+        let Emit(part, preload) = self;
+        let c = &part.config;
+        let mut uut = Cube3System::<P, A, B, H>::new(&c.pipeline, &part.sizes)?;
+        if let Some(m) = preload.filter(|_| !part.sizes.external()) {
             uut.preload(m);
         }
         uut.connect_all();
@@ -286,29 +412,42 @@ pub fn config(
     n: Neighbourhood,
 ) -> Result<Cube3SystemConfig, String> {
     let height = (view.v[1] - view.v[0] + 1) as usize;
-    let mut c =
-        Cube3SystemConfig::new(view, shader, n, scene.hardware.pipelines, view.v[0], height)?;
-    c.fetch.external = c.fetch.module_words() > 1 << A;
-    Ok(c)
+    Cube3SystemConfig::new(view, shader, n, scene.hardware.pipelines, view.v[0], height)
 }
 
-/// Simulate the system for `P` units in rust-hdl.
-struct RustHdl<'a>(&'a Part, &'a [Vec<u16>], &'a [Write], Option<&'a Path>);
+/// Simulate a run of base planes on one build for `P` units in rust-hdl:
+/// before each, the host's writes, then `start`, then its pixels.
+struct RustHdl<'a>(
+    &'a [(&'a Part, Vec<Write>)],
+    &'a [Vec<u16>],
+    Option<&'a Path>,
+);
+
+/// What the rust-hdl testbench collects: per base plane, the records and
+/// the clock count.
+type Collected = std::sync::Arc<std::sync::Mutex<Vec<(Vec<Record>, u64)>>>;
 
 impl ForP for RustHdl<'_> {
-    type Output = Result<(Vec<Record>, u64), String>;
+    type Output = Result<Vec<(Vec<Record>, u64)>, String>;
     fn run<const P: usize>(self) -> Self::Output {
-        let RustHdl(part, modules, loads, trace) = self;
-        let c = &part.config;
-        let mut uut = Cube3System::<P, A, B, H>::new(c)?;
+        let RustHdl(runs, modules, trace) = self;
+        let first = runs.first().ok_or("no base plane to simulate")?.0;
+        let mut uut = Cube3System::<P, A, B, H>::new(&first.config.pipeline, &first.sizes)?;
         uut.preload(modules);
         uut.connect_all();
-        let loads = loads.to_vec();
-        let n_loads = loads.len() as u64;
-        let (Stop::Pulses { count, limit, .. }, _) = Cube3::bus(part) else {
-            unreachable!("a frame stops on its last pixel")
-        };
-        let out: std::sync::Arc<std::sync::Mutex<(Vec<Record>, u64)>> = Default::default();
+        // Per base plane: its writes, and its pixels and clock limit.
+        let runs: Vec<(Vec<Write>, u64, u64)> = runs
+            .iter()
+            .map(|(part, w)| {
+                let (Stop::Pulses { count, limit, .. }, _) = Cube3::bus(part) else {
+                    unreachable!("a frame stops on its last pixel")
+                };
+                (w.clone(), count, limit)
+            })
+            .collect();
+        let clocks: u64 = runs.iter().map(|(w, _, l)| w.len() as u64 + l + 2).sum();
+        let expected: Vec<(u64, u64)> = runs.iter().map(|r| (r.1, r.2)).collect();
+        let out: Collected = Default::default();
         let sink = out.clone();
         let mut sim = Simulation::new();
         sim.add_clock(5, |x: &mut Box<Cube3System<P, A, B, H>>| {
@@ -316,43 +455,49 @@ impl ForP for RustHdl<'_> {
         });
         sim.add_testbench(move |mut sim: Sim<Cube3System<P, A, B, H>>| {
             let mut x = sim.init()?;
-            for w in &loads {
-                crate::drive_host_port!(x, Some(w));
-                wait_clock_cycle!(sim, clock, x);
-            }
-            crate::drive_host_port!(x, None::<&Write>);
-            let mut seen = 0;
-            let mut t = 0;
-            while seen < count && t < limit {
-                x.start.next = t == 0;
-                wait_clock_cycle!(sim, clock, x);
-                if x.done.val() {
-                    let px = [
-                        x.pixel_r.val().to_u64(),
-                        x.pixel_g.val().to_u64(),
-                        x.pixel_b.val().to_u64(),
-                        x.pixel_a.val().to_u64(),
-                        x.has_sample.val() as u64,
-                    ];
-                    sink.lock().unwrap().0.push(Record {
-                        clock: t,
-                        group: 0,
-                        values: px.map(Some).to_vec(),
-                    });
-                    seen += 1;
+            for (loads, count, limit) in &runs {
+                for w in loads {
+                    crate::drive_host_port!(x, Some(w));
+                    wait_clock_cycle!(sim, clock, x);
                 }
-                t += 1;
+                crate::drive_host_port!(x, None::<&Write>);
+                sink.lock().unwrap().push((vec![], 0));
+                let (mut seen, mut t) = (0, 0);
+                while seen < *count && t < *limit {
+                    x.start.next = t == 0;
+                    wait_clock_cycle!(sim, clock, x);
+                    let mut o = sink.lock().unwrap();
+                    let o = o.last_mut().unwrap();
+                    if x.done.val() {
+                        let px = [
+                            x.pixel_r.val().to_u64(),
+                            x.pixel_g.val().to_u64(),
+                            x.pixel_b.val().to_u64(),
+                            x.pixel_a.val().to_u64(),
+                            x.has_sample.val() as u64,
+                        ];
+                        o.0.push(Record {
+                            clock: t,
+                            group: 0,
+                            values: px.map(Some).to_vec(),
+                        });
+                        seen += 1;
+                    }
+                    t += 1;
+                    o.1 = t;
+                }
             }
-            sink.lock().unwrap().1 = t;
             sim.done(x)
         });
-        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * (limit + n_loads) + 100, trace)?;
+        crate::harness::run_rust_hdl(sim, Box::new(uut), 10 * clocks + 100, trace)?;
         let o = out.lock().unwrap();
-        if o.0.len() as u64 != count {
-            return Err(format!(
-                "the system put out {} pixels of {count} in {limit} clocks",
-                o.0.len()
-            ));
+        for ((rec, _), (count, limit)) in o.iter().zip(&expected) {
+            if rec.len() as u64 != *count {
+                return Err(format!(
+                    "the system put out {} pixels of {count} in {limit} clocks",
+                    rec.len()
+                ));
+            }
         }
         Ok(o.clone())
     }
@@ -381,13 +526,13 @@ impl Arch for Cube3 {
     type Part = Part;
     type Base = BasePlane;
 
-    fn needs(scene: &Scene, camera: &Camera, _dims: [usize; 3]) -> Result<Cube3Build, String> {
-        let parts = scene_parts(scene, camera)?;
+    fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Cube3Build, String> {
+        let parts = scene_parts(scene, camera, None)?;
         let first = parts.first().ok_or("the view needs no base plane")?;
         let hw = scene.hardware;
         Ok(Cube3Build {
             p: hw.pipelines,
-            mode: ModeClass::of(scene.mode),
+            mode: scene.mode,
             shading: first.shader.lighting.is_some(),
             gradient_opacity: first
                 .shader
@@ -399,7 +544,7 @@ impl Arch for Cube3 {
             voxel_bits: hw.voxel_bits,
             frac_bits: hw.frac_bits,
             rgba_bits: hw.rgba_bits,
-            external_memory: parts.iter().any(|p| p.config.fetch.external),
+            n: dims.iter().copied().max().unwrap_or(1),
         })
     }
 
@@ -408,13 +553,22 @@ impl Arch for Cube3 {
     }
 
     fn parse_config(name: &str) -> Result<Cube3Build, String> {
-        Err(format!(
-            "configuration '{name}': a Cube-3 build is made for its scene's base planes (their templates, bounds and groups are built in); give --scene"
-        ))
+        Cube3Build::parse(name)
     }
 
     fn refuses(build: &Cube3Build, needed: &Cube3Build) -> Option<String> {
-        (build != needed).then(|| {
+        if needed.n > build.n {
+            return Some(format!(
+                "a volume side of {}, beyond the configuration's {}",
+                needed.n, build.n
+            ));
+        }
+        (*build
+            != Cube3Build {
+                n: build.n,
+                ..needed.clone()
+            })
+        .then(|| {
             format!(
                 "the scene needs {}, the configuration is {}",
                 needed.name(),
@@ -436,7 +590,16 @@ impl Arch for Cube3 {
                 build.name()
             ));
         }
-        scene_parts(scene, camera)
+        let parts = scene_parts(scene, camera, Some(build.n))?;
+        for (i, p) in parts.iter().enumerate() {
+            if let Some(why) = p.sizes.refuses(&p.config) {
+                return Err(format!(
+                    "configuration {} cannot render base plane {i} of the scene: {why}",
+                    build.name()
+                ));
+            }
+        }
+        Ok(parts)
     }
 
     fn left_out(config: &Cube3Build) -> Vec<LeftOut> {
@@ -444,7 +607,7 @@ impl Arch for Cube3 {
     }
 
     fn external(config: &Cube3Build) -> bool {
-        config.external_memory
+        config.external_memory()
     }
 
     fn modules(part: &Part, vol: &Volume) -> Vec<Vec<u16>> {
@@ -452,15 +615,20 @@ impl Arch for Cube3 {
     }
 
     fn verilog(part: &Part, preload: Option<&[Vec<u16>]>) -> Result<String, String> {
-        verilog(&part.config, preload)
+        verilog(part, preload)
     }
 
     fn design(config: &Cube3Build) -> Result<String, String> {
-        Self::parse_config(&config.name()).map(|_| String::new())
+        Err(format!(
+            "configuration {}: a Cube-3 build takes its tables' shapes from a scene of its class; give --scene too",
+            config.name()
+        ))
     }
 
-    fn same_build(_a: &Part, _b: &Part) -> bool {
-        false
+    /// One simulation runs the base planes of one traversal order (the
+    /// memory holds the volume in that order).
+    fn same_build(a: &Part, b: &Part) -> bool {
+        a.sizes == b.sizes && a.view.perm == b.view.perm && a.view.positive == b.view.positive
     }
 
     fn bus(part: &Part) -> (Stop, Vec<Group>) {
@@ -479,11 +647,13 @@ impl Arch for Cube3 {
     }
 
     fn loads(part: &Part) -> Vec<Write> {
-        let Some(s) = &part.config.pipeline.shading else {
-            return vec![];
-        };
-        let t = s.tables();
-        [t.table_writes(), t.register_writes()].concat()
+        let mut w = part.config.view_writes();
+        if let Some(s) = &part.config.pipeline.shading {
+            let t = s.tables();
+            w.extend(t.table_writes());
+            w.extend(t.register_writes());
+        }
+        w
     }
 
     fn rust_hdl(
@@ -491,12 +661,14 @@ impl Arch for Cube3 {
         modules: &[Vec<u16>],
         trace: Option<&Path>,
     ) -> Result<Vec<(Vec<Record>, u64)>, String> {
-        // Each base plane is a build of its own (`same_build`).
-        runs.iter()
-            .map(|(part, loads)| {
-                with_p(part.config.pipeline.p, RustHdl(part, modules, loads, trace))?
-            })
-            .collect()
+        let p = runs
+            .first()
+            .ok_or("no base plane to simulate")?
+            .0
+            .config
+            .pipeline
+            .p;
+        with_p(p, RustHdl(runs, modules, trace))?
     }
 
     fn decode(part: &Part, records: &[Record]) -> Result<BasePlane, String> {
@@ -576,11 +748,11 @@ impl Arch for Cube3 {
         terms
     }
 
-    fn buffer_memory(_config: &Cube3Build, parts: &[Part]) -> BufferMemory {
-        // Base planes run one after another on one system: the largest
-        // one's 2-DSBs are what is built. Each holds a PRP of `R` rays,
-        // `G·P` 16-bit words a ray, where the least is `K` planes of voxel
-        // bits.
+    fn buffer_memory(config: &Cube3Build, parts: &[Part]) -> BufferMemory {
+        // The build's 2-DSBs hold the longest PRP of its class: `R` rays of
+        // `G·P` 16-bit words; the scene's largest base plane needs `K`
+        // planes of voxel bits a ray.
+        let s = config.sizes();
         let c = parts
             .iter()
             .map(|d| &d.config)
@@ -589,7 +761,7 @@ impl Arch for Cube3 {
         let f = &c.fetch;
         BufferMemory {
             what: "three 2-D skewed buffers",
-            bits: (3 * f.p * f.rays * f.segments * 16) as u64,
+            bits: (3 * s.p * s.rays() * s.segments() * 16) as u64,
             minimum_bits: (3 * f.rays * f.dims[2]) as u64 * c.pipeline.voxel_bits as u64,
         }
     }
@@ -704,7 +876,7 @@ impl Arch for Cube3 {
         serde_json::json!({
             "configuration": config.name(),
             "pipelines": config.p,
-            "modes": config.mode.modes(),
+            "mode": mode_name(config.mode),
             "shading": config.shading,
             "gradient_opacity": config.gradient_opacity,
             "rays": if config.perspective { "perspective" } else { "parallel" },
@@ -712,7 +884,8 @@ impl Arch for Cube3 {
             "voxel_bits": config.voxel_bits,
             "frac_bits": config.frac_bits,
             "rgba_bits": config.rgba_bits,
-            "memory": if config.external_memory { "external" } else { "on-chip" },
+            "largest_volume_side": config.n,
+            "memory": if config.external_memory() { "external" } else { "on-chip" },
         })
     }
 }
@@ -743,6 +916,38 @@ impl Cube3 {
             height,
             pixels: vec![],
             cast: vec![],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn configuration_names_read_back() {
+        for name in [
+            "composite_shaded_n12_p4_32",
+            "first_opaque_gm_perspective_n6_p2_20",
+            "minip_n12_p8_256_v16_c12",
+            "xray_n12_p2_256",
+        ] {
+            assert_eq!(Cube3Build::parse(name).map(|b| b.name()), Ok(name.into()));
+        }
+        let b = Cube3Build::parse("first_opaque_gm_perspective_n6_p2_20").unwrap();
+        assert_eq!(
+            (b.mode, b.gradient_opacity, b.perspective, b.p, b.n),
+            (Mode::FirstOpaque, true, true, 2, 20)
+        );
+        for (bad, why) in [
+            ("mip_n12_p4", "the largest volume side"),
+            ("mip_n26_p4_32", "26-neighbourhood"),
+            ("glow_n12_p4_32", "the mode is"),
+            ("mip_n12_p4_32_q3", "unknown field 'q3'"),
+            ("mip_shaded_n12_p4_32_v8", "it reads as"),
+        ] {
+            let e = Cube3Build::parse(bad).unwrap_err();
+            assert!(e.contains(why), "{bad}: {e}");
         }
     }
 }

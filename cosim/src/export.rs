@@ -73,9 +73,8 @@ pub struct ExportScene<'a> {
 /// Export build `build` of architecture `A` into `out`: its stage files,
 /// lint waivers and `manifest.json` (its configuration, parameters and the
 /// units left out; with a scene, the scene's parts and the register writes
-/// each takes). A build whose views are all registers is one design, in
-/// `out`; an architecture that builds a view's constants into its
-/// hardware (Cube-3 for now) exports the scene's parts, in `out/<PART><i>`.
+/// each takes), one design in `out`. An architecture that takes its
+/// tables' shapes from a scene (Cube-3) needs the scene to build it.
 /// The directory is built beside `out` and renamed over it, so it is
 /// written whole or not at all. Returns the manifest.
 pub fn write_export<A: Arch>(
@@ -88,22 +87,14 @@ pub fn write_export<A: Arch>(
         Some(s) => A::parts(s.scene, s.camera, s.dims, build)?,
         None => vec![],
     };
-    // One design for the build, or one a part.
+    // One design for the build: every part of it renders on it, its view
+    // in registers and tables.
     let designs: Vec<(String, String)> = match A::design(build) {
         Ok(v) => vec![(".".to_string(), v)],
-        Err(e) if parts.is_empty() => return Err(e),
-        Err(_) => parts
-            .iter()
-            .enumerate()
-            .map(|(i, p)| {
-                let sub = if parts.len() == 1 {
-                    ".".to_string()
-                } else {
-                    format!("{}{i}", A::PART)
-                };
-                A::verilog(p, None).map(|v| (sub, v))
-            })
-            .collect::<Result<_, _>>()?,
+        Err(e) => match parts.first() {
+            Some(p) => vec![(".".to_string(), A::verilog(p, None)?)],
+            None => return Err(e),
+        },
     };
     let left_out = A::left_out(build);
     write_dir(out, |tmp| {

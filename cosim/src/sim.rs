@@ -54,8 +54,10 @@ pub struct Outcome<A: Arch> {
 pub struct Frames<A: Arch> {
     /// The build's configuration.
     pub config: A::Config,
-    /// Distinct designs simulated: 1 when every part's view is registers.
-    pub designs: usize,
+    /// Simulations of the one design: one per run of parts that share the
+    /// memory's contents (Cube-3 loads the volume in each base plane's
+    /// traversal order).
+    pub memory_loads: usize,
     pub frames: Vec<Outcome<A>>,
 }
 
@@ -187,7 +189,7 @@ pub fn simulate_frames<A: Arch>(
             }
         }
     }
-    let designs = groups.len();
+    let memory_loads = groups.len();
     if let Some(path) = trace {
         let top = match engine {
             Engine::RustHdl => "uut",
@@ -261,7 +263,7 @@ pub fn simulate_frames<A: Arch>(
     }
     Ok(Frames {
         config,
-        designs,
+        memory_loads,
         frames: out,
     })
 }

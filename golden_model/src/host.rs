@@ -14,6 +14,7 @@
 //! | `0x020000 + i` | gradient-opacity LUT entry `(row << 4) | bin`: alpha |
 //! | `0x030000 + i` | diffuse term by cosine index `i` |
 //! | `0x031000 + i` | specular term by cosine index `i` |
+//! | `0x040000 ..` | Cube-3's view tables ([`ViewTable`]) |
 //!
 //! A table occupies the low addresses of its window; each unit that holds a
 //! copy of a table (a lane's shader, say) takes every write to its window,
@@ -65,6 +66,32 @@ pub enum Reg {
     Beats = 0x29,
     /// the order and the scalar mode: `front_to_back | minip << 1`.
     Order = 0x2a,
+    /// Cube-3's view (`hdl::cube3::config::Cube3SystemConfig::view_writes`):
+    /// the stream `rays | scanlines << 16 | segments << 32 | planes written
+    /// << 48`;
+    C3Stream = 0x30,
+    /// the traversal dims `n_x | n_y << 16 | K << 32`;
+    C3Dims = 0x31,
+    /// the memory's strides `b | b·n_y << 16`, and the rows' and
+    /// templates' strides (perspective: `K + 1` and `G`, parallel: 0)
+    /// `<< 32`, `<< 48`;
+    C3Address = 0x32,
+    /// the stream's first ray and scanline and the view's offset
+    /// `u0 | v0 << 16 | offset << 32` (two's complement);
+    C3Origin = 0x33,
+    /// the fetch's schedule: `period - 1 | last chunk << 16 | last plane
+    /// << 32`;
+    C3Schedule = 0x34,
+    /// the cast rays and scanlines `ray_lo | ray_span << 16 | line_lo << 32
+    /// | line_span << 48`;
+    C3Cast = 0x35,
+    /// the delay lines' lengths less one: the units' counters, the TRILIN
+    /// cells, the ABC centre's counters and the flags
+    /// (`G | G - 2 << 16 | trilin latency + G << 32 | ABC delay - 1 << 48`);
+    C3Delays = 0x36,
+    /// the ABC sample-plane lines' lengths less one: `G - 3 | T - 2G - 3
+    /// << 16`.
+    C3Lines = 0x37,
 }
 
 impl Reg {
@@ -98,15 +125,75 @@ impl Table {
 
     /// The writes that load `words` into the table from entry 0.
     pub fn writes(self, words: impl IntoIterator<Item = u64>) -> Vec<Write> {
-        words
-            .into_iter()
-            .enumerate()
-            .map(|(i, data)| Write {
-                address: self.base() + i as u32,
-                data,
-            })
-            .collect()
+        window_writes(self.base(), words)
     }
+}
+
+/// Cube-3's view tables, by window: each unit's (lane's) copy at its own
+/// window where the lanes hold different words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ViewTable {
+    /// X-ray: opacity by intensity row.
+    XrayOpacity,
+    /// The ABC centre ray's increments `DX`, `DY` (sign in bit 16) by
+    /// stream ray and scanline (one entry for a parallel view).
+    Dx,
+    Dy,
+    /// Parallel: `X_k(u) - u` by plane. Perspective: unused.
+    PosX,
+    /// `Y_k(v) - v` by plane (parallel) or scanline and plane.
+    PosY,
+    /// Perspective: each de-fanning group's `plane | first ray << 16`.
+    Groups,
+    /// Lane `j`'s inside bounds and inner bounds by segment: `ray_lo |
+    /// ray_hi << 16 | line_lo << 32 | line_hi << 48`.
+    Bounds(usize),
+    Inner(usize),
+    /// Lane `j`'s template weights by (ray or scanline and) segment.
+    Wx(usize),
+    Wy(usize),
+    /// Perspective: lane `j`'s voxel `x` of each group (bit 16: it holds a
+    /// ray).
+    GroupX(usize),
+}
+
+impl ViewTable {
+    pub fn base(self) -> u32 {
+        let lane = |base: u32, j: usize, stride: u32| {
+            assert!(j < 8, "a table of lane {j}: at most 8 lanes");
+            base + j as u32 * stride
+        };
+        match self {
+            ViewTable::XrayOpacity => 0x04_0000,
+            ViewTable::Dx => 0x05_0000,
+            ViewTable::Dy => 0x06_0000,
+            ViewTable::PosX => 0x07_0000,
+            ViewTable::PosY => 0x08_0000,
+            ViewTable::Groups => 0x09_0000,
+            ViewTable::Bounds(j) => lane(0x0a_0000, j, 0x100),
+            ViewTable::Inner(j) => lane(0x0a_1000, j, 0x100),
+            ViewTable::Wx(j) => lane(0x10_0000, j, 0x1_0000),
+            ViewTable::Wy(j) => lane(0x18_0000, j, 0x1_0000),
+            ViewTable::GroupX(j) => lane(0x20_0000, j, 0x1_0000),
+        }
+    }
+
+    /// The writes that load `words` into the table from entry 0.
+    pub fn writes(self, words: impl IntoIterator<Item = u64>) -> Vec<Write> {
+        window_writes(self.base(), words)
+    }
+}
+
+/// The writes that load `words` into a window from `base`.
+fn window_writes(base: u32, words: impl IntoIterator<Item = u64>) -> Vec<Write> {
+    words
+        .into_iter()
+        .enumerate()
+        .map(|(i, data)| Write {
+            address: base + i as u32,
+            data,
+        })
+        .collect()
 }
 
 /// Values in 16-bit fields, the first lowest.
@@ -251,5 +338,13 @@ mod tests {
         assert!(Table::Classification.base() + 4096 <= Table::GradientOpacity.base());
         assert!(Table::GradientOpacity.base() + 65536 <= Table::Diffuse.base());
         assert!(Table::Diffuse.base() + 1024 <= Table::Specular.base());
+        // Cube-3's view tables lie above them, each lane's in its own
+        // window, aligned to its size.
+        assert_eq!(ViewTable::Bounds(3).base(), 0x0a_0300);
+        assert_eq!(ViewTable::Wy(7).base(), 0x1f_0000);
+        assert!(Table::Specular.base() + 4096 <= ViewTable::XrayOpacity.base());
+        assert!(ViewTable::Bounds(7).base() + 256 <= ViewTable::Inner(0).base());
+        assert!(ViewTable::Inner(7).base() + 256 <= ViewTable::Wx(0).base());
+        assert!(ViewTable::GroupX(7).base() + 0x1_0000 <= 1 << ADDRESS_BITS);
     }
 }

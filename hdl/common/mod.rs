@@ -20,6 +20,7 @@ pub mod shader;
 pub mod square;
 pub mod table;
 pub mod unorm;
+pub mod view_rom;
 
 use rust_hdl::prelude::*;
 

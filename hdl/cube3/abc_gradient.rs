@@ -38,6 +38,9 @@ pub fn centre(scanline: usize, segments: usize) -> usize {
 #[derive(LogicBlock)]
 pub struct AbcUnit<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The sample-plane lines' lengths less one (`PlaneTaps`).
+    pub ray_last: Signal<In, Bits<H>>,
+    pub line_last: Signal<In, Bits<H>>,
     pub sample: [Signal<In, Bits<32>>; P],
     /// The increments of the ray at the centre tap.
     pub dx_neg: Signal<In, Bit>,
@@ -64,8 +67,8 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
     const P: usize = P;
     const P_END: usize = P + 1;
 
-    /// For a scanline every `scanline` clocks and rays of `segments`; `n12`: the
-    /// 12-neighbourhood, else the 6.
+    /// For a scanline every `scanline` clocks and rays of `segments` at
+    /// most; `n12`: the 12-neighbourhood, else the 6.
     pub fn new(
         scanline: usize,
         segments: usize,
@@ -107,6 +110,8 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
         }
         Ok(AbcUnit {
             clock: Default::default(),
+            ray_last: Default::default(),
+            line_last: Default::default(),
             sample: std::array::from_fn(|_| Default::default()),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
@@ -135,6 +140,8 @@ impl<const P: usize, const H: usize> Logic for AbcUnit<P, H> {
     fn update(&mut self) {
         for i in 0..P {
             self.lanes[i].clock.next = self.clock.val();
+            self.lanes[i].ray_last.next = self.ray_last.val();
+            self.lanes[i].line_last.next = self.line_last.val();
             self.estimators[i].clock.next = self.clock.val();
             self.lanes[i].sample.next = self.sample[i].val();
             // The lane's own taps: S(±1, 0, 0) at (1, 0 | 2, 1), S(0, ±1, 0)

@@ -23,13 +23,14 @@
 //!
 //! - *Parallel* (a shear): `X_k(u) = u + pos_x[k]`, so every group is a
 //!   chunk of `P` rays whose `x_j = x_0 + j` are consecutive:
-//!   `K_w·ceil(R / P)` clocks a PRP, from counters and one ROM entry a
+//!   `K_w·ceil(R / P)` clocks a PRP, from counters and one table entry a
 //!   plane.
 //! - *Perspective* (de-fanning, Fig. 3): the rays diverge from the eye, so
 //!   `X_k` grows by one or more from ray to ray and voxels between them are
 //!   not fetched. A group is as many rays (up to `P`) as have their `x`
 //!   within `P` consecutive voxels, which makes it conflict-free; the
-//!   host lists the groups of every plane ([`Group`]) and ROMs hold them,
+//!   host lists the groups of every plane ([`Group`]) and loads them into
+//!   tables,
 //!   one entry a clock, with `Y_k(v)` by scanline and plane. A PRP takes as
 //!   many clocks as groups.
 //!
@@ -55,11 +56,13 @@
 //! writes (the groups, and the read latency) and the reads (`R·G` and the
 //! read latency): [`BeamFetchConfig::period`].
 
-use super::config::{BeamFetchConfig, GROUP_BITS, PLANE_BITS};
+use super::config::{Cube3Sizes, GROUP_BITS, PLANE_BITS};
 use super::groups::Groups;
 use super::schedule::Schedule;
 use crate::common::ram::DepthRam;
-use crate::common::rom16;
+use crate::common::regs::{Regs, ADDRESS_BITS};
+use crate::common::view_rom::ViewRom;
+use golden_model::host::{Reg, ViewTable};
 use rust_hdl::prelude::*;
 
 /// The beam fetch for `P` lanes: `A`-bit memory and `B`-bit 2-DSB
@@ -67,6 +70,10 @@ use rust_hdl::prelude::*;
 #[derive(LogicBlock)]
 pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port: the view's registers and tables.
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     pub start: Signal<In, Bit>,
     /// A segment of `cur` and `next` is out this clock.
     pub valid: Signal<Out, Bit>,
@@ -93,8 +100,10 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     group: Groups<P>,
     /// `Y_k(v) - v` by plane (parallel), or by scanline and plane at
     /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`).
-    pos_y: ROM<Bits<16>, 32>,
-    row_stride: Constant<Bits<16>>,
+    pos_y: ViewRom<16, GROUP_BITS>,
+    /// `C3Stream`, `C3Dims`, `C3Address`, `C3Origin`.
+    regs: Regs<4>,
+    row_stride: Signal<Local, Bits<16>>,
     row_entry: Signal<Local, Bits<32>>,
     schedule: Schedule,
     /// The write side: this clock's plane, row and first ray, and per lane
@@ -136,57 +145,62 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     one: Constant<Bits<16>>,
     mask: Constant<Bits<16>>,
     shift: Constant<Bits<16>>,
-    n_x: Constant<Bits<16>>,
-    n_y: Constant<Bits<16>>,
-    n_k: Constant<Bits<16>>,
-    row_words: Constant<Bits<16>>,
-    plane_words: Constant<Bits<16>>,
-    v0: Constant<Bits<16>>,
-    rays: Constant<Bits<16>>,
-    segments: Constant<Bits<16>>,
+    n_x: Signal<Local, Bits<16>>,
+    n_y: Signal<Local, Bits<16>>,
+    n_k: Signal<Local, Bits<16>>,
+    row_words: Signal<Local, Bits<16>>,
+    plane_words: Signal<Local, Bits<16>>,
+    v0: Signal<Local, Bits<16>>,
+    rays: Signal<Local, Bits<16>>,
+    segments: Signal<Local, Bits<16>>,
 }
 
 impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
-    pub fn new(c: &BeamFetchConfig) -> Result<BeamFetch<P, A, B>, String> {
-        let [nx, ny, nk] = c.dims;
-        let b = nx.div_ceil(P);
-        if c.p != P || !P.is_power_of_two() || P > 8 {
+    /// For the views of `s`.
+    pub fn new(s: &Cube3Sizes) -> Result<BeamFetch<P, A, B>, String> {
+        if s.p != P || !P.is_power_of_two() || P > 8 {
             return Err(format!(
                 "hardware.pipelines {} unsupported (1, 2, 4 or 8)",
-                c.p
+                s.p
             ));
         }
-        if b * ny >= 1 << 16
-            || (!c.external && c.module_words() > 1 << A)
-            || c.rays * c.segments > 1 << B
+        let n = s.n;
+        let buffer_words = s.rays() * s.segments();
+        if s.segments() * n >= 1 << 16
+            || (!s.external() && s.module_words() > 1 << A)
+            || buffer_words > 1 << B
         {
             return Err(format!(
-                "a {nx}x{ny}x{nk} volume needs more memory than this build's {A}-bit modules and {B}-bit buffers"
+                "volumes of {n} a side need more memory than this build's {A}-bit modules and {B}-bit buffers"
             ));
         }
-        if nk >= 1 << PLANE_BITS {
+        if s.planes() > 1 << PLANE_BITS {
             return Err(format!(
-                "{nk} planes: the templates hold at most {}",
-                (1 << PLANE_BITS) - 1
+                "{} planes: the templates hold at most {}",
+                s.planes(),
+                1 << PLANE_BITS
             ));
         }
-        if c.groups.len() > 1 << GROUP_BITS || c.pos_y.len() > 1 << GROUP_BITS {
+        let rows = if s.perspective {
+            (s.scanlines() + 1) * s.planes()
+        } else {
+            s.planes()
+        };
+        if s.groups() > 1 << GROUP_BITS || rows > 1 << GROUP_BITS {
             return Err(format!(
-                "{} groups of rays and {} rows: the perspective templates hold at most 2^{GROUP_BITS}",
-                c.groups.len(),
-                c.pos_y.len()
+                "{} groups of rays and {rows} rows: the perspective templates hold at most 2^{GROUP_BITS}",
+                s.groups()
             ));
         }
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
-        let words = if c.external {
-            2
-        } else {
-            c.module_words().max(2)
-        };
+        let words = if s.external() { 2 } else { s.module_words() };
         let ram = || DepthRam::with_words(words);
-        let buffer = || DepthRam::with_words((c.rays * c.segments).max(2));
+        let buffer = || DepthRam::with_words(buffer_words);
         Ok(BeamFetch {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             start: Default::default(),
             valid: Default::default(),
             cur: std::array::from_fn(|_| Default::default()),
@@ -197,17 +211,20 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
-            external: Constant::new(c.external),
+            external: Constant::new(s.external()),
             memory: std::array::from_fn(|_| ram()),
             word: std::array::from_fn(|_| Default::default()),
             buffer0: std::array::from_fn(|_| buffer()),
             buffer1: std::array::from_fn(|_| buffer()),
             buffer2: std::array::from_fn(|_| buffer()),
-            group: Groups::new(c),
-            pos_y: rom16(&c.pos_y),
+            group: Groups::new(s),
+            pos_y: ViewRom::new(ViewTable::PosY.base(), rows),
+            regs: Regs::new(
+                [Reg::C3Stream, Reg::C3Dims, Reg::C3Address, Reg::C3Origin].map(Reg::address),
+            ),
             row_entry: Default::default(),
-            row_stride: k(if c.perspective() { nk as i64 + 1 } else { 0 }),
-            schedule: Schedule::new(c),
+            row_stride: Default::default(),
+            schedule: Schedule::default(),
             row: Default::default(),
             lane_ray: std::array::from_fn(|_| Default::default()),
             lane_inside: std::array::from_fn(|_| Default::default()),
@@ -240,14 +257,14 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             one: k(1),
             mask: k(P as i64 - 1),
             shift: k(P.trailing_zeros() as i64),
-            n_x: k(nx as i64),
-            n_y: k(ny as i64),
-            n_k: k(nk as i64),
-            row_words: k(b as i64),
-            plane_words: k((b * ny) as i64),
-            v0: k(c.v0 as i64),
-            rays: k(c.rays as i64),
-            segments: k(c.segments as i64),
+            n_x: Default::default(),
+            n_y: Default::default(),
+            n_k: Default::default(),
+            row_words: Default::default(),
+            plane_words: Default::default(),
+            v0: Default::default(),
+            rays: Default::default(),
+            segments: Default::default(),
         })
     }
 
@@ -263,14 +280,40 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, plane_q, write_q, buffer_q, read_q, lane_q, cur_q, next_q);
+        // The view's registers.
+        self.regs.clock.next = self.clock.val();
+        self.regs.host_write.next = self.host_write.val();
+        self.regs.host_address.next = self.host_address.val();
+        self.regs.host_data.next = self.host_data.val();
+        self.rays.next = self.regs.q[0].val().get_bits::<16>(0);
+        self.segments.next = self.regs.q[0].val().get_bits::<16>(32);
+        self.n_x.next = self.regs.q[1].val().get_bits::<16>(0);
+        self.n_y.next = self.regs.q[1].val().get_bits::<16>(16);
+        self.n_k.next = self.regs.q[1].val().get_bits::<16>(32);
+        self.row_words.next = self.regs.q[2].val().get_bits::<16>(0);
+        self.plane_words.next = self.regs.q[2].val().get_bits::<16>(16);
+        self.row_stride.next = self.regs.q[2].val().get_bits::<16>(32);
+        self.v0.next = self.regs.q[3].val().get_bits::<16>(16);
+        self.pos_y.clock.next = self.clock.val();
+        self.pos_y.host_write.next = self.host_write.val();
+        self.pos_y.host_address.next = self.host_address.val();
+        self.pos_y.host_data.next = self.host_data.val();
+        self.group.clock.next = self.clock.val();
+        self.group.host_write.next = self.host_write.val();
+        self.group.host_address.next = self.host_address.val();
+        self.group.host_data.next = self.host_data.val();
+        self.group.u0.next = self.regs.q[3].val().get_bits::<16>(0);
         self.schedule.clock.next = self.clock.val();
         self.schedule.start.next = self.start.val();
+        self.schedule.host_write.next = self.host_write.val();
+        self.schedule.host_address.next = self.host_address.val();
+        self.schedule.host_data.next = self.host_data.val();
         // This clock's group of rays, and its beam's row.
         self.group.chunk.next = self.schedule.chunk.val();
         self.group.plane_count.next = self.schedule.plane.val();
         self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
             + bit_cast::<32, 16>(self.group.plane.val());
-        self.pos_y.address.next = self.row_entry.val();
+        self.pos_y.address.next = self.row_entry.val().get_bits::<GROUP_BITS>(0);
         self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
         for j in 0..P {
             self.lane_ray[j].next = self.group.first_ray.val() + self.index[j].val();

@@ -8,17 +8,18 @@
 use golden_model::cube3::plan::{sample_pos, Neighbourhood, Template, View};
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::shade::Shader as Shading;
+use golden_model::host::{Reg, ViewTable, Write};
 use scene::volume::Volume;
 use scene::Mode;
 
-/// Address bits of the per-lane bounds ROMs: up to 256 segments a ray.
+/// Address bits of the per-lane bounds tables: up to 256 segments a ray.
 pub const SEGMENT_BITS: usize = 8;
-/// Address bits of the template ROMs: up to 2^16 weights a lane.
+/// Address bits of the template tables: up to 2^16 weights a lane.
 pub const TEMPLATE_BITS: usize = 16;
 
-/// Address bits of the parallel template ROM: up to 1023 planes.
+/// Address bits of the parallel `pos_x` table: up to 1024 planes.
 pub const PLANE_BITS: usize = 10;
-/// Address bits of the perspective group and row ROMs.
+/// Address bits of the perspective group and row tables.
 pub const GROUP_BITS: usize = 16;
 
 /// One clock of a perspective PRP's writes: plane `plane`, stream rays
@@ -50,8 +51,6 @@ pub struct BeamFetchConfig {
     pub pos_y: Vec<i32>,
     /// Perspective: the groups of every written plane, in order.
     pub groups: Vec<Group>,
-    /// The volume lives in external memory, not in on-chip modules.
-    pub external: bool,
 }
 
 impl BeamFetchConfig {
@@ -74,7 +73,6 @@ impl BeamFetchConfig {
             pos_x: vec![],
             pos_y: vec![],
             groups: vec![],
-            external: false,
         };
         match (&view.x, &view.y) {
             (Template::Parallel { pos: px, .. }, Template::Parallel { pos: py, .. }) => {
@@ -121,7 +119,7 @@ impl BeamFetchConfig {
         Ok(c)
     }
 
-    /// A perspective view: the groups and rows come from ROMs.
+    /// A perspective view: the groups and rows come from tables.
     pub fn perspective(&self) -> bool {
         !self.groups.is_empty()
     }
@@ -178,7 +176,7 @@ impl BeamFetchConfig {
     }
 }
 
-/// Address bits of the X-ray opacity ROM (`lut::OpacityLut` rows).
+/// Address bits of the X-ray opacity table (`lut::OpacityLut` rows).
 pub const OPACITY_BITS: usize = 12;
 
 /// Everything a Cube-3 pipeline is built from.
@@ -198,10 +196,6 @@ pub struct Cube3Config {
     /// ABC unit's sample-plane distance).
     pub scanline_clocks: usize,
     pub offset: u32,
-    /// Every sample sits on the grid (`View::on_grid`): the weights and the
-    /// offset are 0, so TRILIN's lerps pass their first voxel and synthesis
-    /// folds their arithmetic away.
-    pub on_grid: bool,
     pub weight_bits: u32,
     pub voxel_bits: u32,
     pub sample_frac: u32,
@@ -362,7 +356,6 @@ impl Cube3Config {
             segments,
             scanline_clocks: rays * segments,
             offset: view.offset,
-            on_grid: view.on_grid,
             weight_bits: w,
             voxel_bits: widths.voxel_bits,
             sample_frac: widths.sample_frac(),
@@ -485,5 +478,273 @@ impl Cube3SystemConfig {
     pub fn clocks(&self) -> usize {
         let last_entry = self.first_entry() + self.pipeline.stream_clocks() - 1;
         last_entry + self.pipeline.pixel_delay() + 1
+    }
+}
+
+/// What a Cube-3 build is sized for: every view, transfer function and
+/// light of volumes up to `n` voxels a side, through `p` units. The memory
+/// depths, delay lines and view tables take these bounds; the view's own
+/// values are registers and tables the host writes
+/// ([`Cube3SystemConfig::view_writes`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Cube3Sizes {
+    pub n: usize,
+    pub p: usize,
+    pub perspective: bool,
+    /// The ABC units are built: a halo scanline each side.
+    pub gradients: bool,
+}
+
+impl Cube3Sizes {
+    /// Segments of the longest ray: `ceil(n / p)`.
+    pub fn segments(&self) -> usize {
+        self.n.div_ceil(self.p)
+    }
+
+    /// Planes of a PRP: `K + 1`.
+    pub fn planes(&self) -> usize {
+        self.n + 1
+    }
+
+    /// Stream rays: a base plane's rays span at most `2n - 1` pixels (a
+    /// sheared or diverging ray moves at most one voxel a plane), and the
+    /// stream has two more each side.
+    pub fn rays(&self) -> usize {
+        2 * self.n + 4
+    }
+
+    /// Stream scanlines, the gradients' halo included.
+    pub fn scanlines(&self) -> usize {
+        self.rays() + 2 * self.gradients as usize
+    }
+
+    /// Perspective de-fanning groups of a PRP: at most a ray each.
+    pub fn groups(&self) -> usize {
+        if self.perspective {
+            self.planes() * self.rays()
+        } else {
+            0
+        }
+    }
+
+    /// The longest scanline period ([`BeamFetchConfig::period`]).
+    pub fn period(&self) -> usize {
+        let writes = if self.perspective {
+            self.groups()
+        } else {
+            self.planes() * self.rays().div_ceil(self.p)
+        };
+        (writes + 1).max(self.rays() * self.segments() + 1)
+    }
+
+    /// Words of a memory module: `ceil(n / p)·n²`.
+    pub fn module_words(&self) -> usize {
+        self.segments() * self.n * self.n
+    }
+
+    /// The volume lives in external memory (a module beyond 2^16 words).
+    pub fn external(&self) -> bool {
+        self.module_words() > 1 << 16
+    }
+
+    /// Why this build cannot render the base plane `c`, if it cannot.
+    pub fn refuses(&self, c: &Cube3SystemConfig) -> Option<String> {
+        let (f, q) = (&c.fetch, &c.pipeline);
+        let checks = [
+            (
+                f.dims.iter().copied().max().unwrap_or(0),
+                self.n,
+                "a volume side",
+            ),
+            (f.segments, self.segments(), "segments a ray"),
+            (f.rays, self.rays(), "stream rays"),
+            (
+                f.scanlines.max(q.scanlines),
+                self.scanlines(),
+                "stream scanlines",
+            ),
+            (f.groups.len(), self.groups(), "de-fanning groups"),
+            (f.period(), self.period(), "clocks a scanline period"),
+        ];
+        if f.perspective() != self.perspective || (q.abc.is_some() != self.gradients) {
+            return Some("another projection or gradient unit".into());
+        }
+        checks
+            .iter()
+            .find(|(v, max, _)| v > max)
+            .map(|(v, max, what)| format!("{v} {what}, the build holds {max}"))
+    }
+}
+
+/// A 16-bit field of a register word.
+fn field(v: i64, at: u32) -> u64 {
+    ((v as u64) & 0xffff) << at
+}
+
+impl BeamFetchConfig {
+    /// The beam fetch's view words: the stream, dims, strides, origin
+    /// (with the pipeline's `offset`) and schedule registers, the `pos_x`
+    /// and `pos_y` tables and a perspective view's groups.
+    pub fn view_writes(&self, offset: u32) -> Vec<Write> {
+        let f = self;
+        let [nx, ny, nk] = f.dims.map(|d| d as i64);
+        let (g, p) = (f.segments as i64, f.p);
+        let b = (nx + p as i64 - 1) / p as i64;
+        let persp = f.perspective();
+        let (last_chunk, last_plane) = if persp {
+            (f.groups.len() as i64 - 1, 0)
+        } else {
+            (f.rays.div_ceil(p) as i64 - 1, f.planes_written() as i64 - 1)
+        };
+        let mut w = vec![
+            reg(
+                Reg::C3Stream,
+                field(f.rays as i64, 0)
+                    | field(f.scanlines as i64, 16)
+                    | field(g, 32)
+                    | field(f.planes_written() as i64, 48),
+            ),
+            reg(Reg::C3Dims, field(nx, 0) | field(ny, 16) | field(nk, 32)),
+            reg(
+                Reg::C3Address,
+                field(b, 0)
+                    | field(b * ny, 16)
+                    | field(if persp { nk + 1 } else { 0 }, 32)
+                    | field(if persp { g } else { 0 }, 48),
+            ),
+            reg(
+                Reg::C3Origin,
+                field(f.u0 as i64, 0) | field(f.v0 as i64, 16) | field(offset as i64, 32),
+            ),
+            reg(
+                Reg::C3Schedule,
+                field(f.period() as i64 - 1, 0) | field(last_chunk, 16) | field(last_plane, 32),
+            ),
+        ];
+        let word16 = |v: &[i32]| v.iter().map(|&x| (x as u64) & 0xffff).collect::<Vec<_>>();
+        w.extend(ViewTable::PosX.writes(word16(&f.pos_x)));
+        w.extend(ViewTable::PosY.writes(word16(&f.pos_y)));
+        if persp {
+            w.extend(
+                ViewTable::Groups.writes(
+                    f.groups
+                        .iter()
+                        .map(|grp| grp.plane as u64 | (grp.ray as u64) << 16),
+                ),
+            );
+            for j in 0..p {
+                w.extend(
+                    ViewTable::GroupX(j).writes(
+                        f.groups
+                            .iter()
+                            .map(|grp| grp.x.get(j).map_or(0, |&x| (x as u64 & 0xffff) | 1 << 16)),
+                    ),
+                );
+            }
+        }
+        w
+    }
+}
+
+impl Cube3Config {
+    /// The pipeline's own view words: the cast-ray, delay and line
+    /// registers, the X-ray opacity table, the increments, and each
+    /// lane's bounds and templates.
+    pub fn view_writes(&self) -> Vec<Write> {
+        let c = self;
+        let (g, p) = (c.segments as i64, c.p);
+        let centre_last = if c.perspective {
+            (super::trilin::LATENCY as i64 + g + 1) - 1
+        } else {
+            0
+        };
+        let lines = match c.abc {
+            Some(_) => super::plane_taps::line_lengths(c.scanline_clocks, c.segments)
+                .map_or([1, 1], |l| [l[0] as i64 - 1, l[2] as i64 - 1]),
+            None => [0, 0],
+        };
+        let span = |lo: u32, hi: u32| hi.wrapping_sub(lo) as i64;
+        let mut w = vec![
+            reg(
+                Reg::C3Cast,
+                field(c.cast[0] as i64, 0)
+                    | field(span(c.cast[0], c.cast[1]), 16)
+                    | field(c.cast[2] as i64, 32)
+                    | field(span(c.cast[2], c.cast[3]), 48),
+            ),
+            reg(
+                Reg::C3Delays,
+                field(super::trilin_lanes::cell_delay(c.segments) as i64 - 1, 0)
+                    | field(g - 2, 16)
+                    | field(centre_last, 32)
+                    | field(c.abc_delay().max(1) as i64 - 1, 48),
+            ),
+            reg(Reg::C3Lines, field(lines[0], 0) | field(lines[1], 16)),
+        ];
+        if let Some((table, _)) = &c.opacity {
+            w.extend(ViewTable::XrayOpacity.writes(table.iter().map(|&v| v as u64)));
+        }
+        if let Some(a) = &c.abc {
+            let inc = |d: &[i32]| -> Vec<u64> {
+                d.iter()
+                    .map(|&d| d.unsigned_abs() as u64 | ((d < 0) as u64) << 16)
+                    .collect()
+            };
+            w.extend(ViewTable::Dx.writes(inc(&a.dx)));
+            w.extend(ViewTable::Dy.writes(inc(&a.dy)));
+        }
+        for j in 0..p {
+            let bound = |b: &[[u32; 4]], k: usize| {
+                let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
+                rl as u64 | (rh as u64) << 16 | (vl as u64) << 32 | (vh as u64) << 48
+            };
+            let by_segment = |b: &[[u32; 4]]| {
+                (0..c.segments)
+                    .map(|s| bound(b, s * p + j))
+                    .collect::<Vec<_>>()
+            };
+            w.extend(ViewTable::Bounds(j).writes(by_segment(&c.bounds)));
+            if c.abc.is_some() {
+                w.extend(ViewTable::Inner(j).writes(by_segment(&c.inner)));
+            }
+            // Lane j's weight k = s·P + j of ray (scanline) r at r·G + s.
+            let template = |wt: &[u32], lines: usize| {
+                let nk = wt.len() / lines;
+                (0..lines * c.segments)
+                    .map(|a| {
+                        let (r, k) = (a / c.segments, (a % c.segments) * p + j);
+                        if k < nk {
+                            wt[r * nk + k] as u64
+                        } else {
+                            0
+                        }
+                    })
+                    .collect::<Vec<_>>()
+            };
+            w.extend(ViewTable::Wx(j).writes(template(&c.wx, c.wx_rays())));
+            w.extend(ViewTable::Wy(j).writes(template(&c.wy, c.wy_scanlines())));
+        }
+        w
+    }
+}
+
+/// A register's write.
+fn reg(r: Reg, data: u64) -> Write {
+    Write {
+        address: r.address(),
+        data,
+    }
+}
+
+impl Cube3SystemConfig {
+    /// The words the host writes before this base plane's frame: the view
+    /// registers and tables (`golden_model::host::Reg::C3Stream ..=
+    /// C3Lines`, `ViewTable`) of the beam fetch, then of the pipeline.
+    /// The shader's tables and light are written beside them
+    /// (`Shader::tables`).
+    pub fn view_writes(&self) -> Vec<Write> {
+        let mut w = self.fetch.view_writes(self.pipeline.offset);
+        w.extend(self.pipeline.view_writes());
+        w
     }
 }

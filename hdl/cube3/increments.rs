@@ -2,17 +2,25 @@
 //! `dx`, `dy` of a parallel view, or a perspective view's per ray and per
 //! scanline. A sub-block of [`super::ray_control::RayControl`].
 
-use super::config::{Cube3Config, TEMPLATE_BITS};
+use super::config::{Cube3Sizes, TEMPLATE_BITS};
 use crate::common::delay_line::DelayLine;
+use crate::common::regs::ADDRESS_BITS;
+use crate::common::view_rom::ViewRom;
+use golden_model::host::ViewTable;
 use rust_hdl::prelude::*;
 
 /// The increments of the ABC units' centre ray: the units' ray and
-/// scanline through a delay line to the centre (perspective), then ROMs by
-/// ray and scanline (sign in bit 16); a parallel view's one entry at
-/// address 0 (the mask clears the address).
+/// scanline through a delay line to the centre (perspective), then tables
+/// by ray and scanline (sign in bit 16) the host loads; a parallel view's
+/// one entry at address 0 (the mask clears the address).
 #[derive(LogicBlock)]
 pub struct Increments<const H: usize> {
     pub clock: Signal<In, Clock>,
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
+    /// The centre line's length less one (`RayControl`'s register).
+    pub centre_last: Signal<In, Bits<H>>,
     pub ray: Signal<In, Bits<16>>,
     pub scanline: Signal<In, Bits<16>>,
     pub dx_neg: Signal<Out, Bit>,
@@ -20,46 +28,39 @@ pub struct Increments<const H: usize> {
     pub dy_neg: Signal<Out, Bit>,
     pub dy_mag: Signal<Out, Bits<16>>,
     centre_line: DelayLine<Bits<32>, H>,
-    centre_last: Constant<Bits<H>>,
     mask: Constant<Bits<16>>,
     dx_address: Signal<Local, Bits<16>>,
     dy_address: Signal<Local, Bits<16>>,
-    dx_rom: ROM<Bits<17>, TEMPLATE_BITS>,
-    dy_rom: ROM<Bits<17>, TEMPLATE_BITS>,
+    dx_rom: ViewRom<17, TEMPLATE_BITS>,
+    dy_rom: ViewRom<17, TEMPLATE_BITS>,
 }
 
 impl<const H: usize> Increments<H> {
-    pub fn new(t: &Cube3Config, centre_delay: usize) -> Increments<H> {
-        let rom = |d: &[i32]| -> ROM<Bits<17>, TEMPLATE_BITS> {
-            d.iter()
-                .map(|&d| ((d.unsigned_abs() as u64) | ((d < 0) as u64) << 16).to_bits())
-                .into()
+    /// For the views of `s`, the centre at most `centre_delay` clocks
+    /// behind the units.
+    pub fn new(s: &Cube3Sizes, centre_delay: usize) -> Increments<H> {
+        let (rays, scanlines, delay) = match s.perspective {
+            true => (s.rays(), s.scanlines(), centre_delay),
+            false => (1, 1, 1),
         };
-        let (dx, dy) = t
-            .abc
-            .as_ref()
-            .map_or((vec![0], vec![0]), |a| (a.dx.clone(), a.dy.clone()));
         Increments {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
+            centre_last: Default::default(),
             ray: Default::default(),
             scanline: Default::default(),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
-            centre_line: DelayLine::new(
-                if t.perspective { centre_delay } else { 1 },
-                &[],
-                u32::MAX.to_bits(),
-            ),
-            centre_last: Constant::new(
-                ((if t.perspective { centre_delay } else { 1 } - 1) as u64).to_bits(),
-            ),
-            mask: Constant::new((if t.perspective { 0xffffu64 } else { 0 }).to_bits()),
+            centre_line: DelayLine::new(delay, &[], u32::MAX.to_bits()),
+            mask: Constant::new((if s.perspective { 0xffffu64 } else { 0 }).to_bits()),
             dx_address: Default::default(),
             dy_address: Default::default(),
-            dx_rom: rom(&dx),
-            dy_rom: rom(&dy),
+            dx_rom: ViewRom::new(ViewTable::Dx.base(), rays),
+            dy_rom: ViewRom::new(ViewTable::Dy.base(), scanlines),
         }
     }
 }
@@ -69,6 +70,14 @@ impl<const H: usize> Logic for Increments<H> {
     fn update(&mut self) {
         self.centre_line.clock.next = self.clock.val();
         self.centre_line.last.next = self.centre_last.val();
+        self.dx_rom.clock.next = self.clock.val();
+        self.dx_rom.host_write.next = self.host_write.val();
+        self.dx_rom.host_address.next = self.host_address.val();
+        self.dx_rom.host_data.next = self.host_data.val();
+        self.dy_rom.clock.next = self.clock.val();
+        self.dy_rom.host_write.next = self.host_write.val();
+        self.dy_rom.host_address.next = self.host_address.val();
+        self.dy_rom.host_data.next = self.host_data.val();
         self.centre_line.write_enable.next = true;
         self.centre_line.data_in.next =
             bit_cast::<32, 16>(self.ray.val()) | (bit_cast::<32, 16>(self.scanline.val()) << 16);

@@ -28,6 +28,6 @@ pub mod templates;
 pub mod trilin;
 pub mod trilin_lanes;
 
-pub use config::{AbcConfig, BeamFetchConfig, Cube3Config, Cube3SystemConfig, Group};
+pub use config::{AbcConfig, BeamFetchConfig, Cube3Config, Cube3Sizes, Cube3SystemConfig, Group};
 pub use pipeline::Cube3;
 pub use system::Cube3System;

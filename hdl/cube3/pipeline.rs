@@ -17,7 +17,8 @@
 //! trilin::LATENCY` for a cell taken at `t`: the control's inside bit,
 //! delayed beside the units, gates the sample. MIP and MinIP: the sample
 //! rounded to voxel bits, `(s + 2^(F-1)) >> F`, valid when inside. X-ray:
-//! the opacity table at `(s >> F) >> shift` (a ROM per unit). Outside the
+//! the opacity table at `(s >> F) >> shift` (a block RAM per unit the host
+//! loads; its registered read is the leaf stage's register). Outside the
 //! volume a leaf is 0 (and invalid: the golden model's empty leaf).
 //! Registered, then the RPC's leaves.
 //!
@@ -40,13 +41,14 @@
 
 use super::abc_gradient::AbcUnit;
 use super::compositor::Rpc;
-use super::config::{Cube3Config, OPACITY_BITS};
+use super::config::{Cube3Config, Cube3Sizes, OPACITY_BITS};
 use super::ray_control::RayControl;
 use super::trilin_lanes::TrilinLanes;
 use crate::common::delay_line::DelayLine;
-use crate::common::regs::ADDRESS_BITS;
+use crate::common::regs::{Regs, ADDRESS_BITS};
 use crate::common::shader::{Shader, ShaderConfig, LATENCY as SHADER_LATENCY};
-use golden_model::host::ShaderTables;
+use crate::common::table::Table;
+use golden_model::host::{Reg, ShaderTables, ViewTable};
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -54,7 +56,8 @@ use scene::Mode;
 #[derive(LogicBlock)]
 pub struct Cube3<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
-    /// The host port (the shaders' tables and registers).
+    /// The host port: the view's registers and tables, the shaders' tables
+    /// and light.
     pub host_write: Signal<In, Bit>,
     pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
     pub host_data: Signal<In, Bits<64>>,
@@ -71,6 +74,8 @@ pub struct Cube3<const P: usize, const H: usize> {
     pub pixel_b: Signal<Out, Bits<16>>,
     pub pixel_a: Signal<Out, Bits<16>>,
     pub has_sample: Signal<Out, Bit>,
+    /// `C3Origin`, `C3Delays`, `C3Lines`.
+    regs: Regs<3>,
     control: RayControl<P, H>,
     lanes: TrilinLanes<P, H>,
     /// `[inside bits, valid, first, last, cast, inner bits]` (bits 0-7, 8,
@@ -78,7 +83,6 @@ pub struct Cube3<const P: usize, const H: usize> {
     /// through the ABC delay (`flags_line`), and to the RPC (one more).
     flags_q: [DFF<Bits<32>>; 7],
     flags_line: DelayLine<Bits<32>, H>,
-    flags_last: Constant<Bits<H>>,
     leaf_flags: Signal<Local, Bits<32>>,
     /// The flags, on beside the shaders (`shader::LATENCY - 1` more clocks
     /// than the leaf stage's one).
@@ -97,9 +101,10 @@ pub struct Cube3<const P: usize, const H: usize> {
     row_shift: Constant<Bits<8>>,
     lane_bit: [Constant<Bits<32>>; 8],
     inner_bit: [Constant<Bits<32>>; 8],
-    /// X-ray: each unit's opacity row and table.
+    /// X-ray: each unit's opacity row and table (its registered read is
+    /// the leaf stage's register).
     row: [Signal<Local, Bits<32>>; P],
-    opacity: [ROM<Bits<32>, OPACITY_BITS>; P],
+    opacity: [Table<32, OPACITY_BITS>; P],
     leaf_q: [DFF<Bits<32>>; P],
     leaf_valid_q: [DFF<Bit>; P],
     /// The ABC units: the gradients, then the shaders.
@@ -114,16 +119,12 @@ pub struct Cube3<const P: usize, const H: usize> {
 }
 
 impl<const P: usize, const H: usize> Cube3<P, H> {
-    pub fn new(c: &Cube3Config) -> Result<Cube3<P, H>, String> {
+    /// The units of `c` (its p, mode, widths, gradient and shading units;
+    /// not its view) for the views of `s`.
+    pub fn new(c: &Cube3Config, s: &Cube3Sizes) -> Result<Cube3<P, H>, String> {
         assert_eq!(c.p, P, "the configuration's p");
-        let control = RayControl::new(c)?;
-        let lanes = TrilinLanes::new(
-            c.segments,
-            c.offset,
-            c.weight_bits,
-            c.voxel_bits,
-            c.sample_frac,
-        )?;
+        let control = RayControl::new(s)?;
+        let lanes = TrilinLanes::new(s.segments(), c.weight_bits, c.voxel_bits, c.sample_frac)?;
         let (table, shift) = c.opacity.clone().unwrap_or((vec![0], 0));
         if table.len() > 1 << OPACITY_BITS {
             return Err(format!(
@@ -131,10 +132,13 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
                 table.len()
             ));
         }
-        let rom = || -> ROM<Bits<32>, OPACITY_BITS> {
-            table.iter().map(|&v| (v as u64).to_bits()).into()
+        let abc_delay = match c.abc {
+            Some(_) => {
+                super::abc_gradient::centre(s.period(), s.segments())
+                    + super::abc_estimator::LATENCY
+            }
+            None => 1,
         };
-        let abc_delay = c.abc_delay();
         if abc_delay >= 1 << H {
             return Err(format!(
                 "the ABC delay of {abc_delay} clocks needs more than {H} pointer bits"
@@ -142,14 +146,14 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         }
         let abc = match &c.abc {
             Some(a) => AbcUnit::new(
-                c.scanline_clocks,
-                c.segments,
+                s.period(),
+                s.segments(),
                 a.n12,
                 c.weight_bits,
                 a.sample_bits,
                 a.gradient_bits,
             )?,
-            None => AbcUnit::left_out(c.segments)?,
+            None => AbcUnit::left_out(s.segments())?,
         };
         let shader = || -> Result<Shader, String> {
             match &c.shading {
@@ -191,15 +195,11 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             pixel_b: Default::default(),
             pixel_a: Default::default(),
             has_sample: Default::default(),
+            regs: Regs::new([Reg::C3Origin, Reg::C3Delays, Reg::C3Lines].map(Reg::address)),
             control,
             lanes,
             flags_q: Default::default(),
-            flags_line: DelayLine::new(
-                abc_delay.max(1),
-                &[(0, 12), (16, 8)],
-                0x00ff_0fffu64.to_bits(),
-            ),
-            flags_last: Constant::new(((abc_delay.max(1) - 1) as u64).to_bits()),
+            flags_line: DelayLine::new(abc_delay, &[(0, 12), (16, 8)], 0x00ff_0fffu64.to_bits()),
             leaf_flags: Default::default(),
             shade_flags_q: Default::default(),
             rpc_flags_q: Default::default(),
@@ -215,7 +215,9 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             lane_bit: std::array::from_fn(|i| Constant::new((1u64 << i).to_bits())),
             inner_bit: std::array::from_fn(|i| Constant::new((1u64 << (16 + i)).to_bits())),
             row: std::array::from_fn(|_| Default::default()),
-            opacity: std::array::from_fn(|_| rom()),
+            opacity: std::array::from_fn(|_| {
+                Table::new(ViewTable::XrayOpacity.base(), table.len(), &[(0, 32)])
+            }),
             leaf_q: std::array::from_fn(|_| Default::default()),
             leaf_valid_q: std::array::from_fn(|_| Default::default()),
             abc,
@@ -246,12 +248,24 @@ const _: () = assert!(SHADER_LATENCY == 7, "update the shaders' flag registers")
 impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
     #[hdl_gen]
     fn update(&mut self) {
+        // The view's registers.
+        self.regs.clock.next = self.clock.val();
+        self.regs.host_write.next = self.host_write.val();
+        self.regs.host_address.next = self.host_address.val();
+        self.regs.host_data.next = self.host_data.val();
+        self.lanes.offset.next = self.regs.q[0].val().get_bits::<16>(32);
+        self.lanes.line_last.next = self.regs.q[1].val().get_bits::<H>(16);
+        self.flags_line.last.next = self.regs.q[1].val().get_bits::<H>(48);
+        self.abc.ray_last.next = self.regs.q[2].val().get_bits::<H>(0);
+        self.abc.line_last.next = self.regs.q[2].val().get_bits::<H>(16);
         self.control.clock.next = self.clock.val();
+        self.control.host_write.next = self.host_write.val();
+        self.control.host_address.next = self.host_address.val();
+        self.control.host_data.next = self.host_data.val();
         self.lanes.clock.next = self.clock.val();
         self.abc.clock.next = self.clock.val();
         self.rpc.clock.next = self.clock.val();
         self.flags_line.clock.next = self.clock.val();
-        self.flags_line.last.next = self.flags_last.val();
         self.rpc_flags_q.clock.next = self.clock.val();
         self.cast_q.clock.next = self.clock.val();
         self.control.start.next = self.start.val();
@@ -303,15 +317,16 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
             self.leaf_valid_q[i].clock.next = self.clock.val();
             self.row[i].next =
                 (self.lanes.sample[i].val() >> self.frac.val()) >> self.row_shift.val();
+            self.opacity[i].clock.next = self.clock.val();
+            self.opacity[i].host_write.next = self.host_write.val();
+            self.opacity[i].host_address.next = self.host_address.val();
+            self.opacity[i].host_data.next = self.host_data.val();
             self.opacity[i].address.next = self.row[i].val().get_bits::<OPACITY_BITS>(0);
             self.leaf_valid_q[i].d.next = (self.flags_q[6].q.val() & self.lane_bit[i].val()).any();
             self.leaf_q[i].d.next = 0.into();
             if (self.flags_q[6].q.val() & self.lane_bit[i].val()).any() {
                 self.leaf_q[i].d.next =
                     (self.lanes.sample[i].val() + self.half.val()) >> self.frac.val();
-                if self.xray.val() {
-                    self.leaf_q[i].d.next = self.opacity[i].data.val();
-                }
             }
             // The shaders: the sample and its gradient (zero without).
             self.index[i].next = self.lanes.sample[i].val() >> self.frac.val();
@@ -347,6 +362,12 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
                 self.shade[i].gz_mag.next = !self.gz[i].val() + 1;
             }
             self.rpc.leaf_r[i].next = self.leaf_q[i].q.val();
+            if self.xray.val() {
+                self.rpc.leaf_r[i].next = 0.into();
+                if self.leaf_valid_q[i].q.val() {
+                    self.rpc.leaf_r[i].next = self.opacity[i].data.val();
+                }
+            }
             self.rpc.leaf_g[i].next = 0.into();
             self.rpc.leaf_b[i].next = 0.into();
             self.rpc.leaf_a[i].next = 0.into();

@@ -34,6 +34,10 @@ pub fn line_lengths(scanline: usize, segments: usize) -> Result<[usize; 8], Stri
 #[derive(LogicBlock)]
 pub struct PlaneTaps<const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The lines' lengths less one within a scanline (`G - 3`) and from
+    /// one scanline to the next (`T - 2G - 3`): the view's, from the host.
+    pub ray_last: Signal<In, Bits<H>>,
+    pub line_last: Signal<In, Bits<H>>,
     pub sample: Signal<In, Bits<32>>,
     /// Tap `(a, b, c)` is `tabc` (one signal each: rust-hdl's Verilog
     /// generator resolves one array index per name, not a sub-block's).
@@ -69,13 +73,27 @@ pub struct PlaneTaps<const H: usize> {
     one: [DFF<Bits<32>>; 9],
     two: [DFF<Bits<32>>; 9],
     lines: [DelayLine<Bits<32>, H>; 8],
-    /// The lines' lengths less one.
-    line_last: [Constant<Bits<H>>; 8],
+    /// Which lines run from scanline to scanline.
+    long: [Constant<Bit>; 8],
 }
 
 impl<const H: usize> PlaneTaps<H> {
+    /// For scanlines of up to `scanline` clocks and rays of up to
+    /// `segments` (the shortest rays, of 3 segments, leave the longest
+    /// lines between scanlines).
     pub fn new(scanline: usize, segments: usize) -> Result<PlaneTaps<H>, String> {
-        let lengths = line_lengths(scanline, segments)?;
+        let [ray, _, line, ..] = line_lengths(scanline, segments)?;
+        let longest = line_lengths(scanline, 3)?[2];
+        let lengths = [
+            ray,
+            ray,
+            line.max(longest),
+            ray,
+            ray,
+            line.max(longest),
+            ray,
+            ray,
+        ];
         if let Some(l) = lengths.iter().find(|&&l| l >= 1 << H) {
             return Err(format!(
                 "a sample-plane line of {l} clocks needs more than {H} pointer bits"
@@ -83,6 +101,8 @@ impl<const H: usize> PlaneTaps<H> {
         }
         Ok(PlaneTaps {
             clock: Default::default(),
+            ray_last: Default::default(),
+            line_last: Default::default(),
             sample: Default::default(),
             t000: Default::default(),
             t001: Default::default(),
@@ -115,7 +135,7 @@ impl<const H: usize> PlaneTaps<H> {
             one: Default::default(),
             two: Default::default(),
             lines: lengths.map(|l| DelayLine::new(l, &[], (u32::MAX as u64).to_bits())),
-            line_last: lengths.map(|l| Constant::new(((l - 1) as u64).to_bits())),
+            long: std::array::from_fn(|t| Constant::new(t % 3 == 2)),
         })
     }
 
@@ -134,7 +154,10 @@ impl<const H: usize> Logic for PlaneTaps<H> {
         // Verilator).
         for t in 0..8 {
             self.lines[t].clock.next = self.clock.val();
-            self.lines[t].last.next = self.line_last[t].val();
+            self.lines[t].last.next = self.ray_last.val();
+            if self.long[t].val() {
+                self.lines[t].last.next = self.line_last.val();
+            }
             self.lines[t].write_enable.next = true;
             self.lines[t].data_in.next = self.two[t].q.val();
             self.head[t + 1].next = self.lines[t].data_out.val();

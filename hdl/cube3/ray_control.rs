@@ -12,20 +12,28 @@
 //! earlier, so their counters are the stream counters through a
 //! [`DelayLine`] of that length.
 //!
+//! **The view.** Every view-dependent value here is the host's: the
+//! stream's rays and segments, the cast rays and the delay lines' lengths
+//! are registers (`C3Stream`, `C3Address`, `C3Cast`, `C3Delays`), the
+//! templates, bounds and increments tables ([`ViewRom`]s, read in the
+//! clock they are addressed, as the ROMs of a design built for one view
+//! were). The build holds the largest view of its class
+//! ([`Cube3Sizes`]).
+//!
 //! **Templates.** A parallel view's weights depend only on the plane
-//! (`plan::Template::Parallel`): lane `i`'s `wx` ROM holds `wx(k)` of `k =
+//! (`plan::Template::Parallel`): lane `i`'s `wx` table holds `wx(k)` of `k =
 //! s·P + i` at address `s`. A perspective view's depend on the ray too (the
 //! paper's n² template entries): `wx(u, k)` at address `r·G + s` for stream
-//! ray `r`; `wy` likewise by scanline. (The stride `G` is 0 for a parallel
-//! view, and the multiplier folds away.) Whether sample `k` of ray `u`,
+//! ray `r`; `wy` likewise by scanline. (The stride, a register, is `G`
+//! for a perspective view and 0 for a parallel one.) Whether sample `k` of ray `u`,
 //! scanline `v` lies in the volume (`0 <= u·2^W + k·DX(u) <= (n_x - 1)·2^W`,
 //! likewise `y`, and `0 <= k + O <= K - 1`) is, for each `k`, an interval
 //! of rays and one of scanlines (the positions grow with the ray in either
-//! projection): lane `i`'s bounds ROM holds them, found by the golden
+//! projection): lane `i`'s bounds table holds them, found by the golden
 //! model's own test on every ray and scanline of the stream
-//! ([`Cube3Config`](super::pipeline::Cube3Config)). The inner box (`1 <= ...
-//! <= n - 2`, where a gradient's neighbourhood stays in the volume) has its
-//! own bounds ROM; it is empty, and folded away, for scenes without
+//! ([`Cube3Config`](super::config::Cube3Config)). The inner box (`1 <=
+//! ... <= n - 2`, where a gradient's neighbourhood stays in the volume) has
+//! its own bounds table, unused (and removed by synthesis) without
 //! gradients.
 //!
 //! **Cast rays.** A perspective ray steeper than 45° (`|DX| > 2^W`)
@@ -38,19 +46,26 @@
 //! entering them: the units' counters
 //! a further `trilin::LATENCY + G + 1` clocks late (a second delay line)
 //! name the centre's ray, and its scanline is one less (the scanlines
-//! enter every `T` clocks). ROMs by ray and scanline hold the increments; a
-//! parallel view's one entry is read at address 0.
+//! enter every `T` clocks). Tables by ray and scanline hold the increments;
+//! a parallel view's one entry is read at address 0.
 
-use super::config::{Cube3Config, SEGMENT_BITS, TEMPLATE_BITS};
+use super::config::{Cube3Sizes, SEGMENT_BITS, TEMPLATE_BITS};
 use super::increments::Increments;
 use super::templates::Templates;
 use crate::common::delay_line::DelayLine;
+use crate::common::regs::{Regs, ADDRESS_BITS};
+use crate::common::view_rom::ViewRom;
+use golden_model::host::{Reg, ViewTable};
 use rust_hdl::prelude::*;
 
 /// The ray control for `P` lanes (`H`-bit delay-line pointer).
 #[derive(LogicBlock)]
 pub struct RayControl<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port: the view's registers and tables.
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     /// Restart the counters at the first segment of the first ray.
     pub start: Signal<In, Bit>,
     /// A segment enters the streams this clock (they may pause between
@@ -74,29 +89,29 @@ pub struct RayControl<const P: usize, const H: usize> {
     pub dx_mag: Signal<Out, Bits<16>>,
     pub dy_neg: Signal<Out, Bit>,
     pub dy_mag: Signal<Out, Bits<16>>,
-    last_segment: Constant<Bits<16>>,
-    last_ray: Constant<Bits<16>>,
+    /// `C3Stream`, `C3Address`, `C3Cast`, `C3Delays`.
+    regs: Regs<4>,
+    last_segment: Signal<Local, Bits<16>>,
+    last_ray: Signal<Local, Bits<16>>,
     segment: DFF<Bits<16>>,
     ray: DFF<Bits<16>>,
     scanline: DFF<Bits<16>>,
     /// `[valid, segment, ray, scanline]` delayed to the units.
     late: DelayLine<Bits<64>, H>,
-    /// The late line's length less one.
-    late_last: Constant<Bits<H>>,
     unit_segment: Signal<Local, Bits<16>>,
     unit_ray: Signal<Local, Bits<16>>,
     unit_scanline: Signal<Local, Bits<16>>,
     templates: Templates<P>,
     /// Cast rays and scanlines `[lo, hi]`, inclusive.
     /// (`x - lo <= hi - lo`, wrapping: one unsigned compare.)
-    cast_ray_lo: Constant<Bits<16>>,
-    cast_ray_span: Constant<Bits<16>>,
-    cast_line_lo: Constant<Bits<16>>,
-    cast_line_span: Constant<Bits<16>>,
+    cast_ray_lo: Signal<Local, Bits<16>>,
+    cast_ray_span: Signal<Local, Bits<16>>,
+    cast_line_lo: Signal<Local, Bits<16>>,
+    cast_line_span: Signal<Local, Bits<16>>,
     per_ray: Constant<Bit>,
     increments: Increments<H>,
-    bounds: [ROM<Bits<64>, SEGMENT_BITS>; P],
-    inner: [ROM<Bits<64>, SEGMENT_BITS>; P],
+    bounds: [ViewRom<64, SEGMENT_BITS>; P],
+    inner: [ViewRom<64, SEGMENT_BITS>; P],
     /// Lane i's inside and inner bits in place (`lane_bit[i] = 1 << i`).
     lane_in: [Signal<Local, Bits<8>>; 8],
     lane_inner: [Signal<Local, Bits<8>>; 8],
@@ -105,34 +120,25 @@ pub struct RayControl<const P: usize, const H: usize> {
 }
 
 impl<const P: usize, const H: usize> RayControl<P, H> {
-    /// From the pipeline's templates and inside bounds per plane
-    /// (`Cube3Config::wx`, `wy`, `bounds`, `cast`, `abc`).
-    pub fn new(t: &Cube3Config) -> Result<RayControl<P, H>, String> {
-        let segments = t.segments;
+    /// For the views of `s`.
+    pub fn new(s: &Cube3Sizes) -> Result<RayControl<P, H>, String> {
+        let segments = s.segments();
         let centre_delay = super::trilin::LATENCY + segments + 1;
         if P > 8 || segments > 1 << SEGMENT_BITS || centre_delay >= 1 << H {
             return Err(format!("rays of {segments} segments are too long"));
         }
-        if t.wx_rays() * segments > 1 << TEMPLATE_BITS
-            || t.wy_scanlines() * segments > 1 << TEMPLATE_BITS
-        {
+        if s.perspective && s.scanlines() * segments > 1 << TEMPLATE_BITS {
             return Err(format!(
                 "{} rays and {} scanlines of {segments} segments: the templates hold at most 2^{TEMPLATE_BITS} weights a unit",
-                t.rays, t.scanlines
+                s.rays(),
+                s.scanlines()
             ));
         }
-        let k = |v: u32| Constant::new((v as u64).to_bits());
-        let bound = |b: &[[u32; 4]], k: usize| {
-            let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
-            rl as u64 | (rh as u64) << 16 | (vl as u64) << 32 | (vh as u64) << 48
-        };
-        let rom = |b: &[[u32; 4]], i: usize| -> ROM<Bits<64>, SEGMENT_BITS> {
-            (0..segments)
-                .map(|s| bound(b, s * P + i).to_bits::<64>())
-                .into()
-        };
         Ok(RayControl {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             start: Default::default(),
             valid: Default::default(),
             first: Default::default(),
@@ -148,31 +154,31 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             dx_mag: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
-            last_segment: Constant::new(((t.segments - 1) as u64).to_bits()),
-            last_ray: Constant::new(((t.rays - 1) as u64).to_bits()),
+            regs: Regs::new(
+                [Reg::C3Stream, Reg::C3Address, Reg::C3Cast, Reg::C3Delays].map(Reg::address),
+            ),
+            last_segment: Default::default(),
+            last_ray: Default::default(),
             segment: Default::default(),
             ray: Default::default(),
             scanline: Default::default(),
             late: DelayLine::new(
-                super::trilin_lanes::cell_delay(t.segments),
+                super::trilin_lanes::cell_delay(segments),
                 &[],
                 u64::MAX.to_bits(),
-            ),
-            late_last: Constant::new(
-                ((super::trilin_lanes::cell_delay(t.segments) - 1) as u64).to_bits(),
             ),
             unit_segment: Default::default(),
             unit_ray: Default::default(),
             unit_scanline: Default::default(),
-            templates: Templates::new(t),
-            cast_ray_lo: k(t.cast[0]),
-            cast_ray_span: k(t.cast[1].wrapping_sub(t.cast[0])),
-            cast_line_lo: k(t.cast[2]),
-            cast_line_span: k(t.cast[3].wrapping_sub(t.cast[2])),
-            per_ray: Constant::new(t.perspective),
-            increments: Increments::new(t, centre_delay),
-            bounds: std::array::from_fn(|i| rom(&t.bounds, i)),
-            inner: std::array::from_fn(|i| rom(&t.inner, i)),
+            templates: Templates::new(s),
+            cast_ray_lo: Default::default(),
+            cast_ray_span: Default::default(),
+            cast_line_lo: Default::default(),
+            cast_line_span: Default::default(),
+            per_ray: Constant::new(s.perspective),
+            increments: Increments::new(s, centre_delay),
+            bounds: std::array::from_fn(|i| ViewRom::new(ViewTable::Bounds(i).base(), segments)),
+            inner: std::array::from_fn(|i| ViewRom::new(ViewTable::Inner(i).base(), segments)),
             lane_in: Default::default(),
             lane_inner: Default::default(),
             lane_bit: std::array::from_fn(|i| Constant::new((1u64 << i).to_bits())),
@@ -185,10 +191,30 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, segment, ray, scanline);
+        // The view's registers.
+        self.regs.clock.next = self.clock.val();
+        self.regs.host_write.next = self.host_write.val();
+        self.regs.host_address.next = self.host_address.val();
+        self.regs.host_data.next = self.host_data.val();
+        self.last_ray.next = self.regs.q[0].val().get_bits::<16>(0) - 1;
+        self.last_segment.next = self.regs.q[0].val().get_bits::<16>(32) - 1;
+        self.cast_ray_lo.next = self.regs.q[2].val().get_bits::<16>(0);
+        self.cast_ray_span.next = self.regs.q[2].val().get_bits::<16>(16);
+        self.cast_line_lo.next = self.regs.q[2].val().get_bits::<16>(32);
+        self.cast_line_span.next = self.regs.q[2].val().get_bits::<16>(48);
         self.late.clock.next = self.clock.val();
-        self.late.last.next = self.late_last.val();
+        self.late.last.next = self.regs.q[3].val().get_bits::<H>(0);
         self.late.write_enable.next = true;
         self.increments.clock.next = self.clock.val();
+        self.increments.host_write.next = self.host_write.val();
+        self.increments.host_address.next = self.host_address.val();
+        self.increments.host_data.next = self.host_data.val();
+        self.increments.centre_last.next = self.regs.q[3].val().get_bits::<H>(32);
+        self.templates.clock.next = self.clock.val();
+        self.templates.host_write.next = self.host_write.val();
+        self.templates.host_address.next = self.host_address.val();
+        self.templates.host_data.next = self.host_data.val();
+        self.templates.stride.next = self.regs.q[1].val().get_bits::<16>(48);
         // The stream counters: segment, ray, scanline of the entering
         // segment, stepped by each valid one.
         if self.valid.val() {
@@ -244,6 +270,14 @@ impl<const P: usize, const H: usize> Logic for RayControl<P, H> {
             self.lane_inner[i].next = 0.into();
         }
         for i in 0..P {
+            self.bounds[i].clock.next = self.clock.val();
+            self.bounds[i].host_write.next = self.host_write.val();
+            self.bounds[i].host_address.next = self.host_address.val();
+            self.bounds[i].host_data.next = self.host_data.val();
+            self.inner[i].clock.next = self.clock.val();
+            self.inner[i].host_write.next = self.host_write.val();
+            self.inner[i].host_address.next = self.host_address.val();
+            self.inner[i].host_data.next = self.host_data.val();
             self.bounds[i].address.next = self.unit_segment.val().get_bits::<SEGMENT_BITS>(0);
             self.wx[i].next = self.templates.wx[i].val();
             self.wy[i].next = self.templates.wy[i].val();

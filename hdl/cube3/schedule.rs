@@ -2,7 +2,8 @@
 //! plane is written, which ray segment is read, and the three 2-D skewed
 //! buffers' roles. A sub-block of [`super::cfb::BeamFetch`].
 
-use super::config::BeamFetchConfig;
+use crate::common::regs::{Regs, ADDRESS_BITS};
+use golden_model::host::Reg;
 use rust_hdl::prelude::*;
 
 /// The scanline periods: which plane and chunk are written, which ray and
@@ -21,13 +22,22 @@ pub struct Schedule {
     pub segment: Signal<Out, Bits<16>>,
     pub cur_buffer: Signal<Out, Bits<2>>,
     pub next_buffer: Signal<Out, Bits<2>>,
-    last_tick: Constant<Bits<16>>,
-    last_period: Constant<Bits<16>>,
-    last_write_period: Constant<Bits<16>>,
-    last_plane: Constant<Bits<16>>,
-    last_chunk: Constant<Bits<16>>,
-    last_ray: Constant<Bits<16>>,
-    last_segment: Constant<Bits<16>>,
+    /// The host port: the view's counts (`C3Stream`, `C3Schedule`), in the
+    /// schedule's own copy of the registers.
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
+    regs: Regs<2>,
+    /// The counts less one: the period's clocks, the scanlines written (the
+    /// stream's `S`, then one more period of reads), the planes and chunks
+    /// of a PRP, the rays and segments read.
+    last_tick: Signal<Local, Bits<16>>,
+    last_write_period: Signal<Local, Bits<16>>,
+    last_plane: Signal<Local, Bits<16>>,
+    last_chunk: Signal<Local, Bits<16>>,
+    last_ray: Signal<Local, Bits<16>>,
+    last_segment: Signal<Local, Bits<16>>,
+    last_period: Signal<Local, Bits<16>>,
     first_read_period: Constant<Bits<16>>,
     active: DFF<Bit>,
     tick: DFF<Bits<16>>,
@@ -43,9 +53,8 @@ pub struct Schedule {
     n_q: DFF<Bits<2>>,
 }
 
-impl Schedule {
-    pub fn new(c: &BeamFetchConfig) -> Schedule {
-        let k = |v: usize| Constant::new((v as u64).to_bits());
+impl Default for Schedule {
+    fn default() -> Schedule {
         Schedule {
             clock: Default::default(),
             start: Default::default(),
@@ -59,23 +68,18 @@ impl Schedule {
             segment: Default::default(),
             cur_buffer: Default::default(),
             next_buffer: Default::default(),
-            last_tick: k(c.period() - 1),
-            last_period: k(c.scanlines + 1),
-            last_write_period: k(c.scanlines),
-            // A perspective PRP counts its groups as the chunks of one plane.
-            last_plane: k(if c.perspective() {
-                0
-            } else {
-                c.planes_written() - 1
-            }),
-            last_chunk: k(if c.perspective() {
-                c.groups.len() - 1
-            } else {
-                c.rays.div_ceil(c.p) - 1
-            }),
-            last_ray: k(c.rays - 1),
-            last_segment: k(c.segments - 1),
-            first_read_period: k(2),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
+            regs: Regs::new([Reg::C3Stream, Reg::C3Schedule].map(Reg::address)),
+            last_tick: Default::default(),
+            last_write_period: Default::default(),
+            last_plane: Default::default(),
+            last_chunk: Default::default(),
+            last_ray: Default::default(),
+            last_segment: Default::default(),
+            last_period: Default::default(),
+            first_read_period: Constant::new(2.into()),
             active: Default::default(),
             tick: Default::default(),
             period_q: Default::default(),
@@ -99,6 +103,17 @@ impl Logic for Schedule {
             self, clock, active, tick, period_q, plane_q, chunk_q, ray_q, segment_q, written, read,
             w_q, c_q, n_q
         );
+        self.regs.clock.next = self.clock.val();
+        self.regs.host_write.next = self.host_write.val();
+        self.regs.host_address.next = self.host_address.val();
+        self.regs.host_data.next = self.host_data.val();
+        self.last_ray.next = self.regs.q[0].val().get_bits::<16>(0) - 1;
+        self.last_write_period.next = self.regs.q[0].val().get_bits::<16>(16);
+        self.last_segment.next = self.regs.q[0].val().get_bits::<16>(32) - 1;
+        self.last_tick.next = self.regs.q[1].val().get_bits::<16>(0);
+        self.last_chunk.next = self.regs.q[1].val().get_bits::<16>(16);
+        self.last_plane.next = self.regs.q[1].val().get_bits::<16>(32);
+        self.last_period.next = self.last_write_period.val() + 1;
         self.writing.next = self.active.q.val()
             & !self.written.q.val()
             & (self.period_q.q.val() <= self.last_write_period.val());

@@ -10,7 +10,7 @@
 //! sample-plane lines are built for.
 
 use super::cfb::BeamFetch;
-use super::config::Cube3SystemConfig;
+use super::config::{Cube3Config, Cube3Sizes};
 use super::pipeline::Cube3;
 use crate::common::regs::ADDRESS_BITS;
 use golden_model::host::ShaderTables;
@@ -46,7 +46,8 @@ pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: 
 }
 
 impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System<P, A, B, H> {
-    pub fn new(c: &Cube3SystemConfig) -> Result<Cube3System<P, A, B, H>, String> {
+    /// The units of `c` (not its view) for the views of `s`.
+    pub fn new(c: &Cube3Config, s: &Cube3Sizes) -> Result<Cube3System<P, A, B, H>, String> {
         Ok(Cube3System {
             clock: Default::default(),
             host_write: Default::default(),
@@ -65,8 +66,8 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System
             load_module: Default::default(),
             load_address: Default::default(),
             load_data: Default::default(),
-            fetch: BeamFetch::new(&c.fetch)?,
-            pipeline: Cube3::new(&c.pipeline)?,
+            fetch: BeamFetch::new(s)?,
+            pipeline: Cube3::new(c, s)?,
         })
     }
 
@@ -89,6 +90,9 @@ impl<const P: usize, const A: usize, const B: usize, const H: usize> Logic
         self.fetch.clock.next = self.clock.val();
         self.pipeline.clock.next = self.clock.val();
         self.fetch.start.next = self.start.val();
+        self.fetch.host_write.next = self.host_write.val();
+        self.fetch.host_address.next = self.host_address.val();
+        self.fetch.host_data.next = self.host_data.val();
         self.fetch.load_enable.next = self.load_enable.val();
         self.fetch.load_module.next = self.load_module.val();
         self.fetch.load_address.next = self.load_address.val();

@@ -16,8 +16,9 @@
 //! The voxels and weights are registered on entry, so the sample of the
 //! inputs at clock `t` leaves at `t + LATENCY`. Each lerp lies between its
 //! ends, so every value fits `sample_bits` (at most 24); the differences
-//! need the two-multiplier lerp only when `sample_bits > 16`. Where every
-//! sample sits on the grid the unit is not built (`View::on_grid`).
+//! need the two-multiplier lerp only when `sample_bits > 16`. The weights and
+//! offset are the view's, loaded at run time, so the unit is built for
+//! every view of its class, on the grid (`View::on_grid`) or not.
 
 use crate::common::lerp::Lerp;
 use rust_hdl::prelude::*;

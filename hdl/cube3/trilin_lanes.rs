@@ -43,7 +43,10 @@ pub struct TrilinLanes<const P: usize, const H: usize> {
     pub wx: [Signal<In, Bits<16>>; P],
     pub wy: [Signal<In, Bits<16>>; P],
     pub sample: [Signal<Out, Bits<32>>; P],
-    offset: Constant<Bits<16>>,
+    /// The view's offset `O` and the lines' length less one, `G - 2`
+    /// (the pipeline's registers).
+    pub offset: Signal<In, Bits<16>>,
+    pub line_last: Signal<In, Bits<H>>,
     /// Ray u + 1 (one clock) and ray u (G + 1 clocks) of each stream.
     cur_b: [DFF<Bits<16>>; P],
     cur_line: [DelayLine<Bits<16>, H>; P],
@@ -51,8 +54,6 @@ pub struct TrilinLanes<const P: usize, const H: usize> {
     next_b: [DFF<Bits<16>>; P],
     next_line: [DelayLine<Bits<16>, H>; P],
     next_a: [DFF<Bits<16>>; P],
-    /// The lines' length less one.
-    line_last: Constant<Bits<H>>,
     /// Plane k + 1 of lane P - 1: lane 0 one clock later, 0 across rays.
     wrap_cur_b: Signal<Local, Bits<16>>,
     wrap_cur_a: Signal<Local, Bits<16>>,
@@ -69,10 +70,10 @@ impl<const P: usize, const H: usize> TrilinLanes<P, H> {
     const P: usize = P;
     const P_END: usize = P + 1;
 
-    /// For rays of `segments` clocks (at least 2: more planes than units).
+    /// For rays of up to `segments` clocks (at least 2: more planes than
+    /// units).
     pub fn new(
         segments: usize,
-        offset: u32,
         weight_bits: u32,
         voxel_bits: u32,
         sample_frac: u32,
@@ -91,14 +92,14 @@ impl<const P: usize, const H: usize> TrilinLanes<P, H> {
             wx: std::array::from_fn(|_| Default::default()),
             wy: std::array::from_fn(|_| Default::default()),
             sample: std::array::from_fn(|_| Default::default()),
-            offset: Constant::new((offset as u64).to_bits()),
+            offset: Default::default(),
+            line_last: Default::default(),
             cur_b: std::array::from_fn(|_| Default::default()),
             cur_line: std::array::from_fn(|_| line()),
             cur_a: std::array::from_fn(|_| Default::default()),
             next_b: std::array::from_fn(|_| Default::default()),
             next_line: std::array::from_fn(|_| line()),
             next_a: std::array::from_fn(|_| Default::default()),
-            line_last: Constant::new(((segments - 2) as u64).to_bits()),
             wrap_cur_b: Default::default(),
             wrap_cur_a: Default::default(),
             wrap_next_b: Default::default(),

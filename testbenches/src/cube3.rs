@@ -13,6 +13,7 @@ use golden_model::cube3::plan::Plan;
 use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{prp, render_view};
 use golden_model::host::Write;
+use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::Cube3SystemConfig;
 use scene::volume::Volume;
 
@@ -24,13 +25,15 @@ use crate::scene;
 pub struct Case {
     pub name: String,
     pub config: Cube3SystemConfig,
+    /// The build: sized for the volume's largest side.
+    pub sizes: Cube3Sizes,
     /// The volume in the memory modules (`BeamFetchConfig::modules`).
     pub modules: Vec<Vec<u16>>,
     pub cur: Vec<Vec<u32>>,
     pub next: Vec<Vec<u32>>,
     pub want: Vec<Option<([u32; 4], bool)>>,
-    /// What the host writes before the stream: the shaders' registers (the
-    /// tables are preloaded).
+    /// What the host writes before the stream: the view's registers and
+    /// tables, the shaders' registers (their tables are preloaded).
     pub loads: Vec<Write>,
 }
 
@@ -50,7 +53,7 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;
     let system = Cube3SystemConfig::new(view, &shader, n, p, v0, scanlines).unwrap();
     let config = &system.pipeline;
-    assert_eq!(config.on_grid, name.contains("45 degrees"), "{name}");
+    assert_eq!(view.on_grid, name.contains("45 degrees"), "{name}");
     assert_eq!(config.abc.is_some(), shader.needs_gradient, "{name}");
     let modules = system.fetch.modules(&vol, view);
     let (base, _) = render_view(&vol, view, &shader, n, p);
@@ -91,14 +94,21 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
             .any(|u| view.x.d(u).unsigned_abs() > 1 << view.weight_bits);
         assert!(cast > 10 && uncast, "{name}: cast {cast}, uncast {uncast}");
     }
-    let loads = system
-        .pipeline
-        .shading
-        .as_ref()
-        .map_or(vec![], |s| s.tables().register_writes());
+    let mut loads = system.view_writes();
+    if let Some(s) = &system.pipeline.shading {
+        loads.extend(s.tables().register_writes());
+    }
+    let sizes = Cube3Sizes {
+        n: view.dims.iter().copied().max().unwrap(),
+        p,
+        perspective: config.perspective,
+        gradients: config.abc.is_some(),
+    };
+    assert_eq!(sizes.refuses(&system), None, "{name}");
     Case {
         name: format!("{name}, p={p}"),
         config: system,
+        sizes,
         modules,
         cur,
         next,

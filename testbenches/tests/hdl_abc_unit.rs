@@ -14,6 +14,7 @@ use golden_model::cube3::plan::{Neighbourhood, Plan};
 use golden_model::cube3::{prp, trilin};
 use hdl::cube3::abc_estimator::LATENCY;
 use hdl::cube3::abc_gradient::{centre, AbcUnit};
+use hdl::cube3::plane_taps::line_lengths;
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
 use testbenches::{for_each_p, require_tool, run_clocks, scene, Edge};
@@ -153,9 +154,11 @@ fn cases(p: usize) -> Vec<Case> {
 }
 
 fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
+    // Built for longer scanlines and rays than the case's: the lines'
+    // lengths are the view's, at run time.
     let mut uut = AbcUnit::<P, H>::new(
-        c.rays * c.segments,
-        c.segments,
+        c.rays * c.segments + 20,
+        c.segments + 2,
         c.n12,
         c.weight_bits,
         c.sample_bits,
@@ -164,6 +167,13 @@ fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
     .unwrap();
     uut.connect_all();
     uut
+}
+
+/// The sample-plane lines' lengths less one, within a scanline and from
+/// one to the next (`plane_taps::line_lengths`).
+fn line_lasts(c: &Case) -> [usize; 2] {
+    let l = line_lengths(c.rays * c.segments, c.segments).unwrap();
+    [l[0] - 1, l[2] - 1]
 }
 
 /// Clocks to run, the clock whose inputs hold the centre of input clock
@@ -220,6 +230,9 @@ fn rust_hdl_run<const P: usize>() {
                 x.dx_mag.next = (dx.unsigned_abs() as u64).to_bits();
                 x.dy_neg.next = dy < 0;
                 x.dy_mag.next = (dy.unsigned_abs() as u64).to_bits();
+                let [ray_last, line_last] = line_lasts(&c);
+                x.ray_last.next = (ray_last as u64).to_bits();
+                x.line_last.next = (line_last as u64).to_bits();
             }
             Edge::After(t) => {
                 for (i, w) in due(&c, t, d).into_iter().flatten().enumerate() {
@@ -264,6 +277,8 @@ fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: 
                         "dx_neg" => (dx < 0) as u64,
                         "dx_mag" => dx.unsigned_abs() as u64,
                         "dy_neg" => (dy < 0) as u64,
+                        "ray_last" => line_lasts(c)[0] as u64,
+                        "line_last" => line_lasts(c)[1] as u64,
                         _ => dy.unsigned_abs() as u64,
                     },
                 })

@@ -8,21 +8,28 @@
 //! than a voxel a plane, some beyond 45°), in rust-hdl simulation and under
 //! Icarus.
 
-use cosim::harness::{ports, run_stage, start_only};
+use cosim::drive_host_port;
+use cosim::harness::{load_then_start, ports, run_stage};
 use cosim::Engine;
 use golden_model::cube3::plan::Plan;
 use golden_model::cube3::prp;
+use golden_model::host::Write;
+use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::{cfb::BeamFetch, BeamFetchConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
 use testbenches::{for_each_p, require_tool, run_clocks, scene, Edge};
 
-const A: usize = 12;
+const A: usize = 13;
 const B: usize = 10;
 
 pub struct Case {
     name: String,
     config: BeamFetchConfig,
+    /// The build, sized for the volume's largest side, and the view's
+    /// words the host writes before `start`.
+    sizes: Cube3Sizes,
+    loads: Vec<Write>,
     modules: Vec<Vec<u16>>,
     /// Per segment of the stream: `cur` and `next`, `None` for planes beyond
     /// `K` (never read by a sample).
@@ -73,8 +80,16 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
             }
         }
     }
+    let sizes = Cube3Sizes {
+        n: view.dims.iter().copied().max().unwrap(),
+        p,
+        perspective: config.perspective(),
+        gradients: false,
+    };
     Case {
         name: format!("{name}, p={p}"),
+        loads: config.view_writes(view.offset),
+        sizes,
         config,
         modules,
         want,
@@ -119,7 +134,7 @@ fn cases(p: usize) -> Vec<Case> {
 }
 
 fn fetch<const P: usize>(c: &Case) -> BeamFetch<P, A, B> {
-    let mut uut = BeamFetch::<P, A, B>::new(&c.config).unwrap();
+    let mut uut = BeamFetch::<P, A, B>::new(&c.sizes).unwrap();
     uut.preload(&c.modules);
     uut.connect_all();
     uut
@@ -162,18 +177,24 @@ impl Segments {
 fn rust_hdl_run<const P: usize>() {
     for c in cases(P) {
         let uut = fetch::<P>(&c);
-        let clocks = c.config.clocks() + 4;
+        let l = c.loads.len();
+        let clocks = l + c.config.clocks() + 4;
         let name = format!("beam fetch {}", c.name);
         let mut segments = Segments::default();
         run_clocks(uut, clocks, &name, move |e, x| match e {
-            Edge::Before(t) => x.start.next = t == 0,
-            Edge::After(t) => {
+            Edge::Before(t) if t < l => drive_host_port!(x, Some(&c.loads[t])),
+            Edge::Before(t) => {
+                drive_host_port!(x, None::<&Write>);
+                x.start.next = t == l;
+            }
+            Edge::After(t) if t > l => {
                 let got = [
                     (0..P).map(|i| x.cur[i].val().to_u32()).collect(),
                     (0..P).map(|i| x.next[i].val().to_u32()).collect(),
                 ];
-                segments.clock(&c, "rust-hdl", t, x.valid.val(), got);
+                segments.clock(&c, "rust-hdl", t - l, x.valid.val(), got);
             }
+            Edge::After(_) => {}
             Edge::End => segments.finish(&c),
         });
     }
@@ -190,9 +211,10 @@ fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
     for c in cases(4) {
         let verilog = generate_verilog(&fetch::<4>(&c));
         let ports = ports(&verilog).unwrap();
-        let vectors: Vec<Vec<u64>> = (0..c.config.clocks() + 4)
-            .map(|t| start_only(&ports, t))
-            .collect();
+        // The view's words, `start`, then nothing to the end.
+        let mut vectors = load_then_start(&ports, &c.loads);
+        let idle = vectors.pop().expect("an idle vector");
+        vectors.extend(std::iter::repeat_n(idle, c.config.clocks() + 3));
         let outs = run_stage(Engine::Iverilog, &verilog, &vectors).unwrap();
         let names: Vec<&str> = ports
             .iter()
@@ -208,7 +230,9 @@ fn beam_fetch_verilog_matches_golden_prps_under_icarus() {
                 (0..4).map(|i| get(format!("cur${i}"))).collect(),
                 (0..4).map(|i| get(format!("next${i}"))).collect(),
             ];
-            segments.clock(&c, "Icarus", t, get("valid".into()) == 1, got);
+            if let Some(t) = t.checked_sub(c.loads.len()).filter(|&t| t > 0) {
+                segments.clock(&c, "Icarus", t, get("valid".into()) == 1, got);
+            }
         }
         segments.finish(&c);
     }

@@ -18,7 +18,7 @@ use testbenches::{for_each_p, pixel_port, require_tool, run_clocks, Edge};
 const H: usize = 10;
 
 fn pipeline<const P: usize>(c: &Case) -> Cube3<P, H> {
-    let mut uut = Cube3::<P, H>::new(&c.config.pipeline).unwrap();
+    let mut uut = Cube3::<P, H>::new(&c.config.pipeline, &c.sizes).unwrap();
     if let Some(s) = &c.config.pipeline.shading {
         uut.preload_tables(&s.tables());
     }

@@ -13,12 +13,12 @@ use rust_hdl::prelude::*;
 use testbenches::cube3::{cases, emitted_verilog, verilog_pixels, Case, Pixels};
 use testbenches::{for_each_p, pixel_port, require_tool, run_clocks, Edge};
 
-const A: usize = 12;
+const A: usize = 13;
 const B: usize = 10;
 const H: usize = 10;
 
 fn system<const P: usize>(c: &Case) -> Cube3System<P, A, B, H> {
-    let mut uut = Cube3System::<P, A, B, H>::new(&c.config).unwrap();
+    let mut uut = Cube3System::<P, A, B, H>::new(&c.config.pipeline, &c.sizes).unwrap();
     uut.preload(&c.modules);
     if let Some(s) = &c.config.pipeline.shading {
         uut.preload_tables(&s.tables());
@@ -113,7 +113,7 @@ fn a_fault_in_the_cube3_system_verilog_is_caught() {
 #[test]
 fn cube3_system_loads_its_memory_through_the_load_port() {
     let c = cases(2).remove(0);
-    let mut uut = Cube3System::<2, A, B, H>::new(&c.config).unwrap();
+    let mut uut = Cube3System::<2, A, B, H>::new(&c.config.pipeline, &c.sizes).unwrap();
     uut.connect_all();
     let words: Vec<(usize, usize, u16)> = c
         .modules

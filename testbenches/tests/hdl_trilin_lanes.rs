@@ -129,14 +129,11 @@ fn cases(p: usize) -> Vec<Case> {
 }
 
 fn unit<const P: usize>(c: &Case) -> TrilinLanes<P, H> {
-    let mut uut = TrilinLanes::<P, H>::new(
-        c.segments,
-        c.offset,
-        c.weight_bits,
-        c.voxel_bits,
-        c.sample_frac,
-    )
-    .unwrap();
+    // Built for longer rays than the case's: the lines' length is the
+    // view's, at run time.
+    let mut uut =
+        TrilinLanes::<P, H>::new(c.segments + 3, c.weight_bits, c.voxel_bits, c.sample_frac)
+            .unwrap();
     uut.connect_all();
     uut
 }
@@ -173,6 +170,8 @@ fn rust_hdl_run<const P: usize>() {
                     x.wy[i].next = (k.wy[i] as u64).to_bits();
                 }
                 x.first.next = k.first;
+                x.offset.next = (c.offset as u64).to_bits();
+                x.line_last.next = ((c.segments - 2) as u64).to_bits();
             }
             Edge::After(t) => {
                 for (i, w) in due(&c, t).iter().enumerate() {
@@ -217,7 +216,11 @@ fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: 
                             _ => k.wy[i],
                         }) as u64
                     }
-                    None => k.first as u64,
+                    None => match p.name.as_str() {
+                        "offset" => c.offset as u64,
+                        "line_last" => c.segments as u64 - 2,
+                        _ => k.first as u64,
+                    },
                 })
                 .collect()
         })

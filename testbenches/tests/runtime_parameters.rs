@@ -1,11 +1,13 @@
-//! One Cube-4L build renders many scenes: the view, the transfer function
-//! and the light are registers and tables the host loads between frames,
-//! never constants of the Verilog. Two scenes of one configuration that
-//! differ in view, table and light emit byte-identical Verilog, and one
-//! Verilator build renders a sequence of such frames bit for bit against
-//! the golden model, each frame after only the host writes that changed.
+//! One build renders many scenes, on Cube-4L and on Cube-3: the view, the
+//! transfer function and the light are registers and tables the host loads
+//! between frames, never constants of the Verilog. Two scenes of one
+//! configuration that differ in view, table and light emit byte-identical
+//! Verilog, and one Verilator build renders a sequence of such frames bit
+//! for bit against the golden model, each frame after only the host writes
+//! that changed.
 
 use cosim::arch::Arch;
+use cosim::cube3::Cube3;
 use cosim::cube4l::Cube4l;
 use cosim::export::{write_export, ExportScene};
 use cosim::sim::simulate_frames;
@@ -44,18 +46,34 @@ fn with_cameras(scenes: Vec<Scene>) -> Vec<(Scene, Camera)> {
         .collect()
 }
 
+/// A parallel shaded Cube-3 scene of the phantom with `view`, table and
+/// light, and a perspective one from `eye`.
+fn cube3_parallel(view: &str, transfer_and_light: &str) -> Scene {
+    scene(&format!(
+        r#"{{"volume": {{"builtin": "phantom", "dims": [12, 10, 11]}}, "view": {{"projection": "parallel", "rotate_deg": {view}}},
+            "mode": "composite", {transfer_and_light}, "image": [24, 24], "hardware": {{"pipelines": 2}}}}"#
+    ))
+}
+
+fn cube3_perspective(eye: &str, transfer_and_light: &str) -> Scene {
+    scene(&format!(
+        r#"{{"volume": {{"builtin": "sphere", "dims": [9, 11, 10]}}, "view": {{"projection": "perspective", "eye": {eye}, "target": [4, 5, 4.5], "fov_deg": 60}},
+            "mode": "composite", {transfer_and_light}, "image": [16, 16], "hardware": {{"pipelines": 2}}}}"#
+    ))
+}
+
 /// The Verilog files (name, text) of an export of `s` on the build it needs.
-fn exported(s: &Scene, dir: &std::path::Path) -> (String, Vec<(String, String)>) {
+fn exported<A: Arch>(s: &Scene, dir: &std::path::Path) -> (String, Vec<(String, String)>) {
     let camera = s.camera().unwrap();
     let dims = s.volume.render_dims();
-    let build = Cube4l::needs(s, &camera, dims).unwrap();
+    let build = A::needs(s, &camera, dims).unwrap();
     let es = ExportScene {
         name: "scene.json",
         scene: s,
         camera: &camera,
         dims,
     };
-    write_export::<Cube4l>(dir, &build, Some(&es)).unwrap();
+    write_export::<A>(dir, &build, Some(&es)).unwrap();
     let mut files: Vec<(String, String)> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -66,12 +84,12 @@ fn exported(s: &Scene, dir: &std::path::Path) -> (String, Vec<(String, String)>)
         })
         .collect();
     files.sort();
-    (Cube4l::config_name(&build), files)
+    (A::config_name(&build), files)
 }
 
 #[test]
 fn scenes_of_one_configuration_emit_identical_verilog() {
-    for (a, b) in [
+    identical::<Cube4l>([
         (
             parallel("[70, 30, 0]", LIGHT_A),
             parallel("[-20, 135, 10]", LIGHT_B),
@@ -80,10 +98,24 @@ fn scenes_of_one_configuration_emit_identical_verilog() {
             perspective("[5.3, 6.6, 4.2]", LIGHT_A),
             perspective("[8.5, 2.0, 14.0]", LIGHT_B),
         ),
-    ] {
+    ]);
+    identical::<Cube3>([
+        (
+            cube3_parallel("[25, 35, 0]", LIGHT_A),
+            cube3_parallel("[-40, 160, 20]", LIGHT_B),
+        ),
+        (
+            cube3_perspective("[-14, -6, -14]", LIGHT_A),
+            cube3_perspective("[4, 18, -9]", LIGHT_B),
+        ),
+    ]);
+}
+
+fn identical<A: Arch>(pairs: [(Scene, Scene); 2]) {
+    for (a, b) in pairs {
         let tmp = tempfile::tempdir().unwrap();
-        let (name_a, va) = exported(&a, &tmp.path().join("a"));
-        let (name_b, vb) = exported(&b, &tmp.path().join("b"));
+        let (name_a, va) = exported::<A>(&a, &tmp.path().join("a"));
+        let (name_b, vb) = exported::<A>(&b, &tmp.path().join("b"));
         assert_eq!(name_a, name_b, "both scenes need one configuration");
         assert!(va.len() >= 5, "{name_a}: {} Verilog files", va.len());
         assert_eq!(
@@ -102,14 +134,13 @@ fn scenes_of_one_configuration_emit_identical_verilog() {
 /// Three frames on one Verilator build: a view, a new view, then a new
 /// table and light; every frame bit for bit, the later ones after only the
 /// words that changed.
-fn frames_on_one_build(frames: Vec<Scene>, vol: &scene::volume::Volume) {
+fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume) {
     let frames = with_cameras(frames);
-    let r = simulate_frames::<Cube4l>(&frames, None, vol, Engine::Verilator, None, &|v| {
+    let r = simulate_frames::<A>(&frames, None, vol, Engine::Verilator, None, &|v| {
         v.to_string()
     })
     .unwrap();
-    let name = Cube4l::config_name(&r.config);
-    assert_eq!(r.designs, 1, "{name}: one design for every frame");
+    let name = A::config_name(&r.config);
     assert_eq!(r.frames.len(), 3);
     for (i, f) in r.frames.iter().enumerate() {
         assert_eq!(
@@ -136,7 +167,7 @@ fn frames_on_one_build(frames: Vec<Scene>, vol: &scene::volume::Volume) {
 fn one_parallel_build_renders_new_views_tables_and_lights() {
     require_tool("verilator");
     let vol = builtin("sphere", [12, 12, 10], 8).unwrap();
-    frames_on_one_build(
+    frames_on_one_build::<Cube4l>(
         vec![
             parallel("[70, 30, 0]", LIGHT_A),
             parallel("[-20, 135, 10]", LIGHT_A),
@@ -150,11 +181,40 @@ fn one_parallel_build_renders_new_views_tables_and_lights() {
 fn one_perspective_build_renders_new_eyes_tables_and_lights() {
     require_tool("verilator");
     let vol = builtin("phantom", [10, 12, 11], 8).unwrap();
-    frames_on_one_build(
+    frames_on_one_build::<Cube4l>(
         vec![
             perspective("[5.3, 6.6, 4.2]", LIGHT_A),
             perspective("[8.5, 2.0, 14.0]", LIGHT_A),
             perspective("[8.5, 2.0, 14.0]", LIGHT_B),
+        ],
+        &vol,
+    );
+}
+
+#[test]
+fn one_cube3_build_renders_new_views_tables_and_lights() {
+    require_tool("verilator");
+    let vol = builtin("phantom", [12, 10, 11], 8).unwrap();
+    frames_on_one_build::<Cube3>(
+        vec![
+            // (Views of one traversal order: one volume load.)
+            cube3_parallel("[25, 35, 0]", LIGHT_A),
+            cube3_parallel("[35, 20, 0]", LIGHT_A),
+            cube3_parallel("[35, 20, 0]", LIGHT_B),
+        ],
+        &vol,
+    );
+}
+
+#[test]
+fn one_cube3_perspective_build_renders_new_eyes_tables_and_lights() {
+    require_tool("verilator");
+    let vol = builtin("sphere", [9, 11, 10], 8).unwrap();
+    frames_on_one_build::<Cube3>(
+        vec![
+            cube3_perspective("[-14, -6, -14]", LIGHT_A),
+            cube3_perspective("[4, 18, -9]", LIGHT_A),
+            cube3_perspective("[4, 18, -9]", LIGHT_B),
         ],
         &vol,
     );
