@@ -460,7 +460,7 @@ fn configurations_by_name_and_frames_in_sequence() {
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j = read_json(&d.path().join("f.json"));
-    assert_eq!(j["designs"], 1, "{j}");
+    assert_eq!(j["memory_loads"], 1, "{j}");
     assert_eq!(j["configuration"], "mip_p2_12");
     let frames = j["frames"].as_array().unwrap();
     assert_eq!(frames.len(), 2);

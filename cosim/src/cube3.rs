@@ -748,21 +748,15 @@ impl Arch for Cube3 {
         terms
     }
 
-    fn buffer_memory(config: &Cube3Build, parts: &[Part]) -> BufferMemory {
+    fn buffer_memory(config: &Cube3Build, _parts: &[Part]) -> BufferMemory {
         // The build's 2-DSBs hold the longest PRP of its class: `R` rays of
-        // `G·P` 16-bit words; the scene's largest base plane needs `K`
-        // planes of voxel bits a ray.
+        // `G·P` 16-bit words, where the least is `n` planes of voxel bits a
+        // ray.
         let s = config.sizes();
-        let c = parts
-            .iter()
-            .map(|d| &d.config)
-            .max_by_key(|c| c.fetch.rays * c.fetch.segments)
-            .expect("a part per base plane");
-        let f = &c.fetch;
         BufferMemory {
             what: "three 2-D skewed buffers",
             bits: (3 * s.p * s.rays() * s.segments() * 16) as u64,
-            minimum_bits: (3 * f.rays * f.dims[2]) as u64 * c.pipeline.voxel_bits as u64,
+            minimum_bits: (3 * s.rays() * s.n) as u64 * config.voxel_bits as u64,
         }
     }
 

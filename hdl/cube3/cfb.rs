@@ -103,7 +103,10 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     pos_y: ViewRom<16, GROUP_BITS>,
     /// `C3Stream`, `C3Dims`, `C3Address`, `C3Origin`.
     regs: Regs<4>,
+    /// `K + 1` in a perspective build; a parallel build's is 0, so
+    /// synthesis removes its multiplier.
     row_stride: Signal<Local, Bits<16>>,
+    perspective: Constant<Bit>,
     row_entry: Signal<Local, Bits<32>>,
     schedule: Schedule,
     /// The write side: this clock's plane, row and first ray, and per lane
@@ -224,6 +227,7 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             ),
             row_entry: Default::default(),
             row_stride: Default::default(),
+            perspective: Constant::new(s.perspective),
             schedule: Schedule::default(),
             row: Default::default(),
             lane_ray: std::array::from_fn(|_| Default::default()),
@@ -292,7 +296,10 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.n_k.next = self.regs.q[1].val().get_bits::<16>(32);
         self.row_words.next = self.regs.q[2].val().get_bits::<16>(0);
         self.plane_words.next = self.regs.q[2].val().get_bits::<16>(16);
-        self.row_stride.next = self.regs.q[2].val().get_bits::<16>(32);
+        self.row_stride.next = 0.into();
+        if self.perspective.val() {
+            self.row_stride.next = self.regs.q[2].val().get_bits::<16>(32);
+        }
         self.v0.next = self.regs.q[3].val().get_bits::<16>(16);
         self.pos_y.clock.next = self.clock.val();
         self.pos_y.host_write.next = self.host_write.val();

@@ -26,6 +26,10 @@ pub struct Templates<const P: usize> {
     pub segment: Signal<In, Bits<16>>,
     pub wx: [Signal<Out, Bits<16>>; P],
     pub wy: [Signal<Out, Bits<16>>; P],
+    /// The stride a perspective build takes; a parallel build's is 0, so
+    /// synthesis removes the multipliers.
+    per_ray: Constant<Bit>,
+    row_stride: Signal<Local, Bits<16>>,
     wx_entry: Signal<Local, Bits<32>>,
     wy_entry: Signal<Local, Bits<32>>,
     wx_rom: [ViewRom<16, TEMPLATE_BITS>; P],
@@ -51,6 +55,8 @@ impl<const P: usize> Templates<P> {
             segment: Default::default(),
             wx: std::array::from_fn(|_| Default::default()),
             wy: std::array::from_fn(|_| Default::default()),
+            per_ray: Constant::new(s.perspective),
+            row_stride: Default::default(),
             wx_entry: Default::default(),
             wy_entry: Default::default(),
             wx_rom: std::array::from_fn(|i| {
@@ -66,10 +72,14 @@ impl<const P: usize> Templates<P> {
 impl<const P: usize> Logic for Templates<P> {
     #[hdl_gen]
     fn update(&mut self) {
+        self.row_stride.next = 0.into();
+        if self.per_ray.val() {
+            self.row_stride.next = self.stride.val();
+        }
         self.wx_entry.next =
-            self.ray.val() * self.stride.val() + bit_cast::<32, 16>(self.segment.val());
+            self.ray.val() * self.row_stride.val() + bit_cast::<32, 16>(self.segment.val());
         self.wy_entry.next =
-            self.scanline.val() * self.stride.val() + bit_cast::<32, 16>(self.segment.val());
+            self.scanline.val() * self.row_stride.val() + bit_cast::<32, 16>(self.segment.val());
         for i in 0..P {
             self.wx_rom[i].clock.next = self.clock.val();
             self.wx_rom[i].host_write.next = self.host_write.val();

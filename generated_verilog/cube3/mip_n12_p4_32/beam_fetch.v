@@ -30,6 +30,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     
     // Constant declarations
     localparam  external = 1'b0;
+    localparam  perspective = 1'b0;
     localparam  index$0 = 16'h0;
     localparam  index$1 = 16'h1;
     localparam  index$2 = 16'h2;
@@ -695,7 +696,10 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         n_k = regs$q$1[('h20)+:(16)];
         row_words = regs$q$2[('h0)+:(16)];
         plane_words = regs$q$2[('h10)+:(16)];
-        row_stride = regs$q$2[('h20)+:(16)];
+        row_stride = 'h0;
+        if (perspective) begin
+            row_stride = regs$q$2[('h20)+:(16)];
+        end
         v0 = regs$q$3[('h10)+:(16)];
         pos_y$clock = clock;
         pos_y$host_write = host_write;

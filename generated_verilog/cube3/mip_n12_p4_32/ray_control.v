@@ -1304,6 +1304,9 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     output reg  [15:0] wy$2;
     output reg  [15:0] wy$3;
     
+    // Constant declarations
+    localparam  per_ray = 1'b0;
+    
     // Stub signals
     reg  wx_rom$0$clock;
     reg  wx_rom$0$host_write;
@@ -1355,6 +1358,7 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     wire  [15:0] wy_rom$3$data;
     
     // Local signals
+    reg  [15:0] row_stride;
     reg  [31:0] wx_entry;
     reg  [31:0] wy_entry;
     
@@ -1426,8 +1430,12 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     
     // Update code
     always @(*) begin
-        wx_entry = ray * stride + 32'(segment);
-        wy_entry = scanline * stride + 32'(segment);
+        row_stride = 'h0;
+        if (per_ray) begin
+            row_stride = stride;
+        end
+        wx_entry = ray * row_stride + 32'(segment);
+        wy_entry = scanline * row_stride + 32'(segment);
         wx_rom$0$clock = clock;
         wx_rom$0$host_write = host_write;
         wx_rom$0$host_address = host_address;

@@ -1096,6 +1096,9 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     output reg  [15:0] wy$0;
     output reg  [15:0] wy$1;
     
+    // Constant declarations
+    localparam  per_ray = 1'b0;
+    
     // Stub signals
     reg  wx_rom$0$clock;
     reg  wx_rom$0$host_write;
@@ -1123,6 +1126,7 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     wire  [15:0] wy_rom$1$data;
     
     // Local signals
+    reg  [15:0] row_stride;
     reg  [31:0] wx_entry;
     reg  [31:0] wy_entry;
     
@@ -1162,8 +1166,12 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     
     // Update code
     always @(*) begin
-        wx_entry = ray * stride + 32'(segment);
-        wy_entry = scanline * stride + 32'(segment);
+        row_stride = 'h0;
+        if (per_ray) begin
+            row_stride = stride;
+        end
+        wx_entry = ray * row_stride + 32'(segment);
+        wy_entry = scanline * row_stride + 32'(segment);
         wx_rom$0$clock = clock;
         wx_rom$0$host_write = host_write;
         wx_rom$0$host_address = host_address;
