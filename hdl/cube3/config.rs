@@ -542,9 +542,10 @@ impl Cube3Sizes {
         self.segments() * self.n * self.n
     }
 
-    /// The volume lives in external memory (a module beyond 2^16 words).
+    /// The volume lives in external memory (a module beyond the on-chip
+    /// `2^ON_CHIP_BITS` words).
     pub fn external(&self) -> bool {
-        self.module_words() > 1 << 16
+        self.module_words() > 1 << crate::common::ram::ON_CHIP_BITS
     }
 
     /// Why this build cannot render the base plane `c`, if it cannot.
