@@ -5,7 +5,9 @@
 //! (iCE40: an UP5K, ECP5: an LFE5U-85F) is placed and routed with nextpnr
 //! for fmax (ECP5: with its critical path), and the frame rate is given for
 //! the scene and, where the architecture projects it, for 256³ and 512³
-//! volumes against the VolumePro 500's 30 frames/s at 256³.
+//! volumes against the VolumePro 500's 30 frames/s at 256³. With `--keep
+//! DIR` the exported Verilog, the yosys log and netlist, and nextpnr's log,
+//! report and routed netlist stay in DIR.
 
 use crate::common::{choose_build, HwArch, Loaded};
 use crate::output::write_json;
@@ -42,6 +44,12 @@ pub struct SynthArgs {
     /// Skip placement and routing.
     #[arg(long)]
     no_pnr: bool,
+    /// Keep the work in DIR, a directory this run creates: the exported
+    /// Verilog, `synth.log`, the netlist `synth.json`, and after place and
+    /// route `pnr.log`, `report.json` and the routed netlist `routed.json`
+    /// (no bitstream: the design is placed out of context, without pins).
+    #[arg(long, value_name = "DIR")]
+    keep: Option<PathBuf>,
 }
 
 pub fn run(args: SynthArgs) -> Result<()> {
@@ -72,12 +80,28 @@ impl ForArch for Synth<'_> {
             None => vec![],
         };
         let name = A::config_name(&build);
-        // Removed when dropped, on every path out of this function.
-        let work = tempfile::Builder::new()
-            .prefix("cube-synth-")
-            .tempdir()
-            .context("creating a temporary directory for yosys")?;
-        let dir = work.path().join("design");
+        // A temporary directory is removed when dropped, on every path out
+        // of this function; a kept one is new, so nothing is replaced.
+        let (_work, root) = match &args.keep {
+            Some(d) => {
+                if args.json.as_deref() == Some(d.as_path()) {
+                    anyhow::bail!("synth: --keep and --json name the same path");
+                }
+                std::fs::create_dir(d).with_context(|| {
+                    format!("synth: --keep {}: creating a new directory", d.display())
+                })?;
+                (None, d.clone())
+            }
+            None => {
+                let t = tempfile::Builder::new()
+                    .prefix("cube-synth-")
+                    .tempdir()
+                    .context("creating a temporary directory for yosys")?;
+                let root = t.path().to_path_buf();
+                (Some(t), root)
+            }
+        };
+        let dir = root.join("design");
         let m = cosim::export::write_export::<A>(&dir, &build, scene.as_ref()).map_err(err)?;
         // One design per build.
         let first = &m["designs"][0];
@@ -88,8 +112,10 @@ impl ForArch for Synth<'_> {
             .filter_map(|f| f.as_str().map(String::from))
             .collect();
         let sub = dir.join(first["dir"].as_str().unwrap_or("."));
-        let r = synthesize(&sub, &files, target, !args.no_pnr)
-            .map_err(|e| anyhow::anyhow!("synth: {e}"))?;
+        let r = synthesize(&sub, &files, target, !args.no_pnr).map_err(|e| match &args.keep {
+            Some(_) => anyhow::anyhow!("synth: {e} (the logs are in {})", sub.display()),
+            None => anyhow::anyhow!("synth: {e} (--keep DIR keeps the logs)"),
+        })?;
         let p = m["parameters"]["pipelines"].as_u64().unwrap_or(1);
         println!(
             "{} ({} {name}): {} cells, {} LUTs, {} flip-flops, {} block RAMs, {} DSPs ({:.1} s); per pipeline {:.1} LUTs, {:.1} DSPs",

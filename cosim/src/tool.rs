@@ -27,15 +27,19 @@ fn missing(what: &str, e: std::io::Error) -> String {
     format!("cannot run {what} ({e}): run scripts/test, which installs it")
 }
 
-/// The output of a finished tool run, or its error with the end of its log.
+/// The output of a finished tool run, or its error with the end of its
+/// error stream and of its log.
 fn finished(out: Output, what: &str) -> Result<Output, String> {
     if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        let log = String::from_utf8_lossy(&out.stdout);
-        let tail: Vec<&str> = log.lines().rev().take(15).collect();
+        let tail = |bytes: &[u8], n: usize| -> String {
+            let text = String::from_utf8_lossy(bytes);
+            let lines: Vec<&str> = text.lines().rev().take(n).collect();
+            lines.into_iter().rev().collect::<Vec<_>>().join("\n")
+        };
         return Err(format!(
-            "{what} failed: {err}{}",
-            tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+            "{what} failed: {}\n{}",
+            tail(&out.stderr, 20),
+            tail(&out.stdout, 15)
         ));
     }
     Ok(out)

@@ -11,6 +11,7 @@
 //! generic `synth` (gates; memories become flip-flops, multipliers gates).
 
 pub mod ecp5;
+pub mod timing;
 
 use crate::tool::run as run_tool;
 use std::collections::BTreeMap;
@@ -93,8 +94,8 @@ pub struct Report {
     pub fits: Option<bool>,
     /// Designs that fit: nextpnr's maximum clock frequency.
     pub fmax_mhz: Option<f64>,
-    /// ECP5: the critical path.
-    pub timing: Option<ecp5::Timing>,
+    /// The critical path.
+    pub timing: Option<timing::Timing>,
     pub pnr_seconds: Option<f64>,
 }
 
@@ -140,7 +141,7 @@ pub fn parse_stat(text: &str) -> (u64, BTreeMap<String, u64>) {
 }
 
 /// Synthesize the design whose files (`top.v` first) are in `dir`; writes
-/// `synth.log` (and for iCE40 and ECP5 `synth.json`) there. With `pnr`, an
+/// `synth.log` (also when yosys fails) and for iCE40 and ECP5 `synth.json` there. With `pnr`, an
 /// iCE40 design that fits an UP5K, or an ECP5 design that fits an
 /// LFE5U-85F, is also placed and routed for fmax.
 pub fn synthesize(
@@ -155,13 +156,12 @@ pub fn synthesize(
         files.join(" "),
         target.script()
     );
-    let out = run_tool(
+    run_tool(
         Command::new(target.yosys())
-            .args(["-q", "-p", &script])
+            .args(["-q", "-l", "synth.log", "-p", &script])
             .current_dir(dir),
         &target.yosys().display().to_string(),
     )?;
-    std::fs::write(dir.join("synth.log"), &out.stdout).map_err(|e| e.to_string())?;
     let stat = std::fs::read_to_string(dir.join("stat.txt")).map_err(|e| e.to_string())?;
     let synth_seconds = t.elapsed().as_secs_f64();
     let (cells, types) = parse_stat(&stat);
@@ -224,13 +224,13 @@ pub fn synthesize(
     };
     if pnr && fits == Some(true) {
         let t = std::time::Instant::now();
-        if target == Target::Ecp5 {
-            let timing = ecp5::place_and_route(dir)?;
-            report.fmax_mhz = Some(timing.fmax_mhz);
-            report.timing = Some(timing);
+        let timing = if target == Target::Ecp5 {
+            ecp5::place_and_route(dir)?
         } else {
-            report.fmax_mhz = Some(place_and_route(dir, files)?);
-        }
+            place_and_route(dir, files)?
+        };
+        report.fmax_mhz = Some(timing.fmax_mhz);
+        report.timing = Some(timing);
         report.pnr_seconds = Some(t.elapsed().as_secs_f64());
     }
     Ok(report)
@@ -296,9 +296,10 @@ pub fn fmax_wrapper(top_v: &str) -> String {
     v
 }
 
-/// Place and route for an UP5K (sg48) with nextpnr-ice40; returns the fmax
-/// of the pipeline clock in MHz.
-fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
+/// Place and route for an UP5K (sg48) with nextpnr-ice40 inside
+/// [`fmax_wrapper`], and pack its bitstream (`fmax.bin`); writes `pnr.log`
+/// and `report.json`; returns the pipeline clock's fmax and critical path.
+fn place_and_route(dir: &Path, files: &[String]) -> Result<timing::Timing, String> {
     let top_v = std::fs::read_to_string(dir.join("top.v")).map_err(|e| e.to_string())?;
     std::fs::write(dir.join("fmax_top.v"), fmax_wrapper(&top_v)).map_err(|e| e.to_string())?;
     let script = format!(
@@ -307,11 +308,11 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
     );
     run_tool(
         Command::new("yosys")
-            .args(["-q", "-p", &script])
+            .args(["-q", "-l", "fmax_synth.log", "-p", &script])
             .current_dir(dir),
         "yosys",
     )?;
-    let out = run_tool(
+    run_tool(
         Command::new("nextpnr-ice40")
             .args([
                 "--up5k",
@@ -325,19 +326,22 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<f64, String> {
                 "--seed",
                 "1",
                 "--timing-allow-fail",
+                "--log",
+                "pnr.log",
+                "--report",
+                "report.json",
+                "--asc",
+                "fmax.asc",
             ])
             .current_dir(dir),
         "nextpnr-ice40",
     )?;
-    let log = String::from_utf8_lossy(&out.stderr).to_string();
-    std::fs::write(dir.join("pnr.log"), &log).map_err(|e| e.to_string())?;
-    // The last "Max frequency for clock" line is the post-route figure.
-    log.lines()
-        .rev()
-        .filter(|l| l.contains("Max frequency for clock"))
-        .find_map(|l| {
-            let rest = &l[l.find("': ")? + 3..];
-            rest.split_whitespace().next()?.parse::<f64>().ok()
-        })
-        .ok_or_else(|| "nextpnr-ice40 reported no fmax (see pnr.log)".into())
+    run_tool(
+        Command::new("icepack")
+            .args(["fmax.asc", "fmax.bin"])
+            .current_dir(dir),
+        "icepack",
+    )?;
+    let report = std::fs::read_to_string(dir.join("report.json")).map_err(|e| e.to_string())?;
+    timing::parse_report(&report)
 }
