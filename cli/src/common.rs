@@ -230,6 +230,10 @@ pub fn render_arch(
             let seconds = t.elapsed().as_secs_f64();
             let s = frame.stats;
             let v = &frame.plan.views[0];
+            // The RTL's schedule for this neighbourhood, where it builds it.
+            let mut rtl = scene.clone();
+            rtl.cube3.gradient = n.count();
+            let clocks = rtl_clocks::<cosim::cube3::Cube3>(&rtl, &rtl.camera()?, vol.dims);
             Ok(Rendered {
                 image,
                 seconds,
@@ -244,6 +248,7 @@ pub fn render_arch(
                     "trilin_left_out": frame.plan.views.iter().all(|v| v.on_grid),
                     "rays": s.rays,
                     "samples": s.samples,
+                    "clocks": clocks,
                     "samples_interpolated": s.interpolated,
                     "samples_shaded": s.shaded,
                     "samples_terminated": s.terminated,

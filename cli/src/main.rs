@@ -11,6 +11,7 @@ mod default_run;
 mod gradients;
 mod output;
 mod render;
+mod reports;
 mod scenes;
 mod sim;
 mod synth;

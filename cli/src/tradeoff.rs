@@ -11,9 +11,16 @@
 //! the step is halved until the reference at `s` and at `s/2` differ by less
 //! than `--tolerance` (relative Euclidean, %), and the image at `s/2` is the
 //! yardstick. Coarser reference steps are points of their own.
+//!
+//! A hardware point costs its RTL's clocks per frame (the schedule `cube
+//! sim` asserts) at the fmax of the committed ECP5 report of the smallest
+//! committed build that renders it ([`crate::reports`]), whose LUT4,
+//! multipliers and block RAMs are its area; where no report has an fmax, at
+//! an assumed clock, said so on the point.
 
 use crate::common::{render_repeat, Arch};
 use crate::output::{check_target, write_json, write_png_rgb8, write_text};
+use crate::reports::{pricing_build, Measured};
 use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use plotters::prelude::*;
@@ -39,9 +46,8 @@ pub struct TradeoffArgs {
     /// Software times are the median of this many runs.
     #[arg(long, default_value_t = 3)]
     repeat: usize,
-    /// Clock of the hardware methods, in MHz, as measured by `cube synth`
-    /// for a named part; without it an assumed 100 MHz, marked as assumed in
-    /// every output.
+    /// Clock of every hardware point, in MHz, instead of the committed
+    /// reports' fmax (marked "given" in every output).
     #[arg(long)]
     clock_mhz: Option<f64>,
     /// Convergence tolerance of the reference yardstick: relative Euclidean
@@ -50,7 +56,8 @@ pub struct TradeoffArgs {
     tolerance: f64,
 }
 
-/// The clock assumed when none is given.
+/// The clock assumed for a hardware point that no placed-and-routed report
+/// prices.
 const ASSUMED_MHZ: f64 = 100.0;
 /// Reference steps tried, coarsest first; the finest is the last resort.
 const REF_STEPS: [f64; 7] = [1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625];
@@ -226,9 +233,29 @@ struct Point {
     /// The quantized path: its per-volume preprocessing, within
     /// `software_seconds` but not in the per-frame cost.
     volume_prep_seconds: Option<f64>,
-    clocks: Option<u64>,
+    hw: Option<HwPrice>,
     cost_seconds: f64,
     image_hash: String,
+}
+
+/// What a hardware point costs and where each figure comes from.
+struct HwPrice {
+    clocks: u64,
+    /// "rtl" (the RTL's schedule) or "ideal" (samples over p: the RTL does
+    /// not build this point).
+    clocks_from: &'static str,
+    mhz: f64,
+    /// "measured" (the report's fmax), "given" (`--clock-mhz`) or
+    /// "assumed".
+    clock_from: &'static str,
+    /// The committed build whose report priced the point.
+    build: Option<Measured>,
+}
+
+impl HwPrice {
+    fn frame_seconds(&self) -> f64 {
+        self.clocks as f64 / (self.mhz * 1e6)
+    }
 }
 
 pub fn run(args: TradeoffArgs) -> Result<()> {
@@ -238,11 +265,13 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
     if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance <= 10.0) {
         bail!("--tolerance {} must lie in (0, 10] %", args.tolerance);
     }
-    let (clock_mhz, assumed) = match args.clock_mhz {
-        Some(f) if f.is_finite() && (0.1..=10_000.0).contains(&f) => (f, false),
-        Some(f) => bail!("--clock-mhz {f} must lie in [0.1, 10000]"),
-        None => (ASSUMED_MHZ, true),
-    };
+    if let Some(f) = args
+        .clock_mhz
+        .filter(|f| !(f.is_finite() && (0.1..=10_000.0).contains(f)))
+    {
+        bail!("--clock-mhz {f} must lie in [0.1, 10000]");
+    }
+    let generated = crate::reports::generated_dir();
     let text = std::fs::read_to_string(&args.scene)
         .with_context(|| format!("reading {}", args.scene.display()))?;
     let base: Value = serde_json::from_str(&text)
@@ -273,6 +302,7 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         "tradeoff.csv",
         "tradeoff.png",
         "tradeoff.md",
+        "tradeoff_area.png",
     ]
     .map(|f| args.out.join(f));
     for f in &files {
@@ -375,16 +405,17 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
             args.repeat,
         )
         .with_context(|| format!("{} {label}", f.name))?;
-        let clocks = match f.hardware {
+        let hw = match f.hardware {
             true => Some(
-                clocks_of(f.arch, &s, &r.extra).with_context(|| format!("{} {label}", f.name))?,
+                price(f.arch, &s, &r.extra, args.clock_mhz, &generated)
+                    .with_context(|| format!("{} {label}", f.name))?,
             ),
             false => None,
         };
         // Per frame: the quantized path's per-volume preprocessing is paid
         // once per volume, not per frame (it is in the row on its own).
-        let cost = match clocks {
-            Some(c) => c as f64 / (clock_mhz * 1e6),
+        let cost = match &hw {
+            Some(h) => h.frame_seconds(),
             None => r.extra["frame_seconds"].as_f64().unwrap_or(r.seconds),
         };
         let params: Map<String, Value> = v
@@ -392,7 +423,7 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
             .iter()
             .map(|(k, x)| (k.to_string(), x.clone()))
             .collect();
-        let mut p = point(f.name, params, &r.image, &yard, r.seconds, clocks, cost);
+        let mut p = point(f.name, params, &r.image, &yard, r.seconds, hw, cost);
         p.volume_prep_seconds = r.extra["volume_prep_seconds"].as_f64();
         points.push(p);
         bar.inc(1);
@@ -400,11 +431,20 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
     bar.finish_and_clear();
 
     let front = pareto(&points);
-    let clock = json!({"mhz": clock_mhz, "assumed": assumed});
+    let assumed = points
+        .iter()
+        .filter(|p| p.hw.as_ref().is_some_and(|h| h.clock_from == "assumed"))
+        .count();
+    let clock = json!({
+        "given_mhz": args.clock_mhz,
+        "assumed_mhz": ASSUMED_MHZ,
+        "points_assumed": assumed,
+        "reports": generated.join("synth").display().to_string(),
+    });
     let rows: Vec<Value> = points
         .iter()
         .enumerate()
-        .map(|(i, p)| row_json(p, front.contains(&i), clock_mhz, assumed))
+        .map(|(i, p)| row_json(p, front.contains(&i)))
         .collect();
     let notes = identical_notes(&points);
     let yardstick = json!({
@@ -423,8 +463,9 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         "points": rows,
     });
     // Everything is computed before anything is written.
-    let png = plot(&points, &front, clock_mhz, assumed)?;
-    let csv = csv(&points, &front, clock_mhz, assumed);
+    let png = plot(&points, &front)?;
+    let area_png = plot_area(&points)?;
+    let csv = csv(&points, &front);
     let md = markdown(&points, &front, &report);
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
@@ -432,15 +473,16 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
     write_text(&files[1], &csv)?;
     write_png_rgb8(&files[2], PLOT_W, PLOT_H, png)?;
     write_text(&files[3], &md)?;
+    write_png_rgb8(&files[4], PLOT_W, PLOT_H, area_png)?;
     println!(
-        "{} points, {} on the Pareto front; yardstick: reference at step {yard_step}{}; hardware clock {clock_mhz} MHz{}",
+        "{} points, {} on the Pareto front; yardstick: reference at step {yard_step}{}; hardware points: {}",
         points.len(),
         front.len(),
         match converged {
             Some((s, h, d)) => format!(" (steps {s} and {h} differ by {d:.4} % < {} %)", args.tolerance),
             None => format!(" (NOT converged to {} %: the finest step tried)", args.tolerance),
         },
-        if assumed { " (assumed)" } else { "" }
+        hw_summary(&points)
     );
     for (m, w) in &skipped {
         println!("skipped {m}: {w}");
@@ -518,19 +560,61 @@ fn merge(a: &mut Value, b: &Value) {
     }
 }
 
-/// Clocks per frame of a hardware method. Cube-4L: its RTL's schedule, one
-/// voxel per pipeline per clock over each sweep's slices, one more slice
-/// when the gradient unit is built, and the pipeline's fill per sweep (the
-/// count `cube sim` measures). Cube-3 has no RTL yet: its samples over its
-/// `p` units, one sample per unit per clock, with no overhead.
-fn clocks_of(arch: Arch, scene: &Scene, extra: &Value) -> Result<u64> {
+/// A hardware point's price. Clocks: the RTL's schedule (Cube-4L always;
+/// Cube-3 where its RTL builds the point, else its samples over its `p`
+/// units, marked "ideal"). Clock and area: the committed report of the
+/// smallest committed build that renders the point; `--clock-mhz`
+/// overrides the clock; with neither, [`ASSUMED_MHZ`].
+fn price(
+    arch: Arch,
+    scene: &Scene,
+    extra: &Value,
+    given_mhz: Option<f64>,
+    generated: &Path,
+) -> Result<HwPrice> {
     let p = scene.hardware.pipelines as u64;
-    match arch {
-        Arch::Cube4l => extra["clocks"]
-            .as_u64()
-            .context("the Cube-4L RTL does not build this scene: no clocks to cost it by"),
-        _ => Ok(extra["samples"].as_u64().unwrap_or(0).div_ceil(p)),
-    }
+    let (clocks, clocks_from) = match (arch, extra["clocks"].as_u64()) {
+        (_, Some(c)) => (c, "rtl"),
+        (Arch::Cube4l, None) => {
+            bail!("the Cube-4L RTL does not build this scene: no clocks to cost it by")
+        }
+        (_, None) => (extra["samples"].as_u64().unwrap_or(0).div_ceil(p), "ideal"),
+    };
+    let camera = scene.camera()?;
+    let dims = scene.volume.render_dims();
+    let build = match arch {
+        Arch::Cube4l => pricing_build::<cosim::cube4l::Cube4l>(generated, scene, &camera, dims),
+        _ => pricing_build::<cosim::cube3::Cube3>(generated, scene, &camera, dims),
+    };
+    let (mhz, clock_from) = match (given_mhz, build.as_ref().and_then(|b| b.fmax_mhz)) {
+        (Some(f), _) => (f, "given"),
+        (None, Some(f)) => (f, "measured"),
+        (None, None) => (ASSUMED_MHZ, "assumed"),
+    };
+    Ok(HwPrice {
+        clocks,
+        clocks_from,
+        mhz,
+        clock_from,
+        build,
+    })
+}
+
+/// One line on the hardware points' clocks: how many are measured, given
+/// or assumed.
+fn hw_summary(points: &[Point]) -> String {
+    let count = |from: &str| {
+        points
+            .iter()
+            .filter(|p| p.hw.as_ref().is_some_and(|h| h.clock_from == from))
+            .count()
+    };
+    format!(
+        "{} at a measured fmax, {} at a given clock, {} at an assumed {ASSUMED_MHZ} MHz",
+        count("measured"),
+        count("given"),
+        count("assumed")
+    )
 }
 
 fn point(
@@ -539,7 +623,7 @@ fn point(
     img: &Image,
     yard: &Image,
     software_seconds: f64,
-    clocks: Option<u64>,
+    hw: Option<HwPrice>,
     cost_seconds: f64,
 ) -> Point {
     use std::hash::{Hash, Hasher};
@@ -555,7 +639,7 @@ fn point(
         error: compare(img, yard),
         software_seconds,
         volume_prep_seconds: None,
-        clocks,
+        hw,
         cost_seconds,
         image_hash: format!("{:016x}", h.finish()),
     }
@@ -597,16 +681,24 @@ fn params_text(p: &Point) -> String {
         .join(" ")
 }
 
-fn row_json(p: &Point, on_front: bool, mhz: f64, assumed: bool) -> Value {
+fn row_json(p: &Point, on_front: bool) -> Value {
     json!({
         "method": p.method,
         "params": p.params,
         "error": crate::common::error_json(&p.error),
         "software_seconds": p.software_seconds,
         "volume_prep_seconds": p.volume_prep_seconds,
-        "clocks": p.clocks,
-        "hardware_frame_seconds": p.clocks.map(|c| c as f64 / (mhz * 1e6)),
-        "clock_assumed": p.clocks.map(|_| assumed),
+        "hardware": p.hw.as_ref().map(|h| json!({
+            "clocks": h.clocks,
+            "clocks_from": h.clocks_from,
+            "clock_mhz": h.mhz,
+            "clock_from": h.clock_from,
+            "frame_seconds": h.frame_seconds(),
+            "build": h.build.as_ref().map(|b| b.config.clone()),
+            "luts": h.build.as_ref().map(|b| b.luts),
+            "multipliers": h.build.as_ref().map(|b| b.multipliers),
+            "block_rams": h.build.as_ref().map(|b| b.block_rams),
+        })),
         "cost_seconds": p.cost_seconds,
         "pareto": on_front,
         "image_hash": p.image_hash,
@@ -633,14 +725,16 @@ fn identical_notes(points: &[Point]) -> Vec<Value> {
         .collect()
 }
 
-fn csv(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> String {
+fn csv(points: &[Point], front: &[usize]) -> String {
     let mut s = String::from(
-        "method,params,rel_euclid_pct,rmse,psnr_db,max_abs,software_seconds,clocks,hardware_frame_seconds,clock_mhz,clock_assumed,cost_seconds,pareto,image_hash\n",
+        "method,params,rel_euclid_pct,rmse,psnr_db,max_abs,software_seconds,clocks,clocks_from,clock_mhz,clock_from,build,luts,multipliers,block_rams,hardware_frame_seconds,cost_seconds,pareto,image_hash\n",
     );
+    let opt = |v: Option<String>| v.unwrap_or_default();
     for (i, p) in points.iter().enumerate() {
-        let hw = p.clocks.map(|c| c as f64 / (mhz * 1e6));
+        let h = p.hw.as_ref();
+        let b = h.and_then(|h| h.build.as_ref());
         s += &format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             p.method,
             params_text(p),
             p.error.rel_euclid_pct,
@@ -648,18 +742,15 @@ fn csv(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> String {
             p.error.psnr_db,
             p.error.max_abs,
             p.software_seconds,
-            p.clocks.map(|c| c.to_string()).unwrap_or_default(),
-            hw.map(|t| t.to_string()).unwrap_or_default(),
-            if p.clocks.is_some() {
-                mhz.to_string()
-            } else {
-                String::new()
-            },
-            if p.clocks.is_some() {
-                assumed.to_string()
-            } else {
-                String::new()
-            },
+            opt(h.map(|h| h.clocks.to_string())),
+            opt(h.map(|h| h.clocks_from.to_string())),
+            opt(h.map(|h| h.mhz.to_string())),
+            opt(h.map(|h| h.clock_from.to_string())),
+            opt(b.map(|b| b.config.clone())),
+            opt(b.map(|b| b.luts.to_string())),
+            opt(b.map(|b| b.multipliers.to_string())),
+            opt(b.map(|b| b.block_rams.to_string())),
+            opt(h.map(|h| h.frame_seconds().to_string())),
             p.cost_seconds,
             front.contains(&i),
             p.image_hash,
@@ -671,31 +762,52 @@ fn csv(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> String {
 fn markdown(points: &[Point], front: &[usize], report: &Value) -> String {
     let clock = &report["clock"];
     let mut s = format!(
-        "# Error against cost: {}\n\nError: against the float reference at step {} (yardstick; convergence tolerance {} % relative Euclidean between steps s and s/2: {}).\nCost per frame: software methods, the median wall time of {} runs on this machine ({} threads; the quantized-voxel path's per-volume preprocessing, paid once per volume, is left out and listed in the JSON); hardware methods, clocks per frame at {} MHz{}.\n\n",
+        "# Error against cost: {}\n\nError: against the float reference at step {} (yardstick; convergence tolerance {} % relative Euclidean between steps s and s/2: {}).\nCost per frame: software methods, the median wall time of {} runs on this machine ({} threads; the quantized-voxel path's per-volume preprocessing, paid once per volume, is left out and listed in the JSON); hardware methods, the RTL's clocks per frame at the fmax of the committed ECP5 report of the smallest committed build that renders the point ({}).\n\n",
         report["scene"].as_str().unwrap_or(""),
         report["yardstick"]["step"],
         report["yardstick"]["tolerance_pct"],
         if report["yardstick"]["converged"].is_null() { "not reached, finest step used".to_string() } else { format!("{} % between {} and {}", fmt3(report["yardstick"]["converged"]["difference_pct"].as_f64().unwrap_or(0.0)), report["yardstick"]["converged"]["step"], report["yardstick"]["converged"]["half"]) },
         report["repeat"],
         report["threads"],
-        clock["mhz"],
-        if clock["assumed"].as_bool() == Some(true) { " (ASSUMED, not measured)" } else { " (measured fmax)" },
+        if clock["points_assumed"].as_u64().unwrap_or(0) > 0 {
+            format!("where none does, an ASSUMED {} MHz, marked on the point", clock["assumed_mhz"])
+        } else {
+            "every point measured or given".to_string()
+        },
     );
     let line = |p: &Point| {
+        let h = p.hw.as_ref();
+        let b = h.and_then(|h| h.build.as_ref());
         format!(
-            "| {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             p.method,
             params_text(p),
             fmt3(p.error.rel_euclid_pct),
             fmt3(p.error.psnr_db),
             fmt3(p.error.max_abs),
             fmt_time(p.cost_seconds),
-            p.clocks
-                .map(|c| c.to_string())
+            h.map(|h| format!(
+                "{}{}",
+                h.clocks,
+                if h.clocks_from == "ideal" {
+                    " (ideal)"
+                } else {
+                    ""
+                }
+            ))
+            .unwrap_or_else(|| "—".into()),
+            h.map(|h| match (h.clock_from, b) {
+                ("measured", Some(b)) => format!("{:.1} MHz, `{}`", h.mhz, b.config),
+                ("given", _) => format!("{} MHz (given)", h.mhz),
+                (_, Some(b)) => format!("{} MHz ASSUMED (`{}` has no fmax)", h.mhz, b.config),
+                _ => format!("{} MHz ASSUMED (no committed build renders it)", h.mhz),
+            })
+            .unwrap_or_else(|| "—".into()),
+            b.map(|b| format!("{} / {} / {}", b.luts, b.multipliers, b.block_rams))
                 .unwrap_or_else(|| "—".into()),
         )
     };
-    let head = "| method | parameters | rel. Euclidean % | PSNR dB | max | cost | clocks |\n|---|---|---|---|---|---|---|\n";
+    let head = "| method | parameters | rel. Euclidean % | PSNR dB | max | cost | clocks | clock | LUT4 / MULT18 / DP16KD |\n|---|---|---|---|---|---|---|---|---|\n";
     s += "## Pareto front\n\n";
     s += head;
     for &i in front {
@@ -774,7 +886,7 @@ const PLOT_H: u32 = 650;
 
 /// Error against cost on log-log axes, one colour per method, the Pareto
 /// front as a staircase.
-fn plot(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> Result<Vec<u8>> {
+fn plot(points: &[Point], front: &[usize]) -> Result<Vec<u8>> {
     plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
         .map_err(|_| anyhow::anyhow!("registering the embedded font"))?;
     // A zero error cannot sit on a log axis: it is drawn at the floor.
@@ -796,10 +908,7 @@ fn plot(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> Result<Ve
     {
         let root = BitMapBackend::with_buffer(&mut buf, (PLOT_W, PLOT_H)).into_drawing_area();
         root.fill(&WHITE)?;
-        let caption = format!(
-            "Error against cost (hardware at {mhz} MHz{})",
-            if assumed { ", assumed" } else { ", measured" }
-        );
+        let caption = format!("Error against cost (hardware: {})", hw_summary(points));
         let mut chart = ChartBuilder::on(&root)
             .caption(caption, ("sans-serif", 20))
             .margin(15)
@@ -827,7 +936,7 @@ fn plot(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> Result<Ve
         methods.dedup();
         for (k, m) in methods.iter().enumerate() {
             let c = colours[k % colours.len()];
-            let hw = points.iter().any(|p| p.method == *m && p.clocks.is_some());
+            let hw = points.iter().any(|p| p.method == *m && p.hw.is_some());
             chart
                 .draw_series(
                     points
@@ -854,6 +963,88 @@ fn plot(points: &[Point], front: &[usize], mhz: f64, assumed: bool) -> Result<Ve
             .draw_series(LineSeries::new(stair, BLACK.stroke_width(2)))?
             .label("Pareto front")
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()?;
+        root.present()?;
+    }
+    Ok(buf)
+}
+
+/// Error against area: the hardware points priced by a committed report,
+/// at that build's LUT4 (log-log), one colour per method; a plot that says
+/// so when no point has a report.
+fn plot_area(points: &[Point]) -> Result<Vec<u8>> {
+    let priced: Vec<(&Point, f64)> = points
+        .iter()
+        .filter_map(|p| Some((p, p.hw.as_ref()?.build.as_ref()?.luts as f64)))
+        .collect();
+    let mut buf = vec![0u8; (PLOT_W * PLOT_H * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (PLOT_W, PLOT_H)).into_drawing_area();
+        root.fill(&WHITE)?;
+        if priced.is_empty() {
+            root.draw(&Text::new(
+                "Error against area: not available (no hardware point has a committed report)",
+                (40, PLOT_H as i32 / 2),
+                ("sans-serif", 20),
+            ))?;
+            root.present()?;
+            drop(root);
+            return Ok(buf);
+        }
+        let floor = priced
+            .iter()
+            .map(|(p, _)| p.error.rel_euclid_pct)
+            .filter(|&e| e > 0.0)
+            .fold(f64::INFINITY, f64::min)
+            .min(1.0)
+            / 2.0;
+        let err = |p: &Point| p.error.rel_euclid_pct.max(floor);
+        let (l0, l1) = priced
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), (_, l)| {
+                (a.min(*l), b.max(*l))
+            });
+        let (e0, e1) = priced
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), (p, _)| {
+                (a.min(err(p)), b.max(err(p)))
+            });
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "Error against area (the build each point was priced by)",
+                ("sans-serif", 20),
+            )
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(60)
+            .build_cartesian_2d(
+                (l0 / 1.5..l1 * 1.5).log_scale(),
+                (e0 / 1.5..e1 * 1.5).log_scale(),
+            )?;
+        chart
+            .configure_mesh()
+            .x_desc("LUT4 on an LFE5U-85F (committed report)")
+            .y_desc("relative Euclidean error (%)")
+            .draw()?;
+        let mut methods: Vec<&str> = priced.iter().map(|(p, _)| p.method.as_str()).collect();
+        methods.dedup();
+        for (k, m) in methods.iter().enumerate() {
+            let c = [RED, BLUE, GREEN, MAGENTA][k % 4];
+            chart
+                .draw_series(
+                    priced
+                        .iter()
+                        .filter(|(p, _)| p.method == *m)
+                        .map(|(p, l)| Circle::new((*l, err(p)), 5, c.filled())),
+                )?
+                .label(m.to_string())
+                .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
+        }
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::UpperRight)

@@ -862,7 +862,12 @@ fn tradeoff_writes_rows_and_an_undominated_front_independent_of_threads() {
         read_json(&d.path().join(out).join("tradeoff.json"))
     };
     let a = run("1", "one");
-    for f in ["tradeoff.csv", "tradeoff.png", "tradeoff.md"] {
+    for f in [
+        "tradeoff.csv",
+        "tradeoff.png",
+        "tradeoff.md",
+        "tradeoff_area.png",
+    ] {
         let len = std::fs::metadata(d.path().join("one").join(f))
             .unwrap()
             .len();
@@ -882,7 +887,20 @@ fn tradeoff_writes_rows_and_an_undominated_front_independent_of_threads() {
             "{m}"
         );
     }
-    assert_eq!(a["clock"]["assumed"], true);
+    // Hardware points: the RTL's clocks at a committed report's fmax, or an
+    // assumed clock that says so.
+    for p in points.iter().filter(|p| !p["hardware"].is_null()) {
+        let h = &p["hardware"];
+        match h["clock_from"].as_str().unwrap() {
+            "measured" => assert!(
+                h["build"].is_string() && h["luts"].as_u64().unwrap() > 0,
+                "{p}"
+            ),
+            "assumed" => assert_eq!(h["clock_mhz"], 100.0, "{p}"),
+            other => panic!("{other}: {p}"),
+        }
+        assert!(h["clocks"].as_u64().unwrap() > 0, "{p}");
+    }
     let cost = |p: &serde_json::Value| p["cost_seconds"].as_f64().unwrap();
     let err = |p: &serde_json::Value| p["error"]["rel_euclid_pct"].as_f64().unwrap();
     let front: Vec<_> = points.iter().filter(|p| p["pareto"] == true).collect();
@@ -913,7 +931,7 @@ fn tradeoff_writes_rows_and_an_undominated_front_independent_of_threads() {
                     p["params"].clone(),
                     p["error"].clone(),
                     p["image_hash"].clone(),
-                    p["clocks"].clone(),
+                    p["hardware"].clone(),
                 )
             })
             .collect::<Vec<_>>()
