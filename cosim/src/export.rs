@@ -5,7 +5,7 @@
 
 use crate::arch::Arch;
 use crate::archs::LAYOUTS;
-use crate::verilog::{names, write_stage_files};
+use crate::verilog::{names, wrapper, write_stage_files};
 use scene::{Camera, Scene};
 use std::path::Path;
 
@@ -103,7 +103,11 @@ pub fn write_export<A: Arch>(
         for (sub, v) in &designs {
             let dir = tmp.join(sub);
             std::fs::create_dir_all(&dir).map_err(io)?;
-            let written = write_stage_files(&dir, v, &left_out, &A::LAYOUT).map_err(io)?;
+            let mut written = write_stage_files(&dir, v, &left_out, &A::LAYOUT).map_err(io)?;
+            let top = integration_top::<A>(build);
+            let what = format!("{} {}", A::TITLE, A::config_name(build));
+            std::fs::write(dir.join(format!("{top}.v")), wrapper(&top, v, &what)?).map_err(io)?;
+            written.push(format!("{top}.v"));
             files.push(serde_json::json!({"dir": sub, "files": written}));
         }
         let mut manifest = serde_json::json!({
@@ -111,6 +115,7 @@ pub fn write_export<A: Arch>(
             "configuration": A::config_name(build),
             "generator": format!("cube {} with rust-hdl 0.46", env!("CARGO_PKG_VERSION")),
             "top": "top",
+            "integration_top": integration_top::<A>(build),
             "parameters": A::manifest_parameters(build),
             "units_left_out": names(&left_out),
             "designs": files,
@@ -126,6 +131,11 @@ pub fn write_export<A: Arch>(
         }
         Ok(manifest)
     })
+}
+
+/// The integrable top's module name: the architecture and the build.
+pub fn integration_top<A: Arch>(build: &A::Config) -> String {
+    format!("{}_{}", A::NAME, A::config_name(build))
 }
 
 /// Build the export directory `out` through `fill` (given a fresh directory

@@ -1,11 +1,20 @@
 //! The pipelined linear interpolation shared by Cube-4L's bilinear unit
 //! (§3.7) and Cube-3's TRILIN unit (§3, Fig. 4): `fixed::lerp_frac`, the
-//! product rounded half up, bit for bit, in two clocks and one 16x16
-//! multiplier (two for a difference wider than 16 bits).
+//! product rounded half up, bit for bit, with one 16x16 multiplier (two for
+//! a difference wider than 16 bits), in two clocks (the compare, difference
+//! and product; the rounding and the sum) or, built [`Lerp::split`], in
+//! three (the compare and difference in a clock of their own, for speed:
+//! Cube-4L's bilinear unit).
 
 use rust_hdl::prelude::*;
 
-/// `lerp(a, b, w)` with `w` in `0..=2^frac`, in two clocks. In unsigned
+/// Clocks from the inputs to the lerp, built with [`Lerp::new`].
+pub const LATENCY: usize = 2;
+/// ... and built with [`Lerp::split`].
+pub const SPLIT_LATENCY: usize = 3;
+
+/// `lerp(a, b, w)` with `w` in `0..=2^frac`, in [`LATENCY`] or
+/// [`SPLIT_LATENCY`] clocks. In unsigned
 /// form: for `b >= a`, `a + (((b - a) * w + 2^(f-1)) >> f)`; for `b < a`,
 /// `a - (((a - b) * w + 2^(f-1) - 1) >> f)` (the arithmetic shift of the
 /// golden model). A wide lerp's 32-bit difference goes through two 16x16
@@ -16,18 +25,32 @@ pub struct Lerp {
     pub a: Signal<In, Bits<32>>,
     pub b: Signal<In, Bits<32>>,
     pub w: Signal<In, Bits<16>>,
-    /// The lerp of the inputs two clocks back.
+    /// The lerp of the inputs [`LATENCY`] (split: [`SPLIT_LATENCY`])
+    /// clocks back.
     pub y: Signal<Out, Bits<32>>,
     half: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
     /// The difference can exceed 16 bits (X-ray's channel 0, TRILIN's
     /// samples beyond 16 bits).
     wide: Constant<Bit>,
-    diff: Signal<Local, Bits<32>>,
-    prod: Signal<Local, Bits<64>>,
-    /// First clock: `b >= a`, `a` and the product.
+    /// Split: the first clock's `b >= a`, `a`, `|b - a|` and `w`.
+    split: Constant<Bit>,
     up_q: DFF<Bit>,
     a_q: DFF<Bits<32>>,
+    diff_q: DFF<Bits<32>>,
+    w_q: DFF<Bits<16>>,
+    /// The inputs' order and difference.
+    up_c: Signal<Local, Bit>,
+    diff_c: Signal<Local, Bits<32>>,
+    /// The product's operands: the inputs', or the split's registers.
+    up: Signal<Local, Bit>,
+    a_in: Signal<Local, Bits<32>>,
+    diff: Signal<Local, Bits<32>>,
+    w_in: Signal<Local, Bits<16>>,
+    /// The product's clock.
+    prod: Signal<Local, Bits<64>>,
+    up_q2: DFF<Bit>,
+    a_q2: DFF<Bits<32>>,
     prod_q: DFF<Bits<64>>,
     step_up: Signal<Local, Bits<32>>,
     step_down: Signal<Local, Bits<32>>,
@@ -35,8 +58,18 @@ pub struct Lerp {
 }
 
 impl Lerp {
-    /// `wide`: the difference can exceed 16 bits (two multipliers).
+    /// `wide`: the difference can exceed 16 bits (two multipliers); two
+    /// clocks.
     pub fn new(frac_bits: u32, wide: bool) -> Lerp {
+        Lerp::build(frac_bits, wide, false)
+    }
+
+    /// As [`Lerp::new`], in three clocks.
+    pub fn split(frac_bits: u32, wide: bool) -> Lerp {
+        Lerp::build(frac_bits, wide, true)
+    }
+
+    fn build(frac_bits: u32, wide: bool, split: bool) -> Lerp {
         Lerp {
             clock: Default::default(),
             a: Default::default(),
@@ -46,10 +79,20 @@ impl Lerp {
             half: Constant::new((1u64 << (frac_bits - 1)).to_bits()),
             shift: Constant::new((frac_bits as u64).to_bits()),
             wide: Constant::new(wide),
-            diff: Default::default(),
-            prod: Default::default(),
+            split: Constant::new(split),
             up_q: Default::default(),
             a_q: Default::default(),
+            diff_q: Default::default(),
+            w_q: Default::default(),
+            up_c: Default::default(),
+            diff_c: Default::default(),
+            up: Default::default(),
+            a_in: Default::default(),
+            diff: Default::default(),
+            w_in: Default::default(),
+            prod: Default::default(),
+            up_q2: Default::default(),
+            a_q2: Default::default(),
             prod_q: Default::default(),
             step_up: Default::default(),
             step_down: Default::default(),
@@ -61,29 +104,47 @@ impl Lerp {
 impl Logic for Lerp {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, up_q, a_q, prod_q, y_q);
-        if self.b.val() >= self.a.val() {
-            self.diff.next = self.b.val() - self.a.val();
-        } else {
-            self.diff.next = self.a.val() - self.b.val();
+        dff_setup!(self, clock, up_q, a_q, diff_q, w_q, up_q2, a_q2, prod_q, y_q);
+        // The order of the ends and their difference, in a clock of their
+        // own when split.
+        self.up_c.next = self.b.val() >= self.a.val();
+        self.diff_c.next = self.b.val() - self.a.val();
+        if !self.up_c.val() {
+            self.diff_c.next = self.a.val() - self.b.val();
         }
-        self.prod.next = bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+        self.up_q.d.next = self.up_c.val();
+        self.a_q.d.next = self.a.val();
+        self.diff_q.d.next = self.diff_c.val();
+        self.w_q.d.next = self.w.val();
+        self.up.next = self.up_c.val();
+        self.a_in.next = self.a.val();
+        self.diff.next = self.diff_c.val();
+        self.w_in.next = self.w.val();
+        if self.split.val() {
+            self.up.next = self.up_q.q.val();
+            self.a_in.next = self.a_q.q.val();
+            self.diff.next = self.diff_q.q.val();
+            self.w_in.next = self.w_q.q.val();
+        }
+        // The product.
+        self.prod.next = bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w_in.val());
         if self.wide.val() {
             self.prod.next =
-                (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w.val()) << 16)
-                    + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w.val());
+                (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w_in.val()) << 16)
+                    + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w_in.val());
         }
-        self.up_q.d.next = self.b.val() >= self.a.val();
-        self.a_q.d.next = self.a.val();
+        self.up_q2.d.next = self.up.val();
+        self.a_q2.d.next = self.a_in.val();
         self.prod_q.d.next = self.prod.val();
+        // The last clock: rounded, onto `a`.
         self.step_up.next =
             bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val()) >> self.shift.val());
         self.step_down.next =
             bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val() - 1) >> self.shift.val());
-        if self.up_q.q.val() {
-            self.y_q.d.next = self.a_q.q.val() + self.step_up.val();
+        if self.up_q2.q.val() {
+            self.y_q.d.next = self.a_q2.q.val() + self.step_up.val();
         } else {
-            self.y_q.d.next = self.a_q.q.val() - self.step_down.val();
+            self.y_q.d.next = self.a_q2.q.val() - self.step_down.val();
         }
         self.y.next = self.y_q.q.val();
     }

@@ -2,15 +2,20 @@
 //! shading units), bit for bit as `golden_model::lut::Lighting`: the
 //! cosines between `-q` and the light and half vectors from two dot
 //! products and a reciprocal norm, each indexing a host-loaded table.
-//! Three register stages, then the tables' registered reads:
+//! [`LATENCY`] register stages, none with more than one multiplier or one
+//! wide carry chain in series:
 //!
-//! 1. the dot products `q · light`, `q · half` (sign-magnitude products of
-//!    4-bit components and 12-bit registers), and `rnorm(|q|²)` from a
-//!    constant ROM;
-//! 2. `t = min(dot, 2^16 - 1) · rnorm`, one 16x16 multiplier each;
-//! 3. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)` addressing the
-//!    diffuse and specular tables, whose words come out one clock later
-//!    (the specular term 0 where the light's dot product is not positive).
+//! 1. the products of `q`'s 4-bit magnitudes and the registers' (held in
+//!    registers of their own: they change only with a host write), their
+//!    signs, and `|q|²`;
+//! 2. the dot products `q · light`, `q · half` in two's complement, and
+//!    `rnorm(|q|²)` from a constant ROM;
+//! 3. each dot product made positive and saturated to 16 bits;
+//! 4. `t = dot · rnorm`, one 16x16 multiplier each;
+//! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`;
+//! 6. the diffuse and specular tables' registered reads;
+//! 7. their words registered (the specular term 0 where the light's dot
+//!    product is not positive).
 //!
 //! The light and half vectors are registers, the tables depend only on the
 //! lighting coefficients: a new view or light is six register words.
@@ -22,7 +27,7 @@ use golden_model::lut::{rnorm, COS_BITS, DIR_FRAC, RNORM_FRAC};
 use rust_hdl::prelude::*;
 
 /// Clocks from the quantized normal to the terms.
-pub const LATENCY: usize = 3;
+pub const LATENCY: usize = 7;
 
 /// The lighting unit of one shader, with `rgba_bits` table words.
 #[derive(LogicBlock)]
@@ -42,28 +47,44 @@ pub struct Lighting {
     rnorm: ROM<Bits<16>, 10>,
     diffuse_table: Table<16, COS_BITS_U>,
     specular_table: Table<16, COS_BITS_U>,
-    /// Stage 1: the registers' magnitudes, the products and sums.
+    /// The light's and half vector's magnitudes, registered.
     m_l: [Signal<Local, Bits<16>>; 3],
     m_h: [Signal<Local, Bits<16>>; 3],
+    ml_q: [DFF<Bits<16>>; 3],
+    mh_q: [DFF<Bits<16>>; 3],
+    /// Stage 1: the products' magnitudes and signs.
     qm: [Signal<Local, Bits<16>>; 3],
-    p_l: [Signal<Local, Bits<32>>; 3],
-    p_h: [Signal<Local, Bits<32>>; 3],
-    sum_l: Signal<Local, Bits<32>>,
-    sum_h: Signal<Local, Bits<32>>,
+    p_l: [DFF<Bits<32>>; 3],
+    p_h: [DFF<Bits<32>>; 3],
+    sl_q: [DFF<Bit>; 3],
+    sh_q: [DFF<Bit>; 3],
+    t_pl: [Signal<Local, Bits<32>>; 3],
+    t_ph: [Signal<Local, Bits<32>>; 3],
     n2: Signal<Local, Bits<16>>,
+    n2_q: DFF<Bits<16>>,
+    /// Stage 2: the sums.
     dot_l: DFF<Bits<32>>,
     dot_h: DFF<Bits<32>>,
     rn: DFF<Bits<16>>,
-    /// Stage 2.
-    d16_l: Signal<Local, Bits<16>>,
-    d16_h: Signal<Local, Bits<16>>,
+    /// Stage 3.
+    d16_l: DFF<Bits<16>>,
+    d16_h: DFF<Bits<16>>,
+    rn_3: DFF<Bits<16>>,
+    lit_3: DFF<Bit>,
+    /// Stage 4.
     t_l: DFF<Bits<32>>,
     t_h: DFF<Bits<32>>,
-    lit_2: DFF<Bit>,
-    /// Stage 3.
+    lit_4: DFF<Bit>,
+    /// Stage 5.
     i_l: Signal<Local, Bits<64>>,
     i_h: Signal<Local, Bits<64>>,
-    lit_3: DFF<Bit>,
+    idx_l: DFF<Bits<COS_BITS_U>>,
+    idx_h: DFF<Bits<COS_BITS_U>>,
+    lit_5: DFF<Bit>,
+    /// Stages 6 and 7.
+    lit_6: DFF<Bit>,
+    diffuse_q: DFF<Bits<16>>,
+    specular_q: DFF<Bits<16>>,
     half_ulp: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
     last: Constant<Bits<64>>,
@@ -91,23 +112,35 @@ impl Lighting {
             specular_table: Table::new(HostTable::Specular.base(), words, &word),
             m_l: Default::default(),
             m_h: Default::default(),
+            ml_q: Default::default(),
+            mh_q: Default::default(),
+            sl_q: Default::default(),
+            sh_q: Default::default(),
+            t_pl: Default::default(),
+            t_ph: Default::default(),
             qm: Default::default(),
             p_l: Default::default(),
             p_h: Default::default(),
-            sum_l: Default::default(),
-            sum_h: Default::default(),
             n2: Default::default(),
+            n2_q: Default::default(),
             dot_l: Default::default(),
             dot_h: Default::default(),
             rn: Default::default(),
             d16_l: Default::default(),
             d16_h: Default::default(),
+            rn_3: Default::default(),
+            lit_3: Default::default(),
             t_l: Default::default(),
             t_h: Default::default(),
-            lit_2: Default::default(),
+            lit_4: Default::default(),
             i_l: Default::default(),
             i_h: Default::default(),
-            lit_3: Default::default(),
+            idx_l: Default::default(),
+            idx_h: Default::default(),
+            lit_5: Default::default(),
+            lit_6: Default::default(),
+            diffuse_q: Default::default(),
+            specular_q: Default::default(),
             half_ulp: Constant::new((1u64 << (DIR_FRAC + RNORM_FRAC - 1)).to_bits()),
             shift: Constant::new(((DIR_FRAC + RNORM_FRAC) as u64).to_bits()),
             last: Constant::new(((1u64 << COS_BITS) - 1).to_bits()),
@@ -131,7 +164,10 @@ impl Lighting {
 impl Logic for Lighting {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, dot_l, dot_h, rn, t_l, t_h, lit_2, lit_3);
+        dff_setup!(
+            self, clock, n2_q, dot_l, dot_h, rn, d16_l, d16_h, rn_3, lit_3, t_l, t_h, lit_4, idx_l,
+            idx_h, lit_5, lit_6, diffuse_q, specular_q
+        );
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
         self.regs.host_address.next = self.host_address.val();
@@ -144,92 +180,95 @@ impl Logic for Lighting {
         self.specular_table.host_write.next = self.host_write.val();
         self.specular_table.host_address.next = self.host_address.val();
         self.specular_table.host_data.next = self.host_data.val();
-        // Stage 1: the dot products in two's complement, and 1 / |q|.
-        self.sum_l.next = 0.into();
-        self.sum_h.next = 0.into();
-        self.n2.next = 0.into();
+        // The light's and half vector's magnitudes, registered: they change
+        // only with a host write, and the multipliers then take them from a
+        // register rather than through the negation.
+        for i in 0..3 {
+            self.ml_q[i].clock.next = self.clock.val();
+            self.mh_q[i].clock.next = self.clock.val();
+            self.sl_q[i].clock.next = self.clock.val();
+            self.sh_q[i].clock.next = self.clock.val();
+            self.p_l[i].clock.next = self.clock.val();
+            self.p_h[i].clock.next = self.clock.val();
+            self.ml_q[i].d.next = self.m_l[i].val();
+            self.mh_q[i].d.next = self.m_h[i].val();
+            self.p_l[i].d.next = self.qm[i].val() * self.ml_q[i].q.val();
+            self.p_h[i].d.next = self.qm[i].val() * self.mh_q[i].q.val();
+        }
         // Unrolled: hdl_gen takes no loop index inside a cast.
         self.qm[0].next = bit_cast::<16, 4>(self.q_mag[0].val());
+        self.qm[1].next = bit_cast::<16, 4>(self.q_mag[1].val());
+        self.qm[2].next = bit_cast::<16, 4>(self.q_mag[2].val());
         self.m_l[0].next = self.regs.q[0].val().get_bits::<16>(0);
         if self.regs.q[0].val().get_bit(15) {
             self.m_l[0].next = 0 - self.regs.q[0].val().get_bits::<16>(0);
+        }
+        self.m_l[1].next = self.regs.q[0].val().get_bits::<16>(16);
+        if self.regs.q[0].val().get_bit(31) {
+            self.m_l[1].next = 0 - self.regs.q[0].val().get_bits::<16>(16);
+        }
+        self.m_l[2].next = self.regs.q[0].val().get_bits::<16>(32);
+        if self.regs.q[0].val().get_bit(47) {
+            self.m_l[2].next = 0 - self.regs.q[0].val().get_bits::<16>(32);
         }
         self.m_h[0].next = self.regs.q[1].val().get_bits::<16>(0);
         if self.regs.q[1].val().get_bit(15) {
             self.m_h[0].next = 0 - self.regs.q[1].val().get_bits::<16>(0);
         }
-        self.p_l[0].next = self.qm[0].val() * self.m_l[0].val();
-        if self.q_neg[0].val() ^ self.regs.q[0].val().get_bit(15) {
-            self.p_l[0].next = 0 - (self.qm[0].val() * self.m_l[0].val());
-        }
-        self.sum_l.next = self.sum_l.val() + self.p_l[0].val();
-        self.p_h[0].next = self.qm[0].val() * self.m_h[0].val();
-        if self.q_neg[0].val() ^ self.regs.q[1].val().get_bit(15) {
-            self.p_h[0].next = 0 - (self.qm[0].val() * self.m_h[0].val());
-        }
-        self.sum_h.next = self.sum_h.val() + self.p_h[0].val();
-        self.n2.next = self.n2.val() + bit_cast::<16, 32>(self.qm[0].val() * self.qm[0].val());
-        self.qm[1].next = bit_cast::<16, 4>(self.q_mag[1].val());
-        self.m_l[1].next = self.regs.q[0].val().get_bits::<16>(16);
-        if self.regs.q[0].val().get_bit(31) {
-            self.m_l[1].next = 0 - self.regs.q[0].val().get_bits::<16>(16);
-        }
         self.m_h[1].next = self.regs.q[1].val().get_bits::<16>(16);
         if self.regs.q[1].val().get_bit(31) {
             self.m_h[1].next = 0 - self.regs.q[1].val().get_bits::<16>(16);
-        }
-        self.p_l[1].next = self.qm[1].val() * self.m_l[1].val();
-        if self.q_neg[1].val() ^ self.regs.q[0].val().get_bit(31) {
-            self.p_l[1].next = 0 - (self.qm[1].val() * self.m_l[1].val());
-        }
-        self.sum_l.next = self.sum_l.val() + self.p_l[1].val();
-        self.p_h[1].next = self.qm[1].val() * self.m_h[1].val();
-        if self.q_neg[1].val() ^ self.regs.q[1].val().get_bit(31) {
-            self.p_h[1].next = 0 - (self.qm[1].val() * self.m_h[1].val());
-        }
-        self.sum_h.next = self.sum_h.val() + self.p_h[1].val();
-        self.n2.next = self.n2.val() + bit_cast::<16, 32>(self.qm[1].val() * self.qm[1].val());
-        self.qm[2].next = bit_cast::<16, 4>(self.q_mag[2].val());
-        self.m_l[2].next = self.regs.q[0].val().get_bits::<16>(32);
-        if self.regs.q[0].val().get_bit(47) {
-            self.m_l[2].next = 0 - self.regs.q[0].val().get_bits::<16>(32);
         }
         self.m_h[2].next = self.regs.q[1].val().get_bits::<16>(32);
         if self.regs.q[1].val().get_bit(47) {
             self.m_h[2].next = 0 - self.regs.q[1].val().get_bits::<16>(32);
         }
-        self.p_l[2].next = self.qm[2].val() * self.m_l[2].val();
-        if self.q_neg[2].val() ^ self.regs.q[0].val().get_bit(47) {
-            self.p_l[2].next = 0 - (self.qm[2].val() * self.m_l[2].val());
+        // Stage 1: the products' magnitudes and signs, and |q|².
+        self.sl_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[0].val().get_bit(15);
+        self.sl_q[1].d.next = self.q_neg[1].val() ^ self.regs.q[0].val().get_bit(31);
+        self.sl_q[2].d.next = self.q_neg[2].val() ^ self.regs.q[0].val().get_bit(47);
+        self.sh_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[1].val().get_bit(15);
+        self.sh_q[1].d.next = self.q_neg[1].val() ^ self.regs.q[1].val().get_bit(31);
+        self.sh_q[2].d.next = self.q_neg[2].val() ^ self.regs.q[1].val().get_bit(47);
+        self.n2.next = bit_cast::<16, 32>(self.qm[0].val() * self.qm[0].val())
+            + bit_cast::<16, 32>(self.qm[1].val() * self.qm[1].val())
+            + bit_cast::<16, 32>(self.qm[2].val() * self.qm[2].val());
+        self.n2_q.d.next = self.n2.val();
+        // Stage 2: the dot products in two's complement, and 1 / |q|.
+        for i in 0..3 {
+            self.t_pl[i].next = self.p_l[i].q.val();
+            if self.sl_q[i].q.val() {
+                self.t_pl[i].next = 0 - self.p_l[i].q.val();
+            }
+            self.t_ph[i].next = self.p_h[i].q.val();
+            if self.sh_q[i].q.val() {
+                self.t_ph[i].next = 0 - self.p_h[i].q.val();
+            }
         }
-        self.sum_l.next = self.sum_l.val() + self.p_l[2].val();
-        self.p_h[2].next = self.qm[2].val() * self.m_h[2].val();
-        if self.q_neg[2].val() ^ self.regs.q[1].val().get_bit(47) {
-            self.p_h[2].next = 0 - (self.qm[2].val() * self.m_h[2].val());
-        }
-        self.sum_h.next = self.sum_h.val() + self.p_h[2].val();
-        self.n2.next = self.n2.val() + bit_cast::<16, 32>(self.qm[2].val() * self.qm[2].val());
-        self.dot_l.d.next = self.sum_l.val();
-        self.dot_h.d.next = self.sum_h.val();
-        self.rnorm.address.next = bit_cast::<10, 16>(self.n2.val());
+        self.dot_l.d.next = self.t_pl[0].val() + self.t_pl[1].val() + self.t_pl[2].val();
+        self.dot_h.d.next = self.t_ph[0].val() + self.t_ph[1].val() + self.t_ph[2].val();
+        self.rnorm.address.next = bit_cast::<10, 16>(self.n2_q.q.val());
         self.rn.d.next = self.rnorm.data.val();
-        // Stage 2: a positive dot product, saturated to 16 bits, times 1 / |q|.
-        self.d16_l.next = self.dot_l.q.val().get_bits::<16>(0);
+        // Stage 3: a positive dot product, saturated to 16 bits.
+        self.d16_l.d.next = self.dot_l.q.val().get_bits::<16>(0);
         if self.dot_l.q.val().get_bit(31) | (self.dot_l.q.val() == 0) {
-            self.d16_l.next = 0.into();
+            self.d16_l.d.next = 0.into();
         } else if self.dot_l.q.val() > 0xffff {
-            self.d16_l.next = 0xffff.into();
+            self.d16_l.d.next = 0xffff.into();
         }
-        self.d16_h.next = self.dot_h.q.val().get_bits::<16>(0);
+        self.d16_h.d.next = self.dot_h.q.val().get_bits::<16>(0);
         if self.dot_h.q.val().get_bit(31) | (self.dot_h.q.val() == 0) {
-            self.d16_h.next = 0.into();
+            self.d16_h.d.next = 0.into();
         } else if self.dot_h.q.val() > 0xffff {
-            self.d16_h.next = 0xffff.into();
+            self.d16_h.d.next = 0xffff.into();
         }
-        self.t_l.d.next = self.d16_l.val() * self.rn.q.val();
-        self.t_h.d.next = self.d16_h.val() * self.rn.q.val();
-        self.lit_2.d.next = !self.dot_l.q.val().get_bit(31) & (self.dot_l.q.val() != 0);
-        // Stage 3: the cosine to the nearest table entry; the tables' reads.
+        self.rn_3.d.next = self.rn.q.val();
+        self.lit_3.d.next = !self.dot_l.q.val().get_bit(31) & (self.dot_l.q.val() != 0);
+        // Stage 4: times 1 / |q|.
+        self.t_l.d.next = self.d16_l.q.val() * self.rn_3.q.val();
+        self.t_h.d.next = self.d16_h.q.val() * self.rn_3.q.val();
+        self.lit_4.d.next = self.lit_3.q.val();
+        // Stage 5: the cosine to the nearest table entry.
         self.i_l.next = ((bit_cast::<64, 32>(self.t_l.q.val()) << 10)
             - bit_cast::<64, 32>(self.t_l.q.val())
             + self.half_ulp.val())
@@ -244,13 +283,20 @@ impl Logic for Lighting {
         if self.i_h.val() > self.last.val() {
             self.i_h.next = self.last.val();
         }
-        self.diffuse_table.address.next = bit_cast::<COS_BITS_U, 64>(self.i_l.val());
-        self.specular_table.address.next = bit_cast::<COS_BITS_U, 64>(self.i_h.val());
-        self.lit_3.d.next = self.lit_2.q.val();
-        self.diffuse.next = self.diffuse_table.data.val();
-        self.specular.next = 0.into();
-        if self.lit_3.q.val() {
-            self.specular.next = self.specular_table.data.val();
+        self.idx_l.d.next = bit_cast::<COS_BITS_U, 64>(self.i_l.val());
+        self.idx_h.d.next = bit_cast::<COS_BITS_U, 64>(self.i_h.val());
+        self.lit_5.d.next = self.lit_4.q.val();
+        // Stage 6: the tables' reads.
+        self.diffuse_table.address.next = self.idx_l.q.val();
+        self.specular_table.address.next = self.idx_h.q.val();
+        self.lit_6.d.next = self.lit_5.q.val();
+        // Stage 7: their words.
+        self.diffuse_q.d.next = self.diffuse_table.data.val();
+        self.specular_q.d.next = 0.into();
+        if self.lit_6.q.val() {
+            self.specular_q.d.next = self.specular_table.data.val();
         }
+        self.diffuse.next = self.diffuse_q.q.val();
+        self.specular.next = self.specular_q.q.val();
     }
 }

@@ -1,5 +1,6 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator), [`unorm`] (the exact unorm multiplier),
+//! and their pipelined forms [`piped_mul`] and [`piped_over`],
 //! [`delay_line`] and [`ram`] (block RAM as deep as the scene needs), the
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
@@ -14,6 +15,8 @@ pub mod lighting;
 pub mod mode_class;
 pub mod normal_quantizer;
 pub mod over;
+pub mod piped_mul;
+pub mod piped_over;
 pub mod ram;
 pub mod regs;
 pub mod shader;

@@ -1,13 +1,20 @@
 //! The gradient's quantized normal (Cube-4L §3.4; Cube-3's shading units),
 //! bit for bit as `golden_model::cube4l::gradient::quantize_normal`: all
 //! three components shift right (rounding half up) until the largest fits
-//! in 4 magnitude bits, then saturate to ±15. Two register stages: the
-//! largest component's bit length and the shift, then the rounded shift.
+//! in 4 magnitude bits, then saturate to ±15. [`LATENCY`] register stages:
+//!
+//! 1. the shift, from the bit length of `m0 | m1 | m2` (the largest
+//!    component's: no magnitude comparator on the path);
+//! 2. each component plus the rounding half;
+//! 3. the shift right and the saturation.
 
 use rust_hdl::prelude::*;
 
+/// Clocks from the gradient to its quantized normal.
+pub const LATENCY: usize = 3;
+
 /// Gradient (sign and magnitude per component) in, quantized normal (sign
-/// and a 4-bit magnitude per component) two clocks later.
+/// and a 4-bit magnitude per component) [`LATENCY`] clocks later.
 #[derive(LogicBlock)]
 pub struct NormalQuantizer {
     pub clock: Signal<In, Clock>,
@@ -24,8 +31,12 @@ pub struct NormalQuantizer {
     neg_q: [DFF<Bit>; 3],
     mag_q: [DFF<Bits<32>>; 3],
     half: Signal<Local, Bits<32>>,
+    /// Stage 2: the rounded components, the shift.
+    s_q2: DFF<Bits<8>>,
+    neg_q2: [DFF<Bit>; 3],
+    sum_q: [DFF<Bits<32>>; 3],
     q: [Signal<Local, Bits<32>>; 3],
-    /// Stage 2: the quantized components.
+    /// Stage 3: the quantized components.
     out_neg: [DFF<Bit>; 3],
     out_mag: [DFF<Bits<4>>; 3],
 }
@@ -45,6 +56,9 @@ impl Default for NormalQuantizer {
             neg_q: Default::default(),
             mag_q: Default::default(),
             half: Default::default(),
+            s_q2: Default::default(),
+            neg_q2: Default::default(),
+            sum_q: Default::default(),
             q: Default::default(),
             out_neg: Default::default(),
             out_mag: Default::default(),
@@ -55,15 +69,10 @@ impl Default for NormalQuantizer {
 impl Logic for NormalQuantizer {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s_q);
-        // Stage 1: the leading one of the largest component sets the shift.
-        self.m.next = self.mag[0].val();
-        if self.mag[1].val() > self.m.val() {
-            self.m.next = self.mag[1].val();
-        }
-        if self.mag[2].val() > self.m.val() {
-            self.m.next = self.mag[2].val();
-        }
+        dff_setup!(self, clock, s_q, s_q2);
+        // Stage 1: the leading one of the largest component, which is the
+        // leading one of the three ORed, sets the shift.
+        self.m.next = self.mag[0].val() | self.mag[1].val() | self.mag[2].val();
         self.bl.next = 0.into();
         for i in 0..32 {
             if self.m.val().get_bit(i) {
@@ -74,28 +83,34 @@ impl Logic for NormalQuantizer {
         if self.bl.val() > 4 {
             self.s_q.d.next = self.bl.val() - 4;
         }
-        // Stage 2: shift, rounding half up (a negative component's half
-        // rounds towards zero in magnitude), and saturate to 15.
+        // Stage 2: add the half (a negative component's half rounds
+        // towards zero in magnitude).
         self.half.next = 0.into();
         if self.s_q.q.val() > 0 {
             self.half.next = (bit_cast::<32, 16>(1.into()) << self.s_q.q.val()) >> 1;
         }
+        self.s_q2.d.next = self.s_q.q.val();
         for i in 0..3 {
             self.neg_q[i].clock.next = self.clock.val();
             self.mag_q[i].clock.next = self.clock.val();
+            self.neg_q2[i].clock.next = self.clock.val();
+            self.sum_q[i].clock.next = self.clock.val();
             self.out_neg[i].clock.next = self.clock.val();
             self.out_mag[i].clock.next = self.clock.val();
             self.neg_q[i].d.next = self.neg[i].val();
             self.mag_q[i].d.next = self.mag[i].val();
-            self.q[i].next = (self.mag_q[i].q.val() + self.half.val()) >> self.s_q.q.val();
+            self.neg_q2[i].d.next = self.neg_q[i].q.val();
+            self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half.val();
             if self.neg_q[i].q.val() & (self.s_q.q.val() > 0) {
-                self.q[i].next = (self.mag_q[i].q.val() + self.half.val() - 1) >> self.s_q.q.val();
+                self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half.val() - 1;
             }
+            // Stage 3: shift and saturate to 15.
+            self.q[i].next = self.sum_q[i].q.val() >> self.s_q2.q.val();
             if self.q[i].val() > 15 {
                 self.q[i].next = 15.into();
             }
             self.out_mag[i].d.next = self.q[i].val().get_bits::<4>(0);
-            self.out_neg[i].d.next = self.neg_q[i].q.val() & (self.q[i].val() != 0);
+            self.out_neg[i].d.next = self.neg_q2[i].q.val() & (self.q[i].val() != 0);
             self.q_neg[i].next = self.out_neg[i].q.val();
             self.q_mag[i].next = self.out_mag[i].q.val();
         }

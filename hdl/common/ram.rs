@@ -10,7 +10,8 @@
 //!
 //! The ports and timing are those of rust-hdl's `RAM` (a registered read, a
 //! write on the clock edge), which fixes the depth at `2^N` and the width at
-//! `D`; hence this widget, with its own Verilog.
+//! `D`; hence this widget, with its own Verilog. A memory of at most
+//! [`DISTRIBUTED_WORDS`] words asks synthesis for LUT RAM.
 
 use rust_hdl::core::timing::TimingInfo;
 use rust_hdl::prelude::*;
@@ -198,9 +199,16 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam
                 format!("{{{}}}", read.join(", ")),
             )
         };
+        // A short memory is LUT RAM: a block RAM for 64 words would waste
+        // most of its 18 Kbit (yosys picks block RAM for wide ones).
+        let style = if self._words.len() <= DISTRIBUTED_WORDS {
+            "(* ram_style = \"distributed\" *)\n"
+        } else {
+            ""
+        };
         Verilog::Custom(format!(
             "\
-reg [{d}:0] mem[{last}:0];
+{style}reg [{d}:0] mem[{last}:0];
 {init}
 always @(posedge read_clock) begin
    read_data <= {read};
@@ -238,6 +246,9 @@ end
         ]
     }
 }
+
+/// Memories of at most this many words are built as LUT RAM.
+pub const DISTRIBUTED_WORDS: usize = 64;
 
 /// Address bits of an on-chip memory module: 2^16 words. Larger voxel
 /// memories are external RAM.

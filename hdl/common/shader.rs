@@ -19,21 +19,30 @@
 //! classified opacity. The tables are host-loaded block RAM and the light a
 //! pair of registers (`golden_model::host`).
 //!
-//! **Pipeline.** [`LATENCY`] register stages from the input (`T - 1` in the
-//! Cube-4L lane) to the sample: the classification read and the normal's
-//! shift (stage 1); the normal and the squared magnitude (2); the dot
-//! products, `rnorm` and the magnitude's bin (3); the cosines' products and
-//! the gradient-opacity read (4); the cosine indices addressing the
-//! lighting tables, and the opacity (5); `sat(mul(c, d) + s)` (6); the
-//! weighting multiplier (7). No stage holds more than one multiplier in
-//! series.
+//! **Pipeline.** [`LATENCY`] register stages from the input (`T - 1 - G`
+//! in the Cube-4L lane) to the sample, none holding more than one
+//! multiplier, one table read or one wide carry chain:
+//!
+//! - E1: the inputs, gated (a transparent voxel's gradient is zero);
+//! - E2: the classification read; E1-E4: the quantized normal
+//!   ([`normal_quantizer::LATENCY`]) and the magnitude's bin;
+//! - E5: the gradient-opacity read; the opacity at E6;
+//! - E4-E11: the lighting's `[diffuse, specular]`
+//!   ([`lighting::LATENCY`], its tables' words registered);
+//! - E12: the product `c · d` ([`PipedMulUnorm`]); E13: `sat(mul(c, d) +
+//!   s)`;
+//! - E14: the product with the opacity; E15: the sample.
+//!
+//! The intensity (MIP, MinIP), the classified colour and the opacity wait
+//! in registers beside the units.
 
 use super::gradient_bin::GradientBin;
+use super::lighting;
 use super::lighting::Lighting;
-use super::normal_quantizer::NormalQuantizer;
+use super::normal_quantizer::{self, NormalQuantizer};
+use super::piped_mul::PipedMulUnorm;
 use super::regs::ADDRESS_BITS;
 use super::table::Table;
-use super::unorm::MulUnorm;
 use golden_model::fixed::max_of;
 use golden_model::host::{ShaderTables, Table as HostTable};
 use golden_model::lut::{lut_bits, NORMAL_BITS};
@@ -42,8 +51,13 @@ use scene::Mode;
 
 /// Classification LUT index bits (the golden model indexes with at most 12).
 pub const LUT_INDEX_BITS: usize = 12;
-/// Register stages from the input to the sample.
-pub const LATENCY: usize = 7;
+/// Register stages from the input to the sample: the input, the normal,
+/// the lighting, the two products and the sample.
+pub const LATENCY: usize = 1 + normal_quantizer::LATENCY + lighting::LATENCY + 4;
+// The register arrays below are written for these latencies (`hdl_gen`
+// takes only literal loop bounds).
+const _: () = assert!(normal_quantizer::LATENCY == 3 && lighting::LATENCY == 7);
+const _: () = assert!(super::gradient_bin::LATENCY == normal_quantizer::LATENCY);
 
 #[derive(LogicBlock)]
 pub struct Shader {
@@ -87,29 +101,34 @@ pub struct Shader {
     /// units take.
     gate: Signal<Local, Bit>,
     mag: [Signal<Local, Bits<32>>; 3],
-    /// The intensity row, on to the gradient-opacity read (stage 4).
-    row_q: [DFF<Bits<LUT_INDEX_BITS>>; 3],
-    /// The classification word, on to the shading (stage 6).
-    lut_q: [DFF<Bits<64>>; 4],
-    /// The gating flags, on to the opacity (stage 5).
-    gate_q: [DFF<Bit>; 4],
+    /// The gated gradient (E1).
+    neg_in: [DFF<Bit>; 3],
+    mag_in: [DFF<Bits<32>>; 3],
+    /// The intensity row, E1 to the gradient-opacity read (E4).
+    row_q: [DFF<Bits<LUT_INDEX_BITS>>; 4],
+    /// The classification word, E3 to the shading (E11).
+    lut_q: [DFF<Bits<64>>; 9],
+    /// The gating flag, E1 to the opacity (E5).
+    gate_q: [DFF<Bit>; 5],
     alpha: Signal<Local, Bits<16>>,
-    alpha_q: [DFF<Bits<16>>; 2],
-    /// The intensity and the validity, on to the output.
-    value_q: [DFF<Bits<16>>; 6],
-    valid_q: [DFF<Bit>; 7],
+    /// The opacity, E6 to E14.
+    alpha_q: [DFF<Bits<16>>; 9],
+    /// The intensity (E1 to E14) and the validity (E1 to E15).
+    value_q: [DFF<Bits<16>>; 14],
+    valid_q: [DFF<Bit>; 15],
     diffuse: Signal<Local, Bits<16>>,
     specular: Signal<Local, Bits<16>>,
-    lit_r: MulUnorm,
-    lit_g: MulUnorm,
-    lit_b: MulUnorm,
+    specular_q: DFF<Bits<16>>,
+    lit_r: PipedMulUnorm,
+    lit_g: PipedMulUnorm,
+    lit_b: PipedMulUnorm,
     sum_r: Signal<Local, Bits<32>>,
     sum_g: Signal<Local, Bits<32>>,
     sum_b: Signal<Local, Bits<32>>,
     shaded_q: [DFF<Bits<16>>; 3],
-    mul_r: MulUnorm,
-    mul_g: MulUnorm,
-    mul_b: MulUnorm,
+    mul_r: PipedMulUnorm,
+    mul_g: PipedMulUnorm,
+    mul_b: PipedMulUnorm,
     r_q: DFF<Bits<16>>,
     g_q: DFF<Bits<16>>,
     b_q: DFF<Bits<16>>,
@@ -209,6 +228,8 @@ impl Shader {
             row: Default::default(),
             gate: Default::default(),
             mag: Default::default(),
+            neg_in: Default::default(),
+            mag_in: Default::default(),
             row_q: Default::default(),
             lut_q: Default::default(),
             gate_q: Default::default(),
@@ -218,16 +239,17 @@ impl Shader {
             valid_q: Default::default(),
             diffuse: Default::default(),
             specular: Default::default(),
-            lit_r: MulUnorm::enabled(c.rgba_bits, colour),
-            lit_g: MulUnorm::enabled(c.rgba_bits, colour),
-            lit_b: MulUnorm::enabled(c.rgba_bits, colour),
+            specular_q: Default::default(),
+            lit_r: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            lit_g: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            lit_b: PipedMulUnorm::enabled(c.rgba_bits, colour),
             sum_r: Default::default(),
             sum_g: Default::default(),
             sum_b: Default::default(),
             shaded_q: Default::default(),
-            mul_r: MulUnorm::enabled(c.rgba_bits, colour),
-            mul_g: MulUnorm::enabled(c.rgba_bits, colour),
-            mul_b: MulUnorm::enabled(c.rgba_bits, colour),
+            mul_r: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            mul_g: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            mul_b: PipedMulUnorm::enabled(c.rgba_bits, colour),
             r_q: Default::default(),
             g_q: Default::default(),
             b_q: Default::default(),
@@ -270,7 +292,7 @@ impl Shader {
 impl Logic for Shader {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, r_q, g_q, b_q, a_q);
+        dff_setup!(self, clock, specular_q, r_q, g_q, b_q, a_q);
         // The host port reaches every table and register.
         self.lut.clock.next = self.clock.val();
         self.lut.host_write.next = self.host_write.val();
@@ -289,101 +311,116 @@ impl Logic for Shader {
         self.lighting.host_address.next = self.host_address.val();
         self.lighting.host_data.next = self.host_data.val();
         self.normal.clock.next = self.clock.val();
-        // Stage 1: the classification read; the gradient into the normal
-        // quantizer and the magnitude's bin. A transparent voxel's value and
-        // gradient (the edge's, whose neighbours lie outside the dataset)
-        // are garbage the golden model never reads: the units take zero
-        // instead, so no unknown bit travels on.
+        self.lit_r.clock.next = self.clock.val();
+        self.lit_g.clock.next = self.clock.val();
+        self.lit_b.clock.next = self.clock.val();
+        self.mul_r.clock.next = self.clock.val();
+        self.mul_g.clock.next = self.clock.val();
+        self.mul_b.clock.next = self.clock.val();
+        // E1: the inputs. A transparent voxel's value and gradient (the
+        // edge's, whose neighbours lie outside the dataset) are garbage the
+        // golden model never reads: the units take zero instead, so no
+        // unknown bit travels on.
         self.gate.next = self.invalid.val() | (self.edge_transparent.val() & self.at_edge.val());
         self.row.next = bit_cast::<LUT_INDEX_BITS, 16>(self.value.val() >> self.shift.val());
-        if self.gate.val() {
-            self.row.next = 0.into();
-        }
-        self.lut.address.next = self.row.val();
-        self.normal.neg[0].next = self.gx_neg.val() & !self.gate.val();
-        self.normal.neg[1].next = self.gy_neg.val() & !self.gate.val();
-        self.normal.neg[2].next = self.gz_neg.val() & !self.gate.val();
         self.mag[0].next = self.gx_mag.val();
         self.mag[1].next = self.gy_mag.val();
         self.mag[2].next = self.gz_mag.val();
         if self.gate.val() {
+            self.row.next = 0.into();
             self.mag[0].next = 0.into();
             self.mag[1].next = 0.into();
             self.mag[2].next = 0.into();
         }
         for i in 0..3 {
-            self.normal.mag[i].next = self.mag[i].val();
-            self.gm_bin.mag[i].next = self.mag[i].val();
+            self.neg_in[i].clock.next = self.clock.val();
+            self.mag_in[i].clock.next = self.clock.val();
+            self.mag_in[i].d.next = self.mag[i].val();
         }
+        self.neg_in[0].d.next = self.gx_neg.val() & !self.gate.val();
+        self.neg_in[1].d.next = self.gy_neg.val() & !self.gate.val();
+        self.neg_in[2].d.next = self.gz_neg.val() & !self.gate.val();
+        // E2: the classification read; E4: the normal and the bin.
+        self.lut.address.next = self.row_q[0].q.val();
         for i in 0..3 {
+            self.normal.neg[i].next = self.neg_in[i].q.val();
+            self.normal.mag[i].next = self.mag_in[i].q.val();
+            self.gm_bin.mag[i].next = self.mag_in[i].q.val();
             self.lighting.q_neg[i].next = self.normal.q_neg[i].val();
             self.lighting.q_mag[i].next = self.normal.q_mag[i].val();
         }
         // The pipelines beside the units.
-        for i in 0..3 {
+        for i in 0..4 {
             self.row_q[i].clock.next = self.clock.val();
         }
         self.row_q[0].d.next = self.row.val();
-        self.row_q[1].d.next = self.row_q[0].q.val();
-        self.row_q[2].d.next = self.row_q[1].q.val();
-        for i in 0..4 {
+        for i in 1..4 {
+            self.row_q[i].d.next = self.row_q[i - 1].q.val();
+        }
+        for i in 0..9 {
             self.lut_q[i].clock.next = self.clock.val();
-            self.gate_q[i].clock.next = self.clock.val();
+            self.alpha_q[i].clock.next = self.clock.val();
         }
         self.lut_q[0].d.next = self.lut.data.val();
-        self.gate_q[0].d.next = self.gate.val();
-        for i in 1..4 {
+        for i in 1..9 {
             self.lut_q[i].d.next = self.lut_q[i - 1].q.val();
+        }
+        for i in 0..5 {
+            self.gate_q[i].clock.next = self.clock.val();
+        }
+        self.gate_q[0].d.next = self.gate.val();
+        for i in 1..5 {
             self.gate_q[i].d.next = self.gate_q[i - 1].q.val();
         }
-        for i in 0..6 {
+        for i in 0..14 {
             self.value_q[i].clock.next = self.clock.val();
         }
-        for i in 0..7 {
+        for i in 0..15 {
             self.valid_q[i].clock.next = self.clock.val();
         }
         self.value_q[0].d.next = self.value.val();
         self.valid_q[0].d.next = !self.invalid.val() | self.xray.val();
-        for i in 1..6 {
+        for i in 1..14 {
             self.value_q[i].d.next = self.value_q[i - 1].q.val();
         }
-        for i in 1..7 {
+        for i in 1..15 {
             self.valid_q[i].d.next = self.valid_q[i - 1].q.val();
         }
-        // Stage 4: the gradient-opacity read.
-        self.alpha_gm.address.next = (bit_cast::<16, LUT_INDEX_BITS>(self.row_q[2].q.val()) << 4)
+        // E5: the gradient-opacity read.
+        self.alpha_gm.address.next = (bit_cast::<16, LUT_INDEX_BITS>(self.row_q[3].q.val()) << 4)
             | bit_cast::<16, 4>(self.gm_bin.bin.val());
-        // Stage 5: the opacity.
+        // E6: the opacity.
         self.alpha.next = bit_cast::<16, 64>(self.lut_q[2].q.val() >> 48);
         if self.gm_on.val() {
             self.alpha.next = self.alpha_gm.data.val();
         }
-        if self.gate_q[3].q.val() {
+        if self.gate_q[4].q.val() {
             self.alpha.next = 0.into();
         }
-        self.alpha_q[0].clock.next = self.clock.val();
-        self.alpha_q[1].clock.next = self.clock.val();
         self.alpha_q[0].d.next = self.alpha.val();
-        self.alpha_q[1].d.next = self.alpha_q[0].q.val();
-        // Stage 6: shaded = sat(mul(c, diffuse) + specular).
+        for i in 1..9 {
+            self.alpha_q[i].d.next = self.alpha_q[i - 1].q.val();
+        }
+        // E12: mul(c, diffuse); E13: shaded = sat(mul(c, diffuse) + specular).
         self.diffuse.next = self.m_max.val();
         self.specular.next = 0.into();
         if self.shaded.val() {
             self.diffuse.next = self.lighting.diffuse.val();
             self.specular.next = self.lighting.specular.val();
         }
-        self.lit_r.a.next = bit_cast::<16, 64>(self.lut_q[3].q.val());
-        self.lit_g.a.next = bit_cast::<16, 64>(self.lut_q[3].q.val() >> 16);
-        self.lit_b.a.next = bit_cast::<16, 64>(self.lut_q[3].q.val() >> 32);
+        self.specular_q.d.next = self.specular.val();
+        self.lit_r.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val());
+        self.lit_g.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 16);
+        self.lit_b.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 32);
         self.lit_r.b.next = self.diffuse.val();
         self.lit_g.b.next = self.diffuse.val();
         self.lit_b.b.next = self.diffuse.val();
         self.sum_r.next =
-            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular.val());
+            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
         self.sum_g.next =
-            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular.val());
+            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
         self.sum_b.next =
-            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular.val());
+            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
         for i in 0..3 {
             self.shaded_q[i].clock.next = self.clock.val();
         }
@@ -399,20 +436,20 @@ impl Logic for Shader {
         if self.sum_b.val() > bit_cast::<32, 16>(self.m_max.val()) {
             self.shaded_q[2].d.next = self.m_max.val();
         }
-        // Stage 7: weighted = mul(shaded, alpha), or the scalar modes'.
+        // E14: mul(shaded, alpha); E15: the sample, or the scalar modes'.
         self.mul_r.a.next = self.shaded_q[0].q.val();
         self.mul_g.a.next = self.shaded_q[1].q.val();
         self.mul_b.a.next = self.shaded_q[2].q.val();
-        self.mul_r.b.next = self.alpha_q[1].q.val();
-        self.mul_g.b.next = self.alpha_q[1].q.val();
-        self.mul_b.b.next = self.alpha_q[1].q.val();
+        self.mul_r.b.next = self.alpha_q[7].q.val();
+        self.mul_g.b.next = self.alpha_q[7].q.val();
+        self.mul_b.b.next = self.alpha_q[7].q.val();
         if self.scalar.val() {
-            self.r_q.d.next = self.value_q[5].q.val();
+            self.r_q.d.next = self.value_q[13].q.val();
             self.g_q.d.next = 0.into();
             self.b_q.d.next = 0.into();
             self.a_q.d.next = 0.into();
         } else if self.xray.val() {
-            self.r_q.d.next = self.alpha_q[1].q.val();
+            self.r_q.d.next = self.alpha_q[8].q.val();
             self.g_q.d.next = 0.into();
             self.b_q.d.next = 0.into();
             self.a_q.d.next = 0.into();
@@ -420,7 +457,7 @@ impl Logic for Shader {
             self.r_q.d.next = self.mul_r.y.val();
             self.g_q.d.next = self.mul_g.y.val();
             self.b_q.d.next = self.mul_b.y.val();
-            self.a_q.d.next = self.alpha_q[1].q.val();
+            self.a_q.d.next = self.alpha_q[8].q.val();
         }
         self.r.next = 0.into();
         self.g.next = 0.into();
@@ -432,7 +469,7 @@ impl Logic for Shader {
             self.g.next = self.g_q.q.val();
             self.b.next = self.b_q.q.val();
             self.a.next = self.a_q.q.val();
-            self.valid.next = self.valid_q[6].q.val();
+            self.valid.next = self.valid_q[14].q.val();
         }
     }
 }

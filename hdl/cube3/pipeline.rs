@@ -86,7 +86,7 @@ pub struct Cube3<const P: usize, const H: usize> {
     leaf_flags: Signal<Local, Bits<32>>,
     /// The flags, on beside the shaders (`shader::LATENCY - 1` more clocks
     /// than the leaf stage's one).
-    shade_flags_q: [DFF<Bits<32>>; 6],
+    shade_flags_q: [DFF<Bits<32>>; SHADER_LATENCY - 1],
     rpc_flags_q: DFF<Bits<32>>,
     /// The cast bits of the rays in the RPC (bit `latency - 1` is the
     /// pixel's): an uncast ray's pixel is 0 without a sample.
@@ -242,8 +242,8 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
 }
 
 // `hdl_gen` needs literal loop bounds: the flags' registers beside the
-// shaders are written for a 7-clock shader.
-const _: () = assert!(SHADER_LATENCY == 7, "update the shaders' flag registers");
+// shaders are written for a 15-clock shader.
+const _: () = assert!(SHADER_LATENCY == 15, "update the shaders' flag registers");
 
 impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
     #[hdl_gen]
@@ -291,16 +291,16 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         if self.gradients.val() {
             self.leaf_flags.next = self.flags_line.data_out.val();
         }
-        for j in 0..6 {
+        for j in 0..14 {
             self.shade_flags_q[j].clock.next = self.clock.val();
         }
         self.shade_flags_q[0].d.next = self.leaf_flags.val();
-        for j in 1..6 {
+        for j in 1..14 {
             self.shade_flags_q[j].d.next = self.shade_flags_q[j - 1].q.val();
         }
         self.rpc_flags_q.d.next = self.leaf_flags.val();
         if self.shaded.val() {
-            self.rpc_flags_q.d.next = self.shade_flags_q[5].q.val();
+            self.rpc_flags_q.d.next = self.shade_flags_q[13].q.val();
         }
         self.abc.dx_neg.next = self.control.dx_neg.val();
         self.abc.dx_mag.next = self.control.dx_mag.val();

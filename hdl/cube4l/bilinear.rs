@@ -11,8 +11,8 @@
 //!
 //! One voxel per clock with [`LATENCY`] clocks of latency, pipelined for
 //! speed: the cells and weights are registered on entry, and each lerp takes
-//! two clocks, its difference and product in the first (the multiplier's
-//! output register), the rounding shift and the sum in the second. Every channel is 32 bits wide
+//! `lerp::SPLIT_LATENCY` clocks: its compare and difference, its product, and the
+//! rounding shift and the sum, one a clock. Every channel is 32 bits wide
 //! so that channel 0 can carry the X-ray sum (`rgba_bits + log2(depth)`
 //! bits); for X-ray the difference is split into 16-bit halves for two
 //! 16x16 multipliers. Every other channel, and channel 0 in the other
@@ -20,11 +20,13 @@
 //! half: those lerps are built with one multiplier (three per channel, the
 //! datapath's count).
 
-use crate::common::lerp::Lerp;
+use crate::common::lerp::{self, Lerp};
 use rust_hdl::prelude::*;
 
 /// Clocks from the cells to the result.
-pub const LATENCY: usize = 5;
+pub const LATENCY: usize = 1 + 2 * lerp::SPLIT_LATENCY;
+// The y lerp's weight waits in `wy_q`, written for 3-clock lerps.
+const _: () = assert!(lerp::SPLIT_LATENCY == 3);
 
 /// One channel: the cells registered, two x lerps, the y lerp.
 #[derive(LogicBlock)]
@@ -55,9 +57,9 @@ impl WideChannel {
             wx: Default::default(),
             wy: Default::default(),
             y: Default::default(),
-            top: Lerp::new(frac_bits, wide),
-            bottom: Lerp::new(frac_bits, wide),
-            vertical: Lerp::new(frac_bits, wide),
+            top: Lerp::split(frac_bits, wide),
+            bottom: Lerp::split(frac_bits, wide),
+            vertical: Lerp::split(frac_bits, wide),
             cells_q: Default::default(),
         }
     }
@@ -103,9 +105,9 @@ pub struct Bilinear {
     pub wx: Signal<In, Bits<16>>,
     pub wy: Signal<In, Bits<16>>,
     pub out: [Signal<Out, Bits<32>>; 4],
-    /// wx for the x lerps (one clock), wy for the y lerp (three).
+    /// wx for the x lerps (one clock), wy for the y lerp (four).
     wx_q: DFF<Bits<16>>,
-    wy_q: [DFF<Bits<16>>; 3],
+    wy_q: [DFF<Bits<16>>; 4],
     ch: [WideChannel; 4],
 }
 
@@ -132,13 +134,14 @@ impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, wx_q);
-        for i in 0..3 {
+        for i in 0..4 {
             self.wy_q[i].clock.next = self.clock.val();
         }
         self.wx_q.d.next = self.wx.val();
         self.wy_q[0].d.next = self.wy.val();
         self.wy_q[1].d.next = self.wy_q[0].q.val();
         self.wy_q[2].d.next = self.wy_q[1].q.val();
+        self.wy_q[3].d.next = self.wy_q[2].q.val();
         for i in 0..4 {
             self.ch[i].clock.next = self.clock.val();
             self.ch[i].c00.next = self.c00[i].val();
@@ -146,7 +149,7 @@ impl Logic for Bilinear {
             self.ch[i].c01.next = self.c01[i].val();
             self.ch[i].c11.next = self.c11[i].val();
             self.ch[i].wx.next = self.wx_q.q.val();
-            self.ch[i].wy.next = self.wy_q[2].q.val();
+            self.ch[i].wy.next = self.wy_q[3].q.val();
             self.out[i].next = self.ch[i].y.val();
         }
     }

@@ -50,6 +50,9 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub beats: Signal<In, Bits<64>>,
     /// Pulse to start a sweep; `busy` stays high until its last beat is issued.
     pub start: Signal<In, Bit>,
+    /// Synchronous reset: the address generator stops (the counters' next
+    /// `start` restarts them).
+    pub reset: Signal<In, Bit>,
     pub busy: Signal<Out, Bit>,
     pub load_enable: Signal<In, Bit>,
     pub load_module: Signal<In, Bits<8>>,
@@ -136,6 +139,7 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             eye_z: Default::default(),
             beats: Default::default(),
             start: Default::default(),
+            reset: Default::default(),
             busy: Default::default(),
             load_enable: Default::default(),
             load_module: Default::default(),
@@ -284,6 +288,9 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
                     }
                 }
             }
+        }
+        if self.reset.val() {
+            self.running.d.next = false;
         }
         self.valid_q.d.next = self.run_d3.q.val();
         self.ns_q.d.next = self.ns_d3.q.val();

@@ -1,5 +1,5 @@
 //! Compositing unit of the Cube-4L pipeline (§3.5, the C_k circles of Fig.
-//! 18): one voxel per clock, one register stage. It combines the bilinear
+//! 18): one voxel per clock, [`LATENCY`] register stages. It combines the bilinear
 //! unit's accumulated RGBA with the shaded voxel, bit for bit as
 //! `golden_model::cube4l::compositor::composite`:
 //!
@@ -11,12 +11,17 @@
 //!
 //! The mode class is built in (the logic of the other classes is
 //! constant-folded away by synthesis); the order, and MIP or MinIP, come
-//! from the `Order` register, bits 0 and 1. The over operator is [`Over`],
-//! one 16x16 multiplier per channel.
+//! from the `Order` register, bits 0 and 1. The over operator is
+//! [`PipedOver`], one 16x16 multiplier per channel with a clock to itself:
+//! stage 1 the operands' selection and the product (the scalar modes'
+//! result), stage 2 the rounding, sum and saturation.
 
 use crate::common::mode_class::ModeClass;
-use crate::common::over::Over;
+use crate::common::piped_over::PipedOver;
 use rust_hdl::prelude::*;
+
+/// Clocks from the operands to the composited value.
+pub const LATENCY: usize = 2;
 
 /// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
 /// channel r only and carry 0 in the others. Channel r is 32 bits wide for
@@ -42,10 +47,12 @@ pub struct Compositor {
     pub order: Signal<In, Bits<64>>,
     over: Constant<Bit>,
     scalar: Constant<Bit>,
-    ch_r: Over,
-    ch_g: Over,
-    ch_b: Over,
-    ch_a: Over,
+    ch_r: PipedOver,
+    ch_g: PipedOver,
+    ch_b: PipedOver,
+    ch_a: PipedOver,
+    /// Stage 1: the scalar modes' result.
+    scalar_q: DFF<Bits<32>>,
     reg_r: DFF<Bits<32>>,
     reg_g: DFF<Bits<16>>,
     reg_b: DFF<Bits<16>>,
@@ -72,10 +79,11 @@ impl Compositor {
             order: Default::default(),
             over: Constant::new(mode == ModeClass::Over),
             scalar: Constant::new(mode == ModeClass::Scalar),
-            ch_r: Over::new(rgba_bits),
-            ch_g: Over::new(rgba_bits),
-            ch_b: Over::new(rgba_bits),
-            ch_a: Over::new(rgba_bits),
+            ch_r: PipedOver::new(rgba_bits),
+            ch_g: PipedOver::new(rgba_bits),
+            ch_b: PipedOver::new(rgba_bits),
+            ch_a: PipedOver::new(rgba_bits),
+            scalar_q: Default::default(),
             reg_r: Default::default(),
             reg_g: Default::default(),
             reg_b: Default::default(),
@@ -87,7 +95,11 @@ impl Compositor {
 impl Logic for Compositor {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, reg_r, reg_g, reg_b, reg_a);
+        dff_setup!(self, clock, scalar_q, reg_r, reg_g, reg_b, reg_a);
+        self.ch_r.clock.next = self.clock.val();
+        self.ch_g.clock.next = self.clock.val();
+        self.ch_b.clock.next = self.clock.val();
+        self.ch_a.clock.next = self.clock.val();
         // Front and back operands of the over operator.
         if self.order.val().get_bit(0) {
             self.ch_r.front.next = bit_cast::<16, 32>(self.acc_r.val());
@@ -116,7 +128,21 @@ impl Logic for Compositor {
             self.ch_b.front_alpha.next = self.new_a.val();
             self.ch_a.front_alpha.next = self.new_a.val();
         }
-        // Scalar modes: channel r only.
+        // Stage 1, scalar modes (channel r only): MIP, MinIP, the X-ray sum.
+        if self.scalar.val() {
+            self.scalar_q.d.next = self.acc_r.val();
+            if self.order.val().get_bit(1) {
+                if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
+                    self.scalar_q.d.next = self.new_r.val();
+                }
+            } else if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
+                self.scalar_q.d.next = self.new_r.val();
+            }
+        } else {
+            self.scalar_q.d.next = self.acc_r.val() + self.new_r.val();
+        }
+        // Stage 2.
+        self.reg_r.d.next = self.scalar_q.q.val();
         self.reg_g.d.next = 0.into();
         self.reg_b.d.next = 0.into();
         self.reg_a.d.next = 0.into();
@@ -125,17 +151,6 @@ impl Logic for Compositor {
             self.reg_g.d.next = self.ch_g.result.val();
             self.reg_b.d.next = self.ch_b.result.val();
             self.reg_a.d.next = self.ch_a.result.val();
-        } else if self.scalar.val() {
-            self.reg_r.d.next = self.acc_r.val();
-            if self.order.val().get_bit(1) {
-                if self.new_valid.val() & (self.new_r.val() < self.acc_r.val()) {
-                    self.reg_r.d.next = self.new_r.val();
-                }
-            } else if self.new_valid.val() & (self.new_r.val() > self.acc_r.val()) {
-                self.reg_r.d.next = self.new_r.val();
-            }
-        } else {
-            self.reg_r.d.next = self.acc_r.val() + self.new_r.val();
         }
         self.out_r.next = self.reg_r.q.val();
         self.out_g.next = self.reg_g.q.val();

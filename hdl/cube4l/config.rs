@@ -9,6 +9,7 @@
 
 use super::abc_gradient;
 use super::bilinear;
+use super::compositor;
 use crate::common::mode_class::ModeClass;
 use crate::common::ram::{bits_for, ON_CHIP_BITS};
 use crate::common::shader;
@@ -325,7 +326,7 @@ impl fmt::Display for PipelineConfig {
 
 /// Clocks from a beat's gather (T: the taps, the 2x2 selection) to its
 /// composited result.
-pub const RESULT_AT: u32 = bilinear::LATENCY as u32 + 1;
+pub const RESULT_AT: u32 = (bilinear::LATENCY + compositor::LATENCY) as u32;
 
 /// Clocks the gather waits beyond the one after the shader's input, so
 /// that the shader's sample (`shader::LATENCY` clocks after its input) meets
@@ -342,11 +343,15 @@ pub const ADDRESS_STAGES: usize = 3;
 
 /// Clocks of a sweep beyond one beat per clock: the start register, the
 /// CFB's address stages, the block-RAM read, the shader's input register,
-/// the gather's delay and the bilinear unit's latency (the compositor
-/// register ends the last beat's own clock), and with a gradient unit one
-/// more (its output register).
+/// the gather's delay, the bilinear unit's latency and the compositor's
+/// first stage (its last register ends the last beat's own clock), and
+/// with a gradient unit one more (its output register).
 pub fn fill_clocks(gradient: bool) -> u64 {
-    3 + ADDRESS_STAGES as u64 + GATHER_DELAY as u64 + bilinear::LATENCY as u64 + gradient as u64
+    3 + ADDRESS_STAGES as u64
+        + GATHER_DELAY as u64
+        + bilinear::LATENCY as u64
+        + (compositor::LATENCY - 1) as u64
+        + gradient as u64
 }
 
 /// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per

@@ -1,7 +1,7 @@
 //! The control delay line of a Cube-4L pipeline (§3.5-3.7, Fig. 18): a
 //! beat's control travels beside its voxel, from the shader's input to the
 //! taps, the 2x2 selection and the bilinear unit (the gather, T) and on to
-//! the compositor's result (T+L+1, L the bilinear unit's latency), where it
+//! the compositor's result (T+L+2, L the bilinear unit's latency), where it
 //! marks the result and, on ER, makes it a base-plane pixel.
 //!
 //! The shader takes `shader::LATENCY` clocks, so its input is `T - 1 -
@@ -14,11 +14,11 @@ use rust_hdl::prelude::*;
 
 /// Registers from the shader input to the gather, and to the result.
 const GATHER: usize = 1 + GATHER_DELAY;
-const RESULT: usize = GATHER + LATENCY + 1;
+const RESULT: usize = GATHER + LATENCY + super::compositor::LATENCY;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
-// written for a gather 2 clocks and a result 8 clocks after the input.
+// written for a gather 8 clocks and a result 17 clocks after the input.
 const _: () = assert!(
-    GATHER == 2 && RESULT == 8,
+    GATHER == 8 && RESULT == 17,
     "update the literals in ControlDelay::update"
 );
 
@@ -48,7 +48,7 @@ pub struct ControlDelay {
     pub dx_mag_t: Signal<Out, Bits<16>>,
     pub dy_neg_t: Signal<Out, Bit>,
     pub dy_mag_t: Signal<Out, Bits<16>>,
-    /// At T+L+1, beside the composited value: a beat, one that is not
+    /// At T+L+2, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
     pub res_valid: Signal<Out, Bit>,
@@ -76,7 +76,7 @@ pub struct ControlDelay {
 impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
-        for i in 0..2 {
+        for i in 0..8 {
             self.x_q[i].clock.next = self.clock.val();
             self.y_q[i].clock.next = self.clock.val();
             self.sr_q[i].clock.next = self.clock.val();
@@ -85,7 +85,7 @@ impl Logic for ControlDelay {
             self.dyn_q[i].clock.next = self.clock.val();
             self.dym_q[i].clock.next = self.clock.val();
         }
-        for i in 0..8 {
+        for i in 0..17 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -101,20 +101,22 @@ impl Logic for ControlDelay {
         self.dxm_q[0].d.next = self.dx_mag.val();
         self.dyn_q[0].d.next = self.dy_neg.val();
         self.dym_q[0].d.next = self.dy_mag.val();
-        self.x_q[1].d.next = self.x_q[0].q.val();
-        self.y_q[1].d.next = self.y_q[0].q.val();
-        self.sr_q[1].d.next = self.sr_q[0].q.val();
-        self.dxn_q[1].d.next = self.dxn_q[0].q.val();
-        self.dxm_q[1].d.next = self.dxm_q[0].q.val();
-        self.dyn_q[1].d.next = self.dyn_q[0].q.val();
-        self.dym_q[1].d.next = self.dym_q[0].q.val();
-        self.x_t.next = self.x_q[1].q.val();
-        self.y_t.next = self.y_q[1].q.val();
-        self.sr_t.next = self.sr_q[1].q.val();
-        self.dx_neg_t.next = self.dxn_q[1].q.val();
-        self.dx_mag_t.next = self.dxm_q[1].q.val();
-        self.dy_neg_t.next = self.dyn_q[1].q.val();
-        self.dy_mag_t.next = self.dym_q[1].q.val();
+        for i in 1..8 {
+            self.x_q[i].d.next = self.x_q[i - 1].q.val();
+            self.y_q[i].d.next = self.y_q[i - 1].q.val();
+            self.sr_q[i].d.next = self.sr_q[i - 1].q.val();
+            self.dxn_q[i].d.next = self.dxn_q[i - 1].q.val();
+            self.dxm_q[i].d.next = self.dxm_q[i - 1].q.val();
+            self.dyn_q[i].d.next = self.dyn_q[i - 1].q.val();
+            self.dym_q[i].d.next = self.dym_q[i - 1].q.val();
+        }
+        self.x_t.next = self.x_q[7].q.val();
+        self.y_t.next = self.y_q[7].q.val();
+        self.sr_t.next = self.sr_q[7].q.val();
+        self.dx_neg_t.next = self.dxn_q[7].q.val();
+        self.dx_mag_t.next = self.dxm_q[7].q.val();
+        self.dy_neg_t.next = self.dyn_q[7].q.val();
+        self.dy_mag_t.next = self.dym_q[7].q.val();
         // The input -> the result.
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();
@@ -122,7 +124,7 @@ impl Logic for ControlDelay {
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..8 {
+        for i in 1..17 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -130,11 +132,11 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[7].q.val();
-        self.res_valid.next = self.v_q[7].q.val() & !self.pad_q[7].q.val();
-        self.px_valid.next = self.v_q[7].q.val() & self.er_q[7].q.val() & !self.pad_q[7].q.val();
-        self.px_x.next = self.bx_q[7].q.val();
-        self.px_y.next = self.by_q[7].q.val();
-        self.px_face.next = self.face_q[7].q.val();
+        self.res_beat.next = self.v_q[16].q.val();
+        self.res_valid.next = self.v_q[16].q.val() & !self.pad_q[16].q.val();
+        self.px_valid.next = self.v_q[16].q.val() & self.er_q[16].q.val() & !self.pad_q[16].q.val();
+        self.px_x.next = self.bx_q[16].q.val();
+        self.px_y.next = self.by_q[16].q.val();
+        self.px_face.next = self.face_q[16].q.val();
     }
 }

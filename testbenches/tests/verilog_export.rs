@@ -267,3 +267,53 @@ fn committed_verilog_writes_each_output_once() {
     }
     assert!(modules > 100, "only {modules} modules read");
 }
+
+/// Every committed build has an ECP5 report made from its committed
+/// Verilog: `scripts/synth-reports` writes, beside each report, the digest
+/// of the `*.v` files it synthesized (`cat *.v | sha256sum`).
+#[test]
+fn committed_synthesis_reports_are_current() {
+    require_tool("sha256sum");
+    let mut stale = Vec::new();
+    for c in configs() {
+        let dir = root().join("generated_verilog").join(c.dir());
+        let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "v"))
+            .collect();
+        files.sort();
+        let out = Command::new("sha256sum")
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .and_then(|mut child| {
+                use std::io::Write;
+                let mut stdin = child.stdin.take().unwrap();
+                for f in &files {
+                    stdin.write_all(&std::fs::read(f).unwrap())?;
+                }
+                drop(stdin);
+                child.wait_with_output()
+            })
+            .unwrap();
+        let digest = String::from_utf8_lossy(&out.stdout)
+            .split_whitespace()
+            .next()
+            .unwrap_or_default()
+            .to_string();
+        let report = root()
+            .join("generated_verilog/synth")
+            .join(format!("{}_{}.ecp5", c.arch, c.name));
+        let recorded =
+            std::fs::read_to_string(report.with_extension("ecp5.sha256")).unwrap_or_default();
+        if !report.with_extension("ecp5.json").is_file() || recorded.trim() != digest {
+            stale.push(c.name.clone());
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "ECP5 reports missing or older than their Verilog: {stale:?}; run ONLY=\"{}\" scripts/synth-reports",
+        stale.join(" ")
+    );
+}

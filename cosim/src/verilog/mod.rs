@@ -2,18 +2,21 @@
 //! width-clean (`width_clean.rs`), with the units the scene does not need
 //! pruned (`prune.rs`), each module's outputs written once per pass
 //! (`write_once.rs`), and split into its modules (`modules.rs`) and then
-//! into one file per stage with lint waivers (`split.rs`).
+//! into one file per stage with lint waivers (`split.rs`), and the
+//! integrable top around it (`wrapper.rs`).
 
 mod modules;
 mod prune;
 mod split;
 mod width_clean;
+mod wrapper;
 mod write_once;
 
 pub use modules::{split_modules, Module};
 pub use prune::{names, prune, LeftOut};
 pub use split::{lint_waivers, write_stage_files, Layout};
 pub use width_clean::width_clean;
+pub use wrapper::wrapper;
 pub use write_once::{outputs_written_twice, write_once};
 
 /// rust-hdl's Verilog as the kit writes it: width-clean, without `units`,

@@ -1406,6 +1406,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1414,6 +1415,18 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1422,7 +1435,12 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1437,6 +1455,26 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$back_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -1453,32 +1491,53 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1501,6 +1560,40 @@ module top$pipeline$abc$estimators$0$back_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_bottom$a_q
+module top$pipeline$abc$estimators$0$back_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_bottom$a_q2
+module top$pipeline$abc$estimators$0$back_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_bottom$diff_q
 module top$pipeline$abc$estimators$0$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1535,6 +1628,40 @@ module top$pipeline$abc$estimators$0$back_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_bottom$up_q
+module top$pipeline$abc$estimators$0$back_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_bottom$up_q2
+module top$pipeline$abc$estimators$0$back_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_bottom$w_q
 module top$pipeline$abc$estimators$0$back_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -1565,6 +1692,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1573,6 +1701,18 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1581,7 +1721,12 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1596,6 +1741,26 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$back_top$prod_q prod_q(
         .d(prod_q$d),
@@ -1612,32 +1777,53 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1660,6 +1846,40 @@ module top$pipeline$abc$estimators$0$back_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_top$a_q
+module top$pipeline$abc$estimators$0$back_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_top$a_q2
+module top$pipeline$abc$estimators$0$back_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_top$diff_q
 module top$pipeline$abc$estimators$0$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1694,6 +1914,40 @@ module top$pipeline$abc$estimators$0$back_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_top$up_q
+module top$pipeline$abc$estimators$0$back_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_top$up_q2
+module top$pipeline$abc$estimators$0$back_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_top$w_q
 module top$pipeline$abc$estimators$0$back_top$y_q(d,q,clock);
     
     // Module arguments
@@ -1724,6 +1978,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1732,6 +1987,18 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1740,7 +2007,12 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1755,6 +2027,26 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$back_y$prod_q prod_q(
         .d(prod_q$d),
@@ -1771,32 +2063,53 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1819,6 +2132,40 @@ module top$pipeline$abc$estimators$0$back_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_y$a_q
+module top$pipeline$abc$estimators$0$back_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_y$a_q2
+module top$pipeline$abc$estimators$0$back_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_y$diff_q
 module top$pipeline$abc$estimators$0$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -1853,6 +2200,40 @@ module top$pipeline$abc$estimators$0$back_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_y$up_q
+module top$pipeline$abc$estimators$0$back_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_y$up_q2
+module top$pipeline$abc$estimators$0$back_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$back_y$w_q
 module top$pipeline$abc$estimators$0$back_y$y_q(d,q,clock);
     
     // Module arguments
@@ -2172,6 +2553,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2180,6 +2562,18 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2188,7 +2582,12 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2203,6 +2602,26 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$front_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -2219,32 +2638,53 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2267,6 +2707,40 @@ module top$pipeline$abc$estimators$0$front_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_bottom$a_q
+module top$pipeline$abc$estimators$0$front_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_bottom$a_q2
+module top$pipeline$abc$estimators$0$front_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_bottom$diff_q
 module top$pipeline$abc$estimators$0$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2301,6 +2775,40 @@ module top$pipeline$abc$estimators$0$front_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_bottom$up_q
+module top$pipeline$abc$estimators$0$front_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_bottom$up_q2
+module top$pipeline$abc$estimators$0$front_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_bottom$w_q
 module top$pipeline$abc$estimators$0$front_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -2331,6 +2839,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2339,6 +2848,18 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2347,7 +2868,12 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2362,6 +2888,26 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$front_top$prod_q prod_q(
         .d(prod_q$d),
@@ -2378,32 +2924,53 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2426,6 +2993,40 @@ module top$pipeline$abc$estimators$0$front_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_top$a_q
+module top$pipeline$abc$estimators$0$front_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_top$a_q2
+module top$pipeline$abc$estimators$0$front_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_top$diff_q
 module top$pipeline$abc$estimators$0$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2460,6 +3061,40 @@ module top$pipeline$abc$estimators$0$front_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_top$up_q
+module top$pipeline$abc$estimators$0$front_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_top$up_q2
+module top$pipeline$abc$estimators$0$front_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_top$w_q
 module top$pipeline$abc$estimators$0$front_top$y_q(d,q,clock);
     
     // Module arguments
@@ -2490,6 +3125,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2498,6 +3134,18 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2506,7 +3154,12 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2521,6 +3174,26 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$0$front_y$prod_q prod_q(
         .d(prod_q$d),
@@ -2537,32 +3210,53 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2585,6 +3279,40 @@ module top$pipeline$abc$estimators$0$front_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_y$a_q
+module top$pipeline$abc$estimators$0$front_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_y$a_q2
+module top$pipeline$abc$estimators$0$front_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_y$diff_q
 module top$pipeline$abc$estimators$0$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -2619,6 +3347,40 @@ module top$pipeline$abc$estimators$0$front_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_y$up_q
+module top$pipeline$abc$estimators$0$front_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_y$up_q2
+module top$pipeline$abc$estimators$0$front_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$front_y$w_q
 module top$pipeline$abc$estimators$0$front_y$y_q(d,q,clock);
     
     // Module arguments
@@ -3722,6 +4484,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3730,6 +4493,18 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3738,7 +4513,12 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3753,6 +4533,26 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$back_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3769,32 +4569,53 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3817,6 +4638,40 @@ module top$pipeline$abc$estimators$1$back_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_bottom$a_q
+module top$pipeline$abc$estimators$1$back_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_bottom$a_q2
+module top$pipeline$abc$estimators$1$back_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_bottom$diff_q
 module top$pipeline$abc$estimators$1$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3851,6 +4706,40 @@ module top$pipeline$abc$estimators$1$back_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_bottom$up_q
+module top$pipeline$abc$estimators$1$back_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_bottom$up_q2
+module top$pipeline$abc$estimators$1$back_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_bottom$w_q
 module top$pipeline$abc$estimators$1$back_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -3881,6 +4770,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3889,6 +4779,18 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3897,7 +4799,12 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3912,6 +4819,26 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$back_top$prod_q prod_q(
         .d(prod_q$d),
@@ -3928,32 +4855,53 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3976,6 +4924,40 @@ module top$pipeline$abc$estimators$1$back_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_top$a_q
+module top$pipeline$abc$estimators$1$back_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_top$a_q2
+module top$pipeline$abc$estimators$1$back_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_top$diff_q
 module top$pipeline$abc$estimators$1$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4010,6 +4992,40 @@ module top$pipeline$abc$estimators$1$back_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_top$up_q
+module top$pipeline$abc$estimators$1$back_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_top$up_q2
+module top$pipeline$abc$estimators$1$back_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_top$w_q
 module top$pipeline$abc$estimators$1$back_top$y_q(d,q,clock);
     
     // Module arguments
@@ -4040,6 +5056,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4048,6 +5065,18 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4056,7 +5085,12 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4071,6 +5105,26 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$back_y$prod_q prod_q(
         .d(prod_q$d),
@@ -4087,32 +5141,53 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4135,6 +5210,40 @@ module top$pipeline$abc$estimators$1$back_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_y$a_q
+module top$pipeline$abc$estimators$1$back_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_y$a_q2
+module top$pipeline$abc$estimators$1$back_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_y$diff_q
 module top$pipeline$abc$estimators$1$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -4169,6 +5278,40 @@ module top$pipeline$abc$estimators$1$back_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_y$up_q
+module top$pipeline$abc$estimators$1$back_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_y$up_q2
+module top$pipeline$abc$estimators$1$back_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$back_y$w_q
 module top$pipeline$abc$estimators$1$back_y$y_q(d,q,clock);
     
     // Module arguments
@@ -4488,6 +5631,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4496,6 +5640,18 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4504,7 +5660,12 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4519,6 +5680,26 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$front_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -4535,32 +5716,53 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4583,6 +5785,40 @@ module top$pipeline$abc$estimators$1$front_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_bottom$a_q
+module top$pipeline$abc$estimators$1$front_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_bottom$a_q2
+module top$pipeline$abc$estimators$1$front_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_bottom$diff_q
 module top$pipeline$abc$estimators$1$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -4617,6 +5853,40 @@ module top$pipeline$abc$estimators$1$front_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_bottom$up_q
+module top$pipeline$abc$estimators$1$front_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_bottom$up_q2
+module top$pipeline$abc$estimators$1$front_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_bottom$w_q
 module top$pipeline$abc$estimators$1$front_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4647,6 +5917,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4655,6 +5926,18 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4663,7 +5946,12 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4678,6 +5966,26 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$front_top$prod_q prod_q(
         .d(prod_q$d),
@@ -4694,32 +6002,53 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4742,6 +6071,40 @@ module top$pipeline$abc$estimators$1$front_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_top$a_q
+module top$pipeline$abc$estimators$1$front_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_top$a_q2
+module top$pipeline$abc$estimators$1$front_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_top$diff_q
 module top$pipeline$abc$estimators$1$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4776,6 +6139,40 @@ module top$pipeline$abc$estimators$1$front_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_top$up_q
+module top$pipeline$abc$estimators$1$front_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_top$up_q2
+module top$pipeline$abc$estimators$1$front_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_top$w_q
 module top$pipeline$abc$estimators$1$front_top$y_q(d,q,clock);
     
     // Module arguments
@@ -4806,6 +6203,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4814,6 +6212,18 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4822,7 +6232,12 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4837,6 +6252,26 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$1$front_y$prod_q prod_q(
         .d(prod_q$d),
@@ -4853,32 +6288,53 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4901,6 +6357,40 @@ module top$pipeline$abc$estimators$1$front_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_y$a_q
+module top$pipeline$abc$estimators$1$front_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_y$a_q2
+module top$pipeline$abc$estimators$1$front_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_y$diff_q
 module top$pipeline$abc$estimators$1$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -4935,6 +6425,40 @@ module top$pipeline$abc$estimators$1$front_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_y$up_q
+module top$pipeline$abc$estimators$1$front_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_y$up_q2
+module top$pipeline$abc$estimators$1$front_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$front_y$w_q
 module top$pipeline$abc$estimators$1$front_y$y_q(d,q,clock);
     
     // Module arguments
@@ -6038,6 +7562,7 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6046,6 +7571,18 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6054,7 +7591,12 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6069,6 +7611,26 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$back_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$back_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -6085,32 +7647,53 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6133,6 +7716,40 @@ module top$pipeline$abc$estimators$2$back_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_bottom$a_q
+module top$pipeline$abc$estimators$2$back_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_bottom$a_q2
+module top$pipeline$abc$estimators$2$back_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_bottom$diff_q
 module top$pipeline$abc$estimators$2$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6167,6 +7784,40 @@ module top$pipeline$abc$estimators$2$back_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_bottom$up_q
+module top$pipeline$abc$estimators$2$back_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_bottom$up_q2
+module top$pipeline$abc$estimators$2$back_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_bottom$w_q
 module top$pipeline$abc$estimators$2$back_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -6197,6 +7848,7 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6205,6 +7857,18 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6213,7 +7877,12 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6228,6 +7897,26 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$back_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$back_top$prod_q prod_q(
         .d(prod_q$d),
@@ -6244,32 +7933,53 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6292,6 +8002,40 @@ module top$pipeline$abc$estimators$2$back_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_top$a_q
+module top$pipeline$abc$estimators$2$back_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_top$a_q2
+module top$pipeline$abc$estimators$2$back_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_top$diff_q
 module top$pipeline$abc$estimators$2$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -6326,6 +8070,40 @@ module top$pipeline$abc$estimators$2$back_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_top$up_q
+module top$pipeline$abc$estimators$2$back_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_top$up_q2
+module top$pipeline$abc$estimators$2$back_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_top$w_q
 module top$pipeline$abc$estimators$2$back_top$y_q(d,q,clock);
     
     // Module arguments
@@ -6356,6 +8134,7 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6364,6 +8143,18 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6372,7 +8163,12 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6387,6 +8183,26 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$back_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$back_y$prod_q prod_q(
         .d(prod_q$d),
@@ -6403,32 +8219,53 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6451,6 +8288,40 @@ module top$pipeline$abc$estimators$2$back_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_y$a_q
+module top$pipeline$abc$estimators$2$back_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_y$a_q2
+module top$pipeline$abc$estimators$2$back_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_y$diff_q
 module top$pipeline$abc$estimators$2$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -6485,6 +8356,40 @@ module top$pipeline$abc$estimators$2$back_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_y$up_q
+module top$pipeline$abc$estimators$2$back_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_y$up_q2
+module top$pipeline$abc$estimators$2$back_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$back_y$w_q
 module top$pipeline$abc$estimators$2$back_y$y_q(d,q,clock);
     
     // Module arguments
@@ -6804,6 +8709,7 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6812,6 +8718,18 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6820,7 +8738,12 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6835,6 +8758,26 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$front_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$front_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -6851,32 +8794,53 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6899,6 +8863,40 @@ module top$pipeline$abc$estimators$2$front_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_bottom$a_q
+module top$pipeline$abc$estimators$2$front_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_bottom$a_q2
+module top$pipeline$abc$estimators$2$front_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_bottom$diff_q
 module top$pipeline$abc$estimators$2$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6933,6 +8931,40 @@ module top$pipeline$abc$estimators$2$front_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_bottom$up_q
+module top$pipeline$abc$estimators$2$front_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_bottom$up_q2
+module top$pipeline$abc$estimators$2$front_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_bottom$w_q
 module top$pipeline$abc$estimators$2$front_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -6963,6 +8995,7 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6971,6 +9004,18 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6979,7 +9024,12 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6994,6 +9044,26 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$front_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$front_top$prod_q prod_q(
         .d(prod_q$d),
@@ -7010,32 +9080,53 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7058,6 +9149,40 @@ module top$pipeline$abc$estimators$2$front_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_top$a_q
+module top$pipeline$abc$estimators$2$front_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_top$a_q2
+module top$pipeline$abc$estimators$2$front_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_top$diff_q
 module top$pipeline$abc$estimators$2$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7092,6 +9217,40 @@ module top$pipeline$abc$estimators$2$front_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_top$up_q
+module top$pipeline$abc$estimators$2$front_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_top$up_q2
+module top$pipeline$abc$estimators$2$front_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_top$w_q
 module top$pipeline$abc$estimators$2$front_top$y_q(d,q,clock);
     
     // Module arguments
@@ -7122,6 +9281,7 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -7130,6 +9290,18 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -7138,7 +9310,12 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -7153,6 +9330,26 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$2$front_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$2$front_y$prod_q prod_q(
         .d(prod_q$d),
@@ -7169,32 +9366,53 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7217,6 +9435,40 @@ module top$pipeline$abc$estimators$2$front_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_y$a_q
+module top$pipeline$abc$estimators$2$front_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_y$a_q2
+module top$pipeline$abc$estimators$2$front_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_y$diff_q
 module top$pipeline$abc$estimators$2$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -7251,6 +9503,40 @@ module top$pipeline$abc$estimators$2$front_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_y$up_q
+module top$pipeline$abc$estimators$2$front_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_y$up_q2
+module top$pipeline$abc$estimators$2$front_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$front_y$w_q
 module top$pipeline$abc$estimators$2$front_y$y_q(d,q,clock);
     
     // Module arguments
@@ -8354,6 +10640,7 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -8362,6 +10649,18 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8370,7 +10669,12 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8385,6 +10689,26 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$back_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$back_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -8401,32 +10725,53 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8449,6 +10794,40 @@ module top$pipeline$abc$estimators$3$back_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_bottom$a_q
+module top$pipeline$abc$estimators$3$back_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_bottom$a_q2
+module top$pipeline$abc$estimators$3$back_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_bottom$diff_q
 module top$pipeline$abc$estimators$3$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -8483,6 +10862,40 @@ module top$pipeline$abc$estimators$3$back_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_bottom$up_q
+module top$pipeline$abc$estimators$3$back_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_bottom$up_q2
+module top$pipeline$abc$estimators$3$back_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_bottom$w_q
 module top$pipeline$abc$estimators$3$back_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -8513,6 +10926,7 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -8521,6 +10935,18 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8529,7 +10955,12 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8544,6 +10975,26 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$back_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$back_top$prod_q prod_q(
         .d(prod_q$d),
@@ -8560,32 +11011,53 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8608,6 +11080,40 @@ module top$pipeline$abc$estimators$3$back_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_top$a_q
+module top$pipeline$abc$estimators$3$back_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_top$a_q2
+module top$pipeline$abc$estimators$3$back_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_top$diff_q
 module top$pipeline$abc$estimators$3$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -8642,6 +11148,40 @@ module top$pipeline$abc$estimators$3$back_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_top$up_q
+module top$pipeline$abc$estimators$3$back_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_top$up_q2
+module top$pipeline$abc$estimators$3$back_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_top$w_q
 module top$pipeline$abc$estimators$3$back_top$y_q(d,q,clock);
     
     // Module arguments
@@ -8672,6 +11212,7 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -8680,6 +11221,18 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8688,7 +11241,12 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8703,6 +11261,26 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$back_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$back_y$prod_q prod_q(
         .d(prod_q$d),
@@ -8719,32 +11297,53 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8767,6 +11366,40 @@ module top$pipeline$abc$estimators$3$back_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_y$a_q
+module top$pipeline$abc$estimators$3$back_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_y$a_q2
+module top$pipeline$abc$estimators$3$back_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_y$diff_q
 module top$pipeline$abc$estimators$3$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -8801,6 +11434,40 @@ module top$pipeline$abc$estimators$3$back_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_y$up_q
+module top$pipeline$abc$estimators$3$back_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_y$up_q2
+module top$pipeline$abc$estimators$3$back_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$back_y$w_q
 module top$pipeline$abc$estimators$3$back_y$y_q(d,q,clock);
     
     // Module arguments
@@ -9120,6 +11787,7 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -9128,6 +11796,18 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9136,7 +11816,12 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9151,6 +11836,26 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$front_bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$front_bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -9167,32 +11872,53 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9215,6 +11941,40 @@ module top$pipeline$abc$estimators$3$front_bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_bottom$a_q
+module top$pipeline$abc$estimators$3$front_bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_bottom$a_q2
+module top$pipeline$abc$estimators$3$front_bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_bottom$diff_q
 module top$pipeline$abc$estimators$3$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -9249,6 +12009,40 @@ module top$pipeline$abc$estimators$3$front_bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_bottom$up_q
+module top$pipeline$abc$estimators$3$front_bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_bottom$up_q2
+module top$pipeline$abc$estimators$3$front_bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_bottom$w_q
 module top$pipeline$abc$estimators$3$front_bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -9279,6 +12073,7 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -9287,6 +12082,18 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9295,7 +12102,12 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9310,6 +12122,26 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$front_top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$front_top$prod_q prod_q(
         .d(prod_q$d),
@@ -9326,32 +12158,53 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9374,6 +12227,40 @@ module top$pipeline$abc$estimators$3$front_top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_top$a_q
+module top$pipeline$abc$estimators$3$front_top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_top$a_q2
+module top$pipeline$abc$estimators$3$front_top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_top$diff_q
 module top$pipeline$abc$estimators$3$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -9408,6 +12295,40 @@ module top$pipeline$abc$estimators$3$front_top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_top$up_q
+module top$pipeline$abc$estimators$3$front_top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_top$up_q2
+module top$pipeline$abc$estimators$3$front_top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_top$w_q
 module top$pipeline$abc$estimators$3$front_top$y_q(d,q,clock);
     
     // Module arguments
@@ -9438,6 +12359,7 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -9446,6 +12368,18 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9454,7 +12388,12 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9469,6 +12408,26 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_y$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_y$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_y$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$abc$estimators$3$front_y$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$abc$estimators$3$front_y$prod_q prod_q(
         .d(prod_q$d),
@@ -9485,32 +12444,53 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9533,6 +12513,40 @@ module top$pipeline$abc$estimators$3$front_y$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_y$a_q
+module top$pipeline$abc$estimators$3$front_y$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_y$a_q2
+module top$pipeline$abc$estimators$3$front_y$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_y$diff_q
 module top$pipeline$abc$estimators$3$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -9567,6 +12581,40 @@ module top$pipeline$abc$estimators$3$front_y$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_y$up_q
+module top$pipeline$abc$estimators$3$front_y$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_y$up_q2
+module top$pipeline$abc$estimators$3$front_y$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$front_y$w_q
 module top$pipeline$abc$estimators$3$front_y$y_q(d,q,clock);
     
     // Module arguments
@@ -10589,6 +13637,7 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -10732,6 +13781,7 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -11018,6 +14068,7 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -11161,6 +14212,7 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -11447,6 +14499,7 @@ module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -11590,6 +14643,7 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -12472,6 +15526,7 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -12615,6 +15670,7 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -12901,6 +15957,7 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -13044,6 +16101,7 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -13330,6 +16388,7 @@ module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -13473,6 +16532,7 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -14355,6 +17415,7 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -14498,6 +17559,7 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -14784,6 +17846,7 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -14927,6 +17990,7 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -15213,6 +18277,7 @@ module top$pipeline$abc$lanes$2$lines$6$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -15356,6 +18421,7 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -16238,6 +19304,7 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -16381,6 +19448,7 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -16667,6 +19735,7 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -16810,6 +19879,7 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -17096,6 +20166,7 @@ module top$pipeline$abc$lanes$3$lines$6$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin
@@ -17239,6 +20310,7 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[5:0];
     
     always @(posedge read_clock) begin

@@ -148,6 +148,30 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  [31:0] shade_flags_q$5$d;
     wire  [31:0] shade_flags_q$5$q;
     reg  shade_flags_q$5$clock;
+    reg  [31:0] shade_flags_q$6$d;
+    wire  [31:0] shade_flags_q$6$q;
+    reg  shade_flags_q$6$clock;
+    reg  [31:0] shade_flags_q$7$d;
+    wire  [31:0] shade_flags_q$7$q;
+    reg  shade_flags_q$7$clock;
+    reg  [31:0] shade_flags_q$8$d;
+    wire  [31:0] shade_flags_q$8$q;
+    reg  shade_flags_q$8$clock;
+    reg  [31:0] shade_flags_q$9$d;
+    wire  [31:0] shade_flags_q$9$q;
+    reg  shade_flags_q$9$clock;
+    reg  [31:0] shade_flags_q$10$d;
+    wire  [31:0] shade_flags_q$10$q;
+    reg  shade_flags_q$10$clock;
+    reg  [31:0] shade_flags_q$11$d;
+    wire  [31:0] shade_flags_q$11$q;
+    reg  shade_flags_q$11$clock;
+    reg  [31:0] shade_flags_q$12$d;
+    wire  [31:0] shade_flags_q$12$q;
+    reg  shade_flags_q$12$clock;
+    reg  [31:0] shade_flags_q$13$d;
+    wire  [31:0] shade_flags_q$13$q;
+    reg  shade_flags_q$13$clock;
     reg  [31:0] rpc_flags_q$d;
     wire  [31:0] rpc_flags_q$q;
     reg  rpc_flags_q$clock;
@@ -490,6 +514,46 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .q(shade_flags_q$5$q),
         .clock(shade_flags_q$5$clock)
     );
+    top$pipeline$shade_flags_q$6 shade_flags_q$6(
+        .d(shade_flags_q$6$d),
+        .q(shade_flags_q$6$q),
+        .clock(shade_flags_q$6$clock)
+    );
+    top$pipeline$shade_flags_q$7 shade_flags_q$7(
+        .d(shade_flags_q$7$d),
+        .q(shade_flags_q$7$q),
+        .clock(shade_flags_q$7$clock)
+    );
+    top$pipeline$shade_flags_q$8 shade_flags_q$8(
+        .d(shade_flags_q$8$d),
+        .q(shade_flags_q$8$q),
+        .clock(shade_flags_q$8$clock)
+    );
+    top$pipeline$shade_flags_q$9 shade_flags_q$9(
+        .d(shade_flags_q$9$d),
+        .q(shade_flags_q$9$q),
+        .clock(shade_flags_q$9$clock)
+    );
+    top$pipeline$shade_flags_q$10 shade_flags_q$10(
+        .d(shade_flags_q$10$d),
+        .q(shade_flags_q$10$q),
+        .clock(shade_flags_q$10$clock)
+    );
+    top$pipeline$shade_flags_q$11 shade_flags_q$11(
+        .d(shade_flags_q$11$d),
+        .q(shade_flags_q$11$q),
+        .clock(shade_flags_q$11$clock)
+    );
+    top$pipeline$shade_flags_q$12 shade_flags_q$12(
+        .d(shade_flags_q$12$d),
+        .q(shade_flags_q$12$q),
+        .clock(shade_flags_q$12$clock)
+    );
+    top$pipeline$shade_flags_q$13 shade_flags_q$13(
+        .d(shade_flags_q$13$d),
+        .q(shade_flags_q$13$q),
+        .clock(shade_flags_q$13$clock)
+    );
     top$pipeline$rpc_flags_q rpc_flags_q(
         .d(rpc_flags_q$d),
         .q(rpc_flags_q$q),
@@ -768,15 +832,31 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         shade_flags_q$3$clock = clock;
         shade_flags_q$4$clock = clock;
         shade_flags_q$5$clock = clock;
+        shade_flags_q$6$clock = clock;
+        shade_flags_q$7$clock = clock;
+        shade_flags_q$8$clock = clock;
+        shade_flags_q$9$clock = clock;
+        shade_flags_q$10$clock = clock;
+        shade_flags_q$11$clock = clock;
+        shade_flags_q$12$clock = clock;
+        shade_flags_q$13$clock = clock;
         shade_flags_q$0$d = leaf_flags;
         shade_flags_q$1$d = shade_flags_q$0$q;
         shade_flags_q$2$d = shade_flags_q$1$q;
         shade_flags_q$3$d = shade_flags_q$2$q;
         shade_flags_q$4$d = shade_flags_q$3$q;
         shade_flags_q$5$d = shade_flags_q$4$q;
+        shade_flags_q$6$d = shade_flags_q$5$q;
+        shade_flags_q$7$d = shade_flags_q$6$q;
+        shade_flags_q$8$d = shade_flags_q$7$q;
+        shade_flags_q$9$d = shade_flags_q$8$q;
+        shade_flags_q$10$d = shade_flags_q$9$q;
+        shade_flags_q$11$d = shade_flags_q$10$q;
+        shade_flags_q$12$d = shade_flags_q$11$q;
+        shade_flags_q$13$d = shade_flags_q$12$q;
         rpc_flags_q$d = leaf_flags;
         if (shaded) begin
-            rpc_flags_q$d = shade_flags_q$5$q;
+            rpc_flags_q$d = shade_flags_q$13$q;
         end
         abc$dx_neg = control$dx_neg;
         abc$dx_mag = control$dx_mag;
@@ -1552,6 +1632,7 @@ module top$pipeline$opacity$0$ram(read_address,read_clock,read_data,write_addres
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1622,6 +1703,7 @@ module top$pipeline$opacity$1$ram(read_address,read_clock,read_data,write_addres
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1692,6 +1774,7 @@ module top$pipeline$opacity$2$ram(read_address,read_clock,read_data,write_addres
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1762,6 +1845,7 @@ module top$pipeline$opacity$3$ram(read_address,read_clock,read_data,write_addres
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1943,6 +2027,74 @@ module top$pipeline$shade_flags_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade_flags_q$1
+module top$pipeline$shade_flags_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$10
+module top$pipeline$shade_flags_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$11
+module top$pipeline$shade_flags_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$12
+module top$pipeline$shade_flags_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$13
 module top$pipeline$shade_flags_q$2(d,q,clock);
     
     // Module arguments
@@ -2011,3 +2163,71 @@ module top$pipeline$shade_flags_q$5(d,q,clock);
     end
           
 endmodule // top$pipeline$shade_flags_q$5
+module top$pipeline$shade_flags_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$6
+module top$pipeline$shade_flags_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$7
+module top$pipeline$shade_flags_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$8
+module top$pipeline$shade_flags_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$9

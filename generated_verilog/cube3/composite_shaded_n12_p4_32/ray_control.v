@@ -777,6 +777,7 @@ module top$pipeline$control$increments$centre_line$ram(read_address,read_clock,r
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1070,6 +1071,7 @@ module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_add
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [63:0] mem[8:0];
     
     always @(posedge read_clock) begin

@@ -392,6 +392,7 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -400,6 +401,18 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -408,7 +421,12 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -423,6 +441,26 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -439,32 +477,53 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -487,6 +546,40 @@ module top$pipeline$lanes$units$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$bottom$a_q
+module top$pipeline$lanes$units$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$a_q2
+module top$pipeline$lanes$units$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$diff_q
 module top$pipeline$lanes$units$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -521,6 +614,40 @@ module top$pipeline$lanes$units$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$bottom$up_q
+module top$pipeline$lanes$units$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$up_q2
+module top$pipeline$lanes$units$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$w_q
 module top$pipeline$lanes$units$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -636,6 +763,7 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -644,6 +772,18 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -652,7 +792,12 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -667,6 +812,26 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -683,32 +848,53 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -731,6 +917,40 @@ module top$pipeline$lanes$units$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$top$a_q
+module top$pipeline$lanes$units$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$a_q2
+module top$pipeline$lanes$units$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$diff_q
 module top$pipeline$lanes$units$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -765,6 +985,40 @@ module top$pipeline$lanes$units$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$top$up_q
+module top$pipeline$lanes$units$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$up_q2
+module top$pipeline$lanes$units$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$w_q
 module top$pipeline$lanes$units$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -795,6 +1049,7 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -803,6 +1058,18 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -811,7 +1078,12 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -826,6 +1098,26 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -842,32 +1134,53 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -890,6 +1203,40 @@ module top$pipeline$lanes$units$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$vertical$a_q
+module top$pipeline$lanes$units$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$a_q2
+module top$pipeline$lanes$units$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$diff_q
 module top$pipeline$lanes$units$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -924,6 +1271,40 @@ module top$pipeline$lanes$units$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$vertical$up_q
+module top$pipeline$lanes$units$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$up_q2
+module top$pipeline$lanes$units$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$w_q
 module top$pipeline$lanes$units$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -1090,6 +1471,7 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1098,6 +1480,18 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1106,7 +1500,12 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1121,6 +1520,26 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -1137,32 +1556,53 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1185,6 +1625,40 @@ module top$pipeline$lanes$units$0$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$0$a_q
+module top$pipeline$lanes$units$0$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$a_q2
+module top$pipeline$lanes$units$0$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$diff_q
 module top$pipeline$lanes$units$0$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -1219,6 +1693,40 @@ module top$pipeline$lanes$units$0$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$0$up_q
+module top$pipeline$lanes$units$0$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$up_q2
+module top$pipeline$lanes$units$0$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$w_q
 module top$pipeline$lanes$units$0$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -1249,6 +1757,7 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1257,6 +1766,18 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1265,7 +1786,12 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1280,6 +1806,26 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -1296,32 +1842,53 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1344,6 +1911,40 @@ module top$pipeline$lanes$units$0$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$1$a_q
+module top$pipeline$lanes$units$0$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$a_q2
+module top$pipeline$lanes$units$0$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$diff_q
 module top$pipeline$lanes$units$0$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -1378,6 +1979,40 @@ module top$pipeline$lanes$units$0$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$1$up_q
+module top$pipeline$lanes$units$0$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$up_q2
+module top$pipeline$lanes$units$0$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$w_q
 module top$pipeline$lanes$units$0$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -1408,6 +2043,7 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1416,6 +2052,18 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1424,7 +2072,12 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1439,6 +2092,26 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -1455,32 +2128,53 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1503,6 +2197,40 @@ module top$pipeline$lanes$units$0$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$2$a_q
+module top$pipeline$lanes$units$0$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$a_q2
+module top$pipeline$lanes$units$0$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$diff_q
 module top$pipeline$lanes$units$0$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -1537,6 +2265,40 @@ module top$pipeline$lanes$units$0$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$2$up_q
+module top$pipeline$lanes$units$0$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$up_q2
+module top$pipeline$lanes$units$0$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$w_q
 module top$pipeline$lanes$units$0$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -1567,6 +2329,7 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1575,6 +2338,18 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1583,7 +2358,12 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1598,6 +2378,26 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -1614,32 +2414,53 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1662,6 +2483,40 @@ module top$pipeline$lanes$units$0$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$3$a_q
+module top$pipeline$lanes$units$0$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$a_q2
+module top$pipeline$lanes$units$0$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$diff_q
 module top$pipeline$lanes$units$0$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -1696,6 +2551,40 @@ module top$pipeline$lanes$units$0$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$3$up_q
+module top$pipeline$lanes$units$0$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$up_q2
+module top$pipeline$lanes$units$0$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$w_q
 module top$pipeline$lanes$units$0$z$3$y_q(d,q,clock);
     
     // Module arguments
@@ -2107,6 +2996,7 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2115,6 +3005,18 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2123,7 +3025,12 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2138,6 +3045,26 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -2154,32 +3081,53 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2202,6 +3150,40 @@ module top$pipeline$lanes$units$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$bottom$a_q
+module top$pipeline$lanes$units$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$a_q2
+module top$pipeline$lanes$units$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$diff_q
 module top$pipeline$lanes$units$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2236,6 +3218,40 @@ module top$pipeline$lanes$units$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$bottom$up_q
+module top$pipeline$lanes$units$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$up_q2
+module top$pipeline$lanes$units$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$w_q
 module top$pipeline$lanes$units$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -2351,6 +3367,7 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2359,6 +3376,18 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2367,7 +3396,12 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2382,6 +3416,26 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -2398,32 +3452,53 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2446,6 +3521,40 @@ module top$pipeline$lanes$units$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$top$a_q
+module top$pipeline$lanes$units$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$a_q2
+module top$pipeline$lanes$units$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$diff_q
 module top$pipeline$lanes$units$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2480,6 +3589,40 @@ module top$pipeline$lanes$units$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$top$up_q
+module top$pipeline$lanes$units$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$up_q2
+module top$pipeline$lanes$units$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$w_q
 module top$pipeline$lanes$units$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -2510,6 +3653,7 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2518,6 +3662,18 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2526,7 +3682,12 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2541,6 +3702,26 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2557,32 +3738,53 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2605,6 +3807,40 @@ module top$pipeline$lanes$units$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$vertical$a_q
+module top$pipeline$lanes$units$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$a_q2
+module top$pipeline$lanes$units$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$diff_q
 module top$pipeline$lanes$units$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2639,6 +3875,40 @@ module top$pipeline$lanes$units$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$vertical$up_q
+module top$pipeline$lanes$units$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$up_q2
+module top$pipeline$lanes$units$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$w_q
 module top$pipeline$lanes$units$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2805,6 +4075,7 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2813,6 +4084,18 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2821,7 +4104,12 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2836,6 +4124,26 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -2852,32 +4160,53 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2900,6 +4229,40 @@ module top$pipeline$lanes$units$1$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$0$a_q
+module top$pipeline$lanes$units$1$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$a_q2
+module top$pipeline$lanes$units$1$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$diff_q
 module top$pipeline$lanes$units$1$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -2934,6 +4297,40 @@ module top$pipeline$lanes$units$1$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$0$up_q
+module top$pipeline$lanes$units$1$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$up_q2
+module top$pipeline$lanes$units$1$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$w_q
 module top$pipeline$lanes$units$1$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -2964,6 +4361,7 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2972,6 +4370,18 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2980,7 +4390,12 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2995,6 +4410,26 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -3011,32 +4446,53 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3059,6 +4515,40 @@ module top$pipeline$lanes$units$1$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$1$a_q
+module top$pipeline$lanes$units$1$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$a_q2
+module top$pipeline$lanes$units$1$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$diff_q
 module top$pipeline$lanes$units$1$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -3093,6 +4583,40 @@ module top$pipeline$lanes$units$1$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$1$up_q
+module top$pipeline$lanes$units$1$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$up_q2
+module top$pipeline$lanes$units$1$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$w_q
 module top$pipeline$lanes$units$1$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -3123,6 +4647,7 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3131,6 +4656,18 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3139,7 +4676,12 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3154,6 +4696,26 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -3170,32 +4732,53 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3218,6 +4801,40 @@ module top$pipeline$lanes$units$1$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$2$a_q
+module top$pipeline$lanes$units$1$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$a_q2
+module top$pipeline$lanes$units$1$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$diff_q
 module top$pipeline$lanes$units$1$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -3252,6 +4869,40 @@ module top$pipeline$lanes$units$1$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$2$up_q
+module top$pipeline$lanes$units$1$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$up_q2
+module top$pipeline$lanes$units$1$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$w_q
 module top$pipeline$lanes$units$1$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -3282,6 +4933,7 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3290,6 +4942,18 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3298,7 +4962,12 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3313,6 +4982,26 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -3329,32 +5018,53 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3377,6 +5087,40 @@ module top$pipeline$lanes$units$1$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$3$a_q
+module top$pipeline$lanes$units$1$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$a_q2
+module top$pipeline$lanes$units$1$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$diff_q
 module top$pipeline$lanes$units$1$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -3411,6 +5155,40 @@ module top$pipeline$lanes$units$1$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$3$up_q
+module top$pipeline$lanes$units$1$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$up_q2
+module top$pipeline$lanes$units$1$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$w_q
 module top$pipeline$lanes$units$1$z$3$y_q(d,q,clock);
     
     // Module arguments
@@ -3822,6 +5600,7 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3830,6 +5609,18 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3838,7 +5629,12 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3853,6 +5649,26 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3869,32 +5685,53 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3917,6 +5754,40 @@ module top$pipeline$lanes$units$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$bottom$a_q
+module top$pipeline$lanes$units$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$bottom$a_q2
+module top$pipeline$lanes$units$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$bottom$diff_q
 module top$pipeline$lanes$units$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3951,6 +5822,40 @@ module top$pipeline$lanes$units$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$bottom$up_q
+module top$pipeline$lanes$units$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$bottom$up_q2
+module top$pipeline$lanes$units$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$bottom$w_q
 module top$pipeline$lanes$units$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4066,6 +5971,7 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4074,6 +5980,18 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4082,7 +6000,12 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4097,6 +6020,26 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -4113,32 +6056,53 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4161,6 +6125,40 @@ module top$pipeline$lanes$units$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$top$a_q
+module top$pipeline$lanes$units$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$top$a_q2
+module top$pipeline$lanes$units$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$top$diff_q
 module top$pipeline$lanes$units$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4195,6 +6193,40 @@ module top$pipeline$lanes$units$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$top$up_q
+module top$pipeline$lanes$units$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$top$up_q2
+module top$pipeline$lanes$units$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$top$w_q
 module top$pipeline$lanes$units$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -4225,6 +6257,7 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4233,6 +6266,18 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4241,7 +6286,12 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4256,6 +6306,26 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -4272,32 +6342,53 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4320,6 +6411,40 @@ module top$pipeline$lanes$units$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$vertical$a_q
+module top$pipeline$lanes$units$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$vertical$a_q2
+module top$pipeline$lanes$units$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$vertical$diff_q
 module top$pipeline$lanes$units$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4354,6 +6479,40 @@ module top$pipeline$lanes$units$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$vertical$up_q
+module top$pipeline$lanes$units$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$vertical$up_q2
+module top$pipeline$lanes$units$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$vertical$w_q
 module top$pipeline$lanes$units$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -4520,6 +6679,7 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4528,6 +6688,18 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4536,7 +6708,12 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4551,6 +6728,26 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -4567,32 +6764,53 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4615,6 +6833,40 @@ module top$pipeline$lanes$units$2$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$0$a_q
+module top$pipeline$lanes$units$2$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$0$a_q2
+module top$pipeline$lanes$units$2$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$0$diff_q
 module top$pipeline$lanes$units$2$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -4649,6 +6901,40 @@ module top$pipeline$lanes$units$2$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$0$up_q
+module top$pipeline$lanes$units$2$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$0$up_q2
+module top$pipeline$lanes$units$2$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$0$w_q
 module top$pipeline$lanes$units$2$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -4679,6 +6965,7 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4687,6 +6974,18 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4695,7 +6994,12 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4710,6 +7014,26 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -4726,32 +7050,53 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4774,6 +7119,40 @@ module top$pipeline$lanes$units$2$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$1$a_q
+module top$pipeline$lanes$units$2$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$1$a_q2
+module top$pipeline$lanes$units$2$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$1$diff_q
 module top$pipeline$lanes$units$2$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -4808,6 +7187,40 @@ module top$pipeline$lanes$units$2$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$1$up_q
+module top$pipeline$lanes$units$2$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$1$up_q2
+module top$pipeline$lanes$units$2$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$1$w_q
 module top$pipeline$lanes$units$2$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -4838,6 +7251,7 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -4846,6 +7260,18 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4854,7 +7280,12 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4869,6 +7300,26 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -4885,32 +7336,53 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4933,6 +7405,40 @@ module top$pipeline$lanes$units$2$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$2$a_q
+module top$pipeline$lanes$units$2$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$2$a_q2
+module top$pipeline$lanes$units$2$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$2$diff_q
 module top$pipeline$lanes$units$2$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -4967,6 +7473,40 @@ module top$pipeline$lanes$units$2$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$2$up_q
+module top$pipeline$lanes$units$2$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$2$up_q2
+module top$pipeline$lanes$units$2$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$2$w_q
 module top$pipeline$lanes$units$2$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -4997,6 +7537,7 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -5005,6 +7546,18 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5013,7 +7566,12 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5028,6 +7586,26 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$2$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$2$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$2$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -5044,32 +7622,53 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5092,6 +7691,40 @@ module top$pipeline$lanes$units$2$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$3$a_q
+module top$pipeline$lanes$units$2$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$3$a_q2
+module top$pipeline$lanes$units$2$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$3$diff_q
 module top$pipeline$lanes$units$2$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -5126,6 +7759,40 @@ module top$pipeline$lanes$units$2$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$2$z$3$up_q
+module top$pipeline$lanes$units$2$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$3$up_q2
+module top$pipeline$lanes$units$2$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$2$z$3$w_q
 module top$pipeline$lanes$units$2$z$3$y_q(d,q,clock);
     
     // Module arguments
@@ -5537,6 +8204,7 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -5545,6 +8213,18 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5553,7 +8233,12 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5568,6 +8253,26 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -5584,32 +8289,53 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5632,6 +8358,40 @@ module top$pipeline$lanes$units$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$bottom$a_q
+module top$pipeline$lanes$units$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$bottom$a_q2
+module top$pipeline$lanes$units$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$bottom$diff_q
 module top$pipeline$lanes$units$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -5666,6 +8426,40 @@ module top$pipeline$lanes$units$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$bottom$up_q
+module top$pipeline$lanes$units$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$bottom$up_q2
+module top$pipeline$lanes$units$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$bottom$w_q
 module top$pipeline$lanes$units$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -5781,6 +8575,7 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -5789,6 +8584,18 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5797,7 +8604,12 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5812,6 +8624,26 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -5828,32 +8660,53 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5876,6 +8729,40 @@ module top$pipeline$lanes$units$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$top$a_q
+module top$pipeline$lanes$units$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$top$a_q2
+module top$pipeline$lanes$units$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$top$diff_q
 module top$pipeline$lanes$units$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -5910,6 +8797,40 @@ module top$pipeline$lanes$units$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$top$up_q
+module top$pipeline$lanes$units$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$top$up_q2
+module top$pipeline$lanes$units$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$top$w_q
 module top$pipeline$lanes$units$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -5940,6 +8861,7 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -5948,6 +8870,18 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5956,7 +8890,12 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5971,6 +8910,26 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -5987,32 +8946,53 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6035,6 +9015,40 @@ module top$pipeline$lanes$units$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$vertical$a_q
+module top$pipeline$lanes$units$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$vertical$a_q2
+module top$pipeline$lanes$units$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$vertical$diff_q
 module top$pipeline$lanes$units$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -6069,6 +9083,40 @@ module top$pipeline$lanes$units$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$vertical$up_q
+module top$pipeline$lanes$units$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$vertical$up_q2
+module top$pipeline$lanes$units$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$vertical$w_q
 module top$pipeline$lanes$units$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -6235,6 +9283,7 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6243,6 +9292,18 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6251,7 +9312,12 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6266,6 +9332,26 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -6282,32 +9368,53 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6330,6 +9437,40 @@ module top$pipeline$lanes$units$3$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$0$a_q
+module top$pipeline$lanes$units$3$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$0$a_q2
+module top$pipeline$lanes$units$3$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$0$diff_q
 module top$pipeline$lanes$units$3$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -6364,6 +9505,40 @@ module top$pipeline$lanes$units$3$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$0$up_q
+module top$pipeline$lanes$units$3$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$0$up_q2
+module top$pipeline$lanes$units$3$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$0$w_q
 module top$pipeline$lanes$units$3$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -6394,6 +9569,7 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6402,6 +9578,18 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6410,7 +9598,12 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6425,6 +9618,26 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -6441,32 +9654,53 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6489,6 +9723,40 @@ module top$pipeline$lanes$units$3$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$1$a_q
+module top$pipeline$lanes$units$3$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$1$a_q2
+module top$pipeline$lanes$units$3$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$1$diff_q
 module top$pipeline$lanes$units$3$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -6523,6 +9791,40 @@ module top$pipeline$lanes$units$3$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$1$up_q
+module top$pipeline$lanes$units$3$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$1$up_q2
+module top$pipeline$lanes$units$3$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$1$w_q
 module top$pipeline$lanes$units$3$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -6553,6 +9855,7 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6561,6 +9864,18 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6569,7 +9884,12 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6584,6 +9904,26 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -6600,32 +9940,53 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6648,6 +10009,40 @@ module top$pipeline$lanes$units$3$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$2$a_q
+module top$pipeline$lanes$units$3$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$2$a_q2
+module top$pipeline$lanes$units$3$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$2$diff_q
 module top$pipeline$lanes$units$3$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -6682,6 +10077,40 @@ module top$pipeline$lanes$units$3$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$2$up_q
+module top$pipeline$lanes$units$3$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$2$up_q2
+module top$pipeline$lanes$units$3$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$2$w_q
 module top$pipeline$lanes$units$3$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -6712,6 +10141,7 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -6720,6 +10150,18 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6728,7 +10170,12 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6743,6 +10190,26 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$3$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$3$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$3$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -6759,32 +10226,53 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6807,6 +10295,40 @@ module top$pipeline$lanes$units$3$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$3$a_q
+module top$pipeline$lanes$units$3$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$3$a_q2
+module top$pipeline$lanes$units$3$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$3$diff_q
 module top$pipeline$lanes$units$3$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -6841,6 +10363,40 @@ module top$pipeline$lanes$units$3$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$3$z$3$up_q
+module top$pipeline$lanes$units$3$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$3$up_q2
+module top$pipeline$lanes$units$3$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$3$z$3$w_q
 module top$pipeline$lanes$units$3$z$3$y_q(d,q,clock);
     
     // Module arguments

@@ -466,6 +466,7 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[14:0];
     
     always @(posedge read_clock) begin
@@ -609,6 +610,7 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[14:0];
     
     always @(posedge read_clock) begin
@@ -820,6 +822,7 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[14:0];
     
     always @(posedge read_clock) begin
@@ -963,6 +966,7 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[14:0];
     
     always @(posedge read_clock) begin

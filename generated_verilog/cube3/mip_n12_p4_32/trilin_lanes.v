@@ -770,6 +770,7 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -913,6 +914,7 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1056,6 +1058,7 @@ module top$pipeline$lanes$cur_line$2$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1199,6 +1202,7 @@ module top$pipeline$lanes$cur_line$3$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1478,6 +1482,7 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1621,6 +1626,7 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1764,6 +1770,7 @@ module top$pipeline$lanes$next_line$2$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin
@@ -1907,6 +1914,7 @@ module top$pipeline$lanes$next_line$3$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[6:0];
     
     always @(posedge read_clock) begin

@@ -1160,6 +1160,7 @@ module top$fetch$memory$0(read_address,read_clock,read_data,write_address,write_
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -1184,6 +1185,7 @@ module top$fetch$memory$1(read_address,read_clock,read_data,write_address,write_
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[1:0];
     
     always @(posedge read_clock) begin

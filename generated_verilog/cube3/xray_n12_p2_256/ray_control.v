@@ -623,6 +623,7 @@ module top$pipeline$control$increments$centre_line$ram(read_address,read_clock,r
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[1:0];
     
     always @(posedge read_clock) begin

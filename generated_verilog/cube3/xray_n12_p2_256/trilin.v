@@ -392,6 +392,7 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -400,6 +401,18 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -408,7 +421,12 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -423,6 +441,26 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -439,32 +477,53 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -487,6 +546,40 @@ module top$pipeline$lanes$units$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$bottom$a_q
+module top$pipeline$lanes$units$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$a_q2
+module top$pipeline$lanes$units$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$diff_q
 module top$pipeline$lanes$units$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -521,6 +614,40 @@ module top$pipeline$lanes$units$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$bottom$up_q
+module top$pipeline$lanes$units$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$up_q2
+module top$pipeline$lanes$units$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$bottom$w_q
 module top$pipeline$lanes$units$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -636,6 +763,7 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -644,6 +772,18 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -652,7 +792,12 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -667,6 +812,26 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -683,32 +848,53 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -731,6 +917,40 @@ module top$pipeline$lanes$units$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$top$a_q
+module top$pipeline$lanes$units$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$a_q2
+module top$pipeline$lanes$units$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$diff_q
 module top$pipeline$lanes$units$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -765,6 +985,40 @@ module top$pipeline$lanes$units$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$top$up_q
+module top$pipeline$lanes$units$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$up_q2
+module top$pipeline$lanes$units$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$top$w_q
 module top$pipeline$lanes$units$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -795,6 +1049,7 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -803,6 +1058,18 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -811,7 +1078,12 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -826,6 +1098,26 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -842,32 +1134,53 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -890,6 +1203,40 @@ module top$pipeline$lanes$units$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$vertical$a_q
+module top$pipeline$lanes$units$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$a_q2
+module top$pipeline$lanes$units$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$diff_q
 module top$pipeline$lanes$units$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -924,6 +1271,40 @@ module top$pipeline$lanes$units$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$vertical$up_q
+module top$pipeline$lanes$units$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$up_q2
+module top$pipeline$lanes$units$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$vertical$w_q
 module top$pipeline$lanes$units$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -1090,6 +1471,7 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1098,6 +1480,18 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1106,7 +1500,12 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1121,6 +1520,26 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -1137,32 +1556,53 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1185,6 +1625,40 @@ module top$pipeline$lanes$units$0$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$0$a_q
+module top$pipeline$lanes$units$0$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$a_q2
+module top$pipeline$lanes$units$0$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$diff_q
 module top$pipeline$lanes$units$0$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -1219,6 +1693,40 @@ module top$pipeline$lanes$units$0$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$0$up_q
+module top$pipeline$lanes$units$0$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$up_q2
+module top$pipeline$lanes$units$0$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$0$w_q
 module top$pipeline$lanes$units$0$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -1249,6 +1757,7 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1257,6 +1766,18 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1265,7 +1786,12 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1280,6 +1806,26 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -1296,32 +1842,53 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1344,6 +1911,40 @@ module top$pipeline$lanes$units$0$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$1$a_q
+module top$pipeline$lanes$units$0$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$a_q2
+module top$pipeline$lanes$units$0$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$diff_q
 module top$pipeline$lanes$units$0$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -1378,6 +1979,40 @@ module top$pipeline$lanes$units$0$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$1$up_q
+module top$pipeline$lanes$units$0$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$up_q2
+module top$pipeline$lanes$units$0$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$1$w_q
 module top$pipeline$lanes$units$0$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -1408,6 +2043,7 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1416,6 +2052,18 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1424,7 +2072,12 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1439,6 +2092,26 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -1455,32 +2128,53 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1503,6 +2197,40 @@ module top$pipeline$lanes$units$0$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$2$a_q
+module top$pipeline$lanes$units$0$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$a_q2
+module top$pipeline$lanes$units$0$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$diff_q
 module top$pipeline$lanes$units$0$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -1537,6 +2265,40 @@ module top$pipeline$lanes$units$0$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$2$up_q
+module top$pipeline$lanes$units$0$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$up_q2
+module top$pipeline$lanes$units$0$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$2$w_q
 module top$pipeline$lanes$units$0$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -1567,6 +2329,7 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -1575,6 +2338,18 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1583,7 +2358,12 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1598,6 +2378,26 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$0$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -1614,32 +2414,53 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1662,6 +2483,40 @@ module top$pipeline$lanes$units$0$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$3$a_q
+module top$pipeline$lanes$units$0$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$a_q2
+module top$pipeline$lanes$units$0$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$diff_q
 module top$pipeline$lanes$units$0$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -1696,6 +2551,40 @@ module top$pipeline$lanes$units$0$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$3$up_q
+module top$pipeline$lanes$units$0$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$up_q2
+module top$pipeline$lanes$units$0$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$0$z$3$w_q
 module top$pipeline$lanes$units$0$z$3$y_q(d,q,clock);
     
     // Module arguments
@@ -2107,6 +2996,7 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2115,6 +3005,18 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2123,7 +3025,12 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2138,6 +3045,26 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -2154,32 +3081,53 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2202,6 +3150,40 @@ module top$pipeline$lanes$units$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$bottom$a_q
+module top$pipeline$lanes$units$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$a_q2
+module top$pipeline$lanes$units$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$diff_q
 module top$pipeline$lanes$units$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2236,6 +3218,40 @@ module top$pipeline$lanes$units$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$bottom$up_q
+module top$pipeline$lanes$units$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$up_q2
+module top$pipeline$lanes$units$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$bottom$w_q
 module top$pipeline$lanes$units$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -2351,6 +3367,7 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2359,6 +3376,18 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2367,7 +3396,12 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2382,6 +3416,26 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -2398,32 +3452,53 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2446,6 +3521,40 @@ module top$pipeline$lanes$units$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$top$a_q
+module top$pipeline$lanes$units$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$a_q2
+module top$pipeline$lanes$units$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$diff_q
 module top$pipeline$lanes$units$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2480,6 +3589,40 @@ module top$pipeline$lanes$units$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$top$up_q
+module top$pipeline$lanes$units$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$up_q2
+module top$pipeline$lanes$units$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$top$w_q
 module top$pipeline$lanes$units$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -2510,6 +3653,7 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2518,6 +3662,18 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2526,7 +3682,12 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2541,6 +3702,26 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2557,32 +3738,53 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2605,6 +3807,40 @@ module top$pipeline$lanes$units$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$vertical$a_q
+module top$pipeline$lanes$units$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$a_q2
+module top$pipeline$lanes$units$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$diff_q
 module top$pipeline$lanes$units$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2639,6 +3875,40 @@ module top$pipeline$lanes$units$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$vertical$up_q
+module top$pipeline$lanes$units$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$up_q2
+module top$pipeline$lanes$units$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$vertical$w_q
 module top$pipeline$lanes$units$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2805,6 +4075,7 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2813,6 +4084,18 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2821,7 +4104,12 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2836,6 +4124,26 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$0$prod_q prod_q(
         .d(prod_q$d),
@@ -2852,32 +4160,53 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2900,6 +4229,40 @@ module top$pipeline$lanes$units$1$z$0$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$0$a_q
+module top$pipeline$lanes$units$1$z$0$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$a_q2
+module top$pipeline$lanes$units$1$z$0$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$diff_q
 module top$pipeline$lanes$units$1$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -2934,6 +4297,40 @@ module top$pipeline$lanes$units$1$z$0$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$0$up_q
+module top$pipeline$lanes$units$1$z$0$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$up_q2
+module top$pipeline$lanes$units$1$z$0$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$0$w_q
 module top$pipeline$lanes$units$1$z$0$y_q(d,q,clock);
     
     // Module arguments
@@ -2964,6 +4361,7 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -2972,6 +4370,18 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2980,7 +4390,12 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2995,6 +4410,26 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$1$prod_q prod_q(
         .d(prod_q$d),
@@ -3011,32 +4446,53 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3059,6 +4515,40 @@ module top$pipeline$lanes$units$1$z$1$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$1$a_q
+module top$pipeline$lanes$units$1$z$1$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$a_q2
+module top$pipeline$lanes$units$1$z$1$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$diff_q
 module top$pipeline$lanes$units$1$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -3093,6 +4583,40 @@ module top$pipeline$lanes$units$1$z$1$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$1$up_q
+module top$pipeline$lanes$units$1$z$1$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$up_q2
+module top$pipeline$lanes$units$1$z$1$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$1$w_q
 module top$pipeline$lanes$units$1$z$1$y_q(d,q,clock);
     
     // Module arguments
@@ -3123,6 +4647,7 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3131,6 +4656,18 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3139,7 +4676,12 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3154,6 +4696,26 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$2$prod_q prod_q(
         .d(prod_q$d),
@@ -3170,32 +4732,53 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3218,6 +4801,40 @@ module top$pipeline$lanes$units$1$z$2$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$2$a_q
+module top$pipeline$lanes$units$1$z$2$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$a_q2
+module top$pipeline$lanes$units$1$z$2$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$diff_q
 module top$pipeline$lanes$units$1$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -3252,6 +4869,40 @@ module top$pipeline$lanes$units$1$z$2$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$2$up_q
+module top$pipeline$lanes$units$1$z$2$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$up_q2
+module top$pipeline$lanes$units$1$z$2$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$2$w_q
 module top$pipeline$lanes$units$1$z$2$y_q(d,q,clock);
     
     // Module arguments
@@ -3282,6 +4933,7 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b0;
     
     // Stub signals
     reg  up_q$d;
@@ -3290,6 +4942,18 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3298,7 +4962,12 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3313,6 +4982,26 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$pipeline$lanes$units$1$z$3$prod_q prod_q(
         .d(prod_q$d),
@@ -3329,32 +5018,53 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3377,6 +5087,40 @@ module top$pipeline$lanes$units$1$z$3$a_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$3$a_q
+module top$pipeline$lanes$units$1$z$3$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$a_q2
+module top$pipeline$lanes$units$1$z$3$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$diff_q
 module top$pipeline$lanes$units$1$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -3411,6 +5155,40 @@ module top$pipeline$lanes$units$1$z$3$up_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$3$up_q
+module top$pipeline$lanes$units$1$z$3$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$up_q2
+module top$pipeline$lanes$units$1$z$3$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$units$1$z$3$w_q
 module top$pipeline$lanes$units$1$z$3$y_q(d,q,clock);
     
     // Module arguments

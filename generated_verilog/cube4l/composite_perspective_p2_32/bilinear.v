@@ -38,6 +38,9 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -92,6 +95,11 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$0$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$0$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -140,17 +148,19 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -158,7 +168,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -166,7 +176,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -174,7 +184,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -302,6 +312,7 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -310,6 +321,18 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -318,7 +341,12 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -333,6 +361,26 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -349,32 +397,53 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -397,6 +466,40 @@ module top$lanes$0$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q
+module top$lanes$0$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q2
+module top$lanes$0$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$diff_q
 module top$lanes$0$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -431,6 +534,40 @@ module top$lanes$0$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q
+module top$lanes$0$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q2
+module top$lanes$0$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$w_q
 module top$lanes$0$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -529,6 +666,7 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -537,6 +675,18 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -545,7 +695,12 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -560,6 +715,26 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -576,32 +751,53 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -624,6 +820,40 @@ module top$lanes$0$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$top$a_q
+module top$lanes$0$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$a_q2
+module top$lanes$0$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$diff_q
 module top$lanes$0$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -658,6 +888,40 @@ module top$lanes$0$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$top$up_q
+module top$lanes$0$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$up_q2
+module top$lanes$0$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$w_q
 module top$lanes$0$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -688,6 +952,7 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -696,6 +961,18 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -704,7 +981,12 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -719,6 +1001,26 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -735,32 +1037,53 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -783,6 +1106,40 @@ module top$lanes$0$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q
+module top$lanes$0$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q2
+module top$lanes$0$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$diff_q
 module top$lanes$0$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -817,6 +1174,40 @@ module top$lanes$0$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q
+module top$lanes$0$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q2
+module top$lanes$0$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$w_q
 module top$lanes$0$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -957,6 +1348,7 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -965,6 +1357,18 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -973,7 +1377,12 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -988,6 +1397,26 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -1004,32 +1433,53 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1052,6 +1502,40 @@ module top$lanes$0$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q
+module top$lanes$0$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q2
+module top$lanes$0$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$diff_q
 module top$lanes$0$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1086,6 +1570,40 @@ module top$lanes$0$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q
+module top$lanes$0$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q2
+module top$lanes$0$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$w_q
 module top$lanes$0$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -1184,6 +1702,7 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1192,6 +1711,18 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1200,7 +1731,12 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1215,6 +1751,26 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -1231,32 +1787,53 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1279,6 +1856,40 @@ module top$lanes$0$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$top$a_q
+module top$lanes$0$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$a_q2
+module top$lanes$0$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$diff_q
 module top$lanes$0$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1313,6 +1924,40 @@ module top$lanes$0$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$top$up_q
+module top$lanes$0$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$up_q2
+module top$lanes$0$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$w_q
 module top$lanes$0$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -1343,6 +1988,7 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1351,6 +1997,18 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1359,7 +2017,12 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1374,6 +2037,26 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -1390,32 +2073,53 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1438,6 +2142,40 @@ module top$lanes$0$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q
+module top$lanes$0$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q2
+module top$lanes$0$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$diff_q
 module top$lanes$0$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -1472,6 +2210,40 @@ module top$lanes$0$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q
+module top$lanes$0$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q2
+module top$lanes$0$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$w_q
 module top$lanes$0$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -1612,6 +2384,7 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1620,6 +2393,18 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1628,7 +2413,12 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1643,6 +2433,26 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -1659,32 +2469,53 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1707,6 +2538,40 @@ module top$lanes$0$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q
+module top$lanes$0$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q2
+module top$lanes$0$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$diff_q
 module top$lanes$0$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1741,6 +2606,40 @@ module top$lanes$0$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q
+module top$lanes$0$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q2
+module top$lanes$0$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$w_q
 module top$lanes$0$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -1839,6 +2738,7 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1847,6 +2747,18 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1855,7 +2767,12 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1870,6 +2787,26 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -1886,32 +2823,53 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1934,6 +2892,40 @@ module top$lanes$0$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$top$a_q
+module top$lanes$0$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$a_q2
+module top$lanes$0$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$diff_q
 module top$lanes$0$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1968,6 +2960,40 @@ module top$lanes$0$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$top$up_q
+module top$lanes$0$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$up_q2
+module top$lanes$0$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$w_q
 module top$lanes$0$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -1998,6 +3024,7 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2006,6 +3033,18 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2014,7 +3053,12 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2029,6 +3073,26 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2045,32 +3109,53 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2093,6 +3178,40 @@ module top$lanes$0$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q
+module top$lanes$0$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q2
+module top$lanes$0$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$diff_q
 module top$lanes$0$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2127,6 +3246,40 @@ module top$lanes$0$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q
+module top$lanes$0$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q2
+module top$lanes$0$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$w_q
 module top$lanes$0$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2267,6 +3420,7 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2275,6 +3429,18 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2283,7 +3449,12 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2298,6 +3469,26 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -2314,32 +3505,53 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2362,6 +3574,40 @@ module top$lanes$0$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q
+module top$lanes$0$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q2
+module top$lanes$0$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$diff_q
 module top$lanes$0$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2396,6 +3642,40 @@ module top$lanes$0$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q
+module top$lanes$0$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q2
+module top$lanes$0$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$w_q
 module top$lanes$0$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -2494,6 +3774,7 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2502,6 +3783,18 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2510,7 +3803,12 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2525,6 +3823,26 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -2541,32 +3859,53 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2589,6 +3928,40 @@ module top$lanes$0$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$top$a_q
+module top$lanes$0$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$a_q2
+module top$lanes$0$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$diff_q
 module top$lanes$0$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2623,6 +3996,40 @@ module top$lanes$0$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$top$up_q
+module top$lanes$0$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$up_q2
+module top$lanes$0$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$w_q
 module top$lanes$0$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -2653,6 +4060,7 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2661,6 +4069,18 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2669,7 +4089,12 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2684,6 +4109,26 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2700,32 +4145,53 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2748,6 +4214,40 @@ module top$lanes$0$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q
+module top$lanes$0$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q2
+module top$lanes$0$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$diff_q
 module top$lanes$0$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2782,6 +4282,40 @@ module top$lanes$0$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q
+module top$lanes$0$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q2
+module top$lanes$0$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$w_q
 module top$lanes$0$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2867,6 +4401,23 @@ module top$lanes$0$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$wy_q$2
+module top$lanes$0$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$3
 module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -2907,6 +4458,9 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -2961,6 +4515,11 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$1$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$1$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -3009,17 +4568,19 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -3027,7 +4588,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -3035,7 +4596,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -3043,7 +4604,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -3171,6 +4732,7 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3179,6 +4741,18 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3187,7 +4761,12 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3202,6 +4781,26 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3218,32 +4817,53 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3266,6 +4886,40 @@ module top$lanes$1$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q
+module top$lanes$1$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q2
+module top$lanes$1$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$diff_q
 module top$lanes$1$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3300,6 +4954,40 @@ module top$lanes$1$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q
+module top$lanes$1$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q2
+module top$lanes$1$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$w_q
 module top$lanes$1$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -3398,6 +5086,7 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3406,6 +5095,18 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3414,7 +5115,12 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3429,6 +5135,26 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -3445,32 +5171,53 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3493,6 +5240,40 @@ module top$lanes$1$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$top$a_q
+module top$lanes$1$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$a_q2
+module top$lanes$1$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$diff_q
 module top$lanes$1$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3527,6 +5308,40 @@ module top$lanes$1$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$top$up_q
+module top$lanes$1$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$up_q2
+module top$lanes$1$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$w_q
 module top$lanes$1$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -3557,6 +5372,7 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3565,6 +5381,18 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3573,7 +5401,12 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3588,6 +5421,26 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -3604,32 +5457,53 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3652,6 +5526,40 @@ module top$lanes$1$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q
+module top$lanes$1$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q2
+module top$lanes$1$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$diff_q
 module top$lanes$1$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -3686,6 +5594,40 @@ module top$lanes$1$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q
+module top$lanes$1$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q2
+module top$lanes$1$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$w_q
 module top$lanes$1$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -3826,6 +5768,7 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3834,6 +5777,18 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3842,7 +5797,12 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3857,6 +5817,26 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3873,32 +5853,53 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3921,6 +5922,40 @@ module top$lanes$1$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q
+module top$lanes$1$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q2
+module top$lanes$1$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$diff_q
 module top$lanes$1$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3955,6 +5990,40 @@ module top$lanes$1$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q
+module top$lanes$1$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q2
+module top$lanes$1$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$w_q
 module top$lanes$1$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4053,6 +6122,7 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4061,6 +6131,18 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4069,7 +6151,12 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4084,6 +6171,26 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -4100,32 +6207,53 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4148,6 +6276,40 @@ module top$lanes$1$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$top$a_q
+module top$lanes$1$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$a_q2
+module top$lanes$1$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$diff_q
 module top$lanes$1$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4182,6 +6344,40 @@ module top$lanes$1$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$top$up_q
+module top$lanes$1$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$up_q2
+module top$lanes$1$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$w_q
 module top$lanes$1$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -4212,6 +6408,7 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4220,6 +6417,18 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4228,7 +6437,12 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4243,6 +6457,26 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -4259,32 +6493,53 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4307,6 +6562,40 @@ module top$lanes$1$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q
+module top$lanes$1$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q2
+module top$lanes$1$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$diff_q
 module top$lanes$1$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4341,6 +6630,40 @@ module top$lanes$1$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q
+module top$lanes$1$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q2
+module top$lanes$1$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$w_q
 module top$lanes$1$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -4481,6 +6804,7 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4489,6 +6813,18 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4497,7 +6833,12 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4512,6 +6853,26 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -4528,32 +6889,53 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4576,6 +6958,40 @@ module top$lanes$1$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q
+module top$lanes$1$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q2
+module top$lanes$1$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$diff_q
 module top$lanes$1$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -4610,6 +7026,40 @@ module top$lanes$1$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q
+module top$lanes$1$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q2
+module top$lanes$1$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$w_q
 module top$lanes$1$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4708,6 +7158,7 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4716,6 +7167,18 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4724,7 +7187,12 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4739,6 +7207,26 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -4755,32 +7243,53 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4803,6 +7312,40 @@ module top$lanes$1$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$top$a_q
+module top$lanes$1$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$a_q2
+module top$lanes$1$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$diff_q
 module top$lanes$1$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4837,6 +7380,40 @@ module top$lanes$1$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$top$up_q
+module top$lanes$1$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$up_q2
+module top$lanes$1$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$w_q
 module top$lanes$1$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -4867,6 +7444,7 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4875,6 +7453,18 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4883,7 +7473,12 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4898,6 +7493,26 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -4914,32 +7529,53 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4962,6 +7598,40 @@ module top$lanes$1$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q
+module top$lanes$1$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q2
+module top$lanes$1$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$diff_q
 module top$lanes$1$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4996,6 +7666,40 @@ module top$lanes$1$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q
+module top$lanes$1$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q2
+module top$lanes$1$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$w_q
 module top$lanes$1$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -5136,6 +7840,7 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5144,6 +7849,18 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5152,7 +7869,12 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5167,6 +7889,26 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -5183,32 +7925,53 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5231,6 +7994,40 @@ module top$lanes$1$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q
+module top$lanes$1$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q2
+module top$lanes$1$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$diff_q
 module top$lanes$1$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -5265,6 +8062,40 @@ module top$lanes$1$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q
+module top$lanes$1$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q2
+module top$lanes$1$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$w_q
 module top$lanes$1$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -5363,6 +8194,7 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5371,6 +8203,18 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5379,7 +8223,12 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5394,6 +8243,26 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -5410,32 +8279,53 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5458,6 +8348,40 @@ module top$lanes$1$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$top$a_q
+module top$lanes$1$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$a_q2
+module top$lanes$1$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$diff_q
 module top$lanes$1$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -5492,6 +8416,40 @@ module top$lanes$1$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$top$up_q
+module top$lanes$1$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$up_q2
+module top$lanes$1$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$w_q
 module top$lanes$1$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -5522,6 +8480,7 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5530,6 +8489,18 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5538,7 +8509,12 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5553,6 +8529,26 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -5569,32 +8565,53 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5617,6 +8634,40 @@ module top$lanes$1$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q
+module top$lanes$1$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q2
+module top$lanes$1$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$diff_q
 module top$lanes$1$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -5651,6 +8702,40 @@ module top$lanes$1$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q
+module top$lanes$1$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q2
+module top$lanes$1$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$w_q
 module top$lanes$1$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -5736,3 +8821,20 @@ module top$lanes$1$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$wy_q$2
+module top$lanes$1$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$3

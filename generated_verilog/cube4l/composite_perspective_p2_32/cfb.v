@@ -1,4 +1,4 @@
-module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,x$0,x$1,y$0,y$1,z$0,z$1,address$0,address$1,pad$0,pad$1,sr$0,sr$1,er$0,er$1,base_x$0,base_x$1,base_y$0,base_y$1,face$0,face$1,at_edge$0,at_edge$1,invalid$0,invalid$1,halo$0,halo$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,dx_neg$0,dx_neg$1,dx_mag$0,dx_mag$1,dy_neg$0,dy_neg$1,dy_mag$0,dy_mag$1);
+module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,reset,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,x$0,x$1,y$0,y$1,z$0,z$1,address$0,address$1,pad$0,pad$1,sr$0,sr$1,er$0,er$1,base_x$0,base_x$1,base_y$0,base_y$1,face$0,face$1,at_edge$0,at_edge$1,invalid$0,invalid$1,halo$0,halo$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,dx_neg$0,dx_neg$1,dx_mag$0,dx_mag$1,dy_neg$0,dy_neg$1,dy_mag$0,dy_mag$1);
     
     // Module arguments
     input wire  clock;
@@ -13,6 +13,7 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     input wire  [63:0] eye_z;
     input wire  [63:0] beats;
     input wire  start;
+    input wire  reset;
     output reg  busy;
     input wire  load_enable;
     input wire  [7:0] load_module;
@@ -561,6 +562,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
                     end
                 end
             end
+        end
+        if (reset) begin
+            running$d = 1'b0;
         end
         valid_q$d = run_d3$q;
         ns_q$d = ns_d3$q;

@@ -1,3 +1,20 @@
+module top$flush(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$flush
 module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
@@ -825,42 +842,168 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -885,6 +1028,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -909,6 +1079,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -933,6 +1130,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -957,6 +1181,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -981,6 +1232,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1005,6 +1283,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$0$ctl$x_q$0 x_q$0(
@@ -1017,6 +1322,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$0$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$0$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$0$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$0$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$0$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$0$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$0$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -1026,6 +1361,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$0$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$0$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$0$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$0$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$0$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$0$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$0$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -1037,6 +1402,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$0$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$0$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$0$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$0$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$0$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$0$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$0$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -1046,6 +1441,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$0$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$0$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$0$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$0$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$0$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$0$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$0$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -1057,6 +1482,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$0$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$0$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$0$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$0$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$0$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$0$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$0$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -1067,6 +1522,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$0$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$0$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$0$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$0$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$0$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$0$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$0$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -1076,6 +1561,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$0$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$0$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$0$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$0$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$0$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$0$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$0$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -1117,6 +1632,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$0$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$0$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$0$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$0$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$0$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$0$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$0$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$0$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$0$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1156,6 +1716,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$0$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$0$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$0$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$0$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$0$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$0$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$0$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$0$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$0$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1197,6 +1802,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$0$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$0$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$0$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$0$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$0$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$0$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$0$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$0$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$0$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1236,6 +1886,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$0$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$0$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$0$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$0$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$0$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$0$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$0$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$0$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$0$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -1277,6 +1972,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$0$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$0$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$0$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$0$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$0$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$0$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$0$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$0$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$0$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -1317,6 +2057,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$0$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$0$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$0$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$0$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$0$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$0$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$0$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$0$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$0$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -1334,6 +2119,48 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -1382,6 +2209,60 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -1396,13 +2277,55 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -1451,12 +2374,66 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -1494,6 +2471,125 @@ module top$lanes$0$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$1
+module top$lanes$0$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$10
+module top$lanes$0$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$11
+module top$lanes$0$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$12
+module top$lanes$0$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$13
+module top$lanes$0$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$14
+module top$lanes$0$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$15
+module top$lanes$0$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$16
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -1596,6 +2692,40 @@ module top$lanes$0$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$7
+module top$lanes$0$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$8
+module top$lanes$0$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$9
 module top$lanes$0$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -1630,6 +2760,125 @@ module top$lanes$0$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$1
+module top$lanes$0$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$10
+module top$lanes$0$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$11
+module top$lanes$0$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$12
+module top$lanes$0$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$13
+module top$lanes$0$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$14
+module top$lanes$0$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$15
+module top$lanes$0$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$16
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -1732,6 +2981,40 @@ module top$lanes$0$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$7
+module top$lanes$0$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$8
+module top$lanes$0$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$9
 module top$lanes$0$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -1766,6 +3049,108 @@ module top$lanes$0$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxm_q$1
+module top$lanes$0$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$2
+module top$lanes$0$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$3
+module top$lanes$0$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$4
+module top$lanes$0$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$5
+module top$lanes$0$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$6
+module top$lanes$0$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$7
 module top$lanes$0$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -1800,6 +3185,108 @@ module top$lanes$0$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxn_q$1
+module top$lanes$0$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$2
+module top$lanes$0$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$3
+module top$lanes$0$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$4
+module top$lanes$0$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$5
+module top$lanes$0$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$6
+module top$lanes$0$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$7
 module top$lanes$0$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -1834,6 +3321,108 @@ module top$lanes$0$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dym_q$1
+module top$lanes$0$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$2
+module top$lanes$0$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$3
+module top$lanes$0$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$4
+module top$lanes$0$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$5
+module top$lanes$0$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$6
+module top$lanes$0$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$7
 module top$lanes$0$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -1868,6 +3457,108 @@ module top$lanes$0$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dyn_q$1
+module top$lanes$0$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$2
+module top$lanes$0$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$3
+module top$lanes$0$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$4
+module top$lanes$0$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$5
+module top$lanes$0$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$6
+module top$lanes$0$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$7
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -1902,6 +3593,125 @@ module top$lanes$0$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$1
+module top$lanes$0$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$10
+module top$lanes$0$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$11
+module top$lanes$0$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$12
+module top$lanes$0$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$13
+module top$lanes$0$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$14
+module top$lanes$0$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$15
+module top$lanes$0$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$16
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -2004,6 +3814,40 @@ module top$lanes$0$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$7
+module top$lanes$0$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$8
+module top$lanes$0$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$9
 module top$lanes$0$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -2038,6 +3882,125 @@ module top$lanes$0$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$1
+module top$lanes$0$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$10
+module top$lanes$0$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$11
+module top$lanes$0$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$12
+module top$lanes$0$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$13
+module top$lanes$0$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$14
+module top$lanes$0$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$15
+module top$lanes$0$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$16
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -2140,6 +4103,40 @@ module top$lanes$0$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$7
+module top$lanes$0$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$8
+module top$lanes$0$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$9
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -2174,6 +4171,125 @@ module top$lanes$0$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$1
+module top$lanes$0$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$10
+module top$lanes$0$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$11
+module top$lanes$0$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$12
+module top$lanes$0$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$13
+module top$lanes$0$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$14
+module top$lanes$0$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$15
+module top$lanes$0$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$16
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -2276,6 +4392,40 @@ module top$lanes$0$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$7
+module top$lanes$0$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$8
+module top$lanes$0$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$9
 module top$lanes$0$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -2310,6 +4460,108 @@ module top$lanes$0$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$sr_q$1
+module top$lanes$0$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$2
+module top$lanes$0$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$3
+module top$lanes$0$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$4
+module top$lanes$0$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$5
+module top$lanes$0$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$6
+module top$lanes$0$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$7
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -2344,6 +4596,125 @@ module top$lanes$0$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$1
+module top$lanes$0$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$10
+module top$lanes$0$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$11
+module top$lanes$0$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$12
+module top$lanes$0$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$13
+module top$lanes$0$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$14
+module top$lanes$0$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$15
+module top$lanes$0$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$16
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -2446,6 +4817,40 @@ module top$lanes$0$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$7
+module top$lanes$0$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$8
+module top$lanes$0$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$9
 module top$lanes$0$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -2480,6 +4885,108 @@ module top$lanes$0$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$1
+module top$lanes$0$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$2
+module top$lanes$0$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$3
+module top$lanes$0$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$4
+module top$lanes$0$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$5
+module top$lanes$0$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$6
+module top$lanes$0$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$7
 module top$lanes$0$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -2514,6 +5021,108 @@ module top$lanes$0$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q$1
+module top$lanes$0$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$2
+module top$lanes$0$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$3
+module top$lanes$0$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$4
+module top$lanes$0$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$5
+module top$lanes$0$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$6
+module top$lanes$0$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$7
 module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -3478,42 +6087,168 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -3538,6 +6273,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -3562,6 +6324,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -3586,6 +6375,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -3610,6 +6426,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -3634,6 +6477,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -3658,6 +6528,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$1$ctl$x_q$0 x_q$0(
@@ -3670,6 +6567,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$1$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$1$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$1$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$1$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$1$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$1$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$1$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -3679,6 +6606,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$1$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$1$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$1$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$1$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$1$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$1$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$1$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -3690,6 +6647,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$1$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$1$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$1$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$1$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$1$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$1$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$1$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -3699,6 +6686,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$1$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$1$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$1$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$1$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$1$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$1$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$1$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -3710,6 +6727,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$1$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$1$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$1$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$1$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$1$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$1$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$1$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -3720,6 +6767,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$1$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$1$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$1$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$1$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$1$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$1$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$1$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -3729,6 +6806,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$1$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$1$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$1$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$1$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$1$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$1$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$1$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -3770,6 +6877,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$1$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$1$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$1$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$1$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$1$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$1$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$1$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$1$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$1$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -3809,6 +6961,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$1$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$1$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$1$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$1$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$1$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$1$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$1$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$1$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$1$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -3850,6 +7047,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$1$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$1$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$1$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$1$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$1$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$1$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$1$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$1$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$1$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -3889,6 +7131,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$1$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$1$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$1$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$1$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$1$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$1$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$1$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$1$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$1$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -3930,6 +7217,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$1$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$1$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$1$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$1$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$1$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$1$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$1$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$1$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$1$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -3970,6 +7302,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$1$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$1$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$1$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$1$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$1$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$1$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$1$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$1$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$1$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -3987,6 +7364,48 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -4035,6 +7454,60 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -4049,13 +7522,55 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -4104,12 +7619,66 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -4147,6 +7716,125 @@ module top$lanes$1$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$1
+module top$lanes$1$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$10
+module top$lanes$1$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$11
+module top$lanes$1$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$12
+module top$lanes$1$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$13
+module top$lanes$1$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$14
+module top$lanes$1$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$15
+module top$lanes$1$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$16
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -4249,6 +7937,40 @@ module top$lanes$1$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$7
+module top$lanes$1$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$8
+module top$lanes$1$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$9
 module top$lanes$1$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -4283,6 +8005,125 @@ module top$lanes$1$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$1
+module top$lanes$1$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$10
+module top$lanes$1$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$11
+module top$lanes$1$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$12
+module top$lanes$1$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$13
+module top$lanes$1$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$14
+module top$lanes$1$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$15
+module top$lanes$1$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$16
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -4385,6 +8226,40 @@ module top$lanes$1$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$7
+module top$lanes$1$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$8
+module top$lanes$1$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$9
 module top$lanes$1$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -4419,6 +8294,108 @@ module top$lanes$1$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxm_q$1
+module top$lanes$1$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$2
+module top$lanes$1$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$3
+module top$lanes$1$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$4
+module top$lanes$1$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$5
+module top$lanes$1$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$6
+module top$lanes$1$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$7
 module top$lanes$1$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -4453,6 +8430,108 @@ module top$lanes$1$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxn_q$1
+module top$lanes$1$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$2
+module top$lanes$1$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$3
+module top$lanes$1$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$4
+module top$lanes$1$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$5
+module top$lanes$1$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$6
+module top$lanes$1$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$7
 module top$lanes$1$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -4487,6 +8566,108 @@ module top$lanes$1$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dym_q$1
+module top$lanes$1$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$2
+module top$lanes$1$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$3
+module top$lanes$1$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$4
+module top$lanes$1$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$5
+module top$lanes$1$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$6
+module top$lanes$1$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$7
 module top$lanes$1$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -4521,6 +8702,108 @@ module top$lanes$1$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dyn_q$1
+module top$lanes$1$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$2
+module top$lanes$1$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$3
+module top$lanes$1$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$4
+module top$lanes$1$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$5
+module top$lanes$1$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$6
+module top$lanes$1$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$7
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -4555,6 +8838,125 @@ module top$lanes$1$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$1
+module top$lanes$1$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$10
+module top$lanes$1$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$11
+module top$lanes$1$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$12
+module top$lanes$1$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$13
+module top$lanes$1$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$14
+module top$lanes$1$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$15
+module top$lanes$1$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$16
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -4657,6 +9059,40 @@ module top$lanes$1$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$7
+module top$lanes$1$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$8
+module top$lanes$1$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$9
 module top$lanes$1$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -4691,6 +9127,125 @@ module top$lanes$1$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$1
+module top$lanes$1$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$10
+module top$lanes$1$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$11
+module top$lanes$1$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$12
+module top$lanes$1$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$13
+module top$lanes$1$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$14
+module top$lanes$1$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$15
+module top$lanes$1$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$16
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4793,6 +9348,40 @@ module top$lanes$1$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$7
+module top$lanes$1$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$8
+module top$lanes$1$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$9
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -4827,6 +9416,125 @@ module top$lanes$1$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$1
+module top$lanes$1$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$10
+module top$lanes$1$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$11
+module top$lanes$1$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$12
+module top$lanes$1$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$13
+module top$lanes$1$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$14
+module top$lanes$1$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$15
+module top$lanes$1$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$16
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4929,6 +9637,40 @@ module top$lanes$1$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$7
+module top$lanes$1$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$8
+module top$lanes$1$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$9
 module top$lanes$1$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -4963,6 +9705,108 @@ module top$lanes$1$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$sr_q$1
+module top$lanes$1$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$2
+module top$lanes$1$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$3
+module top$lanes$1$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$4
+module top$lanes$1$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$5
+module top$lanes$1$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$6
+module top$lanes$1$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$7
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -4997,6 +9841,125 @@ module top$lanes$1$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$1
+module top$lanes$1$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$10
+module top$lanes$1$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$11
+module top$lanes$1$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$12
+module top$lanes$1$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$13
+module top$lanes$1$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$14
+module top$lanes$1$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$15
+module top$lanes$1$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$16
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -5099,6 +10062,40 @@ module top$lanes$1$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$7
+module top$lanes$1$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$8
+module top$lanes$1$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$9
 module top$lanes$1$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -5133,6 +10130,108 @@ module top$lanes$1$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$1
+module top$lanes$1$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$2
+module top$lanes$1$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$3
+module top$lanes$1$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$4
+module top$lanes$1$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$5
+module top$lanes$1$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$6
+module top$lanes$1$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$7
 module top$lanes$1$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -5167,6 +10266,108 @@ module top$lanes$1$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q$1
+module top$lanes$1$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$2
+module top$lanes$1$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$3
+module top$lanes$1$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$4
+module top$lanes$1$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$5
+module top$lanes$1$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$6
+module top$lanes$1$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$7
 module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments

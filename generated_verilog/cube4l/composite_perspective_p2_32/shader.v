@@ -76,6 +76,24 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -85,6 +103,9 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -97,6 +118,21 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -109,12 +145,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -133,6 +193,30 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -154,12 +238,42 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -172,12 +286,15 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -216,6 +333,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .address(lut$address),
         .data(lut$data)
     );
+    top$lanes$0$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$0$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$0$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$0$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$0$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$0$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$0$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -230,6 +377,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$0$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$0$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -251,6 +403,31 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$0$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$0$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$0$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$0$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$0$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$0$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -271,6 +448,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$0$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$0$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -280,6 +462,41 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$0$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$0$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$0$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$0$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$0$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$0$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$0$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$0$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -310,6 +527,46 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$0$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$0$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$0$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$0$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$0$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$0$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$0$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$0$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$0$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -346,17 +603,65 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$0$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$0$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$0$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$0$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$0$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$0$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$0$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$0$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$0$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$0$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$0$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$0$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -377,16 +682,19 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$0$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$0$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$0$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -419,10 +727,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -444,63 +754,110 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -508,6 +865,14 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -515,39 +880,61 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -566,17 +953,17 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -585,7 +972,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -597,7 +984,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -658,6 +1045,125 @@ module top$lanes$0$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$1
+module top$lanes$0$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$2
+module top$lanes$0$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$3
+module top$lanes$0$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$4
+module top$lanes$0$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$5
+module top$lanes$0$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$6
+module top$lanes$0$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$7
+module top$lanes$0$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$8
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -760,9 +1266,27 @@ module top$lanes$0$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$gate_q$3
-module top$lanes$0$shader$lit_b(a,b,y);
+module top$lanes$0$shader$gate_q$4(d,q,clock);
     
     // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$4
+module top$lanes$0$shader$lit_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -772,14 +1296,25 @@ module top$lanes$0$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -787,9 +1322,27 @@ module top$lanes$0$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_b
-module top$lanes$0$shader$lit_g(a,b,y);
+module top$lanes$0$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_b$t
+module top$lanes$0$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -799,14 +1352,25 @@ module top$lanes$0$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -814,9 +1378,27 @@ module top$lanes$0$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_g
-module top$lanes$0$shader$lit_r(a,b,y);
+module top$lanes$0$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_g$t
+module top$lanes$0$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -826,14 +1408,25 @@ module top$lanes$0$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -841,6 +1434,23 @@ module top$lanes$0$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
+module top$lanes$0$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_r$t
 module top$lanes$0$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -979,9 +1589,146 @@ module top$lanes$0$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lut_q$3
-module top$lanes$0$shader$mul_b(a,b,y);
+module top$lanes$0$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$4
+module top$lanes$0$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$5
+module top$lanes$0$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$6
+module top$lanes$0$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$7
+module top$lanes$0$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$8
+module top$lanes$0$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$0
+module top$lanes$0$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$1
+module top$lanes$0$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$2
+module top$lanes$0$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -991,14 +1738,25 @@ module top$lanes$0$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1006,9 +1764,27 @@ module top$lanes$0$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_b
-module top$lanes$0$shader$mul_g(a,b,y);
+module top$lanes$0$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_b$t
+module top$lanes$0$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1018,14 +1794,25 @@ module top$lanes$0$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1033,9 +1820,27 @@ module top$lanes$0$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_g
-module top$lanes$0$shader$mul_r(a,b,y);
+module top$lanes$0$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_g$t
+module top$lanes$0$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1045,14 +1850,25 @@ module top$lanes$0$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1060,6 +1876,74 @@ module top$lanes$0$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_r
+module top$lanes$0$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_r$t
+module top$lanes$0$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$0
+module top$lanes$0$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$1
+module top$lanes$0$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$2
 module top$lanes$0$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1128,6 +2012,23 @@ module top$lanes$0$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$row_q$2
+module top$lanes$0$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$3
 module top$lanes$0$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -1179,6 +2080,23 @@ module top$lanes$0$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$shaded_q$2
+module top$lanes$0$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$specular_q
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -1213,6 +2131,91 @@ module top$lanes$0$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$1
+module top$lanes$0$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$10
+module top$lanes$0$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$11
+module top$lanes$0$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$12
+module top$lanes$0$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$13
+module top$lanes$0$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$14
 module top$lanes$0$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -1298,6 +2301,57 @@ module top$lanes$0$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$6
+module top$lanes$0$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$7
+module top$lanes$0$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$8
+module top$lanes$0$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$9
 module top$lanes$0$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -1332,6 +2386,74 @@ module top$lanes$0$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$1
+module top$lanes$0$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$10
+module top$lanes$0$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$11
+module top$lanes$0$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$12
+module top$lanes$0$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$13
 module top$lanes$0$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -1400,6 +2522,74 @@ module top$lanes$0$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$5
+module top$lanes$0$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$6
+module top$lanes$0$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$7
+module top$lanes$0$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$8
+module top$lanes$0$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$9
 module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -1478,6 +2668,24 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -1487,6 +2695,9 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -1499,6 +2710,21 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -1511,12 +2737,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -1535,6 +2785,30 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -1556,12 +2830,42 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -1574,12 +2878,15 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -1618,6 +2925,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .address(lut$address),
         .data(lut$data)
     );
+    top$lanes$1$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$1$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$1$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$1$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$1$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$1$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$1$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -1632,6 +2969,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$1$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$1$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -1653,6 +2995,31 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$1$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$1$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$1$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$1$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$1$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$1$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -1673,6 +3040,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$1$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$1$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -1682,6 +3054,41 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$1$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$1$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$1$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$1$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$1$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$1$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$1$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$1$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -1712,6 +3119,46 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$1$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$1$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$1$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$1$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$1$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$1$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$1$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$1$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$1$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -1748,17 +3195,65 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$1$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$1$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$1$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$1$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$1$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$1$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$1$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$1$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$1$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$1$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$1$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$1$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -1779,16 +3274,19 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$1$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$1$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$1$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -1821,10 +3319,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -1846,63 +3346,110 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -1910,6 +3457,14 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -1917,39 +3472,61 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -1968,17 +3545,17 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -1987,7 +3564,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -1999,7 +3576,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -2060,6 +3637,125 @@ module top$lanes$1$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$1
+module top$lanes$1$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$2
+module top$lanes$1$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$3
+module top$lanes$1$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$4
+module top$lanes$1$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$5
+module top$lanes$1$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$6
+module top$lanes$1$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$7
+module top$lanes$1$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$8
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -2162,9 +3858,27 @@ module top$lanes$1$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$gate_q$3
-module top$lanes$1$shader$lit_b(a,b,y);
+module top$lanes$1$shader$gate_q$4(d,q,clock);
     
     // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$4
+module top$lanes$1$shader$lit_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2174,14 +3888,25 @@ module top$lanes$1$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2189,9 +3914,27 @@ module top$lanes$1$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_b
-module top$lanes$1$shader$lit_g(a,b,y);
+module top$lanes$1$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_b$t
+module top$lanes$1$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2201,14 +3944,25 @@ module top$lanes$1$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2216,9 +3970,27 @@ module top$lanes$1$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_g
-module top$lanes$1$shader$lit_r(a,b,y);
+module top$lanes$1$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_g$t
+module top$lanes$1$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2228,14 +4000,25 @@ module top$lanes$1$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2243,6 +4026,23 @@ module top$lanes$1$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
+module top$lanes$1$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_r$t
 module top$lanes$1$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -2381,9 +4181,146 @@ module top$lanes$1$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lut_q$3
-module top$lanes$1$shader$mul_b(a,b,y);
+module top$lanes$1$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$4
+module top$lanes$1$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$5
+module top$lanes$1$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$6
+module top$lanes$1$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$7
+module top$lanes$1$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$8
+module top$lanes$1$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$0
+module top$lanes$1$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$1
+module top$lanes$1$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$2
+module top$lanes$1$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2393,14 +4330,25 @@ module top$lanes$1$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2408,9 +4356,27 @@ module top$lanes$1$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_b
-module top$lanes$1$shader$mul_g(a,b,y);
+module top$lanes$1$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_b$t
+module top$lanes$1$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2420,14 +4386,25 @@ module top$lanes$1$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2435,9 +4412,27 @@ module top$lanes$1$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_g
-module top$lanes$1$shader$mul_r(a,b,y);
+module top$lanes$1$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_g$t
+module top$lanes$1$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2447,14 +4442,25 @@ module top$lanes$1$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2462,6 +4468,74 @@ module top$lanes$1$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_r
+module top$lanes$1$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_r$t
+module top$lanes$1$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$0
+module top$lanes$1$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$1
+module top$lanes$1$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$2
 module top$lanes$1$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -2530,6 +4604,23 @@ module top$lanes$1$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$row_q$2
+module top$lanes$1$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$3
 module top$lanes$1$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -2581,6 +4672,23 @@ module top$lanes$1$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$shaded_q$2
+module top$lanes$1$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$specular_q
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -2615,6 +4723,91 @@ module top$lanes$1$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$1
+module top$lanes$1$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$10
+module top$lanes$1$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$11
+module top$lanes$1$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$12
+module top$lanes$1$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$13
+module top$lanes$1$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$14
 module top$lanes$1$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -2700,6 +4893,57 @@ module top$lanes$1$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$6
+module top$lanes$1$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$7
+module top$lanes$1$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$8
+module top$lanes$1$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$9
 module top$lanes$1$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -2734,6 +4978,74 @@ module top$lanes$1$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$1
+module top$lanes$1$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$10
+module top$lanes$1$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$11
+module top$lanes$1$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$12
+module top$lanes$1$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$13
 module top$lanes$1$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -2802,3 +5114,71 @@ module top$lanes$1$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$5
+module top$lanes$1$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$6
+module top$lanes$1$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$7
+module top$lanes$1$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$8
+module top$lanes$1$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$9

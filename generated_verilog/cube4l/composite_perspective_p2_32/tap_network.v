@@ -314,7 +314,7 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -1083,6 +1083,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -1226,6 +1227,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -1265,7 +1267,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h1e5;
+    localparam  longest_last = 16'h1e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1386,7 +1388,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[485:0];
+    reg [31:0] mem[482:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};
@@ -2836,7 +2838,7 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -3605,6 +3607,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -3748,6 +3751,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [31:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -3787,7 +3791,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h1e5;
+    localparam  longest_last = 16'h1e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -3908,7 +3912,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[485:0];
+    reg [31:0] mem[482:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};

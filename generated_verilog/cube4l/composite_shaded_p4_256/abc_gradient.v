@@ -758,6 +758,7 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -901,6 +902,7 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -1901,6 +1903,7 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -2044,6 +2047,7 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -3044,6 +3048,7 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -3187,6 +3192,7 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -4187,6 +4193,7 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin
@@ -4330,6 +4337,7 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[63:0];
     
     always @(posedge read_clock) begin

@@ -1,4 +1,4 @@
-module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
+module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,reset,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
     
     // Module arguments
     input wire  clock;
@@ -13,6 +13,7 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     input wire  [63:0] eye_z;
     input wire  [63:0] beats;
     input wire  start;
+    input wire  reset;
     output reg  busy;
     input wire  load_enable;
     input wire  [7:0] load_module;
@@ -845,6 +846,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
                     end
                 end
             end
+        end
+        if (reset) begin
+            running$d = 1'b0;
         end
         valid_q$d = run_d3$q;
         ns_q$d = ns_d3$q;
@@ -1814,6 +1818,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -2866,6 +2871,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -3918,6 +3924,7 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -4970,6 +4977,7 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -5407,7 +5415,7 @@ module top$cfb$valid_q(d,q,clock);
     end
           
 endmodule // top$cfb$valid_q
-module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
+module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,start,reset,busy,load_enable,load_module,load_address,load_data,valid,n_s,n_beam,n_b,bs,value$0,value$1,value$2,value$3,x$0,x$1,x$2,x$3,y$0,y$1,y$2,y$3,z$0,z$1,z$2,z$3,address$0,address$1,address$2,address$3,pad$0,pad$1,pad$2,pad$3,sr$0,sr$1,sr$2,sr$3,er$0,er$1,er$2,er$3,base_x$0,base_x$1,base_x$2,base_x$3,base_y$0,base_y$1,base_y$2,base_y$3,face$0,face$1,face$2,face$3,at_edge$0,at_edge$1,at_edge$2,at_edge$3,invalid$0,invalid$1,invalid$2,invalid$3,halo$0,halo$1,halo$2,halo$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,dx_neg$0,dx_neg$1,dx_neg$2,dx_neg$3,dx_mag$0,dx_mag$1,dx_mag$2,dx_mag$3,dy_neg$0,dy_neg$1,dy_neg$2,dy_neg$3,dy_mag$0,dy_mag$1,dy_mag$2,dy_mag$3);
     
     // Module arguments
     input wire  clock;
@@ -5422,6 +5430,7 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     input wire  [63:0] eye_z;
     input wire  [63:0] beats;
     input wire  start;
+    input wire  reset;
     output reg  busy;
     input wire  load_enable;
     input wire  [7:0] load_module;
@@ -6254,6 +6263,9 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
                     end
                 end
             end
+        end
+        if (reset) begin
+            running$d = 1'b0;
         end
         valid_q$d = run_d3$q;
         ns_q$d = ns_d3$q;
@@ -7223,6 +7235,7 @@ module top$late$lanes$0$memory(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -8275,6 +8288,7 @@ module top$late$lanes$1$memory(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -9327,6 +9341,7 @@ module top$late$lanes$2$memory(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
@@ -10379,6 +10394,7 @@ module top$late$lanes$3$memory(read_address,read_clock,read_data,write_address,w
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin

@@ -22,22 +22,29 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     localparam  scalar = 1'b0;
     
     // Stub signals
+    reg  ch_r$clock;
     reg  [15:0] ch_r$front;
     reg  [15:0] ch_r$back;
     reg  [15:0] ch_r$front_alpha;
     wire  [15:0] ch_r$result;
+    reg  ch_g$clock;
     reg  [15:0] ch_g$front;
     reg  [15:0] ch_g$back;
     reg  [15:0] ch_g$front_alpha;
     wire  [15:0] ch_g$result;
+    reg  ch_b$clock;
     reg  [15:0] ch_b$front;
     reg  [15:0] ch_b$back;
     reg  [15:0] ch_b$front_alpha;
     wire  [15:0] ch_b$result;
+    reg  ch_a$clock;
     reg  [15:0] ch_a$front;
     reg  [15:0] ch_a$back;
     reg  [15:0] ch_a$front_alpha;
     wire  [15:0] ch_a$result;
+    reg  [31:0] scalar_q$d;
+    wire  [31:0] scalar_q$q;
+    reg  scalar_q$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -53,28 +60,37 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Sub module instances
     top$lanes$0$compositor$ch_r ch_r(
+        .clock(ch_r$clock),
         .front(ch_r$front),
         .back(ch_r$back),
         .front_alpha(ch_r$front_alpha),
         .result(ch_r$result)
     );
     top$lanes$0$compositor$ch_g ch_g(
+        .clock(ch_g$clock),
         .front(ch_g$front),
         .back(ch_g$back),
         .front_alpha(ch_g$front_alpha),
         .result(ch_g$result)
     );
     top$lanes$0$compositor$ch_b ch_b(
+        .clock(ch_b$clock),
         .front(ch_b$front),
         .back(ch_b$back),
         .front_alpha(ch_b$front_alpha),
         .result(ch_b$result)
     );
     top$lanes$0$compositor$ch_a ch_a(
+        .clock(ch_a$clock),
         .front(ch_a$front),
         .back(ch_a$back),
         .front_alpha(ch_a$front_alpha),
         .result(ch_a$result)
+    );
+    top$lanes$0$compositor$scalar_q scalar_q(
+        .d(scalar_q$d),
+        .q(scalar_q$q),
+        .clock(scalar_q$clock)
     );
     top$lanes$0$compositor$reg_r reg_r(
         .d(reg_r$d),
@@ -99,14 +115,20 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Update code
     always @(*) begin
+        scalar_q$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
+        scalar_q$d = scalar_q$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
         reg_a$d = reg_a$q;
+        ch_r$clock = clock;
+        ch_g$clock = clock;
+        ch_b$clock = clock;
+        ch_a$clock = clock;
         if (order['h0]) begin
             ch_r$front = 16'(acc_r);
             ch_g$front = acc_g;
@@ -135,6 +157,21 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             ch_b$front_alpha = new_a;
             ch_a$front_alpha = new_a;
         end
+        if (scalar) begin
+            scalar_q$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    scalar_q$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                scalar_q$d = new_r;
+            end
+        end
+        else begin
+            scalar_q$d = acc_r + new_r;
+        end
+        reg_r$d = scalar_q$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -144,20 +181,6 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             reg_b$d = ch_b$result;
             reg_a$d = ch_a$result;
         end
-        else if (scalar) begin
-            reg_r$d = acc_r;
-            if (order['h1]) begin
-                if (new_valid & (new_r < acc_r)) begin
-                    reg_r$d = new_r;
-                end
-            end
-            else if (new_valid & (new_r > acc_r)) begin
-                reg_r$d = new_r;
-            end
-        end
-        else begin
-            reg_r$d = acc_r + new_r;
-        end
         out_r = reg_r$q;
         out_g = reg_g$q;
         out_b = reg_b$q;
@@ -165,9 +188,10 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     end
     
 endmodule // top$lanes$0$compositor
-module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
+module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -177,26 +201,40 @@ module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$0$compositor$ch_a$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$0$compositor$ch_a$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -205,9 +243,27 @@ module top$lanes$0$compositor$ch_a(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_a
-module top$lanes$0$compositor$ch_a$mul(a,b,y);
+module top$lanes$0$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$front_q
+module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -217,14 +273,25 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_a$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -232,9 +299,27 @@ module top$lanes$0$compositor$ch_a$mul(a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
-module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
+module top$lanes$0$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$mul$t
+module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -244,26 +329,40 @@ module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$0$compositor$ch_b$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$0$compositor$ch_b$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -272,9 +371,27 @@ module top$lanes$0$compositor$ch_b(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_b
-module top$lanes$0$compositor$ch_b$mul(a,b,y);
+module top$lanes$0$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$front_q
+module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -284,14 +401,25 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_b$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -299,9 +427,27 @@ module top$lanes$0$compositor$ch_b$mul(a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
-module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
+module top$lanes$0$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$mul$t
+module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -311,26 +457,40 @@ module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$0$compositor$ch_g$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$0$compositor$ch_g$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -339,9 +499,27 @@ module top$lanes$0$compositor$ch_g(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_g
-module top$lanes$0$compositor$ch_g$mul(a,b,y);
+module top$lanes$0$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$front_q
+module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -351,14 +529,25 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_g$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -366,9 +555,27 @@ module top$lanes$0$compositor$ch_g$mul(a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
-module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
+module top$lanes$0$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$mul$t
+module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -378,26 +585,40 @@ module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$0$compositor$ch_r$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$0$compositor$ch_r$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -406,9 +627,27 @@ module top$lanes$0$compositor$ch_r(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_r
-module top$lanes$0$compositor$ch_r$mul(a,b,y);
+module top$lanes$0$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$front_q
+module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -418,14 +657,25 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$compositor$ch_r$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -433,6 +683,23 @@ module top$lanes$0$compositor$ch_r$mul(a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
+module top$lanes$0$compositor$ch_r$mul$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$mul$t
 module top$lanes$0$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -501,6 +768,23 @@ module top$lanes$0$compositor$reg_r(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$reg_r
+module top$lanes$0$compositor$scalar_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$scalar_q
 module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -525,22 +809,29 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     localparam  scalar = 1'b0;
     
     // Stub signals
+    reg  ch_r$clock;
     reg  [15:0] ch_r$front;
     reg  [15:0] ch_r$back;
     reg  [15:0] ch_r$front_alpha;
     wire  [15:0] ch_r$result;
+    reg  ch_g$clock;
     reg  [15:0] ch_g$front;
     reg  [15:0] ch_g$back;
     reg  [15:0] ch_g$front_alpha;
     wire  [15:0] ch_g$result;
+    reg  ch_b$clock;
     reg  [15:0] ch_b$front;
     reg  [15:0] ch_b$back;
     reg  [15:0] ch_b$front_alpha;
     wire  [15:0] ch_b$result;
+    reg  ch_a$clock;
     reg  [15:0] ch_a$front;
     reg  [15:0] ch_a$back;
     reg  [15:0] ch_a$front_alpha;
     wire  [15:0] ch_a$result;
+    reg  [31:0] scalar_q$d;
+    wire  [31:0] scalar_q$q;
+    reg  scalar_q$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -556,28 +847,37 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Sub module instances
     top$lanes$1$compositor$ch_r ch_r(
+        .clock(ch_r$clock),
         .front(ch_r$front),
         .back(ch_r$back),
         .front_alpha(ch_r$front_alpha),
         .result(ch_r$result)
     );
     top$lanes$1$compositor$ch_g ch_g(
+        .clock(ch_g$clock),
         .front(ch_g$front),
         .back(ch_g$back),
         .front_alpha(ch_g$front_alpha),
         .result(ch_g$result)
     );
     top$lanes$1$compositor$ch_b ch_b(
+        .clock(ch_b$clock),
         .front(ch_b$front),
         .back(ch_b$back),
         .front_alpha(ch_b$front_alpha),
         .result(ch_b$result)
     );
     top$lanes$1$compositor$ch_a ch_a(
+        .clock(ch_a$clock),
         .front(ch_a$front),
         .back(ch_a$back),
         .front_alpha(ch_a$front_alpha),
         .result(ch_a$result)
+    );
+    top$lanes$1$compositor$scalar_q scalar_q(
+        .d(scalar_q$d),
+        .q(scalar_q$q),
+        .clock(scalar_q$clock)
     );
     top$lanes$1$compositor$reg_r reg_r(
         .d(reg_r$d),
@@ -602,14 +902,20 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Update code
     always @(*) begin
+        scalar_q$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
+        scalar_q$d = scalar_q$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
         reg_a$d = reg_a$q;
+        ch_r$clock = clock;
+        ch_g$clock = clock;
+        ch_b$clock = clock;
+        ch_a$clock = clock;
         if (order['h0]) begin
             ch_r$front = 16'(acc_r);
             ch_g$front = acc_g;
@@ -638,6 +944,21 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             ch_b$front_alpha = new_a;
             ch_a$front_alpha = new_a;
         end
+        if (scalar) begin
+            scalar_q$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    scalar_q$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                scalar_q$d = new_r;
+            end
+        end
+        else begin
+            scalar_q$d = acc_r + new_r;
+        end
+        reg_r$d = scalar_q$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -647,20 +968,6 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             reg_b$d = ch_b$result;
             reg_a$d = ch_a$result;
         end
-        else if (scalar) begin
-            reg_r$d = acc_r;
-            if (order['h1]) begin
-                if (new_valid & (new_r < acc_r)) begin
-                    reg_r$d = new_r;
-                end
-            end
-            else if (new_valid & (new_r > acc_r)) begin
-                reg_r$d = new_r;
-            end
-        end
-        else begin
-            reg_r$d = acc_r + new_r;
-        end
         out_r = reg_r$q;
         out_g = reg_g$q;
         out_b = reg_b$q;
@@ -668,9 +975,10 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     end
     
 endmodule // top$lanes$1$compositor
-module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
+module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -680,26 +988,40 @@ module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$1$compositor$ch_a$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$1$compositor$ch_a$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -708,9 +1030,27 @@ module top$lanes$1$compositor$ch_a(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_a
-module top$lanes$1$compositor$ch_a$mul(a,b,y);
+module top$lanes$1$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$front_q
+module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -720,14 +1060,25 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_a$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -735,9 +1086,27 @@ module top$lanes$1$compositor$ch_a$mul(a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
-module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
+module top$lanes$1$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$mul$t
+module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -747,26 +1116,40 @@ module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$1$compositor$ch_b$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$1$compositor$ch_b$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -775,9 +1158,27 @@ module top$lanes$1$compositor$ch_b(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_b
-module top$lanes$1$compositor$ch_b$mul(a,b,y);
+module top$lanes$1$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$front_q
+module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -787,14 +1188,25 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_b$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -802,9 +1214,27 @@ module top$lanes$1$compositor$ch_b$mul(a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
-module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
+module top$lanes$1$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$mul$t
+module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -814,26 +1244,40 @@ module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$1$compositor$ch_g$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$1$compositor$ch_g$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -842,9 +1286,27 @@ module top$lanes$1$compositor$ch_g(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_g
-module top$lanes$1$compositor$ch_g$mul(a,b,y);
+module top$lanes$1$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$front_q
+module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -854,14 +1316,25 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_g$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -869,9 +1342,27 @@ module top$lanes$1$compositor$ch_g$mul(a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
-module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
+module top$lanes$1$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$mul$t
+module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -881,26 +1372,40 @@ module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$1$compositor$ch_r$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$1$compositor$ch_r$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -909,9 +1414,27 @@ module top$lanes$1$compositor$ch_r(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_r
-module top$lanes$1$compositor$ch_r$mul(a,b,y);
+module top$lanes$1$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$front_q
+module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -921,14 +1444,25 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$compositor$ch_r$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -936,6 +1470,23 @@ module top$lanes$1$compositor$ch_r$mul(a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
+module top$lanes$1$compositor$ch_r$mul$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$mul$t
 module top$lanes$1$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -1004,6 +1555,23 @@ module top$lanes$1$compositor$reg_r(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$reg_r
+module top$lanes$1$compositor$scalar_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$scalar_q
 module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -1028,22 +1596,29 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     localparam  scalar = 1'b0;
     
     // Stub signals
+    reg  ch_r$clock;
     reg  [15:0] ch_r$front;
     reg  [15:0] ch_r$back;
     reg  [15:0] ch_r$front_alpha;
     wire  [15:0] ch_r$result;
+    reg  ch_g$clock;
     reg  [15:0] ch_g$front;
     reg  [15:0] ch_g$back;
     reg  [15:0] ch_g$front_alpha;
     wire  [15:0] ch_g$result;
+    reg  ch_b$clock;
     reg  [15:0] ch_b$front;
     reg  [15:0] ch_b$back;
     reg  [15:0] ch_b$front_alpha;
     wire  [15:0] ch_b$result;
+    reg  ch_a$clock;
     reg  [15:0] ch_a$front;
     reg  [15:0] ch_a$back;
     reg  [15:0] ch_a$front_alpha;
     wire  [15:0] ch_a$result;
+    reg  [31:0] scalar_q$d;
+    wire  [31:0] scalar_q$q;
+    reg  scalar_q$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -1059,28 +1634,37 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Sub module instances
     top$lanes$2$compositor$ch_r ch_r(
+        .clock(ch_r$clock),
         .front(ch_r$front),
         .back(ch_r$back),
         .front_alpha(ch_r$front_alpha),
         .result(ch_r$result)
     );
     top$lanes$2$compositor$ch_g ch_g(
+        .clock(ch_g$clock),
         .front(ch_g$front),
         .back(ch_g$back),
         .front_alpha(ch_g$front_alpha),
         .result(ch_g$result)
     );
     top$lanes$2$compositor$ch_b ch_b(
+        .clock(ch_b$clock),
         .front(ch_b$front),
         .back(ch_b$back),
         .front_alpha(ch_b$front_alpha),
         .result(ch_b$result)
     );
     top$lanes$2$compositor$ch_a ch_a(
+        .clock(ch_a$clock),
         .front(ch_a$front),
         .back(ch_a$back),
         .front_alpha(ch_a$front_alpha),
         .result(ch_a$result)
+    );
+    top$lanes$2$compositor$scalar_q scalar_q(
+        .d(scalar_q$d),
+        .q(scalar_q$q),
+        .clock(scalar_q$clock)
     );
     top$lanes$2$compositor$reg_r reg_r(
         .d(reg_r$d),
@@ -1105,14 +1689,20 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Update code
     always @(*) begin
+        scalar_q$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
+        scalar_q$d = scalar_q$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
         reg_a$d = reg_a$q;
+        ch_r$clock = clock;
+        ch_g$clock = clock;
+        ch_b$clock = clock;
+        ch_a$clock = clock;
         if (order['h0]) begin
             ch_r$front = 16'(acc_r);
             ch_g$front = acc_g;
@@ -1141,6 +1731,21 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             ch_b$front_alpha = new_a;
             ch_a$front_alpha = new_a;
         end
+        if (scalar) begin
+            scalar_q$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    scalar_q$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                scalar_q$d = new_r;
+            end
+        end
+        else begin
+            scalar_q$d = acc_r + new_r;
+        end
+        reg_r$d = scalar_q$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -1150,20 +1755,6 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             reg_b$d = ch_b$result;
             reg_a$d = ch_a$result;
         end
-        else if (scalar) begin
-            reg_r$d = acc_r;
-            if (order['h1]) begin
-                if (new_valid & (new_r < acc_r)) begin
-                    reg_r$d = new_r;
-                end
-            end
-            else if (new_valid & (new_r > acc_r)) begin
-                reg_r$d = new_r;
-            end
-        end
-        else begin
-            reg_r$d = acc_r + new_r;
-        end
         out_r = reg_r$q;
         out_g = reg_g$q;
         out_b = reg_b$q;
@@ -1171,9 +1762,10 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     end
     
 endmodule // top$lanes$2$compositor
-module top$lanes$2$compositor$ch_a(front,back,front_alpha,result);
+module top$lanes$2$compositor$ch_a(clock,front,back,front_alpha,result);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1183,26 +1775,40 @@ module top$lanes$2$compositor$ch_a(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$2$compositor$ch_a$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$2$compositor$ch_a$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1211,9 +1817,27 @@ module top$lanes$2$compositor$ch_a(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_a
-module top$lanes$2$compositor$ch_a$mul(a,b,y);
+module top$lanes$2$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_a$front_q
+module top$lanes$2$compositor$ch_a$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1223,14 +1847,25 @@ module top$lanes$2$compositor$ch_a$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$compositor$ch_a$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1238,9 +1873,27 @@ module top$lanes$2$compositor$ch_a$mul(a,b,y);
     end
     
 endmodule // top$lanes$2$compositor$ch_a$mul
-module top$lanes$2$compositor$ch_b(front,back,front_alpha,result);
+module top$lanes$2$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_a$mul$t
+module top$lanes$2$compositor$ch_b(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1250,26 +1903,40 @@ module top$lanes$2$compositor$ch_b(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$2$compositor$ch_b$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$2$compositor$ch_b$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1278,9 +1945,27 @@ module top$lanes$2$compositor$ch_b(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_b
-module top$lanes$2$compositor$ch_b$mul(a,b,y);
+module top$lanes$2$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_b$front_q
+module top$lanes$2$compositor$ch_b$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1290,14 +1975,25 @@ module top$lanes$2$compositor$ch_b$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$compositor$ch_b$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1305,9 +2001,27 @@ module top$lanes$2$compositor$ch_b$mul(a,b,y);
     end
     
 endmodule // top$lanes$2$compositor$ch_b$mul
-module top$lanes$2$compositor$ch_g(front,back,front_alpha,result);
+module top$lanes$2$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_b$mul$t
+module top$lanes$2$compositor$ch_g(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1317,26 +2031,40 @@ module top$lanes$2$compositor$ch_g(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$2$compositor$ch_g$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$2$compositor$ch_g$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1345,9 +2073,27 @@ module top$lanes$2$compositor$ch_g(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_g
-module top$lanes$2$compositor$ch_g$mul(a,b,y);
+module top$lanes$2$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_g$front_q
+module top$lanes$2$compositor$ch_g$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1357,14 +2103,25 @@ module top$lanes$2$compositor$ch_g$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$compositor$ch_g$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1372,9 +2129,27 @@ module top$lanes$2$compositor$ch_g$mul(a,b,y);
     end
     
 endmodule // top$lanes$2$compositor$ch_g$mul
-module top$lanes$2$compositor$ch_r(front,back,front_alpha,result);
+module top$lanes$2$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_g$mul$t
+module top$lanes$2$compositor$ch_r(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1384,26 +2159,40 @@ module top$lanes$2$compositor$ch_r(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$2$compositor$ch_r$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$2$compositor$ch_r$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1412,9 +2201,27 @@ module top$lanes$2$compositor$ch_r(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_r
-module top$lanes$2$compositor$ch_r$mul(a,b,y);
+module top$lanes$2$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_r$front_q
+module top$lanes$2$compositor$ch_r$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1424,14 +2231,25 @@ module top$lanes$2$compositor$ch_r$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$compositor$ch_r$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1439,6 +2257,23 @@ module top$lanes$2$compositor$ch_r$mul(a,b,y);
     end
     
 endmodule // top$lanes$2$compositor$ch_r$mul
+module top$lanes$2$compositor$ch_r$mul$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_r$mul$t
 module top$lanes$2$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -1507,6 +2342,23 @@ module top$lanes$2$compositor$reg_r(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$reg_r
+module top$lanes$2$compositor$scalar_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$scalar_q
 module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -1531,22 +2383,29 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     localparam  scalar = 1'b0;
     
     // Stub signals
+    reg  ch_r$clock;
     reg  [15:0] ch_r$front;
     reg  [15:0] ch_r$back;
     reg  [15:0] ch_r$front_alpha;
     wire  [15:0] ch_r$result;
+    reg  ch_g$clock;
     reg  [15:0] ch_g$front;
     reg  [15:0] ch_g$back;
     reg  [15:0] ch_g$front_alpha;
     wire  [15:0] ch_g$result;
+    reg  ch_b$clock;
     reg  [15:0] ch_b$front;
     reg  [15:0] ch_b$back;
     reg  [15:0] ch_b$front_alpha;
     wire  [15:0] ch_b$result;
+    reg  ch_a$clock;
     reg  [15:0] ch_a$front;
     reg  [15:0] ch_a$back;
     reg  [15:0] ch_a$front_alpha;
     wire  [15:0] ch_a$result;
+    reg  [31:0] scalar_q$d;
+    wire  [31:0] scalar_q$q;
+    reg  scalar_q$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -1562,28 +2421,37 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Sub module instances
     top$lanes$3$compositor$ch_r ch_r(
+        .clock(ch_r$clock),
         .front(ch_r$front),
         .back(ch_r$back),
         .front_alpha(ch_r$front_alpha),
         .result(ch_r$result)
     );
     top$lanes$3$compositor$ch_g ch_g(
+        .clock(ch_g$clock),
         .front(ch_g$front),
         .back(ch_g$back),
         .front_alpha(ch_g$front_alpha),
         .result(ch_g$result)
     );
     top$lanes$3$compositor$ch_b ch_b(
+        .clock(ch_b$clock),
         .front(ch_b$front),
         .back(ch_b$back),
         .front_alpha(ch_b$front_alpha),
         .result(ch_b$result)
     );
     top$lanes$3$compositor$ch_a ch_a(
+        .clock(ch_a$clock),
         .front(ch_a$front),
         .back(ch_a$back),
         .front_alpha(ch_a$front_alpha),
         .result(ch_a$result)
+    );
+    top$lanes$3$compositor$scalar_q scalar_q(
+        .d(scalar_q$d),
+        .q(scalar_q$q),
+        .clock(scalar_q$clock)
     );
     top$lanes$3$compositor$reg_r reg_r(
         .d(reg_r$d),
@@ -1608,14 +2476,20 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     
     // Update code
     always @(*) begin
+        scalar_q$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
+        scalar_q$d = scalar_q$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
         reg_a$d = reg_a$q;
+        ch_r$clock = clock;
+        ch_g$clock = clock;
+        ch_b$clock = clock;
+        ch_a$clock = clock;
         if (order['h0]) begin
             ch_r$front = 16'(acc_r);
             ch_g$front = acc_g;
@@ -1644,6 +2518,21 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             ch_b$front_alpha = new_a;
             ch_a$front_alpha = new_a;
         end
+        if (scalar) begin
+            scalar_q$d = acc_r;
+            if (order['h1]) begin
+                if (new_valid & (new_r < acc_r)) begin
+                    scalar_q$d = new_r;
+                end
+            end
+            else if (new_valid & (new_r > acc_r)) begin
+                scalar_q$d = new_r;
+            end
+        end
+        else begin
+            scalar_q$d = acc_r + new_r;
+        end
+        reg_r$d = scalar_q$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -1653,20 +2542,6 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             reg_b$d = ch_b$result;
             reg_a$d = ch_a$result;
         end
-        else if (scalar) begin
-            reg_r$d = acc_r;
-            if (order['h1]) begin
-                if (new_valid & (new_r < acc_r)) begin
-                    reg_r$d = new_r;
-                end
-            end
-            else if (new_valid & (new_r > acc_r)) begin
-                reg_r$d = new_r;
-            end
-        end
-        else begin
-            reg_r$d = acc_r + new_r;
-        end
         out_r = reg_r$q;
         out_g = reg_g$q;
         out_b = reg_b$q;
@@ -1674,9 +2549,10 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     end
     
 endmodule // top$lanes$3$compositor
-module top$lanes$3$compositor$ch_a(front,back,front_alpha,result);
+module top$lanes$3$compositor$ch_a(clock,front,back,front_alpha,result);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1686,26 +2562,40 @@ module top$lanes$3$compositor$ch_a(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$3$compositor$ch_a$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$3$compositor$ch_a$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1714,9 +2604,27 @@ module top$lanes$3$compositor$ch_a(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_a
-module top$lanes$3$compositor$ch_a$mul(a,b,y);
+module top$lanes$3$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_a$front_q
+module top$lanes$3$compositor$ch_a$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1726,14 +2634,25 @@ module top$lanes$3$compositor$ch_a$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$compositor$ch_a$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1741,9 +2660,27 @@ module top$lanes$3$compositor$ch_a$mul(a,b,y);
     end
     
 endmodule // top$lanes$3$compositor$ch_a$mul
-module top$lanes$3$compositor$ch_b(front,back,front_alpha,result);
+module top$lanes$3$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_a$mul$t
+module top$lanes$3$compositor$ch_b(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1753,26 +2690,40 @@ module top$lanes$3$compositor$ch_b(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$3$compositor$ch_b$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$3$compositor$ch_b$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1781,9 +2732,27 @@ module top$lanes$3$compositor$ch_b(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_b
-module top$lanes$3$compositor$ch_b$mul(a,b,y);
+module top$lanes$3$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_b$front_q
+module top$lanes$3$compositor$ch_b$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1793,14 +2762,25 @@ module top$lanes$3$compositor$ch_b$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$compositor$ch_b$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1808,9 +2788,27 @@ module top$lanes$3$compositor$ch_b$mul(a,b,y);
     end
     
 endmodule // top$lanes$3$compositor$ch_b$mul
-module top$lanes$3$compositor$ch_g(front,back,front_alpha,result);
+module top$lanes$3$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_b$mul$t
+module top$lanes$3$compositor$ch_g(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1820,26 +2818,40 @@ module top$lanes$3$compositor$ch_g(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$3$compositor$ch_g$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$3$compositor$ch_g$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1848,9 +2860,27 @@ module top$lanes$3$compositor$ch_g(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_g
-module top$lanes$3$compositor$ch_g$mul(a,b,y);
+module top$lanes$3$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_g$front_q
+module top$lanes$3$compositor$ch_g$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1860,14 +2890,25 @@ module top$lanes$3$compositor$ch_g$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$compositor$ch_g$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1875,9 +2916,27 @@ module top$lanes$3$compositor$ch_g$mul(a,b,y);
     end
     
 endmodule // top$lanes$3$compositor$ch_g$mul
-module top$lanes$3$compositor$ch_r(front,back,front_alpha,result);
+module top$lanes$3$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_g$mul$t
+module top$lanes$3$compositor$ch_r(clock,front,back,front_alpha,result);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] front;
     input wire  [15:0] back;
     input wire  [15:0] front_alpha;
@@ -1887,26 +2946,40 @@ module top$lanes$3$compositor$ch_r(front,back,front_alpha,result);
     localparam  m = 16'hff;
     
     // Stub signals
+    reg  mul$clock;
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] front_q$d;
+    wire  [15:0] front_q$q;
+    reg  front_q$clock;
     
     // Local signals
     reg  [31:0] sum;
     
     // Sub module instances
     top$lanes$3$compositor$ch_r$mul mul(
+        .clock(mul$clock),
         .a(mul$a),
         .b(mul$b),
         .y(mul$y)
+    );
+    top$lanes$3$compositor$ch_r$front_q front_q(
+        .d(front_q$d),
+        .q(front_q$q),
+        .clock(front_q$clock)
     );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        front_q$clock = clock;
+        front_q$d = front_q$q;
+        mul$clock = clock;
         mul$a = m - front_alpha;
         mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
+        front_q$d = front;
+        sum = 32'(front_q$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1915,9 +2988,27 @@ module top$lanes$3$compositor$ch_r(front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_r
-module top$lanes$3$compositor$ch_r$mul(a,b,y);
+module top$lanes$3$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_r$front_q
+module top$lanes$3$compositor$ch_r$mul(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -1927,14 +3018,25 @@ module top$lanes$3$compositor$ch_r$mul(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$compositor$ch_r$mul$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -1942,6 +3044,23 @@ module top$lanes$3$compositor$ch_r$mul(a,b,y);
     end
     
 endmodule // top$lanes$3$compositor$ch_r$mul
+module top$lanes$3$compositor$ch_r$mul$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_r$mul$t
 module top$lanes$3$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -2010,3 +3129,20 @@ module top$lanes$3$compositor$reg_r(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$reg_r
+module top$lanes$3$compositor$scalar_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$scalar_q

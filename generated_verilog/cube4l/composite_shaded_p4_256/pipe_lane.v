@@ -1,3 +1,20 @@
+module top$flush(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$flush
 module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,t0s0,t0i1,t1s0,t1s1,t1i1,t1i2,t3s0,t3s1,t3i1,t3i2,t5s0,t5s1,t5s2,t5i1,t5i2,t5i3,t6s0,t6i1,t7s0,t7i1,t8s0,t8i1,t8il,res_beat,res_valid,res,px_valid,px_x,px_y,px_face);
     
     // Module arguments
@@ -825,42 +842,168 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -885,6 +1028,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -909,6 +1079,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -933,6 +1130,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -957,6 +1181,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -981,6 +1232,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1005,6 +1283,33 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$0$ctl$x_q$0 x_q$0(
@@ -1017,6 +1322,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$0$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$0$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$0$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$0$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$0$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$0$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$0$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -1026,6 +1361,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$0$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$0$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$0$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$0$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$0$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$0$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$0$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -1037,6 +1402,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$0$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$0$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$0$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$0$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$0$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$0$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$0$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -1046,6 +1441,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$0$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$0$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$0$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$0$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$0$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$0$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$0$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -1057,6 +1482,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$0$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$0$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$0$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$0$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$0$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$0$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$0$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -1067,6 +1522,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$0$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$0$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$0$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$0$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$0$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$0$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$0$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -1076,6 +1561,36 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$0$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$0$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$0$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$0$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$0$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$0$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$0$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -1117,6 +1632,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$0$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$0$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$0$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$0$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$0$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$0$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$0$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$0$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$0$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1156,6 +1716,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$0$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$0$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$0$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$0$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$0$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$0$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$0$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$0$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$0$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1197,6 +1802,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$0$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$0$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$0$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$0$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$0$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$0$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$0$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$0$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$0$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1236,6 +1886,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$0$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$0$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$0$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$0$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$0$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$0$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$0$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$0$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$0$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -1277,6 +1972,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$0$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$0$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$0$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$0$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$0$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$0$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$0$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$0$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$0$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -1317,6 +2057,51 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$0$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$0$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$0$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$0$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$0$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$0$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$0$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$0$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$0$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -1334,6 +2119,48 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -1382,6 +2209,60 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -1396,13 +2277,55 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -1451,12 +2374,66 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -1494,6 +2471,125 @@ module top$lanes$0$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$1
+module top$lanes$0$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$10
+module top$lanes$0$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$11
+module top$lanes$0$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$12
+module top$lanes$0$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$13
+module top$lanes$0$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$14
+module top$lanes$0$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$15
+module top$lanes$0$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$16
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -1596,6 +2692,40 @@ module top$lanes$0$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$7
+module top$lanes$0$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$8
+module top$lanes$0$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$9
 module top$lanes$0$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -1630,6 +2760,125 @@ module top$lanes$0$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$1
+module top$lanes$0$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$10
+module top$lanes$0$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$11
+module top$lanes$0$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$12
+module top$lanes$0$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$13
+module top$lanes$0$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$14
+module top$lanes$0$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$15
+module top$lanes$0$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$16
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -1732,6 +2981,40 @@ module top$lanes$0$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$7
+module top$lanes$0$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$8
+module top$lanes$0$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$9
 module top$lanes$0$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -1766,6 +3049,108 @@ module top$lanes$0$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxm_q$1
+module top$lanes$0$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$2
+module top$lanes$0$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$3
+module top$lanes$0$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$4
+module top$lanes$0$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$5
+module top$lanes$0$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$6
+module top$lanes$0$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$7
 module top$lanes$0$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -1800,6 +3185,108 @@ module top$lanes$0$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxn_q$1
+module top$lanes$0$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$2
+module top$lanes$0$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$3
+module top$lanes$0$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$4
+module top$lanes$0$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$5
+module top$lanes$0$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$6
+module top$lanes$0$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$7
 module top$lanes$0$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -1834,6 +3321,108 @@ module top$lanes$0$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dym_q$1
+module top$lanes$0$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$2
+module top$lanes$0$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$3
+module top$lanes$0$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$4
+module top$lanes$0$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$5
+module top$lanes$0$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$6
+module top$lanes$0$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$7
 module top$lanes$0$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -1868,6 +3457,108 @@ module top$lanes$0$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dyn_q$1
+module top$lanes$0$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$2
+module top$lanes$0$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$3
+module top$lanes$0$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$4
+module top$lanes$0$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$5
+module top$lanes$0$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$6
+module top$lanes$0$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$7
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -1902,6 +3593,125 @@ module top$lanes$0$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$1
+module top$lanes$0$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$10
+module top$lanes$0$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$11
+module top$lanes$0$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$12
+module top$lanes$0$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$13
+module top$lanes$0$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$14
+module top$lanes$0$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$15
+module top$lanes$0$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$16
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -2004,6 +3814,40 @@ module top$lanes$0$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$7
+module top$lanes$0$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$8
+module top$lanes$0$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$9
 module top$lanes$0$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -2038,6 +3882,125 @@ module top$lanes$0$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$1
+module top$lanes$0$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$10
+module top$lanes$0$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$11
+module top$lanes$0$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$12
+module top$lanes$0$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$13
+module top$lanes$0$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$14
+module top$lanes$0$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$15
+module top$lanes$0$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$16
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -2140,6 +4103,40 @@ module top$lanes$0$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$7
+module top$lanes$0$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$8
+module top$lanes$0$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$9
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -2174,6 +4171,125 @@ module top$lanes$0$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$1
+module top$lanes$0$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$10
+module top$lanes$0$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$11
+module top$lanes$0$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$12
+module top$lanes$0$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$13
+module top$lanes$0$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$14
+module top$lanes$0$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$15
+module top$lanes$0$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$16
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -2276,6 +4392,40 @@ module top$lanes$0$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$7
+module top$lanes$0$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$8
+module top$lanes$0$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$9
 module top$lanes$0$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -2310,6 +4460,108 @@ module top$lanes$0$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$sr_q$1
+module top$lanes$0$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$2
+module top$lanes$0$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$3
+module top$lanes$0$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$4
+module top$lanes$0$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$5
+module top$lanes$0$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$6
+module top$lanes$0$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$7
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -2344,6 +4596,125 @@ module top$lanes$0$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$1
+module top$lanes$0$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$10
+module top$lanes$0$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$11
+module top$lanes$0$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$12
+module top$lanes$0$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$13
+module top$lanes$0$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$14
+module top$lanes$0$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$15
+module top$lanes$0$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$16
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -2446,6 +4817,40 @@ module top$lanes$0$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$7
+module top$lanes$0$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$8
+module top$lanes$0$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$9
 module top$lanes$0$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -2480,6 +4885,108 @@ module top$lanes$0$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$1
+module top$lanes$0$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$2
+module top$lanes$0$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$3
+module top$lanes$0$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$4
+module top$lanes$0$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$5
+module top$lanes$0$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$6
+module top$lanes$0$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$7
 module top$lanes$0$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -2514,6 +5021,108 @@ module top$lanes$0$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q$1
+module top$lanes$0$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$2
+module top$lanes$0$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$3
+module top$lanes$0$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$4
+module top$lanes$0$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$5
+module top$lanes$0$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$6
+module top$lanes$0$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$7
 module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -3503,42 +6112,168 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -3563,6 +6298,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -3587,6 +6349,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -3611,6 +6400,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -3635,6 +6451,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -3659,6 +6502,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -3683,6 +6553,33 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$1$ctl$x_q$0 x_q$0(
@@ -3695,6 +6592,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$1$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$1$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$1$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$1$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$1$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$1$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$1$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -3704,6 +6631,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$1$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$1$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$1$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$1$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$1$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$1$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$1$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -3715,6 +6672,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$1$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$1$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$1$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$1$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$1$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$1$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$1$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -3724,6 +6711,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$1$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$1$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$1$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$1$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$1$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$1$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$1$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -3735,6 +6752,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$1$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$1$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$1$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$1$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$1$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$1$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$1$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -3745,6 +6792,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$1$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$1$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$1$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$1$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$1$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$1$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$1$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -3754,6 +6831,36 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$1$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$1$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$1$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$1$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$1$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$1$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$1$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -3795,6 +6902,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$1$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$1$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$1$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$1$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$1$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$1$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$1$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$1$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$1$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -3834,6 +6986,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$1$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$1$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$1$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$1$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$1$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$1$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$1$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$1$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$1$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -3875,6 +7072,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$1$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$1$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$1$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$1$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$1$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$1$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$1$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$1$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$1$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -3914,6 +7156,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$1$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$1$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$1$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$1$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$1$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$1$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$1$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$1$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$1$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -3955,6 +7242,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$1$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$1$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$1$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$1$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$1$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$1$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$1$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$1$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$1$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -3995,6 +7327,51 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$1$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$1$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$1$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$1$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$1$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$1$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$1$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$1$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$1$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4012,6 +7389,48 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -4060,6 +7479,60 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -4074,13 +7547,55 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -4129,12 +7644,66 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -4172,6 +7741,125 @@ module top$lanes$1$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$1
+module top$lanes$1$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$10
+module top$lanes$1$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$11
+module top$lanes$1$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$12
+module top$lanes$1$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$13
+module top$lanes$1$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$14
+module top$lanes$1$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$15
+module top$lanes$1$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$16
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -4274,6 +7962,40 @@ module top$lanes$1$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$7
+module top$lanes$1$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$8
+module top$lanes$1$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$9
 module top$lanes$1$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -4308,6 +8030,125 @@ module top$lanes$1$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$1
+module top$lanes$1$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$10
+module top$lanes$1$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$11
+module top$lanes$1$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$12
+module top$lanes$1$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$13
+module top$lanes$1$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$14
+module top$lanes$1$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$15
+module top$lanes$1$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$16
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -4410,6 +8251,40 @@ module top$lanes$1$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$7
+module top$lanes$1$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$8
+module top$lanes$1$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$9
 module top$lanes$1$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -4444,6 +8319,108 @@ module top$lanes$1$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxm_q$1
+module top$lanes$1$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$2
+module top$lanes$1$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$3
+module top$lanes$1$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$4
+module top$lanes$1$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$5
+module top$lanes$1$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$6
+module top$lanes$1$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$7
 module top$lanes$1$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -4478,6 +8455,108 @@ module top$lanes$1$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxn_q$1
+module top$lanes$1$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$2
+module top$lanes$1$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$3
+module top$lanes$1$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$4
+module top$lanes$1$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$5
+module top$lanes$1$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$6
+module top$lanes$1$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$7
 module top$lanes$1$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -4512,6 +8591,108 @@ module top$lanes$1$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dym_q$1
+module top$lanes$1$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$2
+module top$lanes$1$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$3
+module top$lanes$1$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$4
+module top$lanes$1$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$5
+module top$lanes$1$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$6
+module top$lanes$1$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$7
 module top$lanes$1$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -4546,6 +8727,108 @@ module top$lanes$1$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dyn_q$1
+module top$lanes$1$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$2
+module top$lanes$1$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$3
+module top$lanes$1$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$4
+module top$lanes$1$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$5
+module top$lanes$1$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$6
+module top$lanes$1$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$7
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -4580,6 +8863,125 @@ module top$lanes$1$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$1
+module top$lanes$1$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$10
+module top$lanes$1$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$11
+module top$lanes$1$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$12
+module top$lanes$1$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$13
+module top$lanes$1$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$14
+module top$lanes$1$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$15
+module top$lanes$1$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$16
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -4682,6 +9084,40 @@ module top$lanes$1$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$7
+module top$lanes$1$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$8
+module top$lanes$1$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$9
 module top$lanes$1$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -4716,6 +9152,125 @@ module top$lanes$1$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$1
+module top$lanes$1$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$10
+module top$lanes$1$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$11
+module top$lanes$1$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$12
+module top$lanes$1$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$13
+module top$lanes$1$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$14
+module top$lanes$1$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$15
+module top$lanes$1$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$16
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4818,6 +9373,40 @@ module top$lanes$1$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$7
+module top$lanes$1$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$8
+module top$lanes$1$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$9
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -4852,6 +9441,125 @@ module top$lanes$1$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$1
+module top$lanes$1$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$10
+module top$lanes$1$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$11
+module top$lanes$1$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$12
+module top$lanes$1$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$13
+module top$lanes$1$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$14
+module top$lanes$1$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$15
+module top$lanes$1$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$16
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4954,6 +9662,40 @@ module top$lanes$1$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$7
+module top$lanes$1$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$8
+module top$lanes$1$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$9
 module top$lanes$1$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -4988,6 +9730,108 @@ module top$lanes$1$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$sr_q$1
+module top$lanes$1$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$2
+module top$lanes$1$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$3
+module top$lanes$1$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$4
+module top$lanes$1$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$5
+module top$lanes$1$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$6
+module top$lanes$1$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$7
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -5022,6 +9866,125 @@ module top$lanes$1$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$1
+module top$lanes$1$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$10
+module top$lanes$1$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$11
+module top$lanes$1$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$12
+module top$lanes$1$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$13
+module top$lanes$1$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$14
+module top$lanes$1$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$15
+module top$lanes$1$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$16
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -5124,6 +10087,40 @@ module top$lanes$1$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$7
+module top$lanes$1$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$8
+module top$lanes$1$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$9
 module top$lanes$1$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -5158,6 +10155,108 @@ module top$lanes$1$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$1
+module top$lanes$1$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$2
+module top$lanes$1$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$3
+module top$lanes$1$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$4
+module top$lanes$1$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$5
+module top$lanes$1$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$6
+module top$lanes$1$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$7
 module top$lanes$1$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -5192,6 +10291,108 @@ module top$lanes$1$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q$1
+module top$lanes$1$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$2
+module top$lanes$1$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$3
+module top$lanes$1$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$4
+module top$lanes$1$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$5
+module top$lanes$1$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$6
+module top$lanes$1$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$7
 module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -6181,42 +11382,168 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -6241,6 +11568,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6265,6 +11619,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6289,6 +11670,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6313,6 +11721,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6337,6 +11772,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -6361,6 +11823,33 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$2$ctl$x_q$0 x_q$0(
@@ -6373,6 +11862,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$2$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$2$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$2$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$2$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$2$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$2$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$2$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -6382,6 +11901,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$2$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$2$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$2$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$2$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$2$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$2$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$2$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -6393,6 +11942,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$2$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$2$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$2$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$2$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$2$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$2$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$2$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -6402,6 +11981,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$2$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$2$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$2$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$2$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$2$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$2$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$2$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -6413,6 +12022,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$2$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$2$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$2$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$2$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$2$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$2$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$2$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -6423,6 +12062,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$2$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$2$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$2$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$2$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$2$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$2$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$2$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -6432,6 +12101,36 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$2$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$2$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$2$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$2$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$2$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$2$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$2$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -6473,6 +12172,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$2$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$2$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$2$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$2$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$2$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$2$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$2$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$2$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$2$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$2$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -6512,6 +12256,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$2$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$2$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$2$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$2$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$2$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$2$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$2$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$2$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$2$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$2$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -6553,6 +12342,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$2$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$2$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$2$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$2$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$2$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$2$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$2$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$2$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$2$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$2$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -6592,6 +12426,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$2$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$2$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$2$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$2$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$2$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$2$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$2$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$2$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$2$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$2$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -6633,6 +12512,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$2$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$2$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$2$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$2$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$2$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$2$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$2$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$2$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$2$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$2$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -6673,6 +12597,51 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$2$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$2$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$2$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$2$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$2$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$2$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$2$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$2$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$2$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -6690,6 +12659,48 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -6738,6 +12749,60 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -6752,13 +12817,55 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -6807,12 +12914,66 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$2$ctl
@@ -6850,6 +13011,125 @@ module top$lanes$2$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$1
+module top$lanes$2$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$10
+module top$lanes$2$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$11
+module top$lanes$2$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$12
+module top$lanes$2$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$13
+module top$lanes$2$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$14
+module top$lanes$2$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$15
+module top$lanes$2$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$16
 module top$lanes$2$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -6952,6 +13232,40 @@ module top$lanes$2$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$7
+module top$lanes$2$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$8
+module top$lanes$2$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$9
 module top$lanes$2$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -6986,6 +13300,125 @@ module top$lanes$2$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$1
+module top$lanes$2$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$10
+module top$lanes$2$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$11
+module top$lanes$2$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$12
+module top$lanes$2$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$13
+module top$lanes$2$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$14
+module top$lanes$2$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$15
+module top$lanes$2$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$16
 module top$lanes$2$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -7088,6 +13521,40 @@ module top$lanes$2$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$7
+module top$lanes$2$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$8
+module top$lanes$2$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$9
 module top$lanes$2$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -7122,6 +13589,108 @@ module top$lanes$2$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dxm_q$1
+module top$lanes$2$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$2
+module top$lanes$2$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$3
+module top$lanes$2$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$4
+module top$lanes$2$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$5
+module top$lanes$2$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$6
+module top$lanes$2$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$7
 module top$lanes$2$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -7156,6 +13725,108 @@ module top$lanes$2$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dxn_q$1
+module top$lanes$2$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$2
+module top$lanes$2$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$3
+module top$lanes$2$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$4
+module top$lanes$2$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$5
+module top$lanes$2$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$6
+module top$lanes$2$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$7
 module top$lanes$2$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -7190,6 +13861,108 @@ module top$lanes$2$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dym_q$1
+module top$lanes$2$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$2
+module top$lanes$2$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$3
+module top$lanes$2$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$4
+module top$lanes$2$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$5
+module top$lanes$2$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$6
+module top$lanes$2$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$7
 module top$lanes$2$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -7224,6 +13997,108 @@ module top$lanes$2$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dyn_q$1
+module top$lanes$2$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$2
+module top$lanes$2$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$3
+module top$lanes$2$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$4
+module top$lanes$2$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$5
+module top$lanes$2$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$6
+module top$lanes$2$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$7
 module top$lanes$2$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -7258,6 +14133,125 @@ module top$lanes$2$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$1
+module top$lanes$2$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$10
+module top$lanes$2$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$11
+module top$lanes$2$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$12
+module top$lanes$2$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$13
+module top$lanes$2$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$14
+module top$lanes$2$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$15
+module top$lanes$2$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$16
 module top$lanes$2$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -7360,6 +14354,40 @@ module top$lanes$2$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$7
+module top$lanes$2$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$8
+module top$lanes$2$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$9
 module top$lanes$2$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -7394,6 +14422,125 @@ module top$lanes$2$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$1
+module top$lanes$2$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$10
+module top$lanes$2$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$11
+module top$lanes$2$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$12
+module top$lanes$2$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$13
+module top$lanes$2$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$14
+module top$lanes$2$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$15
+module top$lanes$2$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$16
 module top$lanes$2$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -7496,6 +14643,40 @@ module top$lanes$2$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$7
+module top$lanes$2$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$8
+module top$lanes$2$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$9
 module top$lanes$2$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -7530,6 +14711,125 @@ module top$lanes$2$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$1
+module top$lanes$2$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$10
+module top$lanes$2$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$11
+module top$lanes$2$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$12
+module top$lanes$2$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$13
+module top$lanes$2$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$14
+module top$lanes$2$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$15
+module top$lanes$2$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$16
 module top$lanes$2$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -7632,6 +14932,40 @@ module top$lanes$2$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$7
+module top$lanes$2$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$8
+module top$lanes$2$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$9
 module top$lanes$2$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -7666,6 +15000,108 @@ module top$lanes$2$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$sr_q$1
+module top$lanes$2$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$2
+module top$lanes$2$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$3
+module top$lanes$2$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$4
+module top$lanes$2$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$5
+module top$lanes$2$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$6
+module top$lanes$2$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$7
 module top$lanes$2$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -7700,6 +15136,125 @@ module top$lanes$2$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$1
+module top$lanes$2$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$10
+module top$lanes$2$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$11
+module top$lanes$2$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$12
+module top$lanes$2$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$13
+module top$lanes$2$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$14
+module top$lanes$2$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$15
+module top$lanes$2$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$16
 module top$lanes$2$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -7802,6 +15357,40 @@ module top$lanes$2$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$7
+module top$lanes$2$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$8
+module top$lanes$2$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$9
 module top$lanes$2$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -7836,6 +15425,108 @@ module top$lanes$2$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$x_q$1
+module top$lanes$2$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$2
+module top$lanes$2$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$3
+module top$lanes$2$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$4
+module top$lanes$2$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$5
+module top$lanes$2$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$6
+module top$lanes$2$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$7
 module top$lanes$2$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -7870,6 +15561,108 @@ module top$lanes$2$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$y_q$1
+module top$lanes$2$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$2
+module top$lanes$2$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$3
+module top$lanes$2$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$4
+module top$lanes$2$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$5
+module top$lanes$2$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$6
+module top$lanes$2$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$7
 module top$lanes$2$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -8859,42 +16652,168 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$1$d;
     wire  [15:0] x_q$1$q;
     reg  x_q$1$clock;
+    reg  [15:0] x_q$2$d;
+    wire  [15:0] x_q$2$q;
+    reg  x_q$2$clock;
+    reg  [15:0] x_q$3$d;
+    wire  [15:0] x_q$3$q;
+    reg  x_q$3$clock;
+    reg  [15:0] x_q$4$d;
+    wire  [15:0] x_q$4$q;
+    reg  x_q$4$clock;
+    reg  [15:0] x_q$5$d;
+    wire  [15:0] x_q$5$q;
+    reg  x_q$5$clock;
+    reg  [15:0] x_q$6$d;
+    wire  [15:0] x_q$6$q;
+    reg  x_q$6$clock;
+    reg  [15:0] x_q$7$d;
+    wire  [15:0] x_q$7$q;
+    reg  x_q$7$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
     reg  [15:0] y_q$1$d;
     wire  [15:0] y_q$1$q;
     reg  y_q$1$clock;
+    reg  [15:0] y_q$2$d;
+    wire  [15:0] y_q$2$q;
+    reg  y_q$2$clock;
+    reg  [15:0] y_q$3$d;
+    wire  [15:0] y_q$3$q;
+    reg  y_q$3$clock;
+    reg  [15:0] y_q$4$d;
+    wire  [15:0] y_q$4$q;
+    reg  y_q$4$clock;
+    reg  [15:0] y_q$5$d;
+    wire  [15:0] y_q$5$q;
+    reg  y_q$5$clock;
+    reg  [15:0] y_q$6$d;
+    wire  [15:0] y_q$6$q;
+    reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
     reg  sr_q$1$d;
     wire  sr_q$1$q;
     reg  sr_q$1$clock;
+    reg  sr_q$2$d;
+    wire  sr_q$2$q;
+    reg  sr_q$2$clock;
+    reg  sr_q$3$d;
+    wire  sr_q$3$q;
+    reg  sr_q$3$clock;
+    reg  sr_q$4$d;
+    wire  sr_q$4$q;
+    reg  sr_q$4$clock;
+    reg  sr_q$5$d;
+    wire  sr_q$5$q;
+    reg  sr_q$5$clock;
+    reg  sr_q$6$d;
+    wire  sr_q$6$q;
+    reg  sr_q$6$clock;
+    reg  sr_q$7$d;
+    wire  sr_q$7$q;
+    reg  sr_q$7$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
     reg  dxn_q$1$d;
     wire  dxn_q$1$q;
     reg  dxn_q$1$clock;
+    reg  dxn_q$2$d;
+    wire  dxn_q$2$q;
+    reg  dxn_q$2$clock;
+    reg  dxn_q$3$d;
+    wire  dxn_q$3$q;
+    reg  dxn_q$3$clock;
+    reg  dxn_q$4$d;
+    wire  dxn_q$4$q;
+    reg  dxn_q$4$clock;
+    reg  dxn_q$5$d;
+    wire  dxn_q$5$q;
+    reg  dxn_q$5$clock;
+    reg  dxn_q$6$d;
+    wire  dxn_q$6$q;
+    reg  dxn_q$6$clock;
+    reg  dxn_q$7$d;
+    wire  dxn_q$7$q;
+    reg  dxn_q$7$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
     reg  [15:0] dxm_q$1$d;
     wire  [15:0] dxm_q$1$q;
     reg  dxm_q$1$clock;
+    reg  [15:0] dxm_q$2$d;
+    wire  [15:0] dxm_q$2$q;
+    reg  dxm_q$2$clock;
+    reg  [15:0] dxm_q$3$d;
+    wire  [15:0] dxm_q$3$q;
+    reg  dxm_q$3$clock;
+    reg  [15:0] dxm_q$4$d;
+    wire  [15:0] dxm_q$4$q;
+    reg  dxm_q$4$clock;
+    reg  [15:0] dxm_q$5$d;
+    wire  [15:0] dxm_q$5$q;
+    reg  dxm_q$5$clock;
+    reg  [15:0] dxm_q$6$d;
+    wire  [15:0] dxm_q$6$q;
+    reg  dxm_q$6$clock;
+    reg  [15:0] dxm_q$7$d;
+    wire  [15:0] dxm_q$7$q;
+    reg  dxm_q$7$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
     reg  dyn_q$1$d;
     wire  dyn_q$1$q;
     reg  dyn_q$1$clock;
+    reg  dyn_q$2$d;
+    wire  dyn_q$2$q;
+    reg  dyn_q$2$clock;
+    reg  dyn_q$3$d;
+    wire  dyn_q$3$q;
+    reg  dyn_q$3$clock;
+    reg  dyn_q$4$d;
+    wire  dyn_q$4$q;
+    reg  dyn_q$4$clock;
+    reg  dyn_q$5$d;
+    wire  dyn_q$5$q;
+    reg  dyn_q$5$clock;
+    reg  dyn_q$6$d;
+    wire  dyn_q$6$q;
+    reg  dyn_q$6$clock;
+    reg  dyn_q$7$d;
+    wire  dyn_q$7$q;
+    reg  dyn_q$7$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
     reg  [15:0] dym_q$1$d;
     wire  [15:0] dym_q$1$q;
     reg  dym_q$1$clock;
+    reg  [15:0] dym_q$2$d;
+    wire  [15:0] dym_q$2$q;
+    reg  dym_q$2$clock;
+    reg  [15:0] dym_q$3$d;
+    wire  [15:0] dym_q$3$q;
+    reg  dym_q$3$clock;
+    reg  [15:0] dym_q$4$d;
+    wire  [15:0] dym_q$4$q;
+    reg  dym_q$4$clock;
+    reg  [15:0] dym_q$5$d;
+    wire  [15:0] dym_q$5$q;
+    reg  dym_q$5$clock;
+    reg  [15:0] dym_q$6$d;
+    wire  [15:0] dym_q$6$q;
+    reg  dym_q$6$clock;
+    reg  [15:0] dym_q$7$d;
+    wire  [15:0] dym_q$7$q;
+    reg  dym_q$7$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -8919,6 +16838,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$7$d;
     wire  v_q$7$q;
     reg  v_q$7$clock;
+    reg  v_q$8$d;
+    wire  v_q$8$q;
+    reg  v_q$8$clock;
+    reg  v_q$9$d;
+    wire  v_q$9$q;
+    reg  v_q$9$clock;
+    reg  v_q$10$d;
+    wire  v_q$10$q;
+    reg  v_q$10$clock;
+    reg  v_q$11$d;
+    wire  v_q$11$q;
+    reg  v_q$11$clock;
+    reg  v_q$12$d;
+    wire  v_q$12$q;
+    reg  v_q$12$clock;
+    reg  v_q$13$d;
+    wire  v_q$13$q;
+    reg  v_q$13$clock;
+    reg  v_q$14$d;
+    wire  v_q$14$q;
+    reg  v_q$14$clock;
+    reg  v_q$15$d;
+    wire  v_q$15$q;
+    reg  v_q$15$clock;
+    reg  v_q$16$d;
+    wire  v_q$16$q;
+    reg  v_q$16$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -8943,6 +16889,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$7$d;
     wire  er_q$7$q;
     reg  er_q$7$clock;
+    reg  er_q$8$d;
+    wire  er_q$8$q;
+    reg  er_q$8$clock;
+    reg  er_q$9$d;
+    wire  er_q$9$q;
+    reg  er_q$9$clock;
+    reg  er_q$10$d;
+    wire  er_q$10$q;
+    reg  er_q$10$clock;
+    reg  er_q$11$d;
+    wire  er_q$11$q;
+    reg  er_q$11$clock;
+    reg  er_q$12$d;
+    wire  er_q$12$q;
+    reg  er_q$12$clock;
+    reg  er_q$13$d;
+    wire  er_q$13$q;
+    reg  er_q$13$clock;
+    reg  er_q$14$d;
+    wire  er_q$14$q;
+    reg  er_q$14$clock;
+    reg  er_q$15$d;
+    wire  er_q$15$q;
+    reg  er_q$15$clock;
+    reg  er_q$16$d;
+    wire  er_q$16$q;
+    reg  er_q$16$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -8967,6 +16940,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$7$d;
     wire  pad_q$7$q;
     reg  pad_q$7$clock;
+    reg  pad_q$8$d;
+    wire  pad_q$8$q;
+    reg  pad_q$8$clock;
+    reg  pad_q$9$d;
+    wire  pad_q$9$q;
+    reg  pad_q$9$clock;
+    reg  pad_q$10$d;
+    wire  pad_q$10$q;
+    reg  pad_q$10$clock;
+    reg  pad_q$11$d;
+    wire  pad_q$11$q;
+    reg  pad_q$11$clock;
+    reg  pad_q$12$d;
+    wire  pad_q$12$q;
+    reg  pad_q$12$clock;
+    reg  pad_q$13$d;
+    wire  pad_q$13$q;
+    reg  pad_q$13$clock;
+    reg  pad_q$14$d;
+    wire  pad_q$14$q;
+    reg  pad_q$14$clock;
+    reg  pad_q$15$d;
+    wire  pad_q$15$q;
+    reg  pad_q$15$clock;
+    reg  pad_q$16$d;
+    wire  pad_q$16$q;
+    reg  pad_q$16$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -8991,6 +16991,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$7$d;
     wire  [15:0] bx_q$7$q;
     reg  bx_q$7$clock;
+    reg  [15:0] bx_q$8$d;
+    wire  [15:0] bx_q$8$q;
+    reg  bx_q$8$clock;
+    reg  [15:0] bx_q$9$d;
+    wire  [15:0] bx_q$9$q;
+    reg  bx_q$9$clock;
+    reg  [15:0] bx_q$10$d;
+    wire  [15:0] bx_q$10$q;
+    reg  bx_q$10$clock;
+    reg  [15:0] bx_q$11$d;
+    wire  [15:0] bx_q$11$q;
+    reg  bx_q$11$clock;
+    reg  [15:0] bx_q$12$d;
+    wire  [15:0] bx_q$12$q;
+    reg  bx_q$12$clock;
+    reg  [15:0] bx_q$13$d;
+    wire  [15:0] bx_q$13$q;
+    reg  bx_q$13$clock;
+    reg  [15:0] bx_q$14$d;
+    wire  [15:0] bx_q$14$q;
+    reg  bx_q$14$clock;
+    reg  [15:0] bx_q$15$d;
+    wire  [15:0] bx_q$15$q;
+    reg  bx_q$15$clock;
+    reg  [15:0] bx_q$16$d;
+    wire  [15:0] bx_q$16$q;
+    reg  bx_q$16$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -9015,6 +17042,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$7$d;
     wire  [15:0] by_q$7$q;
     reg  by_q$7$clock;
+    reg  [15:0] by_q$8$d;
+    wire  [15:0] by_q$8$q;
+    reg  by_q$8$clock;
+    reg  [15:0] by_q$9$d;
+    wire  [15:0] by_q$9$q;
+    reg  by_q$9$clock;
+    reg  [15:0] by_q$10$d;
+    wire  [15:0] by_q$10$q;
+    reg  by_q$10$clock;
+    reg  [15:0] by_q$11$d;
+    wire  [15:0] by_q$11$q;
+    reg  by_q$11$clock;
+    reg  [15:0] by_q$12$d;
+    wire  [15:0] by_q$12$q;
+    reg  by_q$12$clock;
+    reg  [15:0] by_q$13$d;
+    wire  [15:0] by_q$13$q;
+    reg  by_q$13$clock;
+    reg  [15:0] by_q$14$d;
+    wire  [15:0] by_q$14$q;
+    reg  by_q$14$clock;
+    reg  [15:0] by_q$15$d;
+    wire  [15:0] by_q$15$q;
+    reg  by_q$15$clock;
+    reg  [15:0] by_q$16$d;
+    wire  [15:0] by_q$16$q;
+    reg  by_q$16$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -9039,6 +17093,33 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$7$d;
     wire  [2:0] face_q$7$q;
     reg  face_q$7$clock;
+    reg  [2:0] face_q$8$d;
+    wire  [2:0] face_q$8$q;
+    reg  face_q$8$clock;
+    reg  [2:0] face_q$9$d;
+    wire  [2:0] face_q$9$q;
+    reg  face_q$9$clock;
+    reg  [2:0] face_q$10$d;
+    wire  [2:0] face_q$10$q;
+    reg  face_q$10$clock;
+    reg  [2:0] face_q$11$d;
+    wire  [2:0] face_q$11$q;
+    reg  face_q$11$clock;
+    reg  [2:0] face_q$12$d;
+    wire  [2:0] face_q$12$q;
+    reg  face_q$12$clock;
+    reg  [2:0] face_q$13$d;
+    wire  [2:0] face_q$13$q;
+    reg  face_q$13$clock;
+    reg  [2:0] face_q$14$d;
+    wire  [2:0] face_q$14$q;
+    reg  face_q$14$clock;
+    reg  [2:0] face_q$15$d;
+    wire  [2:0] face_q$15$q;
+    reg  face_q$15$clock;
+    reg  [2:0] face_q$16$d;
+    wire  [2:0] face_q$16$q;
+    reg  face_q$16$clock;
     
     // Sub module instances
     top$lanes$3$ctl$x_q$0 x_q$0(
@@ -9051,6 +17132,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$1$q),
         .clock(x_q$1$clock)
     );
+    top$lanes$3$ctl$x_q$2 x_q$2(
+        .d(x_q$2$d),
+        .q(x_q$2$q),
+        .clock(x_q$2$clock)
+    );
+    top$lanes$3$ctl$x_q$3 x_q$3(
+        .d(x_q$3$d),
+        .q(x_q$3$q),
+        .clock(x_q$3$clock)
+    );
+    top$lanes$3$ctl$x_q$4 x_q$4(
+        .d(x_q$4$d),
+        .q(x_q$4$q),
+        .clock(x_q$4$clock)
+    );
+    top$lanes$3$ctl$x_q$5 x_q$5(
+        .d(x_q$5$d),
+        .q(x_q$5$q),
+        .clock(x_q$5$clock)
+    );
+    top$lanes$3$ctl$x_q$6 x_q$6(
+        .d(x_q$6$d),
+        .q(x_q$6$q),
+        .clock(x_q$6$clock)
+    );
+    top$lanes$3$ctl$x_q$7 x_q$7(
+        .d(x_q$7$d),
+        .q(x_q$7$q),
+        .clock(x_q$7$clock)
+    );
     top$lanes$3$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -9060,6 +17171,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$1$d),
         .q(y_q$1$q),
         .clock(y_q$1$clock)
+    );
+    top$lanes$3$ctl$y_q$2 y_q$2(
+        .d(y_q$2$d),
+        .q(y_q$2$q),
+        .clock(y_q$2$clock)
+    );
+    top$lanes$3$ctl$y_q$3 y_q$3(
+        .d(y_q$3$d),
+        .q(y_q$3$q),
+        .clock(y_q$3$clock)
+    );
+    top$lanes$3$ctl$y_q$4 y_q$4(
+        .d(y_q$4$d),
+        .q(y_q$4$q),
+        .clock(y_q$4$clock)
+    );
+    top$lanes$3$ctl$y_q$5 y_q$5(
+        .d(y_q$5$d),
+        .q(y_q$5$q),
+        .clock(y_q$5$clock)
+    );
+    top$lanes$3$ctl$y_q$6 y_q$6(
+        .d(y_q$6$d),
+        .q(y_q$6$q),
+        .clock(y_q$6$clock)
+    );
+    top$lanes$3$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
     );
     top$lanes$3$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -9071,6 +17212,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$1$q),
         .clock(sr_q$1$clock)
     );
+    top$lanes$3$ctl$sr_q$2 sr_q$2(
+        .d(sr_q$2$d),
+        .q(sr_q$2$q),
+        .clock(sr_q$2$clock)
+    );
+    top$lanes$3$ctl$sr_q$3 sr_q$3(
+        .d(sr_q$3$d),
+        .q(sr_q$3$q),
+        .clock(sr_q$3$clock)
+    );
+    top$lanes$3$ctl$sr_q$4 sr_q$4(
+        .d(sr_q$4$d),
+        .q(sr_q$4$q),
+        .clock(sr_q$4$clock)
+    );
+    top$lanes$3$ctl$sr_q$5 sr_q$5(
+        .d(sr_q$5$d),
+        .q(sr_q$5$q),
+        .clock(sr_q$5$clock)
+    );
+    top$lanes$3$ctl$sr_q$6 sr_q$6(
+        .d(sr_q$6$d),
+        .q(sr_q$6$q),
+        .clock(sr_q$6$clock)
+    );
+    top$lanes$3$ctl$sr_q$7 sr_q$7(
+        .d(sr_q$7$d),
+        .q(sr_q$7$q),
+        .clock(sr_q$7$clock)
+    );
     top$lanes$3$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -9080,6 +17251,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$1$d),
         .q(dxn_q$1$q),
         .clock(dxn_q$1$clock)
+    );
+    top$lanes$3$ctl$dxn_q$2 dxn_q$2(
+        .d(dxn_q$2$d),
+        .q(dxn_q$2$q),
+        .clock(dxn_q$2$clock)
+    );
+    top$lanes$3$ctl$dxn_q$3 dxn_q$3(
+        .d(dxn_q$3$d),
+        .q(dxn_q$3$q),
+        .clock(dxn_q$3$clock)
+    );
+    top$lanes$3$ctl$dxn_q$4 dxn_q$4(
+        .d(dxn_q$4$d),
+        .q(dxn_q$4$q),
+        .clock(dxn_q$4$clock)
+    );
+    top$lanes$3$ctl$dxn_q$5 dxn_q$5(
+        .d(dxn_q$5$d),
+        .q(dxn_q$5$q),
+        .clock(dxn_q$5$clock)
+    );
+    top$lanes$3$ctl$dxn_q$6 dxn_q$6(
+        .d(dxn_q$6$d),
+        .q(dxn_q$6$q),
+        .clock(dxn_q$6$clock)
+    );
+    top$lanes$3$ctl$dxn_q$7 dxn_q$7(
+        .d(dxn_q$7$d),
+        .q(dxn_q$7$q),
+        .clock(dxn_q$7$clock)
     );
     top$lanes$3$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -9091,6 +17292,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$1$q),
         .clock(dxm_q$1$clock)
     );
+    top$lanes$3$ctl$dxm_q$2 dxm_q$2(
+        .d(dxm_q$2$d),
+        .q(dxm_q$2$q),
+        .clock(dxm_q$2$clock)
+    );
+    top$lanes$3$ctl$dxm_q$3 dxm_q$3(
+        .d(dxm_q$3$d),
+        .q(dxm_q$3$q),
+        .clock(dxm_q$3$clock)
+    );
+    top$lanes$3$ctl$dxm_q$4 dxm_q$4(
+        .d(dxm_q$4$d),
+        .q(dxm_q$4$q),
+        .clock(dxm_q$4$clock)
+    );
+    top$lanes$3$ctl$dxm_q$5 dxm_q$5(
+        .d(dxm_q$5$d),
+        .q(dxm_q$5$q),
+        .clock(dxm_q$5$clock)
+    );
+    top$lanes$3$ctl$dxm_q$6 dxm_q$6(
+        .d(dxm_q$6$d),
+        .q(dxm_q$6$q),
+        .clock(dxm_q$6$clock)
+    );
+    top$lanes$3$ctl$dxm_q$7 dxm_q$7(
+        .d(dxm_q$7$d),
+        .q(dxm_q$7$q),
+        .clock(dxm_q$7$clock)
+    );
     top$lanes$3$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -9101,6 +17332,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$1$q),
         .clock(dyn_q$1$clock)
     );
+    top$lanes$3$ctl$dyn_q$2 dyn_q$2(
+        .d(dyn_q$2$d),
+        .q(dyn_q$2$q),
+        .clock(dyn_q$2$clock)
+    );
+    top$lanes$3$ctl$dyn_q$3 dyn_q$3(
+        .d(dyn_q$3$d),
+        .q(dyn_q$3$q),
+        .clock(dyn_q$3$clock)
+    );
+    top$lanes$3$ctl$dyn_q$4 dyn_q$4(
+        .d(dyn_q$4$d),
+        .q(dyn_q$4$q),
+        .clock(dyn_q$4$clock)
+    );
+    top$lanes$3$ctl$dyn_q$5 dyn_q$5(
+        .d(dyn_q$5$d),
+        .q(dyn_q$5$q),
+        .clock(dyn_q$5$clock)
+    );
+    top$lanes$3$ctl$dyn_q$6 dyn_q$6(
+        .d(dyn_q$6$d),
+        .q(dyn_q$6$q),
+        .clock(dyn_q$6$clock)
+    );
+    top$lanes$3$ctl$dyn_q$7 dyn_q$7(
+        .d(dyn_q$7$d),
+        .q(dyn_q$7$q),
+        .clock(dyn_q$7$clock)
+    );
     top$lanes$3$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -9110,6 +17371,36 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$1$d),
         .q(dym_q$1$q),
         .clock(dym_q$1$clock)
+    );
+    top$lanes$3$ctl$dym_q$2 dym_q$2(
+        .d(dym_q$2$d),
+        .q(dym_q$2$q),
+        .clock(dym_q$2$clock)
+    );
+    top$lanes$3$ctl$dym_q$3 dym_q$3(
+        .d(dym_q$3$d),
+        .q(dym_q$3$q),
+        .clock(dym_q$3$clock)
+    );
+    top$lanes$3$ctl$dym_q$4 dym_q$4(
+        .d(dym_q$4$d),
+        .q(dym_q$4$q),
+        .clock(dym_q$4$clock)
+    );
+    top$lanes$3$ctl$dym_q$5 dym_q$5(
+        .d(dym_q$5$d),
+        .q(dym_q$5$q),
+        .clock(dym_q$5$clock)
+    );
+    top$lanes$3$ctl$dym_q$6 dym_q$6(
+        .d(dym_q$6$d),
+        .q(dym_q$6$q),
+        .clock(dym_q$6$clock)
+    );
+    top$lanes$3$ctl$dym_q$7 dym_q$7(
+        .d(dym_q$7$d),
+        .q(dym_q$7$q),
+        .clock(dym_q$7$clock)
     );
     top$lanes$3$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -9151,6 +17442,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$7$q),
         .clock(v_q$7$clock)
     );
+    top$lanes$3$ctl$v_q$8 v_q$8(
+        .d(v_q$8$d),
+        .q(v_q$8$q),
+        .clock(v_q$8$clock)
+    );
+    top$lanes$3$ctl$v_q$9 v_q$9(
+        .d(v_q$9$d),
+        .q(v_q$9$q),
+        .clock(v_q$9$clock)
+    );
+    top$lanes$3$ctl$v_q$10 v_q$10(
+        .d(v_q$10$d),
+        .q(v_q$10$q),
+        .clock(v_q$10$clock)
+    );
+    top$lanes$3$ctl$v_q$11 v_q$11(
+        .d(v_q$11$d),
+        .q(v_q$11$q),
+        .clock(v_q$11$clock)
+    );
+    top$lanes$3$ctl$v_q$12 v_q$12(
+        .d(v_q$12$d),
+        .q(v_q$12$q),
+        .clock(v_q$12$clock)
+    );
+    top$lanes$3$ctl$v_q$13 v_q$13(
+        .d(v_q$13$d),
+        .q(v_q$13$q),
+        .clock(v_q$13$clock)
+    );
+    top$lanes$3$ctl$v_q$14 v_q$14(
+        .d(v_q$14$d),
+        .q(v_q$14$q),
+        .clock(v_q$14$clock)
+    );
+    top$lanes$3$ctl$v_q$15 v_q$15(
+        .d(v_q$15$d),
+        .q(v_q$15$q),
+        .clock(v_q$15$clock)
+    );
+    top$lanes$3$ctl$v_q$16 v_q$16(
+        .d(v_q$16$d),
+        .q(v_q$16$q),
+        .clock(v_q$16$clock)
+    );
     top$lanes$3$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -9190,6 +17526,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$7$d),
         .q(er_q$7$q),
         .clock(er_q$7$clock)
+    );
+    top$lanes$3$ctl$er_q$8 er_q$8(
+        .d(er_q$8$d),
+        .q(er_q$8$q),
+        .clock(er_q$8$clock)
+    );
+    top$lanes$3$ctl$er_q$9 er_q$9(
+        .d(er_q$9$d),
+        .q(er_q$9$q),
+        .clock(er_q$9$clock)
+    );
+    top$lanes$3$ctl$er_q$10 er_q$10(
+        .d(er_q$10$d),
+        .q(er_q$10$q),
+        .clock(er_q$10$clock)
+    );
+    top$lanes$3$ctl$er_q$11 er_q$11(
+        .d(er_q$11$d),
+        .q(er_q$11$q),
+        .clock(er_q$11$clock)
+    );
+    top$lanes$3$ctl$er_q$12 er_q$12(
+        .d(er_q$12$d),
+        .q(er_q$12$q),
+        .clock(er_q$12$clock)
+    );
+    top$lanes$3$ctl$er_q$13 er_q$13(
+        .d(er_q$13$d),
+        .q(er_q$13$q),
+        .clock(er_q$13$clock)
+    );
+    top$lanes$3$ctl$er_q$14 er_q$14(
+        .d(er_q$14$d),
+        .q(er_q$14$q),
+        .clock(er_q$14$clock)
+    );
+    top$lanes$3$ctl$er_q$15 er_q$15(
+        .d(er_q$15$d),
+        .q(er_q$15$q),
+        .clock(er_q$15$clock)
+    );
+    top$lanes$3$ctl$er_q$16 er_q$16(
+        .d(er_q$16$d),
+        .q(er_q$16$q),
+        .clock(er_q$16$clock)
     );
     top$lanes$3$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -9231,6 +17612,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$7$q),
         .clock(pad_q$7$clock)
     );
+    top$lanes$3$ctl$pad_q$8 pad_q$8(
+        .d(pad_q$8$d),
+        .q(pad_q$8$q),
+        .clock(pad_q$8$clock)
+    );
+    top$lanes$3$ctl$pad_q$9 pad_q$9(
+        .d(pad_q$9$d),
+        .q(pad_q$9$q),
+        .clock(pad_q$9$clock)
+    );
+    top$lanes$3$ctl$pad_q$10 pad_q$10(
+        .d(pad_q$10$d),
+        .q(pad_q$10$q),
+        .clock(pad_q$10$clock)
+    );
+    top$lanes$3$ctl$pad_q$11 pad_q$11(
+        .d(pad_q$11$d),
+        .q(pad_q$11$q),
+        .clock(pad_q$11$clock)
+    );
+    top$lanes$3$ctl$pad_q$12 pad_q$12(
+        .d(pad_q$12$d),
+        .q(pad_q$12$q),
+        .clock(pad_q$12$clock)
+    );
+    top$lanes$3$ctl$pad_q$13 pad_q$13(
+        .d(pad_q$13$d),
+        .q(pad_q$13$q),
+        .clock(pad_q$13$clock)
+    );
+    top$lanes$3$ctl$pad_q$14 pad_q$14(
+        .d(pad_q$14$d),
+        .q(pad_q$14$q),
+        .clock(pad_q$14$clock)
+    );
+    top$lanes$3$ctl$pad_q$15 pad_q$15(
+        .d(pad_q$15$d),
+        .q(pad_q$15$q),
+        .clock(pad_q$15$clock)
+    );
+    top$lanes$3$ctl$pad_q$16 pad_q$16(
+        .d(pad_q$16$d),
+        .q(pad_q$16$q),
+        .clock(pad_q$16$clock)
+    );
     top$lanes$3$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -9270,6 +17696,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$7$d),
         .q(bx_q$7$q),
         .clock(bx_q$7$clock)
+    );
+    top$lanes$3$ctl$bx_q$8 bx_q$8(
+        .d(bx_q$8$d),
+        .q(bx_q$8$q),
+        .clock(bx_q$8$clock)
+    );
+    top$lanes$3$ctl$bx_q$9 bx_q$9(
+        .d(bx_q$9$d),
+        .q(bx_q$9$q),
+        .clock(bx_q$9$clock)
+    );
+    top$lanes$3$ctl$bx_q$10 bx_q$10(
+        .d(bx_q$10$d),
+        .q(bx_q$10$q),
+        .clock(bx_q$10$clock)
+    );
+    top$lanes$3$ctl$bx_q$11 bx_q$11(
+        .d(bx_q$11$d),
+        .q(bx_q$11$q),
+        .clock(bx_q$11$clock)
+    );
+    top$lanes$3$ctl$bx_q$12 bx_q$12(
+        .d(bx_q$12$d),
+        .q(bx_q$12$q),
+        .clock(bx_q$12$clock)
+    );
+    top$lanes$3$ctl$bx_q$13 bx_q$13(
+        .d(bx_q$13$d),
+        .q(bx_q$13$q),
+        .clock(bx_q$13$clock)
+    );
+    top$lanes$3$ctl$bx_q$14 bx_q$14(
+        .d(bx_q$14$d),
+        .q(bx_q$14$q),
+        .clock(bx_q$14$clock)
+    );
+    top$lanes$3$ctl$bx_q$15 bx_q$15(
+        .d(bx_q$15$d),
+        .q(bx_q$15$q),
+        .clock(bx_q$15$clock)
+    );
+    top$lanes$3$ctl$bx_q$16 bx_q$16(
+        .d(bx_q$16$d),
+        .q(bx_q$16$q),
+        .clock(bx_q$16$clock)
     );
     top$lanes$3$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -9311,6 +17782,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$7$q),
         .clock(by_q$7$clock)
     );
+    top$lanes$3$ctl$by_q$8 by_q$8(
+        .d(by_q$8$d),
+        .q(by_q$8$q),
+        .clock(by_q$8$clock)
+    );
+    top$lanes$3$ctl$by_q$9 by_q$9(
+        .d(by_q$9$d),
+        .q(by_q$9$q),
+        .clock(by_q$9$clock)
+    );
+    top$lanes$3$ctl$by_q$10 by_q$10(
+        .d(by_q$10$d),
+        .q(by_q$10$q),
+        .clock(by_q$10$clock)
+    );
+    top$lanes$3$ctl$by_q$11 by_q$11(
+        .d(by_q$11$d),
+        .q(by_q$11$q),
+        .clock(by_q$11$clock)
+    );
+    top$lanes$3$ctl$by_q$12 by_q$12(
+        .d(by_q$12$d),
+        .q(by_q$12$q),
+        .clock(by_q$12$clock)
+    );
+    top$lanes$3$ctl$by_q$13 by_q$13(
+        .d(by_q$13$d),
+        .q(by_q$13$q),
+        .clock(by_q$13$clock)
+    );
+    top$lanes$3$ctl$by_q$14 by_q$14(
+        .d(by_q$14$d),
+        .q(by_q$14$q),
+        .clock(by_q$14$clock)
+    );
+    top$lanes$3$ctl$by_q$15 by_q$15(
+        .d(by_q$15$d),
+        .q(by_q$15$q),
+        .clock(by_q$15$clock)
+    );
+    top$lanes$3$ctl$by_q$16 by_q$16(
+        .d(by_q$16$d),
+        .q(by_q$16$q),
+        .clock(by_q$16$clock)
+    );
     top$lanes$3$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -9351,6 +17867,51 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$7$q),
         .clock(face_q$7$clock)
     );
+    top$lanes$3$ctl$face_q$8 face_q$8(
+        .d(face_q$8$d),
+        .q(face_q$8$q),
+        .clock(face_q$8$clock)
+    );
+    top$lanes$3$ctl$face_q$9 face_q$9(
+        .d(face_q$9$d),
+        .q(face_q$9$q),
+        .clock(face_q$9$clock)
+    );
+    top$lanes$3$ctl$face_q$10 face_q$10(
+        .d(face_q$10$d),
+        .q(face_q$10$q),
+        .clock(face_q$10$clock)
+    );
+    top$lanes$3$ctl$face_q$11 face_q$11(
+        .d(face_q$11$d),
+        .q(face_q$11$q),
+        .clock(face_q$11$clock)
+    );
+    top$lanes$3$ctl$face_q$12 face_q$12(
+        .d(face_q$12$d),
+        .q(face_q$12$q),
+        .clock(face_q$12$clock)
+    );
+    top$lanes$3$ctl$face_q$13 face_q$13(
+        .d(face_q$13$d),
+        .q(face_q$13$q),
+        .clock(face_q$13$clock)
+    );
+    top$lanes$3$ctl$face_q$14 face_q$14(
+        .d(face_q$14$d),
+        .q(face_q$14$q),
+        .clock(face_q$14$clock)
+    );
+    top$lanes$3$ctl$face_q$15 face_q$15(
+        .d(face_q$15$d),
+        .q(face_q$15$q),
+        .clock(face_q$15$clock)
+    );
+    top$lanes$3$ctl$face_q$16 face_q$16(
+        .d(face_q$16$d),
+        .q(face_q$16$q),
+        .clock(face_q$16$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -9368,6 +17929,48 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
+        x_q$2$clock = clock;
+        y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dxm_q$2$clock = clock;
+        dyn_q$2$clock = clock;
+        dym_q$2$clock = clock;
+        x_q$3$clock = clock;
+        y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dxm_q$3$clock = clock;
+        dyn_q$3$clock = clock;
+        dym_q$3$clock = clock;
+        x_q$4$clock = clock;
+        y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dxm_q$4$clock = clock;
+        dyn_q$4$clock = clock;
+        dym_q$4$clock = clock;
+        x_q$5$clock = clock;
+        y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dxm_q$5$clock = clock;
+        dyn_q$5$clock = clock;
+        dym_q$5$clock = clock;
+        x_q$6$clock = clock;
+        y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dxm_q$6$clock = clock;
+        dyn_q$6$clock = clock;
+        dym_q$6$clock = clock;
+        x_q$7$clock = clock;
+        y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dxm_q$7$clock = clock;
+        dyn_q$7$clock = clock;
+        dym_q$7$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -9416,6 +18019,60 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$clock = clock;
         by_q$7$clock = clock;
         face_q$7$clock = clock;
+        v_q$8$clock = clock;
+        er_q$8$clock = clock;
+        pad_q$8$clock = clock;
+        bx_q$8$clock = clock;
+        by_q$8$clock = clock;
+        face_q$8$clock = clock;
+        v_q$9$clock = clock;
+        er_q$9$clock = clock;
+        pad_q$9$clock = clock;
+        bx_q$9$clock = clock;
+        by_q$9$clock = clock;
+        face_q$9$clock = clock;
+        v_q$10$clock = clock;
+        er_q$10$clock = clock;
+        pad_q$10$clock = clock;
+        bx_q$10$clock = clock;
+        by_q$10$clock = clock;
+        face_q$10$clock = clock;
+        v_q$11$clock = clock;
+        er_q$11$clock = clock;
+        pad_q$11$clock = clock;
+        bx_q$11$clock = clock;
+        by_q$11$clock = clock;
+        face_q$11$clock = clock;
+        v_q$12$clock = clock;
+        er_q$12$clock = clock;
+        pad_q$12$clock = clock;
+        bx_q$12$clock = clock;
+        by_q$12$clock = clock;
+        face_q$12$clock = clock;
+        v_q$13$clock = clock;
+        er_q$13$clock = clock;
+        pad_q$13$clock = clock;
+        bx_q$13$clock = clock;
+        by_q$13$clock = clock;
+        face_q$13$clock = clock;
+        v_q$14$clock = clock;
+        er_q$14$clock = clock;
+        pad_q$14$clock = clock;
+        bx_q$14$clock = clock;
+        by_q$14$clock = clock;
+        face_q$14$clock = clock;
+        v_q$15$clock = clock;
+        er_q$15$clock = clock;
+        pad_q$15$clock = clock;
+        bx_q$15$clock = clock;
+        by_q$15$clock = clock;
+        face_q$15$clock = clock;
+        v_q$16$clock = clock;
+        er_q$16$clock = clock;
+        pad_q$16$clock = clock;
+        bx_q$16$clock = clock;
+        by_q$16$clock = clock;
+        face_q$16$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -9430,13 +18087,55 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
-        x_t = x_q$1$q;
-        y_t = y_q$1$q;
-        sr_t = sr_q$1$q;
-        dx_neg_t = dxn_q$1$q;
-        dx_mag_t = dxm_q$1$q;
-        dy_neg_t = dyn_q$1$q;
-        dy_mag_t = dym_q$1$q;
+        x_q$2$d = x_q$1$q;
+        y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dxm_q$2$d = dxm_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
+        dym_q$2$d = dym_q$1$q;
+        x_q$3$d = x_q$2$q;
+        y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dxm_q$3$d = dxm_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
+        dym_q$3$d = dym_q$2$q;
+        x_q$4$d = x_q$3$q;
+        y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dxm_q$4$d = dxm_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
+        dym_q$4$d = dym_q$3$q;
+        x_q$5$d = x_q$4$q;
+        y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dxm_q$5$d = dxm_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
+        dym_q$5$d = dym_q$4$q;
+        x_q$6$d = x_q$5$q;
+        y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dxm_q$6$d = dxm_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
+        dym_q$6$d = dym_q$5$q;
+        x_q$7$d = x_q$6$q;
+        y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dxm_q$7$d = dxm_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
+        dym_q$7$d = dym_q$6$q;
+        x_t = x_q$7$q;
+        y_t = y_q$7$q;
+        sr_t = sr_q$7$q;
+        dx_neg_t = dxn_q$7$q;
+        dx_mag_t = dxm_q$7$q;
+        dy_neg_t = dyn_q$7$q;
+        dy_mag_t = dym_q$7$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -9485,12 +18184,66 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$7$d = bx_q$6$q;
         by_q$7$d = by_q$6$q;
         face_q$7$d = face_q$6$q;
-        res_beat = v_q$7$q;
-        res_valid = v_q$7$q & ~pad_q$7$q;
-        px_valid = v_q$7$q & er_q$7$q & ~pad_q$7$q;
-        px_x = bx_q$7$q;
-        px_y = by_q$7$q;
-        px_face = face_q$7$q;
+        v_q$8$d = v_q$7$q;
+        er_q$8$d = er_q$7$q;
+        pad_q$8$d = pad_q$7$q;
+        bx_q$8$d = bx_q$7$q;
+        by_q$8$d = by_q$7$q;
+        face_q$8$d = face_q$7$q;
+        v_q$9$d = v_q$8$q;
+        er_q$9$d = er_q$8$q;
+        pad_q$9$d = pad_q$8$q;
+        bx_q$9$d = bx_q$8$q;
+        by_q$9$d = by_q$8$q;
+        face_q$9$d = face_q$8$q;
+        v_q$10$d = v_q$9$q;
+        er_q$10$d = er_q$9$q;
+        pad_q$10$d = pad_q$9$q;
+        bx_q$10$d = bx_q$9$q;
+        by_q$10$d = by_q$9$q;
+        face_q$10$d = face_q$9$q;
+        v_q$11$d = v_q$10$q;
+        er_q$11$d = er_q$10$q;
+        pad_q$11$d = pad_q$10$q;
+        bx_q$11$d = bx_q$10$q;
+        by_q$11$d = by_q$10$q;
+        face_q$11$d = face_q$10$q;
+        v_q$12$d = v_q$11$q;
+        er_q$12$d = er_q$11$q;
+        pad_q$12$d = pad_q$11$q;
+        bx_q$12$d = bx_q$11$q;
+        by_q$12$d = by_q$11$q;
+        face_q$12$d = face_q$11$q;
+        v_q$13$d = v_q$12$q;
+        er_q$13$d = er_q$12$q;
+        pad_q$13$d = pad_q$12$q;
+        bx_q$13$d = bx_q$12$q;
+        by_q$13$d = by_q$12$q;
+        face_q$13$d = face_q$12$q;
+        v_q$14$d = v_q$13$q;
+        er_q$14$d = er_q$13$q;
+        pad_q$14$d = pad_q$13$q;
+        bx_q$14$d = bx_q$13$q;
+        by_q$14$d = by_q$13$q;
+        face_q$14$d = face_q$13$q;
+        v_q$15$d = v_q$14$q;
+        er_q$15$d = er_q$14$q;
+        pad_q$15$d = pad_q$14$q;
+        bx_q$15$d = bx_q$14$q;
+        by_q$15$d = by_q$14$q;
+        face_q$15$d = face_q$14$q;
+        v_q$16$d = v_q$15$q;
+        er_q$16$d = er_q$15$q;
+        pad_q$16$d = pad_q$15$q;
+        bx_q$16$d = bx_q$15$q;
+        by_q$16$d = by_q$15$q;
+        face_q$16$d = face_q$15$q;
+        res_beat = v_q$16$q;
+        res_valid = v_q$16$q & ~pad_q$16$q;
+        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
+        px_x = bx_q$16$q;
+        px_y = by_q$16$q;
+        px_face = face_q$16$q;
     end
     
 endmodule // top$lanes$3$ctl
@@ -9528,6 +18281,125 @@ module top$lanes$3$ctl$bx_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$1
+module top$lanes$3$ctl$bx_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$10
+module top$lanes$3$ctl$bx_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$11
+module top$lanes$3$ctl$bx_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$12
+module top$lanes$3$ctl$bx_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$13
+module top$lanes$3$ctl$bx_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$14
+module top$lanes$3$ctl$bx_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$15
+module top$lanes$3$ctl$bx_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$16
 module top$lanes$3$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -9630,6 +18502,40 @@ module top$lanes$3$ctl$bx_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$7
+module top$lanes$3$ctl$bx_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$8
+module top$lanes$3$ctl$bx_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$9
 module top$lanes$3$ctl$by_q$0(d,q,clock);
     
     // Module arguments
@@ -9664,6 +18570,125 @@ module top$lanes$3$ctl$by_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$1
+module top$lanes$3$ctl$by_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$10
+module top$lanes$3$ctl$by_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$11
+module top$lanes$3$ctl$by_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$12
+module top$lanes$3$ctl$by_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$13
+module top$lanes$3$ctl$by_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$14
+module top$lanes$3$ctl$by_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$15
+module top$lanes$3$ctl$by_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$16
 module top$lanes$3$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -9766,6 +18791,40 @@ module top$lanes$3$ctl$by_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$7
+module top$lanes$3$ctl$by_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$8
+module top$lanes$3$ctl$by_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$9
 module top$lanes$3$ctl$dxm_q$0(d,q,clock);
     
     // Module arguments
@@ -9800,6 +18859,108 @@ module top$lanes$3$ctl$dxm_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dxm_q$1
+module top$lanes$3$ctl$dxm_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$2
+module top$lanes$3$ctl$dxm_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$3
+module top$lanes$3$ctl$dxm_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$4
+module top$lanes$3$ctl$dxm_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$5
+module top$lanes$3$ctl$dxm_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$6
+module top$lanes$3$ctl$dxm_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$7
 module top$lanes$3$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -9834,6 +18995,108 @@ module top$lanes$3$ctl$dxn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dxn_q$1
+module top$lanes$3$ctl$dxn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$2
+module top$lanes$3$ctl$dxn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$3
+module top$lanes$3$ctl$dxn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$4
+module top$lanes$3$ctl$dxn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$5
+module top$lanes$3$ctl$dxn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$6
+module top$lanes$3$ctl$dxn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$7
 module top$lanes$3$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -9868,6 +19131,108 @@ module top$lanes$3$ctl$dym_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dym_q$1
+module top$lanes$3$ctl$dym_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$2
+module top$lanes$3$ctl$dym_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$3
+module top$lanes$3$ctl$dym_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$4
+module top$lanes$3$ctl$dym_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$5
+module top$lanes$3$ctl$dym_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$6
+module top$lanes$3$ctl$dym_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$7
 module top$lanes$3$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -9902,6 +19267,108 @@ module top$lanes$3$ctl$dyn_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dyn_q$1
+module top$lanes$3$ctl$dyn_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$2
+module top$lanes$3$ctl$dyn_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$3
+module top$lanes$3$ctl$dyn_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$4
+module top$lanes$3$ctl$dyn_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$5
+module top$lanes$3$ctl$dyn_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$6
+module top$lanes$3$ctl$dyn_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$7
 module top$lanes$3$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -9936,6 +19403,125 @@ module top$lanes$3$ctl$er_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$1
+module top$lanes$3$ctl$er_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$10
+module top$lanes$3$ctl$er_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$11
+module top$lanes$3$ctl$er_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$12
+module top$lanes$3$ctl$er_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$13
+module top$lanes$3$ctl$er_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$14
+module top$lanes$3$ctl$er_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$15
+module top$lanes$3$ctl$er_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$16
 module top$lanes$3$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -10038,6 +19624,40 @@ module top$lanes$3$ctl$er_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$7
+module top$lanes$3$ctl$er_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$8
+module top$lanes$3$ctl$er_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$9
 module top$lanes$3$ctl$face_q$0(d,q,clock);
     
     // Module arguments
@@ -10072,6 +19692,125 @@ module top$lanes$3$ctl$face_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$1
+module top$lanes$3$ctl$face_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$10
+module top$lanes$3$ctl$face_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$11
+module top$lanes$3$ctl$face_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$12
+module top$lanes$3$ctl$face_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$13
+module top$lanes$3$ctl$face_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$14
+module top$lanes$3$ctl$face_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$15
+module top$lanes$3$ctl$face_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$16
 module top$lanes$3$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -10174,6 +19913,40 @@ module top$lanes$3$ctl$face_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$7
+module top$lanes$3$ctl$face_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$8
+module top$lanes$3$ctl$face_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$9
 module top$lanes$3$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -10208,6 +19981,125 @@ module top$lanes$3$ctl$pad_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$1
+module top$lanes$3$ctl$pad_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$10
+module top$lanes$3$ctl$pad_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$11
+module top$lanes$3$ctl$pad_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$12
+module top$lanes$3$ctl$pad_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$13
+module top$lanes$3$ctl$pad_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$14
+module top$lanes$3$ctl$pad_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$15
+module top$lanes$3$ctl$pad_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$16
 module top$lanes$3$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -10310,6 +20202,40 @@ module top$lanes$3$ctl$pad_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$7
+module top$lanes$3$ctl$pad_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$8
+module top$lanes$3$ctl$pad_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$9
 module top$lanes$3$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -10344,6 +20270,108 @@ module top$lanes$3$ctl$sr_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$sr_q$1
+module top$lanes$3$ctl$sr_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$2
+module top$lanes$3$ctl$sr_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$3
+module top$lanes$3$ctl$sr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$4
+module top$lanes$3$ctl$sr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$5
+module top$lanes$3$ctl$sr_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$6
+module top$lanes$3$ctl$sr_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$7
 module top$lanes$3$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -10378,6 +20406,125 @@ module top$lanes$3$ctl$v_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$1
+module top$lanes$3$ctl$v_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$10
+module top$lanes$3$ctl$v_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$11
+module top$lanes$3$ctl$v_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$12
+module top$lanes$3$ctl$v_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$13
+module top$lanes$3$ctl$v_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$14
+module top$lanes$3$ctl$v_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$15
+module top$lanes$3$ctl$v_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$16
 module top$lanes$3$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -10480,6 +20627,40 @@ module top$lanes$3$ctl$v_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$7
+module top$lanes$3$ctl$v_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$8
+module top$lanes$3$ctl$v_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$9
 module top$lanes$3$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -10514,6 +20695,108 @@ module top$lanes$3$ctl$x_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$x_q$1
+module top$lanes$3$ctl$x_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$2
+module top$lanes$3$ctl$x_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$3
+module top$lanes$3$ctl$x_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$4
+module top$lanes$3$ctl$x_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$5
+module top$lanes$3$ctl$x_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$6
+module top$lanes$3$ctl$x_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$7
 module top$lanes$3$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -10548,6 +20831,108 @@ module top$lanes$3$ctl$y_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$y_q$1
+module top$lanes$3$ctl$y_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$2
+module top$lanes$3$ctl$y_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$3
+module top$lanes$3$ctl$y_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$4
+module top$lanes$3$ctl$y_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$5
+module top$lanes$3$ctl$y_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$6
+module top$lanes$3$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$7
 module top$lanes$3$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments

@@ -76,6 +76,24 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse;
     wire  [15:0] lighting$specular;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -85,6 +103,9 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -97,6 +118,21 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -109,12 +145,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -133,6 +193,30 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -154,12 +238,42 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -172,12 +286,15 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -245,6 +362,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .diffuse(lighting$diffuse),
         .specular(lighting$specular)
     );
+    top$lanes$0$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$0$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$0$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$0$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$0$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$0$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$0$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -259,6 +406,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$0$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$0$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -280,6 +432,31 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$0$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$0$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$0$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$0$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$0$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$0$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -300,6 +477,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$0$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$0$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -309,6 +491,41 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$0$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$0$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$0$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$0$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$0$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$0$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$0$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$0$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -339,6 +556,46 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$0$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$0$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$0$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$0$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$0$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$0$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$0$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$0$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$0$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -375,17 +632,65 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$0$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$0$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$0$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$0$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$0$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$0$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$0$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$0$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$0$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$0$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$0$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$0$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -406,16 +711,19 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$0$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$0$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$0$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -448,10 +756,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -473,63 +783,110 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -537,6 +894,14 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -544,39 +909,61 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -595,17 +982,17 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -614,7 +1001,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -626,7 +1013,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -687,6 +1074,125 @@ module top$lanes$0$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$1
+module top$lanes$0$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$2
+module top$lanes$0$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$3
+module top$lanes$0$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$4
+module top$lanes$0$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$5
+module top$lanes$0$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$6
+module top$lanes$0$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$7
+module top$lanes$0$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$8
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -789,6 +1295,23 @@ module top$lanes$0$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$gate_q$3
+module top$lanes$0$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$4
 module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2,diffuse,specular);
     
     // Module arguments
@@ -831,6 +1354,63 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [63:0] specular_table$host_data;
     reg  [9:0] specular_table$address;
     wire  [15:0] specular_table$data;
+    reg  [15:0] ml_q$0$d;
+    wire  [15:0] ml_q$0$q;
+    reg  ml_q$0$clock;
+    reg  [15:0] ml_q$1$d;
+    wire  [15:0] ml_q$1$q;
+    reg  ml_q$1$clock;
+    reg  [15:0] ml_q$2$d;
+    wire  [15:0] ml_q$2$q;
+    reg  ml_q$2$clock;
+    reg  [15:0] mh_q$0$d;
+    wire  [15:0] mh_q$0$q;
+    reg  mh_q$0$clock;
+    reg  [15:0] mh_q$1$d;
+    wire  [15:0] mh_q$1$q;
+    reg  mh_q$1$clock;
+    reg  [15:0] mh_q$2$d;
+    wire  [15:0] mh_q$2$q;
+    reg  mh_q$2$clock;
+    reg  [31:0] p_l$0$d;
+    wire  [31:0] p_l$0$q;
+    reg  p_l$0$clock;
+    reg  [31:0] p_l$1$d;
+    wire  [31:0] p_l$1$q;
+    reg  p_l$1$clock;
+    reg  [31:0] p_l$2$d;
+    wire  [31:0] p_l$2$q;
+    reg  p_l$2$clock;
+    reg  [31:0] p_h$0$d;
+    wire  [31:0] p_h$0$q;
+    reg  p_h$0$clock;
+    reg  [31:0] p_h$1$d;
+    wire  [31:0] p_h$1$q;
+    reg  p_h$1$clock;
+    reg  [31:0] p_h$2$d;
+    wire  [31:0] p_h$2$q;
+    reg  p_h$2$clock;
+    reg  sl_q$0$d;
+    wire  sl_q$0$q;
+    reg  sl_q$0$clock;
+    reg  sl_q$1$d;
+    wire  sl_q$1$q;
+    reg  sl_q$1$clock;
+    reg  sl_q$2$d;
+    wire  sl_q$2$q;
+    reg  sl_q$2$clock;
+    reg  sh_q$0$d;
+    wire  sh_q$0$q;
+    reg  sh_q$0$clock;
+    reg  sh_q$1$d;
+    wire  sh_q$1$q;
+    reg  sh_q$1$clock;
+    reg  sh_q$2$d;
+    wire  sh_q$2$q;
+    reg  sh_q$2$clock;
+    reg  [15:0] n2_q$d;
+    wire  [15:0] n2_q$q;
+    reg  n2_q$clock;
     reg  [31:0] dot_l$d;
     wire  [31:0] dot_l$q;
     reg  dot_l$clock;
@@ -840,18 +1420,45 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
+    reg  [15:0] d16_l$d;
+    wire  [15:0] d16_l$q;
+    reg  d16_l$clock;
+    reg  [15:0] d16_h$d;
+    wire  [15:0] d16_h$q;
+    reg  d16_h$clock;
+    reg  [15:0] rn_3$d;
+    wire  [15:0] rn_3$q;
+    reg  rn_3$clock;
+    reg  lit_3$d;
+    wire  lit_3$q;
+    reg  lit_3$clock;
     reg  [31:0] t_l$d;
     wire  [31:0] t_l$q;
     reg  t_l$clock;
     reg  [31:0] t_h$d;
     wire  [31:0] t_h$q;
     reg  t_h$clock;
-    reg  lit_2$d;
-    wire  lit_2$q;
-    reg  lit_2$clock;
-    reg  lit_3$d;
-    wire  lit_3$q;
-    reg  lit_3$clock;
+    reg  lit_4$d;
+    wire  lit_4$q;
+    reg  lit_4$clock;
+    reg  [9:0] idx_l$d;
+    wire  [9:0] idx_l$q;
+    reg  idx_l$clock;
+    reg  [9:0] idx_h$d;
+    wire  [9:0] idx_h$q;
+    reg  idx_h$clock;
+    reg  lit_5$d;
+    wire  lit_5$q;
+    reg  lit_5$clock;
+    reg  lit_6$d;
+    wire  lit_6$q;
+    reg  lit_6$clock;
+    reg  [15:0] diffuse_q$d;
+    wire  [15:0] diffuse_q$q;
+    reg  diffuse_q$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
     
     // Local signals
     reg  [15:0] m_l$0;
@@ -863,17 +1470,13 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] qm$0;
     reg  [15:0] qm$1;
     reg  [15:0] qm$2;
-    reg  [31:0] p_l$0;
-    reg  [31:0] p_l$1;
-    reg  [31:0] p_l$2;
-    reg  [31:0] p_h$0;
-    reg  [31:0] p_h$1;
-    reg  [31:0] p_h$2;
-    reg  [31:0] sum_l;
-    reg  [31:0] sum_h;
+    reg  [31:0] t_pl$0;
+    reg  [31:0] t_pl$1;
+    reg  [31:0] t_pl$2;
+    reg  [31:0] t_ph$0;
+    reg  [31:0] t_ph$1;
+    reg  [31:0] t_ph$2;
     reg  [15:0] n2;
-    reg  [15:0] d16_l;
-    reg  [15:0] d16_h;
     reg  [63:0] i_l;
     reg  [63:0] i_h;
     
@@ -906,6 +1509,101 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .address(specular_table$address),
         .data(specular_table$data)
     );
+    top$lanes$0$shader$lighting$ml_q$0 ml_q$0(
+        .d(ml_q$0$d),
+        .q(ml_q$0$q),
+        .clock(ml_q$0$clock)
+    );
+    top$lanes$0$shader$lighting$ml_q$1 ml_q$1(
+        .d(ml_q$1$d),
+        .q(ml_q$1$q),
+        .clock(ml_q$1$clock)
+    );
+    top$lanes$0$shader$lighting$ml_q$2 ml_q$2(
+        .d(ml_q$2$d),
+        .q(ml_q$2$q),
+        .clock(ml_q$2$clock)
+    );
+    top$lanes$0$shader$lighting$mh_q$0 mh_q$0(
+        .d(mh_q$0$d),
+        .q(mh_q$0$q),
+        .clock(mh_q$0$clock)
+    );
+    top$lanes$0$shader$lighting$mh_q$1 mh_q$1(
+        .d(mh_q$1$d),
+        .q(mh_q$1$q),
+        .clock(mh_q$1$clock)
+    );
+    top$lanes$0$shader$lighting$mh_q$2 mh_q$2(
+        .d(mh_q$2$d),
+        .q(mh_q$2$q),
+        .clock(mh_q$2$clock)
+    );
+    top$lanes$0$shader$lighting$p_l$0 p_l$0(
+        .d(p_l$0$d),
+        .q(p_l$0$q),
+        .clock(p_l$0$clock)
+    );
+    top$lanes$0$shader$lighting$p_l$1 p_l$1(
+        .d(p_l$1$d),
+        .q(p_l$1$q),
+        .clock(p_l$1$clock)
+    );
+    top$lanes$0$shader$lighting$p_l$2 p_l$2(
+        .d(p_l$2$d),
+        .q(p_l$2$q),
+        .clock(p_l$2$clock)
+    );
+    top$lanes$0$shader$lighting$p_h$0 p_h$0(
+        .d(p_h$0$d),
+        .q(p_h$0$q),
+        .clock(p_h$0$clock)
+    );
+    top$lanes$0$shader$lighting$p_h$1 p_h$1(
+        .d(p_h$1$d),
+        .q(p_h$1$q),
+        .clock(p_h$1$clock)
+    );
+    top$lanes$0$shader$lighting$p_h$2 p_h$2(
+        .d(p_h$2$d),
+        .q(p_h$2$q),
+        .clock(p_h$2$clock)
+    );
+    top$lanes$0$shader$lighting$sl_q$0 sl_q$0(
+        .d(sl_q$0$d),
+        .q(sl_q$0$q),
+        .clock(sl_q$0$clock)
+    );
+    top$lanes$0$shader$lighting$sl_q$1 sl_q$1(
+        .d(sl_q$1$d),
+        .q(sl_q$1$q),
+        .clock(sl_q$1$clock)
+    );
+    top$lanes$0$shader$lighting$sl_q$2 sl_q$2(
+        .d(sl_q$2$d),
+        .q(sl_q$2$q),
+        .clock(sl_q$2$clock)
+    );
+    top$lanes$0$shader$lighting$sh_q$0 sh_q$0(
+        .d(sh_q$0$d),
+        .q(sh_q$0$q),
+        .clock(sh_q$0$clock)
+    );
+    top$lanes$0$shader$lighting$sh_q$1 sh_q$1(
+        .d(sh_q$1$d),
+        .q(sh_q$1$q),
+        .clock(sh_q$1$clock)
+    );
+    top$lanes$0$shader$lighting$sh_q$2 sh_q$2(
+        .d(sh_q$2$d),
+        .q(sh_q$2$q),
+        .clock(sh_q$2$clock)
+    );
+    top$lanes$0$shader$lighting$n2_q n2_q(
+        .d(n2_q$d),
+        .q(n2_q$q),
+        .clock(n2_q$clock)
+    );
     top$lanes$0$shader$lighting$dot_l dot_l(
         .d(dot_l$d),
         .q(dot_l$q),
@@ -921,6 +1619,26 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(rn$q),
         .clock(rn$clock)
     );
+    top$lanes$0$shader$lighting$d16_l d16_l(
+        .d(d16_l$d),
+        .q(d16_l$q),
+        .clock(d16_l$clock)
+    );
+    top$lanes$0$shader$lighting$d16_h d16_h(
+        .d(d16_h$d),
+        .q(d16_h$q),
+        .clock(d16_h$clock)
+    );
+    top$lanes$0$shader$lighting$rn_3 rn_3(
+        .d(rn_3$d),
+        .q(rn_3$q),
+        .clock(rn_3$clock)
+    );
+    top$lanes$0$shader$lighting$lit_3 lit_3(
+        .d(lit_3$d),
+        .q(lit_3$q),
+        .clock(lit_3$clock)
+    );
     top$lanes$0$shader$lighting$t_l t_l(
         .d(t_l$d),
         .q(t_l$q),
@@ -931,34 +1649,78 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(t_h$q),
         .clock(t_h$clock)
     );
-    top$lanes$0$shader$lighting$lit_2 lit_2(
-        .d(lit_2$d),
-        .q(lit_2$q),
-        .clock(lit_2$clock)
+    top$lanes$0$shader$lighting$lit_4 lit_4(
+        .d(lit_4$d),
+        .q(lit_4$q),
+        .clock(lit_4$clock)
     );
-    top$lanes$0$shader$lighting$lit_3 lit_3(
-        .d(lit_3$d),
-        .q(lit_3$q),
-        .clock(lit_3$clock)
+    top$lanes$0$shader$lighting$idx_l idx_l(
+        .d(idx_l$d),
+        .q(idx_l$q),
+        .clock(idx_l$clock)
+    );
+    top$lanes$0$shader$lighting$idx_h idx_h(
+        .d(idx_h$d),
+        .q(idx_h$q),
+        .clock(idx_h$clock)
+    );
+    top$lanes$0$shader$lighting$lit_5 lit_5(
+        .d(lit_5$d),
+        .q(lit_5$q),
+        .clock(lit_5$clock)
+    );
+    top$lanes$0$shader$lighting$lit_6 lit_6(
+        .d(lit_6$d),
+        .q(lit_6$q),
+        .clock(lit_6$clock)
+    );
+    top$lanes$0$shader$lighting$diffuse_q diffuse_q(
+        .d(diffuse_q$d),
+        .q(diffuse_q$q),
+        .clock(diffuse_q$clock)
+    );
+    top$lanes$0$shader$lighting$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     
     // Update code
-    reg  [15:0] specular_pass;
     always @(*) begin
+        n2_q$clock = clock;
         dot_l$clock = clock;
         dot_h$clock = clock;
         rn$clock = clock;
+        d16_l$clock = clock;
+        d16_h$clock = clock;
+        rn_3$clock = clock;
+        lit_3$clock = clock;
         t_l$clock = clock;
         t_h$clock = clock;
-        lit_2$clock = clock;
-        lit_3$clock = clock;
+        lit_4$clock = clock;
+        idx_l$clock = clock;
+        idx_h$clock = clock;
+        lit_5$clock = clock;
+        lit_6$clock = clock;
+        diffuse_q$clock = clock;
+        specular_q$clock = clock;
+        n2_q$d = n2_q$q;
         dot_l$d = dot_l$q;
         dot_h$d = dot_h$q;
         rn$d = rn$q;
+        d16_l$d = d16_l$q;
+        d16_h$d = d16_h$q;
+        rn_3$d = rn_3$q;
+        lit_3$d = lit_3$q;
         t_l$d = t_l$q;
         t_h$d = t_h$q;
-        lit_2$d = lit_2$q;
-        lit_3$d = lit_3$q;
+        lit_4$d = lit_4$q;
+        idx_l$d = idx_l$q;
+        idx_h$d = idx_h$q;
+        lit_5$d = lit_5$q;
+        lit_6$d = lit_6$q;
+        diffuse_q$d = diffuse_q$q;
+        specular_q$d = specular_q$q;
         regs$clock = clock;
         regs$host_write = host_write;
         regs$host_address = host_address;
@@ -971,90 +1733,118 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        sum_l = 'h0;
-        sum_h = 'h0;
-        n2 = 'h0;
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
+        qm$1 = 16'(q_mag$1);
+        qm$2 = 16'(q_mag$2);
         m_l$0 = regs$q$0[('h0)+:(16)];
         if (regs$q$0['hf]) begin
             m_l$0 = 'h0 - regs$q$0[('h0)+:(16)];
+        end
+        m_l$1 = regs$q$0[('h10)+:(16)];
+        if (regs$q$0['h1f]) begin
+            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
+        end
+        m_l$2 = regs$q$0[('h20)+:(16)];
+        if (regs$q$0['h2f]) begin
+            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$0 = regs$q$1[('h0)+:(16)];
         if (regs$q$1['hf]) begin
             m_h$0 = 'h0 - regs$q$1[('h0)+:(16)];
         end
-        p_l$0 = qm$0 * m_l$0;
-        if (q_neg$0 ^ regs$q$0['hf]) begin
-            p_l$0 = 'h0 - (qm$0 * m_l$0);
-        end
-        sum_l = sum_l + p_l$0;
-        p_h$0 = qm$0 * m_h$0;
-        if (q_neg$0 ^ regs$q$1['hf]) begin
-            p_h$0 = 'h0 - (qm$0 * m_h$0);
-        end
-        sum_h = sum_h + p_h$0;
-        n2 = n2 + 16'(qm$0 * qm$0);
-        qm$1 = 16'(q_mag$1);
-        m_l$1 = regs$q$0[('h10)+:(16)];
-        if (regs$q$0['h1f]) begin
-            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
-        end
         m_h$1 = regs$q$1[('h10)+:(16)];
         if (regs$q$1['h1f]) begin
             m_h$1 = 'h0 - regs$q$1[('h10)+:(16)];
-        end
-        p_l$1 = qm$1 * m_l$1;
-        if (q_neg$1 ^ regs$q$0['h1f]) begin
-            p_l$1 = 'h0 - (qm$1 * m_l$1);
-        end
-        sum_l = sum_l + p_l$1;
-        p_h$1 = qm$1 * m_h$1;
-        if (q_neg$1 ^ regs$q$1['h1f]) begin
-            p_h$1 = 'h0 - (qm$1 * m_h$1);
-        end
-        sum_h = sum_h + p_h$1;
-        n2 = n2 + 16'(qm$1 * qm$1);
-        qm$2 = 16'(q_mag$2);
-        m_l$2 = regs$q$0[('h20)+:(16)];
-        if (regs$q$0['h2f]) begin
-            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$2 = regs$q$1[('h20)+:(16)];
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
-        p_l$2 = qm$2 * m_l$2;
-        if (q_neg$2 ^ regs$q$0['h2f]) begin
-            p_l$2 = 'h0 - (qm$2 * m_l$2);
+        sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
+        sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
+        sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
+        sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
+        sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
+        sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
+        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2_q$d = n2;
+        t_pl$0 = p_l$0$q;
+        if (sl_q$0$q) begin
+            t_pl$0 = 'h0 - p_l$0$q;
         end
-        sum_l = sum_l + p_l$2;
-        p_h$2 = qm$2 * m_h$2;
-        if (q_neg$2 ^ regs$q$1['h2f]) begin
-            p_h$2 = 'h0 - (qm$2 * m_h$2);
+        t_ph$0 = p_h$0$q;
+        if (sh_q$0$q) begin
+            t_ph$0 = 'h0 - p_h$0$q;
         end
-        sum_h = sum_h + p_h$2;
-        n2 = n2 + 16'(qm$2 * qm$2);
-        dot_l$d = sum_l;
-        dot_h$d = sum_h;
-        rnorm$address = 10'(n2);
+        t_pl$1 = p_l$1$q;
+        if (sl_q$1$q) begin
+            t_pl$1 = 'h0 - p_l$1$q;
+        end
+        t_ph$1 = p_h$1$q;
+        if (sh_q$1$q) begin
+            t_ph$1 = 'h0 - p_h$1$q;
+        end
+        t_pl$2 = p_l$2$q;
+        if (sl_q$2$q) begin
+            t_pl$2 = 'h0 - p_l$2$q;
+        end
+        t_ph$2 = p_h$2$q;
+        if (sh_q$2$q) begin
+            t_ph$2 = 'h0 - p_h$2$q;
+        end
+        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
+        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        rnorm$address = 10'(n2_q$q);
         rn$d = rnorm$data;
-        d16_l = dot_l$q[('h0)+:(16)];
+        d16_l$d = dot_l$q[('h0)+:(16)];
         if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
-            d16_l = 'h0;
+            d16_l$d = 'h0;
         end
         else if (dot_l$q > 'hffff) begin
-            d16_l = 'hffff;
+            d16_l$d = 'hffff;
         end
-        d16_h = dot_h$q[('h0)+:(16)];
+        d16_h$d = dot_h$q[('h0)+:(16)];
         if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
-            d16_h = 'h0;
+            d16_h$d = 'h0;
         end
         else if (dot_h$q > 'hffff) begin
-            d16_h = 'hffff;
+            d16_h$d = 'hffff;
         end
-        t_l$d = d16_l * rn$q;
-        t_h$d = d16_h * rn$q;
-        lit_2$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        rn_3$d = rn$q;
+        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        t_l$d = d16_l$q * rn_3$q;
+        t_h$d = d16_h$q * rn_3$q;
+        lit_4$d = lit_3$q;
         i_l = ((64'(t_l$q) << 'ha) - 64'(t_l$q) + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
@@ -1063,18 +1853,73 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (i_h > last) begin
             i_h = last;
         end
-        diffuse_table$address = 10'(i_l);
-        specular_table$address = 10'(i_h);
-        lit_3$d = lit_2$q;
-        diffuse = diffuse_table$data;
-        specular_pass = 'h0;
-        if (lit_3$q) begin
-            specular_pass = specular_table$data;
+        idx_l$d = 10'(i_l);
+        idx_h$d = 10'(i_h);
+        lit_5$d = lit_4$q;
+        diffuse_table$address = idx_l$q;
+        specular_table$address = idx_h$q;
+        lit_6$d = lit_5$q;
+        diffuse_q$d = diffuse_table$data;
+        specular_q$d = 'h0;
+        if (lit_6$q) begin
+            specular_q$d = specular_table$data;
         end
-        specular = specular_pass;
+        diffuse = diffuse_q$q;
+        specular = specular_q$q;
     end
     
 endmodule // top$lanes$0$shader$lighting
+module top$lanes$0$shader$lighting$d16_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$d16_h
+module top$lanes$0$shader$lighting$d16_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$d16_l
+module top$lanes$0$shader$lighting$diffuse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$diffuse_q
 module top$lanes$0$shader$lighting$diffuse_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -1179,23 +2024,40 @@ module top$lanes$0$shader$lighting$dot_l(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$dot_l
-module top$lanes$0$shader$lighting$lit_2(d,q,clock);
+module top$lanes$0$shader$lighting$idx_h(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$lanes$0$shader$lighting$lit_2
+endmodule // top$lanes$0$shader$lighting$idx_h
+module top$lanes$0$shader$lighting$idx_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$idx_l
 module top$lanes$0$shader$lighting$lit_3(d,q,clock);
     
     // Module arguments
@@ -1213,6 +2075,278 @@ module top$lanes$0$shader$lighting$lit_3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$lit_3
+module top$lanes$0$shader$lighting$lit_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$lit_4
+module top$lanes$0$shader$lighting$lit_5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$lit_5
+module top$lanes$0$shader$lighting$lit_6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$lit_6
+module top$lanes$0$shader$lighting$mh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$mh_q$0
+module top$lanes$0$shader$lighting$mh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$mh_q$1
+module top$lanes$0$shader$lighting$mh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$mh_q$2
+module top$lanes$0$shader$lighting$ml_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$ml_q$0
+module top$lanes$0$shader$lighting$ml_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$ml_q$1
+module top$lanes$0$shader$lighting$ml_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$ml_q$2
+module top$lanes$0$shader$lighting$n2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$n2_q
+module top$lanes$0$shader$lighting$p_h$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_h$0
+module top$lanes$0$shader$lighting$p_h$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_h$1
+module top$lanes$0$shader$lighting$p_h$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_h$2
+module top$lanes$0$shader$lighting$p_l$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_l$0
+module top$lanes$0$shader$lighting$p_l$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_l$1
+module top$lanes$0$shader$lighting$p_l$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$p_l$2
 module top$lanes$0$shader$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -1315,6 +2449,23 @@ module top$lanes$0$shader$lighting$rn(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$rn
+module top$lanes$0$shader$lighting$rn_3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$rn_3
 module top$lanes$0$shader$lighting$rnorm(address,data);
     
     // Module arguments
@@ -2352,6 +3503,125 @@ module top$lanes$0$shader$lighting$rnorm(address,data);
     endcase
             
 endmodule // top$lanes$0$shader$lighting$rnorm
+module top$lanes$0$shader$lighting$sh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sh_q$0
+module top$lanes$0$shader$lighting$sh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sh_q$1
+module top$lanes$0$shader$lighting$sh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sh_q$2
+module top$lanes$0$shader$lighting$sl_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sl_q$0
+module top$lanes$0$shader$lighting$sl_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sl_q$1
+module top$lanes$0$shader$lighting$sl_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$sl_q$2
+module top$lanes$0$shader$lighting$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lighting$specular_q
 module top$lanes$0$shader$lighting$specular_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -2456,9 +3726,10 @@ module top$lanes$0$shader$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$t_l
-module top$lanes$0$shader$lit_b(a,b,y);
+module top$lanes$0$shader$lit_b(clock,a,b,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2468,14 +3739,25 @@ module top$lanes$0$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2483,9 +3765,27 @@ module top$lanes$0$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_b
-module top$lanes$0$shader$lit_g(a,b,y);
+module top$lanes$0$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_b$t
+module top$lanes$0$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2495,14 +3795,25 @@ module top$lanes$0$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2510,9 +3821,27 @@ module top$lanes$0$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_g
-module top$lanes$0$shader$lit_r(a,b,y);
+module top$lanes$0$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_g$t
+module top$lanes$0$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2522,14 +3851,25 @@ module top$lanes$0$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2537,6 +3877,23 @@ module top$lanes$0$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
+module top$lanes$0$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_r$t
 module top$lanes$0$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -2675,9 +4032,146 @@ module top$lanes$0$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lut_q$3
-module top$lanes$0$shader$mul_b(a,b,y);
+module top$lanes$0$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$4
+module top$lanes$0$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$5
+module top$lanes$0$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$6
+module top$lanes$0$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$7
+module top$lanes$0$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$8
+module top$lanes$0$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$0
+module top$lanes$0$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$1
+module top$lanes$0$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$2
+module top$lanes$0$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2687,14 +4181,25 @@ module top$lanes$0$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2702,9 +4207,27 @@ module top$lanes$0$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_b
-module top$lanes$0$shader$mul_g(a,b,y);
+module top$lanes$0$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_b$t
+module top$lanes$0$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2714,14 +4237,25 @@ module top$lanes$0$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2729,9 +4263,27 @@ module top$lanes$0$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_g
-module top$lanes$0$shader$mul_r(a,b,y);
+module top$lanes$0$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_g$t
+module top$lanes$0$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -2741,14 +4293,25 @@ module top$lanes$0$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$0$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -2756,6 +4319,74 @@ module top$lanes$0$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_r
+module top$lanes$0$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_r$t
+module top$lanes$0$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$0
+module top$lanes$0$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$1
+module top$lanes$0$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$2
 module top$lanes$0$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2);
     
     // Module arguments
@@ -2829,6 +4460,27 @@ module top$lanes$0$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [7:0] s_q2$d;
+    wire  [7:0] s_q2$q;
+    reg  s_q2$clock;
+    reg  neg_q2$0$d;
+    wire  neg_q2$0$q;
+    reg  neg_q2$0$clock;
+    reg  neg_q2$1$d;
+    wire  neg_q2$1$q;
+    reg  neg_q2$1$clock;
+    reg  neg_q2$2$d;
+    wire  neg_q2$2$q;
+    reg  neg_q2$2$clock;
+    reg  [31:0] sum_q$0$d;
+    wire  [31:0] sum_q$0$q;
+    reg  sum_q$0$clock;
+    reg  [31:0] sum_q$1$d;
+    wire  [31:0] sum_q$1$q;
+    reg  sum_q$1$clock;
+    reg  [31:0] sum_q$2$d;
+    wire  [31:0] sum_q$2$q;
+    reg  sum_q$2$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -2892,6 +4544,41 @@ module top$lanes$0$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$lanes$0$shader$normal$s_q2 s_q2(
+        .d(s_q2$d),
+        .q(s_q2$q),
+        .clock(s_q2$clock)
+    );
+    top$lanes$0$shader$normal$neg_q2$0 neg_q2$0(
+        .d(neg_q2$0$d),
+        .q(neg_q2$0$q),
+        .clock(neg_q2$0$clock)
+    );
+    top$lanes$0$shader$normal$neg_q2$1 neg_q2$1(
+        .d(neg_q2$1$d),
+        .q(neg_q2$1$q),
+        .clock(neg_q2$1$clock)
+    );
+    top$lanes$0$shader$normal$neg_q2$2 neg_q2$2(
+        .d(neg_q2$2$d),
+        .q(neg_q2$2$q),
+        .clock(neg_q2$2$clock)
+    );
+    top$lanes$0$shader$normal$sum_q$0 sum_q$0(
+        .d(sum_q$0$d),
+        .q(sum_q$0$q),
+        .clock(sum_q$0$clock)
+    );
+    top$lanes$0$shader$normal$sum_q$1 sum_q$1(
+        .d(sum_q$1$d),
+        .q(sum_q$1$q),
+        .clock(sum_q$1$clock)
+    );
+    top$lanes$0$shader$normal$sum_q$2 sum_q$2(
+        .d(sum_q$2$d),
+        .q(sum_q$2$q),
+        .clock(sum_q$2$clock)
+    );
     top$lanes$0$shader$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
         .q(out_neg$0$q),
@@ -2926,14 +4613,10 @@ module top$lanes$0$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     // Update code
     always @(*) begin
         s_q$clock = clock;
+        s_q2$clock = clock;
         s_q$d = s_q$q;
-        m = mag$0;
-        if (mag$1 > m) begin
-            m = mag$1;
-        end
-        if (mag$2 > m) begin
-            m = mag$2;
-        end
+        s_q2$d = s_q2$q;
+        m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
             bl = bit_len$0;
@@ -3039,55 +4722,68 @@ module top$lanes$0$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         if (s_q$q > 'h0) begin
             half = (32'('h1) << s_q$q) >> 'h1;
         end
+        s_q2$d = s_q$q;
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
+        neg_q2$0$clock = clock;
+        sum_q$0$clock = clock;
         out_neg$0$clock = clock;
         out_mag$0$clock = clock;
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
-        q$0 = (mag_q$0$q + half) >> s_q$q;
+        neg_q2$0$d = neg_q$0$q;
+        sum_q$0$d = mag_q$0$q + half;
         if (neg_q$0$q & (s_q$q > 'h0)) begin
-            q$0 = (mag_q$0$q + half - 'h1) >> s_q$q;
+            sum_q$0$d = mag_q$0$q + half - 'h1;
         end
+        q$0 = sum_q$0$q >> s_q2$q;
         if (q$0 > 'hf) begin
             q$0 = 'hf;
         end
         out_mag$0$d = q$0[('h0)+:(4)];
-        out_neg$0$d = neg_q$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
         mag_q$1$clock = clock;
+        neg_q2$1$clock = clock;
+        sum_q$1$clock = clock;
         out_neg$1$clock = clock;
         out_mag$1$clock = clock;
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
-        q$1 = (mag_q$1$q + half) >> s_q$q;
+        neg_q2$1$d = neg_q$1$q;
+        sum_q$1$d = mag_q$1$q + half;
         if (neg_q$1$q & (s_q$q > 'h0)) begin
-            q$1 = (mag_q$1$q + half - 'h1) >> s_q$q;
+            sum_q$1$d = mag_q$1$q + half - 'h1;
         end
+        q$1 = sum_q$1$q >> s_q2$q;
         if (q$1 > 'hf) begin
             q$1 = 'hf;
         end
         out_mag$1$d = q$1[('h0)+:(4)];
-        out_neg$1$d = neg_q$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
         mag_q$2$clock = clock;
+        neg_q2$2$clock = clock;
+        sum_q$2$clock = clock;
         out_neg$2$clock = clock;
         out_mag$2$clock = clock;
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
-        q$2 = (mag_q$2$q + half) >> s_q$q;
+        neg_q2$2$d = neg_q$2$q;
+        sum_q$2$d = mag_q$2$q + half;
         if (neg_q$2$q & (s_q$q > 'h0)) begin
-            q$2 = (mag_q$2$q + half - 'h1) >> s_q$q;
+            sum_q$2$d = mag_q$2$q + half - 'h1;
         end
+        q$2 = sum_q$2$q >> s_q2$q;
         if (q$2 > 'hf) begin
             q$2 = 'hf;
         end
         out_mag$2$d = q$2[('h0)+:(4)];
-        out_neg$2$d = neg_q$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
@@ -3195,6 +4891,57 @@ module top$lanes$0$shader$normal$neg_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$normal$neg_q$2
+module top$lanes$0$shader$normal$neg_q2$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$neg_q2$0
+module top$lanes$0$shader$normal$neg_q2$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$neg_q2$1
+module top$lanes$0$shader$normal$neg_q2$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$neg_q2$2
 module top$lanes$0$shader$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -3314,6 +5061,74 @@ module top$lanes$0$shader$normal$s_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$normal$s_q
+module top$lanes$0$shader$normal$s_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$s_q2
+module top$lanes$0$shader$normal$sum_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$sum_q$0
+module top$lanes$0$shader$normal$sum_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$sum_q$1
+module top$lanes$0$shader$normal$sum_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$normal$sum_q$2
 module top$lanes$0$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -3382,6 +5197,23 @@ module top$lanes$0$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$row_q$2
+module top$lanes$0$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$3
 module top$lanes$0$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -3433,6 +5265,23 @@ module top$lanes$0$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$shaded_q$2
+module top$lanes$0$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$specular_q
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -3467,6 +5316,91 @@ module top$lanes$0$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$1
+module top$lanes$0$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$10
+module top$lanes$0$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$11
+module top$lanes$0$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$12
+module top$lanes$0$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$13
+module top$lanes$0$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$14
 module top$lanes$0$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -3552,6 +5486,57 @@ module top$lanes$0$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$6
+module top$lanes$0$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$7
+module top$lanes$0$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$8
+module top$lanes$0$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$9
 module top$lanes$0$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -3586,6 +5571,74 @@ module top$lanes$0$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$1
+module top$lanes$0$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$10
+module top$lanes$0$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$11
+module top$lanes$0$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$12
+module top$lanes$0$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$13
 module top$lanes$0$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -3654,6 +5707,74 @@ module top$lanes$0$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$5
+module top$lanes$0$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$6
+module top$lanes$0$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$7
+module top$lanes$0$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$8
+module top$lanes$0$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$9
 module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -3732,6 +5853,24 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse;
     wire  [15:0] lighting$specular;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -3741,6 +5880,9 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -3753,6 +5895,21 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -3765,12 +5922,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -3789,6 +5970,30 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -3810,12 +6015,42 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -3828,12 +6063,15 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -3901,6 +6139,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .diffuse(lighting$diffuse),
         .specular(lighting$specular)
     );
+    top$lanes$1$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$1$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$1$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$1$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$1$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$1$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$1$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -3915,6 +6183,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$1$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$1$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -3936,6 +6209,31 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$1$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$1$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$1$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$1$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$1$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$1$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -3956,6 +6254,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$1$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$1$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -3965,6 +6268,41 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$1$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$1$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$1$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$1$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$1$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$1$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$1$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$1$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -3995,6 +6333,46 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$1$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$1$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$1$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$1$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$1$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$1$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$1$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$1$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$1$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -4031,17 +6409,65 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$1$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$1$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$1$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$1$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$1$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$1$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$1$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$1$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$1$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$1$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$1$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$1$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -4062,16 +6488,19 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$1$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$1$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$1$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -4104,10 +6533,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -4129,63 +6560,110 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -4193,6 +6671,14 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -4200,39 +6686,61 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -4251,17 +6759,17 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -4270,7 +6778,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -4282,7 +6790,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -4343,6 +6851,125 @@ module top$lanes$1$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$1
+module top$lanes$1$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$2
+module top$lanes$1$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$3
+module top$lanes$1$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$4
+module top$lanes$1$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$5
+module top$lanes$1$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$6
+module top$lanes$1$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$7
+module top$lanes$1$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$8
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -4445,6 +7072,23 @@ module top$lanes$1$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$gate_q$3
+module top$lanes$1$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$4
 module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2,diffuse,specular);
     
     // Module arguments
@@ -4487,6 +7131,63 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [63:0] specular_table$host_data;
     reg  [9:0] specular_table$address;
     wire  [15:0] specular_table$data;
+    reg  [15:0] ml_q$0$d;
+    wire  [15:0] ml_q$0$q;
+    reg  ml_q$0$clock;
+    reg  [15:0] ml_q$1$d;
+    wire  [15:0] ml_q$1$q;
+    reg  ml_q$1$clock;
+    reg  [15:0] ml_q$2$d;
+    wire  [15:0] ml_q$2$q;
+    reg  ml_q$2$clock;
+    reg  [15:0] mh_q$0$d;
+    wire  [15:0] mh_q$0$q;
+    reg  mh_q$0$clock;
+    reg  [15:0] mh_q$1$d;
+    wire  [15:0] mh_q$1$q;
+    reg  mh_q$1$clock;
+    reg  [15:0] mh_q$2$d;
+    wire  [15:0] mh_q$2$q;
+    reg  mh_q$2$clock;
+    reg  [31:0] p_l$0$d;
+    wire  [31:0] p_l$0$q;
+    reg  p_l$0$clock;
+    reg  [31:0] p_l$1$d;
+    wire  [31:0] p_l$1$q;
+    reg  p_l$1$clock;
+    reg  [31:0] p_l$2$d;
+    wire  [31:0] p_l$2$q;
+    reg  p_l$2$clock;
+    reg  [31:0] p_h$0$d;
+    wire  [31:0] p_h$0$q;
+    reg  p_h$0$clock;
+    reg  [31:0] p_h$1$d;
+    wire  [31:0] p_h$1$q;
+    reg  p_h$1$clock;
+    reg  [31:0] p_h$2$d;
+    wire  [31:0] p_h$2$q;
+    reg  p_h$2$clock;
+    reg  sl_q$0$d;
+    wire  sl_q$0$q;
+    reg  sl_q$0$clock;
+    reg  sl_q$1$d;
+    wire  sl_q$1$q;
+    reg  sl_q$1$clock;
+    reg  sl_q$2$d;
+    wire  sl_q$2$q;
+    reg  sl_q$2$clock;
+    reg  sh_q$0$d;
+    wire  sh_q$0$q;
+    reg  sh_q$0$clock;
+    reg  sh_q$1$d;
+    wire  sh_q$1$q;
+    reg  sh_q$1$clock;
+    reg  sh_q$2$d;
+    wire  sh_q$2$q;
+    reg  sh_q$2$clock;
+    reg  [15:0] n2_q$d;
+    wire  [15:0] n2_q$q;
+    reg  n2_q$clock;
     reg  [31:0] dot_l$d;
     wire  [31:0] dot_l$q;
     reg  dot_l$clock;
@@ -4496,18 +7197,45 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
+    reg  [15:0] d16_l$d;
+    wire  [15:0] d16_l$q;
+    reg  d16_l$clock;
+    reg  [15:0] d16_h$d;
+    wire  [15:0] d16_h$q;
+    reg  d16_h$clock;
+    reg  [15:0] rn_3$d;
+    wire  [15:0] rn_3$q;
+    reg  rn_3$clock;
+    reg  lit_3$d;
+    wire  lit_3$q;
+    reg  lit_3$clock;
     reg  [31:0] t_l$d;
     wire  [31:0] t_l$q;
     reg  t_l$clock;
     reg  [31:0] t_h$d;
     wire  [31:0] t_h$q;
     reg  t_h$clock;
-    reg  lit_2$d;
-    wire  lit_2$q;
-    reg  lit_2$clock;
-    reg  lit_3$d;
-    wire  lit_3$q;
-    reg  lit_3$clock;
+    reg  lit_4$d;
+    wire  lit_4$q;
+    reg  lit_4$clock;
+    reg  [9:0] idx_l$d;
+    wire  [9:0] idx_l$q;
+    reg  idx_l$clock;
+    reg  [9:0] idx_h$d;
+    wire  [9:0] idx_h$q;
+    reg  idx_h$clock;
+    reg  lit_5$d;
+    wire  lit_5$q;
+    reg  lit_5$clock;
+    reg  lit_6$d;
+    wire  lit_6$q;
+    reg  lit_6$clock;
+    reg  [15:0] diffuse_q$d;
+    wire  [15:0] diffuse_q$q;
+    reg  diffuse_q$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
     
     // Local signals
     reg  [15:0] m_l$0;
@@ -4519,17 +7247,13 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] qm$0;
     reg  [15:0] qm$1;
     reg  [15:0] qm$2;
-    reg  [31:0] p_l$0;
-    reg  [31:0] p_l$1;
-    reg  [31:0] p_l$2;
-    reg  [31:0] p_h$0;
-    reg  [31:0] p_h$1;
-    reg  [31:0] p_h$2;
-    reg  [31:0] sum_l;
-    reg  [31:0] sum_h;
+    reg  [31:0] t_pl$0;
+    reg  [31:0] t_pl$1;
+    reg  [31:0] t_pl$2;
+    reg  [31:0] t_ph$0;
+    reg  [31:0] t_ph$1;
+    reg  [31:0] t_ph$2;
     reg  [15:0] n2;
-    reg  [15:0] d16_l;
-    reg  [15:0] d16_h;
     reg  [63:0] i_l;
     reg  [63:0] i_h;
     
@@ -4562,6 +7286,101 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .address(specular_table$address),
         .data(specular_table$data)
     );
+    top$lanes$1$shader$lighting$ml_q$0 ml_q$0(
+        .d(ml_q$0$d),
+        .q(ml_q$0$q),
+        .clock(ml_q$0$clock)
+    );
+    top$lanes$1$shader$lighting$ml_q$1 ml_q$1(
+        .d(ml_q$1$d),
+        .q(ml_q$1$q),
+        .clock(ml_q$1$clock)
+    );
+    top$lanes$1$shader$lighting$ml_q$2 ml_q$2(
+        .d(ml_q$2$d),
+        .q(ml_q$2$q),
+        .clock(ml_q$2$clock)
+    );
+    top$lanes$1$shader$lighting$mh_q$0 mh_q$0(
+        .d(mh_q$0$d),
+        .q(mh_q$0$q),
+        .clock(mh_q$0$clock)
+    );
+    top$lanes$1$shader$lighting$mh_q$1 mh_q$1(
+        .d(mh_q$1$d),
+        .q(mh_q$1$q),
+        .clock(mh_q$1$clock)
+    );
+    top$lanes$1$shader$lighting$mh_q$2 mh_q$2(
+        .d(mh_q$2$d),
+        .q(mh_q$2$q),
+        .clock(mh_q$2$clock)
+    );
+    top$lanes$1$shader$lighting$p_l$0 p_l$0(
+        .d(p_l$0$d),
+        .q(p_l$0$q),
+        .clock(p_l$0$clock)
+    );
+    top$lanes$1$shader$lighting$p_l$1 p_l$1(
+        .d(p_l$1$d),
+        .q(p_l$1$q),
+        .clock(p_l$1$clock)
+    );
+    top$lanes$1$shader$lighting$p_l$2 p_l$2(
+        .d(p_l$2$d),
+        .q(p_l$2$q),
+        .clock(p_l$2$clock)
+    );
+    top$lanes$1$shader$lighting$p_h$0 p_h$0(
+        .d(p_h$0$d),
+        .q(p_h$0$q),
+        .clock(p_h$0$clock)
+    );
+    top$lanes$1$shader$lighting$p_h$1 p_h$1(
+        .d(p_h$1$d),
+        .q(p_h$1$q),
+        .clock(p_h$1$clock)
+    );
+    top$lanes$1$shader$lighting$p_h$2 p_h$2(
+        .d(p_h$2$d),
+        .q(p_h$2$q),
+        .clock(p_h$2$clock)
+    );
+    top$lanes$1$shader$lighting$sl_q$0 sl_q$0(
+        .d(sl_q$0$d),
+        .q(sl_q$0$q),
+        .clock(sl_q$0$clock)
+    );
+    top$lanes$1$shader$lighting$sl_q$1 sl_q$1(
+        .d(sl_q$1$d),
+        .q(sl_q$1$q),
+        .clock(sl_q$1$clock)
+    );
+    top$lanes$1$shader$lighting$sl_q$2 sl_q$2(
+        .d(sl_q$2$d),
+        .q(sl_q$2$q),
+        .clock(sl_q$2$clock)
+    );
+    top$lanes$1$shader$lighting$sh_q$0 sh_q$0(
+        .d(sh_q$0$d),
+        .q(sh_q$0$q),
+        .clock(sh_q$0$clock)
+    );
+    top$lanes$1$shader$lighting$sh_q$1 sh_q$1(
+        .d(sh_q$1$d),
+        .q(sh_q$1$q),
+        .clock(sh_q$1$clock)
+    );
+    top$lanes$1$shader$lighting$sh_q$2 sh_q$2(
+        .d(sh_q$2$d),
+        .q(sh_q$2$q),
+        .clock(sh_q$2$clock)
+    );
+    top$lanes$1$shader$lighting$n2_q n2_q(
+        .d(n2_q$d),
+        .q(n2_q$q),
+        .clock(n2_q$clock)
+    );
     top$lanes$1$shader$lighting$dot_l dot_l(
         .d(dot_l$d),
         .q(dot_l$q),
@@ -4577,6 +7396,26 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(rn$q),
         .clock(rn$clock)
     );
+    top$lanes$1$shader$lighting$d16_l d16_l(
+        .d(d16_l$d),
+        .q(d16_l$q),
+        .clock(d16_l$clock)
+    );
+    top$lanes$1$shader$lighting$d16_h d16_h(
+        .d(d16_h$d),
+        .q(d16_h$q),
+        .clock(d16_h$clock)
+    );
+    top$lanes$1$shader$lighting$rn_3 rn_3(
+        .d(rn_3$d),
+        .q(rn_3$q),
+        .clock(rn_3$clock)
+    );
+    top$lanes$1$shader$lighting$lit_3 lit_3(
+        .d(lit_3$d),
+        .q(lit_3$q),
+        .clock(lit_3$clock)
+    );
     top$lanes$1$shader$lighting$t_l t_l(
         .d(t_l$d),
         .q(t_l$q),
@@ -4587,34 +7426,78 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(t_h$q),
         .clock(t_h$clock)
     );
-    top$lanes$1$shader$lighting$lit_2 lit_2(
-        .d(lit_2$d),
-        .q(lit_2$q),
-        .clock(lit_2$clock)
+    top$lanes$1$shader$lighting$lit_4 lit_4(
+        .d(lit_4$d),
+        .q(lit_4$q),
+        .clock(lit_4$clock)
     );
-    top$lanes$1$shader$lighting$lit_3 lit_3(
-        .d(lit_3$d),
-        .q(lit_3$q),
-        .clock(lit_3$clock)
+    top$lanes$1$shader$lighting$idx_l idx_l(
+        .d(idx_l$d),
+        .q(idx_l$q),
+        .clock(idx_l$clock)
+    );
+    top$lanes$1$shader$lighting$idx_h idx_h(
+        .d(idx_h$d),
+        .q(idx_h$q),
+        .clock(idx_h$clock)
+    );
+    top$lanes$1$shader$lighting$lit_5 lit_5(
+        .d(lit_5$d),
+        .q(lit_5$q),
+        .clock(lit_5$clock)
+    );
+    top$lanes$1$shader$lighting$lit_6 lit_6(
+        .d(lit_6$d),
+        .q(lit_6$q),
+        .clock(lit_6$clock)
+    );
+    top$lanes$1$shader$lighting$diffuse_q diffuse_q(
+        .d(diffuse_q$d),
+        .q(diffuse_q$q),
+        .clock(diffuse_q$clock)
+    );
+    top$lanes$1$shader$lighting$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     
     // Update code
-    reg  [15:0] specular_pass;
     always @(*) begin
+        n2_q$clock = clock;
         dot_l$clock = clock;
         dot_h$clock = clock;
         rn$clock = clock;
+        d16_l$clock = clock;
+        d16_h$clock = clock;
+        rn_3$clock = clock;
+        lit_3$clock = clock;
         t_l$clock = clock;
         t_h$clock = clock;
-        lit_2$clock = clock;
-        lit_3$clock = clock;
+        lit_4$clock = clock;
+        idx_l$clock = clock;
+        idx_h$clock = clock;
+        lit_5$clock = clock;
+        lit_6$clock = clock;
+        diffuse_q$clock = clock;
+        specular_q$clock = clock;
+        n2_q$d = n2_q$q;
         dot_l$d = dot_l$q;
         dot_h$d = dot_h$q;
         rn$d = rn$q;
+        d16_l$d = d16_l$q;
+        d16_h$d = d16_h$q;
+        rn_3$d = rn_3$q;
+        lit_3$d = lit_3$q;
         t_l$d = t_l$q;
         t_h$d = t_h$q;
-        lit_2$d = lit_2$q;
-        lit_3$d = lit_3$q;
+        lit_4$d = lit_4$q;
+        idx_l$d = idx_l$q;
+        idx_h$d = idx_h$q;
+        lit_5$d = lit_5$q;
+        lit_6$d = lit_6$q;
+        diffuse_q$d = diffuse_q$q;
+        specular_q$d = specular_q$q;
         regs$clock = clock;
         regs$host_write = host_write;
         regs$host_address = host_address;
@@ -4627,90 +7510,118 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        sum_l = 'h0;
-        sum_h = 'h0;
-        n2 = 'h0;
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
+        qm$1 = 16'(q_mag$1);
+        qm$2 = 16'(q_mag$2);
         m_l$0 = regs$q$0[('h0)+:(16)];
         if (regs$q$0['hf]) begin
             m_l$0 = 'h0 - regs$q$0[('h0)+:(16)];
+        end
+        m_l$1 = regs$q$0[('h10)+:(16)];
+        if (regs$q$0['h1f]) begin
+            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
+        end
+        m_l$2 = regs$q$0[('h20)+:(16)];
+        if (regs$q$0['h2f]) begin
+            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$0 = regs$q$1[('h0)+:(16)];
         if (regs$q$1['hf]) begin
             m_h$0 = 'h0 - regs$q$1[('h0)+:(16)];
         end
-        p_l$0 = qm$0 * m_l$0;
-        if (q_neg$0 ^ regs$q$0['hf]) begin
-            p_l$0 = 'h0 - (qm$0 * m_l$0);
-        end
-        sum_l = sum_l + p_l$0;
-        p_h$0 = qm$0 * m_h$0;
-        if (q_neg$0 ^ regs$q$1['hf]) begin
-            p_h$0 = 'h0 - (qm$0 * m_h$0);
-        end
-        sum_h = sum_h + p_h$0;
-        n2 = n2 + 16'(qm$0 * qm$0);
-        qm$1 = 16'(q_mag$1);
-        m_l$1 = regs$q$0[('h10)+:(16)];
-        if (regs$q$0['h1f]) begin
-            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
-        end
         m_h$1 = regs$q$1[('h10)+:(16)];
         if (regs$q$1['h1f]) begin
             m_h$1 = 'h0 - regs$q$1[('h10)+:(16)];
-        end
-        p_l$1 = qm$1 * m_l$1;
-        if (q_neg$1 ^ regs$q$0['h1f]) begin
-            p_l$1 = 'h0 - (qm$1 * m_l$1);
-        end
-        sum_l = sum_l + p_l$1;
-        p_h$1 = qm$1 * m_h$1;
-        if (q_neg$1 ^ regs$q$1['h1f]) begin
-            p_h$1 = 'h0 - (qm$1 * m_h$1);
-        end
-        sum_h = sum_h + p_h$1;
-        n2 = n2 + 16'(qm$1 * qm$1);
-        qm$2 = 16'(q_mag$2);
-        m_l$2 = regs$q$0[('h20)+:(16)];
-        if (regs$q$0['h2f]) begin
-            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$2 = regs$q$1[('h20)+:(16)];
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
-        p_l$2 = qm$2 * m_l$2;
-        if (q_neg$2 ^ regs$q$0['h2f]) begin
-            p_l$2 = 'h0 - (qm$2 * m_l$2);
+        sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
+        sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
+        sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
+        sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
+        sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
+        sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
+        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2_q$d = n2;
+        t_pl$0 = p_l$0$q;
+        if (sl_q$0$q) begin
+            t_pl$0 = 'h0 - p_l$0$q;
         end
-        sum_l = sum_l + p_l$2;
-        p_h$2 = qm$2 * m_h$2;
-        if (q_neg$2 ^ regs$q$1['h2f]) begin
-            p_h$2 = 'h0 - (qm$2 * m_h$2);
+        t_ph$0 = p_h$0$q;
+        if (sh_q$0$q) begin
+            t_ph$0 = 'h0 - p_h$0$q;
         end
-        sum_h = sum_h + p_h$2;
-        n2 = n2 + 16'(qm$2 * qm$2);
-        dot_l$d = sum_l;
-        dot_h$d = sum_h;
-        rnorm$address = 10'(n2);
+        t_pl$1 = p_l$1$q;
+        if (sl_q$1$q) begin
+            t_pl$1 = 'h0 - p_l$1$q;
+        end
+        t_ph$1 = p_h$1$q;
+        if (sh_q$1$q) begin
+            t_ph$1 = 'h0 - p_h$1$q;
+        end
+        t_pl$2 = p_l$2$q;
+        if (sl_q$2$q) begin
+            t_pl$2 = 'h0 - p_l$2$q;
+        end
+        t_ph$2 = p_h$2$q;
+        if (sh_q$2$q) begin
+            t_ph$2 = 'h0 - p_h$2$q;
+        end
+        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
+        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        rnorm$address = 10'(n2_q$q);
         rn$d = rnorm$data;
-        d16_l = dot_l$q[('h0)+:(16)];
+        d16_l$d = dot_l$q[('h0)+:(16)];
         if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
-            d16_l = 'h0;
+            d16_l$d = 'h0;
         end
         else if (dot_l$q > 'hffff) begin
-            d16_l = 'hffff;
+            d16_l$d = 'hffff;
         end
-        d16_h = dot_h$q[('h0)+:(16)];
+        d16_h$d = dot_h$q[('h0)+:(16)];
         if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
-            d16_h = 'h0;
+            d16_h$d = 'h0;
         end
         else if (dot_h$q > 'hffff) begin
-            d16_h = 'hffff;
+            d16_h$d = 'hffff;
         end
-        t_l$d = d16_l * rn$q;
-        t_h$d = d16_h * rn$q;
-        lit_2$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        rn_3$d = rn$q;
+        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        t_l$d = d16_l$q * rn_3$q;
+        t_h$d = d16_h$q * rn_3$q;
+        lit_4$d = lit_3$q;
         i_l = ((64'(t_l$q) << 'ha) - 64'(t_l$q) + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
@@ -4719,18 +7630,73 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (i_h > last) begin
             i_h = last;
         end
-        diffuse_table$address = 10'(i_l);
-        specular_table$address = 10'(i_h);
-        lit_3$d = lit_2$q;
-        diffuse = diffuse_table$data;
-        specular_pass = 'h0;
-        if (lit_3$q) begin
-            specular_pass = specular_table$data;
+        idx_l$d = 10'(i_l);
+        idx_h$d = 10'(i_h);
+        lit_5$d = lit_4$q;
+        diffuse_table$address = idx_l$q;
+        specular_table$address = idx_h$q;
+        lit_6$d = lit_5$q;
+        diffuse_q$d = diffuse_table$data;
+        specular_q$d = 'h0;
+        if (lit_6$q) begin
+            specular_q$d = specular_table$data;
         end
-        specular = specular_pass;
+        diffuse = diffuse_q$q;
+        specular = specular_q$q;
     end
     
 endmodule // top$lanes$1$shader$lighting
+module top$lanes$1$shader$lighting$d16_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$d16_h
+module top$lanes$1$shader$lighting$d16_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$d16_l
+module top$lanes$1$shader$lighting$diffuse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$diffuse_q
 module top$lanes$1$shader$lighting$diffuse_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -4835,23 +7801,40 @@ module top$lanes$1$shader$lighting$dot_l(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$dot_l
-module top$lanes$1$shader$lighting$lit_2(d,q,clock);
+module top$lanes$1$shader$lighting$idx_h(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$lanes$1$shader$lighting$lit_2
+endmodule // top$lanes$1$shader$lighting$idx_h
+module top$lanes$1$shader$lighting$idx_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$idx_l
 module top$lanes$1$shader$lighting$lit_3(d,q,clock);
     
     // Module arguments
@@ -4869,6 +7852,278 @@ module top$lanes$1$shader$lighting$lit_3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$lit_3
+module top$lanes$1$shader$lighting$lit_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$lit_4
+module top$lanes$1$shader$lighting$lit_5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$lit_5
+module top$lanes$1$shader$lighting$lit_6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$lit_6
+module top$lanes$1$shader$lighting$mh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$mh_q$0
+module top$lanes$1$shader$lighting$mh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$mh_q$1
+module top$lanes$1$shader$lighting$mh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$mh_q$2
+module top$lanes$1$shader$lighting$ml_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$ml_q$0
+module top$lanes$1$shader$lighting$ml_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$ml_q$1
+module top$lanes$1$shader$lighting$ml_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$ml_q$2
+module top$lanes$1$shader$lighting$n2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$n2_q
+module top$lanes$1$shader$lighting$p_h$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_h$0
+module top$lanes$1$shader$lighting$p_h$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_h$1
+module top$lanes$1$shader$lighting$p_h$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_h$2
+module top$lanes$1$shader$lighting$p_l$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_l$0
+module top$lanes$1$shader$lighting$p_l$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_l$1
+module top$lanes$1$shader$lighting$p_l$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$p_l$2
 module top$lanes$1$shader$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -4971,6 +8226,23 @@ module top$lanes$1$shader$lighting$rn(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$rn
+module top$lanes$1$shader$lighting$rn_3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$rn_3
 module top$lanes$1$shader$lighting$rnorm(address,data);
     
     // Module arguments
@@ -6008,6 +9280,125 @@ module top$lanes$1$shader$lighting$rnorm(address,data);
     endcase
             
 endmodule // top$lanes$1$shader$lighting$rnorm
+module top$lanes$1$shader$lighting$sh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sh_q$0
+module top$lanes$1$shader$lighting$sh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sh_q$1
+module top$lanes$1$shader$lighting$sh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sh_q$2
+module top$lanes$1$shader$lighting$sl_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sl_q$0
+module top$lanes$1$shader$lighting$sl_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sl_q$1
+module top$lanes$1$shader$lighting$sl_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$sl_q$2
+module top$lanes$1$shader$lighting$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lighting$specular_q
 module top$lanes$1$shader$lighting$specular_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -6112,9 +9503,10 @@ module top$lanes$1$shader$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$t_l
-module top$lanes$1$shader$lit_b(a,b,y);
+module top$lanes$1$shader$lit_b(clock,a,b,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6124,14 +9516,25 @@ module top$lanes$1$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6139,9 +9542,27 @@ module top$lanes$1$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_b
-module top$lanes$1$shader$lit_g(a,b,y);
+module top$lanes$1$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_b$t
+module top$lanes$1$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6151,14 +9572,25 @@ module top$lanes$1$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6166,9 +9598,27 @@ module top$lanes$1$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_g
-module top$lanes$1$shader$lit_r(a,b,y);
+module top$lanes$1$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_g$t
+module top$lanes$1$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6178,14 +9628,25 @@ module top$lanes$1$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6193,6 +9654,23 @@ module top$lanes$1$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
+module top$lanes$1$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_r$t
 module top$lanes$1$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -6331,9 +9809,146 @@ module top$lanes$1$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lut_q$3
-module top$lanes$1$shader$mul_b(a,b,y);
+module top$lanes$1$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$4
+module top$lanes$1$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$5
+module top$lanes$1$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$6
+module top$lanes$1$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$7
+module top$lanes$1$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$8
+module top$lanes$1$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$0
+module top$lanes$1$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$1
+module top$lanes$1$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$2
+module top$lanes$1$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6343,14 +9958,25 @@ module top$lanes$1$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6358,9 +9984,27 @@ module top$lanes$1$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_b
-module top$lanes$1$shader$mul_g(a,b,y);
+module top$lanes$1$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_b$t
+module top$lanes$1$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6370,14 +10014,25 @@ module top$lanes$1$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6385,9 +10040,27 @@ module top$lanes$1$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_g
-module top$lanes$1$shader$mul_r(a,b,y);
+module top$lanes$1$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_g$t
+module top$lanes$1$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -6397,14 +10070,25 @@ module top$lanes$1$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$1$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -6412,6 +10096,74 @@ module top$lanes$1$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_r
+module top$lanes$1$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_r$t
+module top$lanes$1$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$0
+module top$lanes$1$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$1
+module top$lanes$1$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$2
 module top$lanes$1$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2);
     
     // Module arguments
@@ -6485,6 +10237,27 @@ module top$lanes$1$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [7:0] s_q2$d;
+    wire  [7:0] s_q2$q;
+    reg  s_q2$clock;
+    reg  neg_q2$0$d;
+    wire  neg_q2$0$q;
+    reg  neg_q2$0$clock;
+    reg  neg_q2$1$d;
+    wire  neg_q2$1$q;
+    reg  neg_q2$1$clock;
+    reg  neg_q2$2$d;
+    wire  neg_q2$2$q;
+    reg  neg_q2$2$clock;
+    reg  [31:0] sum_q$0$d;
+    wire  [31:0] sum_q$0$q;
+    reg  sum_q$0$clock;
+    reg  [31:0] sum_q$1$d;
+    wire  [31:0] sum_q$1$q;
+    reg  sum_q$1$clock;
+    reg  [31:0] sum_q$2$d;
+    wire  [31:0] sum_q$2$q;
+    reg  sum_q$2$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -6548,6 +10321,41 @@ module top$lanes$1$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$lanes$1$shader$normal$s_q2 s_q2(
+        .d(s_q2$d),
+        .q(s_q2$q),
+        .clock(s_q2$clock)
+    );
+    top$lanes$1$shader$normal$neg_q2$0 neg_q2$0(
+        .d(neg_q2$0$d),
+        .q(neg_q2$0$q),
+        .clock(neg_q2$0$clock)
+    );
+    top$lanes$1$shader$normal$neg_q2$1 neg_q2$1(
+        .d(neg_q2$1$d),
+        .q(neg_q2$1$q),
+        .clock(neg_q2$1$clock)
+    );
+    top$lanes$1$shader$normal$neg_q2$2 neg_q2$2(
+        .d(neg_q2$2$d),
+        .q(neg_q2$2$q),
+        .clock(neg_q2$2$clock)
+    );
+    top$lanes$1$shader$normal$sum_q$0 sum_q$0(
+        .d(sum_q$0$d),
+        .q(sum_q$0$q),
+        .clock(sum_q$0$clock)
+    );
+    top$lanes$1$shader$normal$sum_q$1 sum_q$1(
+        .d(sum_q$1$d),
+        .q(sum_q$1$q),
+        .clock(sum_q$1$clock)
+    );
+    top$lanes$1$shader$normal$sum_q$2 sum_q$2(
+        .d(sum_q$2$d),
+        .q(sum_q$2$q),
+        .clock(sum_q$2$clock)
+    );
     top$lanes$1$shader$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
         .q(out_neg$0$q),
@@ -6582,14 +10390,10 @@ module top$lanes$1$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     // Update code
     always @(*) begin
         s_q$clock = clock;
+        s_q2$clock = clock;
         s_q$d = s_q$q;
-        m = mag$0;
-        if (mag$1 > m) begin
-            m = mag$1;
-        end
-        if (mag$2 > m) begin
-            m = mag$2;
-        end
+        s_q2$d = s_q2$q;
+        m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
             bl = bit_len$0;
@@ -6695,55 +10499,68 @@ module top$lanes$1$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         if (s_q$q > 'h0) begin
             half = (32'('h1) << s_q$q) >> 'h1;
         end
+        s_q2$d = s_q$q;
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
+        neg_q2$0$clock = clock;
+        sum_q$0$clock = clock;
         out_neg$0$clock = clock;
         out_mag$0$clock = clock;
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
-        q$0 = (mag_q$0$q + half) >> s_q$q;
+        neg_q2$0$d = neg_q$0$q;
+        sum_q$0$d = mag_q$0$q + half;
         if (neg_q$0$q & (s_q$q > 'h0)) begin
-            q$0 = (mag_q$0$q + half - 'h1) >> s_q$q;
+            sum_q$0$d = mag_q$0$q + half - 'h1;
         end
+        q$0 = sum_q$0$q >> s_q2$q;
         if (q$0 > 'hf) begin
             q$0 = 'hf;
         end
         out_mag$0$d = q$0[('h0)+:(4)];
-        out_neg$0$d = neg_q$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
         mag_q$1$clock = clock;
+        neg_q2$1$clock = clock;
+        sum_q$1$clock = clock;
         out_neg$1$clock = clock;
         out_mag$1$clock = clock;
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
-        q$1 = (mag_q$1$q + half) >> s_q$q;
+        neg_q2$1$d = neg_q$1$q;
+        sum_q$1$d = mag_q$1$q + half;
         if (neg_q$1$q & (s_q$q > 'h0)) begin
-            q$1 = (mag_q$1$q + half - 'h1) >> s_q$q;
+            sum_q$1$d = mag_q$1$q + half - 'h1;
         end
+        q$1 = sum_q$1$q >> s_q2$q;
         if (q$1 > 'hf) begin
             q$1 = 'hf;
         end
         out_mag$1$d = q$1[('h0)+:(4)];
-        out_neg$1$d = neg_q$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
         mag_q$2$clock = clock;
+        neg_q2$2$clock = clock;
+        sum_q$2$clock = clock;
         out_neg$2$clock = clock;
         out_mag$2$clock = clock;
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
-        q$2 = (mag_q$2$q + half) >> s_q$q;
+        neg_q2$2$d = neg_q$2$q;
+        sum_q$2$d = mag_q$2$q + half;
         if (neg_q$2$q & (s_q$q > 'h0)) begin
-            q$2 = (mag_q$2$q + half - 'h1) >> s_q$q;
+            sum_q$2$d = mag_q$2$q + half - 'h1;
         end
+        q$2 = sum_q$2$q >> s_q2$q;
         if (q$2 > 'hf) begin
             q$2 = 'hf;
         end
         out_mag$2$d = q$2[('h0)+:(4)];
-        out_neg$2$d = neg_q$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
@@ -6851,6 +10668,57 @@ module top$lanes$1$shader$normal$neg_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$normal$neg_q$2
+module top$lanes$1$shader$normal$neg_q2$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$neg_q2$0
+module top$lanes$1$shader$normal$neg_q2$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$neg_q2$1
+module top$lanes$1$shader$normal$neg_q2$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$neg_q2$2
 module top$lanes$1$shader$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -6970,6 +10838,74 @@ module top$lanes$1$shader$normal$s_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$normal$s_q
+module top$lanes$1$shader$normal$s_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$s_q2
+module top$lanes$1$shader$normal$sum_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$sum_q$0
+module top$lanes$1$shader$normal$sum_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$sum_q$1
+module top$lanes$1$shader$normal$sum_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$normal$sum_q$2
 module top$lanes$1$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -7038,6 +10974,23 @@ module top$lanes$1$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$row_q$2
+module top$lanes$1$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$3
 module top$lanes$1$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -7089,6 +11042,23 @@ module top$lanes$1$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$shaded_q$2
+module top$lanes$1$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$specular_q
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -7123,6 +11093,91 @@ module top$lanes$1$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$1
+module top$lanes$1$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$10
+module top$lanes$1$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$11
+module top$lanes$1$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$12
+module top$lanes$1$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$13
+module top$lanes$1$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$14
 module top$lanes$1$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -7208,6 +11263,57 @@ module top$lanes$1$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$6
+module top$lanes$1$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$7
+module top$lanes$1$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$8
+module top$lanes$1$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$9
 module top$lanes$1$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -7242,6 +11348,74 @@ module top$lanes$1$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$1
+module top$lanes$1$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$10
+module top$lanes$1$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$11
+module top$lanes$1$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$12
+module top$lanes$1$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$13
 module top$lanes$1$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -7310,6 +11484,74 @@ module top$lanes$1$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$5
+module top$lanes$1$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$6
+module top$lanes$1$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$7
+module top$lanes$1$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$8
+module top$lanes$1$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$9
 module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -7388,6 +11630,24 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse;
     wire  [15:0] lighting$specular;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -7397,6 +11657,9 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -7409,6 +11672,21 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -7421,12 +11699,36 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -7445,6 +11747,30 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -7466,12 +11792,42 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -7484,12 +11840,15 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -7557,6 +11916,36 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .diffuse(lighting$diffuse),
         .specular(lighting$specular)
     );
+    top$lanes$2$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$2$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$2$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$2$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$2$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$2$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$2$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -7571,6 +11960,11 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$2$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$2$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -7592,6 +11986,31 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$2$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$2$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$2$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$2$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$2$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$2$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -7612,6 +12031,11 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$2$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$2$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -7621,6 +12045,41 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$2$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$2$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$2$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$2$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$2$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$2$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$2$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$2$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -7651,6 +12110,46 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$2$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$2$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$2$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$2$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$2$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$2$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$2$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$2$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$2$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -7687,17 +12186,65 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$2$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$2$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$2$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$2$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$2$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$2$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$2$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$2$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$2$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$2$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$2$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$2$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -7718,16 +12265,19 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$2$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$2$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$2$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -7760,10 +12310,12 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -7785,63 +12337,110 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -7849,6 +12448,14 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -7856,39 +12463,61 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -7907,17 +12536,17 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -7926,7 +12555,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -7938,7 +12567,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -7999,6 +12628,125 @@ module top$lanes$2$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$alpha_q$1
+module top$lanes$2$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$2
+module top$lanes$2$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$3
+module top$lanes$2$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$4
+module top$lanes$2$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$5
+module top$lanes$2$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$6
+module top$lanes$2$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$7
+module top$lanes$2$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$8
 module top$lanes$2$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -8101,6 +12849,23 @@ module top$lanes$2$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$gate_q$3
+module top$lanes$2$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$4
 module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2,diffuse,specular);
     
     // Module arguments
@@ -8143,6 +12908,63 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [63:0] specular_table$host_data;
     reg  [9:0] specular_table$address;
     wire  [15:0] specular_table$data;
+    reg  [15:0] ml_q$0$d;
+    wire  [15:0] ml_q$0$q;
+    reg  ml_q$0$clock;
+    reg  [15:0] ml_q$1$d;
+    wire  [15:0] ml_q$1$q;
+    reg  ml_q$1$clock;
+    reg  [15:0] ml_q$2$d;
+    wire  [15:0] ml_q$2$q;
+    reg  ml_q$2$clock;
+    reg  [15:0] mh_q$0$d;
+    wire  [15:0] mh_q$0$q;
+    reg  mh_q$0$clock;
+    reg  [15:0] mh_q$1$d;
+    wire  [15:0] mh_q$1$q;
+    reg  mh_q$1$clock;
+    reg  [15:0] mh_q$2$d;
+    wire  [15:0] mh_q$2$q;
+    reg  mh_q$2$clock;
+    reg  [31:0] p_l$0$d;
+    wire  [31:0] p_l$0$q;
+    reg  p_l$0$clock;
+    reg  [31:0] p_l$1$d;
+    wire  [31:0] p_l$1$q;
+    reg  p_l$1$clock;
+    reg  [31:0] p_l$2$d;
+    wire  [31:0] p_l$2$q;
+    reg  p_l$2$clock;
+    reg  [31:0] p_h$0$d;
+    wire  [31:0] p_h$0$q;
+    reg  p_h$0$clock;
+    reg  [31:0] p_h$1$d;
+    wire  [31:0] p_h$1$q;
+    reg  p_h$1$clock;
+    reg  [31:0] p_h$2$d;
+    wire  [31:0] p_h$2$q;
+    reg  p_h$2$clock;
+    reg  sl_q$0$d;
+    wire  sl_q$0$q;
+    reg  sl_q$0$clock;
+    reg  sl_q$1$d;
+    wire  sl_q$1$q;
+    reg  sl_q$1$clock;
+    reg  sl_q$2$d;
+    wire  sl_q$2$q;
+    reg  sl_q$2$clock;
+    reg  sh_q$0$d;
+    wire  sh_q$0$q;
+    reg  sh_q$0$clock;
+    reg  sh_q$1$d;
+    wire  sh_q$1$q;
+    reg  sh_q$1$clock;
+    reg  sh_q$2$d;
+    wire  sh_q$2$q;
+    reg  sh_q$2$clock;
+    reg  [15:0] n2_q$d;
+    wire  [15:0] n2_q$q;
+    reg  n2_q$clock;
     reg  [31:0] dot_l$d;
     wire  [31:0] dot_l$q;
     reg  dot_l$clock;
@@ -8152,18 +12974,45 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
+    reg  [15:0] d16_l$d;
+    wire  [15:0] d16_l$q;
+    reg  d16_l$clock;
+    reg  [15:0] d16_h$d;
+    wire  [15:0] d16_h$q;
+    reg  d16_h$clock;
+    reg  [15:0] rn_3$d;
+    wire  [15:0] rn_3$q;
+    reg  rn_3$clock;
+    reg  lit_3$d;
+    wire  lit_3$q;
+    reg  lit_3$clock;
     reg  [31:0] t_l$d;
     wire  [31:0] t_l$q;
     reg  t_l$clock;
     reg  [31:0] t_h$d;
     wire  [31:0] t_h$q;
     reg  t_h$clock;
-    reg  lit_2$d;
-    wire  lit_2$q;
-    reg  lit_2$clock;
-    reg  lit_3$d;
-    wire  lit_3$q;
-    reg  lit_3$clock;
+    reg  lit_4$d;
+    wire  lit_4$q;
+    reg  lit_4$clock;
+    reg  [9:0] idx_l$d;
+    wire  [9:0] idx_l$q;
+    reg  idx_l$clock;
+    reg  [9:0] idx_h$d;
+    wire  [9:0] idx_h$q;
+    reg  idx_h$clock;
+    reg  lit_5$d;
+    wire  lit_5$q;
+    reg  lit_5$clock;
+    reg  lit_6$d;
+    wire  lit_6$q;
+    reg  lit_6$clock;
+    reg  [15:0] diffuse_q$d;
+    wire  [15:0] diffuse_q$q;
+    reg  diffuse_q$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
     
     // Local signals
     reg  [15:0] m_l$0;
@@ -8175,17 +13024,13 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] qm$0;
     reg  [15:0] qm$1;
     reg  [15:0] qm$2;
-    reg  [31:0] p_l$0;
-    reg  [31:0] p_l$1;
-    reg  [31:0] p_l$2;
-    reg  [31:0] p_h$0;
-    reg  [31:0] p_h$1;
-    reg  [31:0] p_h$2;
-    reg  [31:0] sum_l;
-    reg  [31:0] sum_h;
+    reg  [31:0] t_pl$0;
+    reg  [31:0] t_pl$1;
+    reg  [31:0] t_pl$2;
+    reg  [31:0] t_ph$0;
+    reg  [31:0] t_ph$1;
+    reg  [31:0] t_ph$2;
     reg  [15:0] n2;
-    reg  [15:0] d16_l;
-    reg  [15:0] d16_h;
     reg  [63:0] i_l;
     reg  [63:0] i_h;
     
@@ -8218,6 +13063,101 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .address(specular_table$address),
         .data(specular_table$data)
     );
+    top$lanes$2$shader$lighting$ml_q$0 ml_q$0(
+        .d(ml_q$0$d),
+        .q(ml_q$0$q),
+        .clock(ml_q$0$clock)
+    );
+    top$lanes$2$shader$lighting$ml_q$1 ml_q$1(
+        .d(ml_q$1$d),
+        .q(ml_q$1$q),
+        .clock(ml_q$1$clock)
+    );
+    top$lanes$2$shader$lighting$ml_q$2 ml_q$2(
+        .d(ml_q$2$d),
+        .q(ml_q$2$q),
+        .clock(ml_q$2$clock)
+    );
+    top$lanes$2$shader$lighting$mh_q$0 mh_q$0(
+        .d(mh_q$0$d),
+        .q(mh_q$0$q),
+        .clock(mh_q$0$clock)
+    );
+    top$lanes$2$shader$lighting$mh_q$1 mh_q$1(
+        .d(mh_q$1$d),
+        .q(mh_q$1$q),
+        .clock(mh_q$1$clock)
+    );
+    top$lanes$2$shader$lighting$mh_q$2 mh_q$2(
+        .d(mh_q$2$d),
+        .q(mh_q$2$q),
+        .clock(mh_q$2$clock)
+    );
+    top$lanes$2$shader$lighting$p_l$0 p_l$0(
+        .d(p_l$0$d),
+        .q(p_l$0$q),
+        .clock(p_l$0$clock)
+    );
+    top$lanes$2$shader$lighting$p_l$1 p_l$1(
+        .d(p_l$1$d),
+        .q(p_l$1$q),
+        .clock(p_l$1$clock)
+    );
+    top$lanes$2$shader$lighting$p_l$2 p_l$2(
+        .d(p_l$2$d),
+        .q(p_l$2$q),
+        .clock(p_l$2$clock)
+    );
+    top$lanes$2$shader$lighting$p_h$0 p_h$0(
+        .d(p_h$0$d),
+        .q(p_h$0$q),
+        .clock(p_h$0$clock)
+    );
+    top$lanes$2$shader$lighting$p_h$1 p_h$1(
+        .d(p_h$1$d),
+        .q(p_h$1$q),
+        .clock(p_h$1$clock)
+    );
+    top$lanes$2$shader$lighting$p_h$2 p_h$2(
+        .d(p_h$2$d),
+        .q(p_h$2$q),
+        .clock(p_h$2$clock)
+    );
+    top$lanes$2$shader$lighting$sl_q$0 sl_q$0(
+        .d(sl_q$0$d),
+        .q(sl_q$0$q),
+        .clock(sl_q$0$clock)
+    );
+    top$lanes$2$shader$lighting$sl_q$1 sl_q$1(
+        .d(sl_q$1$d),
+        .q(sl_q$1$q),
+        .clock(sl_q$1$clock)
+    );
+    top$lanes$2$shader$lighting$sl_q$2 sl_q$2(
+        .d(sl_q$2$d),
+        .q(sl_q$2$q),
+        .clock(sl_q$2$clock)
+    );
+    top$lanes$2$shader$lighting$sh_q$0 sh_q$0(
+        .d(sh_q$0$d),
+        .q(sh_q$0$q),
+        .clock(sh_q$0$clock)
+    );
+    top$lanes$2$shader$lighting$sh_q$1 sh_q$1(
+        .d(sh_q$1$d),
+        .q(sh_q$1$q),
+        .clock(sh_q$1$clock)
+    );
+    top$lanes$2$shader$lighting$sh_q$2 sh_q$2(
+        .d(sh_q$2$d),
+        .q(sh_q$2$q),
+        .clock(sh_q$2$clock)
+    );
+    top$lanes$2$shader$lighting$n2_q n2_q(
+        .d(n2_q$d),
+        .q(n2_q$q),
+        .clock(n2_q$clock)
+    );
     top$lanes$2$shader$lighting$dot_l dot_l(
         .d(dot_l$d),
         .q(dot_l$q),
@@ -8233,6 +13173,26 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(rn$q),
         .clock(rn$clock)
     );
+    top$lanes$2$shader$lighting$d16_l d16_l(
+        .d(d16_l$d),
+        .q(d16_l$q),
+        .clock(d16_l$clock)
+    );
+    top$lanes$2$shader$lighting$d16_h d16_h(
+        .d(d16_h$d),
+        .q(d16_h$q),
+        .clock(d16_h$clock)
+    );
+    top$lanes$2$shader$lighting$rn_3 rn_3(
+        .d(rn_3$d),
+        .q(rn_3$q),
+        .clock(rn_3$clock)
+    );
+    top$lanes$2$shader$lighting$lit_3 lit_3(
+        .d(lit_3$d),
+        .q(lit_3$q),
+        .clock(lit_3$clock)
+    );
     top$lanes$2$shader$lighting$t_l t_l(
         .d(t_l$d),
         .q(t_l$q),
@@ -8243,34 +13203,78 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(t_h$q),
         .clock(t_h$clock)
     );
-    top$lanes$2$shader$lighting$lit_2 lit_2(
-        .d(lit_2$d),
-        .q(lit_2$q),
-        .clock(lit_2$clock)
+    top$lanes$2$shader$lighting$lit_4 lit_4(
+        .d(lit_4$d),
+        .q(lit_4$q),
+        .clock(lit_4$clock)
     );
-    top$lanes$2$shader$lighting$lit_3 lit_3(
-        .d(lit_3$d),
-        .q(lit_3$q),
-        .clock(lit_3$clock)
+    top$lanes$2$shader$lighting$idx_l idx_l(
+        .d(idx_l$d),
+        .q(idx_l$q),
+        .clock(idx_l$clock)
+    );
+    top$lanes$2$shader$lighting$idx_h idx_h(
+        .d(idx_h$d),
+        .q(idx_h$q),
+        .clock(idx_h$clock)
+    );
+    top$lanes$2$shader$lighting$lit_5 lit_5(
+        .d(lit_5$d),
+        .q(lit_5$q),
+        .clock(lit_5$clock)
+    );
+    top$lanes$2$shader$lighting$lit_6 lit_6(
+        .d(lit_6$d),
+        .q(lit_6$q),
+        .clock(lit_6$clock)
+    );
+    top$lanes$2$shader$lighting$diffuse_q diffuse_q(
+        .d(diffuse_q$d),
+        .q(diffuse_q$q),
+        .clock(diffuse_q$clock)
+    );
+    top$lanes$2$shader$lighting$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     
     // Update code
-    reg  [15:0] specular_pass;
     always @(*) begin
+        n2_q$clock = clock;
         dot_l$clock = clock;
         dot_h$clock = clock;
         rn$clock = clock;
+        d16_l$clock = clock;
+        d16_h$clock = clock;
+        rn_3$clock = clock;
+        lit_3$clock = clock;
         t_l$clock = clock;
         t_h$clock = clock;
-        lit_2$clock = clock;
-        lit_3$clock = clock;
+        lit_4$clock = clock;
+        idx_l$clock = clock;
+        idx_h$clock = clock;
+        lit_5$clock = clock;
+        lit_6$clock = clock;
+        diffuse_q$clock = clock;
+        specular_q$clock = clock;
+        n2_q$d = n2_q$q;
         dot_l$d = dot_l$q;
         dot_h$d = dot_h$q;
         rn$d = rn$q;
+        d16_l$d = d16_l$q;
+        d16_h$d = d16_h$q;
+        rn_3$d = rn_3$q;
+        lit_3$d = lit_3$q;
         t_l$d = t_l$q;
         t_h$d = t_h$q;
-        lit_2$d = lit_2$q;
-        lit_3$d = lit_3$q;
+        lit_4$d = lit_4$q;
+        idx_l$d = idx_l$q;
+        idx_h$d = idx_h$q;
+        lit_5$d = lit_5$q;
+        lit_6$d = lit_6$q;
+        diffuse_q$d = diffuse_q$q;
+        specular_q$d = specular_q$q;
         regs$clock = clock;
         regs$host_write = host_write;
         regs$host_address = host_address;
@@ -8283,90 +13287,118 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        sum_l = 'h0;
-        sum_h = 'h0;
-        n2 = 'h0;
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
+        qm$1 = 16'(q_mag$1);
+        qm$2 = 16'(q_mag$2);
         m_l$0 = regs$q$0[('h0)+:(16)];
         if (regs$q$0['hf]) begin
             m_l$0 = 'h0 - regs$q$0[('h0)+:(16)];
+        end
+        m_l$1 = regs$q$0[('h10)+:(16)];
+        if (regs$q$0['h1f]) begin
+            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
+        end
+        m_l$2 = regs$q$0[('h20)+:(16)];
+        if (regs$q$0['h2f]) begin
+            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$0 = regs$q$1[('h0)+:(16)];
         if (regs$q$1['hf]) begin
             m_h$0 = 'h0 - regs$q$1[('h0)+:(16)];
         end
-        p_l$0 = qm$0 * m_l$0;
-        if (q_neg$0 ^ regs$q$0['hf]) begin
-            p_l$0 = 'h0 - (qm$0 * m_l$0);
-        end
-        sum_l = sum_l + p_l$0;
-        p_h$0 = qm$0 * m_h$0;
-        if (q_neg$0 ^ regs$q$1['hf]) begin
-            p_h$0 = 'h0 - (qm$0 * m_h$0);
-        end
-        sum_h = sum_h + p_h$0;
-        n2 = n2 + 16'(qm$0 * qm$0);
-        qm$1 = 16'(q_mag$1);
-        m_l$1 = regs$q$0[('h10)+:(16)];
-        if (regs$q$0['h1f]) begin
-            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
-        end
         m_h$1 = regs$q$1[('h10)+:(16)];
         if (regs$q$1['h1f]) begin
             m_h$1 = 'h0 - regs$q$1[('h10)+:(16)];
-        end
-        p_l$1 = qm$1 * m_l$1;
-        if (q_neg$1 ^ regs$q$0['h1f]) begin
-            p_l$1 = 'h0 - (qm$1 * m_l$1);
-        end
-        sum_l = sum_l + p_l$1;
-        p_h$1 = qm$1 * m_h$1;
-        if (q_neg$1 ^ regs$q$1['h1f]) begin
-            p_h$1 = 'h0 - (qm$1 * m_h$1);
-        end
-        sum_h = sum_h + p_h$1;
-        n2 = n2 + 16'(qm$1 * qm$1);
-        qm$2 = 16'(q_mag$2);
-        m_l$2 = regs$q$0[('h20)+:(16)];
-        if (regs$q$0['h2f]) begin
-            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$2 = regs$q$1[('h20)+:(16)];
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
-        p_l$2 = qm$2 * m_l$2;
-        if (q_neg$2 ^ regs$q$0['h2f]) begin
-            p_l$2 = 'h0 - (qm$2 * m_l$2);
+        sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
+        sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
+        sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
+        sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
+        sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
+        sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
+        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2_q$d = n2;
+        t_pl$0 = p_l$0$q;
+        if (sl_q$0$q) begin
+            t_pl$0 = 'h0 - p_l$0$q;
         end
-        sum_l = sum_l + p_l$2;
-        p_h$2 = qm$2 * m_h$2;
-        if (q_neg$2 ^ regs$q$1['h2f]) begin
-            p_h$2 = 'h0 - (qm$2 * m_h$2);
+        t_ph$0 = p_h$0$q;
+        if (sh_q$0$q) begin
+            t_ph$0 = 'h0 - p_h$0$q;
         end
-        sum_h = sum_h + p_h$2;
-        n2 = n2 + 16'(qm$2 * qm$2);
-        dot_l$d = sum_l;
-        dot_h$d = sum_h;
-        rnorm$address = 10'(n2);
+        t_pl$1 = p_l$1$q;
+        if (sl_q$1$q) begin
+            t_pl$1 = 'h0 - p_l$1$q;
+        end
+        t_ph$1 = p_h$1$q;
+        if (sh_q$1$q) begin
+            t_ph$1 = 'h0 - p_h$1$q;
+        end
+        t_pl$2 = p_l$2$q;
+        if (sl_q$2$q) begin
+            t_pl$2 = 'h0 - p_l$2$q;
+        end
+        t_ph$2 = p_h$2$q;
+        if (sh_q$2$q) begin
+            t_ph$2 = 'h0 - p_h$2$q;
+        end
+        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
+        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        rnorm$address = 10'(n2_q$q);
         rn$d = rnorm$data;
-        d16_l = dot_l$q[('h0)+:(16)];
+        d16_l$d = dot_l$q[('h0)+:(16)];
         if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
-            d16_l = 'h0;
+            d16_l$d = 'h0;
         end
         else if (dot_l$q > 'hffff) begin
-            d16_l = 'hffff;
+            d16_l$d = 'hffff;
         end
-        d16_h = dot_h$q[('h0)+:(16)];
+        d16_h$d = dot_h$q[('h0)+:(16)];
         if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
-            d16_h = 'h0;
+            d16_h$d = 'h0;
         end
         else if (dot_h$q > 'hffff) begin
-            d16_h = 'hffff;
+            d16_h$d = 'hffff;
         end
-        t_l$d = d16_l * rn$q;
-        t_h$d = d16_h * rn$q;
-        lit_2$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        rn_3$d = rn$q;
+        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        t_l$d = d16_l$q * rn_3$q;
+        t_h$d = d16_h$q * rn_3$q;
+        lit_4$d = lit_3$q;
         i_l = ((64'(t_l$q) << 'ha) - 64'(t_l$q) + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
@@ -8375,18 +13407,73 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (i_h > last) begin
             i_h = last;
         end
-        diffuse_table$address = 10'(i_l);
-        specular_table$address = 10'(i_h);
-        lit_3$d = lit_2$q;
-        diffuse = diffuse_table$data;
-        specular_pass = 'h0;
-        if (lit_3$q) begin
-            specular_pass = specular_table$data;
+        idx_l$d = 10'(i_l);
+        idx_h$d = 10'(i_h);
+        lit_5$d = lit_4$q;
+        diffuse_table$address = idx_l$q;
+        specular_table$address = idx_h$q;
+        lit_6$d = lit_5$q;
+        diffuse_q$d = diffuse_table$data;
+        specular_q$d = 'h0;
+        if (lit_6$q) begin
+            specular_q$d = specular_table$data;
         end
-        specular = specular_pass;
+        diffuse = diffuse_q$q;
+        specular = specular_q$q;
     end
     
 endmodule // top$lanes$2$shader$lighting
+module top$lanes$2$shader$lighting$d16_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$d16_h
+module top$lanes$2$shader$lighting$d16_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$d16_l
+module top$lanes$2$shader$lighting$diffuse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$diffuse_q
 module top$lanes$2$shader$lighting$diffuse_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -8491,23 +13578,40 @@ module top$lanes$2$shader$lighting$dot_l(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$dot_l
-module top$lanes$2$shader$lighting$lit_2(d,q,clock);
+module top$lanes$2$shader$lighting$idx_h(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$lanes$2$shader$lighting$lit_2
+endmodule // top$lanes$2$shader$lighting$idx_h
+module top$lanes$2$shader$lighting$idx_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$idx_l
 module top$lanes$2$shader$lighting$lit_3(d,q,clock);
     
     // Module arguments
@@ -8525,6 +13629,278 @@ module top$lanes$2$shader$lighting$lit_3(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$lit_3
+module top$lanes$2$shader$lighting$lit_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$lit_4
+module top$lanes$2$shader$lighting$lit_5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$lit_5
+module top$lanes$2$shader$lighting$lit_6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$lit_6
+module top$lanes$2$shader$lighting$mh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$mh_q$0
+module top$lanes$2$shader$lighting$mh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$mh_q$1
+module top$lanes$2$shader$lighting$mh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$mh_q$2
+module top$lanes$2$shader$lighting$ml_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$ml_q$0
+module top$lanes$2$shader$lighting$ml_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$ml_q$1
+module top$lanes$2$shader$lighting$ml_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$ml_q$2
+module top$lanes$2$shader$lighting$n2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$n2_q
+module top$lanes$2$shader$lighting$p_h$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_h$0
+module top$lanes$2$shader$lighting$p_h$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_h$1
+module top$lanes$2$shader$lighting$p_h$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_h$2
+module top$lanes$2$shader$lighting$p_l$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_l$0
+module top$lanes$2$shader$lighting$p_l$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_l$1
+module top$lanes$2$shader$lighting$p_l$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$p_l$2
 module top$lanes$2$shader$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -8627,6 +14003,23 @@ module top$lanes$2$shader$lighting$rn(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$rn
+module top$lanes$2$shader$lighting$rn_3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$rn_3
 module top$lanes$2$shader$lighting$rnorm(address,data);
     
     // Module arguments
@@ -9664,6 +15057,125 @@ module top$lanes$2$shader$lighting$rnorm(address,data);
     endcase
             
 endmodule // top$lanes$2$shader$lighting$rnorm
+module top$lanes$2$shader$lighting$sh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sh_q$0
+module top$lanes$2$shader$lighting$sh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sh_q$1
+module top$lanes$2$shader$lighting$sh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sh_q$2
+module top$lanes$2$shader$lighting$sl_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sl_q$0
+module top$lanes$2$shader$lighting$sl_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sl_q$1
+module top$lanes$2$shader$lighting$sl_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$sl_q$2
+module top$lanes$2$shader$lighting$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lighting$specular_q
 module top$lanes$2$shader$lighting$specular_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -9768,9 +15280,10 @@ module top$lanes$2$shader$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$t_l
-module top$lanes$2$shader$lit_b(a,b,y);
+module top$lanes$2$shader$lit_b(clock,a,b,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -9780,14 +15293,25 @@ module top$lanes$2$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -9795,9 +15319,27 @@ module top$lanes$2$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_b
-module top$lanes$2$shader$lit_g(a,b,y);
+module top$lanes$2$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lit_b$t
+module top$lanes$2$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -9807,14 +15349,25 @@ module top$lanes$2$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -9822,9 +15375,27 @@ module top$lanes$2$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_g
-module top$lanes$2$shader$lit_r(a,b,y);
+module top$lanes$2$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lit_g$t
+module top$lanes$2$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -9834,14 +15405,25 @@ module top$lanes$2$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -9849,6 +15431,23 @@ module top$lanes$2$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_r
+module top$lanes$2$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lit_r$t
 module top$lanes$2$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -9987,9 +15586,146 @@ module top$lanes$2$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lut_q$3
-module top$lanes$2$shader$mul_b(a,b,y);
+module top$lanes$2$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$4
+module top$lanes$2$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$5
+module top$lanes$2$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$6
+module top$lanes$2$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$7
+module top$lanes$2$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$8
+module top$lanes$2$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$0
+module top$lanes$2$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$1
+module top$lanes$2$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$2
+module top$lanes$2$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -9999,14 +15735,25 @@ module top$lanes$2$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -10014,9 +15761,27 @@ module top$lanes$2$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_b
-module top$lanes$2$shader$mul_g(a,b,y);
+module top$lanes$2$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mul_b$t
+module top$lanes$2$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -10026,14 +15791,25 @@ module top$lanes$2$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -10041,9 +15817,27 @@ module top$lanes$2$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_g
-module top$lanes$2$shader$mul_r(a,b,y);
+module top$lanes$2$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mul_g$t
+module top$lanes$2$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -10053,14 +15847,25 @@ module top$lanes$2$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$2$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -10068,6 +15873,74 @@ module top$lanes$2$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_r
+module top$lanes$2$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mul_r$t
+module top$lanes$2$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$0
+module top$lanes$2$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$1
+module top$lanes$2$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$2
 module top$lanes$2$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2);
     
     // Module arguments
@@ -10141,6 +16014,27 @@ module top$lanes$2$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [7:0] s_q2$d;
+    wire  [7:0] s_q2$q;
+    reg  s_q2$clock;
+    reg  neg_q2$0$d;
+    wire  neg_q2$0$q;
+    reg  neg_q2$0$clock;
+    reg  neg_q2$1$d;
+    wire  neg_q2$1$q;
+    reg  neg_q2$1$clock;
+    reg  neg_q2$2$d;
+    wire  neg_q2$2$q;
+    reg  neg_q2$2$clock;
+    reg  [31:0] sum_q$0$d;
+    wire  [31:0] sum_q$0$q;
+    reg  sum_q$0$clock;
+    reg  [31:0] sum_q$1$d;
+    wire  [31:0] sum_q$1$q;
+    reg  sum_q$1$clock;
+    reg  [31:0] sum_q$2$d;
+    wire  [31:0] sum_q$2$q;
+    reg  sum_q$2$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -10204,6 +16098,41 @@ module top$lanes$2$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$lanes$2$shader$normal$s_q2 s_q2(
+        .d(s_q2$d),
+        .q(s_q2$q),
+        .clock(s_q2$clock)
+    );
+    top$lanes$2$shader$normal$neg_q2$0 neg_q2$0(
+        .d(neg_q2$0$d),
+        .q(neg_q2$0$q),
+        .clock(neg_q2$0$clock)
+    );
+    top$lanes$2$shader$normal$neg_q2$1 neg_q2$1(
+        .d(neg_q2$1$d),
+        .q(neg_q2$1$q),
+        .clock(neg_q2$1$clock)
+    );
+    top$lanes$2$shader$normal$neg_q2$2 neg_q2$2(
+        .d(neg_q2$2$d),
+        .q(neg_q2$2$q),
+        .clock(neg_q2$2$clock)
+    );
+    top$lanes$2$shader$normal$sum_q$0 sum_q$0(
+        .d(sum_q$0$d),
+        .q(sum_q$0$q),
+        .clock(sum_q$0$clock)
+    );
+    top$lanes$2$shader$normal$sum_q$1 sum_q$1(
+        .d(sum_q$1$d),
+        .q(sum_q$1$q),
+        .clock(sum_q$1$clock)
+    );
+    top$lanes$2$shader$normal$sum_q$2 sum_q$2(
+        .d(sum_q$2$d),
+        .q(sum_q$2$q),
+        .clock(sum_q$2$clock)
+    );
     top$lanes$2$shader$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
         .q(out_neg$0$q),
@@ -10238,14 +16167,10 @@ module top$lanes$2$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     // Update code
     always @(*) begin
         s_q$clock = clock;
+        s_q2$clock = clock;
         s_q$d = s_q$q;
-        m = mag$0;
-        if (mag$1 > m) begin
-            m = mag$1;
-        end
-        if (mag$2 > m) begin
-            m = mag$2;
-        end
+        s_q2$d = s_q2$q;
+        m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
             bl = bit_len$0;
@@ -10351,55 +16276,68 @@ module top$lanes$2$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         if (s_q$q > 'h0) begin
             half = (32'('h1) << s_q$q) >> 'h1;
         end
+        s_q2$d = s_q$q;
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
+        neg_q2$0$clock = clock;
+        sum_q$0$clock = clock;
         out_neg$0$clock = clock;
         out_mag$0$clock = clock;
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
-        q$0 = (mag_q$0$q + half) >> s_q$q;
+        neg_q2$0$d = neg_q$0$q;
+        sum_q$0$d = mag_q$0$q + half;
         if (neg_q$0$q & (s_q$q > 'h0)) begin
-            q$0 = (mag_q$0$q + half - 'h1) >> s_q$q;
+            sum_q$0$d = mag_q$0$q + half - 'h1;
         end
+        q$0 = sum_q$0$q >> s_q2$q;
         if (q$0 > 'hf) begin
             q$0 = 'hf;
         end
         out_mag$0$d = q$0[('h0)+:(4)];
-        out_neg$0$d = neg_q$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
         mag_q$1$clock = clock;
+        neg_q2$1$clock = clock;
+        sum_q$1$clock = clock;
         out_neg$1$clock = clock;
         out_mag$1$clock = clock;
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
-        q$1 = (mag_q$1$q + half) >> s_q$q;
+        neg_q2$1$d = neg_q$1$q;
+        sum_q$1$d = mag_q$1$q + half;
         if (neg_q$1$q & (s_q$q > 'h0)) begin
-            q$1 = (mag_q$1$q + half - 'h1) >> s_q$q;
+            sum_q$1$d = mag_q$1$q + half - 'h1;
         end
+        q$1 = sum_q$1$q >> s_q2$q;
         if (q$1 > 'hf) begin
             q$1 = 'hf;
         end
         out_mag$1$d = q$1[('h0)+:(4)];
-        out_neg$1$d = neg_q$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
         mag_q$2$clock = clock;
+        neg_q2$2$clock = clock;
+        sum_q$2$clock = clock;
         out_neg$2$clock = clock;
         out_mag$2$clock = clock;
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
-        q$2 = (mag_q$2$q + half) >> s_q$q;
+        neg_q2$2$d = neg_q$2$q;
+        sum_q$2$d = mag_q$2$q + half;
         if (neg_q$2$q & (s_q$q > 'h0)) begin
-            q$2 = (mag_q$2$q + half - 'h1) >> s_q$q;
+            sum_q$2$d = mag_q$2$q + half - 'h1;
         end
+        q$2 = sum_q$2$q >> s_q2$q;
         if (q$2 > 'hf) begin
             q$2 = 'hf;
         end
         out_mag$2$d = q$2[('h0)+:(4)];
-        out_neg$2$d = neg_q$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
@@ -10507,6 +16445,57 @@ module top$lanes$2$shader$normal$neg_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$normal$neg_q$2
+module top$lanes$2$shader$normal$neg_q2$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$neg_q2$0
+module top$lanes$2$shader$normal$neg_q2$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$neg_q2$1
+module top$lanes$2$shader$normal$neg_q2$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$neg_q2$2
 module top$lanes$2$shader$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -10626,6 +16615,74 @@ module top$lanes$2$shader$normal$s_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$normal$s_q
+module top$lanes$2$shader$normal$s_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$s_q2
+module top$lanes$2$shader$normal$sum_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$sum_q$0
+module top$lanes$2$shader$normal$sum_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$sum_q$1
+module top$lanes$2$shader$normal$sum_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$normal$sum_q$2
 module top$lanes$2$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -10694,6 +16751,23 @@ module top$lanes$2$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$row_q$2
+module top$lanes$2$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$row_q$3
 module top$lanes$2$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -10745,6 +16819,23 @@ module top$lanes$2$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$shaded_q$2
+module top$lanes$2$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$specular_q
 module top$lanes$2$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -10779,6 +16870,91 @@ module top$lanes$2$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$valid_q$1
+module top$lanes$2$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$10
+module top$lanes$2$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$11
+module top$lanes$2$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$12
+module top$lanes$2$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$13
+module top$lanes$2$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$14
 module top$lanes$2$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -10864,6 +17040,57 @@ module top$lanes$2$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$valid_q$6
+module top$lanes$2$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$7
+module top$lanes$2$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$8
+module top$lanes$2$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$9
 module top$lanes$2$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -10898,6 +17125,74 @@ module top$lanes$2$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$value_q$1
+module top$lanes$2$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$10
+module top$lanes$2$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$11
+module top$lanes$2$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$12
+module top$lanes$2$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$13
 module top$lanes$2$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -10966,6 +17261,74 @@ module top$lanes$2$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$value_q$5
+module top$lanes$2$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$6
+module top$lanes$2$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$7
+module top$lanes$2$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$8
+module top$lanes$2$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$9
 module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -11044,6 +17407,24 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse;
     wire  [15:0] lighting$specular;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -11053,6 +17434,9 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -11065,6 +17449,21 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -11077,12 +17476,36 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -11101,6 +17524,30 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -11122,12 +17569,42 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y;
@@ -11140,12 +17617,15 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y;
@@ -11213,6 +17693,36 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .diffuse(lighting$diffuse),
         .specular(lighting$specular)
     );
+    top$lanes$3$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$3$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$3$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$3$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$3$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$3$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$3$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -11227,6 +17737,11 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$3$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$3$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -11248,6 +17763,31 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$3$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$3$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$3$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$3$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$3$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$3$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -11268,6 +17808,11 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$3$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$3$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -11277,6 +17822,41 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$3$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$3$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$3$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$3$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$3$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$3$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$3$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$3$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -11307,6 +17887,46 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$3$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$3$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$3$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$3$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$3$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$3$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$3$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$3$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$3$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -11343,17 +17963,65 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
     );
+    top$lanes$3$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$3$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$3$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$3$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$3$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$3$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$3$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$3$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$3$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
+    );
     top$lanes$3$shader$lit_r lit_r(
+        .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
         .y(lit_r$y)
     );
     top$lanes$3$shader$lit_g lit_g(
+        .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
         .y(lit_g$y)
     );
     top$lanes$3$shader$lit_b lit_b(
+        .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
         .y(lit_b$y)
@@ -11374,16 +18042,19 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .clock(shaded_q$2$clock)
     );
     top$lanes$3$shader$mul_r mul_r(
+        .clock(mul_r$clock),
         .a(mul_r$a),
         .b(mul_r$b),
         .y(mul_r$y)
     );
     top$lanes$3$shader$mul_g mul_g(
+        .clock(mul_g$clock),
         .a(mul_g$a),
         .b(mul_g$b),
         .y(mul_g$y)
     );
     top$lanes$3$shader$mul_b mul_b(
+        .clock(mul_b$clock),
         .a(mul_b$a),
         .b(mul_b$b),
         .y(mul_b$y)
@@ -11416,10 +18087,12 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -11441,63 +18114,110 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -11505,6 +18225,14 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -11512,39 +18240,61 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -11563,17 +18313,17 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -11582,7 +18332,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -11594,7 +18344,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -11655,6 +18405,125 @@ module top$lanes$3$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$alpha_q$1
+module top$lanes$3$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$2
+module top$lanes$3$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$3
+module top$lanes$3$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$4
+module top$lanes$3$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$5
+module top$lanes$3$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$6
+module top$lanes$3$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$7
+module top$lanes$3$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$8
 module top$lanes$3$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -11757,6 +18626,23 @@ module top$lanes$3$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$gate_q$3
+module top$lanes$3$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$4
 module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2,diffuse,specular);
     
     // Module arguments
@@ -11799,6 +18685,63 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [63:0] specular_table$host_data;
     reg  [9:0] specular_table$address;
     wire  [15:0] specular_table$data;
+    reg  [15:0] ml_q$0$d;
+    wire  [15:0] ml_q$0$q;
+    reg  ml_q$0$clock;
+    reg  [15:0] ml_q$1$d;
+    wire  [15:0] ml_q$1$q;
+    reg  ml_q$1$clock;
+    reg  [15:0] ml_q$2$d;
+    wire  [15:0] ml_q$2$q;
+    reg  ml_q$2$clock;
+    reg  [15:0] mh_q$0$d;
+    wire  [15:0] mh_q$0$q;
+    reg  mh_q$0$clock;
+    reg  [15:0] mh_q$1$d;
+    wire  [15:0] mh_q$1$q;
+    reg  mh_q$1$clock;
+    reg  [15:0] mh_q$2$d;
+    wire  [15:0] mh_q$2$q;
+    reg  mh_q$2$clock;
+    reg  [31:0] p_l$0$d;
+    wire  [31:0] p_l$0$q;
+    reg  p_l$0$clock;
+    reg  [31:0] p_l$1$d;
+    wire  [31:0] p_l$1$q;
+    reg  p_l$1$clock;
+    reg  [31:0] p_l$2$d;
+    wire  [31:0] p_l$2$q;
+    reg  p_l$2$clock;
+    reg  [31:0] p_h$0$d;
+    wire  [31:0] p_h$0$q;
+    reg  p_h$0$clock;
+    reg  [31:0] p_h$1$d;
+    wire  [31:0] p_h$1$q;
+    reg  p_h$1$clock;
+    reg  [31:0] p_h$2$d;
+    wire  [31:0] p_h$2$q;
+    reg  p_h$2$clock;
+    reg  sl_q$0$d;
+    wire  sl_q$0$q;
+    reg  sl_q$0$clock;
+    reg  sl_q$1$d;
+    wire  sl_q$1$q;
+    reg  sl_q$1$clock;
+    reg  sl_q$2$d;
+    wire  sl_q$2$q;
+    reg  sl_q$2$clock;
+    reg  sh_q$0$d;
+    wire  sh_q$0$q;
+    reg  sh_q$0$clock;
+    reg  sh_q$1$d;
+    wire  sh_q$1$q;
+    reg  sh_q$1$clock;
+    reg  sh_q$2$d;
+    wire  sh_q$2$q;
+    reg  sh_q$2$clock;
+    reg  [15:0] n2_q$d;
+    wire  [15:0] n2_q$q;
+    reg  n2_q$clock;
     reg  [31:0] dot_l$d;
     wire  [31:0] dot_l$q;
     reg  dot_l$clock;
@@ -11808,18 +18751,45 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
+    reg  [15:0] d16_l$d;
+    wire  [15:0] d16_l$q;
+    reg  d16_l$clock;
+    reg  [15:0] d16_h$d;
+    wire  [15:0] d16_h$q;
+    reg  d16_h$clock;
+    reg  [15:0] rn_3$d;
+    wire  [15:0] rn_3$q;
+    reg  rn_3$clock;
+    reg  lit_3$d;
+    wire  lit_3$q;
+    reg  lit_3$clock;
     reg  [31:0] t_l$d;
     wire  [31:0] t_l$q;
     reg  t_l$clock;
     reg  [31:0] t_h$d;
     wire  [31:0] t_h$q;
     reg  t_h$clock;
-    reg  lit_2$d;
-    wire  lit_2$q;
-    reg  lit_2$clock;
-    reg  lit_3$d;
-    wire  lit_3$q;
-    reg  lit_3$clock;
+    reg  lit_4$d;
+    wire  lit_4$q;
+    reg  lit_4$clock;
+    reg  [9:0] idx_l$d;
+    wire  [9:0] idx_l$q;
+    reg  idx_l$clock;
+    reg  [9:0] idx_h$d;
+    wire  [9:0] idx_h$q;
+    reg  idx_h$clock;
+    reg  lit_5$d;
+    wire  lit_5$q;
+    reg  lit_5$clock;
+    reg  lit_6$d;
+    wire  lit_6$q;
+    reg  lit_6$clock;
+    reg  [15:0] diffuse_q$d;
+    wire  [15:0] diffuse_q$q;
+    reg  diffuse_q$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
     
     // Local signals
     reg  [15:0] m_l$0;
@@ -11831,17 +18801,13 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] qm$0;
     reg  [15:0] qm$1;
     reg  [15:0] qm$2;
-    reg  [31:0] p_l$0;
-    reg  [31:0] p_l$1;
-    reg  [31:0] p_l$2;
-    reg  [31:0] p_h$0;
-    reg  [31:0] p_h$1;
-    reg  [31:0] p_h$2;
-    reg  [31:0] sum_l;
-    reg  [31:0] sum_h;
+    reg  [31:0] t_pl$0;
+    reg  [31:0] t_pl$1;
+    reg  [31:0] t_pl$2;
+    reg  [31:0] t_ph$0;
+    reg  [31:0] t_ph$1;
+    reg  [31:0] t_ph$2;
     reg  [15:0] n2;
-    reg  [15:0] d16_l;
-    reg  [15:0] d16_h;
     reg  [63:0] i_l;
     reg  [63:0] i_h;
     
@@ -11874,6 +18840,101 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .address(specular_table$address),
         .data(specular_table$data)
     );
+    top$lanes$3$shader$lighting$ml_q$0 ml_q$0(
+        .d(ml_q$0$d),
+        .q(ml_q$0$q),
+        .clock(ml_q$0$clock)
+    );
+    top$lanes$3$shader$lighting$ml_q$1 ml_q$1(
+        .d(ml_q$1$d),
+        .q(ml_q$1$q),
+        .clock(ml_q$1$clock)
+    );
+    top$lanes$3$shader$lighting$ml_q$2 ml_q$2(
+        .d(ml_q$2$d),
+        .q(ml_q$2$q),
+        .clock(ml_q$2$clock)
+    );
+    top$lanes$3$shader$lighting$mh_q$0 mh_q$0(
+        .d(mh_q$0$d),
+        .q(mh_q$0$q),
+        .clock(mh_q$0$clock)
+    );
+    top$lanes$3$shader$lighting$mh_q$1 mh_q$1(
+        .d(mh_q$1$d),
+        .q(mh_q$1$q),
+        .clock(mh_q$1$clock)
+    );
+    top$lanes$3$shader$lighting$mh_q$2 mh_q$2(
+        .d(mh_q$2$d),
+        .q(mh_q$2$q),
+        .clock(mh_q$2$clock)
+    );
+    top$lanes$3$shader$lighting$p_l$0 p_l$0(
+        .d(p_l$0$d),
+        .q(p_l$0$q),
+        .clock(p_l$0$clock)
+    );
+    top$lanes$3$shader$lighting$p_l$1 p_l$1(
+        .d(p_l$1$d),
+        .q(p_l$1$q),
+        .clock(p_l$1$clock)
+    );
+    top$lanes$3$shader$lighting$p_l$2 p_l$2(
+        .d(p_l$2$d),
+        .q(p_l$2$q),
+        .clock(p_l$2$clock)
+    );
+    top$lanes$3$shader$lighting$p_h$0 p_h$0(
+        .d(p_h$0$d),
+        .q(p_h$0$q),
+        .clock(p_h$0$clock)
+    );
+    top$lanes$3$shader$lighting$p_h$1 p_h$1(
+        .d(p_h$1$d),
+        .q(p_h$1$q),
+        .clock(p_h$1$clock)
+    );
+    top$lanes$3$shader$lighting$p_h$2 p_h$2(
+        .d(p_h$2$d),
+        .q(p_h$2$q),
+        .clock(p_h$2$clock)
+    );
+    top$lanes$3$shader$lighting$sl_q$0 sl_q$0(
+        .d(sl_q$0$d),
+        .q(sl_q$0$q),
+        .clock(sl_q$0$clock)
+    );
+    top$lanes$3$shader$lighting$sl_q$1 sl_q$1(
+        .d(sl_q$1$d),
+        .q(sl_q$1$q),
+        .clock(sl_q$1$clock)
+    );
+    top$lanes$3$shader$lighting$sl_q$2 sl_q$2(
+        .d(sl_q$2$d),
+        .q(sl_q$2$q),
+        .clock(sl_q$2$clock)
+    );
+    top$lanes$3$shader$lighting$sh_q$0 sh_q$0(
+        .d(sh_q$0$d),
+        .q(sh_q$0$q),
+        .clock(sh_q$0$clock)
+    );
+    top$lanes$3$shader$lighting$sh_q$1 sh_q$1(
+        .d(sh_q$1$d),
+        .q(sh_q$1$q),
+        .clock(sh_q$1$clock)
+    );
+    top$lanes$3$shader$lighting$sh_q$2 sh_q$2(
+        .d(sh_q$2$d),
+        .q(sh_q$2$q),
+        .clock(sh_q$2$clock)
+    );
+    top$lanes$3$shader$lighting$n2_q n2_q(
+        .d(n2_q$d),
+        .q(n2_q$q),
+        .clock(n2_q$clock)
+    );
     top$lanes$3$shader$lighting$dot_l dot_l(
         .d(dot_l$d),
         .q(dot_l$q),
@@ -11889,6 +18950,26 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(rn$q),
         .clock(rn$clock)
     );
+    top$lanes$3$shader$lighting$d16_l d16_l(
+        .d(d16_l$d),
+        .q(d16_l$q),
+        .clock(d16_l$clock)
+    );
+    top$lanes$3$shader$lighting$d16_h d16_h(
+        .d(d16_h$d),
+        .q(d16_h$q),
+        .clock(d16_h$clock)
+    );
+    top$lanes$3$shader$lighting$rn_3 rn_3(
+        .d(rn_3$d),
+        .q(rn_3$q),
+        .clock(rn_3$clock)
+    );
+    top$lanes$3$shader$lighting$lit_3 lit_3(
+        .d(lit_3$d),
+        .q(lit_3$q),
+        .clock(lit_3$clock)
+    );
     top$lanes$3$shader$lighting$t_l t_l(
         .d(t_l$d),
         .q(t_l$q),
@@ -11899,34 +18980,78 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .q(t_h$q),
         .clock(t_h$clock)
     );
-    top$lanes$3$shader$lighting$lit_2 lit_2(
-        .d(lit_2$d),
-        .q(lit_2$q),
-        .clock(lit_2$clock)
+    top$lanes$3$shader$lighting$lit_4 lit_4(
+        .d(lit_4$d),
+        .q(lit_4$q),
+        .clock(lit_4$clock)
     );
-    top$lanes$3$shader$lighting$lit_3 lit_3(
-        .d(lit_3$d),
-        .q(lit_3$q),
-        .clock(lit_3$clock)
+    top$lanes$3$shader$lighting$idx_l idx_l(
+        .d(idx_l$d),
+        .q(idx_l$q),
+        .clock(idx_l$clock)
+    );
+    top$lanes$3$shader$lighting$idx_h idx_h(
+        .d(idx_h$d),
+        .q(idx_h$q),
+        .clock(idx_h$clock)
+    );
+    top$lanes$3$shader$lighting$lit_5 lit_5(
+        .d(lit_5$d),
+        .q(lit_5$q),
+        .clock(lit_5$clock)
+    );
+    top$lanes$3$shader$lighting$lit_6 lit_6(
+        .d(lit_6$d),
+        .q(lit_6$q),
+        .clock(lit_6$clock)
+    );
+    top$lanes$3$shader$lighting$diffuse_q diffuse_q(
+        .d(diffuse_q$d),
+        .q(diffuse_q$q),
+        .clock(diffuse_q$clock)
+    );
+    top$lanes$3$shader$lighting$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     
     // Update code
-    reg  [15:0] specular_pass;
     always @(*) begin
+        n2_q$clock = clock;
         dot_l$clock = clock;
         dot_h$clock = clock;
         rn$clock = clock;
+        d16_l$clock = clock;
+        d16_h$clock = clock;
+        rn_3$clock = clock;
+        lit_3$clock = clock;
         t_l$clock = clock;
         t_h$clock = clock;
-        lit_2$clock = clock;
-        lit_3$clock = clock;
+        lit_4$clock = clock;
+        idx_l$clock = clock;
+        idx_h$clock = clock;
+        lit_5$clock = clock;
+        lit_6$clock = clock;
+        diffuse_q$clock = clock;
+        specular_q$clock = clock;
+        n2_q$d = n2_q$q;
         dot_l$d = dot_l$q;
         dot_h$d = dot_h$q;
         rn$d = rn$q;
+        d16_l$d = d16_l$q;
+        d16_h$d = d16_h$q;
+        rn_3$d = rn_3$q;
+        lit_3$d = lit_3$q;
         t_l$d = t_l$q;
         t_h$d = t_h$q;
-        lit_2$d = lit_2$q;
-        lit_3$d = lit_3$q;
+        lit_4$d = lit_4$q;
+        idx_l$d = idx_l$q;
+        idx_h$d = idx_h$q;
+        lit_5$d = lit_5$q;
+        lit_6$d = lit_6$q;
+        diffuse_q$d = diffuse_q$q;
+        specular_q$d = specular_q$q;
         regs$clock = clock;
         regs$host_write = host_write;
         regs$host_address = host_address;
@@ -11939,90 +19064,118 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        sum_l = 'h0;
-        sum_h = 'h0;
-        n2 = 'h0;
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
+        qm$1 = 16'(q_mag$1);
+        qm$2 = 16'(q_mag$2);
         m_l$0 = regs$q$0[('h0)+:(16)];
         if (regs$q$0['hf]) begin
             m_l$0 = 'h0 - regs$q$0[('h0)+:(16)];
+        end
+        m_l$1 = regs$q$0[('h10)+:(16)];
+        if (regs$q$0['h1f]) begin
+            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
+        end
+        m_l$2 = regs$q$0[('h20)+:(16)];
+        if (regs$q$0['h2f]) begin
+            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$0 = regs$q$1[('h0)+:(16)];
         if (regs$q$1['hf]) begin
             m_h$0 = 'h0 - regs$q$1[('h0)+:(16)];
         end
-        p_l$0 = qm$0 * m_l$0;
-        if (q_neg$0 ^ regs$q$0['hf]) begin
-            p_l$0 = 'h0 - (qm$0 * m_l$0);
-        end
-        sum_l = sum_l + p_l$0;
-        p_h$0 = qm$0 * m_h$0;
-        if (q_neg$0 ^ regs$q$1['hf]) begin
-            p_h$0 = 'h0 - (qm$0 * m_h$0);
-        end
-        sum_h = sum_h + p_h$0;
-        n2 = n2 + 16'(qm$0 * qm$0);
-        qm$1 = 16'(q_mag$1);
-        m_l$1 = regs$q$0[('h10)+:(16)];
-        if (regs$q$0['h1f]) begin
-            m_l$1 = 'h0 - regs$q$0[('h10)+:(16)];
-        end
         m_h$1 = regs$q$1[('h10)+:(16)];
         if (regs$q$1['h1f]) begin
             m_h$1 = 'h0 - regs$q$1[('h10)+:(16)];
-        end
-        p_l$1 = qm$1 * m_l$1;
-        if (q_neg$1 ^ regs$q$0['h1f]) begin
-            p_l$1 = 'h0 - (qm$1 * m_l$1);
-        end
-        sum_l = sum_l + p_l$1;
-        p_h$1 = qm$1 * m_h$1;
-        if (q_neg$1 ^ regs$q$1['h1f]) begin
-            p_h$1 = 'h0 - (qm$1 * m_h$1);
-        end
-        sum_h = sum_h + p_h$1;
-        n2 = n2 + 16'(qm$1 * qm$1);
-        qm$2 = 16'(q_mag$2);
-        m_l$2 = regs$q$0[('h20)+:(16)];
-        if (regs$q$0['h2f]) begin
-            m_l$2 = 'h0 - regs$q$0[('h20)+:(16)];
         end
         m_h$2 = regs$q$1[('h20)+:(16)];
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
-        p_l$2 = qm$2 * m_l$2;
-        if (q_neg$2 ^ regs$q$0['h2f]) begin
-            p_l$2 = 'h0 - (qm$2 * m_l$2);
+        sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
+        sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
+        sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
+        sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
+        sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
+        sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
+        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2_q$d = n2;
+        t_pl$0 = p_l$0$q;
+        if (sl_q$0$q) begin
+            t_pl$0 = 'h0 - p_l$0$q;
         end
-        sum_l = sum_l + p_l$2;
-        p_h$2 = qm$2 * m_h$2;
-        if (q_neg$2 ^ regs$q$1['h2f]) begin
-            p_h$2 = 'h0 - (qm$2 * m_h$2);
+        t_ph$0 = p_h$0$q;
+        if (sh_q$0$q) begin
+            t_ph$0 = 'h0 - p_h$0$q;
         end
-        sum_h = sum_h + p_h$2;
-        n2 = n2 + 16'(qm$2 * qm$2);
-        dot_l$d = sum_l;
-        dot_h$d = sum_h;
-        rnorm$address = 10'(n2);
+        t_pl$1 = p_l$1$q;
+        if (sl_q$1$q) begin
+            t_pl$1 = 'h0 - p_l$1$q;
+        end
+        t_ph$1 = p_h$1$q;
+        if (sh_q$1$q) begin
+            t_ph$1 = 'h0 - p_h$1$q;
+        end
+        t_pl$2 = p_l$2$q;
+        if (sl_q$2$q) begin
+            t_pl$2 = 'h0 - p_l$2$q;
+        end
+        t_ph$2 = p_h$2$q;
+        if (sh_q$2$q) begin
+            t_ph$2 = 'h0 - p_h$2$q;
+        end
+        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
+        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        rnorm$address = 10'(n2_q$q);
         rn$d = rnorm$data;
-        d16_l = dot_l$q[('h0)+:(16)];
+        d16_l$d = dot_l$q[('h0)+:(16)];
         if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
-            d16_l = 'h0;
+            d16_l$d = 'h0;
         end
         else if (dot_l$q > 'hffff) begin
-            d16_l = 'hffff;
+            d16_l$d = 'hffff;
         end
-        d16_h = dot_h$q[('h0)+:(16)];
+        d16_h$d = dot_h$q[('h0)+:(16)];
         if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
-            d16_h = 'h0;
+            d16_h$d = 'h0;
         end
         else if (dot_h$q > 'hffff) begin
-            d16_h = 'hffff;
+            d16_h$d = 'hffff;
         end
-        t_l$d = d16_l * rn$q;
-        t_h$d = d16_h * rn$q;
-        lit_2$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        rn_3$d = rn$q;
+        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        t_l$d = d16_l$q * rn_3$q;
+        t_h$d = d16_h$q * rn_3$q;
+        lit_4$d = lit_3$q;
         i_l = ((64'(t_l$q) << 'ha) - 64'(t_l$q) + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
@@ -12031,18 +19184,73 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (i_h > last) begin
             i_h = last;
         end
-        diffuse_table$address = 10'(i_l);
-        specular_table$address = 10'(i_h);
-        lit_3$d = lit_2$q;
-        diffuse = diffuse_table$data;
-        specular_pass = 'h0;
-        if (lit_3$q) begin
-            specular_pass = specular_table$data;
+        idx_l$d = 10'(i_l);
+        idx_h$d = 10'(i_h);
+        lit_5$d = lit_4$q;
+        diffuse_table$address = idx_l$q;
+        specular_table$address = idx_h$q;
+        lit_6$d = lit_5$q;
+        diffuse_q$d = diffuse_table$data;
+        specular_q$d = 'h0;
+        if (lit_6$q) begin
+            specular_q$d = specular_table$data;
         end
-        specular = specular_pass;
+        diffuse = diffuse_q$q;
+        specular = specular_q$q;
     end
     
 endmodule // top$lanes$3$shader$lighting
+module top$lanes$3$shader$lighting$d16_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$d16_h
+module top$lanes$3$shader$lighting$d16_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$d16_l
+module top$lanes$3$shader$lighting$diffuse_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$diffuse_q
 module top$lanes$3$shader$lighting$diffuse_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -12147,23 +19355,40 @@ module top$lanes$3$shader$lighting$dot_l(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$dot_l
-module top$lanes$3$shader$lighting$lit_2(d,q,clock);
+module top$lanes$3$shader$lighting$idx_h(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // top$lanes$3$shader$lighting$lit_2
+endmodule // top$lanes$3$shader$lighting$idx_h
+module top$lanes$3$shader$lighting$idx_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$idx_l
 module top$lanes$3$shader$lighting$lit_3(d,q,clock);
     
     // Module arguments
@@ -12181,6 +19406,278 @@ module top$lanes$3$shader$lighting$lit_3(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$lit_3
+module top$lanes$3$shader$lighting$lit_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$lit_4
+module top$lanes$3$shader$lighting$lit_5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$lit_5
+module top$lanes$3$shader$lighting$lit_6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$lit_6
+module top$lanes$3$shader$lighting$mh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$mh_q$0
+module top$lanes$3$shader$lighting$mh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$mh_q$1
+module top$lanes$3$shader$lighting$mh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$mh_q$2
+module top$lanes$3$shader$lighting$ml_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$ml_q$0
+module top$lanes$3$shader$lighting$ml_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$ml_q$1
+module top$lanes$3$shader$lighting$ml_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$ml_q$2
+module top$lanes$3$shader$lighting$n2_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$n2_q
+module top$lanes$3$shader$lighting$p_h$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_h$0
+module top$lanes$3$shader$lighting$p_h$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_h$1
+module top$lanes$3$shader$lighting$p_h$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_h$2
+module top$lanes$3$shader$lighting$p_l$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_l$0
+module top$lanes$3$shader$lighting$p_l$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_l$1
+module top$lanes$3$shader$lighting$p_l$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$p_l$2
 module top$lanes$3$shader$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -12283,6 +19780,23 @@ module top$lanes$3$shader$lighting$rn(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$rn
+module top$lanes$3$shader$lighting$rn_3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$rn_3
 module top$lanes$3$shader$lighting$rnorm(address,data);
     
     // Module arguments
@@ -13320,6 +20834,125 @@ module top$lanes$3$shader$lighting$rnorm(address,data);
     endcase
             
 endmodule // top$lanes$3$shader$lighting$rnorm
+module top$lanes$3$shader$lighting$sh_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sh_q$0
+module top$lanes$3$shader$lighting$sh_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sh_q$1
+module top$lanes$3$shader$lighting$sh_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sh_q$2
+module top$lanes$3$shader$lighting$sl_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sl_q$0
+module top$lanes$3$shader$lighting$sl_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sl_q$1
+module top$lanes$3$shader$lighting$sl_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$sl_q$2
+module top$lanes$3$shader$lighting$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lighting$specular_q
 module top$lanes$3$shader$lighting$specular_table(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -13424,9 +21057,10 @@ module top$lanes$3$shader$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$t_l
-module top$lanes$3$shader$lit_b(a,b,y);
+module top$lanes$3$shader$lit_b(clock,a,b,y);
     
     // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13436,14 +21070,25 @@ module top$lanes$3$shader$lit_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$lit_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13451,9 +21096,27 @@ module top$lanes$3$shader$lit_b(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_b
-module top$lanes$3$shader$lit_g(a,b,y);
+module top$lanes$3$shader$lit_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lit_b$t
+module top$lanes$3$shader$lit_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13463,14 +21126,25 @@ module top$lanes$3$shader$lit_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$lit_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13478,9 +21152,27 @@ module top$lanes$3$shader$lit_g(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_g
-module top$lanes$3$shader$lit_r(a,b,y);
+module top$lanes$3$shader$lit_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lit_g$t
+module top$lanes$3$shader$lit_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13490,14 +21182,25 @@ module top$lanes$3$shader$lit_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$lit_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13505,6 +21208,23 @@ module top$lanes$3$shader$lit_r(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_r
+module top$lanes$3$shader$lit_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lit_r$t
 module top$lanes$3$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -13643,9 +21363,146 @@ module top$lanes$3$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lut_q$3
-module top$lanes$3$shader$mul_b(a,b,y);
+module top$lanes$3$shader$lut_q$4(d,q,clock);
     
     // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$4
+module top$lanes$3$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$5
+module top$lanes$3$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$6
+module top$lanes$3$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$7
+module top$lanes$3$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$8
+module top$lanes$3$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$0
+module top$lanes$3$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$1
+module top$lanes$3$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$2
+module top$lanes$3$shader$mul_b(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13655,14 +21512,25 @@ module top$lanes$3$shader$mul_b(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$mul_b$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13670,9 +21538,27 @@ module top$lanes$3$shader$mul_b(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_b
-module top$lanes$3$shader$mul_g(a,b,y);
+module top$lanes$3$shader$mul_b$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mul_b$t
+module top$lanes$3$shader$mul_g(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13682,14 +21568,25 @@ module top$lanes$3$shader$mul_g(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$mul_g$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13697,9 +21594,27 @@ module top$lanes$3$shader$mul_g(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_g
-module top$lanes$3$shader$mul_r(a,b,y);
+module top$lanes$3$shader$mul_g$t(d,q,clock);
     
     // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mul_g$t
+module top$lanes$3$shader$mul_r(clock,a,b,y);
+    
+    // Module arguments
+    input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
     output reg  [15:0] y;
@@ -13709,14 +21624,25 @@ module top$lanes$3$shader$mul_r(a,b,y);
     localparam  shift = 8'h8;
     localparam  enabled = 1'b1;
     
-    // Local signals
-    reg  [31:0] t;
+    // Stub signals
+    reg  [31:0] t$d;
+    wire  [31:0] t$q;
+    reg  t$clock;
+    
+    // Sub module instances
+    top$lanes$3$shader$mul_r$t t(
+        .d(t$d),
+        .q(t$q),
+        .clock(t$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
+        t$clock = clock;
+        t$d = t$q;
+        t$d = a * b + half;
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
         end
@@ -13724,6 +21650,74 @@ module top$lanes$3$shader$mul_r(a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_r
+module top$lanes$3$shader$mul_r$t(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mul_r$t
+module top$lanes$3$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$0
+module top$lanes$3$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$1
+module top$lanes$3$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$2
 module top$lanes$3$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg$0,q_neg$1,q_neg$2,q_mag$0,q_mag$1,q_mag$2);
     
     // Module arguments
@@ -13797,6 +21791,27 @@ module top$lanes$3$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [7:0] s_q2$d;
+    wire  [7:0] s_q2$q;
+    reg  s_q2$clock;
+    reg  neg_q2$0$d;
+    wire  neg_q2$0$q;
+    reg  neg_q2$0$clock;
+    reg  neg_q2$1$d;
+    wire  neg_q2$1$q;
+    reg  neg_q2$1$clock;
+    reg  neg_q2$2$d;
+    wire  neg_q2$2$q;
+    reg  neg_q2$2$clock;
+    reg  [31:0] sum_q$0$d;
+    wire  [31:0] sum_q$0$q;
+    reg  sum_q$0$clock;
+    reg  [31:0] sum_q$1$d;
+    wire  [31:0] sum_q$1$q;
+    reg  sum_q$1$clock;
+    reg  [31:0] sum_q$2$d;
+    wire  [31:0] sum_q$2$q;
+    reg  sum_q$2$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -13860,6 +21875,41 @@ module top$lanes$3$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$lanes$3$shader$normal$s_q2 s_q2(
+        .d(s_q2$d),
+        .q(s_q2$q),
+        .clock(s_q2$clock)
+    );
+    top$lanes$3$shader$normal$neg_q2$0 neg_q2$0(
+        .d(neg_q2$0$d),
+        .q(neg_q2$0$q),
+        .clock(neg_q2$0$clock)
+    );
+    top$lanes$3$shader$normal$neg_q2$1 neg_q2$1(
+        .d(neg_q2$1$d),
+        .q(neg_q2$1$q),
+        .clock(neg_q2$1$clock)
+    );
+    top$lanes$3$shader$normal$neg_q2$2 neg_q2$2(
+        .d(neg_q2$2$d),
+        .q(neg_q2$2$q),
+        .clock(neg_q2$2$clock)
+    );
+    top$lanes$3$shader$normal$sum_q$0 sum_q$0(
+        .d(sum_q$0$d),
+        .q(sum_q$0$q),
+        .clock(sum_q$0$clock)
+    );
+    top$lanes$3$shader$normal$sum_q$1 sum_q$1(
+        .d(sum_q$1$d),
+        .q(sum_q$1$q),
+        .clock(sum_q$1$clock)
+    );
+    top$lanes$3$shader$normal$sum_q$2 sum_q$2(
+        .d(sum_q$2$d),
+        .q(sum_q$2$q),
+        .clock(sum_q$2$clock)
+    );
     top$lanes$3$shader$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
         .q(out_neg$0$q),
@@ -13894,14 +21944,10 @@ module top$lanes$3$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
     // Update code
     always @(*) begin
         s_q$clock = clock;
+        s_q2$clock = clock;
         s_q$d = s_q$q;
-        m = mag$0;
-        if (mag$1 > m) begin
-            m = mag$1;
-        end
-        if (mag$2 > m) begin
-            m = mag$2;
-        end
+        s_q2$d = s_q2$q;
+        m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
             bl = bit_len$0;
@@ -14007,55 +22053,68 @@ module top$lanes$3$shader$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_neg
         if (s_q$q > 'h0) begin
             half = (32'('h1) << s_q$q) >> 'h1;
         end
+        s_q2$d = s_q$q;
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
+        neg_q2$0$clock = clock;
+        sum_q$0$clock = clock;
         out_neg$0$clock = clock;
         out_mag$0$clock = clock;
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
-        q$0 = (mag_q$0$q + half) >> s_q$q;
+        neg_q2$0$d = neg_q$0$q;
+        sum_q$0$d = mag_q$0$q + half;
         if (neg_q$0$q & (s_q$q > 'h0)) begin
-            q$0 = (mag_q$0$q + half - 'h1) >> s_q$q;
+            sum_q$0$d = mag_q$0$q + half - 'h1;
         end
+        q$0 = sum_q$0$q >> s_q2$q;
         if (q$0 > 'hf) begin
             q$0 = 'hf;
         end
         out_mag$0$d = q$0[('h0)+:(4)];
-        out_neg$0$d = neg_q$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
         mag_q$1$clock = clock;
+        neg_q2$1$clock = clock;
+        sum_q$1$clock = clock;
         out_neg$1$clock = clock;
         out_mag$1$clock = clock;
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
-        q$1 = (mag_q$1$q + half) >> s_q$q;
+        neg_q2$1$d = neg_q$1$q;
+        sum_q$1$d = mag_q$1$q + half;
         if (neg_q$1$q & (s_q$q > 'h0)) begin
-            q$1 = (mag_q$1$q + half - 'h1) >> s_q$q;
+            sum_q$1$d = mag_q$1$q + half - 'h1;
         end
+        q$1 = sum_q$1$q >> s_q2$q;
         if (q$1 > 'hf) begin
             q$1 = 'hf;
         end
         out_mag$1$d = q$1[('h0)+:(4)];
-        out_neg$1$d = neg_q$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
         mag_q$2$clock = clock;
+        neg_q2$2$clock = clock;
+        sum_q$2$clock = clock;
         out_neg$2$clock = clock;
         out_mag$2$clock = clock;
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
-        q$2 = (mag_q$2$q + half) >> s_q$q;
+        neg_q2$2$d = neg_q$2$q;
+        sum_q$2$d = mag_q$2$q + half;
         if (neg_q$2$q & (s_q$q > 'h0)) begin
-            q$2 = (mag_q$2$q + half - 'h1) >> s_q$q;
+            sum_q$2$d = mag_q$2$q + half - 'h1;
         end
+        q$2 = sum_q$2$q >> s_q2$q;
         if (q$2 > 'hf) begin
             q$2 = 'hf;
         end
         out_mag$2$d = q$2[('h0)+:(4)];
-        out_neg$2$d = neg_q$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
@@ -14163,6 +22222,57 @@ module top$lanes$3$shader$normal$neg_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$normal$neg_q$2
+module top$lanes$3$shader$normal$neg_q2$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$neg_q2$0
+module top$lanes$3$shader$normal$neg_q2$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$neg_q2$1
+module top$lanes$3$shader$normal$neg_q2$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$neg_q2$2
 module top$lanes$3$shader$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -14282,6 +22392,74 @@ module top$lanes$3$shader$normal$s_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$normal$s_q
+module top$lanes$3$shader$normal$s_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$s_q2
+module top$lanes$3$shader$normal$sum_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$sum_q$0
+module top$lanes$3$shader$normal$sum_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$sum_q$1
+module top$lanes$3$shader$normal$sum_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$normal$sum_q$2
 module top$lanes$3$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -14350,6 +22528,23 @@ module top$lanes$3$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$row_q$2
+module top$lanes$3$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$row_q$3
 module top$lanes$3$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -14401,6 +22596,23 @@ module top$lanes$3$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$shaded_q$2
+module top$lanes$3$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$specular_q
 module top$lanes$3$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -14435,6 +22647,91 @@ module top$lanes$3$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$valid_q$1
+module top$lanes$3$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$10
+module top$lanes$3$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$11
+module top$lanes$3$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$12
+module top$lanes$3$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$13
+module top$lanes$3$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$14
 module top$lanes$3$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -14520,6 +22817,57 @@ module top$lanes$3$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$valid_q$6
+module top$lanes$3$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$7
+module top$lanes$3$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$8
+module top$lanes$3$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$9
 module top$lanes$3$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -14554,6 +22902,74 @@ module top$lanes$3$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$value_q$1
+module top$lanes$3$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$10
+module top$lanes$3$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$11
+module top$lanes$3$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$12
+module top$lanes$3$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$13
 module top$lanes$3$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -14622,3 +23038,71 @@ module top$lanes$3$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$value_q$5
+module top$lanes$3$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$6
+module top$lanes$3$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$7
+module top$lanes$3$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$8
+module top$lanes$3$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$9

@@ -1,8 +1,9 @@
-module top(clock,start,load_enable,load_module,load_address,load_data,host_write,host_address,host_data,busy,n_s,n_beam,n_b,bs,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,px_valid$0,px_valid$1,px_valid$2,px_valid$3,px_x$0,px_x$1,px_x$2,px_x$3,px_y$0,px_y$1,px_y$2,px_y$3,px_face$0,px_face$1,px_face$2,px_face$3,res_beat$0,res_beat$1,res_beat$2,res_beat$3,res_valid$0,res_valid$1,res_valid$2,res_valid$3,res$0,res$1,res$2,res$3);
+module top(clock,start,reset,load_enable,load_module,load_address,load_data,host_write,host_address,host_data,busy,n_s,n_beam,n_b,bs,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,px_valid$0,px_valid$1,px_valid$2,px_valid$3,px_x$0,px_x$1,px_x$2,px_x$3,px_y$0,px_y$1,px_y$2,px_y$3,px_face$0,px_face$1,px_face$2,px_face$3,res_beat$0,res_beat$1,res_beat$2,res_beat$3,res_valid$0,res_valid$1,res_valid$2,res_valid$3,res$0,res$1,res$2,res$3);
     
     // Module arguments
     input wire  clock;
     input wire  start;
+    input wire  reset;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -54,6 +55,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
     
     // Constant declarations
     localparam  gradient = 1'b1;
+    localparam  flush_clocks = 8'h16;
     
     // Stub signals
     reg  view$clock;
@@ -83,6 +85,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
     reg  [63:0] cfb$eye_z;
     reg  [63:0] cfb$beats;
     reg  cfb$start;
+    reg  cfb$reset;
     wire  cfb$busy;
     reg  cfb$load_enable;
     reg  [7:0] cfb$load_module;
@@ -449,6 +452,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
     reg  [63:0] late$eye_z;
     reg  [63:0] late$beats;
     reg  late$start;
+    reg  late$reset;
     wire  late$busy;
     reg  late$load_enable;
     reg  [7:0] late$load_module;
@@ -542,6 +546,12 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
     reg  [31:0] late_wait$d;
     wire  [31:0] late_wait$q;
     reg  late_wait$clock;
+    reg  [7:0] flush$d;
+    wire  [7:0] flush$q;
+    reg  flush$clock;
+    
+    // Local signals
+    reg  quiet;
     
     // Sub module instances
     top$view view(
@@ -574,6 +584,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         .eye_z(cfb$eye_z),
         .beats(cfb$beats),
         .start(cfb$start),
+        .reset(cfb$reset),
         .busy(cfb$busy),
         .load_enable(cfb$load_enable),
         .load_module(cfb$load_module),
@@ -950,6 +961,7 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         .eye_z(late$eye_z),
         .beats(late$beats),
         .start(late$start),
+        .reset(late$reset),
         .busy(late$busy),
         .load_enable(late$load_enable),
         .load_module(late$load_module),
@@ -1046,11 +1058,18 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         .q(late_wait$q),
         .clock(late_wait$clock)
     );
+    top$flush flush(
+        .d(flush$d),
+        .q(flush$q),
+        .clock(flush$clock)
+    );
     
     // Update code
     always @(*) begin
         late_wait$clock = clock;
+        flush$clock = clock;
         late_wait$d = late_wait$q;
+        flush$d = flush$q;
         view$clock = clock;
         view$host_write = host_write;
         view$host_address = host_address;
@@ -1077,6 +1096,16 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         late$beats = view$q$9;
         cfb$clock = clock;
         cfb$start = start;
+        cfb$reset = reset;
+        late$reset = reset;
+        flush$d = flush$q;
+        if (reset) begin
+            flush$d = flush_clocks;
+        end
+        else if (flush$q != 'h0) begin
+            flush$d = flush$q - 'h1;
+        end
+        quiet = reset | (flush$q != 'h0);
         cfb$load_enable = load_enable;
         cfb$load_module = load_module;
         cfb$load_address = load_address;
@@ -1092,6 +1121,9 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         end
         else if (late_wait$q != 'h0) begin
             late_wait$d = late_wait$q - 'h1;
+        end
+        if (reset) begin
+            late_wait$d = 'h0;
         end
         late$clock = clock;
         late$start = late_wait$q == 'h1;
@@ -1109,12 +1141,12 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         lanes$0$order = view$q$10;
         cfb$ext_data$0 = ext_data$0;
         ext_addr$0 = cfb$ext_addr$0;
-        px_valid$0 = lanes$0$px_valid;
+        px_valid$0 = lanes$0$px_valid & ~quiet;
         px_x$0 = lanes$0$px_x;
         px_y$0 = lanes$0$px_y;
         px_face$0 = lanes$0$px_face;
-        res_beat$0 = lanes$0$res_beat;
-        res_valid$0 = lanes$0$res_valid;
+        res_beat$0 = lanes$0$res_beat & ~quiet;
+        res_valid$0 = lanes$0$res_valid & ~quiet;
         res$0 = lanes$0$res;
         lanes$0$value = cfb$value$0;
         late$ext_data$1 = 'h0;
@@ -1127,12 +1159,12 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         lanes$1$order = view$q$10;
         cfb$ext_data$1 = ext_data$1;
         ext_addr$1 = cfb$ext_addr$1;
-        px_valid$1 = lanes$1$px_valid;
+        px_valid$1 = lanes$1$px_valid & ~quiet;
         px_x$1 = lanes$1$px_x;
         px_y$1 = lanes$1$px_y;
         px_face$1 = lanes$1$px_face;
-        res_beat$1 = lanes$1$res_beat;
-        res_valid$1 = lanes$1$res_valid;
+        res_beat$1 = lanes$1$res_beat & ~quiet;
+        res_valid$1 = lanes$1$res_valid & ~quiet;
         res$1 = lanes$1$res;
         lanes$1$value = cfb$value$1;
         late$ext_data$2 = 'h0;
@@ -1145,12 +1177,12 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         lanes$2$order = view$q$10;
         cfb$ext_data$2 = ext_data$2;
         ext_addr$2 = cfb$ext_addr$2;
-        px_valid$2 = lanes$2$px_valid;
+        px_valid$2 = lanes$2$px_valid & ~quiet;
         px_x$2 = lanes$2$px_x;
         px_y$2 = lanes$2$px_y;
         px_face$2 = lanes$2$px_face;
-        res_beat$2 = lanes$2$res_beat;
-        res_valid$2 = lanes$2$res_valid;
+        res_beat$2 = lanes$2$res_beat & ~quiet;
+        res_valid$2 = lanes$2$res_valid & ~quiet;
         res$2 = lanes$2$res;
         lanes$2$value = cfb$value$2;
         late$ext_data$3 = 'h0;
@@ -1163,12 +1195,12 @@ module top(clock,start,load_enable,load_module,load_address,load_data,host_write
         lanes$3$order = view$q$10;
         cfb$ext_data$3 = ext_data$3;
         ext_addr$3 = cfb$ext_addr$3;
-        px_valid$3 = lanes$3$px_valid;
+        px_valid$3 = lanes$3$px_valid & ~quiet;
         px_x$3 = lanes$3$px_x;
         px_y$3 = lanes$3$px_y;
         px_face$3 = lanes$3$px_face;
-        res_beat$3 = lanes$3$res_beat;
-        res_valid$3 = lanes$3$res_valid;
+        res_beat$3 = lanes$3$res_beat & ~quiet;
+        res_valid$3 = lanes$3$res_valid & ~quiet;
         res$3 = lanes$3$res;
         lanes$3$value = cfb$value$3;
         if (gradient) begin

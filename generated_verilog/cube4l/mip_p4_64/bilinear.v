@@ -38,6 +38,9 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -92,6 +95,11 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$0$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$0$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -140,17 +148,19 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -158,7 +168,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -166,7 +176,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -174,7 +184,7 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -302,6 +312,7 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -310,6 +321,18 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -318,7 +341,12 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -333,6 +361,26 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -349,32 +397,53 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -397,6 +466,40 @@ module top$lanes$0$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q
+module top$lanes$0$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q2
+module top$lanes$0$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$diff_q
 module top$lanes$0$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -431,6 +534,40 @@ module top$lanes$0$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q
+module top$lanes$0$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$up_q2
+module top$lanes$0$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$bottom$w_q
 module top$lanes$0$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -529,6 +666,7 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -537,6 +675,18 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -545,7 +695,12 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -560,6 +715,26 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -576,32 +751,53 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -624,6 +820,40 @@ module top$lanes$0$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$top$a_q
+module top$lanes$0$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$a_q2
+module top$lanes$0$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$diff_q
 module top$lanes$0$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -658,6 +888,40 @@ module top$lanes$0$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$top$up_q
+module top$lanes$0$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$up_q2
+module top$lanes$0$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$top$w_q
 module top$lanes$0$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -688,6 +952,7 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -696,6 +961,18 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -704,7 +981,12 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -719,6 +1001,26 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -735,32 +1037,53 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -783,6 +1106,40 @@ module top$lanes$0$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q
+module top$lanes$0$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q2
+module top$lanes$0$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$diff_q
 module top$lanes$0$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -817,6 +1174,40 @@ module top$lanes$0$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q
+module top$lanes$0$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$up_q2
+module top$lanes$0$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$0$vertical$w_q
 module top$lanes$0$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -957,6 +1348,7 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -965,6 +1357,18 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -973,7 +1377,12 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -988,6 +1397,26 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -1004,32 +1433,53 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1052,6 +1502,40 @@ module top$lanes$0$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q
+module top$lanes$0$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q2
+module top$lanes$0$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$diff_q
 module top$lanes$0$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1086,6 +1570,40 @@ module top$lanes$0$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q
+module top$lanes$0$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$up_q2
+module top$lanes$0$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$bottom$w_q
 module top$lanes$0$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -1184,6 +1702,7 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1192,6 +1711,18 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1200,7 +1731,12 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1215,6 +1751,26 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -1231,32 +1787,53 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1279,6 +1856,40 @@ module top$lanes$0$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$top$a_q
+module top$lanes$0$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$a_q2
+module top$lanes$0$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$diff_q
 module top$lanes$0$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1313,6 +1924,40 @@ module top$lanes$0$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$top$up_q
+module top$lanes$0$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$up_q2
+module top$lanes$0$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$top$w_q
 module top$lanes$0$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -1343,6 +1988,7 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1351,6 +1997,18 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1359,7 +2017,12 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1374,6 +2037,26 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -1390,32 +2073,53 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1438,6 +2142,40 @@ module top$lanes$0$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q
+module top$lanes$0$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q2
+module top$lanes$0$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$diff_q
 module top$lanes$0$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -1472,6 +2210,40 @@ module top$lanes$0$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q
+module top$lanes$0$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$up_q2
+module top$lanes$0$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$1$vertical$w_q
 module top$lanes$0$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -1612,6 +2384,7 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1620,6 +2393,18 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1628,7 +2413,12 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1643,6 +2433,26 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -1659,32 +2469,53 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1707,6 +2538,40 @@ module top$lanes$0$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q
+module top$lanes$0$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q2
+module top$lanes$0$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$diff_q
 module top$lanes$0$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1741,6 +2606,40 @@ module top$lanes$0$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q
+module top$lanes$0$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$up_q2
+module top$lanes$0$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$bottom$w_q
 module top$lanes$0$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -1839,6 +2738,7 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1847,6 +2747,18 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -1855,7 +2767,12 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -1870,6 +2787,26 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -1886,32 +2823,53 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -1934,6 +2892,40 @@ module top$lanes$0$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$top$a_q
+module top$lanes$0$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$a_q2
+module top$lanes$0$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$diff_q
 module top$lanes$0$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1968,6 +2960,40 @@ module top$lanes$0$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$top$up_q
+module top$lanes$0$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$up_q2
+module top$lanes$0$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$top$w_q
 module top$lanes$0$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -1998,6 +3024,7 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2006,6 +3033,18 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2014,7 +3053,12 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2029,6 +3073,26 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2045,32 +3109,53 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2093,6 +3178,40 @@ module top$lanes$0$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q
+module top$lanes$0$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q2
+module top$lanes$0$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$diff_q
 module top$lanes$0$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2127,6 +3246,40 @@ module top$lanes$0$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q
+module top$lanes$0$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$up_q2
+module top$lanes$0$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$2$vertical$w_q
 module top$lanes$0$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2267,6 +3420,7 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2275,6 +3429,18 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2283,7 +3449,12 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2298,6 +3469,26 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -2314,32 +3505,53 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2362,6 +3574,40 @@ module top$lanes$0$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q
+module top$lanes$0$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q2
+module top$lanes$0$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$diff_q
 module top$lanes$0$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2396,6 +3642,40 @@ module top$lanes$0$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q
+module top$lanes$0$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$up_q2
+module top$lanes$0$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$bottom$w_q
 module top$lanes$0$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -2494,6 +3774,7 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2502,6 +3783,18 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2510,7 +3803,12 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2525,6 +3823,26 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -2541,32 +3859,53 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2589,6 +3928,40 @@ module top$lanes$0$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$top$a_q
+module top$lanes$0$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$a_q2
+module top$lanes$0$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$diff_q
 module top$lanes$0$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2623,6 +3996,40 @@ module top$lanes$0$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$top$up_q
+module top$lanes$0$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$up_q2
+module top$lanes$0$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$top$w_q
 module top$lanes$0$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -2653,6 +4060,7 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2661,6 +4069,18 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -2669,7 +4089,12 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -2684,6 +4109,26 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$0$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -2700,32 +4145,53 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -2748,6 +4214,40 @@ module top$lanes$0$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q
+module top$lanes$0$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q2
+module top$lanes$0$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$diff_q
 module top$lanes$0$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2782,6 +4282,40 @@ module top$lanes$0$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q
+module top$lanes$0$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$up_q2
+module top$lanes$0$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$ch$3$vertical$w_q
 module top$lanes$0$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -2867,6 +4401,23 @@ module top$lanes$0$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$wy_q$2
+module top$lanes$0$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$bilinear$wy_q$3
 module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -2907,6 +4458,9 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -2961,6 +4515,11 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$1$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$1$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -3009,17 +4568,19 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -3027,7 +4588,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -3035,7 +4596,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -3043,7 +4604,7 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -3171,6 +4732,7 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3179,6 +4741,18 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3187,7 +4761,12 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3202,6 +4781,26 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3218,32 +4817,53 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3266,6 +4886,40 @@ module top$lanes$1$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q
+module top$lanes$1$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q2
+module top$lanes$1$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$diff_q
 module top$lanes$1$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3300,6 +4954,40 @@ module top$lanes$1$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q
+module top$lanes$1$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$up_q2
+module top$lanes$1$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$bottom$w_q
 module top$lanes$1$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -3398,6 +5086,7 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3406,6 +5095,18 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3414,7 +5115,12 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3429,6 +5135,26 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -3445,32 +5171,53 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3493,6 +5240,40 @@ module top$lanes$1$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$top$a_q
+module top$lanes$1$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$a_q2
+module top$lanes$1$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$diff_q
 module top$lanes$1$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3527,6 +5308,40 @@ module top$lanes$1$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$top$up_q
+module top$lanes$1$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$up_q2
+module top$lanes$1$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$top$w_q
 module top$lanes$1$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -3557,6 +5372,7 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3565,6 +5381,18 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3573,7 +5401,12 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3588,6 +5421,26 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -3604,32 +5457,53 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3652,6 +5526,40 @@ module top$lanes$1$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q
+module top$lanes$1$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q2
+module top$lanes$1$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$diff_q
 module top$lanes$1$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -3686,6 +5594,40 @@ module top$lanes$1$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q
+module top$lanes$1$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$up_q2
+module top$lanes$1$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$0$vertical$w_q
 module top$lanes$1$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -3826,6 +5768,7 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3834,6 +5777,18 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -3842,7 +5797,12 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -3857,6 +5817,26 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -3873,32 +5853,53 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -3921,6 +5922,40 @@ module top$lanes$1$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q
+module top$lanes$1$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q2
+module top$lanes$1$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$diff_q
 module top$lanes$1$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3955,6 +5990,40 @@ module top$lanes$1$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q
+module top$lanes$1$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$up_q2
+module top$lanes$1$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$bottom$w_q
 module top$lanes$1$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4053,6 +6122,7 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4061,6 +6131,18 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4069,7 +6151,12 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4084,6 +6171,26 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -4100,32 +6207,53 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4148,6 +6276,40 @@ module top$lanes$1$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$top$a_q
+module top$lanes$1$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$a_q2
+module top$lanes$1$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$diff_q
 module top$lanes$1$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4182,6 +6344,40 @@ module top$lanes$1$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$top$up_q
+module top$lanes$1$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$up_q2
+module top$lanes$1$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$top$w_q
 module top$lanes$1$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -4212,6 +6408,7 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4220,6 +6417,18 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4228,7 +6437,12 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4243,6 +6457,26 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -4259,32 +6493,53 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4307,6 +6562,40 @@ module top$lanes$1$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q
+module top$lanes$1$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q2
+module top$lanes$1$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$diff_q
 module top$lanes$1$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4341,6 +6630,40 @@ module top$lanes$1$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q
+module top$lanes$1$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$up_q2
+module top$lanes$1$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$1$vertical$w_q
 module top$lanes$1$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -4481,6 +6804,7 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4489,6 +6813,18 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4497,7 +6833,12 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4512,6 +6853,26 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -4528,32 +6889,53 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4576,6 +6958,40 @@ module top$lanes$1$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q
+module top$lanes$1$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q2
+module top$lanes$1$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$diff_q
 module top$lanes$1$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -4610,6 +7026,40 @@ module top$lanes$1$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q
+module top$lanes$1$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$up_q2
+module top$lanes$1$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$bottom$w_q
 module top$lanes$1$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -4708,6 +7158,7 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4716,6 +7167,18 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4724,7 +7187,12 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4739,6 +7207,26 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -4755,32 +7243,53 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4803,6 +7312,40 @@ module top$lanes$1$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$top$a_q
+module top$lanes$1$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$a_q2
+module top$lanes$1$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$diff_q
 module top$lanes$1$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4837,6 +7380,40 @@ module top$lanes$1$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$top$up_q
+module top$lanes$1$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$up_q2
+module top$lanes$1$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$top$w_q
 module top$lanes$1$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -4867,6 +7444,7 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4875,6 +7453,18 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -4883,7 +7473,12 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -4898,6 +7493,26 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -4914,32 +7529,53 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -4962,6 +7598,40 @@ module top$lanes$1$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q
+module top$lanes$1$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q2
+module top$lanes$1$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$diff_q
 module top$lanes$1$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4996,6 +7666,40 @@ module top$lanes$1$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q
+module top$lanes$1$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$up_q2
+module top$lanes$1$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$2$vertical$w_q
 module top$lanes$1$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -5136,6 +7840,7 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5144,6 +7849,18 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5152,7 +7869,12 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5167,6 +7889,26 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -5183,32 +7925,53 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5231,6 +7994,40 @@ module top$lanes$1$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q
+module top$lanes$1$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q2
+module top$lanes$1$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$diff_q
 module top$lanes$1$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -5265,6 +8062,40 @@ module top$lanes$1$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q
+module top$lanes$1$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$up_q2
+module top$lanes$1$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$bottom$w_q
 module top$lanes$1$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -5363,6 +8194,7 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5371,6 +8203,18 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5379,7 +8223,12 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5394,6 +8243,26 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -5410,32 +8279,53 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5458,6 +8348,40 @@ module top$lanes$1$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$top$a_q
+module top$lanes$1$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$a_q2
+module top$lanes$1$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$diff_q
 module top$lanes$1$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -5492,6 +8416,40 @@ module top$lanes$1$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$top$up_q
+module top$lanes$1$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$up_q2
+module top$lanes$1$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$top$w_q
 module top$lanes$1$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -5522,6 +8480,7 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5530,6 +8489,18 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -5538,7 +8509,12 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -5553,6 +8529,26 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$1$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -5569,32 +8565,53 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -5617,6 +8634,40 @@ module top$lanes$1$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q
+module top$lanes$1$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q2
+module top$lanes$1$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$diff_q
 module top$lanes$1$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -5651,6 +8702,40 @@ module top$lanes$1$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q
+module top$lanes$1$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$up_q2
+module top$lanes$1$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$ch$3$vertical$w_q
 module top$lanes$1$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -5736,6 +8821,23 @@ module top$lanes$1$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$wy_q$2
+module top$lanes$1$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$bilinear$wy_q$3
 module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -5776,6 +8878,9 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -5830,6 +8935,11 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$2$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$2$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -5878,17 +8988,19 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -5896,7 +9008,7 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -5904,7 +9016,7 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -5912,7 +9024,7 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -6040,6 +9152,7 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6048,6 +9161,18 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6056,7 +9181,12 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6071,6 +9201,26 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -6087,32 +9237,53 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6135,6 +9306,40 @@ module top$lanes$2$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$bottom$a_q
+module top$lanes$2$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$a_q2
+module top$lanes$2$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$diff_q
 module top$lanes$2$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6169,6 +9374,40 @@ module top$lanes$2$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$bottom$up_q
+module top$lanes$2$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$up_q2
+module top$lanes$2$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$bottom$w_q
 module top$lanes$2$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -6267,6 +9506,7 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6275,6 +9515,18 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6283,7 +9535,12 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6298,6 +9555,26 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -6314,32 +9591,53 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6362,6 +9660,40 @@ module top$lanes$2$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$top$a_q
+module top$lanes$2$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$a_q2
+module top$lanes$2$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$diff_q
 module top$lanes$2$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -6396,6 +9728,40 @@ module top$lanes$2$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$top$up_q
+module top$lanes$2$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$up_q2
+module top$lanes$2$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$top$w_q
 module top$lanes$2$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -6426,6 +9792,7 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6434,6 +9801,18 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6442,7 +9821,12 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6457,6 +9841,26 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -6473,32 +9877,53 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6521,6 +9946,40 @@ module top$lanes$2$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$vertical$a_q
+module top$lanes$2$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$a_q2
+module top$lanes$2$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$diff_q
 module top$lanes$2$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -6555,6 +10014,40 @@ module top$lanes$2$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$vertical$up_q
+module top$lanes$2$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$up_q2
+module top$lanes$2$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$0$vertical$w_q
 module top$lanes$2$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -6695,6 +10188,7 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6703,6 +10197,18 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6711,7 +10217,12 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6726,6 +10237,26 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -6742,32 +10273,53 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -6790,6 +10342,40 @@ module top$lanes$2$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$bottom$a_q
+module top$lanes$2$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$a_q2
+module top$lanes$2$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$diff_q
 module top$lanes$2$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6824,6 +10410,40 @@ module top$lanes$2$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$bottom$up_q
+module top$lanes$2$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$up_q2
+module top$lanes$2$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$bottom$w_q
 module top$lanes$2$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -6922,6 +10542,7 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6930,6 +10551,18 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -6938,7 +10571,12 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -6953,6 +10591,26 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -6969,32 +10627,53 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7017,6 +10696,40 @@ module top$lanes$2$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$top$a_q
+module top$lanes$2$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$a_q2
+module top$lanes$2$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$diff_q
 module top$lanes$2$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7051,6 +10764,40 @@ module top$lanes$2$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$top$up_q
+module top$lanes$2$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$up_q2
+module top$lanes$2$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$top$w_q
 module top$lanes$2$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -7081,6 +10828,7 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7089,6 +10837,18 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -7097,7 +10857,12 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -7112,6 +10877,26 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -7128,32 +10913,53 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7176,6 +10982,40 @@ module top$lanes$2$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$vertical$a_q
+module top$lanes$2$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$a_q2
+module top$lanes$2$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$diff_q
 module top$lanes$2$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -7210,6 +11050,40 @@ module top$lanes$2$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$vertical$up_q
+module top$lanes$2$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$up_q2
+module top$lanes$2$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$1$vertical$w_q
 module top$lanes$2$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -7350,6 +11224,7 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7358,6 +11233,18 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -7366,7 +11253,12 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -7381,6 +11273,26 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -7397,32 +11309,53 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7445,6 +11378,40 @@ module top$lanes$2$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$bottom$a_q
+module top$lanes$2$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$a_q2
+module top$lanes$2$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$diff_q
 module top$lanes$2$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -7479,6 +11446,40 @@ module top$lanes$2$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$bottom$up_q
+module top$lanes$2$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$up_q2
+module top$lanes$2$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$bottom$w_q
 module top$lanes$2$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -7577,6 +11578,7 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7585,6 +11587,18 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -7593,7 +11607,12 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -7608,6 +11627,26 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -7624,32 +11663,53 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7672,6 +11732,40 @@ module top$lanes$2$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$top$a_q
+module top$lanes$2$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$a_q2
+module top$lanes$2$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$diff_q
 module top$lanes$2$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7706,6 +11800,40 @@ module top$lanes$2$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$top$up_q
+module top$lanes$2$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$up_q2
+module top$lanes$2$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$top$w_q
 module top$lanes$2$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -7736,6 +11864,7 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7744,6 +11873,18 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -7752,7 +11893,12 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -7767,6 +11913,26 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -7783,32 +11949,53 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -7831,6 +12018,40 @@ module top$lanes$2$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$vertical$a_q
+module top$lanes$2$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$a_q2
+module top$lanes$2$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$diff_q
 module top$lanes$2$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -7865,6 +12086,40 @@ module top$lanes$2$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$vertical$up_q
+module top$lanes$2$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$up_q2
+module top$lanes$2$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$2$vertical$w_q
 module top$lanes$2$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -8005,6 +12260,7 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8013,6 +12269,18 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8021,7 +12289,12 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8036,6 +12309,26 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -8052,32 +12345,53 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8100,6 +12414,40 @@ module top$lanes$2$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$bottom$a_q
+module top$lanes$2$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$a_q2
+module top$lanes$2$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$diff_q
 module top$lanes$2$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -8134,6 +12482,40 @@ module top$lanes$2$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$bottom$up_q
+module top$lanes$2$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$up_q2
+module top$lanes$2$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$bottom$w_q
 module top$lanes$2$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -8232,6 +12614,7 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8240,6 +12623,18 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8248,7 +12643,12 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8263,6 +12663,26 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -8279,32 +12699,53 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8327,6 +12768,40 @@ module top$lanes$2$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$top$a_q
+module top$lanes$2$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$a_q2
+module top$lanes$2$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$diff_q
 module top$lanes$2$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -8361,6 +12836,40 @@ module top$lanes$2$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$top$up_q
+module top$lanes$2$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$up_q2
+module top$lanes$2$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$top$w_q
 module top$lanes$2$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -8391,6 +12900,7 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8399,6 +12909,18 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8407,7 +12929,12 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8422,6 +12949,26 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$2$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -8438,32 +12985,53 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -8486,6 +13054,40 @@ module top$lanes$2$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$vertical$a_q
+module top$lanes$2$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$a_q2
+module top$lanes$2$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$diff_q
 module top$lanes$2$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -8520,6 +13122,40 @@ module top$lanes$2$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$vertical$up_q
+module top$lanes$2$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$up_q2
+module top$lanes$2$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$ch$3$vertical$w_q
 module top$lanes$2$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -8605,6 +13241,23 @@ module top$lanes$2$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$wy_q$2
+module top$lanes$2$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$bilinear$wy_q$3
 module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -8645,6 +13298,9 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
+    reg  [15:0] wy_q$3$d;
+    wire  [15:0] wy_q$3$q;
+    reg  wy_q$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -8699,6 +13355,11 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
+    top$lanes$3$bilinear$wy_q$3 wy_q$3(
+        .d(wy_q$3$d),
+        .q(wy_q$3$q),
+        .clock(wy_q$3$clock)
+    );
     top$lanes$3$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
         .c00(ch$0$c00),
@@ -8747,17 +13408,19 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
+        wy_q$3$clock = clock;
         wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
+        wy_q$3$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
         ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$2$q;
+        ch$0$wy = wy_q$3$q;
         out$0 = ch$0$y;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
@@ -8765,7 +13428,7 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
         ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$2$q;
+        ch$1$wy = wy_q$3$q;
         out$1 = ch$1$y;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
@@ -8773,7 +13436,7 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
         ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$2$q;
+        ch$2$wy = wy_q$3$q;
         out$2 = ch$2$y;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
@@ -8781,7 +13444,7 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
         ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$2$q;
+        ch$3$wy = wy_q$3$q;
         out$3 = ch$3$y;
     end
     
@@ -8909,6 +13572,7 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8917,6 +13581,18 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -8925,7 +13601,12 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -8940,6 +13621,26 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$0$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -8956,32 +13657,53 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9004,6 +13726,40 @@ module top$lanes$3$bilinear$ch$0$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$bottom$a_q
+module top$lanes$3$bilinear$ch$0$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$a_q2
+module top$lanes$3$bilinear$ch$0$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$diff_q
 module top$lanes$3$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -9038,6 +13794,40 @@ module top$lanes$3$bilinear$ch$0$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$bottom$up_q
+module top$lanes$3$bilinear$ch$0$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$up_q2
+module top$lanes$3$bilinear$ch$0$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$bottom$w_q
 module top$lanes$3$bilinear$ch$0$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -9136,6 +13926,7 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9144,6 +13935,18 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9152,7 +13955,12 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9167,6 +13975,26 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$0$top$prod_q prod_q(
         .d(prod_q$d),
@@ -9183,32 +14011,53 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9231,6 +14080,40 @@ module top$lanes$3$bilinear$ch$0$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$top$a_q
+module top$lanes$3$bilinear$ch$0$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$a_q2
+module top$lanes$3$bilinear$ch$0$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$diff_q
 module top$lanes$3$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -9265,6 +14148,40 @@ module top$lanes$3$bilinear$ch$0$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$top$up_q
+module top$lanes$3$bilinear$ch$0$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$up_q2
+module top$lanes$3$bilinear$ch$0$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$top$w_q
 module top$lanes$3$bilinear$ch$0$top$y_q(d,q,clock);
     
     // Module arguments
@@ -9295,6 +14212,7 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9303,6 +14221,18 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9311,7 +14241,12 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9326,6 +14261,26 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$0$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -9342,32 +14297,53 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9390,6 +14366,40 @@ module top$lanes$3$bilinear$ch$0$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$vertical$a_q
+module top$lanes$3$bilinear$ch$0$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$a_q2
+module top$lanes$3$bilinear$ch$0$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$diff_q
 module top$lanes$3$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -9424,6 +14434,40 @@ module top$lanes$3$bilinear$ch$0$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$vertical$up_q
+module top$lanes$3$bilinear$ch$0$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$up_q2
+module top$lanes$3$bilinear$ch$0$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$0$vertical$w_q
 module top$lanes$3$bilinear$ch$0$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -9564,6 +14608,7 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9572,6 +14617,18 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9580,7 +14637,12 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9595,6 +14657,26 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$1$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -9611,32 +14693,53 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9659,6 +14762,40 @@ module top$lanes$3$bilinear$ch$1$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$bottom$a_q
+module top$lanes$3$bilinear$ch$1$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$a_q2
+module top$lanes$3$bilinear$ch$1$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$diff_q
 module top$lanes$3$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -9693,6 +14830,40 @@ module top$lanes$3$bilinear$ch$1$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$bottom$up_q
+module top$lanes$3$bilinear$ch$1$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$up_q2
+module top$lanes$3$bilinear$ch$1$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$bottom$w_q
 module top$lanes$3$bilinear$ch$1$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -9791,6 +14962,7 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9799,6 +14971,18 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9807,7 +14991,12 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9822,6 +15011,26 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$1$top$prod_q prod_q(
         .d(prod_q$d),
@@ -9838,32 +15047,53 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -9886,6 +15116,40 @@ module top$lanes$3$bilinear$ch$1$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$top$a_q
+module top$lanes$3$bilinear$ch$1$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$a_q2
+module top$lanes$3$bilinear$ch$1$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$diff_q
 module top$lanes$3$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -9920,6 +15184,40 @@ module top$lanes$3$bilinear$ch$1$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$top$up_q
+module top$lanes$3$bilinear$ch$1$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$up_q2
+module top$lanes$3$bilinear$ch$1$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$top$w_q
 module top$lanes$3$bilinear$ch$1$top$y_q(d,q,clock);
     
     // Module arguments
@@ -9950,6 +15248,7 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9958,6 +15257,18 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -9966,7 +15277,12 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -9981,6 +15297,26 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$1$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -9997,32 +15333,53 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -10045,6 +15402,40 @@ module top$lanes$3$bilinear$ch$1$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$vertical$a_q
+module top$lanes$3$bilinear$ch$1$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$a_q2
+module top$lanes$3$bilinear$ch$1$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$diff_q
 module top$lanes$3$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -10079,6 +15470,40 @@ module top$lanes$3$bilinear$ch$1$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$vertical$up_q
+module top$lanes$3$bilinear$ch$1$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$up_q2
+module top$lanes$3$bilinear$ch$1$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$1$vertical$w_q
 module top$lanes$3$bilinear$ch$1$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -10219,6 +15644,7 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10227,6 +15653,18 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -10235,7 +15673,12 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -10250,6 +15693,26 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$2$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -10266,32 +15729,53 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -10314,6 +15798,40 @@ module top$lanes$3$bilinear$ch$2$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$bottom$a_q
+module top$lanes$3$bilinear$ch$2$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$a_q2
+module top$lanes$3$bilinear$ch$2$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$diff_q
 module top$lanes$3$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -10348,6 +15866,40 @@ module top$lanes$3$bilinear$ch$2$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$bottom$up_q
+module top$lanes$3$bilinear$ch$2$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$up_q2
+module top$lanes$3$bilinear$ch$2$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$bottom$w_q
 module top$lanes$3$bilinear$ch$2$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -10446,6 +15998,7 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10454,6 +16007,18 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -10462,7 +16027,12 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -10477,6 +16047,26 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$2$top$prod_q prod_q(
         .d(prod_q$d),
@@ -10493,32 +16083,53 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -10541,6 +16152,40 @@ module top$lanes$3$bilinear$ch$2$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$top$a_q
+module top$lanes$3$bilinear$ch$2$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$a_q2
+module top$lanes$3$bilinear$ch$2$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$diff_q
 module top$lanes$3$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -10575,6 +16220,40 @@ module top$lanes$3$bilinear$ch$2$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$top$up_q
+module top$lanes$3$bilinear$ch$2$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$up_q2
+module top$lanes$3$bilinear$ch$2$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$top$w_q
 module top$lanes$3$bilinear$ch$2$top$y_q(d,q,clock);
     
     // Module arguments
@@ -10605,6 +16284,7 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10613,6 +16293,18 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -10621,7 +16313,12 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -10636,6 +16333,26 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$2$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -10652,32 +16369,53 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -10700,6 +16438,40 @@ module top$lanes$3$bilinear$ch$2$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$vertical$a_q
+module top$lanes$3$bilinear$ch$2$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$a_q2
+module top$lanes$3$bilinear$ch$2$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$diff_q
 module top$lanes$3$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -10734,6 +16506,40 @@ module top$lanes$3$bilinear$ch$2$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$vertical$up_q
+module top$lanes$3$bilinear$ch$2$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$up_q2
+module top$lanes$3$bilinear$ch$2$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$2$vertical$w_q
 module top$lanes$3$bilinear$ch$2$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -10874,6 +16680,7 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10882,6 +16689,18 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -10890,7 +16709,12 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -10905,6 +16729,26 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$3$bottom$prod_q prod_q(
         .d(prod_q$d),
@@ -10921,32 +16765,53 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -10969,6 +16834,40 @@ module top$lanes$3$bilinear$ch$3$bottom$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$bottom$a_q
+module top$lanes$3$bilinear$ch$3$bottom$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$a_q2
+module top$lanes$3$bilinear$ch$3$bottom$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$diff_q
 module top$lanes$3$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -11003,6 +16902,40 @@ module top$lanes$3$bilinear$ch$3$bottom$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$bottom$up_q
+module top$lanes$3$bilinear$ch$3$bottom$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$up_q2
+module top$lanes$3$bilinear$ch$3$bottom$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$bottom$w_q
 module top$lanes$3$bilinear$ch$3$bottom$y_q(d,q,clock);
     
     // Module arguments
@@ -11101,6 +17034,7 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -11109,6 +17043,18 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -11117,7 +17063,12 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -11132,6 +17083,26 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$3$top$prod_q prod_q(
         .d(prod_q$d),
@@ -11148,32 +17119,53 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -11196,6 +17188,40 @@ module top$lanes$3$bilinear$ch$3$top$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$top$a_q
+module top$lanes$3$bilinear$ch$3$top$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$a_q2
+module top$lanes$3$bilinear$ch$3$top$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$diff_q
 module top$lanes$3$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -11230,6 +17256,40 @@ module top$lanes$3$bilinear$ch$3$top$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$top$up_q
+module top$lanes$3$bilinear$ch$3$top$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$up_q2
+module top$lanes$3$bilinear$ch$3$top$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$top$w_q
 module top$lanes$3$bilinear$ch$3$top$y_q(d,q,clock);
     
     // Module arguments
@@ -11260,6 +17320,7 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -11268,6 +17329,18 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] a_q$d;
     wire  [31:0] a_q$q;
     reg  a_q$clock;
+    reg  [31:0] diff_q$d;
+    wire  [31:0] diff_q$q;
+    reg  diff_q$clock;
+    reg  [15:0] w_q$d;
+    wire  [15:0] w_q$q;
+    reg  w_q$clock;
+    reg  up_q2$d;
+    wire  up_q2$q;
+    reg  up_q2$clock;
+    reg  [31:0] a_q2$d;
+    wire  [31:0] a_q2$q;
+    reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
     reg  prod_q$clock;
@@ -11276,7 +17349,12 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  y_q$clock;
     
     // Local signals
+    reg  up_c;
+    reg  [31:0] diff_c;
+    reg  up;
+    reg  [31:0] a_in;
     reg  [31:0] diff;
+    reg  [15:0] w_in;
     reg  [63:0] prod;
     reg  [31:0] step_up;
     reg  [31:0] step_down;
@@ -11291,6 +17369,26 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(a_q$d),
         .q(a_q$q),
         .clock(a_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$diff_q diff_q(
+        .d(diff_q$d),
+        .q(diff_q$q),
+        .clock(diff_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$w_q w_q(
+        .d(w_q$d),
+        .q(w_q$q),
+        .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$up_q2 up_q2(
+        .d(up_q2$d),
+        .q(up_q2$q),
+        .clock(up_q2$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$a_q2 a_q2(
+        .d(a_q2$d),
+        .q(a_q2$q),
+        .clock(a_q2$clock)
     );
     top$lanes$3$bilinear$ch$3$vertical$prod_q prod_q(
         .d(prod_q$d),
@@ -11307,32 +17405,53 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     always @(*) begin
         up_q$clock = clock;
         a_q$clock = clock;
+        diff_q$clock = clock;
+        w_q$clock = clock;
+        up_q2$clock = clock;
+        a_q2$clock = clock;
         prod_q$clock = clock;
         y_q$clock = clock;
         up_q$d = up_q$q;
         a_q$d = a_q$q;
+        diff_q$d = diff_q$q;
+        w_q$d = w_q$q;
+        up_q2$d = up_q2$q;
+        a_q2$d = a_q2$q;
         prod_q$d = prod_q$q;
         y_q$d = y_q$q;
-        if (b >= a) begin
-            diff = b - a;
+        up_c = b >= a;
+        diff_c = b - a;
+        if (~up_c) begin
+            diff_c = a - b;
         end
-        else begin
-            diff = a - b;
-        end
-        prod = 64'(diff[('h0)+:(16)] * w);
-        if (wide) begin
-            prod = (64'(diff[('h10)+:(16)] * w) << 'h10) + 64'(diff[('h0)+:(16)] * w);
-        end
-        up_q$d = b >= a;
+        up_q$d = up_c;
         a_q$d = a;
+        diff_q$d = diff_c;
+        w_q$d = w;
+        up = up_c;
+        a_in = a;
+        diff = diff_c;
+        w_in = w;
+        if (split) begin
+            up = up_q$q;
+            a_in = a_q$q;
+            diff = diff_q$q;
+            w_in = w_q$q;
+        end
+        prod = 64'(diff[('h0)+:(16)] * w_in);
+        if (wide) begin
+            prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
+        end
+        up_q2$d = up;
+        a_q2$d = a_in;
         prod_q$d = prod;
         step_up = 32'((prod_q$q + half) >> shift);
         step_down = 32'((prod_q$q + half - 'h1) >> shift);
-        if (up_q$q) begin
-            y_q$d = a_q$q + step_up;
+        if (up_q2$q) begin
+            y_q$d = a_q2$q + step_up;
         end
         else begin
-            y_q$d = a_q$q - step_down;
+            y_q$d = a_q2$q - step_down;
         end
         y = y_q$q;
     end
@@ -11355,6 +17474,40 @@ module top$lanes$3$bilinear$ch$3$vertical$a_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$vertical$a_q
+module top$lanes$3$bilinear$ch$3$vertical$a_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$a_q2
+module top$lanes$3$bilinear$ch$3$vertical$diff_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$diff_q
 module top$lanes$3$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -11389,6 +17542,40 @@ module top$lanes$3$bilinear$ch$3$vertical$up_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$vertical$up_q
+module top$lanes$3$bilinear$ch$3$vertical$up_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$up_q2
+module top$lanes$3$bilinear$ch$3$vertical$w_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$ch$3$vertical$w_q
 module top$lanes$3$bilinear$ch$3$vertical$y_q(d,q,clock);
     
     // Module arguments
@@ -11474,3 +17661,20 @@ module top$lanes$3$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$wy_q$2
+module top$lanes$3$bilinear$wy_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$bilinear$wy_q$3

@@ -76,6 +76,24 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -85,6 +103,9 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -97,6 +118,21 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -109,12 +145,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -133,6 +193,30 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -154,12 +238,42 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y = 'h0;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
@@ -172,12 +286,15 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y = 'h0;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y = 'h0;
@@ -208,6 +325,36 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$0$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$0$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$0$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$0$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$0$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$0$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$0$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -222,6 +369,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$0$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$0$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -243,6 +395,31 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$0$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$0$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$0$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$0$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$0$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$0$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -263,6 +440,11 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$0$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$0$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -272,6 +454,41 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$0$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$0$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$0$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$0$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$0$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$0$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$0$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$0$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -302,6 +519,46 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$0$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$0$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$0$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$0$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$0$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$0$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$0$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$0$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$0$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -337,6 +594,51 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(valid_q$6$d),
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
+    );
+    top$lanes$0$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$0$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$0$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$0$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$0$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$0$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$0$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$0$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$0$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     top$lanes$0$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -381,10 +683,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -406,63 +710,110 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -470,6 +821,14 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -477,39 +836,61 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -528,17 +909,17 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -547,7 +928,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -559,7 +940,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -620,6 +1001,125 @@ module top$lanes$0$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$1
+module top$lanes$0$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$2
+module top$lanes$0$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$3
+module top$lanes$0$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$4
+module top$lanes$0$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$5
+module top$lanes$0$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$6
+module top$lanes$0$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$7
+module top$lanes$0$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$8
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -722,6 +1222,23 @@ module top$lanes$0$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$gate_q$3
+module top$lanes$0$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$gate_q$4
 module top$lanes$0$shader$lut_q$0(d,q,clock);
     
     // Module arguments
@@ -790,6 +1307,193 @@ module top$lanes$0$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lut_q$3
+module top$lanes$0$shader$lut_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$4
+module top$lanes$0$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$5
+module top$lanes$0$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$6
+module top$lanes$0$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$7
+module top$lanes$0$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lut_q$8
+module top$lanes$0$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$0
+module top$lanes$0$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$1
+module top$lanes$0$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mag_in$2
+module top$lanes$0$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$0
+module top$lanes$0$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$1
+module top$lanes$0$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$neg_in$2
 module top$lanes$0$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -858,6 +1562,23 @@ module top$lanes$0$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$row_q$2
+module top$lanes$0$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$row_q$3
 module top$lanes$0$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -909,6 +1630,23 @@ module top$lanes$0$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$shaded_q$2
+module top$lanes$0$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$specular_q
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -943,6 +1681,91 @@ module top$lanes$0$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$1
+module top$lanes$0$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$10
+module top$lanes$0$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$11
+module top$lanes$0$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$12
+module top$lanes$0$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$13
+module top$lanes$0$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$14
 module top$lanes$0$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -1028,6 +1851,57 @@ module top$lanes$0$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$6
+module top$lanes$0$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$7
+module top$lanes$0$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$8
+module top$lanes$0$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$9
 module top$lanes$0$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -1062,6 +1936,74 @@ module top$lanes$0$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$1
+module top$lanes$0$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$10
+module top$lanes$0$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$11
+module top$lanes$0$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$12
+module top$lanes$0$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$13
 module top$lanes$0$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -1130,6 +2072,74 @@ module top$lanes$0$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$5
+module top$lanes$0$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$6
+module top$lanes$0$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$7
+module top$lanes$0$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$8
+module top$lanes$0$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$9
 module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -1208,6 +2218,24 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -1217,6 +2245,9 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -1229,6 +2260,21 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -1241,12 +2287,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -1265,6 +2335,30 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -1286,12 +2380,42 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y = 'h0;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
@@ -1304,12 +2428,15 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y = 'h0;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y = 'h0;
@@ -1340,6 +2467,36 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$1$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$1$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$1$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$1$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$1$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$1$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$1$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -1354,6 +2511,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$1$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$1$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -1375,6 +2537,31 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$1$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$1$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$1$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$1$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$1$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$1$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -1395,6 +2582,11 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$1$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$1$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -1404,6 +2596,41 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$1$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$1$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$1$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$1$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$1$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$1$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$1$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$1$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -1434,6 +2661,46 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$1$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$1$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$1$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$1$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$1$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$1$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$1$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$1$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$1$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -1469,6 +2736,51 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(valid_q$6$d),
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
+    );
+    top$lanes$1$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$1$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$1$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$1$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$1$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$1$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$1$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$1$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$1$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     top$lanes$1$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -1513,10 +2825,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -1538,63 +2852,110 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -1602,6 +2963,14 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -1609,39 +2978,61 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -1660,17 +3051,17 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -1679,7 +3070,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -1691,7 +3082,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1752,6 +3143,125 @@ module top$lanes$1$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$1
+module top$lanes$1$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$2
+module top$lanes$1$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$3
+module top$lanes$1$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$4
+module top$lanes$1$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$5
+module top$lanes$1$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$6
+module top$lanes$1$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$7
+module top$lanes$1$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$8
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1854,6 +3364,23 @@ module top$lanes$1$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$gate_q$3
+module top$lanes$1$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$gate_q$4
 module top$lanes$1$shader$lut_q$0(d,q,clock);
     
     // Module arguments
@@ -1922,6 +3449,193 @@ module top$lanes$1$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lut_q$3
+module top$lanes$1$shader$lut_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$4
+module top$lanes$1$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$5
+module top$lanes$1$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$6
+module top$lanes$1$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$7
+module top$lanes$1$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lut_q$8
+module top$lanes$1$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$0
+module top$lanes$1$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$1
+module top$lanes$1$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mag_in$2
+module top$lanes$1$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$0
+module top$lanes$1$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$1
+module top$lanes$1$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$neg_in$2
 module top$lanes$1$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -1990,6 +3704,23 @@ module top$lanes$1$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$row_q$2
+module top$lanes$1$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$row_q$3
 module top$lanes$1$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -2041,6 +3772,23 @@ module top$lanes$1$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$shaded_q$2
+module top$lanes$1$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$specular_q
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -2075,6 +3823,91 @@ module top$lanes$1$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$1
+module top$lanes$1$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$10
+module top$lanes$1$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$11
+module top$lanes$1$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$12
+module top$lanes$1$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$13
+module top$lanes$1$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$14
 module top$lanes$1$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -2160,6 +3993,57 @@ module top$lanes$1$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$6
+module top$lanes$1$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$7
+module top$lanes$1$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$8
+module top$lanes$1$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$9
 module top$lanes$1$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -2194,6 +4078,74 @@ module top$lanes$1$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$1
+module top$lanes$1$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$10
+module top$lanes$1$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$11
+module top$lanes$1$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$12
+module top$lanes$1$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$13
 module top$lanes$1$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -2262,6 +4214,74 @@ module top$lanes$1$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$5
+module top$lanes$1$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$6
+module top$lanes$1$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$7
+module top$lanes$1$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$8
+module top$lanes$1$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$9
 module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -2340,6 +4360,24 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -2349,6 +4387,9 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -2361,6 +4402,21 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -2373,12 +4429,36 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -2397,6 +4477,30 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -2418,12 +4522,42 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y = 'h0;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
@@ -2436,12 +4570,15 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y = 'h0;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y = 'h0;
@@ -2472,6 +4609,36 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$2$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$2$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$2$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$2$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$2$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$2$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$2$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -2486,6 +4653,11 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$2$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$2$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -2507,6 +4679,31 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$2$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$2$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$2$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$2$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$2$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$2$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -2527,6 +4724,11 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$2$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$2$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -2536,6 +4738,41 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$2$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$2$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$2$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$2$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$2$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$2$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$2$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$2$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -2566,6 +4803,46 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$2$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$2$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$2$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$2$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$2$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$2$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$2$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$2$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$2$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -2601,6 +4878,51 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(valid_q$6$d),
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
+    );
+    top$lanes$2$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$2$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$2$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$2$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$2$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$2$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$2$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$2$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$2$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     top$lanes$2$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -2645,10 +4967,12 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -2670,63 +4994,110 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -2734,6 +5105,14 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -2741,39 +5120,61 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -2792,17 +5193,17 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -2811,7 +5212,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -2823,7 +5224,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -2884,6 +5285,125 @@ module top$lanes$2$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$alpha_q$1
+module top$lanes$2$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$2
+module top$lanes$2$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$3
+module top$lanes$2$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$4
+module top$lanes$2$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$5
+module top$lanes$2$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$6
+module top$lanes$2$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$7
+module top$lanes$2$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$8
 module top$lanes$2$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -2986,6 +5506,23 @@ module top$lanes$2$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$gate_q$3
+module top$lanes$2$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$gate_q$4
 module top$lanes$2$shader$lut_q$0(d,q,clock);
     
     // Module arguments
@@ -3054,6 +5591,193 @@ module top$lanes$2$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lut_q$3
+module top$lanes$2$shader$lut_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$4
+module top$lanes$2$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$5
+module top$lanes$2$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$6
+module top$lanes$2$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$7
+module top$lanes$2$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$lut_q$8
+module top$lanes$2$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$0
+module top$lanes$2$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$1
+module top$lanes$2$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$mag_in$2
+module top$lanes$2$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$0
+module top$lanes$2$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$1
+module top$lanes$2$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$neg_in$2
 module top$lanes$2$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -3122,6 +5846,23 @@ module top$lanes$2$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$row_q$2
+module top$lanes$2$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$row_q$3
 module top$lanes$2$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -3173,6 +5914,23 @@ module top$lanes$2$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$shaded_q$2
+module top$lanes$2$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$specular_q
 module top$lanes$2$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -3207,6 +5965,91 @@ module top$lanes$2$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$valid_q$1
+module top$lanes$2$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$10
+module top$lanes$2$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$11
+module top$lanes$2$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$12
+module top$lanes$2$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$13
+module top$lanes$2$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$14
 module top$lanes$2$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -3292,6 +6135,57 @@ module top$lanes$2$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$valid_q$6
+module top$lanes$2$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$7
+module top$lanes$2$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$8
+module top$lanes$2$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$9
 module top$lanes$2$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -3326,6 +6220,74 @@ module top$lanes$2$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$value_q$1
+module top$lanes$2$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$10
+module top$lanes$2$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$11
+module top$lanes$2$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$12
+module top$lanes$2$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$13
 module top$lanes$2$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -3394,6 +6356,74 @@ module top$lanes$2$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$value_q$5
+module top$lanes$2$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$6
+module top$lanes$2$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$7
+module top$lanes$2$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$8
+module top$lanes$2$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$9
 module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,at_edge,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag,r,g,b,a,valid);
     
     // Module arguments
@@ -3472,6 +6502,24 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [3:0] lighting$q_mag$2;
     wire  [15:0] lighting$diffuse = 'h0;
     wire  [15:0] lighting$specular = 'h0;
+    reg  neg_in$0$d;
+    wire  neg_in$0$q;
+    reg  neg_in$0$clock;
+    reg  neg_in$1$d;
+    wire  neg_in$1$q;
+    reg  neg_in$1$clock;
+    reg  neg_in$2$d;
+    wire  neg_in$2$q;
+    reg  neg_in$2$clock;
+    reg  [31:0] mag_in$0$d;
+    wire  [31:0] mag_in$0$q;
+    reg  mag_in$0$clock;
+    reg  [31:0] mag_in$1$d;
+    wire  [31:0] mag_in$1$q;
+    reg  mag_in$1$clock;
+    reg  [31:0] mag_in$2$d;
+    wire  [31:0] mag_in$2$q;
+    reg  mag_in$2$clock;
     reg  [11:0] row_q$0$d;
     wire  [11:0] row_q$0$q;
     reg  row_q$0$clock;
@@ -3481,6 +6529,9 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [11:0] row_q$2$d;
     wire  [11:0] row_q$2$q;
     reg  row_q$2$clock;
+    reg  [11:0] row_q$3$d;
+    wire  [11:0] row_q$3$q;
+    reg  row_q$3$clock;
     reg  [63:0] lut_q$0$d;
     wire  [63:0] lut_q$0$q;
     reg  lut_q$0$clock;
@@ -3493,6 +6544,21 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [63:0] lut_q$3$d;
     wire  [63:0] lut_q$3$q;
     reg  lut_q$3$clock;
+    reg  [63:0] lut_q$4$d;
+    wire  [63:0] lut_q$4$q;
+    reg  lut_q$4$clock;
+    reg  [63:0] lut_q$5$d;
+    wire  [63:0] lut_q$5$q;
+    reg  lut_q$5$clock;
+    reg  [63:0] lut_q$6$d;
+    wire  [63:0] lut_q$6$q;
+    reg  lut_q$6$clock;
+    reg  [63:0] lut_q$7$d;
+    wire  [63:0] lut_q$7$q;
+    reg  lut_q$7$clock;
+    reg  [63:0] lut_q$8$d;
+    wire  [63:0] lut_q$8$q;
+    reg  lut_q$8$clock;
     reg  gate_q$0$d;
     wire  gate_q$0$q;
     reg  gate_q$0$clock;
@@ -3505,12 +6571,36 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  gate_q$3$d;
     wire  gate_q$3$q;
     reg  gate_q$3$clock;
+    reg  gate_q$4$d;
+    wire  gate_q$4$q;
+    reg  gate_q$4$clock;
     reg  [15:0] alpha_q$0$d;
     wire  [15:0] alpha_q$0$q;
     reg  alpha_q$0$clock;
     reg  [15:0] alpha_q$1$d;
     wire  [15:0] alpha_q$1$q;
     reg  alpha_q$1$clock;
+    reg  [15:0] alpha_q$2$d;
+    wire  [15:0] alpha_q$2$q;
+    reg  alpha_q$2$clock;
+    reg  [15:0] alpha_q$3$d;
+    wire  [15:0] alpha_q$3$q;
+    reg  alpha_q$3$clock;
+    reg  [15:0] alpha_q$4$d;
+    wire  [15:0] alpha_q$4$q;
+    reg  alpha_q$4$clock;
+    reg  [15:0] alpha_q$5$d;
+    wire  [15:0] alpha_q$5$q;
+    reg  alpha_q$5$clock;
+    reg  [15:0] alpha_q$6$d;
+    wire  [15:0] alpha_q$6$q;
+    reg  alpha_q$6$clock;
+    reg  [15:0] alpha_q$7$d;
+    wire  [15:0] alpha_q$7$q;
+    reg  alpha_q$7$clock;
+    reg  [15:0] alpha_q$8$d;
+    wire  [15:0] alpha_q$8$q;
+    reg  alpha_q$8$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -3529,6 +6619,30 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$5$d;
     wire  [15:0] value_q$5$q;
     reg  value_q$5$clock;
+    reg  [15:0] value_q$6$d;
+    wire  [15:0] value_q$6$q;
+    reg  value_q$6$clock;
+    reg  [15:0] value_q$7$d;
+    wire  [15:0] value_q$7$q;
+    reg  value_q$7$clock;
+    reg  [15:0] value_q$8$d;
+    wire  [15:0] value_q$8$q;
+    reg  value_q$8$clock;
+    reg  [15:0] value_q$9$d;
+    wire  [15:0] value_q$9$q;
+    reg  value_q$9$clock;
+    reg  [15:0] value_q$10$d;
+    wire  [15:0] value_q$10$q;
+    reg  value_q$10$clock;
+    reg  [15:0] value_q$11$d;
+    wire  [15:0] value_q$11$q;
+    reg  value_q$11$clock;
+    reg  [15:0] value_q$12$d;
+    wire  [15:0] value_q$12$q;
+    reg  value_q$12$clock;
+    reg  [15:0] value_q$13$d;
+    wire  [15:0] value_q$13$q;
+    reg  value_q$13$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -3550,12 +6664,42 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$6$d;
     wire  valid_q$6$q;
     reg  valid_q$6$clock;
+    reg  valid_q$7$d;
+    wire  valid_q$7$q;
+    reg  valid_q$7$clock;
+    reg  valid_q$8$d;
+    wire  valid_q$8$q;
+    reg  valid_q$8$clock;
+    reg  valid_q$9$d;
+    wire  valid_q$9$q;
+    reg  valid_q$9$clock;
+    reg  valid_q$10$d;
+    wire  valid_q$10$q;
+    reg  valid_q$10$clock;
+    reg  valid_q$11$d;
+    wire  valid_q$11$q;
+    reg  valid_q$11$clock;
+    reg  valid_q$12$d;
+    wire  valid_q$12$q;
+    reg  valid_q$12$clock;
+    reg  valid_q$13$d;
+    wire  valid_q$13$q;
+    reg  valid_q$13$clock;
+    reg  valid_q$14$d;
+    wire  valid_q$14$q;
+    reg  valid_q$14$clock;
+    reg  [15:0] specular_q$d;
+    wire  [15:0] specular_q$q;
+    reg  specular_q$clock;
+    reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
     wire  [15:0] lit_r$y = 'h0;
+    reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
     wire  [15:0] lit_g$y = 'h0;
+    reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
     wire  [15:0] lit_b$y = 'h0;
@@ -3568,12 +6712,15 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] shaded_q$2$d;
     wire  [15:0] shaded_q$2$q;
     reg  shaded_q$2$clock;
+    reg  mul_r$clock;
     reg  [15:0] mul_r$a;
     reg  [15:0] mul_r$b;
     wire  [15:0] mul_r$y = 'h0;
+    reg  mul_g$clock;
     reg  [15:0] mul_g$a;
     reg  [15:0] mul_g$b;
     wire  [15:0] mul_g$y = 'h0;
+    reg  mul_b$clock;
     reg  [15:0] mul_b$a;
     reg  [15:0] mul_b$b;
     wire  [15:0] mul_b$y = 'h0;
@@ -3604,6 +6751,36 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [31:0] sum_b;
     
     // Sub module instances
+    top$lanes$3$shader$neg_in$0 neg_in$0(
+        .d(neg_in$0$d),
+        .q(neg_in$0$q),
+        .clock(neg_in$0$clock)
+    );
+    top$lanes$3$shader$neg_in$1 neg_in$1(
+        .d(neg_in$1$d),
+        .q(neg_in$1$q),
+        .clock(neg_in$1$clock)
+    );
+    top$lanes$3$shader$neg_in$2 neg_in$2(
+        .d(neg_in$2$d),
+        .q(neg_in$2$q),
+        .clock(neg_in$2$clock)
+    );
+    top$lanes$3$shader$mag_in$0 mag_in$0(
+        .d(mag_in$0$d),
+        .q(mag_in$0$q),
+        .clock(mag_in$0$clock)
+    );
+    top$lanes$3$shader$mag_in$1 mag_in$1(
+        .d(mag_in$1$d),
+        .q(mag_in$1$q),
+        .clock(mag_in$1$clock)
+    );
+    top$lanes$3$shader$mag_in$2 mag_in$2(
+        .d(mag_in$2$d),
+        .q(mag_in$2$q),
+        .clock(mag_in$2$clock)
+    );
     top$lanes$3$shader$row_q$0 row_q$0(
         .d(row_q$0$d),
         .q(row_q$0$q),
@@ -3618,6 +6795,11 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(row_q$2$d),
         .q(row_q$2$q),
         .clock(row_q$2$clock)
+    );
+    top$lanes$3$shader$row_q$3 row_q$3(
+        .d(row_q$3$d),
+        .q(row_q$3$q),
+        .clock(row_q$3$clock)
     );
     top$lanes$3$shader$lut_q$0 lut_q$0(
         .d(lut_q$0$d),
@@ -3639,6 +6821,31 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(lut_q$3$q),
         .clock(lut_q$3$clock)
     );
+    top$lanes$3$shader$lut_q$4 lut_q$4(
+        .d(lut_q$4$d),
+        .q(lut_q$4$q),
+        .clock(lut_q$4$clock)
+    );
+    top$lanes$3$shader$lut_q$5 lut_q$5(
+        .d(lut_q$5$d),
+        .q(lut_q$5$q),
+        .clock(lut_q$5$clock)
+    );
+    top$lanes$3$shader$lut_q$6 lut_q$6(
+        .d(lut_q$6$d),
+        .q(lut_q$6$q),
+        .clock(lut_q$6$clock)
+    );
+    top$lanes$3$shader$lut_q$7 lut_q$7(
+        .d(lut_q$7$d),
+        .q(lut_q$7$q),
+        .clock(lut_q$7$clock)
+    );
+    top$lanes$3$shader$lut_q$8 lut_q$8(
+        .d(lut_q$8$d),
+        .q(lut_q$8$q),
+        .clock(lut_q$8$clock)
+    );
     top$lanes$3$shader$gate_q$0 gate_q$0(
         .d(gate_q$0$d),
         .q(gate_q$0$q),
@@ -3659,6 +6866,11 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(gate_q$3$q),
         .clock(gate_q$3$clock)
     );
+    top$lanes$3$shader$gate_q$4 gate_q$4(
+        .d(gate_q$4$d),
+        .q(gate_q$4$q),
+        .clock(gate_q$4$clock)
+    );
     top$lanes$3$shader$alpha_q$0 alpha_q$0(
         .d(alpha_q$0$d),
         .q(alpha_q$0$q),
@@ -3668,6 +6880,41 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(alpha_q$1$d),
         .q(alpha_q$1$q),
         .clock(alpha_q$1$clock)
+    );
+    top$lanes$3$shader$alpha_q$2 alpha_q$2(
+        .d(alpha_q$2$d),
+        .q(alpha_q$2$q),
+        .clock(alpha_q$2$clock)
+    );
+    top$lanes$3$shader$alpha_q$3 alpha_q$3(
+        .d(alpha_q$3$d),
+        .q(alpha_q$3$q),
+        .clock(alpha_q$3$clock)
+    );
+    top$lanes$3$shader$alpha_q$4 alpha_q$4(
+        .d(alpha_q$4$d),
+        .q(alpha_q$4$q),
+        .clock(alpha_q$4$clock)
+    );
+    top$lanes$3$shader$alpha_q$5 alpha_q$5(
+        .d(alpha_q$5$d),
+        .q(alpha_q$5$q),
+        .clock(alpha_q$5$clock)
+    );
+    top$lanes$3$shader$alpha_q$6 alpha_q$6(
+        .d(alpha_q$6$d),
+        .q(alpha_q$6$q),
+        .clock(alpha_q$6$clock)
+    );
+    top$lanes$3$shader$alpha_q$7 alpha_q$7(
+        .d(alpha_q$7$d),
+        .q(alpha_q$7$q),
+        .clock(alpha_q$7$clock)
+    );
+    top$lanes$3$shader$alpha_q$8 alpha_q$8(
+        .d(alpha_q$8$d),
+        .q(alpha_q$8$q),
+        .clock(alpha_q$8$clock)
     );
     top$lanes$3$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
@@ -3698,6 +6945,46 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$5$d),
         .q(value_q$5$q),
         .clock(value_q$5$clock)
+    );
+    top$lanes$3$shader$value_q$6 value_q$6(
+        .d(value_q$6$d),
+        .q(value_q$6$q),
+        .clock(value_q$6$clock)
+    );
+    top$lanes$3$shader$value_q$7 value_q$7(
+        .d(value_q$7$d),
+        .q(value_q$7$q),
+        .clock(value_q$7$clock)
+    );
+    top$lanes$3$shader$value_q$8 value_q$8(
+        .d(value_q$8$d),
+        .q(value_q$8$q),
+        .clock(value_q$8$clock)
+    );
+    top$lanes$3$shader$value_q$9 value_q$9(
+        .d(value_q$9$d),
+        .q(value_q$9$q),
+        .clock(value_q$9$clock)
+    );
+    top$lanes$3$shader$value_q$10 value_q$10(
+        .d(value_q$10$d),
+        .q(value_q$10$q),
+        .clock(value_q$10$clock)
+    );
+    top$lanes$3$shader$value_q$11 value_q$11(
+        .d(value_q$11$d),
+        .q(value_q$11$q),
+        .clock(value_q$11$clock)
+    );
+    top$lanes$3$shader$value_q$12 value_q$12(
+        .d(value_q$12$d),
+        .q(value_q$12$q),
+        .clock(value_q$12$clock)
+    );
+    top$lanes$3$shader$value_q$13 value_q$13(
+        .d(value_q$13$d),
+        .q(value_q$13$q),
+        .clock(value_q$13$clock)
     );
     top$lanes$3$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -3733,6 +7020,51 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(valid_q$6$d),
         .q(valid_q$6$q),
         .clock(valid_q$6$clock)
+    );
+    top$lanes$3$shader$valid_q$7 valid_q$7(
+        .d(valid_q$7$d),
+        .q(valid_q$7$q),
+        .clock(valid_q$7$clock)
+    );
+    top$lanes$3$shader$valid_q$8 valid_q$8(
+        .d(valid_q$8$d),
+        .q(valid_q$8$q),
+        .clock(valid_q$8$clock)
+    );
+    top$lanes$3$shader$valid_q$9 valid_q$9(
+        .d(valid_q$9$d),
+        .q(valid_q$9$q),
+        .clock(valid_q$9$clock)
+    );
+    top$lanes$3$shader$valid_q$10 valid_q$10(
+        .d(valid_q$10$d),
+        .q(valid_q$10$q),
+        .clock(valid_q$10$clock)
+    );
+    top$lanes$3$shader$valid_q$11 valid_q$11(
+        .d(valid_q$11$d),
+        .q(valid_q$11$q),
+        .clock(valid_q$11$clock)
+    );
+    top$lanes$3$shader$valid_q$12 valid_q$12(
+        .d(valid_q$12$d),
+        .q(valid_q$12$q),
+        .clock(valid_q$12$clock)
+    );
+    top$lanes$3$shader$valid_q$13 valid_q$13(
+        .d(valid_q$13$d),
+        .q(valid_q$13$q),
+        .clock(valid_q$13$clock)
+    );
+    top$lanes$3$shader$valid_q$14 valid_q$14(
+        .d(valid_q$14$d),
+        .q(valid_q$14$q),
+        .clock(valid_q$14$clock)
+    );
+    top$lanes$3$shader$specular_q specular_q(
+        .d(specular_q$d),
+        .q(specular_q$q),
+        .clock(specular_q$clock)
     );
     top$lanes$3$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -3777,10 +7109,12 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
+        specular_q$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
+        specular_q$d = specular_q$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -3802,63 +7136,110 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         lighting$host_address = host_address;
         lighting$host_data = host_data;
         normal$clock = clock;
+        lit_r$clock = clock;
+        lit_g$clock = clock;
+        lit_b$clock = clock;
+        mul_r$clock = clock;
+        mul_g$clock = clock;
+        mul_b$clock = clock;
         gate = invalid | (edge_transparent & at_edge);
         row = 12'(value >> shift);
-        if (gate) begin
-            row = 'h0;
-        end
-        lut$address = row;
-        normal$neg$0 = gx_neg & ~gate;
-        normal$neg$1 = gy_neg & ~gate;
-        normal$neg$2 = gz_neg & ~gate;
         mag$0 = gx_mag;
         mag$1 = gy_mag;
         mag$2 = gz_mag;
         if (gate) begin
+            row = 'h0;
             mag$0 = 'h0;
             mag$1 = 'h0;
             mag$2 = 'h0;
         end
-        normal$mag$0 = mag$0;
-        gm_bin$mag$0 = mag$0;
-        normal$mag$1 = mag$1;
-        gm_bin$mag$1 = mag$1;
-        normal$mag$2 = mag$2;
-        gm_bin$mag$2 = mag$2;
+        neg_in$0$clock = clock;
+        mag_in$0$clock = clock;
+        mag_in$0$d = mag$0;
+        neg_in$1$clock = clock;
+        mag_in$1$clock = clock;
+        mag_in$1$d = mag$1;
+        neg_in$2$clock = clock;
+        mag_in$2$clock = clock;
+        mag_in$2$d = mag$2;
+        neg_in$0$d = gx_neg & ~gate;
+        neg_in$1$d = gy_neg & ~gate;
+        neg_in$2$d = gz_neg & ~gate;
+        lut$address = row_q$0$q;
+        normal$neg$0 = neg_in$0$q;
+        normal$mag$0 = mag_in$0$q;
+        gm_bin$mag$0 = mag_in$0$q;
         lighting$q_neg$0 = normal$q_neg$0;
         lighting$q_mag$0 = normal$q_mag$0;
+        normal$neg$1 = neg_in$1$q;
+        normal$mag$1 = mag_in$1$q;
+        gm_bin$mag$1 = mag_in$1$q;
         lighting$q_neg$1 = normal$q_neg$1;
         lighting$q_mag$1 = normal$q_mag$1;
+        normal$neg$2 = neg_in$2$q;
+        normal$mag$2 = mag_in$2$q;
+        gm_bin$mag$2 = mag_in$2$q;
         lighting$q_neg$2 = normal$q_neg$2;
         lighting$q_mag$2 = normal$q_mag$2;
         row_q$0$clock = clock;
         row_q$1$clock = clock;
         row_q$2$clock = clock;
+        row_q$3$clock = clock;
         row_q$0$d = row;
         row_q$1$d = row_q$0$q;
         row_q$2$d = row_q$1$q;
+        row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        gate_q$0$clock = clock;
+        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        gate_q$1$clock = clock;
+        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        gate_q$2$clock = clock;
+        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        gate_q$3$clock = clock;
+        alpha_q$3$clock = clock;
+        lut_q$4$clock = clock;
+        alpha_q$4$clock = clock;
+        lut_q$5$clock = clock;
+        alpha_q$5$clock = clock;
+        lut_q$6$clock = clock;
+        alpha_q$6$clock = clock;
+        lut_q$7$clock = clock;
+        alpha_q$7$clock = clock;
+        lut_q$8$clock = clock;
+        alpha_q$8$clock = clock;
         lut_q$0$d = lut$data;
-        gate_q$0$d = gate;
         lut_q$1$d = lut_q$0$q;
-        gate_q$1$d = gate_q$0$q;
         lut_q$2$d = lut_q$1$q;
-        gate_q$2$d = gate_q$1$q;
         lut_q$3$d = lut_q$2$q;
+        lut_q$4$d = lut_q$3$q;
+        lut_q$5$d = lut_q$4$q;
+        lut_q$6$d = lut_q$5$q;
+        lut_q$7$d = lut_q$6$q;
+        lut_q$8$d = lut_q$7$q;
+        gate_q$0$clock = clock;
+        gate_q$1$clock = clock;
+        gate_q$2$clock = clock;
+        gate_q$3$clock = clock;
+        gate_q$4$clock = clock;
+        gate_q$0$d = gate;
+        gate_q$1$d = gate_q$0$q;
+        gate_q$2$d = gate_q$1$q;
         gate_q$3$d = gate_q$2$q;
+        gate_q$4$d = gate_q$3$q;
         value_q$0$clock = clock;
         value_q$1$clock = clock;
         value_q$2$clock = clock;
         value_q$3$clock = clock;
         value_q$4$clock = clock;
         value_q$5$clock = clock;
+        value_q$6$clock = clock;
+        value_q$7$clock = clock;
+        value_q$8$clock = clock;
+        value_q$9$clock = clock;
+        value_q$10$clock = clock;
+        value_q$11$clock = clock;
+        value_q$12$clock = clock;
+        value_q$13$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -3866,6 +7247,14 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$4$clock = clock;
         valid_q$5$clock = clock;
         valid_q$6$clock = clock;
+        valid_q$7$clock = clock;
+        valid_q$8$clock = clock;
+        valid_q$9$clock = clock;
+        valid_q$10$clock = clock;
+        valid_q$11$clock = clock;
+        valid_q$12$clock = clock;
+        valid_q$13$clock = clock;
+        valid_q$14$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -3873,39 +7262,61 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$3$d = value_q$2$q;
         value_q$4$d = value_q$3$q;
         value_q$5$d = value_q$4$q;
+        value_q$6$d = value_q$5$q;
+        value_q$7$d = value_q$6$q;
+        value_q$8$d = value_q$7$q;
+        value_q$9$d = value_q$8$q;
+        value_q$10$d = value_q$9$q;
+        value_q$11$d = value_q$10$q;
+        value_q$12$d = value_q$11$q;
+        value_q$13$d = value_q$12$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
         valid_q$4$d = valid_q$3$q;
         valid_q$5$d = valid_q$4$q;
         valid_q$6$d = valid_q$5$q;
-        alpha_gm$address = (16'(row_q$2$q) << 'h4) | 16'(gm_bin$bin);
+        valid_q$7$d = valid_q$6$q;
+        valid_q$8$d = valid_q$7$q;
+        valid_q$9$d = valid_q$8$q;
+        valid_q$10$d = valid_q$9$q;
+        valid_q$11$d = valid_q$10$q;
+        valid_q$12$d = valid_q$11$q;
+        valid_q$13$d = valid_q$12$q;
+        valid_q$14$d = valid_q$13$q;
+        alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
             alpha = alpha_gm$data;
         end
-        if (gate_q$3$q) begin
+        if (gate_q$4$q) begin
             alpha = 'h0;
         end
-        alpha_q$0$clock = clock;
-        alpha_q$1$clock = clock;
         alpha_q$0$d = alpha;
         alpha_q$1$d = alpha_q$0$q;
+        alpha_q$2$d = alpha_q$1$q;
+        alpha_q$3$d = alpha_q$2$q;
+        alpha_q$4$d = alpha_q$3$q;
+        alpha_q$5$d = alpha_q$4$q;
+        alpha_q$6$d = alpha_q$5$q;
+        alpha_q$7$d = alpha_q$6$q;
+        alpha_q$8$d = alpha_q$7$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        lit_r$a = 16'(lut_q$3$q);
-        lit_g$a = 16'(lut_q$3$q >> 'h10);
-        lit_b$a = 16'(lut_q$3$q >> 'h20);
+        specular_q$d = specular;
+        lit_r$a = 16'(lut_q$8$q);
+        lit_g$a = 16'(lut_q$8$q >> 'h10);
+        lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular);
-        sum_g = 32'(lit_g$y) + 32'(specular);
-        sum_b = 32'(lit_b$y) + 32'(specular);
+        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -3924,17 +7335,17 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$1$q;
-        mul_g$b = alpha_q$1$q;
-        mul_b$b = alpha_q$1$q;
+        mul_r$b = alpha_q$7$q;
+        mul_g$b = alpha_q$7$q;
+        mul_b$b = alpha_q$7$q;
         if (scalar) begin
-            r_q$d = value_q$5$q;
+            r_q$d = value_q$13$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$1$q;
+            r_q$d = alpha_q$8$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -3943,7 +7354,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$1$q;
+            a_q$d = alpha_q$8$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -3955,7 +7366,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$6$q;
+            valid_pass = valid_q$14$q;
         end
         r = r_pass;
         g = g_pass;
@@ -4016,6 +7427,125 @@ module top$lanes$3$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$alpha_q$1
+module top$lanes$3$shader$alpha_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$2
+module top$lanes$3$shader$alpha_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$3
+module top$lanes$3$shader$alpha_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$4
+module top$lanes$3$shader$alpha_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$5
+module top$lanes$3$shader$alpha_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$6
+module top$lanes$3$shader$alpha_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$7
+module top$lanes$3$shader$alpha_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$8
 module top$lanes$3$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -4118,6 +7648,23 @@ module top$lanes$3$shader$gate_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$gate_q$3
+module top$lanes$3$shader$gate_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$gate_q$4
 module top$lanes$3$shader$lut_q$0(d,q,clock);
     
     // Module arguments
@@ -4186,6 +7733,193 @@ module top$lanes$3$shader$lut_q$3(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lut_q$3
+module top$lanes$3$shader$lut_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$4
+module top$lanes$3$shader$lut_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$5
+module top$lanes$3$shader$lut_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$6
+module top$lanes$3$shader$lut_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$7
+module top$lanes$3$shader$lut_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$lut_q$8
+module top$lanes$3$shader$mag_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$0
+module top$lanes$3$shader$mag_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$1
+module top$lanes$3$shader$mag_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$mag_in$2
+module top$lanes$3$shader$neg_in$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$0
+module top$lanes$3$shader$neg_in$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$1
+module top$lanes$3$shader$neg_in$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$neg_in$2
 module top$lanes$3$shader$r_q(d,q,clock);
     
     // Module arguments
@@ -4254,6 +7988,23 @@ module top$lanes$3$shader$row_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$row_q$2
+module top$lanes$3$shader$row_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$row_q$3
 module top$lanes$3$shader$shaded_q$0(d,q,clock);
     
     // Module arguments
@@ -4305,6 +8056,23 @@ module top$lanes$3$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$shaded_q$2
+module top$lanes$3$shader$specular_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$specular_q
 module top$lanes$3$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -4339,6 +8107,91 @@ module top$lanes$3$shader$valid_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$valid_q$1
+module top$lanes$3$shader$valid_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$10
+module top$lanes$3$shader$valid_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$11
+module top$lanes$3$shader$valid_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$12
+module top$lanes$3$shader$valid_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$13
+module top$lanes$3$shader$valid_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$14
 module top$lanes$3$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -4424,6 +8277,57 @@ module top$lanes$3$shader$valid_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$valid_q$6
+module top$lanes$3$shader$valid_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$7
+module top$lanes$3$shader$valid_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$8
+module top$lanes$3$shader$valid_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$9
 module top$lanes$3$shader$value_q$0(d,q,clock);
     
     // Module arguments
@@ -4458,6 +8362,74 @@ module top$lanes$3$shader$value_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$value_q$1
+module top$lanes$3$shader$value_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$10
+module top$lanes$3$shader$value_q$11(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$11
+module top$lanes$3$shader$value_q$12(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$12
+module top$lanes$3$shader$value_q$13(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$13
 module top$lanes$3$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -4526,3 +8498,71 @@ module top$lanes$3$shader$value_q$5(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$value_q$5
+module top$lanes$3$shader$value_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$6
+module top$lanes$3$shader$value_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$7
+module top$lanes$3$shader$value_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$8
+module top$lanes$3$shader$value_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$9

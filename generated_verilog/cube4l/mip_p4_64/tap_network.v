@@ -314,7 +314,7 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -1083,6 +1083,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -1226,6 +1227,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -1265,7 +1267,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e5;
+    localparam  longest_last = 16'h3e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -1386,7 +1388,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[997:0];
+    reg [7:0] mem[994:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -2836,7 +2838,7 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -3605,6 +3607,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -3748,6 +3751,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -3787,7 +3791,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e5;
+    localparam  longest_last = 16'h3e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -3908,7 +3912,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[997:0];
+    reg [7:0] mem[994:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -5358,7 +5362,7 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -6127,6 +6131,7 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -6270,6 +6275,7 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -6309,7 +6315,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e5;
+    localparam  longest_last = 16'h3e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -6430,7 +6436,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[997:0];
+    reg [7:0] mem[994:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
@@ -7880,7 +7886,7 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hb;
+    localparam  ring_less = 16'he;
     
     // Stub signals
     reg  ring$clock;
@@ -8649,6 +8655,7 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -8792,6 +8799,7 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [7:0] mem[15:0];
     
     always @(posedge read_clock) begin
@@ -8831,7 +8839,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e5;
+    localparam  longest_last = 16'h3e2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff;
     
@@ -8952,7 +8960,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[997:0];
+    reg [7:0] mem[994:0];
     
     always @(posedge read_clock) begin
        read_data <= {56'd0, mem[read_address[9:0]][7:0]};
