@@ -884,19 +884,23 @@ fn fmt_time(t: f64) -> String {
 const PLOT_W: u32 = 1000;
 const PLOT_H: u32 = 650;
 
+/// Where a zero error is drawn on a log axis: half the smallest non-zero
+/// error (at most 1 %).
+fn error_floor<'a>(points: impl Iterator<Item = &'a Point>) -> f64 {
+    points
+        .map(|p| p.error.rel_euclid_pct)
+        .filter(|&e| e > 0.0)
+        .fold(f64::INFINITY, f64::min)
+        .min(1.0)
+        / 2.0
+}
+
 /// Error against cost on log-log axes, one colour per method, the Pareto
 /// front as a staircase.
 fn plot(points: &[Point], front: &[usize]) -> Result<Vec<u8>> {
     plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
         .map_err(|_| anyhow::anyhow!("registering the embedded font"))?;
-    // A zero error cannot sit on a log axis: it is drawn at the floor.
-    let floor = points
-        .iter()
-        .map(|p| p.error.rel_euclid_pct)
-        .filter(|&e| e > 0.0)
-        .fold(f64::INFINITY, f64::min)
-        .min(1.0)
-        / 2.0;
+    let floor = error_floor(points.iter());
     let err = |p: &Point| p.error.rel_euclid_pct.max(floor);
     let (t0, t1) = points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| {
         (a.min(p.cost_seconds), b.max(p.cost_seconds))
@@ -996,13 +1000,7 @@ fn plot_area(points: &[Point]) -> Result<Vec<u8>> {
             drop(root);
             return Ok(buf);
         }
-        let floor = priced
-            .iter()
-            .map(|(p, _)| p.error.rel_euclid_pct)
-            .filter(|&e| e > 0.0)
-            .fold(f64::INFINITY, f64::min)
-            .min(1.0)
-            / 2.0;
+        let floor = error_floor(priced.iter().map(|(p, _)| *p));
         let err = |p: &Point| p.error.rel_euclid_pct.max(floor);
         let (l0, l1) = priced
             .iter()
