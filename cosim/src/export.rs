@@ -15,8 +15,18 @@ use std::path::Path;
 /// `sweep<i>/` or `base_plane<i>/` of the same). Anything else is a
 /// user's, and is never deleted.
 fn replaceable(out: &Path) -> Result<(), String> {
-    let ours_file =
-        |name: &str| name == "lint.vlt" || LAYOUTS.iter().any(|(_, l)| l.files.contains(&name));
+    // The integrable top, `ARCH_NAME.v` ([`integration_top`]).
+    let integration = |name: &str| {
+        name.ends_with(".v")
+            && [crate::cube4l::Cube4l::NAME, crate::cube3::Cube3::NAME]
+                .iter()
+                .any(|a| name.starts_with(&format!("{a}_")))
+    };
+    let ours_file = |name: &str| {
+        name == "lint.vlt"
+            || integration(name)
+            || LAYOUTS.iter().any(|(_, l)| l.files.contains(&name))
+    };
     let ours_dir = |name: &str| {
         LAYOUTS.iter().map(|(part, _)| part).any(|p| {
             name.strip_prefix(p)
