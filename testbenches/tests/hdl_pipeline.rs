@@ -320,9 +320,9 @@ fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
     // One beat per clock plus 21 clocks of fill: the start register, the
     // CFB's three address stages, the block-RAM read, the shader's input
-    // register, nine clocks of gather delay
-    // (the shader's 15 stages less the bilinear unit's 5, less the input
-    // register), the bilinear unit's five stages and the compositor's first
+    // register, seven clocks of gather delay
+    // (the shader's 15 stages less the bilinear unit's 7, less the input
+    // register), the bilinear unit's seven stages and the compositor's first
     // (its second register ends the last beat's own clock).
     assert_eq!(
         cycles,
