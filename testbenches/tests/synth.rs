@@ -44,10 +44,9 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     let out = dir.path().join("mip");
     let files = small_mip(&out);
     let r = synthesize(&out, &files, Target::Ecp5, true).unwrap();
-    // Measured: 486 LUT4, 642 TRELLIS_FF, 1 DP16KD (the 512-voxel memory
-    // module), 12 TRELLIS_DPR16X4 (the compositing-buffer ring and lines),
-    // 6 MULT18X18D (the bilinear unit's lerps); fmax 58.2 MHz, on a path
-    // from the 2x2 selection through a bilinear multiplier.
+    // The 512-voxel memory module is one DP16KD, the compositing buffer's
+    // ring and lines LUT RAM (TRELLIS_DPR16X4), the bilinear unit's lerps
+    // six MULT18X18D.
     assert!((200..3000).contains(&r.luts), "{r:?}");
     assert!(r.flip_flops > 300, "{r:?}");
     assert!((1..=4).contains(&r.block_rams), "{r:?}");

@@ -151,6 +151,9 @@ pub fn synthesize(
     pnr: bool,
 ) -> Result<Report, String> {
     let t = std::time::Instant::now();
+    if target == Target::Ice40 {
+        no_lut_ram(dir, files)?;
+    }
     let script = format!(
         "read_verilog -sv {}; {}; tee -q -o stat.txt stat",
         files.join(" "),
@@ -234,6 +237,22 @@ pub fn synthesize(
         report.pnr_seconds = Some(t.elapsed().as_secs_f64());
     }
     Ok(report)
+}
+
+/// The iCE40 has no LUT RAM: drop the emitted Verilog's request for it
+/// (`hdl::common::ram::DISTRIBUTED_WORDS`, `ram_style = "distributed"`), in
+/// the work directory's copy, so yosys maps those short memories to block
+/// RAM or logic instead of failing.
+fn no_lut_ram(dir: &Path, files: &[String]) -> Result<(), String> {
+    for f in files {
+        let path = dir.join(f);
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{f}: {e}"))?;
+        let kept = text.replace("(* ram_style = \"distributed\" *)\n", "");
+        if kept.len() != text.len() {
+            std::fs::write(&path, kept).map_err(|e| format!("{f}: {e}"))?;
+        }
+    }
+    Ok(())
 }
 
 /// Ports of module `top` in `top.v`: (name, is_input, width).
