@@ -47,7 +47,8 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     }
     check_step(ref_step)?;
     let angles = angle_sweep(&range)?;
-    let (mut scene, vol) = load(&scene_path)?;
+    let (base_scene, vol) = load(&scene_path)?;
+    let scene = &base_scene;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
     if scene.view.projection != scene::Projection::Parallel {
         bail!("angles turns a parallel view; the scene is perspective");
@@ -65,11 +66,11 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         if with_true3d { "vs true3d %" } else { "" }
     );
     for a in angles {
-        scene.view.rotate_deg = Some([base[0], a, base[2]]);
+        let scene = base_scene.with(|s| s.view.rotate_deg = Some([base[0], a, base[2]]))?;
         let g = render_arch(&scene, &vol, arch, ref_step, gradient)?;
         let r = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
         let m = compare(&g.image, &r.image);
-        let cam = scene.camera()?;
+        let cam = scene.camera();
         let plan = golden_model::cube4l::plan::Plan::new(&scene, &cam)?;
         let axis = ["u", "v", "w"][plan.sweeps[0].axis()];
         let mut row = json!({"angle": a, "seconds": g.seconds, "reference_seconds": r.seconds, "major_axis": axis, "error": error_json(&m), "details": g.extra});

@@ -150,7 +150,7 @@ pub fn choose_build<A: cosim::arch::Arch>(
     let loaded = match scene_path {
         Some(path) => {
             let scene = Scene::load(path)?;
-            let camera = scene.camera()?;
+            let camera = scene.camera();
             Some(Loaded {
                 name: scene_name(path),
                 scene,
@@ -208,7 +208,7 @@ pub fn render_arch(
             let seconds = t.elapsed().as_secs_f64();
             let s = frame.stats;
             // The RTL's schedule: what `cube sim` counts.
-            let camera = scene.camera()?;
+            let camera = scene.camera();
             let clocks = rtl_clocks::<cosim::cube4l::Cube4l>(scene, &camera, vol.dims);
             Ok(Rendered {
                 image,
@@ -231,9 +231,8 @@ pub fn render_arch(
             let s = frame.stats;
             let v = &frame.plan.views[0];
             // The RTL's schedule for this neighbourhood, where it builds it.
-            let mut rtl = scene.clone();
-            rtl.cube3.gradient = n.count();
-            let clocks = rtl_clocks::<cosim::cube3::Cube3>(&rtl, &rtl.camera()?, vol.dims);
+            let rtl = scene.with(|s| s.cube3.gradient = n.count())?;
+            let clocks = rtl_clocks::<cosim::cube3::Cube3>(&rtl, &rtl.camera(), vol.dims);
             Ok(Rendered {
                 image,
                 seconds,
@@ -260,7 +259,7 @@ pub fn render_arch(
             })
         }
         Arch::True3d | Arch::ShearedFloat => {
-            let cam = scene.camera()?;
+            let cam = scene.camera();
             let n = gradient.unwrap_or(scene.cube3.gradient);
             let interp = if arch == Arch::True3d {
                 reference::true3d::Interp::Exact
@@ -319,7 +318,7 @@ pub fn render_arch(
             })
         }
         Arch::Reference => {
-            let cam = scene.camera()?;
+            let cam = scene.camera();
             let image = reference::render(scene, &cam, vol, ref_step);
             Ok(Rendered {
                 image,

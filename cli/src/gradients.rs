@@ -36,7 +36,8 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     for p in [&args.json, &args.plot].into_iter().flatten() {
         check_target(p)?;
     }
-    let (mut scene, vol) = load(&args.scene)?;
+    let (base_scene, vol) = load(&args.scene)?;
+    let scene = &base_scene;
     if scene.volume.builtin.as_deref() != Some("sphere") {
         bail!("volume: gradients needs the built-in sphere (its analytic normals)");
     }
@@ -57,8 +58,8 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     let mut rows = Vec::new();
     let mut curves = vec![Vec::new(); 4];
     for &a in &angles {
-        scene.view.rotate_deg = Some([base[0], a, base[2]]);
-        let cam = scene.camera()?;
+        let scene = base_scene.with(|s| s.view.rotate_deg = Some([base[0], a, base[2]]))?;
+        let cam = scene.camera();
         let xs = crossings(&scene, &cam, &vol, threshold)?;
         let mut sum = [0.0f64; 4];
         let mut count = [0u64; 4];

@@ -129,7 +129,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
 
 /// The first sweep's base plane as an image (scaled to the display range).
 fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
-    let cam = scene.camera()?;
+    let cam = scene.camera();
     let frame = golden_model::cube4l::render(scene, &cam, vol)?;
     let b = &frame.bases[0];
     let depth = frame.plan.sweeps[0].dims[2];

@@ -86,7 +86,7 @@ impl ForArch for Sim<'_> {
                     args.scene[0].display()
                 ),
             }
-            let cam = scene.camera()?;
+            let cam = scene.camera();
             frames.push((scene, cam));
         }
         let vol = vol.expect("a scene");

@@ -580,7 +580,7 @@ fn price(
         }
         (_, None) => (extra["samples"].as_u64().unwrap_or(0).div_ceil(p), "ideal"),
     };
-    let camera = scene.camera()?;
+    let camera = scene.camera();
     let dims = scene.volume.render_dims();
     let build = match arch {
         Arch::Cube4l => pricing_build::<cosim::cube4l::Cube4l>(generated, scene, &camera, dims),

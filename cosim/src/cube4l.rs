@@ -650,7 +650,7 @@ mod tests {
             None,
         )
         .unwrap();
-        let cam = s.camera().unwrap();
+        let cam = s.camera();
         let build = Cube4l::needs(&s, &cam, s.volume.dims).unwrap();
         Cube4l::parts(&s, &cam, s.volume.dims, &build)
             .unwrap()

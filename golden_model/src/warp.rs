@@ -162,7 +162,7 @@ mod tests {
             None,
         )
         .unwrap();
-        let cam = plan_scene.camera().unwrap();
+        let cam = plan_scene.camera();
         let plan = crate::cube4l::plan::Plan::new(&plan_scene, &cam).unwrap();
         let s: &Sweep = &plan.sweeps[0];
         let [nx, ny, _] = s.dims;

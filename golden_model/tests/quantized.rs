@@ -31,7 +31,7 @@ fn camera(rotate: [f64; 3], zoom: f64) -> Camera {
             "image": [64, 64]}}"#,
         rotate[0], rotate[1], rotate[2]
     );
-    Scene::from_json(&text, None).unwrap().camera().unwrap()
+    Scene::from_json(&text, None).unwrap().camera()
 }
 
 /// Whether the ray of the pixel at image offset `q` (pixels, x right, y
@@ -166,7 +166,7 @@ fn render(scene: &Scene, method: Method) -> (Image, q::Stats) {
 
 fn reference(scene: &Scene) -> Image {
     let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits).unwrap();
-    reference::render(scene, &scene.camera().unwrap(), &vol, 0.25)
+    reference::render(scene, &scene.camera(), &vol, 0.25)
 }
 
 const SPHERE: &str = r#"{"builtin": "sphere", "dims": [40, 36, 32]}"#;

@@ -264,7 +264,7 @@ fn scene(extra: &str) -> Scene {
 }
 
 fn shader_of(scene: &Scene) -> (Shader, f64) {
-    let camera = scene.camera().unwrap();
+    let camera = scene.camera();
     let plan = Plan::new(scene, &camera).unwrap();
     let sweep = &plan.sweeps[0];
     (Shader::new(scene, &camera, sweep), sweep.spacing)

@@ -20,7 +20,7 @@ pub use camera::{Camera, Projection, ViewSpec};
 pub use error::{CubeError, Result};
 pub use image::Image;
 pub use spec::{
-    Cube3Spec, EmptySpace, Hardware, Mode, QuantizedSpec, Scene, Shading, Transfer, Traversal,
-    MAX_DIM, MAX_IMAGE, MAX_VOXELS,
+    Cube3Spec, EmptySpace, Hardware, Mode, QuantizedSpec, Scene, SceneSpec, Shading, Transfer,
+    Traversal, MAX_DIM, MAX_IMAGE, MAX_VOXELS,
 };
 pub use volume::{Crop, RawType, Volume, VolumeSpec, BUILTINS};

@@ -1,10 +1,18 @@
 //! The JSON scene: volume, view, projection mode, transfer function, shading,
 //! image size and hardware precision. Parsing rejects unknown keys and every
 //! value the renderers cannot honour, with a one-line message.
+//!
+//! A scene as written is a [`SceneSpec`]; validating it is the only way to
+//! a [`Scene`], the type every renderer and flow takes. A `Scene` reads as
+//! its spec (it dereferences to one) but cannot be changed in place: to
+//! vary a field, take [`Scene::spec`], change it and validate again. What
+//! validation normalises (the light direction to a unit vector, a raw
+//! path against the scene's folder, the camera) is what renderers read.
 
 use crate::camera::{check_dir, Camera, ViewSpec};
 use crate::error::{CubeError, Result};
 use crate::volume::{max_value, VolumeSpec, BUILTINS};
+use glam::DVec3;
 use serde::Deserialize;
 use std::path::Path;
 
@@ -17,9 +25,11 @@ pub const MAX_VOXELS: usize = 1 << 28;
 /// Largest accepted image side.
 pub const MAX_IMAGE: u32 = 8192;
 
+/// A scene as written, unchecked: build a [`Scene`] from it with
+/// [`SceneSpec::validate`].
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Scene {
+pub struct SceneSpec {
     pub volume: VolumeSpec,
     pub view: ViewSpec,
     #[serde(default)]
@@ -340,9 +350,9 @@ fn scene_err(msg: impl Into<String>) -> CubeError {
 
 /// Parse scene JSON, naming the field at fault: `mode: unknown variant ...`,
 /// `volume.dims: expected 3 values, found more`.
-fn parse(text: &str) -> Result<Scene> {
+fn parse(text: &str) -> Result<SceneSpec> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let scene: Scene = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+    let scene: SceneSpec = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
         let at = format!("line {} column {}", inner.line(), inner.column());
@@ -373,18 +383,50 @@ fn parse(text: &str) -> Result<Scene> {
     Ok(scene)
 }
 
+/// A validated scene: every bound checked, the light direction a unit
+/// vector, a raw path resolved, the camera built. Only
+/// [`SceneSpec::validate`] makes one; it reads as its spec.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    spec: SceneSpec,
+    camera: Camera,
+}
+
+impl std::ops::Deref for Scene {
+    type Target = SceneSpec;
+    fn deref(&self) -> &SceneSpec {
+        &self.spec
+    }
+}
+
 impl Scene {
     /// Parse and validate a scene. Relative raw paths are resolved against
     /// `base` (the scene file's folder).
     pub fn from_json(text: &str, base: Option<&Path>) -> Result<Scene> {
-        let mut s: Scene = parse(text)?;
+        let mut s = parse(text)?;
         if let (Some(raw), Some(base)) = (&s.volume.raw, base) {
             if raw.is_relative() {
                 s.volume.raw = Some(base.join(raw));
             }
         }
-        s.validate()?;
-        Ok(s)
+        s.validate()
+    }
+
+    /// A copy of the validated spec, to change and validate again.
+    pub fn spec(&self) -> SceneSpec {
+        self.spec.clone()
+    }
+
+    /// This scene with `change` applied to its spec, validated again.
+    pub fn with(&self, change: impl FnOnce(&mut SceneSpec)) -> Result<Scene> {
+        let mut s = self.spec();
+        change(&mut s);
+        s.validate()
+    }
+
+    /// The camera this scene's view defines, in dataset voxel coordinates.
+    pub fn camera(&self) -> Camera {
+        self.camera.clone()
     }
 
     pub fn load(path: &Path) -> Result<Scene> {
@@ -394,8 +436,28 @@ impl Scene {
         })?;
         Scene::from_json(&text, path.parent())
     }
+}
 
-    pub fn validate(&self) -> Result<()> {
+impl SceneSpec {
+    /// Check every field, and normalise what renderers read: the light
+    /// direction becomes a unit vector (scaled by its largest component
+    /// first, so that neither 1e300 nor a subnormal overflows or vanishes).
+    pub fn validate(mut self) -> Result<Scene> {
+        self.check()?;
+        self.shading.light_dir = match check_dir("shading.light_dir", self.shading.light_dir) {
+            Ok(l) => l.to_array(),
+            // Unused without shading: the default, so that no table or
+            // register is built from an unchecked value.
+            Err(_) if !self.shading.enabled => {
+                DVec3::from_array(default_light()).normalize().to_array()
+            }
+            Err(e) => return Err(e),
+        };
+        let camera = Camera::new(&self.view, self.volume.render_dims(), self.image)?;
+        Ok(Scene { spec: self, camera })
+    }
+
+    fn check(&self) -> Result<()> {
         let hw = &self.hardware;
         if ![8, 12, 16].contains(&hw.voxel_bits) {
             return Err(CubeError::Hardware(format!(
@@ -488,8 +550,7 @@ impl Scene {
                 "image [{w}, {h}] out of range (1..={MAX_IMAGE})"
             )));
         }
-        self.validate_transfer()?;
-        self.camera().map(|_| ())
+        self.validate_transfer()
     }
 
     fn validate_transfer(&self) -> Result<()> {
@@ -569,15 +630,7 @@ impl Scene {
         if !(s.shininess.is_finite() && s.shininess >= 0.0 && s.shininess <= 1000.0) {
             return Err(scene_err("shading.shininess must lie in [0, 1000]"));
         }
-        if s.enabled {
-            check_dir("shading.light_dir", s.light_dir)?;
-        }
         Ok(())
-    }
-
-    /// The camera this scene's view defines, in dataset voxel coordinates.
-    pub fn camera(&self) -> Result<Camera> {
-        Camera::new(&self.view, self.volume.render_dims(), self.image)
     }
 }
 
@@ -652,7 +705,7 @@ mod tests {
             None,
         )
         .unwrap();
-        let c = s.camera().unwrap();
+        let c = s.camera();
         assert!((c.right.dot(c.up)).abs() < 1e-12);
         assert!((c.right.cross(c.up) - (-c.forward)).length() < 1e-12);
     }

@@ -525,14 +525,22 @@ fn scene_defaults() {
     assert_eq!(s.transfer.opaque_threshold, 0.5);
     // Shading defaults.
     assert!(s.shading.enabled);
-    assert_eq!(s.shading.light_dir, [0.3, 0.3, 1.0]);
+    // [0.3, 0.3, 1] as validated: a unit vector, divided by
+    // sqrt(1.18) = 1.0862780491200215.
+    let l = s.shading.light_dir;
+    for (got, want) in l
+        .iter()
+        .zip([0.2761723853694970, 0.2761723853694970, 0.9205746178983233])
+    {
+        assert!((got - want).abs() < 1e-15, "{l:?}");
+    }
     assert_eq!(s.shading.ambient, 0.2);
     assert_eq!(s.shading.diffuse, 0.6);
     assert_eq!(s.shading.specular, 0.3);
     assert_eq!(s.shading.shininess, 10.0);
     // Default camera: zoom 1, diag = 16 sqrt3, scale = 16 sqrt3 / 256 = sqrt3 / 16
     // = 0.10825317547305482; centre (7.5, 7.5, 7.5).
-    let c = s.camera().unwrap();
+    let c = s.camera();
     close(c.scale, 0.10825317547305482);
     close3(c.origin, [7.5, 7.5, 7.5]);
     // Hardware given in part: the rest defaults.
@@ -701,7 +709,7 @@ fn crop_of_builtin_ramp_via_scene() {
         vec![102, 153, 204, 102, 153, 204, 102, 153, 204, 102, 153, 204]
     );
     // The camera sees the crop: centre ((3-1)/2, (2-1)/2, (2-1)/2) = (1, 0.5, 0.5).
-    close3(s.camera().unwrap().origin, [1.0, 0.5, 0.5]);
+    close3(s.camera().origin, [1.0, 0.5, 0.5]);
 }
 
 #[test]

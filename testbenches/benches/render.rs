@@ -20,7 +20,7 @@ fn bench(c: &mut Criterion) {
                 "image": [256, 256]}}"#
         ));
         let vol = builtin("phantom", [n, n, n], 8).unwrap();
-        let cam = s.camera().unwrap();
+        let cam = s.camera();
         g.throughput(Throughput::Elements((n * n * n) as u64));
         g.bench_function(format!("cube4l_golden_{n}"), |b| {
             b.iter(|| golden_model::cube4l::render_image(&s, &vol).unwrap())

@@ -45,7 +45,7 @@ pub fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
 pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usize) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let plan = Plan::new(&s, &cam).unwrap();
     let view = &plan.views[vi];
     let shader = Shader::new(&s, &cam, view);

@@ -31,7 +31,7 @@ pub struct Comparison {
 
 pub fn compare_with_reference(scene: &Scene, vol: &Volume) -> Comparison {
     let (golden, frame) = golden_model::cube4l::render_image(scene, vol).expect("golden render");
-    let cam = scene.camera().unwrap();
+    let cam = scene.camera();
     let reference = reference::render(scene, &cam, vol, reference::DEFAULT_STEP);
     let error = compare(&golden, &reference);
     Comparison {
@@ -284,7 +284,7 @@ pub struct EmittedSweep {
 pub fn emitted_sweep(scene: &Scene, vol: &Volume) -> EmittedSweep {
     use cosim::arch::Arch;
     use cosim::cube4l::Cube4l;
-    let cam = scene.camera().unwrap();
+    let cam = scene.camera();
     let build = Cube4l::needs(scene, &cam, vol.dims).unwrap();
     let part = Cube4l::parts(scene, &cam, vol.dims, &build)
         .unwrap()

@@ -74,7 +74,7 @@ fn stream_covers_each_voxel_once_with_its_control() {
         for p in [1, 2, 4, 8] {
             for view in views() {
                 let (s, vol) = setup(dims, view, p, "composite");
-                let cam = s.camera().unwrap();
+                let cam = s.camera();
                 let plan = Plan::new(&s, &cam).unwrap();
                 let mem = SkewedMemory::new(&vol, p);
                 for sweep in &plan.sweeps {
@@ -137,7 +137,7 @@ fn stream_order_processing_equals_golden_model() {
         ] {
             for view in views() {
                 let (s, vol) = setup(dims, view, p, mode);
-                let cam = s.camera().unwrap();
+                let cam = s.camera();
                 let plan = Plan::new(&s, &cam).unwrap();
                 for sweep in &plan.sweeps {
                     let shader = Shader::new(&s, &cam, sweep);

@@ -43,7 +43,7 @@ fn every_engine_matches_the_golden_model_and_the_traces_agree() {
     require_tool("verilator");
     let s = scene(SCENE);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let (rust_vcd, verilator_vcd) = (dir().join("rust.vcd"), dir().join("verilator.vcd"));
     let rust = simulate(&s, &cam, &vol, Engine::RustHdl, Some(&rust_vcd)).unwrap();
     let icarus = simulate(&s, &cam, &vol, Engine::Iverilog, None).unwrap();
@@ -83,7 +83,7 @@ fn a_fault_in_the_emitted_verilog_is_caught_by_pixels_and_traces() {
     require_tool("verilator");
     let s = scene(SCENE);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let (rust_vcd, faulty_vcd) = (dir().join("rust_f.vcd"), dir().join("faulty.vcd"));
     simulate(&s, &cam, &vol, Engine::RustHdl, Some(&rust_vcd)).unwrap();
     // The RPC's accumulator forgets a ray's first segment: it starts from
@@ -124,7 +124,7 @@ fn the_engine_frame_runs_through_verilator_bit_exact() {
             "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/test does it)."
         )
     });
-    let r = simulate(&s, &s.camera().unwrap(), &vol, Engine::Verilator, None).unwrap();
+    let r = simulate(&s, &s.camera(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "{:?}", r.first);
     // 414 scanlines of 207 rays of 64 segments (K = 256, p = 4), periods
     // of 13 313 clocks bound by the PRP writes (256 planes x 52 chunks).
@@ -172,7 +172,7 @@ fn the_abc_units_match_the_golden_model_in_rust_hdl_and_verilator() {
             "mode": "{mode}", "image": [32, 32], "hardware": {{"pipelines": 2}}, {more}}}"#
         ));
         let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-        let cam = s.camera().unwrap();
+        let cam = s.camera();
         let (rust_vcd, verilator_vcd) = (
             dir().join(format!("{name}_rust.vcd")),
             dir().join(format!("{name}_verilator.vcd")),

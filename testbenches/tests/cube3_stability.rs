@@ -27,7 +27,7 @@ fn parallel(deg: f64) -> String {
 #[test]
 fn exactly_45_degrees_samples_on_the_grid_without_trilin() {
     let (s, v) = scene(SPHERE, &parallel(45.0), "");
-    let f = render(&s, &s.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
+    let f = render(&s, &s.camera(), &v, Neighbourhood::N12).unwrap();
     let view = &f.plan.views[0];
     assert_eq!(view.offset, 0, "Eq. 3 admits only offset 0 at 45°");
     assert!(view.on_grid);
@@ -82,8 +82,8 @@ fn opaque_composite_equals_first_opaque() {
         &parallel(30.0),
         &format!(r#", "mode": "first_opaque"{tf}"#),
     );
-    let fc = render(&c, &c.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
-    let fo = render(&o, &o.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
+    let fc = render(&c, &c.camera(), &v, Neighbourhood::N12).unwrap();
+    let fo = render(&o, &o.camera(), &v, Neighbourhood::N12).unwrap();
     assert!(fc.stats.terminated > 0, "early ray termination took place");
     // Composite's opacity LUT corrects α for the spacing; 1 stays 1.
     assert_eq!(fc.bases[0].pixels, fo.bases[0].pixels);
@@ -94,7 +94,7 @@ fn full_scale_16_bit_voxels() {
     let vol = r#"{"builtin": "checkerboard", "dims": [24, 24, 24]}"#;
     let hw = r#", "hardware": {"voxel_bits": 16}"#;
     let (m, v) = scene(vol, &parallel(30.0), &format!(r#", "mode": "mip"{hw}"#));
-    let f = render(&m, &m.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
+    let f = render(&m, &m.camera(), &v, Neighbourhood::N12).unwrap();
     let top = f.bases[0].pixels.iter().map(|p| p[0]).max().unwrap();
     assert_eq!(
         top, 65535,
@@ -104,7 +104,7 @@ fn full_scale_16_bit_voxels() {
     // every estimator's range; nothing saturates.
     for n in ALL {
         let (c, _) = scene(vol, &parallel(30.0), hw);
-        let f = render(&c, &c.camera().unwrap(), &v, n).unwrap();
+        let f = render(&c, &c.camera(), &v, n).unwrap();
         assert_eq!(f.stats.gradient_saturations, 0, "{n:?}");
         assert!(f.stats.shaded > 0);
     }
@@ -117,7 +117,7 @@ fn empty_and_impulse_volumes() {
         &parallel(20.0),
         "",
     );
-    let f = render(&e, &e.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
+    let f = render(&e, &e.camera(), &v, Neighbourhood::N12).unwrap();
     assert!(f.bases[0].pixels.iter().all(|p| *p == [0; 4]));
     assert_eq!(f.stats.shaded, 0, "nothing to shade");
     let (i, v) = scene(
@@ -125,7 +125,7 @@ fn empty_and_impulse_volumes() {
         &parallel(20.0),
         r#", "mode": "mip""#,
     );
-    let f = render(&i, &i.camera().unwrap(), &v, Neighbourhood::N12).unwrap();
+    let f = render(&i, &i.camera(), &v, Neighbourhood::N12).unwrap();
     let top = f.bases[0].pixels.iter().map(|p| p[0]).max().unwrap();
     // The impulse is spread by interpolation; the brightest sample keeps
     // most of it (measured 149 of 255 at 20°).
@@ -141,14 +141,8 @@ fn perspective_with_three_base_planes() {
     );
     let (img, f) = render_image(&s, &v, Neighbourhood::N12).unwrap();
     assert_eq!(f.plan.views.len(), 3);
-    let t = reference::true3d::render(
-        &s,
-        &s.camera().unwrap(),
-        &v,
-        12,
-        reference::true3d::Interp::Exact,
-    )
-    .unwrap();
+    let t = reference::true3d::render(&s, &s.camera(), &v, 12, reference::true3d::Interp::Exact)
+        .unwrap();
     let m = compare(&img, &t);
     println!(
         "three base planes against True3D: {:.3} %",

@@ -10,7 +10,7 @@ fn render_with(threads: usize, scene: &Scene, vol: &Volume) -> (Vec<u8>, Vec<u8>
         .unwrap();
     pool.install(|| {
         let (golden, _) = golden_model::cube4l::render_image(scene, vol).unwrap();
-        let cam = scene.camera().unwrap();
+        let cam = scene.camera();
         let reference = reference::render(scene, &cam, vol, reference::DEFAULT_STEP);
         let bytes = |img: &scene::Image| {
             img.rgb

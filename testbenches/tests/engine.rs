@@ -10,8 +10,10 @@ fn engine(scene_file: &str) -> (Scene, Volume) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../scenes")
         .join(scene_file);
-    let mut s = Scene::load(&path).unwrap();
-    s.image = [192, 192];
+    let s = Scene::load(&path)
+        .unwrap()
+        .with(|s| s.image = [192, 192])
+        .unwrap();
     let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
         panic!(
             "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/test does it)."

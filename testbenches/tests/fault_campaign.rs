@@ -80,7 +80,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "hardware": {"pipelines": 2}}"#,
     );
     let vol = builtin("sphere", s.volume.dims, 8).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let EmittedSweep { part, verilog } = emitted_sweep(&s, &vol);
     let (sweep, config) = (&part.sweep, &part.config);
     let dir = tempfile::tempdir().unwrap();

@@ -47,7 +47,7 @@ struct Case {
 fn case(name: &str, json: &str, p: usize, n: Neighbourhood, lines: i32) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let view = &plan.views[0];
     let vb = s.hardware.voxel_bits;
     let (sb, gb) = (s.cube3.sample_bits(vb), s.cube3.gradient_bits(vb));

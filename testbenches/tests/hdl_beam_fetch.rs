@@ -39,7 +39,7 @@ pub struct Case {
 fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let view = &plan.views[plan.views.len() - 1];
     let (u0, rays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
     let v0 = (view.v[0] + view.v[1]) / 2 - scanlines as i32 / 2;

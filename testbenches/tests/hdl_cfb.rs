@@ -53,7 +53,7 @@ fn run<const P: usize>(dims: [usize; 3], view: &str) {
         r#"{{"volume": {{"builtin": "phantom", "dims": {dims:?}}}, "view": {view}, "image": [16, 16], "hardware": {{"pipelines": {P}}}}}"#
     ));
     let vol = builtin("phantom", dims, 8).unwrap();
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     for sweep in &plan.sweeps {
         run_sweep::<P>(
             &vol,
@@ -231,7 +231,7 @@ fn cfb_with_external_memory_model() {
             r#"{{"volume": {{"builtin": "phantom", "dims": [10, 8, 6]}}, "view": {view}, "image": [16, 16]}}"#
         ));
         let vol = builtin("phantom", [10, 8, 6], 8).unwrap();
-        let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+        let plan = Plan::new(&s, &s.camera()).unwrap();
         for sweep in &plan.sweeps {
             run_sweep_memory::<4>(&vol, sweep, &format!("external memory, {view}"), true);
         }
@@ -244,7 +244,7 @@ fn cfb_verilog_passes_yosys() {
     let s = scene(
         r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [8, 8]}"#,
     );
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let mut uut = Cfb::<4, 10>::new(&build(4, false, plan.sweeps[0].frac), false);
     uut.connect_all();
     yosys_validate("cfb", &generate_verilog(&uut))

@@ -13,7 +13,7 @@ use testbenches::{require_tool, scene};
 fn check(json: &str, vol_name: &str) -> Vec<&'static str> {
     let s = scene(json);
     let vol = builtin(vol_name, s.volume.dims, 8).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let icarus = simulate::<Cube4l>(&s, &cam, &vol, Engine::Iverilog, None).unwrap();
     assert_eq!(
         icarus.mismatches, 0,
@@ -66,7 +66,7 @@ fn a_fault_in_the_emitted_verilog_is_caught() {
             "mode": "composite", "shading": {"enabled": false}, "image": [16, 16], "hardware": {"pipelines": 2}}"#,
     );
     let vol = builtin("phantom", [10, 10, 8], 8).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let verilog = emitted_sweep(&s, &vol).verilog;
     let differing = |v: &str| {
         simulate_altered::<Cube4l>(&s, &cam, &vol, Engine::Iverilog, None, &|_| v.to_string())

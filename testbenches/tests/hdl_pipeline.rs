@@ -52,7 +52,7 @@ fn run_tf<const P: usize>(
             "shading": {{"enabled": {shading}, "light_dir": [0.3, 0.5, 1.0], "specular": 0.4}}, "image": [16, 16], "hardware": {{"pipelines": {P}}}}}"#
     ));
     let vol = builtin(vol_name, dims, 8).unwrap();
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let plan = Plan::new(&s, &cam).unwrap();
     let mut total = (0, 0);
     for sweep in &plan.sweeps {
@@ -193,7 +193,7 @@ fn views_cover_both_orders_and_every_sign() {
         let s = scene(&format!(
             r#"{{"volume": {{"builtin": "sphere", "dims": [8, 8, 8]}}, "view": {view}, "image": [8, 8]}}"#
         ));
-        let sweep = &Plan::new(&s, &s.camera().unwrap()).unwrap().sweeps[0];
+        let sweep = &Plan::new(&s, &s.camera()).unwrap().sweeps[0];
         let Rays::Parallel { dx: x, dy: y } = sweep.rays else {
             unreachable!()
         };
@@ -337,7 +337,7 @@ fn pipeline_verilog_passes_yosys() {
     let s = scene(
         r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "mode": "mip", "image": [8, 8]}"#,
     );
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let plan = Plan::new(&s, &cam).unwrap();
     let golden = GoldenShader::new(&s, &cam, &plan.sweeps[0]);
     let config = PipelineConfig::for_view(&plan.sweeps[0], [16, 16, 16], 2, &golden);
@@ -371,7 +371,7 @@ fn pipeline_wider_voxels_and_channels() {
         let vol = builtin("sphere", s.volume.dims, voxel_bits).unwrap();
         let r = cosim::sim::simulate::<cosim::cube4l::Cube4l>(
             &s,
-            &s.camera().unwrap(),
+            &s.camera(),
             &vol,
             cosim::Engine::RustHdl,
             None,

@@ -58,7 +58,7 @@ fn vectors(voxel_bits: u32, seed: u64) -> Vec<Vector> {
 /// preloaded, or written by the host through the host port.
 fn check(json: &str, seed: u64, preload: bool) {
     let s = scene(json);
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let sweep = &Plan::new(&s, &cam).unwrap().sweeps[0];
     let golden = Golden::new(&s, &cam, sweep);
     let vs = vectors(golden.voxel_bits, seed);

@@ -37,7 +37,7 @@ struct Case {
 fn view_case(name: &str, json: &str, lines: i32) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let view: &View = &plan.views[0];
     assert!(!view.on_grid, "{name}: TRILIN is left out on the grid");
     let f = s.cube3.sample_bits(s.hardware.voxel_bits) - s.hardware.voxel_bits;

@@ -42,7 +42,7 @@ struct Case {
 fn case(name: &str, json: &str, p: usize, lines: i32) -> Case {
     let s = scene(json);
     let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let view = &plan.views[0];
     let vb = s.hardware.voxel_bits;
     let f = s.cube3.sample_bits(vb) - vb;

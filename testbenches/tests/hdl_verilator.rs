@@ -38,8 +38,7 @@ fn rust_hdl_vcd() -> &'static PathBuf {
     VCD.get_or_init(|| {
         let (s, vol) = sphere();
         let vcd = vcd_dir().join("sphere_p2_rust_hdl.vcd");
-        let r = simulate::<Cube4l>(&s, &s.camera().unwrap(), &vol, Engine::RustHdl, Some(&vcd))
-            .unwrap();
+        let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::RustHdl, Some(&vcd)).unwrap();
         assert_eq!(r.mismatches, 0, "rust-hdl: {:?}", r.first);
         vcd
     })
@@ -50,14 +49,7 @@ fn verilator_trace_equals_rust_hdl_trace() {
     require_tool("verilator");
     let (s, vol) = sphere();
     let vcd = vcd_dir().join("sphere_p2_verilator.vcd");
-    let r = simulate::<Cube4l>(
-        &s,
-        &s.camera().unwrap(),
-        &vol,
-        Engine::Verilator,
-        Some(&vcd),
-    )
-    .unwrap();
+    let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::Verilator, Some(&vcd)).unwrap();
     assert_eq!(r.mismatches, 0, "verilator: {:?}", r.first);
     assert_vcd_parses(&vcd);
     let (a, b) = (
@@ -114,7 +106,7 @@ fn a_swapped_neighbour_link_is_caught_by_pixels_and_by_the_trace() {
     assert!(verilog.contains(link), "fault site not found");
     let broken = verilog.replace(link, "lanes$1$g_from_left_xm = lanes$1$g_to_right_xm;");
     let vcd = vcd_dir().join("sphere_p2_verilator_fault.vcd");
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let r = simulate_altered::<Cube4l>(&s, &cam, &vol, Engine::Verilator, Some(&vcd), &|_| {
         broken.clone()
     })
@@ -153,7 +145,7 @@ fn engine_frame_matches_under_verilator() {
         )
     });
     assert_eq!(vol.dims, [256, 256, 110]);
-    let r = simulate::<Cube4l>(&s, &s.camera().unwrap(), &vol, Engine::Verilator, None).unwrap();
+    let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "first differences {:?}", r.first);
     // The view sweeps 256 slices of 256 beams of 110 voxels, padded to 112
     // for p = 4: one beat per clock is 256 * 256 * 28 clocks. Shading adds

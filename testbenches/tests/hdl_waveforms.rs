@@ -39,7 +39,7 @@ fn pipeline_vcd_parses_and_gtkw_names_its_signals() {
     let vcd = dir.join("pipeline_p2.vcd");
     let r = cosim::sim::simulate::<cosim::cube4l::Cube4l>(
         &s,
-        &s.camera().unwrap(),
+        &s.camera(),
         &vol,
         cosim::Engine::RustHdl,
         Some(&vcd),

@@ -40,7 +40,7 @@ fn with_cameras(scenes: Vec<Scene>) -> Vec<(Scene, Camera)> {
     scenes
         .into_iter()
         .map(|s| {
-            let c = s.camera().unwrap();
+            let c = s.camera();
             (s, c)
         })
         .collect()
@@ -64,7 +64,7 @@ fn cube3_perspective(eye: &str, transfer_and_light: &str) -> Scene {
 
 /// The Verilog files (name, text) of an export of `s` on the build it needs.
 fn exported<A: Arch>(s: &Scene, dir: &std::path::Path) -> (String, Vec<(String, String)>) {
-    let camera = s.camera().unwrap();
+    let camera = s.camera();
     let dims = s.volume.render_dims();
     let build = A::needs(s, &camera, dims).unwrap();
     let es = ExportScene {

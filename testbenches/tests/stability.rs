@@ -60,7 +60,7 @@ fn exactly_45_degrees_and_the_base_plane_switch() {
     let s = scene(
         r#"{"volume": {"builtin": "sphere", "dims": [32,32,32]}, "view": {"projection": "parallel", "rotate_deg": [0, 45, 0]}, "image": [96, 96]}"#,
     );
-    let plan = Plan::new(&s, &s.camera().unwrap()).unwrap();
+    let plan = Plan::new(&s, &s.camera()).unwrap();
     let Rays::Parallel { dx, dy } = plan.sweeps[0].rays else {
         panic!("parallel")
     };
@@ -106,7 +106,7 @@ fn oblique_and_negative_directions() {
 /// Alpha of the base-plane pixel in the middle of the last slice.
 fn centre_alpha(json: &str, vol: &Volume) -> u32 {
     let s = scene(json);
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let f = render(&s, &cam, vol).unwrap();
     assert_eq!(f.stats.saturations, 0);
     let b = &f.bases[0];
@@ -155,7 +155,7 @@ fn fully_opaque_voxels_saturate_exactly() {
                 "shading": {{"enabled": false}}, "image": [16,16]}}"#
         );
         let s = scene(&json);
-        let f = render(&s, &s.camera().unwrap(), &vol).unwrap();
+        let f = render(&s, &s.camera(), &vol).unwrap();
         assert_eq!(f.stats.saturations, 0, "{order}");
         let b = &f.bases[0];
         let sw = &f.plan.sweeps[0];
@@ -307,7 +307,7 @@ fn gradient_magnitude_opacity() {
         r#"{{"volume": {{"builtin": "sphere", "dims": [32,32,32]}}, "view": {}, "image": [96, 96]{tf}}}"#,
         parallel([70.0, 30.0, 0.0])
     ));
-    let cam = s.camera().unwrap();
+    let cam = s.camera();
     let plan = Plan::new(&s, &cam).unwrap();
     let shader = golden_model::cube4l::shader::Shader::new(&s, &cam, &plan.sweeps[0]);
     assert!(shader.opacity.as_ref().unwrap().gm_shift.is_some());

@@ -25,7 +25,7 @@ fn small_mip(dir: &std::path::Path) -> Vec<String> {
         r#"{"volume": {"builtin": "sphere", "dims": [8, 8, 8]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
             "mode": "mip", "hardware": {"pipelines": 1}}"#,
     );
-    let camera = s.camera().unwrap();
+    let camera = s.camera();
     let build = Cube4l::needs(&s, &camera, s.volume.dims).unwrap();
     let m = cosim::export::write_export::<Cube4l>(dir, &build, None).unwrap();
     m["designs"][0]["files"]

@@ -62,7 +62,7 @@ fn configs() -> Vec<Committed> {
 fn load(s: &str) -> (String, Scene, scene::Camera, [usize; 3]) {
     let path = root().join(s);
     let scene = Scene::load(&path).unwrap();
-    let camera = scene.camera().unwrap();
+    let camera = scene.camera();
     let dims = scene.volume.render_dims();
     let name = path.file_name().unwrap().to_string_lossy().to_string();
     (name, scene, camera, dims)

@@ -335,7 +335,7 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume, n: Neighbourhood) ->
 
 /// Render a scene with the Cube-3 golden model to the final image.
 pub fn render_image(scene: &Scene, vol: &Volume, n: Neighbourhood) -> Result<(Image, Frame)> {
-    let camera = scene.camera()?;
+    let camera = scene.camera();
     let frame = render(scene, &camera, vol, n)?;
     let img = warp(&frame, &camera, scene.mode);
     Ok((img, frame))

@@ -567,7 +567,7 @@ mod tests {
 
     fn plan(view: &str) -> Plan {
         let s = scene(view, 8);
-        Plan::new(&s, &s.camera().unwrap()).unwrap()
+        Plan::new(&s, &s.camera()).unwrap()
     }
 
     #[test]
@@ -670,7 +670,7 @@ mod tests {
             r#"{"projection": "perspective", "eye": [7.5, 5.5, -3], "fov_deg": 150}"#,
             8,
         );
-        let e = Plan::new(&s, &s.camera().unwrap()).unwrap_err().to_string();
+        let e = Plan::new(&s, &s.camera()).unwrap_err().to_string();
         assert!(e.contains("eye must lie"), "{e}");
     }
 }

@@ -123,7 +123,7 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> scene::Result<Fra
 
 /// Render a scene with the golden model all the way to the final image.
 pub fn render_image(scene: &Scene, vol: &Volume) -> scene::Result<(scene::Image, Frame)> {
-    let camera = scene.camera()?;
+    let camera = scene.camera();
     let frame = render(scene, &camera, vol)?;
     let hw = scene.hardware;
     let img = crate::warp::warp(&frame, &camera, scene.mode, hw.rgba_bits, hw.voxel_bits);

@@ -393,7 +393,7 @@ mod tests {
 
     fn plan(view: &str) -> Plan {
         let s = scene(view);
-        Plan::new(&s, &s.camera().unwrap()).unwrap()
+        Plan::new(&s, &s.camera()).unwrap()
     }
 
     #[test]
@@ -407,7 +407,7 @@ mod tests {
                     "image": [1, 1], "hardware": {{"frac_bits": 15}}}}"#
             );
             let s = Scene::from_json(&t, None).unwrap();
-            let p = Plan::new(&s, &s.camera().unwrap()).unwrap();
+            let p = Plan::new(&s, &s.camera()).unwrap();
             for sw in &p.sweeps {
                 let [nx, ny, _] = sw.dims;
                 for (x, y, z) in [(0, 0, sw.z0), (nx - 1, ny - 1, sw.z1)] {

@@ -165,7 +165,7 @@ pub fn frame(
     grid: &Grid,
     params: &Params,
 ) -> Result<(Image, Stats, Times, ViewTables)> {
-    let camera = scene.camera()?;
+    let camera = scene.camera();
     let t = Instant::now();
     let view = ViewTables::new(scene, &camera, grid, params);
     let view_s = t.elapsed().as_secs_f64();
