@@ -4,8 +4,8 @@
 //! also gives the error against True3D (same rays and neighbourhood, exact
 //! tri-linear samples in float).
 
-use crate::common::{angle_sweep, check_step, error_json, load, render_arch, Arch};
-use crate::output::write_json;
+use crate::common::{angle_sweep, check_step, error_json, load, na_or, render_arch, Arch};
+use crate::output::{write_json, Files};
 use anyhow::{bail, Result};
 use reference::metrics::compare;
 use serde_json::json;
@@ -48,6 +48,11 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     check_step(ref_step)?;
     let angles = angle_sweep(&range)?;
     let (base_scene, vol) = load(&scene_path)?;
+    let mut files = Files::default();
+    files.scene("--scene", &scene_path, &base_scene)?;
+    if let Some(j) = &json_path {
+        files.output("--json", j)?;
+    }
     let scene = &base_scene;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
     if scene.view.projection != scene::Projection::Parallel {
@@ -78,24 +83,34 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         if with_true3d {
             let t = render_arch(&scene, &vol, Arch::True3d, ref_step, gradient)?;
             let mt = compare(&g.image, &t.image);
-            t3 = format!("{:.3}", mt.rel_euclid_pct);
+            t3 = na_or(mt.map(|m| m.rel_euclid_pct), 3);
             row["error_vs_true3d"] = error_json(&mt);
             row["true3d_seconds"] = json!(t.seconds);
             let mr = compare(&t.image, &r.image);
             row["true3d_error"] = error_json(&mr);
         }
         println!(
-            "{a:>7.2} {:>10.3} {:>10.3} {:>10.3} {:>9.2} {:>7} {:>12}",
-            g.seconds, r.seconds, m.rel_euclid_pct, m.psnr_db, axis, t3
+            "{a:>7.2} {:>10.3} {:>10.3} {:>10} {:>9} {:>7} {:>12}",
+            g.seconds,
+            r.seconds,
+            na_or(m.map(|m| m.rel_euclid_pct), 3),
+            na_or(m.map(|m| m.psnr_db), 2),
+            axis,
+            t3
         );
         rows.push(row);
     }
+    // The largest error over the angles that have one.
     let worst = rows
         .iter()
-        .map(|r| r["error"]["rel_euclid_pct"].as_f64().unwrap())
-        .fold(0.0, f64::max);
-    println!("largest rel. Euclidean error: {worst:.3} %");
+        .filter_map(|r| r["error"]["rel_euclid_pct"].as_f64())
+        .reduce(f64::max);
+    println!(
+        "largest rel. Euclidean error: {}",
+        worst.map_or("n/a".into(), |w| format!("{w:.3} %"))
+    );
     if let Some(j) = json_path {
+        let worst = worst.map_or(json!("n/a"), |w| json!(w));
         write_json(
             &j,
             &json!({"scene": scene_path.display().to_string(), "arch": arch.name(), "rows": rows, "max_rel_euclid_pct": worst}),

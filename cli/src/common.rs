@@ -383,7 +383,38 @@ pub fn render_repeat(
     })
 }
 
-pub fn error_json(m: &ErrorMetrics) -> Value {
+/// What an error figure says when neither image has a foreground pixel.
+pub const NO_FOREGROUND: &str = "n/a (neither image has a foreground pixel: nothing to measure)";
+
+/// A figure to `digits` decimals, or `n/a` when there is none.
+pub fn na_or(x: Option<f64>, digits: usize) -> String {
+    x.map_or("n/a".into(), |x| format!("{x:.digits$}"))
+}
+
+/// The error figures on one line, or why there are none.
+pub fn error_line(m: &Option<ErrorMetrics>) -> String {
+    match m {
+        None => format!("error {NO_FOREGROUND}"),
+        Some(m) => format!(
+            "error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+            m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
+        ),
+    }
+}
+
+/// The error figures as JSON: each `"n/a"` when there is nothing to
+/// measure, with `foreground_pixels` 0 and the reason.
+pub fn error_json(m: &Option<ErrorMetrics>) -> Value {
+    let Some(m) = m else {
+        return json!({
+            "rel_euclid_pct": "n/a",
+            "rmse": "n/a",
+            "psnr_db": "n/a",
+            "max_abs": "n/a",
+            "foreground_pixels": 0,
+            "not_available": NO_FOREGROUND,
+        });
+    };
     json!({
         "rel_euclid_pct": m.rel_euclid_pct,
         "rmse": m.rmse,

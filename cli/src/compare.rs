@@ -2,8 +2,8 @@
 //! an earlier run) against the scene's float reference, with the metrics
 //! every `render --compare-reference` reports.
 
-use crate::common::{check_step, error_json, load, render_arch, Arch};
-use crate::output::{write_json, write_png};
+use crate::common::{check_step, error_json, error_line, load, render_arch, Arch};
+use crate::output::{write_json, write_png, Files};
 use anyhow::{bail, Context, Result};
 use reference::metrics::{compare, difference};
 use scene::Image;
@@ -30,6 +30,14 @@ pub struct CompareArgs {
 pub fn run(args: CompareArgs) -> Result<()> {
     check_step(args.ref_step)?;
     let (scene, vol) = load(&args.scene)?;
+    let mut files = Files::default();
+    files.scene("--scene", &args.scene, &scene)?;
+    files.input("--image", &args.image)?;
+    for (flag, path) in [("--json", &args.json), ("--diff", &args.diff)] {
+        if let Some(p) = path {
+            files.output(flag, p)?;
+        }
+    }
     let img = read_png(&args.image)?;
     let [w, h] = scene.image;
     if (img.width, img.height) != (w, h) {
@@ -43,12 +51,9 @@ pub fn run(args: CompareArgs) -> Result<()> {
     let r = render_arch(&scene, &vol, Arch::Reference, args.ref_step, None)?;
     let m = compare(&img, &r.image);
     println!(
-        "{}: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4} (reference {:.3} s)",
+        "{}: {} (reference {:.3} s)",
         args.image.display(),
-        m.rel_euclid_pct,
-        m.rmse,
-        m.psnr_db,
-        m.max_abs,
+        error_line(&m),
         r.seconds
     );
     if let Some(d) = &args.diff {

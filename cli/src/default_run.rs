@@ -69,7 +69,10 @@ pub fn run() -> Result<()> {
         ),
     ] {
         let out = render_arch(&scene, &vol, arch, step, None)?;
-        let error = Some(compare(&out.image, &methods[0].out.image));
+        let error = Some(
+            compare(&out.image, &methods[0].out.image)
+                .context("the built-in scene rendered no foreground pixels")?,
+        );
         methods.push(Method {
             name,
             what,

@@ -6,7 +6,7 @@
 //! reported per neighbourhood, with a plot.
 
 use crate::common::{angle_sweep, load};
-use crate::output::{check_target, write_json, write_png_rgb8};
+use crate::output::{write_json, write_png_rgb8, Files};
 use anyhow::{bail, Context, Result};
 use golden_model::cube3::surface::{crossings, ALL};
 use plotters::prelude::*;
@@ -33,10 +33,14 @@ pub struct GradientsArgs {
 
 pub fn run(args: GradientsArgs) -> Result<()> {
     let angles = angle_sweep(&args.range)?;
-    for p in [&args.json, &args.plot].into_iter().flatten() {
-        check_target(p)?;
-    }
     let (base_scene, vol) = load(&args.scene)?;
+    let mut files = Files::default();
+    files.scene("--scene", &args.scene, &base_scene)?;
+    for (flag, path) in [("--json", &args.json), ("--plot", &args.plot)] {
+        if let Some(p) = path {
+            files.output(flag, p)?;
+        }
+    }
     let scene = &base_scene;
     if scene.volume.builtin.as_deref() != Some("sphere") {
         bail!("volume: gradients needs the built-in sphere (its analytic normals)");
@@ -72,7 +76,16 @@ pub fn run(args: GradientsArgs) -> Result<()> {
                 }
             }
         }
-        let mean: [f64; 4] = std::array::from_fn(|j| sum[j] / count[j].max(1) as f64);
+        // A mean over no crossings is undefined: the command exists for
+        // this figure, so it refuses rather than report one.
+        if let Some(j) = (0..4).find(|&j| count[j] == 0) {
+            bail!(
+                "gradients: at {a}° the {}-neighbourhood has no threshold crossing with a gradient ({} crossings): no mean error to report; a larger sphere or another --threshold gives some",
+                ALL[j].count(),
+                xs.len()
+            );
+        }
+        let mean: [f64; 4] = std::array::from_fn(|j| sum[j] / count[j] as f64);
         println!(
             "{a:>7.2} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>9}",
             mean[0],

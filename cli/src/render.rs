@@ -2,8 +2,8 @@
 //! reference, optionally compare it with the reference, and write the image,
 //! a difference image, the first sweep's base plane and a JSON report.
 
-use crate::common::{check_step, error_json, load, render_arch, render_repeat, Arch};
-use crate::output::{write_json, write_png};
+use crate::common::{check_step, error_json, error_line, load, render_arch, render_repeat, Arch};
+use crate::output::{write_json, write_png, Files};
 use anyhow::{bail, Result};
 use reference::metrics::{compare, difference};
 use scene::volume::Volume;
@@ -67,6 +67,18 @@ pub fn run(args: RenderArgs) -> Result<()> {
         bail!("--base-plane needs --arch cube4l");
     }
     let (scene, vol) = load(&scene_path)?;
+    let mut files = Files::default();
+    files.scene("--scene", &scene_path, &scene)?;
+    for (flag, path) in [
+        ("--out", &out),
+        ("--json", &json_path),
+        ("--diff", &diff),
+        ("--base-plane", &base_plane),
+    ] {
+        if let Some(p) = path {
+            files.output(flag, p)?;
+        }
+    }
     let r = render_repeat(&scene, &vol, arch, ref_step, gradient, repeat as usize)?;
     println!("{}: {:.3} s", arch.name(), r.seconds);
     if matches!(arch, Arch::QuantizedProjection | Arch::QuantizedSplat) {
@@ -104,10 +116,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
     if with_ref {
         let rr = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
         let m = compare(&r.image, &rr.image);
-        println!(
-            "reference: {:.3} s; error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
-            rr.seconds, m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
-        );
+        println!("reference: {:.3} s; {}", rr.seconds, error_line(&m));
         report["error"] = error_json(&m);
         report["reference_seconds"] = json!(rr.seconds);
         if let Some(d) = diff {

@@ -97,8 +97,19 @@ impl ForArch for Sim<'_> {
             .transpose()
             .map_err(err)?;
         let outs = frame_paths(&args.out, frames.len());
-        for path in outs.iter().chain(&args.json) {
-            output::check_target(path)?;
+        let mut files = output::Files::default();
+        for (path, (scene, _)) in args.scene.iter().zip(&frames) {
+            files.scene("--scene", path, scene)?;
+        }
+        for path in &outs {
+            files.output("--out", path)?;
+        }
+        if let Some(j) = &args.json {
+            files.output("--json", j)?;
+        }
+        if let Some(v) = &args.vcd {
+            files.output("--vcd", v)?;
+            files.companion("--vcd's save file", &v.with_extension("gtkw"))?;
         }
         let vcd_tmp = vcd_temp(&args.vcd)?;
         let simulated = cosim::sim::simulate_frames::<A>(
@@ -247,20 +258,13 @@ fn frame_paths(out: &Option<PathBuf>, frames: usize) -> Vec<PathBuf> {
         .collect()
 }
 
-/// The temporary path the simulation traces to, beside `--vcd` (checked
-/// first: a VCD is written whole, never over a special file).
+/// The temporary path the simulation traces to, beside the file `--vcd`
+/// names (a VCD is written whole, never through a special file).
 fn vcd_temp(vcd: &Option<PathBuf>) -> Result<Option<PathBuf>> {
     let Some(v) = vcd else { return Ok(None) };
-    if let output::Target::Special = output::check_target(v)? {
-        bail!(
-            "--vcd {}: not a regular file (a VCD is written whole, with its .gtkw beside it)",
-            v.display()
-        );
-    }
-    if let Some(dir) = v.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    }
-    Ok(Some(v.with_extension("vcd.tmp")))
+    output::temp_for(v, "vcd")
+        .map(Some)
+        .with_context(|| "--vcd: a VCD is written whole, with its .gtkw beside it")
 }
 
 /// Move a finished trace and its `.gtkw` into place.
@@ -269,7 +273,7 @@ fn keep_vcd(tmp: &Option<PathBuf>, vcd: &Option<PathBuf>) -> Result<()> {
         let text = std::fs::read_to_string(tmp.with_extension("gtkw"))?
             .replace(&tmp.display().to_string(), &v.display().to_string());
         output::write_text(&v.with_extension("gtkw"), &text)?;
-        std::fs::rename(tmp, v).with_context(|| format!("renaming to {}", v.display()))?;
+        output::keep(tmp, v)?;
     }
     Ok(())
 }

@@ -74,6 +74,13 @@ impl ForArch for Synth<'_> {
         let err = |e: String| anyhow::anyhow!("synth: {e}");
         let (loaded, build) =
             choose_build::<A>("synth", args.scene.as_deref(), args.config.as_deref())?;
+        let mut files = crate::output::Files::default();
+        if let (Some(path), Some(l)) = (&args.scene, &loaded) {
+            files.scene("--scene", path, &l.scene)?;
+        }
+        if let Some(j) = &args.json {
+            files.output("--json", j)?;
+        }
         let scene = loaded.as_ref().map(Loaded::export);
         let parts = match &scene {
             Some(s) => A::parts(s.scene, s.camera, s.dims, &build).map_err(err)?,

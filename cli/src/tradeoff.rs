@@ -19,7 +19,7 @@
 //! an assumed clock, said so on the point.
 
 use crate::common::{render_repeat, Arch};
-use crate::output::{check_target, write_json, write_png_rgb8, write_text};
+use crate::output::{write_json, write_png_rgb8, write_text, Files};
 use crate::reports::{pricing_build, Measured};
 use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -305,8 +305,10 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         "tradeoff_area.png",
     ]
     .map(|f| args.out.join(f));
+    let mut run_files = Files::default();
+    run_files.scene("--scene", &args.scene, &scene)?;
     for f in &files {
-        check_target(f)?;
+        run_files.output("--out", f)?;
     }
 
     // Which methods apply, and their grids.
@@ -347,8 +349,15 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         bar.set_message(format!("reference step {step}"));
         let r = render_repeat(&scene, &vol, Arch::Reference, step, None, args.repeat)?;
         bar.inc(1);
+        if compare(&r.image, &r.image).is_none() {
+            bail!(
+                "tradeoff: the reference image has no foreground pixels (an empty volume, a transparent transfer function or a view that misses the volume): there is no error to weigh against cost"
+            );
+        }
         if let Some((s, prev, _)) = refs.last() {
-            let d = compare(prev, &r.image).rel_euclid_pct;
+            let d = compare(prev, &r.image)
+                .expect("the reference has foreground pixels (checked above)")
+                .rel_euclid_pct;
             if d < args.tolerance {
                 converged = Some((*s, step, d));
                 refs.push((step, r.image, r.seconds));
@@ -636,7 +645,7 @@ fn point(
     Point {
         method: method.to_string(),
         params,
-        error: compare(img, yard),
+        error: compare(img, yard).expect("the yardstick has foreground pixels (checked first)"),
         software_seconds,
         volume_prep_seconds: None,
         hw,
@@ -685,7 +694,7 @@ fn row_json(p: &Point, on_front: bool) -> Value {
     json!({
         "method": p.method,
         "params": p.params,
-        "error": crate::common::error_json(&p.error),
+        "error": crate::common::error_json(&Some(p.error)),
         "software_seconds": p.software_seconds,
         "volume_prep_seconds": p.volume_prep_seconds,
         "hardware": p.hw.as_ref().map(|h| json!({

@@ -3,6 +3,10 @@
 
 use std::path::Path;
 
+/// The first line of every save file the kit writes: a GTKWave comment,
+/// which tells a file the kit may replace from one the user saved.
+pub const MARK: &str = "[*] written by cube";
+
 /// A signal group of a save file: its name and signals.
 pub type Wave = (String, Vec<String>);
 
@@ -11,7 +15,7 @@ pub type Wave = (String, Vec<String>);
 /// group each.
 pub fn write_gtkw(vcd: &Path, top: &str, waves: &[Wave]) -> std::io::Result<()> {
     let mut s = format!(
-        "[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
+        "{MARK}: the next run's trace replaces it\n[dumpfile] \"{}\"\n[timestart] 0\n[size] 1400 900\n",
         vcd.display()
     );
     s.push_str(&format!("@28\n{top}.clock\n{top}.start\n"));

@@ -226,7 +226,7 @@ fn every_supported_mode_is_close_to_the_reference() {
             "{mode}: the reference must show something ({lit} pixels)"
         );
         let (img, _) = render(&s, Method::Projection);
-        let e = compare(&img, &r).rel_euclid_pct;
+        let e = compare(&img, &r).expect("foreground").rel_euclid_pct;
         println!("{mode} projection: {e:.3} %");
         assert!(e < proj_max, "{mode} projection: {e} %");
         if splat_max.is_nan() {
@@ -238,7 +238,7 @@ fn every_supported_mode_is_close_to_the_reference() {
             );
         } else {
             let (img, _) = render(&s, Method::Splat);
-            let e = compare(&img, &r).rel_euclid_pct;
+            let e = compare(&img, &r).expect("foreground").rel_euclid_pct;
             println!("{mode} splat: {e:.3} %");
             assert!(e < splat_max, "{mode} splat: {e} %");
         }

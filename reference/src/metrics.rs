@@ -17,8 +17,11 @@ pub struct ErrorMetrics {
     pub foreground_pixels: usize,
 }
 
-/// Compare `img` against `reference`. Panics if the sizes differ (a caller bug).
-pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
+/// Compare `img` against `reference`: `None` when neither image has a
+/// foreground pixel, where the relative error and the PSNR are undefined
+/// (an empty scene, a transparent transfer function), never a 0. Panics if
+/// the sizes differ (a caller bug).
+pub fn compare(img: &Image, reference: &Image) -> Option<ErrorMetrics> {
     assert_eq!(
         (img.width, img.height),
         (reference.width, reference.height),
@@ -36,13 +39,12 @@ pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
             euclid += e;
         }
     }
+    if fg == 0 {
+        return None;
+    }
     let rmse = (sq / (3 * img.rgb.len()) as f64).sqrt();
-    ErrorMetrics {
-        rel_euclid_pct: if fg == 0 {
-            0.0
-        } else {
-            100.0 * euclid / (fg as f64 * 3f64.sqrt())
-        },
+    Some(ErrorMetrics {
+        rel_euclid_pct: 100.0 * euclid / (fg as f64 * 3f64.sqrt()),
         rmse,
         psnr_db: if rmse == 0.0 {
             f64::INFINITY
@@ -51,7 +53,7 @@ pub fn compare(img: &Image, reference: &Image) -> ErrorMetrics {
         },
         max_abs,
         foreground_pixels: fg,
-    }
+    })
 }
 
 /// Difference image: per-channel absolute difference times `gain`.
@@ -71,10 +73,19 @@ mod tests {
     fn identical_images_have_zero_error() {
         let mut a = Image::black(4, 4);
         a.rgb[3] = [0.5, 0.2, 0.1];
-        let m = compare(&a, &a);
+        let m = compare(&a, &a).unwrap();
         assert_eq!(m.rel_euclid_pct, 0.0);
         assert_eq!(m.foreground_pixels, 1);
         assert!(m.psnr_db.is_infinite());
+    }
+
+    #[test]
+    fn no_foreground_is_no_figure() {
+        let a = Image::black(4, 4);
+        assert_eq!(compare(&a, &a), None);
+        let mut b = Image::black(4, 4);
+        b.rgb[0] = [1.0 / 255.0, 0.0, 0.0];
+        assert!(compare(&a, &b).is_some());
     }
 
     #[test]
@@ -82,7 +93,7 @@ mod tests {
         let mut a = Image::black(2, 1);
         let b = Image::black(2, 1);
         a.rgb[0] = [1.0, 1.0, 1.0];
-        let m = compare(&a, &b);
+        let m = compare(&a, &b).unwrap();
         assert!((m.rel_euclid_pct - 100.0).abs() < 1e-12);
         assert!((m.rmse - (0.5f64).sqrt()).abs() < 1e-12);
         assert_eq!(m.max_abs, 1.0);

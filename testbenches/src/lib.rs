@@ -33,7 +33,7 @@ pub fn compare_with_reference(scene: &Scene, vol: &Volume) -> Comparison {
     let (golden, frame) = golden_model::cube4l::render_image(scene, vol).expect("golden render");
     let cam = scene.camera();
     let reference = reference::render(scene, &cam, vol, reference::DEFAULT_STEP);
-    let error = compare(&golden, &reference);
+    let error = compare(&golden, &reference).expect("a test scene with foreground pixels");
     Comparison {
         golden,
         reference,

@@ -53,7 +53,7 @@ fn base_plane_switch_at_45_degrees() {
             fa.plan.views[0].perm[2], fb.plan.views[0].perm[2],
             "the base plane switches"
         );
-        change.push(compare(&ia, &ib).rel_euclid_pct);
+        change.push(compare(&ia, &ib).expect("foreground").rel_euclid_pct);
     }
     println!("image change across 45° (6, 10, 12, 26): {change:.3?} %");
     let [c6, c10, c12, c26] = [change[0], change[1], change[2], change[3]];
@@ -143,7 +143,7 @@ fn perspective_with_three_base_planes() {
     assert_eq!(f.plan.views.len(), 3);
     let t = reference::true3d::render(&s, &s.camera(), &v, 12, reference::true3d::Interp::Exact)
         .unwrap();
-    let m = compare(&img, &t);
+    let m = compare(&img, &t).expect("foreground");
     println!(
         "three base planes against True3D: {:.3} %",
         m.rel_euclid_pct

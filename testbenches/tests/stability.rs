@@ -75,7 +75,7 @@ fn exactly_45_degrees_and_the_base_plane_switch() {
         at45.error.rel_euclid_pct
     );
     // Switching the major axis across 45 degrees must not jump.
-    let switch = reference::metrics::compare(&below.golden, &above.golden);
+    let switch = reference::metrics::compare(&below.golden, &above.golden).expect("foreground");
     assert!(
         switch.rel_euclid_pct < 0.5,
         "base-plane switch changes the image by {} %",

@@ -26,11 +26,19 @@ fn images(s: &Scene) -> Vec<(&'static str, Image)> {
     let cam = s.camera();
     let n = golden_model::cube3::neighbourhood(s, None).unwrap();
     vec![
-        ("cube4l", golden_model::cube4l::render_image(s, &vol).unwrap().0),
-        ("cube3", golden_model::cube3::render_image(s, &vol, n).unwrap().0),
+        (
+            "cube4l",
+            golden_model::cube4l::render_image(s, &vol).unwrap().0,
+        ),
+        (
+            "cube3",
+            golden_model::cube3::render_image(s, &vol, n).unwrap().0,
+        ),
         (
             "quantized",
-            golden_model::quantized::render(s, &vol, Method::Projection).unwrap().0,
+            golden_model::quantized::render(s, &vol, Method::Projection)
+                .unwrap()
+                .0,
         ),
         ("reference", reference::render(s, &cam, &vol, 0.5)),
         (
@@ -64,9 +72,16 @@ fn a_light_of_mixed_extreme_components_is_not_ambient_only() {
     let len = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();
     assert!((len - 1.0).abs() < 1e-15, "{l:?}");
     let lit = images(&scene("[0, 0, 1]"));
-    let unlit = images(&scene("[0, 0, 1]").with(|s| s.shading.diffuse = 0.0).unwrap());
+    let unlit = images(
+        &scene("[0, 0, 1]")
+            .with(|s| s.shading.diffuse = 0.0)
+            .unwrap(),
+    );
     for ((name, x), ((_, y), (_, z))) in images(&s).into_iter().zip(lit.iter().zip(&unlit)) {
-        assert!(x.rgb.iter().all(|p| p.iter().all(|c| c.is_finite())), "{name}");
+        assert!(
+            x.rgb.iter().all(|p| p.iter().all(|c| c.is_finite())),
+            "{name}"
+        );
         // The light is [1.5e-100, -5e-51, 1]: as lit as [0, 0, 1], not dark.
         assert_ne!(x.rgb, z.rgb, "{name}: ambient only");
         let diff = x

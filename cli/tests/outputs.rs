@@ -1,0 +1,217 @@
+//! Every output of every subcommand goes through one writer, and each rule
+//! holds on every flag: an output that is an input or another output is
+//! refused in one line before any work; a symlink is followed and stays a
+//! link; a device reached through `/dev` is written through; a file's mode
+//! is kept, and one the user may not write is refused; a `.gtkw` the kit did
+//! not write is never replaced.
+
+use std::os::unix::fs::PermissionsExt;
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+
+fn cube(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cube"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("run cube")
+}
+
+fn ok(o: &Output) {
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn refused(o: &Output, needle: &str) {
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    assert!(err.contains(needle), "'{needle}' not in: {err}");
+}
+
+const SCENE: &str = r#"{"volume": {"builtin": "sphere", "dims": [12,12,10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [24, 24], "hardware": {"pipelines": 2}}"#;
+
+/// A folder with the scene `s.json` and its image `in.png`.
+fn setup() -> tempfile::TempDir {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("s.json"), SCENE).unwrap();
+    ok(&cube(
+        &["render", "--scene", "s.json", "--out", "in.png"],
+        d.path(),
+    ));
+    d
+}
+
+/// Each subcommand's run on `s.json` (and `in.png`), and its output flags.
+fn commands() -> Vec<(Vec<&'static str>, Vec<&'static str>)> {
+    vec![
+        (
+            vec!["render", "--scene", "s.json", "--compare-reference"],
+            vec!["--out", "--json", "--diff", "--base-plane"],
+        ),
+        (
+            vec!["compare", "--scene", "s.json", "--image", "in.png"],
+            vec!["--json", "--diff"],
+        ),
+        (
+            vec!["angles", "--scene", "s.json", "--range", "0", "10", "10"],
+            vec!["--json"],
+        ),
+        (
+            vec!["gradients", "--scene", "s.json", "--range", "0", "0", "5"],
+            vec!["--json", "--plot"],
+        ),
+        (
+            vec!["sim", "--scene", "s.json"],
+            vec!["--out", "--json", "--vcd"],
+        ),
+        (vec!["synth", "--scene", "s.json"], vec!["--json"]),
+    ]
+}
+
+#[test]
+fn an_output_on_an_input_or_on_another_output_is_refused_before_any_work() {
+    let d = setup();
+    let p = d.path();
+    let scene_before = std::fs::read(p.join("s.json")).unwrap();
+    let image_before = std::fs::read(p.join("in.png")).unwrap();
+    std::os::unix::fs::symlink("s.json", p.join("link.json")).unwrap();
+    std::fs::hard_link(p.join("s.json"), p.join("hard.json")).unwrap();
+    for (run, flags) in commands() {
+        for flag in &flags {
+            // The scene itself, a symlink to it, a hard link to it.
+            for onto in ["s.json", "link.json", "hard.json", "./sub/../s.json"] {
+                let mut args = run.clone();
+                args.extend([*flag, onto]);
+                refused(&cube(&args, p), "would replace the input --scene");
+            }
+            if run[0] == "compare" {
+                let mut args = run.clone();
+                args.extend([*flag, "in.png"]);
+                refused(&cube(&args, p), "would replace the input --image");
+            }
+        }
+        // Two outputs on one file.
+        for pair in flags.windows(2) {
+            let mut args = run.clone();
+            args.extend([pair[0], "same.out", pair[1], "same.out"]);
+            refused(&cube(&args, p), "give each output its own file");
+        }
+    }
+    // tradeoff: a scene in its output folder under an output's name.
+    std::fs::create_dir(p.join("t")).unwrap();
+    std::fs::write(p.join("t/tradeoff.json"), SCENE).unwrap();
+    refused(
+        &cube(&["tradeoff", "--scene", "t/tradeoff.json", "--out", "t"], p),
+        "would replace the input --scene",
+    );
+    // sim: a VCD whose save file is the VCD itself.
+    refused(
+        &cube(&["sim", "--scene", "s.json", "--vcd", "x.gtkw"], p),
+        "give each output its own file",
+    );
+    assert_eq!(std::fs::read(p.join("s.json")).unwrap(), scene_before);
+    assert_eq!(std::fs::read(p.join("in.png")).unwrap(), image_before);
+    assert!(!p.join("same.out").exists());
+}
+
+#[test]
+fn a_symlinked_output_writes_its_target_and_stays_a_link() {
+    let d = setup();
+    let p = d.path();
+    for (run, flags) in commands() {
+        if run[0] == "synth" {
+            continue; // its output needs yosys: tests/synth covers the writer there
+        }
+        let mut args = run.clone();
+        for (i, flag) in flags.iter().enumerate() {
+            let link = format!("{}-{i}.link", run[0]);
+            let target = format!("{}-{i}.target", run[0]);
+            std::os::unix::fs::symlink(&target, p.join(&link)).unwrap();
+            args.push(flag);
+            args.push(Box::leak(link.into_boxed_str()));
+        }
+        ok(&cube(&args, p));
+        for (i, flag) in flags.iter().enumerate() {
+            let link = p.join(format!("{}-{i}.link", run[0]));
+            let meta = std::fs::symlink_metadata(&link).unwrap();
+            assert!(meta.file_type().is_symlink(), "{run:?} {flag}");
+            let target = p.join(format!("{}-{i}.target", run[0]));
+            assert!(
+                std::fs::metadata(&target).unwrap().len() > 0,
+                "{run:?} {flag}"
+            );
+        }
+    }
+}
+
+#[test]
+fn dev_stdout_into_a_redirected_log_is_written_through() {
+    let d = setup();
+    let p = d.path();
+    let log = std::fs::File::create(p.join("log.txt")).unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_cube"))
+        .args(["render", "--scene", "s.json", "--json", "/dev/stdout"])
+        .current_dir(p)
+        .stdout(log)
+        .status()
+        .unwrap();
+    assert!(o.success());
+    let text = std::fs::read_to_string(p.join("log.txt")).unwrap();
+    // The line printed first, then the JSON after it: one file, appended.
+    assert!(text.starts_with("cube4l:"), "{text}");
+    assert!(text.contains("\"arch\": \"cube4l\""), "{text}");
+    assert!(std::fs::symlink_metadata("/dev/stdout")
+        .unwrap()
+        .file_type()
+        .is_symlink());
+}
+
+#[test]
+fn a_files_mode_is_kept_and_a_file_the_user_may_not_write_is_refused() {
+    let d = setup();
+    let p = d.path();
+    std::fs::write(p.join("kept.json"), "old").unwrap();
+    std::fs::set_permissions(p.join("kept.json"), PermissionsExt::from_mode(0o640)).unwrap();
+    ok(&cube(
+        &["render", "--scene", "s.json", "--json", "kept.json"],
+        p,
+    ));
+    let m = std::fs::metadata(p.join("kept.json")).unwrap();
+    assert_eq!(m.permissions().mode() & 0o777, 0o640);
+    assert_ne!(std::fs::read_to_string(p.join("kept.json")).unwrap(), "old");
+    std::fs::write(p.join("ro.json"), "old").unwrap();
+    std::fs::set_permissions(p.join("ro.json"), PermissionsExt::from_mode(0o444)).unwrap();
+    let o = cube(&["render", "--scene", "s.json", "--json", "ro.json"], p);
+    // SAFETY: geteuid has no preconditions.
+    if unsafe { libc::geteuid() } == 0 {
+        // As `cp` does for root: written, its mode kept.
+        ok(&o);
+        let m = std::fs::metadata(p.join("ro.json")).unwrap();
+        assert_eq!(m.permissions().mode() & 0o777, 0o444);
+    } else {
+        refused(&o, "permission denied");
+        assert_eq!(std::fs::read_to_string(p.join("ro.json")).unwrap(), "old");
+    }
+}
+
+#[test]
+fn a_save_file_the_kit_did_not_write_is_never_replaced() {
+    let d = setup();
+    let p = d.path();
+    std::fs::write(p.join("notes.gtkw"), "[*] my own view\n").unwrap();
+    refused(
+        &cube(&["sim", "--scene", "s.json", "--vcd", "notes.vcd"], p),
+        "was not written by cube",
+    );
+    assert_eq!(
+        std::fs::read_to_string(p.join("notes.gtkw")).unwrap(),
+        "[*] my own view\n"
+    );
+    assert!(!p.join("notes.vcd").exists());
+    // The kit's own save file is replaced by the next run.
+    ok(&cube(&["sim", "--scene", "s.json", "--vcd", "t.vcd"], p));
+    ok(&cube(&["sim", "--scene", "s.json", "--vcd", "t.vcd"], p));
+    let gtkw = std::fs::read_to_string(p.join("t.gtkw")).unwrap();
+    assert!(gtkw.starts_with("[*] written by cube"), "{gtkw}");
+}
