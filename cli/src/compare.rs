@@ -38,16 +38,7 @@ pub fn run(args: CompareArgs) -> Result<()> {
             files.output(flag, p)?;
         }
     }
-    let img = read_png(&args.image)?;
-    let [w, h] = scene.image;
-    if (img.width, img.height) != (w, h) {
-        bail!(
-            "{} is {}x{}; the scene's image is {w}x{h}",
-            args.image.display(),
-            img.width,
-            img.height
-        );
-    }
+    let img = read_png(&args.image, scene.image)?;
     let r = render_arch(&scene, &vol, Arch::Reference, args.ref_step, None)?;
     let m = compare(&img, &r.image);
     println!(
@@ -74,24 +65,49 @@ pub fn run(args: CompareArgs) -> Result<()> {
     Ok(())
 }
 
-fn read_png(path: &std::path::Path) -> Result<Image> {
+/// The image to judge, of the scene's size `[w, h]` (checked from its
+/// header, before any pixel is decoded). An alpha channel is composited on
+/// black, as the kit's renderers composite, and said so.
+fn read_png(path: &std::path::Path, [w, h]: [u32; 2]) -> Result<Image> {
     let meta = std::fs::metadata(path).with_context(|| format!("reading {}", path.display()))?;
     if !meta.is_file() {
         bail!("{} is not a regular file", path.display());
     }
-    let rgb = image::ImageReader::open(path)
-        .with_context(|| format!("reading {}", path.display()))?
-        .with_guessed_format()?
+    let open = || -> Result<_> {
+        image::ImageReader::open(path)
+            .with_context(|| format!("reading {}", path.display()))?
+            .with_guessed_format()
+            .with_context(|| format!("reading {}", path.display()))
+    };
+    let (width, height) = open()?
+        .into_dimensions()
+        .with_context(|| format!("decoding {} as an image", path.display()))?;
+    if (width, height) != (w, h) {
+        bail!(
+            "{} is {width}x{height}; the scene's image is {w}x{h}",
+            path.display()
+        );
+    }
+    let decoded = open()?
         .decode()
-        .with_context(|| format!("decoding {} as an image", path.display()))?
-        .to_rgb8();
-    let (width, height) = rgb.dimensions();
+        .with_context(|| format!("decoding {} as an image", path.display()))?;
+    let alpha = decoded.color().has_alpha();
+    let rgba = decoded.to_rgba8();
+    if alpha && rgba.pixels().any(|p| p.0[3] < 255) {
+        println!(
+            "note: {} has transparent pixels: composited on black",
+            path.display()
+        );
+    }
     Ok(Image {
         width,
         height,
-        rgb: rgb
+        rgb: rgba
             .pixels()
-            .map(|p| p.0.map(|c| c as f64 / 255.0))
+            .map(|p| {
+                let a = p.0[3] as f64 / 255.0;
+                [0, 1, 2].map(|c| p.0[c] as f64 / 255.0 * a)
+            })
             .collect(),
     })
 }

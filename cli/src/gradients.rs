@@ -53,7 +53,11 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     if threshold == 0 || threshold > full {
         bail!("--threshold {threshold} must lie in 1..={full}");
     }
-    let (centre, _) = scene::volume::sphere_geometry(scene.volume.render_dims());
+    // The sphere is built over the whole volume: a crop moves its centre
+    // into the cropped frame, by the crop's offset.
+    let (centre, _) = scene::volume::sphere_geometry(scene.volume.dims);
+    let offset = scene.volume.crop.map_or([0; 3], |c| c.offset);
+    let centre = centre - glam::DVec3::from_array(offset.map(|o| o as f64));
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
     println!(
         "{:>7} {:>8} {:>8} {:>8} {:>8} {:>9}",

@@ -14,6 +14,7 @@ mod render;
 mod reports;
 mod scenes;
 mod sim;
+mod stop;
 mod synth;
 mod tradeoff;
 mod vcd_diff;
@@ -73,11 +74,13 @@ enum Command {
 }
 
 fn main() {
+    stop::watch();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         // Help and version go to stdout as clap prints them.
         Err(e) if !e.use_stderr() => e.exit(),
-        // Bad input: one line, exit 1, like every other error.
+        // Bad input: one line, exit 1, like every other error (vcd-diff:
+        // 2, as its help says; 1 there means "the traces differ").
         Err(e) => {
             // clap's first paragraph, joined (a missing argument is named
             // on the line after the message); its usage text is left out.
@@ -91,7 +94,8 @@ fn main() {
                 "cube: {} (see cube --help)",
                 first.join(" ").trim_start_matches("error: ")
             );
-            std::process::exit(1);
+            let vcd_diff = std::env::args().nth(1).is_some_and(|a| a == "vcd-diff");
+            std::process::exit(if vcd_diff { 2 } else { 1 });
         }
     };
     let r = match cli.command {

@@ -266,6 +266,7 @@ fn atomic_write(path: &Path, write: impl FnOnce(&mut std::fs::File) -> Result<()
         Target::File(t) => t,
     };
     let tmp = temp_beside(&target, "tmp")?;
+    crate::stop::remove_on_stop(&tmp);
     let result = (|| {
         let mut f =
             std::fs::File::create(&tmp).with_context(|| format!("creating {}", tmp.display()))?;

@@ -262,9 +262,11 @@ fn frame_paths(out: &Option<PathBuf>, frames: usize) -> Vec<PathBuf> {
 /// names (a VCD is written whole, never through a special file).
 fn vcd_temp(vcd: &Option<PathBuf>) -> Result<Option<PathBuf>> {
     let Some(v) = vcd else { return Ok(None) };
-    output::temp_for(v, "vcd")
-        .map(Some)
-        .with_context(|| "--vcd: a VCD is written whole, with its .gtkw beside it")
+    let tmp = output::temp_for(v, "vcd")
+        .with_context(|| "--vcd: a VCD is written whole, with its .gtkw beside it")?;
+    crate::stop::remove_on_stop(&tmp);
+    crate::stop::remove_on_stop(&tmp.with_extension("gtkw"));
+    Ok(Some(tmp))
 }
 
 /// Move a finished trace and its `.gtkw` into place.

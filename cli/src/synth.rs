@@ -105,6 +105,7 @@ impl ForArch for Synth<'_> {
                     .tempdir()
                     .context("creating a temporary directory for yosys")?;
                 let root = t.path().to_path_buf();
+                crate::stop::remove_on_stop(&root);
                 (Some(t), root)
             }
         };

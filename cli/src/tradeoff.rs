@@ -272,8 +272,7 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         bail!("--clock-mhz {f} must lie in [0.1, 10000]");
     }
     let generated = crate::reports::generated_dir();
-    let text = std::fs::read_to_string(&args.scene)
-        .with_context(|| format!("reading {}", args.scene.display()))?;
+    let text = scene::spec::read_text(&args.scene)?;
     let base: Value = serde_json::from_str(&text)
         .with_context(|| format!("{}: not JSON", args.scene.display()))?;
     let dir = args.scene.parent().map(Path::to_path_buf);
@@ -510,6 +509,10 @@ fn applies(f: &Family, scene: &Scene) -> std::result::Result<(), String> {
     let r = match f.arch {
         Arch::QuantizedProjection => Params::of(scene, Method::Projection).map(|_| ()),
         Arch::QuantizedSplat => Params::of(scene, Method::Splat).map(|_| ()),
+        // Cube-3 casts rays from the volume's faces: a perspective eye inside
+        // the volume's slab has none.
+        Arch::Cube3 => golden_model::cube3::plan::Plan::new(scene, &scene.camera()).map(|_| ()),
+        Arch::True3d => reference::true3d::check(scene, &scene.camera()),
         _ => Ok(()),
     };
     r.map_err(|e| e.to_string())

@@ -4,8 +4,52 @@
 
 use std::io::Read;
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::{Child, Command, Output, Stdio};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
+
+/// The tools running now, by process id, so that a stopped run stops them
+/// too ([`stop_running`]).
+static RUNNING: Mutex<Vec<u32>> = Mutex::new(Vec::new());
+
+/// A started tool, listed in [`RUNNING`] until it is dropped.
+struct Running(Child);
+
+impl Running {
+    fn spawn(cmd: &mut Command, what: &str) -> Result<Running, String> {
+        let child = cmd
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| missing(what, e))?;
+        RUNNING
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(child.id());
+        Ok(Running(child))
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        let id = self.0.id();
+        RUNNING
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .retain(|&p| p != id);
+    }
+}
+
+/// Send SIGTERM to every tool this process is running (when the kit itself
+/// is stopped: they would go on writing into work it removes).
+pub fn stop_running() {
+    for &pid in RUNNING.lock().unwrap_or_else(|e| e.into_inner()).iter() {
+        // SAFETY: kill has no memory preconditions; the pid is a child's.
+        unsafe {
+            libc::kill(pid as libc::pid_t, libc::SIGTERM);
+        }
+    }
+}
 
 /// How long an Icarus run may go without a heartbeat before it is taken
 /// for a zero-time loop: the slowest run here writes one every few seconds.
@@ -47,7 +91,16 @@ fn finished(out: Output, what: &str) -> Result<Output, String> {
 
 /// Run `cmd` (the tool `what`) to completion; its output when it succeeds.
 pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
-    let out = cmd.output().map_err(|e| missing(what, e))?;
+    let mut running = Running::spawn(cmd, what)?;
+    let child = &mut running.0;
+    let stdout = drain(child.stdout.take());
+    let stderr = drain(child.stderr.take());
+    let status = child.wait().map_err(|e| format!("{what}: {e}"))?;
+    let out = Output {
+        status,
+        stdout: stdout.join().unwrap_or_default(),
+        stderr: stderr.join().unwrap_or_default(),
+    };
     finished(out, what)
 }
 
@@ -72,11 +125,8 @@ pub fn run_watched(
     heartbeat: &Path,
     stall: Duration,
 ) -> Result<Output, String> {
-    let mut child = cmd
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| missing(what, e))?;
+    let mut running = Running::spawn(cmd, what)?;
+    let child = &mut running.0;
     let stdout = drain(child.stdout.take());
     let stderr = drain(child.stderr.take());
     let beats = || std::fs::metadata(heartbeat).map_or(0, |m| m.len());

@@ -50,6 +50,37 @@ fn plain(name: &str) -> String {
     name.strip_prefix('\\').unwrap_or(name).to_string()
 }
 
+/// Deepest scope nesting read: the parser and the walk below recurse once
+/// a scope, so a hostile header of thousands of nested scopes would
+/// overflow the stack. Designs nest a few tens deep.
+pub const MAX_SCOPE_DEPTH: usize = 256;
+
+/// Check, before parsing, that the header's `$scope`s nest at most `max`
+/// deep (a scan of its words up to `$enddefinitions`).
+fn scope_depth_within(path: &Path, max: usize) -> std::io::Result<()> {
+    use std::io::BufRead;
+    let f = std::io::BufReader::new(std::fs::File::open(path)?);
+    let mut depth = 0usize;
+    for line in f.split(b'\n') {
+        for word in line?.split(|b| b.is_ascii_whitespace()) {
+            match word {
+                b"$scope" => {
+                    depth += 1;
+                    if depth > max {
+                        return Err(std::io::Error::other(format!(
+                            "scopes nest deeper than {max}"
+                        )));
+                    }
+                }
+                b"$upscope" => depth = depth.saturating_sub(1),
+                b"$enddefinitions" => return Ok(()),
+                _ => {}
+            }
+        }
+    }
+    Ok(())
+}
+
 impl Trace {
     /// Load a trace whose cycles are counted on the top's `clock`.
     pub fn load(path: &Path) -> Result<Trace, BadTrace> {
@@ -64,6 +95,7 @@ impl Trace {
         if !std::fs::metadata(path).map_err(|e| bad(&e))?.is_file() {
             return Err(bad(&"not a regular file"));
         }
+        scope_depth_within(path, MAX_SCOPE_DEPTH).map_err(|e| bad(&e))?;
         let f = std::fs::File::open(path).map_err(|e| bad(&e))?;
         let mut parser = vcd::Parser::new(std::io::BufReader::new(f));
         let header = parser.parse_header().map_err(|e| bad(&e))?;

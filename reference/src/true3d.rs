@@ -156,6 +156,12 @@ fn reduce(mut o: f64, max_d: f64) -> f64 {
     o
 }
 
+/// Whether True3D renders this view: the refusal its render would give,
+/// without rendering (its ray planes only).
+pub fn check(scene: &Scene, cam: &Camera) -> Result<()> {
+    plan(scene, cam).map(|_| ())
+}
+
 fn plan(scene: &Scene, cam: &Camera) -> Result<Vec<Plane>> {
     let dims = scene.volume.render_dims();
     let mut planes = Vec::new();

@@ -344,6 +344,87 @@ impl Default for Hardware {
     }
 }
 
+/// Largest scene file read: far beyond any real scene (a transfer function
+/// of thousands of points is a few hundred kB).
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+/// How long a scene read from a FIFO or device waits for data.
+pub const PIPE_WAIT_MS: i32 = 10_000;
+
+/// A scene file's text, read without blocking forever and without
+/// reading more than [`MAX_SCENE_BYTES`]; a byte-order mark is skipped.
+pub fn read_text(path: &Path) -> Result<String> {
+    use std::io::Read;
+    use std::os::unix::fs::OpenOptionsExt;
+    use std::os::unix::io::AsRawFd;
+    let io = |err| CubeError::Io {
+        path: path.display().to_string(),
+        err,
+    };
+    let meta = std::fs::metadata(path).map_err(io)?;
+    if meta.is_dir() {
+        return Err(scene_err(format!("{} is a directory", path.display())));
+    }
+    // Opening a FIFO for reading blocks until a writer comes: not so with
+    // O_NONBLOCK, and poll then waits a bounded time for data.
+    let f = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)
+        .map_err(io)?;
+    if !meta.is_file() {
+        let mut pfd = libc::pollfd {
+            fd: f.as_raw_fd(),
+            events: libc::POLLIN,
+            revents: 0,
+        };
+        // SAFETY: one pollfd this function owns.
+        let ready = unsafe { libc::poll(&mut pfd, 1, PIPE_WAIT_MS) };
+        if ready <= 0 {
+            return Err(scene_err(format!(
+                "{}: nothing to read after {} s (a FIFO with no writer?)",
+                path.display(),
+                PIPE_WAIT_MS / 1000
+            )));
+        }
+        // SAFETY: fcntl on a descriptor this function owns.
+        unsafe {
+            let flags = libc::fcntl(f.as_raw_fd(), libc::F_GETFL);
+            libc::fcntl(f.as_raw_fd(), libc::F_SETFL, flags & !libc::O_NONBLOCK);
+        }
+    }
+    let mut bytes = Vec::new();
+    f.take(MAX_SCENE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(scene_err(format!(
+            "{}: larger than {} MiB, not a scene",
+            path.display(),
+            MAX_SCENE_BYTES >> 20
+        )));
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|e| scene_err(format!("{}: not UTF-8 text ({e})", path.display())))?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_string(),
+        None => text,
+    })
+}
+
+/// Longest message echoed from the parser: a value the user gave is
+/// quoted in it, and may be megabytes long.
+const MAX_MESSAGE: usize = 200;
+
+/// `msg`, cut to [`MAX_MESSAGE`] characters with the length left out named.
+fn truncated(msg: String) -> String {
+    let n = msg.chars().count();
+    if n <= MAX_MESSAGE {
+        return msg;
+    }
+    let head: String = msg.chars().take(MAX_MESSAGE).collect();
+    format!("{head}… ({} more characters)", n - MAX_MESSAGE)
+}
+
 fn scene_err(msg: impl Into<String>) -> CubeError {
     CubeError::Scene(msg.into())
 }
@@ -372,6 +453,7 @@ fn parse(text: &str) -> Result<SceneSpec> {
                 _ => {}
             }
         }
+        let msg = truncated(msg);
         if path == "." {
             scene_err(format!("{msg} ({at})"))
         } else {
@@ -403,6 +485,8 @@ impl Scene {
     /// Parse and validate a scene. Relative raw paths are resolved against
     /// `base` (the scene file's folder).
     pub fn from_json(text: &str, base: Option<&Path>) -> Result<Scene> {
+        // A byte-order mark, as some editors write, is not JSON: skip it.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut s = parse(text)?;
         if let (Some(raw), Some(base)) = (&s.volume.raw, base) {
             if raw.is_relative() {
@@ -429,12 +513,11 @@ impl Scene {
         self.camera.clone()
     }
 
+    /// Read and validate a scene file: at most [`MAX_SCENE_BYTES`]; a FIFO
+    /// or device is waited on for [`PIPE_WAIT_MS`] at most, so one with no
+    /// writer is an error, not a hang.
     pub fn load(path: &Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).map_err(|err| CubeError::Io {
-            path: path.display().to_string(),
-            err,
-        })?;
-        Scene::from_json(&text, path.parent())
+        Scene::from_json(&read_text(path)?, path.parent())
     }
 }
 
