@@ -201,6 +201,7 @@ pub fn render_arch(
     ref_step: f64,
     gradient: Option<u32>,
 ) -> Result<Rendered> {
+    crate::budget::check(scene, arch, ref_step)?;
     let t = Instant::now();
     match arch {
         Arch::Cube4l => {
@@ -351,17 +352,23 @@ pub fn render_repeat(
     gradient: Option<u32>,
     repeat: usize,
 ) -> Result<Rendered> {
-    let mut runs = Vec::with_capacity(repeat);
+    // Every run's times, and the last run's image only: memory does not
+    // grow with the repeats.
+    let mut times: Vec<(f64, Value)> = Vec::with_capacity(repeat);
+    let mut last = None;
     for _ in 0..repeat.max(1) {
-        runs.push(render_arch(scene, vol, arch, ref_step, gradient)?);
+        let r = render_arch(scene, vol, arch, ref_step, gradient)?;
+        times.push((r.seconds, r.extra.clone()));
+        last = Some(r);
     }
-    let median = |f: &dyn Fn(&Rendered) -> f64| {
-        let mut v: Vec<f64> = runs.iter().map(f).collect();
+    let Rendered { image, extra, .. } = last.expect("at least one run");
+    let median = |f: &dyn Fn(&(f64, Value)) -> f64| {
+        let mut v: Vec<f64> = times.iter().map(f).collect();
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     };
-    let seconds = median(&|r| r.seconds);
-    let mut extra = runs.last().unwrap().extra.clone();
+    let seconds = median(&|r| r.0);
+    let mut extra = extra;
     if let Value::Object(map) = &mut extra {
         let keys: Vec<String> = map
             .keys()
@@ -369,13 +376,12 @@ pub fn render_repeat(
             .cloned()
             .collect();
         for k in keys {
-            map[&k] = json!(median(&|r| r.extra[&k].as_f64().unwrap_or(f64::NAN)));
+            map[&k] = json!(median(&|r| r.1[&k].as_f64().unwrap_or(f64::NAN)));
         }
         if repeat > 1 {
             map.insert("repeat".into(), json!(repeat));
         }
     }
-    let image = runs.pop().unwrap().image;
     Ok(Rendered {
         image,
         seconds,

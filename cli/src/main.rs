@@ -5,6 +5,7 @@
 //! in its own module, with the helpers they share in `common`.
 
 mod angles;
+mod budget;
 mod common;
 mod compare;
 mod default_run;

@@ -1,0 +1,111 @@
+//! Memory bounded before it is spent: a render that would exceed the memory
+//! budget (half the machine, or 80 % of `ulimit -v`) is refused in one line
+//! with its estimate, before anything is allocated, and `tradeoff` leaves
+//! such points out and names them. Each run here has a 1.5 or 4 GB address
+//! limit, under which these scenes once ended in an allocation abort.
+
+use std::os::unix::process::CommandExt;
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+
+fn cube_limited(args: &[&str], dir: &Path, bytes: u64) -> Output {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_cube"));
+    cmd.args(args).current_dir(dir).stdin(Stdio::null());
+    // SAFETY: setrlimit is async-signal-safe, as pre_exec requires.
+    unsafe {
+        cmd.pre_exec(move || {
+            let r = libc::rlimit {
+                rlim_cur: bytes,
+                rlim_max: bytes,
+            };
+            if libc::setrlimit(libc::RLIMIT_AS, &r) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    cmd.output().expect("run cube")
+}
+
+fn scene(dir: &Path, name: &str, dims: usize, zoom: f64, image: u32) {
+    std::fs::write(
+        dir.join(name),
+        format!(
+            r#"{{"volume": {{"builtin": "sphere", "dims": [{dims},{dims},{dims}]}}, "view": {{"projection": "parallel", "zoom": {zoom}}}, "image": [{image},{image}]}}"#
+        ),
+    )
+    .unwrap();
+}
+
+#[test]
+fn a_render_past_the_memory_budget_is_refused_with_its_estimate() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    scene(p, "z1000.json", 32, 1000.0, 256);
+    scene(p, "z100.json", 32, 100.0, 256);
+    scene(p, "big.json", 32, 1.0, 8192);
+    for (s, arch) in [
+        ("z1000.json", "quantized-projection"),
+        ("z1000.json", "quantized-splat"),
+        ("z100.json", "quantized-splat"),
+        ("big.json", "quantized-projection"),
+    ] {
+        let o = cube_limited(&["render", "--scene", s, "--arch", arch], p, 4 << 30);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{s} {arch}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("GiB, over the memory budget"),
+            "{s} {arch}: {err}"
+        );
+    }
+    // What fits is rendered.
+    let o = cube_limited(
+        &[
+            "render",
+            "--scene",
+            "z100.json",
+            "--arch",
+            "quantized-projection",
+        ],
+        p,
+        4 << 30,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn tradeoff_leaves_out_the_points_past_the_budget() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    scene(p, "s.json", 12, 16.0, 64);
+    let o = cube_limited(
+        &[
+            "tradeoff",
+            "--scene",
+            "s.json",
+            "--out",
+            "t",
+            "--methods",
+            "quantized-splat",
+            "--repeat",
+            "1",
+        ],
+        p,
+        1536 << 20,
+    );
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        out.contains("skipped quantized-splat subdivisions 64")
+            && out.contains("over the memory budget"),
+        "{out}"
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p.join("t/tradeoff.json")).unwrap()).unwrap();
+    assert!(report["skipped"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|s| s["reason"].as_str().unwrap().contains("memory budget")));
+}
