@@ -200,20 +200,37 @@ mod tests {
         let sphere = r#"{"builtin": "sphere", "dims": [32, 32, 32]}"#;
         let slab = r#"{"builtin": "sphere", "dims": [2048, 2048, 16]}"#;
         for (s, arch, measured_mb) in [
-            (scene(sphere, r#""zoom": 300"#, 256, ""), Arch::QuantizedProjection, 890.0),
+            (
+                scene(sphere, r#""zoom": 300"#, 256, ""),
+                Arch::QuantizedProjection,
+                890.0,
+            ),
             (
                 scene(sphere, r#""zoom": 10, "rotate_deg": [30, 40, 0]"#, 256, ""),
                 Arch::QuantizedProjection,
                 242.0,
             ),
-            (scene(sphere, r#""zoom": 10"#, 256, ""), Arch::QuantizedSplat, 542.0),
             (
-                scene(sphere, r#""zoom": 3"#, 256, r#", "quantized": {"subdivisions": 128}"#),
+                scene(sphere, r#""zoom": 10"#, 256, ""),
+                Arch::QuantizedSplat,
+                542.0,
+            ),
+            (
+                scene(
+                    sphere,
+                    r#""zoom": 3"#,
+                    256,
+                    r#", "quantized": {"subdivisions": 128}"#,
+                ),
                 Arch::QuantizedSplat,
                 767.0,
             ),
             (scene(sphere, r#""zoom": 1"#, 8192, ""), Arch::Cube4l, 508.0),
-            (scene(slab, r#""rotate_deg": [0, 90, 0]"#, 256, ""), Arch::Cube4l, 404.0),
+            (
+                scene(slab, r#""rotate_deg": [0, 90, 0]"#, 256, ""),
+                Arch::Cube4l,
+                404.0,
+            ),
         ] {
             let e = estimate(&s, arch, 0.5).bytes / 1e6;
             assert!(

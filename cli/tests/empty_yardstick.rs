@@ -3,29 +3,9 @@
 //! the volume), every subcommand that reports an error says `n/a`, and
 //! those that exist only for that figure refuse in one line.
 
+mod common;
+use common::{cube, ok, refused};
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
-
-fn cube(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cube"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("run cube")
-}
-
-fn ok(o: &Output) -> String {
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8_lossy(&o.stdout).into()
-}
-
-fn refused(o: &Output, needle: &str) {
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(1), "{err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
-}
 
 /// Every voxel transparent.
 const CLEAR: &str = r#"{"volume": {"builtin": "sphere", "dims": [12,12,10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [24, 24], "hardware": {"pipelines": 2}, "transfer": {"opacity": [[0, 0], [255, 0]], "color": [[0, 1, 1, 1], [255, 1, 1, 1]]}}"#;

@@ -4,30 +4,10 @@
 //! scopes and usage exit code, tradeoff with the eye inside the volume, and
 //! a synthesis stopped by SIGTERM.
 
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
+mod common;
+use common::{cube, ok, refused_with as refused};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
-
-fn cube(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cube"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("run cube")
-}
-
-fn ok(o: &Output) -> String {
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8_lossy(&o.stdout).into()
-}
-
-fn refused(o: &Output, code: i32, needle: &str) {
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(code), "{err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
-}
 
 const SCENE: &str = r#"{"volume": {"builtin": "sphere", "dims": [12,12,10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [24, 24], "hardware": {"pipelines": 2}}"#;
 

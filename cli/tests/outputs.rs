@@ -5,29 +5,10 @@
 //! is kept, and one the user may not write is refused; a `.gtkw` the kit did
 //! not write is never replaced.
 
+mod common;
+use common::{cube, ok, refused};
 use std::os::unix::fs::PermissionsExt;
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
-
-fn cube(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cube"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("run cube")
-}
-
-fn ok(o: &Output) {
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-}
-
-fn refused(o: &Output, needle: &str) {
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(1), "{err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
-}
+use std::process::Command;
 
 const SCENE: &str = r#"{"volume": {"builtin": "sphere", "dims": [12,12,10]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [24, 24], "hardware": {"pipelines": 2}}"#;
 
