@@ -31,13 +31,13 @@ fn engine_composite_and_mip() {
         let c = compare_with_reference(&s, &vol);
         assert_eq!(c.stats.saturations, 0);
         assert!(
-            c.error.foreground_pixels > 192 * 192 / 10,
+            c.err().foreground_pixels > 192 * 192 / 10,
             "{file}: too little of the engine visible"
         );
         assert!(
-            c.error.rel_euclid_pct < bound,
+            c.err().rel_euclid_pct < bound,
             "{file}: {} %",
-            c.error.rel_euclid_pct
+            c.err().rel_euclid_pct
         );
     }
 }
