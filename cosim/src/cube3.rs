@@ -214,17 +214,7 @@ fn stage_file(name: &str) -> &'static str {
 
 /// The lint waivers every emitted Cube-3 system needs beyond those of
 /// every design (`verilog::lint_waivers`).
-pub const LINT_WAIVERS: &str = r#"// The lighting registers the light's and half vector's magnitudes and the
-// normal's (`m_l`, `m_h`, `qm`, each a function of registers only), and
-// its always block reads them before it assigns them: the same logic as
-// the other order, which the linter cannot order statically; it costs
-// simulation speed only. Putting the reads after the assignments changes
-// the emitted text, and waits for the next run of the committed synthesis
-// reports.
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.m_l$*"
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.m_h$*"
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.qm$*"
-// The beam fetch's write addresses and load address are as wide as its
+pub const LINT_WAIVERS: &str = r#"// The beam fetch's write addresses and load address are as wide as its
 // largest memory: each module and buffer uses the low bits.
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_address$*"
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'load_address'*"

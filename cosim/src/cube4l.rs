@@ -69,17 +69,7 @@ fn stage_file(name: &str) -> &'static str {
 
 /// The lint waivers every emitted Cube-4L design needs beyond those of
 /// every design (`verilog::lint_waivers`).
-pub const LINT_WAIVERS: &str = r#"// The lighting registers the light's and half vector's magnitudes and the
-// normal's (`m_l`, `m_h`, `qm`, each a function of registers only), and
-// its always block reads them before it assigns them: the same logic as
-// the other order, which the linter cannot order statically; it costs
-// simulation speed only. Putting the reads after the assignments changes
-// the emitted text, and waits for the next run of the committed synthesis
-// reports.
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.m_l$*"
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.m_h$*"
-lint_off -rule UNOPTFLAT -file "*shader.v" -match "*lighting.qm$*"
-// The view registers are 64-bit words of 16-bit, or for the axes 2-bit,
+pub const LINT_WAIVERS: &str = r#"// The view registers are 64-bit words of 16-bit, or for the axes 2-bit,
 // fields that the host writes; each stage reads the fields it needs, see
 // docs/registers.md.
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dims'*"

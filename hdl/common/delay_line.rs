@@ -8,6 +8,10 @@
 //! A pointer counts 0..L-1 and wraps (and never passes the built length,
 //! whatever `last` says); each clock the word at the pointer is
 //! written and the word after it, the oldest, is read (a registered read).
+//! The read pointer is a register of its own, one step ahead, and the write
+//! pointer takes its value a clock later: the memory's read address comes
+//! straight from a flip-flop, with no increment or wrap compare before the
+//! memory (the shaded 256³ build's critical path ran through them).
 //! A length of 1 is the register `one` beside the RAM (where the two
 //! addresses would meet and the read would take the old word); a line
 //! built for a length of 1 is that register alone. Without `write_enable` the slot
@@ -27,8 +31,14 @@ pub struct DelayLine<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
     /// The delay less one, at most the longest less one.
     pub last: Signal<In, Bits<N>>,
     ram: DepthRam<D, N>,
+    /// The write pointer, and the read pointer (one step ahead) held as
+    /// `rd ^ 1`, so that from the all-zero start it reads slot 1 while
+    /// slot 0 is written.
     ptr: DFF<Bits<N>>,
+    rd_flipped: DFF<Bits<N>>,
+    rd: Signal<Local, Bits<N>>,
     next: Signal<Local, Bits<N>>,
+    flip: Constant<Bits<N>>,
     /// The built length less one: the pointer's bound.
     longest_last: Constant<Bits<N>>,
     /// Built for a length of 1: the register `one` instead of the RAM (a
@@ -56,7 +66,10 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DelayLine<D, N> {
             last: Default::default(),
             ram: DepthRam::with_words(words).fields(fields, mask),
             ptr: Default::default(),
+            rd_flipped: Default::default(),
+            rd: Default::default(),
             next: Default::default(),
+            flip: Constant::new(1u64.to_bits()),
             longest_last: Constant::new(((words - 1) as u64).to_bits()),
             single: Constant::new(longest == 1),
             one: Default::default(),
@@ -77,18 +90,20 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DelayLine<D, N> {
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DelayLine<D, N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ptr, one);
+        dff_setup!(self, clock, ptr, rd_flipped, one);
         self.ram.read_clock.next = self.clock.val();
         self.ram.write_clock.next = self.clock.val();
-        self.next.next = self.ptr.q.val() + 1;
-        if (self.ptr.q.val() >= self.last.val()) | (self.ptr.q.val() >= self.longest_last.val()) {
+        self.rd.next = self.rd_flipped.q.val() ^ self.flip.val();
+        self.next.next = self.rd.val() + 1;
+        if (self.rd.val() >= self.last.val()) | (self.rd.val() >= self.longest_last.val()) {
             self.next.next = 0.into();
         }
-        self.ptr.d.next = self.next.val();
+        self.rd_flipped.d.next = self.next.val() ^ self.flip.val();
+        self.ptr.d.next = self.rd.val();
         self.ram.write_address.next = self.ptr.q.val();
         self.ram.write_data.next = self.data_in.val();
         self.ram.write_enable.next = self.write_enable.val() & !self.single.val();
-        self.ram.read_address.next = self.next.val();
+        self.ram.read_address.next = self.rd.val();
         self.one.d.next = self.one.q.val();
         if self.write_enable.val() {
             self.one.d.next = self.data_in.val() & self.mask.val();

@@ -7,7 +7,8 @@
 //!
 //! 1. the products of `q`'s 4-bit magnitudes and the registers' (held in
 //!    registers of their own: they change only with a host write), their
-//!    signs, and `|q|²`;
+//!    signs, and `|q|²` from three 16-word square tables (LUT logic, no
+//!    multiplier);
 //! 2. the dot products `q · light`, `q · half` in two's complement, and
 //!    `rnorm(|q|²)` from a constant ROM;
 //! 3. each dot product made positive and saturated to 16 bits;
@@ -45,6 +46,8 @@ pub struct Lighting {
     /// The light (`q[0]`) and half (`q[1]`) vectors.
     regs: Regs<2>,
     rnorm: ROM<Bits<16>, 10>,
+    /// `m²` of each 4-bit magnitude.
+    square: [ROM<Bits<8>, 4>; 3],
     diffuse_table: Table<16, COS_BITS_U>,
     specular_table: Table<16, COS_BITS_U>,
     /// The light's and half vector's magnitudes, registered.
@@ -108,6 +111,7 @@ impl Lighting {
             specular: Default::default(),
             regs: Regs::new([Reg::Light.address(), Reg::Half.address()]),
             rnorm: (0..1024u32).map(|n2| (rnorm(n2) as u64).to_bits()).into(),
+            square: std::array::from_fn(|_| (0..16u64).map(|m| (m * m).to_bits()).into()),
             diffuse_table: Table::new(HostTable::Diffuse.base(), words, &word),
             specular_table: Table::new(HostTable::Specular.base(), words, &word),
             m_l: Default::default(),
@@ -180,22 +184,8 @@ impl Logic for Lighting {
         self.specular_table.host_write.next = self.host_write.val();
         self.specular_table.host_address.next = self.host_address.val();
         self.specular_table.host_data.next = self.host_data.val();
-        // The light's and half vector's magnitudes, registered: they change
-        // only with a host write, and the multipliers then take them from a
-        // register rather than through the negation.
-        for i in 0..3 {
-            self.ml_q[i].clock.next = self.clock.val();
-            self.mh_q[i].clock.next = self.clock.val();
-            self.sl_q[i].clock.next = self.clock.val();
-            self.sh_q[i].clock.next = self.clock.val();
-            self.p_l[i].clock.next = self.clock.val();
-            self.p_h[i].clock.next = self.clock.val();
-            self.ml_q[i].d.next = self.m_l[i].val();
-            self.mh_q[i].d.next = self.m_h[i].val();
-            self.p_l[i].d.next = self.qm[i].val() * self.ml_q[i].q.val();
-            self.p_h[i].d.next = self.qm[i].val() * self.mh_q[i].q.val();
-        }
-        // Unrolled: hdl_gen takes no loop index inside a cast.
+        // Unrolled: hdl_gen takes no loop index inside a cast. Assigned
+        // before they are read, so the block has no combinational loop.
         self.qm[0].next = bit_cast::<16, 4>(self.q_mag[0].val());
         self.qm[1].next = bit_cast::<16, 4>(self.q_mag[1].val());
         self.qm[2].next = bit_cast::<16, 4>(self.q_mag[2].val());
@@ -223,6 +213,22 @@ impl Logic for Lighting {
         if self.regs.q[1].val().get_bit(47) {
             self.m_h[2].next = 0 - self.regs.q[1].val().get_bits::<16>(32);
         }
+        // The light's and half vector's magnitudes, registered: they change
+        // only with a host write, and the multipliers then take them from a
+        // register rather than through the negation.
+        for i in 0..3 {
+            self.ml_q[i].clock.next = self.clock.val();
+            self.mh_q[i].clock.next = self.clock.val();
+            self.sl_q[i].clock.next = self.clock.val();
+            self.sh_q[i].clock.next = self.clock.val();
+            self.p_l[i].clock.next = self.clock.val();
+            self.p_h[i].clock.next = self.clock.val();
+            self.square[i].address.next = self.q_mag[i].val();
+            self.ml_q[i].d.next = self.m_l[i].val();
+            self.mh_q[i].d.next = self.m_h[i].val();
+            self.p_l[i].d.next = self.qm[i].val() * self.ml_q[i].q.val();
+            self.p_h[i].d.next = self.qm[i].val() * self.mh_q[i].q.val();
+        }
         // Stage 1: the products' magnitudes and signs, and |q|².
         self.sl_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[0].val().get_bit(15);
         self.sl_q[1].d.next = self.q_neg[1].val() ^ self.regs.q[0].val().get_bit(31);
@@ -230,9 +236,9 @@ impl Logic for Lighting {
         self.sh_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[1].val().get_bit(15);
         self.sh_q[1].d.next = self.q_neg[1].val() ^ self.regs.q[1].val().get_bit(31);
         self.sh_q[2].d.next = self.q_neg[2].val() ^ self.regs.q[1].val().get_bit(47);
-        self.n2.next = bit_cast::<16, 32>(self.qm[0].val() * self.qm[0].val())
-            + bit_cast::<16, 32>(self.qm[1].val() * self.qm[1].val())
-            + bit_cast::<16, 32>(self.qm[2].val() * self.qm[2].val());
+        self.n2.next = bit_cast::<16, 8>(self.square[0].data.val())
+            + bit_cast::<16, 8>(self.square[1].data.val())
+            + bit_cast::<16, 8>(self.square[2].data.val());
         self.n2_q.d.next = self.n2.val();
         // Stage 2: the dot products in two's complement, and 1 / |q|.
         for i in 0..3 {

@@ -13516,6 +13516,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -13531,11 +13532,15 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -13553,6 +13558,11 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -13563,20 +13573,24 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -13650,6 +13664,23 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$0$ram
+module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$rd_flipped
 module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -13660,6 +13691,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -13675,11 +13707,15 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -13697,6 +13733,11 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -13707,20 +13748,24 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -13794,6 +13839,23 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$1$ram
+module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$rd_flipped
 module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -13804,6 +13866,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -13819,11 +13882,15 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -13841,6 +13908,11 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -13851,20 +13923,24 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -13937,6 +14013,23 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$2$ram
+module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$rd_flipped
 module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -13947,6 +14040,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -13962,11 +14056,15 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -13984,6 +14082,11 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -13994,20 +14097,24 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -14081,6 +14188,23 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$3$ram
+module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$rd_flipped
 module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14091,6 +14215,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -14106,11 +14231,15 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -14128,6 +14257,11 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -14138,20 +14272,24 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -14225,6 +14363,23 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$4$ram
+module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$rd_flipped
 module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14235,6 +14390,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -14250,11 +14406,15 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -14272,6 +14432,11 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -14282,20 +14447,24 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -14368,6 +14537,23 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$5$ram
+module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$rd_flipped
 module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14378,6 +14564,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -14393,11 +14580,15 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -14415,6 +14606,11 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -14425,20 +14621,24 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -14512,6 +14712,23 @@ module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$6$ram
+module top$pipeline$abc$lanes$0$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$rd_flipped
 module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14522,6 +14739,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -14537,11 +14755,15 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -14559,6 +14781,11 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -14569,20 +14796,24 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -14656,6 +14887,23 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$7$ram
+module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$rd_flipped
 module top$pipeline$abc$lanes$0$one$0(d,q,clock);
     
     // Module arguments
@@ -15405,6 +15653,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -15420,11 +15669,15 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -15442,6 +15695,11 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -15452,20 +15710,24 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -15539,6 +15801,23 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$0$ram
+module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$rd_flipped
 module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15549,6 +15828,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -15564,11 +15844,15 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -15586,6 +15870,11 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -15596,20 +15885,24 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -15683,6 +15976,23 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$1$ram
+module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$rd_flipped
 module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15693,6 +16003,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -15708,11 +16019,15 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -15730,6 +16045,11 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -15740,20 +16060,24 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -15826,6 +16150,23 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$2$ram
+module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$rd_flipped
 module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15836,6 +16177,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -15851,11 +16193,15 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -15873,6 +16219,11 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -15883,20 +16234,24 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -15970,6 +16325,23 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$3$ram
+module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$rd_flipped
 module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15980,6 +16352,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -15995,11 +16368,15 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -16017,6 +16394,11 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -16027,20 +16409,24 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -16114,6 +16500,23 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$4$ram
+module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$rd_flipped
 module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16124,6 +16527,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -16139,11 +16543,15 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -16161,6 +16569,11 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -16171,20 +16584,24 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -16257,6 +16674,23 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$5$ram
+module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$rd_flipped
 module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16267,6 +16701,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -16282,11 +16717,15 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -16304,6 +16743,11 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -16314,20 +16758,24 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -16401,6 +16849,23 @@ module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$6$ram
+module top$pipeline$abc$lanes$1$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$rd_flipped
 module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16411,6 +16876,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -16426,11 +16892,15 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -16448,6 +16918,11 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -16458,20 +16933,24 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -16545,6 +17024,23 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$7$ram
+module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$rd_flipped
 module top$pipeline$abc$lanes$1$one$0(d,q,clock);
     
     // Module arguments
@@ -17294,6 +17790,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -17309,11 +17806,15 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -17331,6 +17832,11 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -17341,20 +17847,24 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -17428,6 +17938,23 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$0$ram
+module top$pipeline$abc$lanes$2$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$0$rd_flipped
 module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17438,6 +17965,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -17453,11 +17981,15 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -17475,6 +18007,11 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -17485,20 +18022,24 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -17572,6 +18113,23 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$1$ram
+module top$pipeline$abc$lanes$2$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$1$rd_flipped
 module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17582,6 +18140,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -17597,11 +18156,15 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -17619,6 +18182,11 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -17629,20 +18197,24 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -17715,6 +18287,23 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$2$ram
+module top$pipeline$abc$lanes$2$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$2$rd_flipped
 module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17725,6 +18314,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -17740,11 +18330,15 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -17762,6 +18356,11 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -17772,20 +18371,24 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -17859,6 +18462,23 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$3$ram
+module top$pipeline$abc$lanes$2$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$3$rd_flipped
 module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17869,6 +18489,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -17884,11 +18505,15 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -17906,6 +18531,11 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -17916,20 +18546,24 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -18003,6 +18637,23 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$4$ram
+module top$pipeline$abc$lanes$2$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$4$rd_flipped
 module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18013,6 +18664,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -18028,11 +18680,15 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -18050,6 +18706,11 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -18060,20 +18721,24 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -18146,6 +18811,23 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$5$ram
+module top$pipeline$abc$lanes$2$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$5$rd_flipped
 module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18156,6 +18838,7 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -18171,11 +18854,15 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -18193,6 +18880,11 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -18203,20 +18895,24 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -18290,6 +18986,23 @@ module top$pipeline$abc$lanes$2$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$6$ram
+module top$pipeline$abc$lanes$2$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$6$rd_flipped
 module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18300,6 +19013,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -18315,11 +19029,15 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -18337,6 +19055,11 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$2$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$2$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -18347,20 +19070,24 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -18434,6 +19161,23 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$2$lines$7$ram
+module top$pipeline$abc$lanes$2$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$rd_flipped
 module top$pipeline$abc$lanes$2$one$0(d,q,clock);
     
     // Module arguments
@@ -19183,6 +19927,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19198,11 +19943,15 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19220,6 +19969,11 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -19230,20 +19984,24 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -19317,6 +20075,23 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$0$ram
+module top$pipeline$abc$lanes$3$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$0$rd_flipped
 module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19327,6 +20102,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19342,11 +20118,15 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19364,6 +20144,11 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -19374,20 +20159,24 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -19461,6 +20250,23 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$1$ram
+module top$pipeline$abc$lanes$3$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$1$rd_flipped
 module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19471,6 +20277,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19486,11 +20293,15 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19508,6 +20319,11 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -19518,20 +20334,24 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -19604,6 +20424,23 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$2$ram
+module top$pipeline$abc$lanes$3$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$2$rd_flipped
 module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19614,6 +20451,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19629,11 +20467,15 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19651,6 +20493,11 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -19661,20 +20508,24 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -19748,6 +20599,23 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$3$ram
+module top$pipeline$abc$lanes$3$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$3$rd_flipped
 module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19758,6 +20626,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19773,11 +20642,15 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19795,6 +20668,11 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -19805,20 +20683,24 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -19892,6 +20774,23 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$4$ram
+module top$pipeline$abc$lanes$3$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$4$rd_flipped
 module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19902,6 +20801,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h229;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -19917,11 +20817,15 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -19939,6 +20843,11 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -19949,20 +20858,24 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -20035,6 +20948,23 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$5$ram
+module top$pipeline$abc$lanes$3$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$5$rd_flipped
 module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20045,6 +20975,7 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -20060,11 +20991,15 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -20082,6 +21017,11 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -20092,20 +21032,24 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -20179,6 +21123,23 @@ module top$pipeline$abc$lanes$3$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$6$ram
+module top$pipeline$abc$lanes$3$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$6$rd_flipped
 module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20189,6 +21150,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h5;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -20204,11 +21166,15 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -20226,6 +21192,11 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$3$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$3$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -20236,20 +21207,24 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -20323,6 +21298,23 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$3$lines$7$ram
+module top$pipeline$abc$lanes$3$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$rd_flipped
 module top$pipeline$abc$lanes$3$one$0(d,q,clock);
     
     // Module arguments

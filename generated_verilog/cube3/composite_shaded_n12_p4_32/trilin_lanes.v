@@ -649,6 +649,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -664,11 +665,15 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -686,6 +691,11 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -696,20 +706,24 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -783,6 +797,23 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$0$ram
+module top$pipeline$lanes$cur_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$0$rd_flipped
 module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -793,6 +824,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -808,11 +840,15 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -830,6 +866,11 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -840,20 +881,24 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -927,6 +972,23 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$1$ram
+module top$pipeline$lanes$cur_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$1$rd_flipped
 module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -937,6 +999,7 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -952,11 +1015,15 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -974,6 +1041,11 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$2$one one(
         .d(one$d),
         .q(one$q),
@@ -984,20 +1056,24 @@ module top$pipeline$lanes$cur_line$2(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1071,6 +1147,23 @@ module top$pipeline$lanes$cur_line$2$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$2$ram
+module top$pipeline$lanes$cur_line$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$2$rd_flipped
 module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1081,6 +1174,7 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -1096,11 +1190,15 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1118,6 +1216,11 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$3$one one(
         .d(one$d),
         .q(one$q),
@@ -1128,20 +1231,24 @@ module top$pipeline$lanes$cur_line$3(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1215,6 +1322,23 @@ module top$pipeline$lanes$cur_line$3$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$3$ram
+module top$pipeline$lanes$cur_line$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$3$rd_flipped
 module top$pipeline$lanes$next_a$0(d,q,clock);
     
     // Module arguments
@@ -1361,6 +1485,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -1376,11 +1501,15 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1398,6 +1527,11 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -1408,20 +1542,24 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1495,6 +1633,23 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$0$ram
+module top$pipeline$lanes$next_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$0$rd_flipped
 module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1505,6 +1660,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -1520,11 +1676,15 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1542,6 +1702,11 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -1552,20 +1717,24 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1639,6 +1808,23 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$1$ram
+module top$pipeline$lanes$next_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$1$rd_flipped
 module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1649,6 +1835,7 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -1664,11 +1851,15 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1686,6 +1877,11 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$2$one one(
         .d(one$d),
         .q(one$q),
@@ -1696,20 +1892,24 @@ module top$pipeline$lanes$next_line$2(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1783,6 +1983,23 @@ module top$pipeline$lanes$next_line$2$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$2$ram
+module top$pipeline$lanes$next_line$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$2$rd_flipped
 module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1793,6 +2010,7 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h6;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -1808,11 +2026,15 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1830,6 +2052,11 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$3$one one(
         .d(one$d),
         .q(one$q),
@@ -1840,20 +2067,24 @@ module top$pipeline$lanes$next_line$3(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1927,3 +2158,20 @@ module top$pipeline$lanes$next_line$3$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$3$ram
+module top$pipeline$lanes$next_line$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$3$rd_flipped

@@ -6990,6 +6990,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7005,11 +7006,15 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7027,6 +7032,11 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -7037,20 +7047,24 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7124,6 +7138,23 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$0$ram
+module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$rd_flipped
 module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7134,6 +7165,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7149,11 +7181,15 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7171,6 +7207,11 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -7181,20 +7222,24 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7268,6 +7313,23 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$1$ram
+module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$rd_flipped
 module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7278,6 +7340,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8bc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7293,11 +7356,15 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7315,6 +7382,11 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -7325,20 +7397,24 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7411,6 +7487,23 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$2$ram
+module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$rd_flipped
 module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7421,6 +7514,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7436,11 +7530,15 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7458,6 +7556,11 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -7468,20 +7571,24 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7555,6 +7662,23 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$3$ram
+module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$rd_flipped
 module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7565,6 +7689,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7580,11 +7705,15 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7602,6 +7731,11 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -7612,20 +7746,24 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7699,6 +7837,23 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$4$ram
+module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$rd_flipped
 module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7709,6 +7864,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8bc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7724,11 +7880,15 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7746,6 +7906,11 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -7756,20 +7921,24 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7842,6 +8011,23 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$5$ram
+module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$rd_flipped
 module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7852,6 +8038,7 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -7867,11 +8054,15 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7889,6 +8080,11 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -7899,20 +8095,24 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7986,6 +8186,23 @@ module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$6$ram
+module top$pipeline$abc$lanes$0$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$rd_flipped
 module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7996,6 +8213,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -8011,11 +8229,15 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -8033,6 +8255,11 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$0$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$0$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -8043,20 +8270,24 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -8130,6 +8361,23 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$0$lines$7$ram
+module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$rd_flipped
 module top$pipeline$abc$lanes$0$one$0(d,q,clock);
     
     // Module arguments
@@ -8879,6 +9127,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -8894,11 +9143,15 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -8916,6 +9169,11 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$0$one one(
         .d(one$d),
         .q(one$q),
@@ -8926,20 +9184,24 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9013,6 +9275,23 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$0$ram
+module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$rd_flipped
 module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9023,6 +9302,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9038,11 +9318,15 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9060,6 +9344,11 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$1$one one(
         .d(one$d),
         .q(one$q),
@@ -9070,20 +9359,24 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9157,6 +9450,23 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$1$ram
+module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$rd_flipped
 module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9167,6 +9477,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8bc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9182,11 +9493,15 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9204,6 +9519,11 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$2$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$2$one one(
         .d(one$d),
         .q(one$q),
@@ -9214,20 +9534,24 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9300,6 +9624,23 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$2$ram
+module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$rd_flipped
 module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9310,6 +9651,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9325,11 +9667,15 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9347,6 +9693,11 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$3$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$3$one one(
         .d(one$d),
         .q(one$q),
@@ -9357,20 +9708,24 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9444,6 +9799,23 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$3$ram
+module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$rd_flipped
 module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9454,6 +9826,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9469,11 +9842,15 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9491,6 +9868,11 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$4$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$4$one one(
         .d(one$d),
         .q(one$q),
@@ -9501,20 +9883,24 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9588,6 +9974,23 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$4$ram
+module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$rd_flipped
 module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9598,6 +10001,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8bc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9613,11 +10017,15 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9635,6 +10043,11 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$5$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$5$one one(
         .d(one$d),
         .q(one$q),
@@ -9645,20 +10058,24 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9731,6 +10148,23 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$5$ram
+module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$rd_flipped
 module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9741,6 +10175,7 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9756,11 +10191,15 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9778,6 +10217,11 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$6$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$6$one one(
         .d(one$d),
         .q(one$q),
@@ -9788,20 +10232,24 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -9875,6 +10323,23 @@ module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$6$ram
+module top$pipeline$abc$lanes$1$lines$6$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$rd_flipped
 module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9885,6 +10350,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'hd;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
@@ -9900,11 +10366,15 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -9922,6 +10392,11 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$abc$lanes$1$lines$7$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$abc$lanes$1$lines$7$one one(
         .d(one$d),
         .q(one$q),
@@ -9932,20 +10407,24 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -10019,6 +10498,23 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
        end
     end
 endmodule // top$pipeline$abc$lanes$1$lines$7$ram
+module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$rd_flipped
 module top$pipeline$abc$lanes$1$one$0(d,q,clock);
     
     // Module arguments

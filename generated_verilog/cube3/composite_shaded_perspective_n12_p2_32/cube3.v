@@ -832,6 +832,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8da;
     localparam  single = 1'b0;
     localparam  mask = 'hff0fff;
@@ -847,11 +848,15 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -869,6 +874,11 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$flags_line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$flags_line$one one(
         .d(one$d),
         .q(one$q),
@@ -879,20 +889,24 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -965,6 +979,23 @@ module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_addre
        end
     end
 endmodule // top$pipeline$flags_line$ram
+module top$pipeline$flags_line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$flags_line$rd_flipped
 module top$pipeline$flags_q$0(d,q,clock);
     
     // Module arguments

@@ -345,6 +345,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -360,11 +361,15 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -382,6 +387,11 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -392,20 +402,24 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -479,6 +493,23 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$0$ram
+module top$pipeline$lanes$cur_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$0$rd_flipped
 module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -489,6 +520,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -504,11 +536,15 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -526,6 +562,11 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -536,20 +577,24 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -623,6 +668,23 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$1$ram
+module top$pipeline$lanes$cur_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$1$rd_flipped
 module top$pipeline$lanes$next_a$0(d,q,clock);
     
     // Module arguments
@@ -701,6 +763,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -716,11 +779,15 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -738,6 +805,11 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -748,20 +820,24 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -835,6 +911,23 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$0$ram
+module top$pipeline$lanes$next_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$0$rd_flipped
 module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -845,6 +938,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -860,11 +954,15 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -882,6 +980,11 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -892,20 +995,24 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -979,3 +1086,20 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$1$ram
+module top$pipeline$lanes$next_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$1$rd_flipped

@@ -656,6 +656,7 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h1;
     localparam  single = 1'b1;
     localparam  mask = 'hffffffff;
@@ -671,11 +672,15 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [31:0] one$d;
     wire  [31:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -693,6 +698,11 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$control$increments$centre_line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$control$increments$centre_line$one one(
         .d(one$d),
         .q(one$q),
@@ -703,20 +713,24 @@ module top$pipeline$control$increments$centre_line(clock,data_in,write_enable,da
     reg  [31:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -790,6 +804,23 @@ module top$pipeline$control$increments$centre_line$ram(read_address,read_clock,r
        end
     end
 endmodule // top$pipeline$control$increments$centre_line$ram
+module top$pipeline$control$increments$centre_line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$centre_line$rd_flipped
 module top$pipeline$control$increments$dx_rom(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -950,6 +981,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h8;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
@@ -965,11 +997,15 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -987,6 +1023,11 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$control$late$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$control$late$one one(
         .d(one$d),
         .q(one$q),
@@ -997,20 +1038,24 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1084,6 +1129,23 @@ module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_add
        end
     end
 endmodule // top$pipeline$control$late$ram
+module top$pipeline$control$late$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$late$rd_flipped
 module top$pipeline$control$ray(d,q,clock);
     
     // Module arguments

@@ -345,6 +345,7 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -360,11 +361,15 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -382,6 +387,11 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -392,20 +402,24 @@ module top$pipeline$lanes$cur_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -478,6 +492,23 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$0$ram
+module top$pipeline$lanes$cur_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$0$rd_flipped
 module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -488,6 +519,7 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -503,11 +535,15 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -525,6 +561,11 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$cur_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$cur_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -535,20 +576,24 @@ module top$pipeline$lanes$cur_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -621,6 +666,23 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
        end
     end
 endmodule // top$pipeline$lanes$cur_line$1$ram
+module top$pipeline$lanes$cur_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$cur_line$1$rd_flipped
 module top$pipeline$lanes$next_a$0(d,q,clock);
     
     // Module arguments
@@ -699,6 +761,7 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -714,11 +777,15 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -736,6 +803,11 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$0$one one(
         .d(one$d),
         .q(one$q),
@@ -746,20 +818,24 @@ module top$pipeline$lanes$next_line$0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -832,6 +908,23 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$0$ram
+module top$pipeline$lanes$next_line$0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$0$rd_flipped
 module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -842,6 +935,7 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h7e;
     localparam  single = 1'b0;
     localparam  mask = 16'hffff;
@@ -857,11 +951,15 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -879,6 +977,11 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$pipeline$lanes$next_line$1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$pipeline$lanes$next_line$1$one one(
         .d(one$d),
         .q(one$q),
@@ -889,20 +992,24 @@ module top$pipeline$lanes$next_line$1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -975,3 +1082,20 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
        end
     end
 endmodule // top$pipeline$lanes$next_line$1$ram
+module top$pipeline$lanes$next_line$1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$lanes$next_line$1$rd_flipped

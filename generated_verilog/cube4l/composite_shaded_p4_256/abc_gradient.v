@@ -494,6 +494,7 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -509,11 +510,15 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -531,6 +536,11 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$feed$abc$line_a$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
@@ -541,20 +551,24 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -627,6 +641,23 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$feed$abc$line_a$ram
+module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$rd_flipped
 module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -637,6 +668,7 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -652,11 +684,15 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -674,6 +710,11 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$feed$abc$line_b$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
@@ -684,20 +725,24 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -771,6 +816,23 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$feed$abc$line_b$ram
+module top$lanes$0$feed$abc$line_b$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$rd_flipped
 module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -781,6 +843,7 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -796,11 +859,15 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -818,6 +885,11 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$feed$abc$line_c$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
@@ -828,20 +900,24 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -915,6 +991,23 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$feed$abc$line_c$ram
+module top$lanes$0$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$rd_flipped
 module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -925,6 +1018,7 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbf;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -940,11 +1034,15 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -962,6 +1060,11 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$feed$abc$line_d$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
@@ -972,20 +1075,24 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1058,6 +1165,23 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$feed$abc$line_d$ram
+module top$lanes$0$feed$abc$line_d$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$rd_flipped
 module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -1639,6 +1763,7 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -1654,11 +1779,15 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1676,6 +1805,11 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$feed$abc$line_a$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
@@ -1686,20 +1820,24 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1772,6 +1910,23 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$feed$abc$line_a$ram
+module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$rd_flipped
 module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1782,6 +1937,7 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -1797,11 +1953,15 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1819,6 +1979,11 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$feed$abc$line_b$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
@@ -1829,20 +1994,24 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1916,6 +2085,23 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$feed$abc$line_b$ram
+module top$lanes$1$feed$abc$line_b$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$rd_flipped
 module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1926,6 +2112,7 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -1941,11 +2128,15 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1963,6 +2154,11 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$feed$abc$line_c$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
@@ -1973,20 +2169,24 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -2060,6 +2260,23 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$feed$abc$line_c$ram
+module top$lanes$1$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$rd_flipped
 module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2070,6 +2287,7 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbf;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -2085,11 +2303,15 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2107,6 +2329,11 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$feed$abc$line_d$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
@@ -2117,20 +2344,24 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -2203,6 +2434,23 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$feed$abc$line_d$ram
+module top$lanes$1$feed$abc$line_d$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$rd_flipped
 module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -2784,6 +3032,7 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -2799,11 +3048,15 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2821,6 +3074,11 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$feed$abc$line_a$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
@@ -2831,20 +3089,24 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -2917,6 +3179,23 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$feed$abc$line_a$ram
+module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$rd_flipped
 module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2927,6 +3206,7 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -2942,11 +3222,15 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2964,6 +3248,11 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$feed$abc$line_b$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
@@ -2974,20 +3263,24 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3061,6 +3354,23 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$feed$abc$line_b$ram
+module top$lanes$2$feed$abc$line_b$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$rd_flipped
 module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -3071,6 +3381,7 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -3086,11 +3397,15 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3108,6 +3423,11 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$feed$abc$line_c$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
@@ -3118,20 +3438,24 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3205,6 +3529,23 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$feed$abc$line_c$ram
+module top$lanes$2$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$rd_flipped
 module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -3215,6 +3556,7 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbf;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -3230,11 +3572,15 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3252,6 +3598,11 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$feed$abc$line_d$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
@@ -3262,20 +3613,24 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3348,6 +3703,23 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$feed$abc$line_d$ram
+module top$lanes$2$feed$abc$line_d$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$rd_flipped
 module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -3929,6 +4301,7 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -3944,11 +4317,15 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3966,6 +4343,11 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$feed$abc$line_a$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
@@ -3976,20 +4358,24 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4062,6 +4448,23 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$feed$abc$line_a$ram
+module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$rd_flipped
 module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4072,6 +4475,7 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -4087,11 +4491,15 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4109,6 +4517,11 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$feed$abc$line_b$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
@@ -4119,20 +4532,24 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4206,6 +4623,23 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$feed$abc$line_b$ram
+module top$lanes$3$feed$abc$line_b$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$rd_flipped
 module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4216,6 +4650,7 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -4231,11 +4666,15 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4253,6 +4692,11 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$feed$abc$line_c$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
@@ -4263,20 +4707,24 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4350,6 +4798,23 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$feed$abc$line_c$ram
+module top$lanes$3$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$rd_flipped
 module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4360,6 +4825,7 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbf;
     localparam  single = 1'b0;
     localparam  mask = 16'hff;
@@ -4375,11 +4841,15 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4397,6 +4867,11 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$feed$abc$line_d$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
@@ -4407,20 +4882,24 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4493,6 +4972,23 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$feed$abc$line_d$ram
+module top$lanes$3$feed$abc$line_d$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$rd_flipped
 module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments

@@ -1342,6 +1342,12 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     wire  [63:0] regs$q$1;
     reg  [9:0] rnorm$address;
     wire  [15:0] rnorm$data;
+    reg  [3:0] square$0$address;
+    wire  [7:0] square$0$data;
+    reg  [3:0] square$1$address;
+    wire  [7:0] square$1$data;
+    reg  [3:0] square$2$address;
+    wire  [7:0] square$2$data;
     reg  diffuse_table$clock;
     reg  diffuse_table$host_write;
     reg  [23:0] diffuse_table$host_address;
@@ -1492,6 +1498,18 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     top$lanes$0$shader$lighting$rnorm rnorm(
         .address(rnorm$address),
         .data(rnorm$data)
+    );
+    top$lanes$0$shader$lighting$square$0 square$0(
+        .address(square$0$address),
+        .data(square$0$data)
+    );
+    top$lanes$0$shader$lighting$square$1 square$1(
+        .address(square$1$address),
+        .data(square$1$data)
+    );
+    top$lanes$0$shader$lighting$square$2 square$2(
+        .address(square$2$address),
+        .data(square$2$data)
     );
     top$lanes$0$shader$lighting$diffuse_table diffuse_table(
         .clock(diffuse_table$clock),
@@ -1733,36 +1751,6 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        ml_q$0$clock = clock;
-        mh_q$0$clock = clock;
-        sl_q$0$clock = clock;
-        sh_q$0$clock = clock;
-        p_l$0$clock = clock;
-        p_h$0$clock = clock;
-        ml_q$0$d = m_l$0;
-        mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
-        ml_q$1$clock = clock;
-        mh_q$1$clock = clock;
-        sl_q$1$clock = clock;
-        sh_q$1$clock = clock;
-        p_l$1$clock = clock;
-        p_h$1$clock = clock;
-        ml_q$1$d = m_l$1;
-        mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
-        ml_q$2$clock = clock;
-        mh_q$2$clock = clock;
-        sl_q$2$clock = clock;
-        sh_q$2$clock = clock;
-        p_l$2$clock = clock;
-        p_h$2$clock = clock;
-        ml_q$2$d = m_l$2;
-        mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
         qm$1 = 16'(q_mag$1);
         qm$2 = 16'(q_mag$2);
@@ -1790,13 +1778,46 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        square$0$address = q_mag$0;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        square$1$address = q_mag$1;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        square$2$address = q_mag$2;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
         sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
         sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
-        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2 = 16'(square$0$data) + 16'(square$1$data) + 16'(square$2$data);
         n2_q$d = n2;
         t_pl$0 = p_l$0$q;
         if (sl_q$0$q) begin
@@ -3692,6 +3713,93 @@ module top$lanes$0$shader$lighting$specular_table$ram(read_address,read_clock,re
        end
     end
 endmodule // top$lanes$0$shader$lighting$specular_table$ram
+module top$lanes$0$shader$lighting$square$0(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$0$shader$lighting$square$0
+module top$lanes$0$shader$lighting$square$1(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$0$shader$lighting$square$1
+module top$lanes$0$shader$lighting$square$2(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$0$shader$lighting$square$2
 module top$lanes$0$shader$lighting$t_h(d,q,clock);
     
     // Module arguments
@@ -7119,6 +7227,12 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     wire  [63:0] regs$q$1;
     reg  [9:0] rnorm$address;
     wire  [15:0] rnorm$data;
+    reg  [3:0] square$0$address;
+    wire  [7:0] square$0$data;
+    reg  [3:0] square$1$address;
+    wire  [7:0] square$1$data;
+    reg  [3:0] square$2$address;
+    wire  [7:0] square$2$data;
     reg  diffuse_table$clock;
     reg  diffuse_table$host_write;
     reg  [23:0] diffuse_table$host_address;
@@ -7269,6 +7383,18 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     top$lanes$1$shader$lighting$rnorm rnorm(
         .address(rnorm$address),
         .data(rnorm$data)
+    );
+    top$lanes$1$shader$lighting$square$0 square$0(
+        .address(square$0$address),
+        .data(square$0$data)
+    );
+    top$lanes$1$shader$lighting$square$1 square$1(
+        .address(square$1$address),
+        .data(square$1$data)
+    );
+    top$lanes$1$shader$lighting$square$2 square$2(
+        .address(square$2$address),
+        .data(square$2$data)
     );
     top$lanes$1$shader$lighting$diffuse_table diffuse_table(
         .clock(diffuse_table$clock),
@@ -7510,36 +7636,6 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        ml_q$0$clock = clock;
-        mh_q$0$clock = clock;
-        sl_q$0$clock = clock;
-        sh_q$0$clock = clock;
-        p_l$0$clock = clock;
-        p_h$0$clock = clock;
-        ml_q$0$d = m_l$0;
-        mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
-        ml_q$1$clock = clock;
-        mh_q$1$clock = clock;
-        sl_q$1$clock = clock;
-        sh_q$1$clock = clock;
-        p_l$1$clock = clock;
-        p_h$1$clock = clock;
-        ml_q$1$d = m_l$1;
-        mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
-        ml_q$2$clock = clock;
-        mh_q$2$clock = clock;
-        sl_q$2$clock = clock;
-        sh_q$2$clock = clock;
-        p_l$2$clock = clock;
-        p_h$2$clock = clock;
-        ml_q$2$d = m_l$2;
-        mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
         qm$1 = 16'(q_mag$1);
         qm$2 = 16'(q_mag$2);
@@ -7567,13 +7663,46 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        square$0$address = q_mag$0;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        square$1$address = q_mag$1;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        square$2$address = q_mag$2;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
         sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
         sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
-        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2 = 16'(square$0$data) + 16'(square$1$data) + 16'(square$2$data);
         n2_q$d = n2;
         t_pl$0 = p_l$0$q;
         if (sl_q$0$q) begin
@@ -9469,6 +9598,93 @@ module top$lanes$1$shader$lighting$specular_table$ram(read_address,read_clock,re
        end
     end
 endmodule // top$lanes$1$shader$lighting$specular_table$ram
+module top$lanes$1$shader$lighting$square$0(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$1$shader$lighting$square$0
+module top$lanes$1$shader$lighting$square$1(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$1$shader$lighting$square$1
+module top$lanes$1$shader$lighting$square$2(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$1$shader$lighting$square$2
 module top$lanes$1$shader$lighting$t_h(d,q,clock);
     
     // Module arguments
@@ -12896,6 +13112,12 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     wire  [63:0] regs$q$1;
     reg  [9:0] rnorm$address;
     wire  [15:0] rnorm$data;
+    reg  [3:0] square$0$address;
+    wire  [7:0] square$0$data;
+    reg  [3:0] square$1$address;
+    wire  [7:0] square$1$data;
+    reg  [3:0] square$2$address;
+    wire  [7:0] square$2$data;
     reg  diffuse_table$clock;
     reg  diffuse_table$host_write;
     reg  [23:0] diffuse_table$host_address;
@@ -13046,6 +13268,18 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     top$lanes$2$shader$lighting$rnorm rnorm(
         .address(rnorm$address),
         .data(rnorm$data)
+    );
+    top$lanes$2$shader$lighting$square$0 square$0(
+        .address(square$0$address),
+        .data(square$0$data)
+    );
+    top$lanes$2$shader$lighting$square$1 square$1(
+        .address(square$1$address),
+        .data(square$1$data)
+    );
+    top$lanes$2$shader$lighting$square$2 square$2(
+        .address(square$2$address),
+        .data(square$2$data)
     );
     top$lanes$2$shader$lighting$diffuse_table diffuse_table(
         .clock(diffuse_table$clock),
@@ -13287,36 +13521,6 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        ml_q$0$clock = clock;
-        mh_q$0$clock = clock;
-        sl_q$0$clock = clock;
-        sh_q$0$clock = clock;
-        p_l$0$clock = clock;
-        p_h$0$clock = clock;
-        ml_q$0$d = m_l$0;
-        mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
-        ml_q$1$clock = clock;
-        mh_q$1$clock = clock;
-        sl_q$1$clock = clock;
-        sh_q$1$clock = clock;
-        p_l$1$clock = clock;
-        p_h$1$clock = clock;
-        ml_q$1$d = m_l$1;
-        mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
-        ml_q$2$clock = clock;
-        mh_q$2$clock = clock;
-        sl_q$2$clock = clock;
-        sh_q$2$clock = clock;
-        p_l$2$clock = clock;
-        p_h$2$clock = clock;
-        ml_q$2$d = m_l$2;
-        mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
         qm$1 = 16'(q_mag$1);
         qm$2 = 16'(q_mag$2);
@@ -13344,13 +13548,46 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        square$0$address = q_mag$0;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        square$1$address = q_mag$1;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        square$2$address = q_mag$2;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
         sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
         sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
-        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2 = 16'(square$0$data) + 16'(square$1$data) + 16'(square$2$data);
         n2_q$d = n2;
         t_pl$0 = p_l$0$q;
         if (sl_q$0$q) begin
@@ -15246,6 +15483,93 @@ module top$lanes$2$shader$lighting$specular_table$ram(read_address,read_clock,re
        end
     end
 endmodule // top$lanes$2$shader$lighting$specular_table$ram
+module top$lanes$2$shader$lighting$square$0(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$2$shader$lighting$square$0
+module top$lanes$2$shader$lighting$square$1(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$2$shader$lighting$square$1
+module top$lanes$2$shader$lighting$square$2(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$2$shader$lighting$square$2
 module top$lanes$2$shader$lighting$t_h(d,q,clock);
     
     // Module arguments
@@ -18673,6 +18997,12 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     wire  [63:0] regs$q$1;
     reg  [9:0] rnorm$address;
     wire  [15:0] rnorm$data;
+    reg  [3:0] square$0$address;
+    wire  [7:0] square$0$data;
+    reg  [3:0] square$1$address;
+    wire  [7:0] square$1$data;
+    reg  [3:0] square$2$address;
+    wire  [7:0] square$2$data;
     reg  diffuse_table$clock;
     reg  diffuse_table$host_write;
     reg  [23:0] diffuse_table$host_address;
@@ -18823,6 +19153,18 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     top$lanes$3$shader$lighting$rnorm rnorm(
         .address(rnorm$address),
         .data(rnorm$data)
+    );
+    top$lanes$3$shader$lighting$square$0 square$0(
+        .address(square$0$address),
+        .data(square$0$data)
+    );
+    top$lanes$3$shader$lighting$square$1 square$1(
+        .address(square$1$address),
+        .data(square$1$data)
+    );
+    top$lanes$3$shader$lighting$square$2 square$2(
+        .address(square$2$address),
+        .data(square$2$data)
     );
     top$lanes$3$shader$lighting$diffuse_table diffuse_table(
         .clock(diffuse_table$clock),
@@ -19064,36 +19406,6 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         specular_table$host_write = host_write;
         specular_table$host_address = host_address;
         specular_table$host_data = host_data;
-        ml_q$0$clock = clock;
-        mh_q$0$clock = clock;
-        sl_q$0$clock = clock;
-        sh_q$0$clock = clock;
-        p_l$0$clock = clock;
-        p_h$0$clock = clock;
-        ml_q$0$d = m_l$0;
-        mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
-        ml_q$1$clock = clock;
-        mh_q$1$clock = clock;
-        sl_q$1$clock = clock;
-        sh_q$1$clock = clock;
-        p_l$1$clock = clock;
-        p_h$1$clock = clock;
-        ml_q$1$d = m_l$1;
-        mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
-        ml_q$2$clock = clock;
-        mh_q$2$clock = clock;
-        sl_q$2$clock = clock;
-        sh_q$2$clock = clock;
-        p_l$2$clock = clock;
-        p_h$2$clock = clock;
-        ml_q$2$d = m_l$2;
-        mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
         qm$0 = 16'(q_mag$0);
         qm$1 = 16'(q_mag$1);
         qm$2 = 16'(q_mag$2);
@@ -19121,13 +19433,46 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         if (regs$q$1['h2f]) begin
             m_h$2 = 'h0 - regs$q$1[('h20)+:(16)];
         end
+        ml_q$0$clock = clock;
+        mh_q$0$clock = clock;
+        sl_q$0$clock = clock;
+        sh_q$0$clock = clock;
+        p_l$0$clock = clock;
+        p_h$0$clock = clock;
+        square$0$address = q_mag$0;
+        ml_q$0$d = m_l$0;
+        mh_q$0$d = m_h$0;
+        p_l$0$d = qm$0 * ml_q$0$q;
+        p_h$0$d = qm$0 * mh_q$0$q;
+        ml_q$1$clock = clock;
+        mh_q$1$clock = clock;
+        sl_q$1$clock = clock;
+        sh_q$1$clock = clock;
+        p_l$1$clock = clock;
+        p_h$1$clock = clock;
+        square$1$address = q_mag$1;
+        ml_q$1$d = m_l$1;
+        mh_q$1$d = m_h$1;
+        p_l$1$d = qm$1 * ml_q$1$q;
+        p_h$1$d = qm$1 * mh_q$1$q;
+        ml_q$2$clock = clock;
+        mh_q$2$clock = clock;
+        sl_q$2$clock = clock;
+        sh_q$2$clock = clock;
+        p_l$2$clock = clock;
+        p_h$2$clock = clock;
+        square$2$address = q_mag$2;
+        ml_q$2$d = m_l$2;
+        mh_q$2$d = m_h$2;
+        p_l$2$d = qm$2 * ml_q$2$q;
+        p_h$2$d = qm$2 * mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
         sh_q$0$d = q_neg$0 ^ regs$q$1['hf];
         sh_q$1$d = q_neg$1 ^ regs$q$1['h1f];
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
-        n2 = 16'(qm$0 * qm$0) + 16'(qm$1 * qm$1) + 16'(qm$2 * qm$2);
+        n2 = 16'(square$0$data) + 16'(square$1$data) + 16'(square$2$data);
         n2_q$d = n2;
         t_pl$0 = p_l$0$q;
         if (sl_q$0$q) begin
@@ -21023,6 +21368,93 @@ module top$lanes$3$shader$lighting$specular_table$ram(read_address,read_clock,re
        end
     end
 endmodule // top$lanes$3$shader$lighting$specular_table$ram
+module top$lanes$3$shader$lighting$square$0(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$3$shader$lighting$square$0
+module top$lanes$3$shader$lighting$square$1(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$3$shader$lighting$square$1
+module top$lanes$3$shader$lighting$square$2(address,data);
+    
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [7:0] data;
+    
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 8'h0;
+      4'h1: data = 8'h1;
+      4'h2: data = 8'h4;
+      4'h3: data = 8'h9;
+      4'h4: data = 8'h10;
+      4'h5: data = 8'h19;
+      4'h6: data = 8'h24;
+      4'h7: data = 8'h31;
+      4'h8: data = 8'h40;
+      4'h9: data = 8'h51;
+      4'ha: data = 8'h64;
+      4'hb: data = 8'h79;
+      4'hc: data = 8'h90;
+      4'hd: data = 8'ha9;
+      4'he: data = 8'hc4;
+      4'hf: data = 8'he1;
+      default: data = 8'h0;
+    endcase
+            
+endmodule // top$lanes$3$shader$lighting$square$2
 module top$lanes$3$shader$lighting$t_h(d,q,clock);
     
     // Module arguments

@@ -962,6 +962,7 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -977,11 +978,15 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -999,6 +1004,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
@@ -1009,20 +1019,24 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1096,6 +1110,23 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$taps$rows$beam0$ram
+module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
 module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1106,6 +1137,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1121,11 +1153,15 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1143,6 +1179,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
@@ -1153,20 +1194,24 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1240,6 +1285,23 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$0$taps$rows$beam1$ram
+module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1267,6 +1329,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1282,11 +1345,15 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1304,6 +1371,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$0$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
@@ -1314,20 +1386,24 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1400,6 +1476,23 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        end
     end
 endmodule // top$lanes$0$taps$rows$ring$ram
+module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$rd_flipped
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -3486,6 +3579,7 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -3501,11 +3595,15 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3523,6 +3621,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
@@ -3533,20 +3636,24 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3620,6 +3727,23 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$taps$rows$beam0$ram
+module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
 module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -3630,6 +3754,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -3645,11 +3770,15 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3667,6 +3796,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
@@ -3677,20 +3811,24 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3764,6 +3902,23 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$1$taps$rows$beam1$ram
+module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -3791,6 +3946,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -3806,11 +3962,15 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3828,6 +3988,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$1$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
@@ -3838,20 +4003,24 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3924,6 +4093,23 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        end
     end
 endmodule // top$lanes$1$taps$rows$ring$ram
+module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$rd_flipped
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -6010,6 +6196,7 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -6025,11 +6212,15 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6047,6 +6238,11 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$taps$rows$beam0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
@@ -6057,20 +6253,24 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6144,6 +6344,23 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$taps$rows$beam0$ram
+module top$lanes$2$taps$rows$beam0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$rd_flipped
 module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -6154,6 +6371,7 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -6169,11 +6387,15 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6191,6 +6413,11 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$taps$rows$beam1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
@@ -6201,20 +6428,24 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6288,6 +6519,23 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$2$taps$rows$beam1$ram
+module top$lanes$2$taps$rows$beam1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$rd_flipped
 module top$lanes$2$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -6315,6 +6563,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -6330,11 +6579,15 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6352,6 +6605,11 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$2$taps$rows$ring$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$2$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
@@ -6362,20 +6620,24 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6448,6 +6710,23 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        end
     end
 endmodule // top$lanes$2$taps$rows$ring$ram
+module top$lanes$2$taps$rows$ring$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$rd_flipped
 module top$lanes$2$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -8534,6 +8813,7 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -8549,11 +8829,15 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -8571,6 +8855,11 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$taps$rows$beam0$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
@@ -8581,20 +8870,24 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -8668,6 +8961,23 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$taps$rows$beam0$ram
+module top$lanes$3$taps$rows$beam0$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$rd_flipped
 module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -8678,6 +8988,7 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3f;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -8693,11 +9004,15 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -8715,6 +9030,11 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$taps$rows$beam1$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
@@ -8725,20 +9045,24 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -8812,6 +9136,23 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        end
     end
 endmodule // top$lanes$3$taps$rows$beam1$ram
+module top$lanes$3$taps$rows$beam1$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$rd_flipped
 module top$lanes$3$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -8839,6 +9180,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb2;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -8854,11 +9196,15 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
     
     // Local signals
+    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -8876,6 +9222,11 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(ptr$q),
         .clock(ptr$clock)
     );
+    top$lanes$3$taps$rows$ring$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
     top$lanes$3$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
@@ -8886,20 +9237,24 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         ptr$clock = clock;
+        rd_flipped$clock = clock;
         one$clock = clock;
         ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        next = ptr$q + 'h1;
-        if ((ptr$q >= last) | (ptr$q >= longest_last)) begin
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
             next = 'h0;
         end
-        ptr$d = next;
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & ~single;
-        ram$read_address = next;
+        ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -8972,6 +9327,23 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        end
     end
 endmodule // top$lanes$3$taps$rows$ring$ram
+module top$lanes$3$taps$rows$ring$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$rd_flipped
 module top$lanes$3$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
