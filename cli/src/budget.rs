@@ -10,7 +10,6 @@
 //! subdivisions `n`) and every image (24 bytes a pixel).
 
 use crate::common::Arch;
-use anyhow::{bail, Result};
 use scene::{Projection, Scene};
 
 /// Largest work accepted, in elementary steps (a footprint entry drawn, a
@@ -100,15 +99,14 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
             // Every pixel's ray across the volume's diagonal.
             work: pixels * diag / ref_step.max(1e-6),
         },
-        Arch::QuantizedProjection | Arch::QuantizedSplat => quantized(scene, arch, common),
+        Arch::QuantizedProjection | Arch::QuantizedSplat => quantized(scene, &cam, arch, common),
     }
 }
 
 /// The quantized path: its footprint tables grow with `p²` (`p` pixels
 /// per voxel) and with `n²` (subdivisions), its band buffers with `p`.
-fn quantized(scene: &Scene, arch: Arch, common: f64) -> Estimate {
+fn quantized(scene: &Scene, cam: &scene::Camera, arch: Arch, common: f64) -> Estimate {
     let splat = arch == Arch::QuantizedSplat;
-    let cam = scene.camera();
     let [w, h] = scene.image.map(|x| x as f64);
     let d = scene.volume.render_dims().map(|x| x as f64);
     let n = scene
@@ -157,27 +155,41 @@ fn quantized(scene: &Scene, arch: Arch, common: f64) -> Estimate {
 
 /// Refuse a render that would exceed the memory budget or run for hours,
 /// in one line with the figures.
-pub fn check(scene: &Scene, arch: Arch, ref_step: f64) -> Result<()> {
+pub fn check(scene: &Scene, arch: Arch, ref_step: f64) -> Result<(), OverBudget> {
     let e = estimate(scene, arch, ref_step);
     let budget = budget_bytes() as f64;
     let gib = |b: f64| b / (1u64 << 30) as f64;
     if e.bytes > budget {
-        bail!(
+        return Err(OverBudget(format!(
             "{}: this scene needs about {:.1} GiB, over the memory budget of {:.1} GiB (half this machine's memory, or 80 % of ulimit -v); a smaller image, zoom or quantized.subdivisions needs less",
             arch.name(),
             gib(e.bytes),
             gib(budget)
-        );
+        )));
     }
     if e.work > MAX_WORK {
-        bail!(
+        return Err(OverBudget(format!(
             "{}: this scene needs about {:.0e} steps of work (the limit is {MAX_WORK:.0e}, about ten minutes); a smaller image, zoom or quantized.subdivisions needs less",
             arch.name(),
             e.work
-        );
+        )));
     }
     Ok(())
 }
+
+/// A render [`check`] refuses, with its one-line reason: a type of its
+/// own, so that `tradeoff` can leave the point out where other errors end
+/// the run.
+#[derive(Debug)]
+pub struct OverBudget(String);
+
+impl std::fmt::Display for OverBudget {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for OverBudget {}
 
 #[cfg(test)]
 mod tests {

@@ -55,10 +55,16 @@ fn follow(path: &Path) -> Result<(PathBuf, bool)> {
     bail!("{}: too many levels of symbolic links", path.display())
 }
 
+/// `path` resolved: its links followed and its missing folders settled
+/// ([`settled`]), and whether the way passed through `/dev` or `/proc`.
+fn resolve(path: &Path) -> Result<(PathBuf, bool)> {
+    let (target, system) = follow(path)?;
+    Ok((settled(&target), system))
+}
+
 /// Check an output path before any work is done for it.
 pub fn check_target(path: &Path) -> Result<Target> {
-    let (target, system) = follow(path)?;
-    let target = settled(&target);
+    let (target, system) = resolve(path)?;
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => bail!("{} is a directory, not a file", path.display()),
         Ok(m) if !m.is_file() => Ok(Target::Special),
@@ -94,13 +100,12 @@ enum Id {
     Path(PathBuf),
 }
 
-fn identity(path: &Path) -> Result<Id> {
-    let (target, _) = follow(path)?;
-    let target = settled(&target);
-    Ok(match std::fs::metadata(&target) {
+/// The identity of a resolved path ([`resolve`]).
+fn identity(target: PathBuf) -> Id {
+    match std::fs::metadata(&target) {
         Ok(m) => Id::Inode(m.dev(), m.ino()),
         Err(_) => Id::Path(target),
-    })
+    }
 }
 
 /// Where an absolute path will lead once its missing folders are created:
@@ -115,19 +120,13 @@ fn settled(path: &Path) -> PathBuf {
         if let Ok(c) = base.canonicalize() {
             break c;
         }
-        match (base.file_name(), base.parent()) {
-            (Some(n), Some(parent)) => {
-                rest.push(n.to_os_string());
+        // The last component (a name, or `..`) is taken lexically below.
+        match (base.components().next_back(), base.parent()) {
+            (Some(last), Some(parent)) => {
+                rest.push(last.as_os_str().to_os_string());
                 base = parent.to_path_buf();
             }
-            // `..` or `.` as the last component: step out lexically.
-            _ => match base.parent() {
-                Some(parent) => {
-                    rest.push(base.components().next_back().unwrap().as_os_str().into());
-                    base = parent.to_path_buf();
-                }
-                None => break base,
-            },
+            _ => break base,
         }
     };
     let mut out = canon;
@@ -153,7 +152,7 @@ pub struct Files {
 impl Files {
     /// A file the run reads (`what` names it: `--scene`, `volume.raw`).
     pub fn input(&mut self, what: &str, path: &Path) -> Result<()> {
-        let id = identity(path)?;
+        let id = identity(resolve(path)?.0);
         self.inputs.push((format!("{what} {}", path.display()), id));
         Ok(())
     }
@@ -172,8 +171,7 @@ impl Files {
     /// is not [`cosim::gtkw::MARK`]).
     pub fn companion(&mut self, what: &str, path: &Path) -> Result<()> {
         self.output(what, path)?;
-        let (target, _) = follow(path)?;
-        if let Ok(text) = std::fs::read(&target) {
+        if let Ok(text) = std::fs::read(resolve(path)?.0) {
             if !text.starts_with(cosim::gtkw::MARK.as_bytes()) {
                 bail!(
                     "{what} {} exists and was not written by cube: move it, or trace elsewhere",
@@ -188,11 +186,10 @@ impl Files {
     /// may not write, an input, or another output of the run.
     pub fn output(&mut self, what: &str, path: &Path) -> Result<()> {
         let named = format!("{what} {}", path.display());
-        let special = matches!(
-            check_target(path).with_context(|| what.to_string())?,
-            Target::Special
-        );
-        let id = identity(path)?;
+        let (special, id) = match check_target(path).with_context(|| what.to_string())? {
+            Target::File(t) => (false, identity(t)),
+            Target::Special => (true, identity(resolve(path)?.0)),
+        };
         if let Some((input, _)) = self.inputs.iter().find(|(_, i)| *i == id) {
             bail!("{named} would replace the input {input}");
         }

@@ -400,25 +400,26 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         bar.set_message(format!("{} {label}", f.name));
         let s = patched(&base, &v.patch, &scene, dir.as_deref())
             .with_context(|| format!("{} {label}", f.name))?;
-        // A point past the memory or work budget is left out, and said.
-        if let Err(why) = crate::budget::check(&s, f.arch, yard_step) {
-            skipped.push((format!("{} {label}", f.name), why.to_string()));
-            bar.inc(1);
-            continue;
-        }
         let bits = s.hardware.voxel_bits;
         if let std::collections::hash_map::Entry::Vacant(e) = volumes.entry(bits) {
             e.insert(Volume::from_spec(&s.volume, bits)?);
         }
-        let r = render_repeat(
+        let r = match render_repeat(
             &s,
             &volumes[&bits],
             f.arch,
             yard_step,
             v.gradient,
             args.repeat,
-        )
-        .with_context(|| format!("{} {label}", f.name))?;
+        ) {
+            // A point past the memory or work budget is left out, and said.
+            Err(e) if e.downcast_ref::<crate::budget::OverBudget>().is_some() => {
+                skipped.push((format!("{} {label}", f.name), e.to_string()));
+                bar.inc(1);
+                continue;
+            }
+            r => r.with_context(|| format!("{} {label}", f.name))?,
+        };
         let hw = match f.hardware {
             true => Some(
                 price(f.arch, &s, &r.extra, args.clock_mhz, &generated)

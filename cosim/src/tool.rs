@@ -12,27 +12,24 @@ use std::time::{Duration, Instant};
 /// too ([`stop_running`]).
 static RUNNING: Mutex<Vec<u32>> = Mutex::new(Vec::new());
 
-/// A started tool, listed in [`RUNNING`] until it is dropped.
-struct Running(Child);
+/// A started tool's listing in [`RUNNING`], until it is dropped.
+struct Running(u32);
 
-impl Running {
-    fn spawn(cmd: &mut Command, what: &str) -> Result<Running, String> {
-        let child = cmd
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| missing(what, e))?;
-        RUNNING
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .push(child.id());
-        Ok(Running(child))
-    }
+/// Start `cmd` with its output piped, listed in [`RUNNING`].
+fn spawn(cmd: &mut Command, what: &str) -> Result<(Child, Running), String> {
+    let child = cmd
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| missing(what, e))?;
+    let id = child.id();
+    RUNNING.lock().unwrap_or_else(|e| e.into_inner()).push(id);
+    Ok((child, Running(id)))
 }
 
 impl Drop for Running {
     fn drop(&mut self) {
-        let id = self.0.id();
+        let id = self.0;
         RUNNING
             .lock()
             .unwrap_or_else(|e| e.into_inner())
@@ -91,16 +88,10 @@ fn finished(out: Output, what: &str) -> Result<Output, String> {
 
 /// Run `cmd` (the tool `what`) to completion; its output when it succeeds.
 pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
-    let mut running = Running::spawn(cmd, what)?;
-    let child = &mut running.0;
-    let stdout = drain(child.stdout.take());
-    let stderr = drain(child.stderr.take());
-    let status = child.wait().map_err(|e| format!("{what}: {e}"))?;
-    let out = Output {
-        status,
-        stdout: stdout.join().unwrap_or_default(),
-        stderr: stderr.join().unwrap_or_default(),
-    };
+    let (child, _listed) = spawn(cmd, what)?;
+    let out = child
+        .wait_with_output()
+        .map_err(|e| format!("{what}: {e}"))?;
     finished(out, what)
 }
 
@@ -125,8 +116,7 @@ pub fn run_watched(
     heartbeat: &Path,
     stall: Duration,
 ) -> Result<Output, String> {
-    let mut running = Running::spawn(cmd, what)?;
-    let child = &mut running.0;
+    let (mut child, _listed) = spawn(cmd, what)?;
     let stdout = drain(child.stdout.take());
     let stderr = drain(child.stderr.take());
     let beats = || std::fs::metadata(heartbeat).map_or(0, |m| m.len());
