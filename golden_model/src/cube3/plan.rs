@@ -673,4 +673,107 @@ mod tests {
         let e = Plan::new(&s, &s.camera()).unwrap_err().to_string();
         assert!(e.contains("eye must lie"), "{e}");
     }
+
+    #[test]
+    fn eye_within_half_a_voxel_of_the_face_is_refused() {
+        // 0.3 voxels below the z = 0 face, looking along +z: inside the
+        // half-voxel margin the rule asks for.
+        let s = scene(
+            r#"{"projection": "perspective", "eye": [7.5, 5.5, -0.3], "target": [7.5, 5.5, 9], "fov_deg": 20}"#,
+            8,
+        );
+        let e = Plan::new(&s, &s.camera()).unwrap_err().to_string();
+        assert!(e.contains("half a voxel"), "{e}");
+        let s = scene(
+            r#"{"projection": "perspective", "eye": [7.5, 5.5, -0.7], "target": [7.5, 5.5, 9], "fov_deg": 20}"#,
+            8,
+        );
+        assert!(Plan::new(&s, &s.camera()).is_ok());
+    }
+
+    #[test]
+    fn neighbourhood_counts_round_trip() {
+        for n in [6, 10, 12, 26] {
+            assert_eq!(Neighbourhood::from_count(n).unwrap().count(), n);
+        }
+        assert_eq!(Neighbourhood::from_count(8), None);
+    }
+
+    #[test]
+    fn perspective_template_covers_exactly_its_rays() {
+        // Rays -2..=5 (8 of them): increments spread from -1 to +1.
+        let (t, _) = build_template(-2, 5, 4, 0, 8, |u| (u - 2) * 64, false);
+        assert!(t.covers(-2, 8));
+        assert!(t.covers(0, 6));
+        assert!(t.covers(5, 1));
+        assert!(!t.covers(-3, 1));
+        assert!(!t.covers(-2, 9));
+        assert!(!t.covers(5, 2));
+        assert!(!t.covers(6, 1));
+        let (par, _) = build_template(0, 3, 4, 0, 8, |_| 64, true);
+        assert!(par.covers(-100, 1000));
+    }
+
+    #[test]
+    fn first_offset_stays_below_one() {
+        // The first whole step from z = -1.0005 ends at z = 0.9995, which
+        // rounds to 2^W at W = 8: the offset keeps to 2^W - 1.
+        assert_eq!(
+            first_offset(DVec3::new(0.0, 0.0, -1.0005), DVec3::Z, 8),
+            255
+        );
+        // From z = -0.25 along z: a quarter voxel in, 64/256.
+        assert_eq!(first_offset(DVec3::new(3.0, 1.0, -1.25), DVec3::Z, 8), 192);
+    }
+
+    #[test]
+    fn casts_within_45_degrees_on_both_axes() {
+        let mut v = empty_view([8, 8, 8], 2, true, 8);
+        let par = |d: i32| Template::Parallel {
+            d,
+            pos: vec![],
+            weight: vec![],
+        };
+        for (dx, dy, casts) in [
+            (256, -256, true),
+            (0, 0, true),
+            (257, 0, false),
+            (0, -257, false),
+            (-300, 300, false),
+        ] {
+            v.x = par(dx);
+            v.y = par(dy);
+            assert_eq!(v.casts(0, 0), casts, "dx {dx} dy {dy}");
+        }
+    }
+
+    #[test]
+    fn clamped_weights_are_counted_by_the_view() {
+        // An offset past Eq. 3's bound (255/256 against increments near
+        // -1): the edges run ahead of the samples and weights leave [0, 1].
+        let d = |u: i32| (u - 256).clamp(-256, 256);
+        let (t, clamps) = build_template(-1, 6, 6, 255, 8, d, false);
+        assert!(clamps > 0);
+        for u in -1..6 {
+            for k in 0..6 {
+                assert!(t.weight(u, k) <= 256);
+            }
+        }
+        // The last ray's weights are never read, so never computed or
+        // counted: one ray fewer in the template drops exactly its count.
+        for k in 0..6 {
+            assert_eq!(t.weight(6, k), 0);
+        }
+        let (_, with_5) = build_template(-1, 5, 6, 255, 8, d, false);
+        let (_, with_6_of_7) = build_template(-1, 7, 6, 255, 8, d, false);
+        assert!(with_5 < clamps && clamps < with_6_of_7);
+        let mut v = empty_view([6, 6, 6], 2, true, 8);
+        v.offset = 255;
+        let e = |u: i32| (2 * u - 256).clamp(-256, 256);
+        v.finish(d, e, false);
+        let (_, cx) = build_template(v.u[0] - 1, v.u[1] + 2, 6, 255, 8, d, false);
+        let (_, cy) = build_template(v.v[0] - 1, v.v[1] + 2, 6, 255, 8, e, false);
+        assert!(cx > 0 && cy > 0 && cx != cy);
+        assert_eq!(v.weight_clamps, cx + cy);
+    }
 }

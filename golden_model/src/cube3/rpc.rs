@@ -121,6 +121,17 @@ mod tests {
     }
 
     #[test]
+    fn tree_counts_every_clipped_node() {
+        // Full colour at zero opacity: every node's sum passes 255.
+        let leaves = [leaf([255, 255, 255, 0]); 4];
+        let (root, clips) = tree(Mode::Composite, &leaves, 8);
+        assert_eq!(root.value, [255, 255, 255, 0]);
+        assert_eq!(clips, 3);
+        let quiet = [leaf([10, 10, 10, 0]); 4];
+        assert_eq!(tree(Mode::Composite, &quiet, 8), (leaf([40, 40, 40, 0]), 0));
+    }
+
+    #[test]
     fn over_by_hand() {
         // Front α = 0.5 (128/255): C' = 100 + round(127·80/255) = 100 + 40.
         let (c, clip) = node(

@@ -152,5 +152,14 @@ mod tests {
         for e in &h.edges {
             assert!(e.c > 0.0, "centre inside every edge");
         }
+        // Just inside and just outside each vertex, and each edge's middle.
+        let k = h.vertices.len();
+        for i in 0..k {
+            let (p, q) = (h.vertices[i], h.vertices[(i + 1) % k]);
+            for m in [p, (p + q) / 2.0] {
+                assert!(h.contains(m * 0.999), "{m} inside");
+                assert!(!h.contains(m * 1.001), "{m} outside");
+            }
+        }
     }
 }

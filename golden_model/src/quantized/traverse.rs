@@ -101,12 +101,14 @@ impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
                 dst[3] += k;
             }
         } else {
+            // Back to front the accumulated opacity is never read (no
+            // occlusion test; the image is the colour over black), so
+            // only the colour channels are composited.
             let a = a();
             let k = 1.0 - a;
-            for (d, c) in dst.iter_mut().zip(s.c) {
+            for (d, c) in dst[..3].iter_mut().zip(s.c) {
                 *d = c * a + k * *d;
             }
-            dst[3] = a + k * dst[3];
         }
     }
 }
