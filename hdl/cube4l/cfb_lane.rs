@@ -93,10 +93,16 @@ pub struct CfbLane<const A: usize> {
     slab_hi: Signal<Local, Bits<16>>,
     dx_abs: Signal<Local, Bits<64>>,
     dy_abs: Signal<Local, Bits<64>>,
-    par_dx_neg: Signal<Local, Bit>,
-    par_dx_mag: Signal<Local, Bits<32>>,
-    par_dy_neg: Signal<Local, Bit>,
-    par_dy_mag: Signal<Local, Bits<32>>,
+    /// The parallel view's increments, registered from `Dx` and `Dy`: they
+    /// hold for a frame, and the control reads them `ADDRESS_STAGES` clocks
+    /// after the start at the earliest. Sign (when nonzero), magnitude, and
+    /// positive-and-nonzero.
+    par_dxn: DFF<Bit>,
+    par_dxm: DFF<Bits<32>>,
+    par_dx_pos: DFF<Bit>,
+    par_dyn: DFF<Bit>,
+    par_dym: DFF<Bits<32>>,
+    par_dy_pos: DFF<Bit>,
     div_x: Divider,
     div_y: Divider,
     sx: Signal<Local, Bits<64>>,
@@ -229,10 +235,12 @@ impl<const A: usize> CfbLane<A> {
             slab_hi: Default::default(),
             dx_abs: Default::default(),
             dy_abs: Default::default(),
-            par_dx_neg: Default::default(),
-            par_dx_mag: Default::default(),
-            par_dy_neg: Default::default(),
-            par_dy_mag: Default::default(),
+            par_dxn: Default::default(),
+            par_dxm: Default::default(),
+            par_dx_pos: Default::default(),
+            par_dyn: Default::default(),
+            par_dym: Default::default(),
+            par_dy_pos: Default::default(),
             div_x: Divider::new(c.perspective),
             div_y: Divider::new(c.perspective),
             sx: Default::default(),
@@ -302,7 +310,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         dff_setup!(
             self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
             dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v, m_w_lo, m_w_hi,
-            m_pad, addr
+            m_pad, addr, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym, par_dy_pos
         );
         // The view registers' fields.
         self.nx.next = self.dims.val().get_bits::<16>(0);
@@ -327,10 +335,16 @@ impl<const A: usize> Logic for CfbLane<A> {
         if self.dy.val().get_bit(63) {
             self.dy_abs.next = 0 - self.dy.val();
         }
-        self.par_dx_neg.next = self.dx.val().get_bit(63);
-        self.par_dx_mag.next = self.dx_abs.val().get_bits::<32>(0);
-        self.par_dy_neg.next = self.dy.val().get_bit(63);
-        self.par_dy_mag.next = self.dy_abs.val().get_bits::<32>(0);
+        self.par_dxm.d.next = self.dx_abs.val().get_bits::<32>(0);
+        self.par_dxn.d.next =
+            self.dx.val().get_bit(63) & (self.dx_abs.val().get_bits::<32>(0) != 0);
+        self.par_dx_pos.d.next =
+            !self.dx.val().get_bit(63) & (self.dx_abs.val().get_bits::<32>(0) != 0);
+        self.par_dym.d.next = self.dy_abs.val().get_bits::<32>(0);
+        self.par_dyn.d.next =
+            self.dy.val().get_bit(63) & (self.dy_abs.val().get_bits::<32>(0) != 0);
+        self.par_dy_pos.d.next =
+            !self.dy.val().get_bit(63) & (self.dy_abs.val().get_bits::<32>(0) != 0);
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
         self.memory.write_enable.next =
@@ -404,10 +418,14 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.div_x.den.next = self.sz_mag.val();
         self.div_y.num.next = (self.sy_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
         self.div_y.den.next = self.sz_mag.val();
-        self.dxn.next = self.par_dx_neg.val();
-        self.dxm.next = self.par_dx_mag.val();
-        self.dyn_.next = self.par_dy_neg.val();
-        self.dym.next = self.par_dy_mag.val();
+        self.dxn.next = self.par_dxn.q.val();
+        self.dxm.next = self.par_dxm.q.val();
+        self.dyn_.next = self.par_dyn.q.val();
+        self.dym.next = self.par_dym.q.val();
+        self.dx_pos.next = self.par_dx_pos.q.val();
+        self.dx_neg_nz.next = self.par_dxn.q.val();
+        self.dy_pos.next = self.par_dy_pos.q.val();
+        self.dy_neg_nz.next = self.par_dyn.q.val();
         self.inval.next = false;
         if self.perspective.val() {
             self.dxn.next = self.sx.val().get_bit(63) ^ self.sz.val().get_bit(63);
@@ -430,12 +448,16 @@ impl<const A: usize> Logic for CfbLane<A> {
                     self.dym.next = self.one.val();
                 }
             }
-        }
-        if self.dxm.val() == 0 {
-            self.dxn.next = false;
-        }
-        if self.dym.val() == 0 {
-            self.dyn_.next = false;
+            if self.dxm.val() == 0 {
+                self.dxn.next = false;
+            }
+            if self.dym.val() == 0 {
+                self.dyn_.next = false;
+            }
+            self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
+            self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
+            self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
+            self.dy_neg_nz.next = self.dyn_.val() & (self.dym.val() != 0);
         }
         if self.is_pad.val() {
             self.dxm.next = 0.into();
@@ -443,10 +465,6 @@ impl<const A: usize> Logic for CfbLane<A> {
             self.dxn.next = false;
             self.dyn_.next = false;
         }
-        self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
-        self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
-        self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
-        self.dy_neg_nz.next = self.dyn_.val() & (self.dym.val() != 0);
         // Exit face and base-plane address.
         self.face_c.next = 0.into();
         self.depth.next = self.z1.val() - self.n_s.val();

@@ -13,15 +13,16 @@
 //! constant-folded away by synthesis); the order, and MIP or MinIP, come
 //! from the `Order` register, bits 0 and 1. The over operator is
 //! [`PipedOver`], one 16x16 multiplier per channel with a clock to itself:
-//! stage 1 the operands' selection and the product (the scalar modes'
-//! result), stage 2 the rounding, sum and saturation.
+//! stage 1 the operands' selection and the weight `M - A_front` (the scalar
+//! modes' result), stage 2 the product, stage 3 the rounding, sum and
+//! saturation.
 
 use crate::common::mode_class::ModeClass;
-use crate::common::piped_over::PipedOver;
+use crate::common::piped_over::{self, PipedOver};
 use rust_hdl::prelude::*;
 
 /// Clocks from the operands to the composited value.
-pub const LATENCY: usize = 2;
+pub const LATENCY: usize = 1 + piped_over::LATENCY;
 
 /// The compositing unit. Channels are `[r, g, b, a]`; the scalar modes use
 /// channel r only and carry 0 in the others. Channel r is 32 bits wide for
@@ -51,8 +52,9 @@ pub struct Compositor {
     ch_g: PipedOver,
     ch_b: PipedOver,
     ch_a: PipedOver,
-    /// Stage 1: the scalar modes' result.
+    /// Stage 1: the scalar modes' result, and its stage 2.
     scalar_q: DFF<Bits<32>>,
+    scalar_qq: DFF<Bits<32>>,
     reg_r: DFF<Bits<32>>,
     reg_g: DFF<Bits<16>>,
     reg_b: DFF<Bits<16>>,
@@ -84,6 +86,7 @@ impl Compositor {
             ch_b: PipedOver::new(rgba_bits),
             ch_a: PipedOver::new(rgba_bits),
             scalar_q: Default::default(),
+            scalar_qq: Default::default(),
             reg_r: Default::default(),
             reg_g: Default::default(),
             reg_b: Default::default(),
@@ -95,7 +98,7 @@ impl Compositor {
 impl Logic for Compositor {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, scalar_q, reg_r, reg_g, reg_b, reg_a);
+        dff_setup!(self, clock, scalar_q, scalar_qq, reg_r, reg_g, reg_b, reg_a);
         self.ch_r.clock.next = self.clock.val();
         self.ch_g.clock.next = self.clock.val();
         self.ch_b.clock.next = self.clock.val();
@@ -141,8 +144,9 @@ impl Logic for Compositor {
         } else {
             self.scalar_q.d.next = self.acc_r.val() + self.new_r.val();
         }
-        // Stage 2.
-        self.reg_r.d.next = self.scalar_q.q.val();
+        // Stages 2 and 3.
+        self.scalar_qq.d.next = self.scalar_q.q.val();
+        self.reg_r.d.next = self.scalar_qq.q.val();
         self.reg_g.d.next = 0.into();
         self.reg_b.d.next = 0.into();
         self.reg_a.d.next = 0.into();

@@ -1,7 +1,7 @@
 //! The control delay line of a Cube-4L pipeline (§3.5-3.7, Fig. 18): a
 //! beat's control travels beside its voxel, from the shader's input to the
 //! taps, the 2x2 selection and the bilinear unit (the gather, T) and on to
-//! the compositor's result (T+L+2, L the bilinear unit's latency), where it
+//! the compositor's result (T+L+3, L the bilinear unit's latency), where it
 //! marks the result and, on ER, makes it a base-plane pixel.
 //!
 //! The shader takes `shader::LATENCY` clocks, so its input is `T - 1 -
@@ -16,9 +16,9 @@ use rust_hdl::prelude::*;
 const GATHER: usize = 1 + GATHER_DELAY;
 const RESULT: usize = GATHER + LATENCY + super::compositor::LATENCY;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
-// written for a gather 8 clocks and a result 17 clocks after the input.
+// written for a gather 8 clocks and a result 18 clocks after the input.
 const _: () = assert!(
-    GATHER == 8 && RESULT == 17,
+    GATHER == 8 && RESULT == 18,
     "update the literals in ControlDelay::update"
 );
 
@@ -40,6 +40,8 @@ pub struct ControlDelay {
     pub dx_mag: Signal<In, Bits<16>>,
     pub dy_neg: Signal<In, Bit>,
     pub dy_mag: Signal<In, Bits<16>>,
+    /// The `Dims` register (the slice's n_x and n_y).
+    pub dims: Signal<In, Bits<64>>,
     /// At the gather (T): the voxel's position, SR, dx and dy.
     pub x_t: Signal<Out, Bits<16>>,
     pub y_t: Signal<Out, Bits<16>>,
@@ -48,7 +50,11 @@ pub struct ControlDelay {
     pub dx_mag_t: Signal<Out, Bits<16>>,
     pub dy_neg_t: Signal<Out, Bit>,
     pub dy_mag_t: Signal<Out, Bits<16>>,
-    /// At T+L+2, beside the composited value: a beat, one that is not
+    /// At T: the x (y) neighbour by the sign of dx (dy) lies outside the
+    /// slice, compared a clock ahead and registered for the 2x2 selection.
+    pub x_out_t: Signal<Out, Bit>,
+    pub y_out_t: Signal<Out, Bit>,
+    /// At T+L+3, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
     pub res_valid: Signal<Out, Bit>,
@@ -56,6 +62,11 @@ pub struct ControlDelay {
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
     pub px_face: Signal<Out, Bits<3>>,
+    /// `n_x - 1` and `n_y - 1`, registered from `Dims` (constant in a sweep).
+    nx_last: DFF<Bits<16>>,
+    ny_last: DFF<Bits<16>>,
+    x_out_q: DFF<Bit>,
+    y_out_q: DFF<Bit>,
     // Control to the gather.
     x_q: [DFF<Bits<16>>; GATHER],
     y_q: [DFF<Bits<16>>; GATHER],
@@ -76,6 +87,7 @@ pub struct ControlDelay {
 impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(self, clock, nx_last, ny_last, x_out_q, y_out_q);
         for i in 0..8 {
             self.x_q[i].clock.next = self.clock.val();
             self.y_q[i].clock.next = self.clock.val();
@@ -85,7 +97,7 @@ impl Logic for ControlDelay {
             self.dyn_q[i].clock.next = self.clock.val();
             self.dym_q[i].clock.next = self.clock.val();
         }
-        for i in 0..17 {
+        for i in 0..18 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -117,6 +129,27 @@ impl Logic for ControlDelay {
         self.dx_mag_t.next = self.dxm_q[7].q.val();
         self.dy_neg_t.next = self.dyn_q[7].q.val();
         self.dy_mag_t.next = self.dym_q[7].q.val();
+        // The slice-edge tests of the 2x2 selection, from the control at T-1.
+        self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
+        self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.x_out_q.d.next = false;
+        if self.dxm_q[6].q.val() != 0 {
+            if self.dxn_q[6].q.val() {
+                self.x_out_q.d.next = self.x_q[6].q.val() == self.nx_last.q.val();
+            } else {
+                self.x_out_q.d.next = self.x_q[6].q.val() == 0;
+            }
+        }
+        self.y_out_q.d.next = false;
+        if self.dym_q[6].q.val() != 0 {
+            if self.dyn_q[6].q.val() {
+                self.y_out_q.d.next = self.y_q[6].q.val() == self.ny_last.q.val();
+            } else {
+                self.y_out_q.d.next = self.y_q[6].q.val() == 0;
+            }
+        }
+        self.x_out_t.next = self.x_out_q.q.val();
+        self.y_out_t.next = self.y_out_q.q.val();
         // The input -> the result.
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();
@@ -124,7 +157,7 @@ impl Logic for ControlDelay {
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..17 {
+        for i in 1..18 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -132,11 +165,11 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[16].q.val();
-        self.res_valid.next = self.v_q[16].q.val() & !self.pad_q[16].q.val();
-        self.px_valid.next = self.v_q[16].q.val() & self.er_q[16].q.val() & !self.pad_q[16].q.val();
-        self.px_x.next = self.bx_q[16].q.val();
-        self.px_y.next = self.by_q[16].q.val();
-        self.px_face.next = self.face_q[16].q.val();
+        self.res_beat.next = self.v_q[17].q.val();
+        self.res_valid.next = self.v_q[17].q.val() & !self.pad_q[17].q.val();
+        self.px_valid.next = self.v_q[17].q.val() & self.er_q[17].q.val() & !self.pad_q[17].q.val();
+        self.px_x.next = self.bx_q[17].q.val();
+        self.px_y.next = self.by_q[17].q.val();
+        self.px_face.next = self.face_q[17].q.val();
     }
 }

@@ -264,6 +264,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.dx_mag.next = self.feed.o_dx_mag.val();
         self.ctl.dy_neg.next = self.feed.o_dy_neg.val();
         self.ctl.dy_mag.next = self.feed.o_dy_mag.val();
+        self.ctl.dims.next = self.dims.val();
         // The compositing-buffer taps (T).
         self.taps.clock.next = self.clock.val();
         self.taps.beats.next = self.beats.val();
@@ -295,10 +296,9 @@ impl<const H: usize> Logic for PipeLane<H> {
         for c in 0..9 {
             self.cells.a[c].next = self.taps.a[c].val();
         }
-        self.cells.dims.next = self.dims.val();
         self.cells.order.next = self.order.val();
-        self.cells.x.next = self.ctl.x_t.val();
-        self.cells.y.next = self.ctl.y_t.val();
+        self.cells.x_out.next = self.ctl.x_out_t.val();
+        self.cells.y_out.next = self.ctl.y_out_t.val();
         self.cells.sr.next = self.ctl.sr_t.val();
         self.cells.dx_neg.next = self.ctl.dx_neg_t.val();
         self.cells.dx_mag.next = self.ctl.dx_mag_t.val();

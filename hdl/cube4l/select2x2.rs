@@ -7,8 +7,9 @@
 //! `golden_model::cube4l::compositor::gather`; with dx = 0 (dy = 0) the
 //! x (y) neighbour is the voxel's own cell, whose weight is 0. A neighbour
 //! outside the slice, and every cell at the start of a ray (SR), reads as
-//! the reset value (the intensity's maximum for MinIP, else 0). The slice's
-//! size and MinIP come from the `Dims` and `Order` registers.
+//! the reset value (the intensity's maximum for MinIP, else 0): whether the
+//! neighbour lies outside comes registered from the control delay
+//! (`x_out`, `y_out`), and MinIP from the `Order` register.
 
 use super::config::PipelineConfig;
 use crate::common::mode_class::ModeClass;
@@ -20,25 +21,23 @@ use rust_hdl::prelude::*;
 pub struct Select2x2 {
     /// The nine cells at T, in `TAPS` order.
     pub a: [Signal<In, Bits<64>>; 9],
-    /// The voxel at T: its position, SR, and dx and dy as sign and magnitude.
-    pub x: Signal<In, Bits<16>>,
-    pub y: Signal<In, Bits<16>>,
+    /// The voxel at T: SR, dx and dy as sign and magnitude, and whether its
+    /// x and y neighbours lie outside the slice.
     pub sr: Signal<In, Bit>,
     pub dx_neg: Signal<In, Bit>,
     pub dx_mag: Signal<In, Bits<16>>,
     pub dy_neg: Signal<In, Bit>,
     pub dy_mag: Signal<In, Bits<16>>,
+    pub x_out: Signal<In, Bit>,
+    pub y_out: Signal<In, Bit>,
     /// The cells `cXY[channel]`, X/Y = 1 the neighbour by the sign of dx/dy,
     /// as `Bilinear` takes them.
     pub c00: [Signal<Out, Bits<32>>; 4],
     pub c10: [Signal<Out, Bits<32>>; 4],
     pub c01: [Signal<Out, Bits<32>>; 4],
     pub c11: [Signal<Out, Bits<32>>; 4],
-    /// The `Dims` and `Order` registers.
-    pub dims: Signal<In, Bits<64>>,
+    /// The `Order` register.
     pub order: Signal<In, Bits<64>>,
-    nx_last: Signal<Local, Bits<16>>,
-    ny_last: Signal<Local, Bits<16>>,
     reset: Signal<Local, Bits<64>>,
     /// MinIP's reset value: the largest intensity.
     vmax: Constant<Bits<64>>,
@@ -50,8 +49,6 @@ pub struct Select2x2 {
     w10: Signal<Local, Bits<64>>,
     w01: Signal<Local, Bits<64>>,
     w11: Signal<Local, Bits<64>>,
-    x_out: Signal<Local, Bit>,
-    y_out: Signal<Local, Bit>,
 }
 
 impl Select2x2 {
@@ -59,21 +56,18 @@ impl Select2x2 {
         let xray = c.mode == ModeClass::Xray;
         Select2x2 {
             a: Default::default(),
-            x: Default::default(),
-            y: Default::default(),
             sr: Default::default(),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
+            x_out: Default::default(),
+            y_out: Default::default(),
             c00: Default::default(),
             c10: Default::default(),
             c01: Default::default(),
             c11: Default::default(),
-            dims: Default::default(),
             order: Default::default(),
-            nx_last: Default::default(),
-            ny_last: Default::default(),
             reset: Default::default(),
             vmax: Constant::new((max_of(c.voxel_bits) as u64).to_bits()),
             r_mask: Constant::new((if xray { 0xffff_ffffu64 } else { 0xffff }).to_bits()),
@@ -82,8 +76,6 @@ impl Select2x2 {
             w10: Default::default(),
             w01: Default::default(),
             w11: Default::default(),
-            x_out: Default::default(),
-            y_out: Default::default(),
         }
     }
 }
@@ -91,8 +83,6 @@ impl Select2x2 {
 impl Logic for Select2x2 {
     #[hdl_gen]
     fn update(&mut self) {
-        self.nx_last.next = self.dims.val().get_bits::<16>(0) - 1;
-        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
         self.reset.next = 0.into();
         if self.order.val().get_bit(1) {
             self.reset.next = self.vmax.val();
@@ -102,24 +92,18 @@ impl Logic for Select2x2 {
         self.w10.next = self.a[0].val();
         self.w01.next = self.a[0].val();
         self.w11.next = self.a[0].val();
-        self.x_out.next = false;
-        self.y_out.next = false;
         if self.dx_mag.val() != 0 {
             if self.dx_neg.val() {
                 self.w10.next = self.a[2].val();
-                self.x_out.next = self.x.val() == self.nx_last.val();
             } else {
                 self.w10.next = self.a[1].val();
-                self.x_out.next = self.x.val() == 0;
             }
         }
         if self.dy_mag.val() != 0 {
             if self.dy_neg.val() {
                 self.w01.next = self.a[4].val();
-                self.y_out.next = self.y.val() == self.ny_last.val();
             } else {
                 self.w01.next = self.a[3].val();
-                self.y_out.next = self.y.val() == 0;
             }
         }
         self.w11.next = self.w01.val();

@@ -924,6 +924,24 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -1027,10 +1045,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -1063,6 +1077,36 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$cfb$lanes$0$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$cfb$lanes$0$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$cfb$lanes$0$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$cfb$lanes$0$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$cfb$lanes$0$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$cfb$lanes$0$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -1224,6 +1268,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -1250,6 +1300,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -1271,10 +1327,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -1335,10 +1393,14 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -1356,12 +1418,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -1369,10 +1435,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -1848,6 +1910,108 @@ module top$cfb$lanes$0$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$pad_q
+module top$cfb$lanes$0$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dx_pos
+module top$cfb$lanes$0$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dxm
+module top$cfb$lanes$0$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dxn
+module top$cfb$lanes$0$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dy_pos
+module top$cfb$lanes$0$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dym
+module top$cfb$lanes$0$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$par_dyn
 module top$cfb$lanes$0$sr_q(d,q,clock);
     
     // Module arguments
@@ -1977,6 +2141,24 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -2080,10 +2262,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -2116,6 +2294,36 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$cfb$lanes$1$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$cfb$lanes$1$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$cfb$lanes$1$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$cfb$lanes$1$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$cfb$lanes$1$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$cfb$lanes$1$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -2277,6 +2485,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -2303,6 +2517,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -2324,10 +2544,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -2388,10 +2610,14 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -2409,12 +2635,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -2422,10 +2652,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -2901,6 +3127,108 @@ module top$cfb$lanes$1$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$pad_q
+module top$cfb$lanes$1$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dx_pos
+module top$cfb$lanes$1$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dxm
+module top$cfb$lanes$1$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dxn
+module top$cfb$lanes$1$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dy_pos
+module top$cfb$lanes$1$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dym
+module top$cfb$lanes$1$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$par_dyn
 module top$cfb$lanes$1$sr_q(d,q,clock);
     
     // Module arguments
@@ -3030,6 +3358,24 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -3133,10 +3479,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -3169,6 +3511,36 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$cfb$lanes$2$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$cfb$lanes$2$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$cfb$lanes$2$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$cfb$lanes$2$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$cfb$lanes$2$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$cfb$lanes$2$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -3330,6 +3702,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -3356,6 +3734,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -3377,10 +3761,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3441,10 +3827,14 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -3462,12 +3852,16 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -3475,10 +3869,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -3954,6 +4344,108 @@ module top$cfb$lanes$2$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$pad_q
+module top$cfb$lanes$2$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dx_pos
+module top$cfb$lanes$2$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dxm
+module top$cfb$lanes$2$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dxn
+module top$cfb$lanes$2$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dy_pos
+module top$cfb$lanes$2$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dym
+module top$cfb$lanes$2$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$par_dyn
 module top$cfb$lanes$2$sr_q(d,q,clock);
     
     // Module arguments
@@ -4083,6 +4575,24 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -4186,10 +4696,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -4222,6 +4728,36 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$cfb$lanes$3$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$cfb$lanes$3$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$cfb$lanes$3$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$cfb$lanes$3$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$cfb$lanes$3$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$cfb$lanes$3$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -4383,6 +4919,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -4409,6 +4951,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -4430,10 +4978,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -4494,10 +5044,14 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -4515,12 +5069,16 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -4528,10 +5086,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -5007,6 +5561,108 @@ module top$cfb$lanes$3$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$pad_q
+module top$cfb$lanes$3$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dx_pos
+module top$cfb$lanes$3$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dxm
+module top$cfb$lanes$3$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dxn
+module top$cfb$lanes$3$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dy_pos
+module top$cfb$lanes$3$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dym
+module top$cfb$lanes$3$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$par_dyn
 module top$cfb$lanes$3$sr_q(d,q,clock);
     
     // Module arguments
@@ -6341,6 +6997,24 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -6444,10 +7118,6 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -6480,6 +7150,36 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$0$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$late$lanes$0$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$late$lanes$0$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$late$lanes$0$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$late$lanes$0$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$late$lanes$0$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$late$lanes$0$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -6641,6 +7341,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -6667,6 +7373,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -6688,10 +7400,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -6752,10 +7466,14 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -6773,12 +7491,16 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -6786,10 +7508,6 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -7265,6 +7983,108 @@ module top$late$lanes$0$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$pad_q
+module top$late$lanes$0$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dx_pos
+module top$late$lanes$0$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dxm
+module top$late$lanes$0$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dxn
+module top$late$lanes$0$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dy_pos
+module top$late$lanes$0$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dym
+module top$late$lanes$0$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$par_dyn
 module top$late$lanes$0$sr_q(d,q,clock);
     
     // Module arguments
@@ -7394,6 +8214,24 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -7497,10 +8335,6 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -7533,6 +8367,36 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$1$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$late$lanes$1$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$late$lanes$1$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$late$lanes$1$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$late$lanes$1$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$late$lanes$1$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$late$lanes$1$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -7694,6 +8558,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -7720,6 +8590,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -7741,10 +8617,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -7805,10 +8683,14 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -7826,12 +8708,16 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -7839,10 +8725,6 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -8318,6 +9200,108 @@ module top$late$lanes$1$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$pad_q
+module top$late$lanes$1$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dx_pos
+module top$late$lanes$1$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dxm
+module top$late$lanes$1$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dxn
+module top$late$lanes$1$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dy_pos
+module top$late$lanes$1$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dym
+module top$late$lanes$1$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$par_dyn
 module top$late$lanes$1$sr_q(d,q,clock);
     
     // Module arguments
@@ -8447,6 +9431,24 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -8550,10 +9552,6 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -8586,6 +9584,36 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$2$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$late$lanes$2$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$late$lanes$2$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$late$lanes$2$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$late$lanes$2$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$late$lanes$2$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$late$lanes$2$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -8747,6 +9775,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -8773,6 +9807,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -8794,10 +9834,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -8858,10 +9900,14 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -8879,12 +9925,16 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -8892,10 +9942,6 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -9371,6 +10417,108 @@ module top$late$lanes$2$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$pad_q
+module top$late$lanes$2$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dx_pos
+module top$late$lanes$2$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dxm
+module top$late$lanes$2$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dxn
+module top$late$lanes$2$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dy_pos
+module top$late$lanes$2$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dym
+module top$late$lanes$2$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$par_dyn
 module top$late$lanes$2$sr_q(d,q,clock);
     
     // Module arguments
@@ -9500,6 +10648,24 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  par_dxn$d;
+    wire  par_dxn$q;
+    reg  par_dxn$clock;
+    reg  [31:0] par_dxm$d;
+    wire  [31:0] par_dxm$q;
+    reg  par_dxm$clock;
+    reg  par_dx_pos$d;
+    wire  par_dx_pos$q;
+    reg  par_dx_pos$clock;
+    reg  par_dyn$d;
+    wire  par_dyn$q;
+    reg  par_dyn$clock;
+    reg  [31:0] par_dym$d;
+    wire  [31:0] par_dym$q;
+    reg  par_dym$clock;
+    reg  par_dy_pos$d;
+    wire  par_dy_pos$q;
+    reg  par_dy_pos$clock;
     reg  [63:0] div_x$num;
     reg  [63:0] div_x$den;
     wire  [31:0] div_x$q = 'h0;
@@ -9603,10 +10769,6 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  par_dx_neg;
-    reg  [31:0] par_dx_mag;
-    reg  par_dy_neg;
-    reg  [31:0] par_dy_mag;
     reg  [63:0] sx;
     reg  [63:0] sy;
     reg  [63:0] sz;
@@ -9639,6 +10801,36 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$3$par_dxn par_dxn(
+        .d(par_dxn$d),
+        .q(par_dxn$q),
+        .clock(par_dxn$clock)
+    );
+    top$late$lanes$3$par_dxm par_dxm(
+        .d(par_dxm$d),
+        .q(par_dxm$q),
+        .clock(par_dxm$clock)
+    );
+    top$late$lanes$3$par_dx_pos par_dx_pos(
+        .d(par_dx_pos$d),
+        .q(par_dx_pos$q),
+        .clock(par_dx_pos$clock)
+    );
+    top$late$lanes$3$par_dyn par_dyn(
+        .d(par_dyn$d),
+        .q(par_dyn$q),
+        .clock(par_dyn$clock)
+    );
+    top$late$lanes$3$par_dym par_dym(
+        .d(par_dym$d),
+        .q(par_dym$q),
+        .clock(par_dym$clock)
+    );
+    top$late$lanes$3$par_dy_pos par_dy_pos(
+        .d(par_dy_pos$d),
+        .q(par_dy_pos$q),
+        .clock(par_dy_pos$clock)
     );
     top$late$lanes$3$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -9800,6 +10992,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        par_dxn$clock = clock;
+        par_dxm$clock = clock;
+        par_dx_pos$clock = clock;
+        par_dyn$clock = clock;
+        par_dym$clock = clock;
+        par_dy_pos$clock = clock;
         x_q$d = x_q$q;
         y_q$d = y_q$q;
         z_q$d = z_q$q;
@@ -9826,6 +11024,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        par_dxn$d = par_dxn$q;
+        par_dxm$d = par_dxm$q;
+        par_dx_pos$d = par_dx_pos$q;
+        par_dyn$d = par_dyn$q;
+        par_dym$d = par_dym$q;
+        par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
         nx_last = dims[('h0)+:(16)] - 'h1;
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -9847,10 +11051,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         if (dy['h3f]) begin
             dy_abs = 'h0 - dy;
         end
-        par_dx_neg = dx['h3f];
-        par_dx_mag = dx_abs[('h0)+:(32)];
-        par_dy_neg = dy['h3f];
-        par_dy_mag = dy_abs[('h0)+:(32)];
+        par_dxm$d = dx_abs[('h0)+:(32)];
+        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs[('h0)+:(32)];
+        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -9911,10 +11117,14 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         div_x$den = sz_mag;
         div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
         div_y$den = sz_mag;
-        dxn = par_dx_neg;
-        dxm = par_dx_mag;
-        dyn_ = par_dy_neg;
-        dym = par_dy_mag;
+        dxn = par_dxn$q;
+        dxm = par_dxm$q;
+        dyn_ = par_dyn$q;
+        dym = par_dym$q;
+        dx_pos = par_dx_pos$q;
+        dx_neg_nz = par_dxn$q;
+        dy_pos = par_dy_pos$q;
+        dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
             dxn = sx['h3f] ^ sz['h3f];
@@ -9932,12 +11142,16 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
                     dym = one;
                 end
             end
-        end
-        if (dxm == 'h0) begin
-            dxn = 1'b0;
-        end
-        if (dym == 'h0) begin
-            dyn_ = 1'b0;
+            if (dxm == 'h0) begin
+                dxn = 1'b0;
+            end
+            if (dym == 'h0) begin
+                dyn_ = 1'b0;
+            end
+            dx_pos = ~dxn & (dxm != 'h0);
+            dx_neg_nz = dxn & (dxm != 'h0);
+            dy_pos = ~dyn_ & (dym != 'h0);
+            dy_neg_nz = dyn_ & (dym != 'h0);
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -9945,10 +11159,6 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxn = 1'b0;
             dyn_ = 1'b0;
         end
-        dx_pos = ~dxn & (dxm != 'h0);
-        dx_neg_nz = dxn & (dxm != 'h0);
-        dy_pos = ~dyn_ & (dym != 'h0);
-        dy_neg_nz = dyn_ & (dym != 'h0);
         face_c = 'h0;
         depth = z1 - n_s;
         bx = border + xc;
@@ -10424,6 +11634,108 @@ module top$late$lanes$3$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$pad_q
+module top$late$lanes$3$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dx_pos
+module top$late$lanes$3$par_dxm(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dxm
+module top$late$lanes$3$par_dxn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dxn
+module top$late$lanes$3$par_dy_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dy_pos
+module top$late$lanes$3$par_dym(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dym
+module top$late$lanes$3$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$par_dyn
 module top$late$lanes$3$sr_q(d,q,clock);
     
     // Module arguments

@@ -171,6 +171,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
+    reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -178,6 +179,8 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$x_out_t;
+    wire  ctl$y_out_t;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -230,13 +233,13 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  [15:0] cells$x;
-    reg  [15:0] cells$y;
     reg  cells$sr;
     reg  cells$dx_neg;
     reg  [15:0] cells$dx_mag;
     reg  cells$dy_neg;
     reg  [15:0] cells$dy_mag;
+    reg  cells$x_out;
+    reg  cells$y_out;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -253,7 +256,6 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [31:0] cells$c11$1;
     wire  [31:0] cells$c11$2;
     wire  [31:0] cells$c11$3;
-    reg  [63:0] cells$dims;
     reg  [63:0] cells$order;
     reg  bilinear$clock;
     reg  [31:0] bilinear$c00$0;
@@ -385,6 +387,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
+        .dims(ctl$dims),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -392,6 +395,8 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
+        .x_out_t(ctl$x_out_t),
+        .y_out_t(ctl$y_out_t),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -448,13 +453,13 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .x(cells$x),
-        .y(cells$y),
         .sr(cells$sr),
         .dx_neg(cells$dx_neg),
         .dx_mag(cells$dx_mag),
         .dy_neg(cells$dy_neg),
         .dy_mag(cells$dy_mag),
+        .x_out(cells$x_out),
+        .y_out(cells$y_out),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -471,7 +476,6 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .c11$1(cells$c11$1),
         .c11$2(cells$c11$2),
         .c11$3(cells$c11$3),
-        .dims(cells$dims),
         .order(cells$order)
     );
     top$lanes$0$bilinear bilinear(
@@ -577,6 +581,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
+        ctl$dims = dims;
         taps$clock = clock;
         taps$beats = beats;
         taps$x = ctl$x_t;
@@ -612,10 +617,9 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$6 = taps$a$6;
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
-        cells$dims = dims;
         cells$order = order;
-        cells$x = ctl$x_t;
-        cells$y = ctl$y_t;
+        cells$x_out = ctl$x_out_t;
+        cells$y_out = ctl$y_out_t;
         cells$sr = ctl$sr_t;
         cells$dx_neg = ctl$dx_neg_t;
         cells$dx_mag = ctl$dx_mag_t;
@@ -663,7 +667,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$0
-module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -675,13 +679,13 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  [15:0] x;
-    input wire  [15:0] y;
     input wire  sr;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  x_out;
+    input wire  y_out;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -698,7 +702,6 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     output reg  [31:0] c11$1;
     output reg  [31:0] c11$2;
     output reg  [31:0] c11$3;
-    input wire  [63:0] dims;
     input wire  [63:0] order;
     
     // Constant declarations
@@ -707,20 +710,14 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     localparam  gba_mask = 64'hffff;
     
     // Local signals
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
     reg  [63:0] reset;
     reg  [63:0] w00;
     reg  [63:0] w10;
     reg  [63:0] w01;
     reg  [63:0] w11;
-    reg  x_out;
-    reg  y_out;
     
     // Update code
     always @(*) begin
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
         reset = 'h0;
         if (order['h1]) begin
             reset = vmax;
@@ -729,26 +726,20 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
         w10 = a$0;
         w01 = a$0;
         w11 = a$0;
-        x_out = 1'b0;
-        y_out = 1'b0;
         if (dx_mag != 'h0) begin
             if (dx_neg) begin
                 w10 = a$2;
-                x_out = x == nx_last;
             end
             else begin
                 w10 = a$1;
-                x_out = x == 'h0;
             end
         end
         if (dy_mag != 'h0) begin
             if (dy_neg) begin
                 w01 = a$4;
-                y_out = y == ny_last;
             end
             else begin
                 w01 = a$3;
-                y_out = y == 'h0;
             end
         end
         w11 = w01;
@@ -804,7 +795,7 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -821,6 +812,7 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  [63:0] dims;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -828,6 +820,8 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
+    output reg  x_out_t;
+    output reg  y_out_t;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -836,6 +830,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  x_out_q$d;
+    wire  x_out_q$q;
+    reg  x_out_q$clock;
+    reg  y_out_q$d;
+    wire  y_out_q$q;
+    reg  y_out_q$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -1055,6 +1061,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$16$d;
     wire  v_q$16$q;
     reg  v_q$16$clock;
+    reg  v_q$17$d;
+    wire  v_q$17$q;
+    reg  v_q$17$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -1106,6 +1115,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$16$d;
     wire  er_q$16$q;
     reg  er_q$16$clock;
+    reg  er_q$17$d;
+    wire  er_q$17$q;
+    reg  er_q$17$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -1157,6 +1169,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$16$d;
     wire  pad_q$16$q;
     reg  pad_q$16$clock;
+    reg  pad_q$17$d;
+    wire  pad_q$17$q;
+    reg  pad_q$17$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -1208,6 +1223,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$16$d;
     wire  [15:0] bx_q$16$q;
     reg  bx_q$16$clock;
+    reg  [15:0] bx_q$17$d;
+    wire  [15:0] bx_q$17$q;
+    reg  bx_q$17$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -1259,6 +1277,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$16$d;
     wire  [15:0] by_q$16$q;
     reg  by_q$16$clock;
+    reg  [15:0] by_q$17$d;
+    wire  [15:0] by_q$17$q;
+    reg  by_q$17$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1310,8 +1331,31 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$16$d;
     wire  [2:0] face_q$16$q;
     reg  face_q$16$clock;
+    reg  [2:0] face_q$17$d;
+    wire  [2:0] face_q$17$q;
+    reg  face_q$17$clock;
     
     // Sub module instances
+    top$lanes$0$ctl$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$lanes$0$ctl$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$lanes$0$ctl$x_out_q x_out_q(
+        .d(x_out_q$d),
+        .q(x_out_q$q),
+        .clock(x_out_q$clock)
+    );
+    top$lanes$0$ctl$y_out_q y_out_q(
+        .d(y_out_q$d),
+        .q(y_out_q$q),
+        .clock(y_out_q$clock)
+    );
     top$lanes$0$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
         .q(x_q$0$q),
@@ -1677,6 +1721,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$16$q),
         .clock(v_q$16$clock)
     );
+    top$lanes$0$ctl$v_q$17 v_q$17(
+        .d(v_q$17$d),
+        .q(v_q$17$q),
+        .clock(v_q$17$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1761,6 +1810,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$16$d),
         .q(er_q$16$q),
         .clock(er_q$16$clock)
+    );
+    top$lanes$0$ctl$er_q$17 er_q$17(
+        .d(er_q$17$d),
+        .q(er_q$17$q),
+        .clock(er_q$17$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1847,6 +1901,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$16$q),
         .clock(pad_q$16$clock)
     );
+    top$lanes$0$ctl$pad_q$17 pad_q$17(
+        .d(pad_q$17$d),
+        .q(pad_q$17$q),
+        .clock(pad_q$17$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1931,6 +1990,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$16$d),
         .q(bx_q$16$q),
         .clock(bx_q$16$clock)
+    );
+    top$lanes$0$ctl$bx_q$17 bx_q$17(
+        .d(bx_q$17$d),
+        .q(bx_q$17$q),
+        .clock(bx_q$17$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -2017,6 +2081,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$16$q),
         .clock(by_q$16$clock)
     );
+    top$lanes$0$ctl$by_q$17 by_q$17(
+        .d(by_q$17$d),
+        .q(by_q$17$q),
+        .clock(by_q$17$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -2102,9 +2171,22 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$16$q),
         .clock(face_q$16$clock)
     );
+    top$lanes$0$ctl$face_q$17 face_q$17(
+        .d(face_q$17$d),
+        .q(face_q$17$q),
+        .clock(face_q$17$clock)
+    );
     
     // Update code
     always @(*) begin
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        x_out_q$clock = clock;
+        y_out_q$clock = clock;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        x_out_q$d = x_out_q$q;
+        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
         y_q$0$clock = clock;
         sr_q$0$clock = clock;
@@ -2263,6 +2345,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$clock = clock;
         by_q$16$clock = clock;
         face_q$16$clock = clock;
+        v_q$17$clock = clock;
+        er_q$17$clock = clock;
+        pad_q$17$clock = clock;
+        bx_q$17$clock = clock;
+        by_q$17$clock = clock;
+        face_q$17$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -2326,6 +2414,28 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dx_mag_t = dxm_q$7$q;
         dy_neg_t = dyn_q$7$q;
         dy_mag_t = dym_q$7$q;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        x_out_q$d = 1'b0;
+        if (dxm_q$6$q != 'h0) begin
+            if (dxn_q$6$q) begin
+                x_out_q$d = x_q$6$q == nx_last$q;
+            end
+            else begin
+                x_out_q$d = x_q$6$q == 'h0;
+            end
+        end
+        y_out_q$d = 1'b0;
+        if (dym_q$6$q != 'h0) begin
+            if (dyn_q$6$q) begin
+                y_out_q$d = y_q$6$q == ny_last$q;
+            end
+            else begin
+                y_out_q$d = y_q$6$q == 'h0;
+            end
+        end
+        x_out_t = x_out_q$q;
+        y_out_t = y_out_q$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -2428,12 +2538,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$d = bx_q$15$q;
         by_q$16$d = by_q$15$q;
         face_q$16$d = face_q$15$q;
-        res_beat = v_q$16$q;
-        res_valid = v_q$16$q & ~pad_q$16$q;
-        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
-        px_x = bx_q$16$q;
-        px_y = by_q$16$q;
-        px_face = face_q$16$q;
+        v_q$17$d = v_q$16$q;
+        er_q$17$d = er_q$16$q;
+        pad_q$17$d = pad_q$16$q;
+        bx_q$17$d = bx_q$16$q;
+        by_q$17$d = by_q$16$q;
+        face_q$17$d = face_q$16$q;
+        res_beat = v_q$17$q;
+        res_valid = v_q$17$q & ~pad_q$17$q;
+        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
+        px_x = bx_q$17$q;
+        px_y = by_q$17$q;
+        px_face = face_q$17$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -2590,6 +2706,23 @@ module top$lanes$0$ctl$bx_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$16
+module top$lanes$0$ctl$bx_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$17
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -2879,6 +3012,23 @@ module top$lanes$0$ctl$by_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$16
+module top$lanes$0$ctl$by_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$17
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -3712,6 +3862,23 @@ module top$lanes$0$ctl$er_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$16
+module top$lanes$0$ctl$er_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$17
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -4001,6 +4168,23 @@ module top$lanes$0$ctl$face_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$16
+module top$lanes$0$ctl$face_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$17
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4137,6 +4321,40 @@ module top$lanes$0$ctl$face_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$9
+module top$lanes$0$ctl$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$nx_last
+module top$lanes$0$ctl$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$ny_last
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -4290,6 +4508,23 @@ module top$lanes$0$ctl$pad_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$16
+module top$lanes$0$ctl$pad_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$17
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4715,6 +4950,23 @@ module top$lanes$0$ctl$v_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$16
+module top$lanes$0$ctl$v_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$17
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -4851,6 +5103,23 @@ module top$lanes$0$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$9
+module top$lanes$0$ctl$x_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_out_q
 module top$lanes$0$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -4987,6 +5256,23 @@ module top$lanes$0$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$7
+module top$lanes$0$ctl$y_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_out_q
 module top$lanes$0$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -5441,6 +5727,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
+    reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -5448,6 +5735,8 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$x_out_t;
+    wire  ctl$y_out_t;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -5500,13 +5789,13 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  [15:0] cells$x;
-    reg  [15:0] cells$y;
     reg  cells$sr;
     reg  cells$dx_neg;
     reg  [15:0] cells$dx_mag;
     reg  cells$dy_neg;
     reg  [15:0] cells$dy_mag;
+    reg  cells$x_out;
+    reg  cells$y_out;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -5523,7 +5812,6 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [31:0] cells$c11$1;
     wire  [31:0] cells$c11$2;
     wire  [31:0] cells$c11$3;
-    reg  [63:0] cells$dims;
     reg  [63:0] cells$order;
     reg  bilinear$clock;
     reg  [31:0] bilinear$c00$0;
@@ -5655,6 +5943,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
+        .dims(ctl$dims),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -5662,6 +5951,8 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
+        .x_out_t(ctl$x_out_t),
+        .y_out_t(ctl$y_out_t),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -5718,13 +6009,13 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .x(cells$x),
-        .y(cells$y),
         .sr(cells$sr),
         .dx_neg(cells$dx_neg),
         .dx_mag(cells$dx_mag),
         .dy_neg(cells$dy_neg),
         .dy_mag(cells$dy_mag),
+        .x_out(cells$x_out),
+        .y_out(cells$y_out),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -5741,7 +6032,6 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .c11$1(cells$c11$1),
         .c11$2(cells$c11$2),
         .c11$3(cells$c11$3),
-        .dims(cells$dims),
         .order(cells$order)
     );
     top$lanes$1$bilinear bilinear(
@@ -5847,6 +6137,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
+        ctl$dims = dims;
         taps$clock = clock;
         taps$beats = beats;
         taps$x = ctl$x_t;
@@ -5882,10 +6173,9 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$6 = taps$a$6;
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
-        cells$dims = dims;
         cells$order = order;
-        cells$x = ctl$x_t;
-        cells$y = ctl$y_t;
+        cells$x_out = ctl$x_out_t;
+        cells$y_out = ctl$y_out_t;
         cells$sr = ctl$sr_t;
         cells$dx_neg = ctl$dx_neg_t;
         cells$dx_mag = ctl$dx_mag_t;
@@ -5933,7 +6223,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$1
-module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -5945,13 +6235,13 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  [15:0] x;
-    input wire  [15:0] y;
     input wire  sr;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  x_out;
+    input wire  y_out;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -5968,7 +6258,6 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     output reg  [31:0] c11$1;
     output reg  [31:0] c11$2;
     output reg  [31:0] c11$3;
-    input wire  [63:0] dims;
     input wire  [63:0] order;
     
     // Constant declarations
@@ -5977,20 +6266,14 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     localparam  gba_mask = 64'hffff;
     
     // Local signals
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
     reg  [63:0] reset;
     reg  [63:0] w00;
     reg  [63:0] w10;
     reg  [63:0] w01;
     reg  [63:0] w11;
-    reg  x_out;
-    reg  y_out;
     
     // Update code
     always @(*) begin
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
         reset = 'h0;
         if (order['h1]) begin
             reset = vmax;
@@ -5999,26 +6282,20 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
         w10 = a$0;
         w01 = a$0;
         w11 = a$0;
-        x_out = 1'b0;
-        y_out = 1'b0;
         if (dx_mag != 'h0) begin
             if (dx_neg) begin
                 w10 = a$2;
-                x_out = x == nx_last;
             end
             else begin
                 w10 = a$1;
-                x_out = x == 'h0;
             end
         end
         if (dy_mag != 'h0) begin
             if (dy_neg) begin
                 w01 = a$4;
-                y_out = y == ny_last;
             end
             else begin
                 w01 = a$3;
-                y_out = y == 'h0;
             end
         end
         w11 = w01;
@@ -6074,7 +6351,7 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -6091,6 +6368,7 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  [63:0] dims;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -6098,6 +6376,8 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
+    output reg  x_out_t;
+    output reg  y_out_t;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -6106,6 +6386,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  x_out_q$d;
+    wire  x_out_q$q;
+    reg  x_out_q$clock;
+    reg  y_out_q$d;
+    wire  y_out_q$q;
+    reg  y_out_q$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -6325,6 +6617,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$16$d;
     wire  v_q$16$q;
     reg  v_q$16$clock;
+    reg  v_q$17$d;
+    wire  v_q$17$q;
+    reg  v_q$17$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6376,6 +6671,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$16$d;
     wire  er_q$16$q;
     reg  er_q$16$clock;
+    reg  er_q$17$d;
+    wire  er_q$17$q;
+    reg  er_q$17$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6427,6 +6725,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$16$d;
     wire  pad_q$16$q;
     reg  pad_q$16$clock;
+    reg  pad_q$17$d;
+    wire  pad_q$17$q;
+    reg  pad_q$17$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6478,6 +6779,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$16$d;
     wire  [15:0] bx_q$16$q;
     reg  bx_q$16$clock;
+    reg  [15:0] bx_q$17$d;
+    wire  [15:0] bx_q$17$q;
+    reg  bx_q$17$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6529,6 +6833,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$16$d;
     wire  [15:0] by_q$16$q;
     reg  by_q$16$clock;
+    reg  [15:0] by_q$17$d;
+    wire  [15:0] by_q$17$q;
+    reg  by_q$17$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -6580,8 +6887,31 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$16$d;
     wire  [2:0] face_q$16$q;
     reg  face_q$16$clock;
+    reg  [2:0] face_q$17$d;
+    wire  [2:0] face_q$17$q;
+    reg  face_q$17$clock;
     
     // Sub module instances
+    top$lanes$1$ctl$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$lanes$1$ctl$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$lanes$1$ctl$x_out_q x_out_q(
+        .d(x_out_q$d),
+        .q(x_out_q$q),
+        .clock(x_out_q$clock)
+    );
+    top$lanes$1$ctl$y_out_q y_out_q(
+        .d(y_out_q$d),
+        .q(y_out_q$q),
+        .clock(y_out_q$clock)
+    );
     top$lanes$1$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
         .q(x_q$0$q),
@@ -6947,6 +7277,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$16$q),
         .clock(v_q$16$clock)
     );
+    top$lanes$1$ctl$v_q$17 v_q$17(
+        .d(v_q$17$d),
+        .q(v_q$17$q),
+        .clock(v_q$17$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -7031,6 +7366,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$16$d),
         .q(er_q$16$q),
         .clock(er_q$16$clock)
+    );
+    top$lanes$1$ctl$er_q$17 er_q$17(
+        .d(er_q$17$d),
+        .q(er_q$17$q),
+        .clock(er_q$17$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -7117,6 +7457,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$16$q),
         .clock(pad_q$16$clock)
     );
+    top$lanes$1$ctl$pad_q$17 pad_q$17(
+        .d(pad_q$17$d),
+        .q(pad_q$17$q),
+        .clock(pad_q$17$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -7201,6 +7546,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$16$d),
         .q(bx_q$16$q),
         .clock(bx_q$16$clock)
+    );
+    top$lanes$1$ctl$bx_q$17 bx_q$17(
+        .d(bx_q$17$d),
+        .q(bx_q$17$q),
+        .clock(bx_q$17$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -7287,6 +7637,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$16$q),
         .clock(by_q$16$clock)
     );
+    top$lanes$1$ctl$by_q$17 by_q$17(
+        .d(by_q$17$d),
+        .q(by_q$17$q),
+        .clock(by_q$17$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -7372,9 +7727,22 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$16$q),
         .clock(face_q$16$clock)
     );
+    top$lanes$1$ctl$face_q$17 face_q$17(
+        .d(face_q$17$d),
+        .q(face_q$17$q),
+        .clock(face_q$17$clock)
+    );
     
     // Update code
     always @(*) begin
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        x_out_q$clock = clock;
+        y_out_q$clock = clock;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        x_out_q$d = x_out_q$q;
+        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
         y_q$0$clock = clock;
         sr_q$0$clock = clock;
@@ -7533,6 +7901,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$clock = clock;
         by_q$16$clock = clock;
         face_q$16$clock = clock;
+        v_q$17$clock = clock;
+        er_q$17$clock = clock;
+        pad_q$17$clock = clock;
+        bx_q$17$clock = clock;
+        by_q$17$clock = clock;
+        face_q$17$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -7596,6 +7970,28 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dx_mag_t = dxm_q$7$q;
         dy_neg_t = dyn_q$7$q;
         dy_mag_t = dym_q$7$q;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        x_out_q$d = 1'b0;
+        if (dxm_q$6$q != 'h0) begin
+            if (dxn_q$6$q) begin
+                x_out_q$d = x_q$6$q == nx_last$q;
+            end
+            else begin
+                x_out_q$d = x_q$6$q == 'h0;
+            end
+        end
+        y_out_q$d = 1'b0;
+        if (dym_q$6$q != 'h0) begin
+            if (dyn_q$6$q) begin
+                y_out_q$d = y_q$6$q == ny_last$q;
+            end
+            else begin
+                y_out_q$d = y_q$6$q == 'h0;
+            end
+        end
+        x_out_t = x_out_q$q;
+        y_out_t = y_out_q$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -7698,12 +8094,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$d = bx_q$15$q;
         by_q$16$d = by_q$15$q;
         face_q$16$d = face_q$15$q;
-        res_beat = v_q$16$q;
-        res_valid = v_q$16$q & ~pad_q$16$q;
-        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
-        px_x = bx_q$16$q;
-        px_y = by_q$16$q;
-        px_face = face_q$16$q;
+        v_q$17$d = v_q$16$q;
+        er_q$17$d = er_q$16$q;
+        pad_q$17$d = pad_q$16$q;
+        bx_q$17$d = bx_q$16$q;
+        by_q$17$d = by_q$16$q;
+        face_q$17$d = face_q$16$q;
+        res_beat = v_q$17$q;
+        res_valid = v_q$17$q & ~pad_q$17$q;
+        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
+        px_x = bx_q$17$q;
+        px_y = by_q$17$q;
+        px_face = face_q$17$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -7860,6 +8262,23 @@ module top$lanes$1$ctl$bx_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$16
+module top$lanes$1$ctl$bx_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$17
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -8149,6 +8568,23 @@ module top$lanes$1$ctl$by_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$16
+module top$lanes$1$ctl$by_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$17
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -8982,6 +9418,23 @@ module top$lanes$1$ctl$er_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$16
+module top$lanes$1$ctl$er_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$17
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -9271,6 +9724,23 @@ module top$lanes$1$ctl$face_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$16
+module top$lanes$1$ctl$face_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$17
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -9407,6 +9877,40 @@ module top$lanes$1$ctl$face_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$9
+module top$lanes$1$ctl$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$nx_last
+module top$lanes$1$ctl$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$ny_last
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -9560,6 +10064,23 @@ module top$lanes$1$ctl$pad_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$16
+module top$lanes$1$ctl$pad_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$17
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -9985,6 +10506,23 @@ module top$lanes$1$ctl$v_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$16
+module top$lanes$1$ctl$v_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$17
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -10121,6 +10659,23 @@ module top$lanes$1$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$9
+module top$lanes$1$ctl$x_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_out_q
 module top$lanes$1$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -10257,6 +10812,23 @@ module top$lanes$1$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$7
+module top$lanes$1$ctl$y_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_out_q
 module top$lanes$1$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -10711,6 +11283,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
+    reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -10718,6 +11291,8 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$x_out_t;
+    wire  ctl$y_out_t;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -10770,13 +11345,13 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  [15:0] cells$x;
-    reg  [15:0] cells$y;
     reg  cells$sr;
     reg  cells$dx_neg;
     reg  [15:0] cells$dx_mag;
     reg  cells$dy_neg;
     reg  [15:0] cells$dy_mag;
+    reg  cells$x_out;
+    reg  cells$y_out;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -10793,7 +11368,6 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [31:0] cells$c11$1;
     wire  [31:0] cells$c11$2;
     wire  [31:0] cells$c11$3;
-    reg  [63:0] cells$dims;
     reg  [63:0] cells$order;
     reg  bilinear$clock;
     reg  [31:0] bilinear$c00$0;
@@ -10925,6 +11499,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
+        .dims(ctl$dims),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -10932,6 +11507,8 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
+        .x_out_t(ctl$x_out_t),
+        .y_out_t(ctl$y_out_t),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -10988,13 +11565,13 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .x(cells$x),
-        .y(cells$y),
         .sr(cells$sr),
         .dx_neg(cells$dx_neg),
         .dx_mag(cells$dx_mag),
         .dy_neg(cells$dy_neg),
         .dy_mag(cells$dy_mag),
+        .x_out(cells$x_out),
+        .y_out(cells$y_out),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -11011,7 +11588,6 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .c11$1(cells$c11$1),
         .c11$2(cells$c11$2),
         .c11$3(cells$c11$3),
-        .dims(cells$dims),
         .order(cells$order)
     );
     top$lanes$2$bilinear bilinear(
@@ -11117,6 +11693,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
+        ctl$dims = dims;
         taps$clock = clock;
         taps$beats = beats;
         taps$x = ctl$x_t;
@@ -11152,10 +11729,9 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$6 = taps$a$6;
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
-        cells$dims = dims;
         cells$order = order;
-        cells$x = ctl$x_t;
-        cells$y = ctl$y_t;
+        cells$x_out = ctl$x_out_t;
+        cells$y_out = ctl$y_out_t;
         cells$sr = ctl$sr_t;
         cells$dx_neg = ctl$dx_neg_t;
         cells$dx_mag = ctl$dx_mag_t;
@@ -11203,7 +11779,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$2
-module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -11215,13 +11791,13 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  [15:0] x;
-    input wire  [15:0] y;
     input wire  sr;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  x_out;
+    input wire  y_out;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -11238,7 +11814,6 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     output reg  [31:0] c11$1;
     output reg  [31:0] c11$2;
     output reg  [31:0] c11$3;
-    input wire  [63:0] dims;
     input wire  [63:0] order;
     
     // Constant declarations
@@ -11247,20 +11822,14 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     localparam  gba_mask = 64'hffff;
     
     // Local signals
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
     reg  [63:0] reset;
     reg  [63:0] w00;
     reg  [63:0] w10;
     reg  [63:0] w01;
     reg  [63:0] w11;
-    reg  x_out;
-    reg  y_out;
     
     // Update code
     always @(*) begin
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
         reset = 'h0;
         if (order['h1]) begin
             reset = vmax;
@@ -11269,26 +11838,20 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
         w10 = a$0;
         w01 = a$0;
         w11 = a$0;
-        x_out = 1'b0;
-        y_out = 1'b0;
         if (dx_mag != 'h0) begin
             if (dx_neg) begin
                 w10 = a$2;
-                x_out = x == nx_last;
             end
             else begin
                 w10 = a$1;
-                x_out = x == 'h0;
             end
         end
         if (dy_mag != 'h0) begin
             if (dy_neg) begin
                 w01 = a$4;
-                y_out = y == ny_last;
             end
             else begin
                 w01 = a$3;
-                y_out = y == 'h0;
             end
         end
         w11 = w01;
@@ -11344,7 +11907,7 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$2$cells
-module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -11361,6 +11924,7 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  [63:0] dims;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -11368,6 +11932,8 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
+    output reg  x_out_t;
+    output reg  y_out_t;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -11376,6 +11942,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  x_out_q$d;
+    wire  x_out_q$q;
+    reg  x_out_q$clock;
+    reg  y_out_q$d;
+    wire  y_out_q$q;
+    reg  y_out_q$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -11595,6 +12173,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$16$d;
     wire  v_q$16$q;
     reg  v_q$16$clock;
+    reg  v_q$17$d;
+    wire  v_q$17$q;
+    reg  v_q$17$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -11646,6 +12227,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$16$d;
     wire  er_q$16$q;
     reg  er_q$16$clock;
+    reg  er_q$17$d;
+    wire  er_q$17$q;
+    reg  er_q$17$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -11697,6 +12281,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$16$d;
     wire  pad_q$16$q;
     reg  pad_q$16$clock;
+    reg  pad_q$17$d;
+    wire  pad_q$17$q;
+    reg  pad_q$17$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -11748,6 +12335,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$16$d;
     wire  [15:0] bx_q$16$q;
     reg  bx_q$16$clock;
+    reg  [15:0] bx_q$17$d;
+    wire  [15:0] bx_q$17$q;
+    reg  bx_q$17$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -11799,6 +12389,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$16$d;
     wire  [15:0] by_q$16$q;
     reg  by_q$16$clock;
+    reg  [15:0] by_q$17$d;
+    wire  [15:0] by_q$17$q;
+    reg  by_q$17$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -11850,8 +12443,31 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$16$d;
     wire  [2:0] face_q$16$q;
     reg  face_q$16$clock;
+    reg  [2:0] face_q$17$d;
+    wire  [2:0] face_q$17$q;
+    reg  face_q$17$clock;
     
     // Sub module instances
+    top$lanes$2$ctl$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$lanes$2$ctl$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$lanes$2$ctl$x_out_q x_out_q(
+        .d(x_out_q$d),
+        .q(x_out_q$q),
+        .clock(x_out_q$clock)
+    );
+    top$lanes$2$ctl$y_out_q y_out_q(
+        .d(y_out_q$d),
+        .q(y_out_q$q),
+        .clock(y_out_q$clock)
+    );
     top$lanes$2$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
         .q(x_q$0$q),
@@ -12217,6 +12833,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$16$q),
         .clock(v_q$16$clock)
     );
+    top$lanes$2$ctl$v_q$17 v_q$17(
+        .d(v_q$17$d),
+        .q(v_q$17$q),
+        .clock(v_q$17$clock)
+    );
     top$lanes$2$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -12301,6 +12922,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$16$d),
         .q(er_q$16$q),
         .clock(er_q$16$clock)
+    );
+    top$lanes$2$ctl$er_q$17 er_q$17(
+        .d(er_q$17$d),
+        .q(er_q$17$q),
+        .clock(er_q$17$clock)
     );
     top$lanes$2$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -12387,6 +13013,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$16$q),
         .clock(pad_q$16$clock)
     );
+    top$lanes$2$ctl$pad_q$17 pad_q$17(
+        .d(pad_q$17$d),
+        .q(pad_q$17$q),
+        .clock(pad_q$17$clock)
+    );
     top$lanes$2$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -12471,6 +13102,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$16$d),
         .q(bx_q$16$q),
         .clock(bx_q$16$clock)
+    );
+    top$lanes$2$ctl$bx_q$17 bx_q$17(
+        .d(bx_q$17$d),
+        .q(bx_q$17$q),
+        .clock(bx_q$17$clock)
     );
     top$lanes$2$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -12557,6 +13193,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$16$q),
         .clock(by_q$16$clock)
     );
+    top$lanes$2$ctl$by_q$17 by_q$17(
+        .d(by_q$17$d),
+        .q(by_q$17$q),
+        .clock(by_q$17$clock)
+    );
     top$lanes$2$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -12642,9 +13283,22 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$16$q),
         .clock(face_q$16$clock)
     );
+    top$lanes$2$ctl$face_q$17 face_q$17(
+        .d(face_q$17$d),
+        .q(face_q$17$q),
+        .clock(face_q$17$clock)
+    );
     
     // Update code
     always @(*) begin
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        x_out_q$clock = clock;
+        y_out_q$clock = clock;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        x_out_q$d = x_out_q$q;
+        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
         y_q$0$clock = clock;
         sr_q$0$clock = clock;
@@ -12803,6 +13457,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$clock = clock;
         by_q$16$clock = clock;
         face_q$16$clock = clock;
+        v_q$17$clock = clock;
+        er_q$17$clock = clock;
+        pad_q$17$clock = clock;
+        bx_q$17$clock = clock;
+        by_q$17$clock = clock;
+        face_q$17$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -12866,6 +13526,28 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dx_mag_t = dxm_q$7$q;
         dy_neg_t = dyn_q$7$q;
         dy_mag_t = dym_q$7$q;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        x_out_q$d = 1'b0;
+        if (dxm_q$6$q != 'h0) begin
+            if (dxn_q$6$q) begin
+                x_out_q$d = x_q$6$q == nx_last$q;
+            end
+            else begin
+                x_out_q$d = x_q$6$q == 'h0;
+            end
+        end
+        y_out_q$d = 1'b0;
+        if (dym_q$6$q != 'h0) begin
+            if (dyn_q$6$q) begin
+                y_out_q$d = y_q$6$q == ny_last$q;
+            end
+            else begin
+                y_out_q$d = y_q$6$q == 'h0;
+            end
+        end
+        x_out_t = x_out_q$q;
+        y_out_t = y_out_q$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -12968,12 +13650,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$d = bx_q$15$q;
         by_q$16$d = by_q$15$q;
         face_q$16$d = face_q$15$q;
-        res_beat = v_q$16$q;
-        res_valid = v_q$16$q & ~pad_q$16$q;
-        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
-        px_x = bx_q$16$q;
-        px_y = by_q$16$q;
-        px_face = face_q$16$q;
+        v_q$17$d = v_q$16$q;
+        er_q$17$d = er_q$16$q;
+        pad_q$17$d = pad_q$16$q;
+        bx_q$17$d = bx_q$16$q;
+        by_q$17$d = by_q$16$q;
+        face_q$17$d = face_q$16$q;
+        res_beat = v_q$17$q;
+        res_valid = v_q$17$q & ~pad_q$17$q;
+        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
+        px_x = bx_q$17$q;
+        px_y = by_q$17$q;
+        px_face = face_q$17$q;
     end
     
 endmodule // top$lanes$2$ctl
@@ -13130,6 +13818,23 @@ module top$lanes$2$ctl$bx_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$16
+module top$lanes$2$ctl$bx_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$17
 module top$lanes$2$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -13419,6 +14124,23 @@ module top$lanes$2$ctl$by_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$16
+module top$lanes$2$ctl$by_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$17
 module top$lanes$2$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -14252,6 +14974,23 @@ module top$lanes$2$ctl$er_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$16
+module top$lanes$2$ctl$er_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$17
 module top$lanes$2$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -14541,6 +15280,23 @@ module top$lanes$2$ctl$face_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$16
+module top$lanes$2$ctl$face_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$17
 module top$lanes$2$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -14677,6 +15433,40 @@ module top$lanes$2$ctl$face_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$9
+module top$lanes$2$ctl$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$nx_last
+module top$lanes$2$ctl$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$ny_last
 module top$lanes$2$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -14830,6 +15620,23 @@ module top$lanes$2$ctl$pad_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$16
+module top$lanes$2$ctl$pad_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$17
 module top$lanes$2$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -15255,6 +16062,23 @@ module top$lanes$2$ctl$v_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$16
+module top$lanes$2$ctl$v_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$17
 module top$lanes$2$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -15391,6 +16215,23 @@ module top$lanes$2$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$9
+module top$lanes$2$ctl$x_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_out_q
 module top$lanes$2$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -15527,6 +16368,23 @@ module top$lanes$2$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$x_q$7
+module top$lanes$2$ctl$y_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_out_q
 module top$lanes$2$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -15981,6 +16839,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dx_mag;
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
+    reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
     wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
@@ -15988,6 +16847,8 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [15:0] ctl$dx_mag_t;
     wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
+    wire  ctl$x_out_t;
+    wire  ctl$y_out_t;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -16040,13 +16901,13 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  [15:0] cells$x;
-    reg  [15:0] cells$y;
     reg  cells$sr;
     reg  cells$dx_neg;
     reg  [15:0] cells$dx_mag;
     reg  cells$dy_neg;
     reg  [15:0] cells$dy_mag;
+    reg  cells$x_out;
+    reg  cells$y_out;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -16063,7 +16924,6 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     wire  [31:0] cells$c11$1;
     wire  [31:0] cells$c11$2;
     wire  [31:0] cells$c11$3;
-    reg  [63:0] cells$dims;
     reg  [63:0] cells$order;
     reg  bilinear$clock;
     reg  [31:0] bilinear$c00$0;
@@ -16195,6 +17055,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag(ctl$dx_mag),
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
+        .dims(ctl$dims),
         .x_t(ctl$x_t),
         .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
@@ -16202,6 +17063,8 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dx_mag_t(ctl$dx_mag_t),
         .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
+        .x_out_t(ctl$x_out_t),
+        .y_out_t(ctl$y_out_t),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -16258,13 +17121,13 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .x(cells$x),
-        .y(cells$y),
         .sr(cells$sr),
         .dx_neg(cells$dx_neg),
         .dx_mag(cells$dx_mag),
         .dy_neg(cells$dy_neg),
         .dy_mag(cells$dy_mag),
+        .x_out(cells$x_out),
+        .y_out(cells$y_out),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -16281,7 +17144,6 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .c11$1(cells$c11$1),
         .c11$2(cells$c11$2),
         .c11$3(cells$c11$3),
-        .dims(cells$dims),
         .order(cells$order)
     );
     top$lanes$3$bilinear bilinear(
@@ -16387,6 +17249,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$dx_mag = feed$o_dx_mag;
         ctl$dy_neg = feed$o_dy_neg;
         ctl$dy_mag = feed$o_dy_mag;
+        ctl$dims = dims;
         taps$clock = clock;
         taps$beats = beats;
         taps$x = ctl$x_t;
@@ -16422,10 +17285,9 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$6 = taps$a$6;
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
-        cells$dims = dims;
         cells$order = order;
-        cells$x = ctl$x_t;
-        cells$y = ctl$y_t;
+        cells$x_out = ctl$x_out_t;
+        cells$y_out = ctl$y_out_t;
         cells$sr = ctl$sr_t;
         cells$dx_neg = ctl$dx_neg_t;
         cells$dx_mag = ctl$dx_mag_t;
@@ -16473,7 +17335,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$3
-module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,dims,order);
+module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -16485,13 +17347,13 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  [15:0] x;
-    input wire  [15:0] y;
     input wire  sr;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  x_out;
+    input wire  y_out;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -16508,7 +17370,6 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     output reg  [31:0] c11$1;
     output reg  [31:0] c11$2;
     output reg  [31:0] c11$3;
-    input wire  [63:0] dims;
     input wire  [63:0] order;
     
     // Constant declarations
@@ -16517,20 +17378,14 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     localparam  gba_mask = 64'hffff;
     
     // Local signals
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
     reg  [63:0] reset;
     reg  [63:0] w00;
     reg  [63:0] w10;
     reg  [63:0] w01;
     reg  [63:0] w11;
-    reg  x_out;
-    reg  y_out;
     
     // Update code
     always @(*) begin
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
         reset = 'h0;
         if (order['h1]) begin
             reset = vmax;
@@ -16539,26 +17394,20 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
         w10 = a$0;
         w01 = a$0;
         w11 = a$0;
-        x_out = 1'b0;
-        y_out = 1'b0;
         if (dx_mag != 'h0) begin
             if (dx_neg) begin
                 w10 = a$2;
-                x_out = x == nx_last;
             end
             else begin
                 w10 = a$1;
-                x_out = x == 'h0;
             end
         end
         if (dy_mag != 'h0) begin
             if (dy_neg) begin
                 w01 = a$4;
-                y_out = y == ny_last;
             end
             else begin
                 w01 = a$3;
-                y_out = y == 'h0;
             end
         end
         w11 = w01;
@@ -16614,7 +17463,7 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,x,y,sr,dx_neg,dx_ma
     end
     
 endmodule // top$lanes$3$cells
-module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -16631,6 +17480,7 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
+    input wire  [63:0] dims;
     output reg  [15:0] x_t;
     output reg  [15:0] y_t;
     output reg  sr_t;
@@ -16638,6 +17488,8 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [15:0] dx_mag_t;
     output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
+    output reg  x_out_t;
+    output reg  y_out_t;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -16646,6 +17498,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     output reg  [2:0] px_face;
     
     // Stub signals
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  x_out_q$d;
+    wire  x_out_q$q;
+    reg  x_out_q$clock;
+    reg  y_out_q$d;
+    wire  y_out_q$q;
+    reg  y_out_q$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -16865,6 +17729,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$16$d;
     wire  v_q$16$q;
     reg  v_q$16$clock;
+    reg  v_q$17$d;
+    wire  v_q$17$q;
+    reg  v_q$17$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -16916,6 +17783,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$16$d;
     wire  er_q$16$q;
     reg  er_q$16$clock;
+    reg  er_q$17$d;
+    wire  er_q$17$q;
+    reg  er_q$17$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -16967,6 +17837,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$16$d;
     wire  pad_q$16$q;
     reg  pad_q$16$clock;
+    reg  pad_q$17$d;
+    wire  pad_q$17$q;
+    reg  pad_q$17$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -17018,6 +17891,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$16$d;
     wire  [15:0] bx_q$16$q;
     reg  bx_q$16$clock;
+    reg  [15:0] bx_q$17$d;
+    wire  [15:0] bx_q$17$q;
+    reg  bx_q$17$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -17069,6 +17945,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$16$d;
     wire  [15:0] by_q$16$q;
     reg  by_q$16$clock;
+    reg  [15:0] by_q$17$d;
+    wire  [15:0] by_q$17$q;
+    reg  by_q$17$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -17120,8 +17999,31 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$16$d;
     wire  [2:0] face_q$16$q;
     reg  face_q$16$clock;
+    reg  [2:0] face_q$17$d;
+    wire  [2:0] face_q$17$q;
+    reg  face_q$17$clock;
     
     // Sub module instances
+    top$lanes$3$ctl$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$lanes$3$ctl$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$lanes$3$ctl$x_out_q x_out_q(
+        .d(x_out_q$d),
+        .q(x_out_q$q),
+        .clock(x_out_q$clock)
+    );
+    top$lanes$3$ctl$y_out_q y_out_q(
+        .d(y_out_q$d),
+        .q(y_out_q$q),
+        .clock(y_out_q$clock)
+    );
     top$lanes$3$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
         .q(x_q$0$q),
@@ -17487,6 +18389,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$16$q),
         .clock(v_q$16$clock)
     );
+    top$lanes$3$ctl$v_q$17 v_q$17(
+        .d(v_q$17$d),
+        .q(v_q$17$q),
+        .clock(v_q$17$clock)
+    );
     top$lanes$3$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -17571,6 +18478,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$16$d),
         .q(er_q$16$q),
         .clock(er_q$16$clock)
+    );
+    top$lanes$3$ctl$er_q$17 er_q$17(
+        .d(er_q$17$d),
+        .q(er_q$17$q),
+        .clock(er_q$17$clock)
     );
     top$lanes$3$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -17657,6 +18569,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$16$q),
         .clock(pad_q$16$clock)
     );
+    top$lanes$3$ctl$pad_q$17 pad_q$17(
+        .d(pad_q$17$d),
+        .q(pad_q$17$q),
+        .clock(pad_q$17$clock)
+    );
     top$lanes$3$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -17741,6 +18658,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$16$d),
         .q(bx_q$16$q),
         .clock(bx_q$16$clock)
+    );
+    top$lanes$3$ctl$bx_q$17 bx_q$17(
+        .d(bx_q$17$d),
+        .q(bx_q$17$q),
+        .clock(bx_q$17$clock)
     );
     top$lanes$3$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -17827,6 +18749,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$16$q),
         .clock(by_q$16$clock)
     );
+    top$lanes$3$ctl$by_q$17 by_q$17(
+        .d(by_q$17$d),
+        .q(by_q$17$q),
+        .clock(by_q$17$clock)
+    );
     top$lanes$3$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -17912,9 +18839,22 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$16$q),
         .clock(face_q$16$clock)
     );
+    top$lanes$3$ctl$face_q$17 face_q$17(
+        .d(face_q$17$d),
+        .q(face_q$17$q),
+        .clock(face_q$17$clock)
+    );
     
     // Update code
     always @(*) begin
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        x_out_q$clock = clock;
+        y_out_q$clock = clock;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        x_out_q$d = x_out_q$q;
+        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
         y_q$0$clock = clock;
         sr_q$0$clock = clock;
@@ -18073,6 +19013,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$clock = clock;
         by_q$16$clock = clock;
         face_q$16$clock = clock;
+        v_q$17$clock = clock;
+        er_q$17$clock = clock;
+        pad_q$17$clock = clock;
+        bx_q$17$clock = clock;
+        by_q$17$clock = clock;
+        face_q$17$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -18136,6 +19082,28 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dx_mag_t = dxm_q$7$q;
         dy_neg_t = dyn_q$7$q;
         dy_mag_t = dym_q$7$q;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        x_out_q$d = 1'b0;
+        if (dxm_q$6$q != 'h0) begin
+            if (dxn_q$6$q) begin
+                x_out_q$d = x_q$6$q == nx_last$q;
+            end
+            else begin
+                x_out_q$d = x_q$6$q == 'h0;
+            end
+        end
+        y_out_q$d = 1'b0;
+        if (dym_q$6$q != 'h0) begin
+            if (dyn_q$6$q) begin
+                y_out_q$d = y_q$6$q == ny_last$q;
+            end
+            else begin
+                y_out_q$d = y_q$6$q == 'h0;
+            end
+        end
+        x_out_t = x_out_q$q;
+        y_out_t = y_out_q$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -18238,12 +19206,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$16$d = bx_q$15$q;
         by_q$16$d = by_q$15$q;
         face_q$16$d = face_q$15$q;
-        res_beat = v_q$16$q;
-        res_valid = v_q$16$q & ~pad_q$16$q;
-        px_valid = v_q$16$q & er_q$16$q & ~pad_q$16$q;
-        px_x = bx_q$16$q;
-        px_y = by_q$16$q;
-        px_face = face_q$16$q;
+        v_q$17$d = v_q$16$q;
+        er_q$17$d = er_q$16$q;
+        pad_q$17$d = pad_q$16$q;
+        bx_q$17$d = bx_q$16$q;
+        by_q$17$d = by_q$16$q;
+        face_q$17$d = face_q$16$q;
+        res_beat = v_q$17$q;
+        res_valid = v_q$17$q & ~pad_q$17$q;
+        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
+        px_x = bx_q$17$q;
+        px_y = by_q$17$q;
+        px_face = face_q$17$q;
     end
     
 endmodule // top$lanes$3$ctl
@@ -18400,6 +19374,23 @@ module top$lanes$3$ctl$bx_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$16
+module top$lanes$3$ctl$bx_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$17
 module top$lanes$3$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -18689,6 +19680,23 @@ module top$lanes$3$ctl$by_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$16
+module top$lanes$3$ctl$by_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$17
 module top$lanes$3$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -19522,6 +20530,23 @@ module top$lanes$3$ctl$er_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$16
+module top$lanes$3$ctl$er_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$17
 module top$lanes$3$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -19811,6 +20836,23 @@ module top$lanes$3$ctl$face_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$16
+module top$lanes$3$ctl$face_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$17
 module top$lanes$3$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -19947,6 +20989,40 @@ module top$lanes$3$ctl$face_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$9
+module top$lanes$3$ctl$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$nx_last
+module top$lanes$3$ctl$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$ny_last
 module top$lanes$3$ctl$pad_q$0(d,q,clock);
     
     // Module arguments
@@ -20100,6 +21176,23 @@ module top$lanes$3$ctl$pad_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$16
+module top$lanes$3$ctl$pad_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$17
 module top$lanes$3$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -20525,6 +21618,23 @@ module top$lanes$3$ctl$v_q$16(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$16
+module top$lanes$3$ctl$v_q$17(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$17
 module top$lanes$3$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -20661,6 +21771,23 @@ module top$lanes$3$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$9
+module top$lanes$3$ctl$x_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_out_q
 module top$lanes$3$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -20797,6 +21924,23 @@ module top$lanes$3$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$x_q$7
+module top$lanes$3$ctl$y_out_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_out_q
 module top$lanes$3$ctl$y_q$0(d,q,clock);
     
     // Module arguments

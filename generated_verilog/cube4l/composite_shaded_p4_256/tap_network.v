@@ -314,7 +314,7 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'he;
+    localparam  ring_less = 16'hf;
     
     // Stub signals
     reg  ring$clock;
@@ -1330,7 +1330,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb2;
+    localparam  longest_last = 16'h3fb1;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1464,7 +1464,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16306:0];
+    reg [31:0] mem[16305:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
@@ -2931,7 +2931,7 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'he;
+    localparam  ring_less = 16'hf;
     
     // Stub signals
     reg  ring$clock;
@@ -3947,7 +3947,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb2;
+    localparam  longest_last = 16'h3fb1;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4081,7 +4081,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16306:0];
+    reg [31:0] mem[16305:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
@@ -5548,7 +5548,7 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'he;
+    localparam  ring_less = 16'hf;
     
     // Stub signals
     reg  ring$clock;
@@ -6564,7 +6564,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb2;
+    localparam  longest_last = 16'h3fb1;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -6698,7 +6698,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16306:0];
+    reg [31:0] mem[16305:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
@@ -8165,7 +8165,7 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'he;
+    localparam  ring_less = 16'hf;
     
     // Stub signals
     reg  ring$clock;
@@ -9181,7 +9181,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb2;
+    localparam  longest_last = 16'h3fb1;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -9315,7 +9315,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16306:0];
+    reg [31:0] mem[16305:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};

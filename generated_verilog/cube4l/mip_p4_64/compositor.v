@@ -45,6 +45,9 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_q$d;
     wire  [31:0] scalar_q$q;
     reg  scalar_q$clock;
+    reg  [31:0] scalar_qq$d;
+    wire  [31:0] scalar_qq$q;
+    reg  scalar_qq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -92,6 +95,11 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_q$q),
         .clock(scalar_q$clock)
     );
+    top$lanes$0$compositor$scalar_qq scalar_qq(
+        .d(scalar_qq$d),
+        .q(scalar_qq$q),
+        .clock(scalar_qq$clock)
+    );
     top$lanes$0$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -116,11 +124,13 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     // Update code
     always @(*) begin
         scalar_q$clock = clock;
+        scalar_qq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
+        scalar_qq$d = scalar_qq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -171,7 +181,8 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         else begin
             scalar_q$d = acc_r + new_r;
         end
-        reg_r$d = scalar_q$q;
+        scalar_qq$d = scalar_q$q;
+        reg_r$d = scalar_qq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -205,9 +216,18 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -219,22 +239,46 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$0$compositor$ch_a$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$0$compositor$ch_a$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$0$compositor$ch_a$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$0$compositor$ch_a$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -243,6 +287,23 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_a
+module top$lanes$0$compositor$ch_a$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$back_q
 module top$lanes$0$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
@@ -260,6 +321,23 @@ module top$lanes$0$compositor$ch_a$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_a$front_q
+module top$lanes$0$compositor$ch_a$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$front_qq
 module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -316,6 +394,23 @@ module top$lanes$0$compositor$ch_a$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_a$mul$t
+module top$lanes$0$compositor$ch_a$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$weight_q
 module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -333,9 +428,18 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -347,22 +451,46 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$0$compositor$ch_b$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$0$compositor$ch_b$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$0$compositor$ch_b$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$0$compositor$ch_b$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -371,6 +499,23 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_b
+module top$lanes$0$compositor$ch_b$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$back_q
 module top$lanes$0$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
@@ -388,6 +533,23 @@ module top$lanes$0$compositor$ch_b$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_b$front_q
+module top$lanes$0$compositor$ch_b$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$front_qq
 module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -444,6 +606,23 @@ module top$lanes$0$compositor$ch_b$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_b$mul$t
+module top$lanes$0$compositor$ch_b$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$weight_q
 module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -461,9 +640,18 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -475,22 +663,46 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$0$compositor$ch_g$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$0$compositor$ch_g$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$0$compositor$ch_g$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$0$compositor$ch_g$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -499,6 +711,23 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_g
+module top$lanes$0$compositor$ch_g$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$back_q
 module top$lanes$0$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
@@ -516,6 +745,23 @@ module top$lanes$0$compositor$ch_g$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_g$front_q
+module top$lanes$0$compositor$ch_g$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$front_qq
 module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -572,6 +818,23 @@ module top$lanes$0$compositor$ch_g$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_g$mul$t
+module top$lanes$0$compositor$ch_g$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$weight_q
 module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -589,9 +852,18 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -603,22 +875,46 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$0$compositor$ch_r$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$0$compositor$ch_r$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$0$compositor$ch_r$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$0$compositor$ch_r$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -627,6 +923,23 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$0$compositor$ch_r
+module top$lanes$0$compositor$ch_r$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$back_q
 module top$lanes$0$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
@@ -644,6 +957,23 @@ module top$lanes$0$compositor$ch_r$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_r$front_q
+module top$lanes$0$compositor$ch_r$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$front_qq
 module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -700,6 +1030,23 @@ module top$lanes$0$compositor$ch_r$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_r$mul$t
+module top$lanes$0$compositor$ch_r$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$weight_q
 module top$lanes$0$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -785,6 +1132,23 @@ module top$lanes$0$compositor$scalar_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$scalar_q
+module top$lanes$0$compositor$scalar_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$scalar_qq
 module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -832,6 +1196,9 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_q$d;
     wire  [31:0] scalar_q$q;
     reg  scalar_q$clock;
+    reg  [31:0] scalar_qq$d;
+    wire  [31:0] scalar_qq$q;
+    reg  scalar_qq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -879,6 +1246,11 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_q$q),
         .clock(scalar_q$clock)
     );
+    top$lanes$1$compositor$scalar_qq scalar_qq(
+        .d(scalar_qq$d),
+        .q(scalar_qq$q),
+        .clock(scalar_qq$clock)
+    );
     top$lanes$1$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -903,11 +1275,13 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     // Update code
     always @(*) begin
         scalar_q$clock = clock;
+        scalar_qq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
+        scalar_qq$d = scalar_qq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -958,7 +1332,8 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         else begin
             scalar_q$d = acc_r + new_r;
         end
-        reg_r$d = scalar_q$q;
+        scalar_qq$d = scalar_q$q;
+        reg_r$d = scalar_qq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -992,9 +1367,18 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1006,22 +1390,46 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$1$compositor$ch_a$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$1$compositor$ch_a$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$1$compositor$ch_a$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$1$compositor$ch_a$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1030,6 +1438,23 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_a
+module top$lanes$1$compositor$ch_a$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$back_q
 module top$lanes$1$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
@@ -1047,6 +1472,23 @@ module top$lanes$1$compositor$ch_a$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_a$front_q
+module top$lanes$1$compositor$ch_a$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$front_qq
 module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -1103,6 +1545,23 @@ module top$lanes$1$compositor$ch_a$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_a$mul$t
+module top$lanes$1$compositor$ch_a$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$weight_q
 module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -1120,9 +1579,18 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1134,22 +1602,46 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$1$compositor$ch_b$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$1$compositor$ch_b$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$1$compositor$ch_b$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$1$compositor$ch_b$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1158,6 +1650,23 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_b
+module top$lanes$1$compositor$ch_b$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$back_q
 module top$lanes$1$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
@@ -1175,6 +1684,23 @@ module top$lanes$1$compositor$ch_b$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_b$front_q
+module top$lanes$1$compositor$ch_b$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$front_qq
 module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -1231,6 +1757,23 @@ module top$lanes$1$compositor$ch_b$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_b$mul$t
+module top$lanes$1$compositor$ch_b$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$weight_q
 module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -1248,9 +1791,18 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1262,22 +1814,46 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$1$compositor$ch_g$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$1$compositor$ch_g$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$1$compositor$ch_g$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$1$compositor$ch_g$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1286,6 +1862,23 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_g
+module top$lanes$1$compositor$ch_g$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$back_q
 module top$lanes$1$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
@@ -1303,6 +1896,23 @@ module top$lanes$1$compositor$ch_g$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_g$front_q
+module top$lanes$1$compositor$ch_g$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$front_qq
 module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -1359,6 +1969,23 @@ module top$lanes$1$compositor$ch_g$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_g$mul$t
+module top$lanes$1$compositor$ch_g$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$weight_q
 module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -1376,9 +2003,18 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1390,22 +2026,46 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$1$compositor$ch_r$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$1$compositor$ch_r$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$1$compositor$ch_r$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$1$compositor$ch_r$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1414,6 +2074,23 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$1$compositor$ch_r
+module top$lanes$1$compositor$ch_r$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$back_q
 module top$lanes$1$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
@@ -1431,6 +2108,23 @@ module top$lanes$1$compositor$ch_r$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_r$front_q
+module top$lanes$1$compositor$ch_r$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$front_qq
 module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -1487,6 +2181,23 @@ module top$lanes$1$compositor$ch_r$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_r$mul$t
+module top$lanes$1$compositor$ch_r$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$weight_q
 module top$lanes$1$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -1572,6 +2283,23 @@ module top$lanes$1$compositor$scalar_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$scalar_q
+module top$lanes$1$compositor$scalar_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$scalar_qq
 module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -1619,6 +2347,9 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_q$d;
     wire  [31:0] scalar_q$q;
     reg  scalar_q$clock;
+    reg  [31:0] scalar_qq$d;
+    wire  [31:0] scalar_qq$q;
+    reg  scalar_qq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -1666,6 +2397,11 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_q$q),
         .clock(scalar_q$clock)
     );
+    top$lanes$2$compositor$scalar_qq scalar_qq(
+        .d(scalar_qq$d),
+        .q(scalar_qq$q),
+        .clock(scalar_qq$clock)
+    );
     top$lanes$2$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -1690,11 +2426,13 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     // Update code
     always @(*) begin
         scalar_q$clock = clock;
+        scalar_qq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
+        scalar_qq$d = scalar_qq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -1745,7 +2483,8 @@ module top$lanes$2$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         else begin
             scalar_q$d = acc_r + new_r;
         end
-        reg_r$d = scalar_q$q;
+        scalar_qq$d = scalar_q$q;
+        reg_r$d = scalar_qq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -1779,9 +2518,18 @@ module top$lanes$2$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1793,22 +2541,46 @@ module top$lanes$2$compositor$ch_a(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$2$compositor$ch_a$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$2$compositor$ch_a$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$2$compositor$ch_a$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$2$compositor$ch_a$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1817,6 +2589,23 @@ module top$lanes$2$compositor$ch_a(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_a
+module top$lanes$2$compositor$ch_a$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_a$back_q
 module top$lanes$2$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
@@ -1834,6 +2623,23 @@ module top$lanes$2$compositor$ch_a$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_a$front_q
+module top$lanes$2$compositor$ch_a$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_a$front_qq
 module top$lanes$2$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -1890,6 +2696,23 @@ module top$lanes$2$compositor$ch_a$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_a$mul$t
+module top$lanes$2$compositor$ch_a$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_a$weight_q
 module top$lanes$2$compositor$ch_b(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -1907,9 +2730,18 @@ module top$lanes$2$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1921,22 +2753,46 @@ module top$lanes$2$compositor$ch_b(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$2$compositor$ch_b$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$2$compositor$ch_b$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$2$compositor$ch_b$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$2$compositor$ch_b$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1945,6 +2801,23 @@ module top$lanes$2$compositor$ch_b(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_b
+module top$lanes$2$compositor$ch_b$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_b$back_q
 module top$lanes$2$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
@@ -1962,6 +2835,23 @@ module top$lanes$2$compositor$ch_b$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_b$front_q
+module top$lanes$2$compositor$ch_b$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_b$front_qq
 module top$lanes$2$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -2018,6 +2908,23 @@ module top$lanes$2$compositor$ch_b$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_b$mul$t
+module top$lanes$2$compositor$ch_b$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_b$weight_q
 module top$lanes$2$compositor$ch_g(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -2035,9 +2942,18 @@ module top$lanes$2$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2049,22 +2965,46 @@ module top$lanes$2$compositor$ch_g(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$2$compositor$ch_g$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$2$compositor$ch_g$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$2$compositor$ch_g$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$2$compositor$ch_g$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2073,6 +3013,23 @@ module top$lanes$2$compositor$ch_g(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_g
+module top$lanes$2$compositor$ch_g$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_g$back_q
 module top$lanes$2$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
@@ -2090,6 +3047,23 @@ module top$lanes$2$compositor$ch_g$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_g$front_q
+module top$lanes$2$compositor$ch_g$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_g$front_qq
 module top$lanes$2$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -2146,6 +3120,23 @@ module top$lanes$2$compositor$ch_g$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_g$mul$t
+module top$lanes$2$compositor$ch_g$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_g$weight_q
 module top$lanes$2$compositor$ch_r(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -2163,9 +3154,18 @@ module top$lanes$2$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2177,22 +3177,46 @@ module top$lanes$2$compositor$ch_r(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$2$compositor$ch_r$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$2$compositor$ch_r$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$2$compositor$ch_r$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$2$compositor$ch_r$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2201,6 +3225,23 @@ module top$lanes$2$compositor$ch_r(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$2$compositor$ch_r
+module top$lanes$2$compositor$ch_r$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_r$back_q
 module top$lanes$2$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
@@ -2218,6 +3259,23 @@ module top$lanes$2$compositor$ch_r$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_r$front_q
+module top$lanes$2$compositor$ch_r$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_r$front_qq
 module top$lanes$2$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -2274,6 +3332,23 @@ module top$lanes$2$compositor$ch_r$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$ch_r$mul$t
+module top$lanes$2$compositor$ch_r$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$ch_r$weight_q
 module top$lanes$2$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -2359,6 +3434,23 @@ module top$lanes$2$compositor$scalar_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$compositor$scalar_q
+module top$lanes$2$compositor$scalar_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$compositor$scalar_qq
 module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -2406,6 +3498,9 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_q$d;
     wire  [31:0] scalar_q$q;
     reg  scalar_q$clock;
+    reg  [31:0] scalar_qq$d;
+    wire  [31:0] scalar_qq$q;
+    reg  scalar_qq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -2453,6 +3548,11 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_q$q),
         .clock(scalar_q$clock)
     );
+    top$lanes$3$compositor$scalar_qq scalar_qq(
+        .d(scalar_qq$d),
+        .q(scalar_qq$q),
+        .clock(scalar_qq$clock)
+    );
     top$lanes$3$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -2477,11 +3577,13 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     // Update code
     always @(*) begin
         scalar_q$clock = clock;
+        scalar_qq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
+        scalar_qq$d = scalar_qq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -2532,7 +3634,8 @@ module top$lanes$3$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         else begin
             scalar_q$d = acc_r + new_r;
         end
-        reg_r$d = scalar_q$q;
+        scalar_qq$d = scalar_q$q;
+        reg_r$d = scalar_qq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -2566,9 +3669,18 @@ module top$lanes$3$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2580,22 +3692,46 @@ module top$lanes$3$compositor$ch_a(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$3$compositor$ch_a$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$3$compositor$ch_a$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$3$compositor$ch_a$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$3$compositor$ch_a$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2604,6 +3740,23 @@ module top$lanes$3$compositor$ch_a(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_a
+module top$lanes$3$compositor$ch_a$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_a$back_q
 module top$lanes$3$compositor$ch_a$front_q(d,q,clock);
     
     // Module arguments
@@ -2621,6 +3774,23 @@ module top$lanes$3$compositor$ch_a$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_a$front_q
+module top$lanes$3$compositor$ch_a$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_a$front_qq
 module top$lanes$3$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -2677,6 +3847,23 @@ module top$lanes$3$compositor$ch_a$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_a$mul$t
+module top$lanes$3$compositor$ch_a$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_a$weight_q
 module top$lanes$3$compositor$ch_b(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -2694,9 +3881,18 @@ module top$lanes$3$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2708,22 +3904,46 @@ module top$lanes$3$compositor$ch_b(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$3$compositor$ch_b$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$3$compositor$ch_b$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$3$compositor$ch_b$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$3$compositor$ch_b$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2732,6 +3952,23 @@ module top$lanes$3$compositor$ch_b(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_b
+module top$lanes$3$compositor$ch_b$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_b$back_q
 module top$lanes$3$compositor$ch_b$front_q(d,q,clock);
     
     // Module arguments
@@ -2749,6 +3986,23 @@ module top$lanes$3$compositor$ch_b$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_b$front_q
+module top$lanes$3$compositor$ch_b$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_b$front_qq
 module top$lanes$3$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -2805,6 +4059,23 @@ module top$lanes$3$compositor$ch_b$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_b$mul$t
+module top$lanes$3$compositor$ch_b$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_b$weight_q
 module top$lanes$3$compositor$ch_g(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -2822,9 +4093,18 @@ module top$lanes$3$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2836,22 +4116,46 @@ module top$lanes$3$compositor$ch_g(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$3$compositor$ch_g$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$3$compositor$ch_g$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$3$compositor$ch_g$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$3$compositor$ch_g$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2860,6 +4164,23 @@ module top$lanes$3$compositor$ch_g(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_g
+module top$lanes$3$compositor$ch_g$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_g$back_q
 module top$lanes$3$compositor$ch_g$front_q(d,q,clock);
     
     // Module arguments
@@ -2877,6 +4198,23 @@ module top$lanes$3$compositor$ch_g$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_g$front_q
+module top$lanes$3$compositor$ch_g$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_g$front_qq
 module top$lanes$3$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -2933,6 +4271,23 @@ module top$lanes$3$compositor$ch_g$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_g$mul$t
+module top$lanes$3$compositor$ch_g$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_g$weight_q
 module top$lanes$3$compositor$ch_r(clock,front,back,front_alpha,result);
     
     // Module arguments
@@ -2950,9 +4305,18 @@ module top$lanes$3$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] mul$a;
     reg  [15:0] mul$b;
     wire  [15:0] mul$y;
+    reg  [15:0] weight_q$d;
+    wire  [15:0] weight_q$q;
+    reg  weight_q$clock;
+    reg  [15:0] back_q$d;
+    wire  [15:0] back_q$q;
+    reg  back_q$clock;
     reg  [15:0] front_q$d;
     wire  [15:0] front_q$q;
     reg  front_q$clock;
+    reg  [15:0] front_qq$d;
+    wire  [15:0] front_qq$q;
+    reg  front_qq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2964,22 +4328,46 @@ module top$lanes$3$compositor$ch_r(clock,front,back,front_alpha,result);
         .b(mul$b),
         .y(mul$y)
     );
+    top$lanes$3$compositor$ch_r$weight_q weight_q(
+        .d(weight_q$d),
+        .q(weight_q$q),
+        .clock(weight_q$clock)
+    );
+    top$lanes$3$compositor$ch_r$back_q back_q(
+        .d(back_q$d),
+        .q(back_q$q),
+        .clock(back_q$clock)
+    );
     top$lanes$3$compositor$ch_r$front_q front_q(
         .d(front_q$d),
         .q(front_q$q),
         .clock(front_q$clock)
     );
+    top$lanes$3$compositor$ch_r$front_qq front_qq(
+        .d(front_qq$d),
+        .q(front_qq$q),
+        .clock(front_qq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
+        weight_q$clock = clock;
+        back_q$clock = clock;
         front_q$clock = clock;
+        front_qq$clock = clock;
+        weight_q$d = weight_q$q;
+        back_q$d = back_q$q;
         front_q$d = front_q$q;
-        mul$clock = clock;
-        mul$a = m - front_alpha;
-        mul$b = back;
+        front_qq$d = front_qq$q;
+        weight_q$d = m - front_alpha;
+        back_q$d = back;
         front_q$d = front;
-        sum = 32'(front_q$q) + 32'(mul$y);
+        mul$clock = clock;
+        mul$a = weight_q$q;
+        mul$b = back_q$q;
+        front_qq$d = front_q$q;
+        sum = 32'(front_qq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2988,6 +4376,23 @@ module top$lanes$3$compositor$ch_r(clock,front,back,front_alpha,result);
     end
     
 endmodule // top$lanes$3$compositor$ch_r
+module top$lanes$3$compositor$ch_r$back_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_r$back_q
 module top$lanes$3$compositor$ch_r$front_q(d,q,clock);
     
     // Module arguments
@@ -3005,6 +4410,23 @@ module top$lanes$3$compositor$ch_r$front_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_r$front_q
+module top$lanes$3$compositor$ch_r$front_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_r$front_qq
 module top$lanes$3$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -3061,6 +4483,23 @@ module top$lanes$3$compositor$ch_r$mul$t(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$ch_r$mul$t
+module top$lanes$3$compositor$ch_r$weight_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$ch_r$weight_q
 module top$lanes$3$compositor$reg_a(d,q,clock);
     
     // Module arguments
@@ -3146,3 +4585,20 @@ module top$lanes$3$compositor$scalar_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$compositor$scalar_q
+module top$lanes$3$compositor$scalar_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$compositor$scalar_qq
