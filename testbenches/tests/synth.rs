@@ -107,6 +107,6 @@ fn stat_parsing_and_frame_clocks() {
     assert_eq!(types["LUT4"], 486);
     assert_eq!(types.len(), 2);
     // 256 slices of 256 beams of 64 partial beams, one gradient slice, fill.
-    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 22);
-    assert_eq!(frame_clocks(8, 1, false), 512 + 21);
+    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 23);
+    assert_eq!(frame_clocks(8, 1, false), 512 + 22);
 }

@@ -44,6 +44,8 @@ pub fn stage_of(cell: &str) -> &'static str {
             "ctl" => "control_delay",
             _ => "pipe_lane",
         },
+        // The host-loaded register file (`common/regs.rs`).
+        "view" => "regs",
         // Cube-3's system.
         "fetch" => "beam_fetch",
         "pipeline" => match after_lane(1) {
@@ -93,8 +95,15 @@ pub fn parse_report(text: &str) -> Result<Timing, String> {
             }
         }
     }
-    let first = cells.first().cloned().ok_or("nextpnr report: empty path")?;
-    let last = cells.last().cloned().unwrap_or_default();
+    // The ends are the first and last cells of the design: nextpnr's own
+    // (`$nextpnr_…`, a carry chain's feed-in) carry no instance path.
+    let ours = |c: &&String| !c.starts_with("$nextpnr");
+    let first = (cells.iter().find(ours).or(cells.first()))
+        .cloned()
+        .ok_or("nextpnr report: empty path")?;
+    let last = (cells.iter().rev().find(ours).or(cells.last()))
+        .cloned()
+        .unwrap_or_default();
     Ok(Timing {
         fmax_mhz,
         from: PathEnd {
@@ -134,6 +143,18 @@ mod tests {
         assert_eq!(stage_of("late.lanes$1.div_x.q_FF"), "divider");
         assert_eq!(stage_of("lanes$3.feed.abc.line_a.ram"), "abc_gradient");
         assert_eq!(stage_of("uut.lanes$0.shader.r_q"), "shader");
+        assert_eq!(stage_of("uut.view.r$0.q_SB_DFFE_Q_15_DFFLC"), "regs");
+        // A path that starts in a cell nextpnr made (a carry chain's feed-in).
+        let text = text.replace(
+            r#"[
+            {"type": "clk-to-q""#,
+            r#"[
+            {"type": "logic", "from": {"cell": "$nextpnr_ICESTORM_LC_1"}, "to": {"cell": "$nextpnr_ICESTORM_LC_1"}, "delay": 0.2},
+            {"type": "clk-to-q""#,
+        );
+        let t = parse_report(&text).unwrap();
+        assert_eq!(t.from.cell, "lanes$0.cells.y_FF");
+        assert_eq!(t.cells.len(), 4);
         assert!(parse_report("{}").is_err());
     }
 }
