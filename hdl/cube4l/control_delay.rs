@@ -42,9 +42,8 @@ pub struct ControlDelay {
     pub dy_mag: Signal<In, Bits<16>>,
     /// The `Dims` register (the slice's n_x and n_y).
     pub dims: Signal<In, Bits<64>>,
-    /// At the gather (T): the voxel's position, SR, dx and dy.
+    /// At the gather (T): the voxel's x (for the taps), SR, dx and dy.
     pub x_t: Signal<Out, Bits<16>>,
-    pub y_t: Signal<Out, Bits<16>>,
     pub sr_t: Signal<Out, Bit>,
     pub dx_neg_t: Signal<Out, Bit>,
     pub dx_mag_t: Signal<Out, Bits<16>>,
@@ -69,7 +68,8 @@ pub struct ControlDelay {
     y_out_q: DFF<Bit>,
     // Control to the gather.
     x_q: [DFF<Bits<16>>; GATHER],
-    y_q: [DFF<Bits<16>>; GATHER],
+    /// y goes only as far as the slice-edge test a clock before T.
+    y_q: [DFF<Bits<16>>; 7],
     sr_q: [DFF<Bit>; GATHER],
     dxn_q: [DFF<Bit>; GATHER],
     dxm_q: [DFF<Bits<16>>; GATHER],
@@ -90,7 +90,6 @@ impl Logic for ControlDelay {
         dff_setup!(self, clock, nx_last, ny_last, x_out_q, y_out_q);
         for i in 0..8 {
             self.x_q[i].clock.next = self.clock.val();
-            self.y_q[i].clock.next = self.clock.val();
             self.sr_q[i].clock.next = self.clock.val();
             self.dxn_q[i].clock.next = self.clock.val();
             self.dxm_q[i].clock.next = self.clock.val();
@@ -115,15 +114,19 @@ impl Logic for ControlDelay {
         self.dym_q[0].d.next = self.dy_mag.val();
         for i in 1..8 {
             self.x_q[i].d.next = self.x_q[i - 1].q.val();
-            self.y_q[i].d.next = self.y_q[i - 1].q.val();
             self.sr_q[i].d.next = self.sr_q[i - 1].q.val();
             self.dxn_q[i].d.next = self.dxn_q[i - 1].q.val();
             self.dxm_q[i].d.next = self.dxm_q[i - 1].q.val();
             self.dyn_q[i].d.next = self.dyn_q[i - 1].q.val();
             self.dym_q[i].d.next = self.dym_q[i - 1].q.val();
         }
+        for i in 0..7 {
+            self.y_q[i].clock.next = self.clock.val();
+        }
+        for i in 1..7 {
+            self.y_q[i].d.next = self.y_q[i - 1].q.val();
+        }
         self.x_t.next = self.x_q[7].q.val();
-        self.y_t.next = self.y_q[7].q.val();
         self.sr_t.next = self.sr_q[7].q.val();
         self.dx_neg_t.next = self.dxn_q[7].q.val();
         self.dx_mag_t.next = self.dxm_q[7].q.val();

@@ -173,7 +173,6 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
-    wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
@@ -389,7 +388,6 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
         .x_t(ctl$x_t),
-        .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
@@ -795,7 +793,7 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -814,7 +812,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
     output reg  [15:0] x_t;
-    output reg  [15:0] y_t;
     output reg  sr_t;
     output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
@@ -887,9 +884,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
-    reg  [15:0] y_q$7$d;
-    wire  [15:0] y_q$7$q;
-    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -1430,11 +1424,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
-    );
-    top$lanes$0$ctl$y_q$7 y_q$7(
-        .d(y_q$7$d),
-        .q(y_q$7$q),
-        .clock(y_q$7$clock)
     );
     top$lanes$0$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -2188,56 +2177,48 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         x_out_q$d = x_out_q$q;
         y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        y_q$0$clock = clock;
         sr_q$0$clock = clock;
         dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
         dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        y_q$1$clock = clock;
         sr_q$1$clock = clock;
         dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        y_q$2$clock = clock;
         sr_q$2$clock = clock;
         dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
         dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        y_q$3$clock = clock;
         sr_q$3$clock = clock;
         dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
         dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        y_q$4$clock = clock;
         sr_q$4$clock = clock;
         dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
         dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        y_q$5$clock = clock;
         sr_q$5$clock = clock;
         dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
         dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        y_q$6$clock = clock;
         sr_q$6$clock = clock;
         dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
         dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        y_q$7$clock = clock;
         sr_q$7$clock = clock;
         dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
@@ -2359,56 +2340,61 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        y_q$1$d = y_q$0$q;
         sr_q$1$d = sr_q$0$q;
         dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        y_q$2$d = y_q$1$q;
         sr_q$2$d = sr_q$1$q;
         dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
         dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        y_q$3$d = y_q$2$q;
         sr_q$3$d = sr_q$2$q;
         dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
         dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        y_q$4$d = y_q$3$q;
         sr_q$4$d = sr_q$3$q;
         dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
         dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        y_q$5$d = y_q$4$q;
         sr_q$5$d = sr_q$4$q;
         dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
         dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        y_q$6$d = y_q$5$q;
         sr_q$6$d = sr_q$5$q;
         dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
         dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        y_q$7$d = y_q$6$q;
         sr_q$7$d = sr_q$6$q;
         dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        y_q$0$clock = clock;
+        y_q$1$clock = clock;
+        y_q$2$clock = clock;
+        y_q$3$clock = clock;
+        y_q$4$clock = clock;
+        y_q$5$clock = clock;
+        y_q$6$clock = clock;
+        y_q$1$d = y_q$0$q;
+        y_q$2$d = y_q$1$q;
+        y_q$3$d = y_q$2$q;
+        y_q$4$d = y_q$3$q;
+        y_q$5$d = y_q$4$q;
+        y_q$6$d = y_q$5$q;
         x_t = x_q$7$q;
-        y_t = y_q$7$q;
         sr_t = sr_q$7$q;
         dx_neg_t = dxn_q$7$q;
         dx_mag_t = dxm_q$7$q;
@@ -5392,23 +5378,6 @@ module top$lanes$0$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q$6
-module top$lanes$0$ctl$y_q$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$y_q$7
 module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -5729,7 +5698,6 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
-    wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
@@ -5945,7 +5913,6 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
         .x_t(ctl$x_t),
-        .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
@@ -6351,7 +6318,7 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -6370,7 +6337,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
     output reg  [15:0] x_t;
-    output reg  [15:0] y_t;
     output reg  sr_t;
     output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
@@ -6443,9 +6409,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
-    reg  [15:0] y_q$7$d;
-    wire  [15:0] y_q$7$q;
-    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -6986,11 +6949,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
-    );
-    top$lanes$1$ctl$y_q$7 y_q$7(
-        .d(y_q$7$d),
-        .q(y_q$7$q),
-        .clock(y_q$7$clock)
     );
     top$lanes$1$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -7744,56 +7702,48 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         x_out_q$d = x_out_q$q;
         y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        y_q$0$clock = clock;
         sr_q$0$clock = clock;
         dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
         dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        y_q$1$clock = clock;
         sr_q$1$clock = clock;
         dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        y_q$2$clock = clock;
         sr_q$2$clock = clock;
         dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
         dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        y_q$3$clock = clock;
         sr_q$3$clock = clock;
         dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
         dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        y_q$4$clock = clock;
         sr_q$4$clock = clock;
         dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
         dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        y_q$5$clock = clock;
         sr_q$5$clock = clock;
         dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
         dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        y_q$6$clock = clock;
         sr_q$6$clock = clock;
         dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
         dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        y_q$7$clock = clock;
         sr_q$7$clock = clock;
         dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
@@ -7915,56 +7865,61 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        y_q$1$d = y_q$0$q;
         sr_q$1$d = sr_q$0$q;
         dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        y_q$2$d = y_q$1$q;
         sr_q$2$d = sr_q$1$q;
         dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
         dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        y_q$3$d = y_q$2$q;
         sr_q$3$d = sr_q$2$q;
         dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
         dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        y_q$4$d = y_q$3$q;
         sr_q$4$d = sr_q$3$q;
         dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
         dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        y_q$5$d = y_q$4$q;
         sr_q$5$d = sr_q$4$q;
         dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
         dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        y_q$6$d = y_q$5$q;
         sr_q$6$d = sr_q$5$q;
         dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
         dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        y_q$7$d = y_q$6$q;
         sr_q$7$d = sr_q$6$q;
         dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        y_q$0$clock = clock;
+        y_q$1$clock = clock;
+        y_q$2$clock = clock;
+        y_q$3$clock = clock;
+        y_q$4$clock = clock;
+        y_q$5$clock = clock;
+        y_q$6$clock = clock;
+        y_q$1$d = y_q$0$q;
+        y_q$2$d = y_q$1$q;
+        y_q$3$d = y_q$2$q;
+        y_q$4$d = y_q$3$q;
+        y_q$5$d = y_q$4$q;
+        y_q$6$d = y_q$5$q;
         x_t = x_q$7$q;
-        y_t = y_q$7$q;
         sr_t = sr_q$7$q;
         dx_neg_t = dxn_q$7$q;
         dx_mag_t = dxm_q$7$q;
@@ -10948,23 +10903,6 @@ module top$lanes$1$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q$6
-module top$lanes$1$ctl$y_q$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$y_q$7
 module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -11285,7 +11223,6 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
-    wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
@@ -11501,7 +11438,6 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
         .x_t(ctl$x_t),
-        .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
@@ -11907,7 +11843,7 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$2$cells
-module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -11926,7 +11862,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
     output reg  [15:0] x_t;
-    output reg  [15:0] y_t;
     output reg  sr_t;
     output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
@@ -11999,9 +11934,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
-    reg  [15:0] y_q$7$d;
-    wire  [15:0] y_q$7$q;
-    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -12542,11 +12474,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
-    );
-    top$lanes$2$ctl$y_q$7 y_q$7(
-        .d(y_q$7$d),
-        .q(y_q$7$q),
-        .clock(y_q$7$clock)
     );
     top$lanes$2$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -13300,56 +13227,48 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         x_out_q$d = x_out_q$q;
         y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        y_q$0$clock = clock;
         sr_q$0$clock = clock;
         dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
         dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        y_q$1$clock = clock;
         sr_q$1$clock = clock;
         dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        y_q$2$clock = clock;
         sr_q$2$clock = clock;
         dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
         dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        y_q$3$clock = clock;
         sr_q$3$clock = clock;
         dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
         dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        y_q$4$clock = clock;
         sr_q$4$clock = clock;
         dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
         dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        y_q$5$clock = clock;
         sr_q$5$clock = clock;
         dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
         dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        y_q$6$clock = clock;
         sr_q$6$clock = clock;
         dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
         dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        y_q$7$clock = clock;
         sr_q$7$clock = clock;
         dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
@@ -13471,56 +13390,61 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        y_q$1$d = y_q$0$q;
         sr_q$1$d = sr_q$0$q;
         dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        y_q$2$d = y_q$1$q;
         sr_q$2$d = sr_q$1$q;
         dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
         dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        y_q$3$d = y_q$2$q;
         sr_q$3$d = sr_q$2$q;
         dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
         dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        y_q$4$d = y_q$3$q;
         sr_q$4$d = sr_q$3$q;
         dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
         dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        y_q$5$d = y_q$4$q;
         sr_q$5$d = sr_q$4$q;
         dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
         dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        y_q$6$d = y_q$5$q;
         sr_q$6$d = sr_q$5$q;
         dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
         dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        y_q$7$d = y_q$6$q;
         sr_q$7$d = sr_q$6$q;
         dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        y_q$0$clock = clock;
+        y_q$1$clock = clock;
+        y_q$2$clock = clock;
+        y_q$3$clock = clock;
+        y_q$4$clock = clock;
+        y_q$5$clock = clock;
+        y_q$6$clock = clock;
+        y_q$1$d = y_q$0$q;
+        y_q$2$d = y_q$1$q;
+        y_q$3$d = y_q$2$q;
+        y_q$4$d = y_q$3$q;
+        y_q$5$d = y_q$4$q;
+        y_q$6$d = y_q$5$q;
         x_t = x_q$7$q;
-        y_t = y_q$7$q;
         sr_t = sr_q$7$q;
         dx_neg_t = dxn_q$7$q;
         dx_mag_t = dxm_q$7$q;
@@ -16504,23 +16428,6 @@ module top$lanes$2$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$y_q$6
-module top$lanes$2$ctl$y_q$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$y_q$7
 module top$lanes$2$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -16841,7 +16748,6 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
     wire  [15:0] ctl$x_t;
-    wire  [15:0] ctl$y_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
@@ -17057,7 +16963,6 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
         .x_t(ctl$x_t),
-        .y_t(ctl$y_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
@@ -17463,7 +17368,7 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$3$cells
-module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,y_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -17482,7 +17387,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
     output reg  [15:0] x_t;
-    output reg  [15:0] y_t;
     output reg  sr_t;
     output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
@@ -17555,9 +17459,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
-    reg  [15:0] y_q$7$d;
-    wire  [15:0] y_q$7$q;
-    reg  y_q$7$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -18098,11 +17999,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
-    );
-    top$lanes$3$ctl$y_q$7 y_q$7(
-        .d(y_q$7$d),
-        .q(y_q$7$q),
-        .clock(y_q$7$clock)
     );
     top$lanes$3$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -18856,56 +18752,48 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         x_out_q$d = x_out_q$q;
         y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        y_q$0$clock = clock;
         sr_q$0$clock = clock;
         dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
         dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        y_q$1$clock = clock;
         sr_q$1$clock = clock;
         dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
         dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        y_q$2$clock = clock;
         sr_q$2$clock = clock;
         dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
         dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        y_q$3$clock = clock;
         sr_q$3$clock = clock;
         dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
         dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        y_q$4$clock = clock;
         sr_q$4$clock = clock;
         dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
         dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        y_q$5$clock = clock;
         sr_q$5$clock = clock;
         dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
         dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        y_q$6$clock = clock;
         sr_q$6$clock = clock;
         dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
         dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        y_q$7$clock = clock;
         sr_q$7$clock = clock;
         dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
@@ -19027,56 +18915,61 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        y_q$1$d = y_q$0$q;
         sr_q$1$d = sr_q$0$q;
         dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
         dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        y_q$2$d = y_q$1$q;
         sr_q$2$d = sr_q$1$q;
         dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
         dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        y_q$3$d = y_q$2$q;
         sr_q$3$d = sr_q$2$q;
         dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
         dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        y_q$4$d = y_q$3$q;
         sr_q$4$d = sr_q$3$q;
         dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
         dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        y_q$5$d = y_q$4$q;
         sr_q$5$d = sr_q$4$q;
         dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
         dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        y_q$6$d = y_q$5$q;
         sr_q$6$d = sr_q$5$q;
         dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
         dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        y_q$7$d = y_q$6$q;
         sr_q$7$d = sr_q$6$q;
         dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        y_q$0$clock = clock;
+        y_q$1$clock = clock;
+        y_q$2$clock = clock;
+        y_q$3$clock = clock;
+        y_q$4$clock = clock;
+        y_q$5$clock = clock;
+        y_q$6$clock = clock;
+        y_q$1$d = y_q$0$q;
+        y_q$2$d = y_q$1$q;
+        y_q$3$d = y_q$2$q;
+        y_q$4$d = y_q$3$q;
+        y_q$5$d = y_q$4$q;
+        y_q$6$d = y_q$5$q;
         x_t = x_q$7$q;
-        y_t = y_q$7$q;
         sr_t = sr_q$7$q;
         dx_neg_t = dxn_q$7$q;
         dx_mag_t = dxm_q$7$q;
@@ -22060,23 +21953,6 @@ module top$lanes$3$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$y_q$6
-module top$lanes$3$ctl$y_q$7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$y_q$7
 module top$lanes$3$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
