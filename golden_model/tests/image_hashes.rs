@@ -200,13 +200,13 @@ fn scenes() -> Vec<(String, String)> {
     // Footprints across the quantized path's bands and blocks: a larger,
     // zoomed image, an opaque volume (occlusion, early termination), and
     // gradients (the blocks' boundary voxels cut).
-    let zoomed = |order: &str, opaque: bool, zoom: f64, mode: &str| {
+    let zoomed = |order: &str, opaque: bool, zoom: f64, mode: &str, [w, h]: [u32; 2]| {
         let tf_opaque = r#""transfer": {"opacity": [[0, 0.0], [40, 0.0], [60, 1.0], [255, 1.0]],
             "color": [[0, 1, 0.5, 0.2], [255, 0.2, 0.6, 1]]}"#;
         format!(
             r#"{{"volume": {{"builtin": "phantom", "dims": [30, 26, 22]}},
                 "view": {{"projection": "parallel", "rotate_deg": [-20, 130, 15], "zoom": {zoom}}},
-                "image": [150, 140], "mode": "{mode}", {}, {}, {shading},
+                "image": [{w}, {h}], "mode": "{mode}", {}, {}, {shading},
                 "quantized": {{"order": "{order}", "subdivisions": 16}}}}"#,
             if opaque { tf_opaque } else { tf_go },
             hw(4, 8)
@@ -215,28 +215,27 @@ fn scenes() -> Vec<(String, String)> {
     for order in ["back_to_front", "front_to_back"] {
         add(
             format!("zoomed_{order}"),
-            zoomed(order, false, 2.5, "composite"),
+            zoomed(order, false, 2.5, "composite", [150, 140]),
         );
         add(
             format!("zoomed_opaque_{order}"),
-            zoomed(order, true, 2.5, "composite"),
+            zoomed(order, true, 2.5, "composite", [150, 140]),
         );
         // The volume past every edge of the image.
         add(
             format!("cropped_{order}"),
-            zoomed(order, false, 6.0, "composite"),
+            zoomed(order, false, 6.0, "composite", [150, 140]),
         );
         add(
             format!("first_opaque_{order}"),
-            zoomed(order, true, 2.5, "first_opaque"),
+            zoomed(order, true, 2.5, "first_opaque", [150, 140]),
         );
     }
     // Small footprints (whole blocks within a band of 32 rows) past the
     // image's edges, on an image two bands high.
     for order in ["back_to_front", "front_to_back"] {
         for opaque in [false, true] {
-            let json = zoomed(order, opaque, 1.8, "composite")
-                .replace(r#""image": [150, 140]"#, r#""image": [48, 64]"#);
+            let json = zoomed(order, opaque, 1.8, "composite", [48, 64]);
             add(
                 format!("edges_{}_{order}", ["clear", "opaque"][opaque as usize]),
                 json,

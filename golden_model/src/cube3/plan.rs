@@ -760,7 +760,8 @@ mod tests {
             }
         }
         // The last ray's weights are never read, so never computed or
-        // counted: one ray fewer in the template drops exactly its count.
+        // counted: one ray fewer or more in the template counts fewer or
+        // more clamps.
         for k in 0..6 {
             assert_eq!(t.weight(6, k), 0);
         }
