@@ -15,6 +15,7 @@ mod render;
 mod reports;
 mod scenes;
 mod sim;
+mod stage_vectors;
 mod stop;
 mod synth;
 mod tradeoff;
@@ -59,10 +60,14 @@ enum Command {
     /// is placed and routed with nextpnr-ice40 for fmax, and the frame rate
     /// is projected for 256³ and 512³ volumes.
     Synth(synth::SynthArgs),
-    /// Compare two VCD traces of the same design (e.g. rust-hdl against
-    /// Verilator) signal by signal and cycle by cycle. Exit 0 when equal, 1
-    /// when they differ, 2 on a bad trace file.
+    /// Compare two traces (VCD or FST) of the same design (e.g. rust-hdl
+    /// against Verilator) signal by signal and cycle by cycle. Exit 0 when
+    /// equal, 1 when they differ, 2 on a bad trace file.
     VcdDiff(vcd_diff::VcdDiffArgs),
+    /// Write a stage's Verilog with the golden model's stimulus and expected
+    /// outputs as JSON, for a testbench outside the kit (the cocotb test in
+    /// testbenches/cocotb).
+    StageVectors(stage_vectors::StageVectorsArgs),
     /// Error of an image made elsewhere (a peer renderer's PNG) against the
     /// scene's float reference.
     Compare(compare::CompareArgs),
@@ -110,6 +115,7 @@ fn main() {
         // vcd-diff sets its own exit code (2 for a bad file) and prints its
         // own errors.
         Some(Command::VcdDiff(args)) => std::process::exit(vcd_diff::run(args)),
+        Some(Command::StageVectors(args)) => stage_vectors::run(args),
         Some(Command::Compare(args)) => compare::run(args),
         Some(Command::Tradeoff(args)) => tradeoff::run(args),
         Some(Command::Scenes) => scenes::run(),

@@ -39,9 +39,24 @@ pub struct SimArgs {
     arch: HwArch,
     #[arg(long, value_enum, default_value = "rust-hdl")]
     engine: Engine,
-    /// Write the simulation's VCD (and a GTKWave .gtkw beside it).
-    #[arg(long)]
-    vcd: Option<PathBuf>,
+    /// Trace the simulation: VCD or FST by the name's extension, every
+    /// simulation of the run one after another, with a GTKWave .gtkw beside
+    /// it.
+    #[arg(long, visible_alias = "vcd")]
+    trace: Option<PathBuf>,
+    /// Trace only signals whose dotted name below the design's top matches
+    /// this glob (e.g. 'lanes$0.*' for one lane, '*shader*'); give it
+    /// several times for several.
+    #[arg(long, requires = "trace")]
+    trace_scope: Vec<String>,
+    /// Trace only signals at most this many modules below the top (0: the
+    /// top's own).
+    #[arg(long, requires = "trace")]
+    trace_depth: Option<usize>,
+    /// Trace only clocks FIRST..END of the run (END excluded, counted from
+    /// the run's first clock, host writes included).
+    #[arg(long, requires = "trace", value_name = "FIRST..END")]
+    trace_clocks: Option<String>,
     /// The warped image of the RTL's base planes (PNG; with several frames,
     /// frame i goes to `<stem>-<i>.png`).
     #[arg(long)]
@@ -107,23 +122,39 @@ impl ForArch for Sim<'_> {
         if let Some(j) = &args.json {
             files.output("--json", j)?;
         }
-        if let Some(v) = &args.vcd {
-            files.output("--vcd", v)?;
-            files.companion("--vcd's save file", &v.with_extension("gtkw"))?;
+        if let Some(v) = &args.trace {
+            files.output("--trace", v)?;
+            files.companion("--trace's save file", &v.with_extension("gtkw"))?;
         }
-        let vcd_tmp = vcd_temp(&args.vcd)?;
+        let request = trace_request(args)?;
         let simulated = cosim::sim::simulate_frames::<A>(
             &frames,
             build.as_ref(),
             &vol,
             engine,
-            vcd_tmp.as_deref(),
+            request.as_ref(),
             &|v| v.to_string(),
         )
         .map_err(err)
-        .and_then(|r| keep_vcd(&vcd_tmp, &args.vcd).map(|()| r));
-        drop_vcd_temp(&vcd_tmp);
+        .and_then(|r| keep_trace(&request).map(|()| r));
+        drop_trace_temp(&request);
         let run = simulated?;
+        if let Some(t) = &run.traced {
+            println!(
+                "trace: {} of {} signals, clocks {}..{} ({} simulation{}), {} bytes",
+                t.signals,
+                t.of,
+                t.clocks.0,
+                t.clocks.1,
+                t.parts,
+                if t.parts == 1 {
+                    ""
+                } else {
+                    "s one after another"
+                },
+                t.bytes
+            );
+        }
         let several = frames.len() > 1;
         if several {
             println!(
@@ -258,32 +289,63 @@ fn frame_paths(out: &Option<PathBuf>, frames: usize) -> Vec<PathBuf> {
         .collect()
 }
 
-/// The temporary path the simulation traces to, beside the file `--vcd`
-/// names (a VCD is written whole, never through a special file).
-fn vcd_temp(vcd: &Option<PathBuf>) -> Result<Option<PathBuf>> {
-    let Some(v) = vcd else { return Ok(None) };
-    let tmp = output::temp_for(v, "vcd")
-        .with_context(|| "--vcd: a VCD is written whole, with its .gtkw beside it")?;
+/// The trace `--trace` asks for, written to a temporary path beside it
+/// (a trace is written whole, never through a special file).
+fn trace_request(args: &SimArgs) -> Result<Option<cosim::trace::Request>> {
+    let Some(v) = &args.trace else {
+        return Ok(None);
+    };
+    let scopes = args
+        .trace_scope
+        .iter()
+        .map(|p| glob::Pattern::new(p).with_context(|| format!("--trace-scope {p}")))
+        .collect::<Result<Vec<_>>>()?;
+    let clocks = args
+        .trace_clocks
+        .as_deref()
+        .map(|r| {
+            let parsed = r
+                .split_once("..")
+                .and_then(|(a, b)| Some((a.trim().parse().ok()?, b.trim().parse().ok()?)));
+            parsed
+                .with_context(|| format!("--trace-clocks {r}: expected FIRST..END, e.g. 100..400"))
+        })
+        .transpose()?;
+    let limits = cosim::trace::Limits {
+        scopes,
+        depth: args.trace_depth,
+        clocks,
+    };
+    let mut req =
+        cosim::trace::Request::new(v, limits).map_err(|e| anyhow::anyhow!("--trace: {e}"))?;
+    let ext = if req.format == cosim::trace::Format::Fst {
+        "fst"
+    } else {
+        "vcd"
+    };
+    let tmp = output::temp_for(v, ext)
+        .with_context(|| "--trace: a trace is written whole, with its .gtkw beside it")?;
     crate::stop::remove_on_stop(&tmp);
     crate::stop::remove_on_stop(&tmp.with_extension("gtkw"));
-    Ok(Some(tmp))
+    req.path = tmp;
+    req.lands_at = Some(v.clone());
+    Ok(Some(req))
 }
 
 /// Move a finished trace and its `.gtkw` into place.
-fn keep_vcd(tmp: &Option<PathBuf>, vcd: &Option<PathBuf>) -> Result<()> {
-    if let (Some(tmp), Some(v)) = (tmp, vcd) {
-        let text = std::fs::read_to_string(tmp.with_extension("gtkw"))?
-            .replace(&tmp.display().to_string(), &v.display().to_string());
-        output::write_text(&v.with_extension("gtkw"), &text)?;
-        output::keep(tmp, v)?;
+fn keep_trace(req: &Option<cosim::trace::Request>) -> Result<()> {
+    if let Some(req) = req {
+        let v = req.lands_at.as_ref().expect("the trace's place");
+        output::keep(&req.path.with_extension("gtkw"), &v.with_extension("gtkw"))?;
+        output::keep(&req.path, v)?;
     }
     Ok(())
 }
 
 /// Whatever happened, no temporary trace is left behind.
-fn drop_vcd_temp(tmp: &Option<PathBuf>) {
-    if let Some(tmp) = tmp {
-        let _ = std::fs::remove_file(tmp);
-        let _ = std::fs::remove_file(tmp.with_extension("gtkw"));
+fn drop_trace_temp(req: &Option<cosim::trace::Request>) {
+    if let Some(req) = req {
+        let _ = std::fs::remove_file(&req.path);
+        let _ = std::fs::remove_file(req.path.with_extension("gtkw"));
     }
 }

@@ -105,19 +105,21 @@ fn a_symlinked_output_writes_its_target_and_stays_a_link() {
             continue; // its output needs yosys: tests/synth covers the writer there
         }
         let mut args = run.clone();
+        // A trace's name carries its format.
+        let ext = |flag: &str| if flag == "--vcd" { ".vcd" } else { "" };
         for (i, flag) in flags.iter().enumerate() {
-            let link = format!("{}-{i}.link", run[0]);
-            let target = format!("{}-{i}.target", run[0]);
+            let link = format!("{}-{i}.link{}", run[0], ext(flag));
+            let target = format!("{}-{i}.target{}", run[0], ext(flag));
             std::os::unix::fs::symlink(&target, p.join(&link)).unwrap();
             args.push(flag);
             args.push(Box::leak(link.into_boxed_str()));
         }
         ok(&cube(&args, p));
         for (i, flag) in flags.iter().enumerate() {
-            let link = p.join(format!("{}-{i}.link", run[0]));
+            let link = p.join(format!("{}-{i}.link{}", run[0], ext(flag)));
             let meta = std::fs::symlink_metadata(&link).unwrap();
             assert!(meta.file_type().is_symlink(), "{run:?} {flag}");
-            let target = p.join(format!("{}-{i}.target", run[0]));
+            let target = p.join(format!("{}-{i}.target{}", run[0], ext(flag)));
             assert!(
                 std::fs::metadata(&target).unwrap().len() > 0,
                 "{run:?} {flag}"

@@ -59,14 +59,16 @@ pub fn run_rust_hdl<T: rust_hdl::prelude::Block + Send + 'static>(
     max_time: u64,
     trace: Option<&Path>,
 ) -> Result<(), String> {
-    match trace {
+    let bar = crate::tool::spinner("rust-hdl simulation");
+    let r = match trace {
         Some(path) => {
             let f = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
             sim.run_traced(uut, max_time, std::io::BufWriter::new(f))
         }
         None => sim.run(uut, max_time),
-    }
-    .map_err(|e| format!("simulation: {e:?}"))
+    };
+    bar.finish_and_clear();
+    r.map_err(|e| format!("simulation: {e:?}"))
 }
 
 /// A port of the `top` module: name and width.
@@ -247,9 +249,13 @@ pub struct Spec<'a> {
     pub groups: &'a [Group],
     /// External memory modules (Verilator only).
     pub memory: Option<&'a [Vec<u16>]>,
-    /// A VCD of the whole design (scope `tb.uut` under Icarus, `TOP.top`
-    /// under Verilator).
+    /// A trace of the whole design (scope `tb.uut` under Icarus, `TOP.top`
+    /// under Verilator): a VCD, or under Icarus an FST when the name ends
+    /// in `.fst`.
     pub trace: Option<&'a Path>,
+    /// Clocks to trace, `[first, end)` from the spec's first edge
+    /// (Verilator; Icarus traces every clock).
+    pub trace_clocks: Option<(u64, u64)>,
 }
 
 /// A logged clock of one group: `values[i]` is field `i`, `None` where a bit
@@ -311,7 +317,13 @@ pub fn run(engine: Engine, spec: &Spec) -> Result<Logged, String> {
             _ => verilator(spec.verilog, &plan, &dir)?,
         };
         if let Some(path) = spec.trace {
-            std::fs::copy(dir.join("trace.vcd"), path)
+            let raw = dir.join(if plan.trace_fst {
+                "trace.fst"
+            } else {
+                "trace.vcd"
+            });
+            std::fs::rename(&raw, path)
+                .or_else(|_| std::fs::copy(&raw, path).map(|_| ()))
                 .map_err(|e| format!("{}: {e}", path.display()))?;
         }
         let log = std::fs::read_to_string(dir.join("out.hex")).map_err(io)?;
@@ -360,6 +372,7 @@ pub fn run_stage(
         groups: &groups,
         memory: None,
         trace: None,
+        trace_clocks: None,
     };
     let logged = run(engine, &spec)?;
     Ok(logged.records.into_iter().map(|r| r.values).collect())
@@ -377,6 +390,9 @@ struct Plan {
     /// External memory modules: their number, with a VCD or not.
     modules: usize,
     trace: bool,
+    /// Icarus writes the trace as FST.
+    trace_fst: bool,
+    trace_clocks: (u64, u64),
 }
 
 impl Plan {
@@ -440,16 +456,22 @@ impl Plan {
             runs,
             modules,
             trace: spec.trace.is_some(),
+            trace_fst: spec
+                .trace
+                .is_some_and(|p| p.extension().is_some_and(|e| e == "fst")),
+            trace_clocks: spec.trace_clocks.unwrap_or((0, u64::MAX)),
         })
     }
 
     /// The runs' parameters as the C++ harness reads them (`run.cfg`).
     fn config(&self) -> String {
         let mut s = format!(
-            "{} {} {}\n",
+            "{} {} {} {} {}\n",
             self.runs.len(),
             self.modules,
-            self.trace as u8
+            self.trace as u8,
+            self.trace_clocks.0,
+            self.trace_clocks.1
         );
         for r in &self.runs {
             s += &format!(
@@ -596,7 +618,8 @@ int main(int argc, char** argv) {{
   FILE* cfg = fopen((dir + "/run.cfg").c_str(), "r");
   if (!cfg) {{ perror("run.cfg"); return 2; }}
   int nruns, mems, tracing, ngroups;
-  if (fscanf(cfg, "%d %d %d", &nruns, &mems, &tracing) != 3) return 2;
+  unsigned long long tfrom, tto;
+  if (fscanf(cfg, "%d %d %d %llu %llu", &nruns, &mems, &tracing, &tfrom, &tto) != 5) return 2;
   std::vector<unsigned long long> limit(nruns), vectors(nruns), count(nruns);
   std::vector<long long> stop(nruns);
   for (int r = 0; r < nruns; r++)
@@ -647,14 +670,15 @@ int main(int argc, char** argv) {{
         set_inputs(top.get(), v);
       }}
       top->eval();
-      if (vcd) vcd->dump(10 * g);
+      const bool dump = vcd && g >= tfrom && g < tto;
+      if (dump) vcd->dump(10 * g);
       // Rising edge; the external RAM registers the address presented
       // before it and answers after it.
       get_addresses(top.get(), a, mems);
       top->clock = 1;
       top->eval();
       set_data(top.get(), a, mem, mems);
-      if (vcd) vcd->dump(10 * g + 5);
+      if (dump) vcd->dump(10 * g + 5);
       top->clock = 0;
       top->eval();
       get_outputs(top.get(), o);
@@ -804,7 +828,12 @@ fn testbench_verilog(plan: &Plan) -> String {
     v += &crate::tool::heartbeat_verilog();
     v += "    integer fin, fout, r;\n    reg [63:0] t;\n    reg [63:0] g;\n    reg [63:0] seen;\n    reg stopped;\n    initial begin\n";
     if plan.trace {
-        v += "        $dumpfile(\"trace.vcd\");\n        $dumpvars(0, uut);\n";
+        let file = if plan.trace_fst {
+            "trace.fst"
+        } else {
+            "trace.vcd"
+        };
+        v += &format!("        $dumpfile(\"{file}\");\n        $dumpvars(0, uut);\n");
     }
     v += "        fin = $fopen(\"in.hex\", \"r\");\n        fout = $fopen(\"out.hex\", \"w\");\n";
     v += "        g = 0;\n        stopped = 1;\n";
@@ -864,7 +893,10 @@ fn icarus(verilog: &str, plan: &Plan, dir: &Path) -> Result<(f64, f64), String> 
     let built = started.elapsed().as_secs_f64();
     let run = std::time::Instant::now();
     crate::tool::run_watched(
-        Command::new("vvp").args(["-n", "sim.vvp"]).current_dir(dir),
+        Command::new("vvp")
+            .args(["-n", "sim.vvp"])
+            .args(plan.trace_fst.then_some("-fst"))
+            .current_dir(dir),
         "Icarus Verilog (vvp)",
         &dir.join("heartbeat"),
         crate::tool::ICARUS_STALL,

@@ -25,8 +25,10 @@ pub mod export;
 pub mod gtkw;
 pub mod harness;
 pub mod sim;
+pub mod stage_vectors;
 pub mod synth;
 pub mod tool;
+pub mod trace;
 pub mod vcd_diff;
 pub mod verilog;
 

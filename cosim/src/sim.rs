@@ -9,16 +9,18 @@
 //! before each part the testbench writes, through the host port, the
 //! registers and table words that differ from what the hardware holds (a
 //! frame's first part writes its view, transfer function and light). Every
-//! engine can write a VCD of the whole run, with a GTKWave save file beside
-//! it grouping the signals by stage ([`crate::gtkw`]).
+//! engine can trace the whole run, every simulation of it one after another,
+//! into a VCD or FST limited as asked ([`crate::trace`]), with a GTKWave save
+//! file beside it grouping the signals by stage ([`crate::gtkw`]).
 
 use crate::arch::{Arch, BasePixels, ClockTerm};
 use crate::harness::{Engine, Run, Spec};
+use crate::trace::Request;
 use golden_model::host::Write;
 use scene::volume::Volume;
 use scene::{Camera, Scene};
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// A frame's run, checked against the golden model.
@@ -59,10 +61,12 @@ pub struct Frames<A: Arch> {
     /// traversal order).
     pub memory_loads: usize,
     pub frames: Vec<Outcome<A>>,
+    /// What the trace holds, when one was asked for.
+    pub traced: Option<crate::trace::Written>,
 }
 
 /// Simulate `scene` on `vol` with `engine` on the build the scene needs;
-/// `trace` names a VCD of the run to write, with a `.gtkw` beside it.
+/// `trace` asks for a trace of the run, with a `.gtkw` beside it.
 /// Errors name what the RTL cannot do or why a scene is too large for the
 /// engine.
 pub fn simulate<A: Arch>(
@@ -70,7 +74,7 @@ pub fn simulate<A: Arch>(
     camera: &Camera,
     vol: &Volume,
     engine: Engine,
-    trace: Option<&Path>,
+    trace: Option<&Request>,
 ) -> Result<Outcome<A>, String> {
     simulate_altered::<A>(scene, camera, vol, engine, trace, &|v| v.to_string())
 }
@@ -82,7 +86,7 @@ pub fn simulate_altered<A: Arch>(
     camera: &Camera,
     vol: &Volume,
     engine: Engine,
-    trace: Option<&Path>,
+    trace: Option<&Request>,
     alter: &dyn Fn(&str) -> String,
 ) -> Result<Outcome<A>, String> {
     let frames = [(scene.clone(), camera.clone())];
@@ -98,7 +102,7 @@ pub fn simulate_frames<A: Arch>(
     build: Option<&A::Config>,
     vol: &Volume,
     engine: Engine,
-    trace: Option<&Path>,
+    trace: Option<&Request>,
     alter: &dyn Fn(&str) -> String,
 ) -> Result<Frames<A>, String> {
     let (first, _) = frames.first().ok_or("no frame to simulate")?;
@@ -159,8 +163,22 @@ pub fn simulate_frames<A: Arch>(
         .collect();
     let mut results = Vec::new();
     let (mut sim_seconds, mut build_seconds) = (0.0, 0.0);
+    // Each simulation traces to a scratch file (a VCD, or under Icarus the
+    // format asked for); `trace::finish` joins them.
+    let scratch = trace.map(|_| Scratch::new()).transpose()?;
+    let ext = match (engine, trace.map(|t| t.format)) {
+        (Engine::Iverilog, Some(crate::trace::Format::Fst)) => "fst",
+        _ => "vcd",
+    };
+    let raws: Vec<PathBuf> = match &scratch {
+        Some(s) => (0..groups.len())
+            .map(|n| s.0.join(format!("part{n}.{ext}")))
+            .collect(),
+        None => vec![],
+    };
+    let clocks = trace.and_then(|t| t.limits.clocks);
     for (n, g) in groups.iter().enumerate() {
-        let trace = if n == 0 { trace } else { None };
+        let raw = raws.get(n).map(|p| p.as_path());
         let modules = A::modules(&parts[g.start].1, vol);
         let started = Instant::now();
         match engine {
@@ -170,7 +188,7 @@ pub fn simulate_frames<A: Arch>(
                     .zip(&loads[g.clone()])
                     .map(|((_, p), w)| (p, w.clone()))
                     .collect();
-                results.extend(A::rust_hdl(&runs, &modules, trace)?);
+                results.extend(A::rust_hdl(&runs, &modules, raw)?);
                 sim_seconds += started.elapsed().as_secs_f64();
             }
             _ => {
@@ -179,7 +197,7 @@ pub fn simulate_frames<A: Arch>(
                     &loads[g.clone()],
                     &modules,
                     engine,
-                    trace,
+                    raw.map(|p| (p, clocks)),
                     alter,
                     external,
                 )?;
@@ -190,15 +208,26 @@ pub fn simulate_frames<A: Arch>(
         }
     }
     let memory_loads = groups.len();
-    if let Some(path) = trace {
-        let top = match engine {
-            Engine::RustHdl => "uut",
-            Engine::Iverilog => "tb.uut",
-            Engine::Verilator => "TOP.top",
-        };
-        crate::gtkw::write_gtkw(path, top, &A::waves(&parts[0].1, top))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-    }
+    let traced = match trace {
+        Some(req) => {
+            let top = match engine {
+                Engine::RustHdl => "uut",
+                Engine::Iverilog => "tb.uut",
+                Engine::Verilator => "TOP.top",
+            };
+            let run_clocks = results.iter().map(|(_, c)| c).sum::<u64>()
+                + loads.iter().map(|w| w.len() as u64).sum::<u64>();
+            let bar = crate::tool::spinner("writing the trace");
+            let written = crate::trace::finish(&raws, top, req, run_clocks);
+            bar.finish_and_clear();
+            let written = written?;
+            crate::gtkw::write_gtkw(req, &written, top, &A::waves(&parts[0].1, top))
+                .map_err(|e| format!("{}: {e}", req.path.display()))?;
+            Some(written)
+        }
+        None => None,
+    };
+    drop(scratch);
     let left_out = crate::verilog::names(&A::left_out(&config));
     let mut out: Vec<Outcome<A>> = frames
         .iter()
@@ -265,7 +294,27 @@ pub fn simulate_frames<A: Arch>(
         config,
         memory_loads,
         frames: out,
+        traced,
     })
+}
+
+/// A scratch folder for the engines' own traces, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new() -> Result<Scratch, String> {
+        static N: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = N.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("cube-trace-{}-{n}", std::process::id()));
+        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        Ok(Scratch(dir))
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }
 
 /// ` of frame N` when a run has several frames.
@@ -301,7 +350,7 @@ fn run_verilog<A: Arch>(
     loads: &[Vec<Write>],
     modules: &[Vec<u16>],
     engine: Engine,
-    trace: Option<&Path>,
+    trace: Option<(&Path, Option<(u64, u64)>)>,
     alter: &dyn Fn(&str) -> String,
     external: bool,
 ) -> Result<(Vec<(Vec<crate::harness::Record>, u64)>, f64, f64), String> {
@@ -327,7 +376,8 @@ fn run_verilog<A: Arch>(
             runs: &runs,
             groups: &groups.unwrap_or_default(),
             memory: external.then_some(modules),
-            trace,
+            trace: trace.map(|t| t.0),
+            trace_clocks: trace.and_then(|t| t.1),
         },
     )?;
     // Split the records by run, with clocks from each run's `start`.

@@ -1,6 +1,9 @@
 //! Running the external tools (Icarus, Verilator, yosys, nextpnr): a
 //! missing tool names the set-up command, a failing one shows its errors and
 //! the end of its log, and a simulation that stops advancing is stopped.
+//! While one runs, a spinner on standard error names it with the time so far
+//! (and an Icarus run's clock); it draws nothing when standard error is not
+//! a terminal.
 
 use std::io::Read;
 use std::path::Path;
@@ -63,9 +66,21 @@ pub fn heartbeat_verilog() -> String {
     )
 }
 
+/// A spinner naming `what` with the time it has taken, drawn on standard
+/// error while it lives (hidden when that is not a terminal).
+pub fn spinner(what: &str) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new_spinner().with_message(what.to_string());
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+    );
+    bar.enable_steady_tick(Duration::from_millis(200));
+    bar
+}
+
 /// The error of a tool that could not start.
 fn missing(what: &str, e: std::io::Error) -> String {
-    format!("cannot run {what} ({e}): run scripts/test, which installs it")
+    format!("cannot run {what} ({e}): run scripts/setup, which installs it")
 }
 
 /// The output of a finished tool run, or its error with the end of its
@@ -89,10 +104,10 @@ fn finished(out: Output, what: &str) -> Result<Output, String> {
 /// Run `cmd` (the tool `what`) to completion; its output when it succeeds.
 pub fn run(cmd: &mut Command, what: &str) -> Result<Output, String> {
     let (child, _listed) = spawn(cmd, what)?;
-    let out = child
-        .wait_with_output()
-        .map_err(|e| format!("{what}: {e}"))?;
-    finished(out, what)
+    let bar = spinner(what);
+    let out = child.wait_with_output().map_err(|e| format!("{what}: {e}"));
+    bar.finish_and_clear();
+    finished(out?, what)
 }
 
 /// Read a child's pipe to its end on a thread of its own.
@@ -117,6 +132,7 @@ pub fn run_watched(
     stall: Duration,
 ) -> Result<Output, String> {
     let (mut child, _listed) = spawn(cmd, what)?;
+    let bar = spinner(what);
     let stdout = drain(child.stdout.take());
     let stderr = drain(child.stderr.take());
     let beats = || std::fs::metadata(heartbeat).map_or(0, |m| m.len());
@@ -129,7 +145,9 @@ pub fn run_watched(
         let now = beats();
         if now != seen {
             (seen, since) = (now, Instant::now());
+            bar.set_message(format!("{what}: clock {}", now * HEARTBEAT_CLOCKS));
         } else if since.elapsed() >= stall {
+            bar.finish_and_clear();
             let _ = child.kill();
             let _ = child.wait();
             return Err(format!(
@@ -139,6 +157,7 @@ pub fn run_watched(
             ));
         }
     };
+    bar.finish_and_clear();
     let out = Output {
         status,
         stdout: stdout.join().unwrap_or_default(),

@@ -1,5 +1,6 @@
-//! Compare two VCD traces of the same design from different simulators
-//! (rust-hdl, Verilator, Icarus) signal by signal and cycle by cycle.
+//! Compare two traces (VCD or FST, read with `wellen`) of the same design
+//! from different simulators (rust-hdl, Verilator, Icarus) signal by signal
+//! and cycle by cycle.
 //!
 //! - Signals are lined up by hierarchical name below the design's top: each
 //!   trace's leading scopes (`uut.` for rust-hdl, `TOP.top.` for Verilator,
@@ -16,16 +17,16 @@ use std::path::Path;
 /// A trace reduced to per-cycle samples of its signals.
 #[derive(Debug, Clone)]
 pub struct Trace {
-    /// Full hierarchical name of each signal, with its VCD id code.
-    names: Vec<(Vec<String>, String)>,
-    /// Per id code: (cycle, value) at each cycle where the sampled value
+    /// Full hierarchical name of each variable, with its signal's index.
+    names: Vec<(Vec<String>, usize)>,
+    /// Per signal: (cycle, value) at each cycle where the sampled value
     /// changed, starting with cycle 0.
-    samples: HashMap<String, Vec<(u64, String)>>,
+    samples: HashMap<usize, Vec<(u64, String)>>,
     /// Rising clock edges seen.
     pub cycles: u64,
 }
 
-/// A bad VCD file: unreadable, unparsable, or without a top clock.
+/// A bad trace file: unreadable, unparsable, or without a top clock.
 #[derive(Debug, Clone)]
 pub struct BadTrace(pub String);
 
@@ -96,86 +97,88 @@ impl Trace {
             return Err(bad(&"not a regular file"));
         }
         scope_depth_within(path, MAX_SCOPE_DEPTH).map_err(|e| bad(&e))?;
-        let f = std::fs::File::open(path).map_err(|e| bad(&e))?;
-        let mut parser = vcd::Parser::new(std::io::BufReader::new(f));
-        let header = parser.parse_header().map_err(|e| bad(&e))?;
-        let mut names = Vec::new();
-        fn walk(
-            items: &[vcd::ScopeItem],
-            path: &mut Vec<String>,
-            out: &mut Vec<(Vec<String>, String)>,
-        ) {
-            for item in items {
-                match item {
-                    vcd::ScopeItem::Scope(s) => {
-                        path.push(plain(&s.identifier));
-                        walk(&s.items, path, out);
-                        path.pop();
-                    }
-                    vcd::ScopeItem::Var(v) => {
-                        let mut full = path.clone();
-                        full.push(plain(&v.reference));
-                        out.push((full, v.code.to_string()));
-                    }
-                    _ => {}
+        let mut wave = wellen::stream::read_from_file(path, &wellen::LoadOptions::default())
+            .map_err(|e| bad(&e))?;
+        let h = wave.hierarchy();
+        // Every variable's path (scopes, then its name without a bit
+        // range) and its signal: aliases share one signal.
+        let names: Vec<(Vec<String>, usize)> = h
+            .all_vars()
+            .map(|v| {
+                let var = &h[v];
+                let mut full: Vec<String> = var.full_name(h).split('.').map(plain).collect();
+                if let Some(last) = full.last_mut() {
+                    *last = plain(var.name(h));
                 }
-            }
-        }
-        walk(&header.items, &mut Vec::new(), &mut names);
+                (full, var.signal_ref().index())
+            })
+            .collect();
         // The clock: the shallowest variable of that name, or that path.
         let clock = names
             .iter()
             .filter(|(n, _)| n.last().is_some_and(|l| l == clock) || n.join(".") == clock)
             .min_by_key(|(n, _)| n.len())
-            .map(|(_, c)| c.clone())
+            .map(|(_, c)| *c)
             .ok_or_else(|| {
                 bad(&format!(
                     "no `{clock}` signal (name the clock with --clock)"
                 ))
             })?;
-        let mut current: HashMap<String, String> = HashMap::new();
-        let mut samples: HashMap<String, Vec<(u64, String)>> = HashMap::new();
+        // The value of each signal now, and the signals changed since the
+        // last sample: a sample touches only those.
+        let slots = names.iter().map(|(_, c)| c + 1).max().unwrap_or(0);
+        let mut current: Vec<Option<String>> = vec![None; slots];
+        let mut dirty: Vec<usize> = Vec::new();
+        let mut samples: HashMap<usize, Vec<(u64, String)>> = HashMap::new();
         let mut cycles = 0u64;
         let mut clock_was = String::from("0");
         let mut rose = false;
-        let mut sample = |current: &HashMap<String, String>, cycle: u64| {
-            for (code, v) in current {
-                let s = samples.entry(code.clone()).or_default();
+        let sample = |current: &[Option<String>],
+                      dirty: &mut Vec<usize>,
+                      samples: &mut HashMap<usize, Vec<(u64, String)>>,
+                      cycle: u64| {
+            for id in dirty.drain(..) {
+                let Some(v) = &current[id] else { continue };
+                let s = samples.entry(id).or_default();
                 if s.last().is_none_or(|(_, last)| last != v) {
                     s.push((cycle, v.clone()));
                 }
             }
         };
-        let mut now = 0u64;
-        for cmd in parser {
-            let cmd = cmd.map_err(|e| bad(&e))?;
-            let mut change = None;
-            match cmd {
-                // A repeated timestamp continues the same instant.
-                vcd::Command::Timestamp(t) if t == now => {}
-                vcd::Command::Timestamp(t) => {
-                    now = t;
-                    if rose {
-                        sample(&current, cycles);
-                        cycles += 1;
-                        rose = false;
-                    }
+        let mut now = None;
+        wave.stream_changes(wellen::stream::Filter::all(), |t, signal, value| {
+            // A new time ends the instant of a rising edge: sample it.
+            if now != Some(t) {
+                now = Some(t);
+                if rose {
+                    sample(&current, &mut dirty, &mut samples, cycles);
+                    cycles += 1;
+                    rose = false;
                 }
-                vcd::Command::ChangeScalar(id, v) => change = Some((id, v.to_string())),
-                vcd::Command::ChangeVector(id, v) => change = Some((id, v.to_string())),
-                _ => {}
             }
-            if let Some((id, v)) = change {
-                let (id, v) = (id.to_string(), canonical(&v));
-                if id == clock {
-                    rose |= clock_was == "0" && v == "1";
-                    clock_was = v.clone();
+            let v = match value {
+                wellen::SignalValueRef::BitVec(bv) => canonical(&bv.bit_string()),
+                _ => return Ok::<(), ()>(()),
+            };
+            let id = signal.index();
+            if id == clock {
+                rose |= clock_was == "0" && v == "1";
+                clock_was = v.clone();
+            }
+            if id < current.len() {
+                if current[id].as_ref() != Some(&v) {
+                    dirty.push(id);
                 }
-                current.insert(id, v);
+                current[id] = Some(v);
             }
-        }
+            Ok(())
+        })
+        .map_err(|e| match e {
+            wellen::stream::StreamError::Wellen(e) => bad(&e),
+            wellen::stream::StreamError::Callback(()) => bad(&"unreadable value"),
+        })?;
         if rose {
-            sample(&current, cycles);
+            sample(&current, &mut dirty, &mut samples, cycles);
             cycles += 1;
         }
         if cycles == 0 {
@@ -188,18 +191,18 @@ impl Trace {
         })
     }
 
-    /// Names with `skip` leading scopes dropped, to id codes.
-    fn named(&self, skip: usize) -> BTreeMap<String, String> {
+    /// Names with `skip` leading scopes dropped, to signals.
+    fn named(&self, skip: usize) -> BTreeMap<String, usize> {
         self.names
             .iter()
             .filter(|(n, _)| n.len() > skip)
-            .map(|(n, c)| (n[skip..].join("."), c.clone()))
+            .map(|(n, c)| (n[skip..].join("."), *c))
             .collect()
     }
 
-    /// The sampled value of `code` at `cycle`.
-    fn at(&self, code: &str, cycle: u64) -> &str {
-        let Some(s) = self.samples.get(code) else {
+    /// The sampled value of `signal` at `cycle`.
+    fn at(&self, signal: usize, cycle: u64) -> &str {
+        let Some(s) = self.samples.get(&signal) else {
             return "x";
         };
         match s.partition_point(|(c, _)| *c <= cycle) {
@@ -278,16 +281,16 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
     let cycles = a.cycles.min(b.cycles);
     let mut mismatches = Vec::new();
     for name in &common {
-        let (ca, cb) = (&na[*name], &nb[*name]);
+        let (ca, cb) = (na[*name], nb[*name]);
         // Cycles where either side changes: the only places a difference can start.
         let mut points: Vec<u64> = a
             .samples
-            .get(ca)
+            .get(&ca)
             .into_iter()
             .flatten()
             .map(|(c, _)| *c)
             .collect();
-        points.extend(b.samples.get(cb).into_iter().flatten().map(|(c, _)| *c));
+        points.extend(b.samples.get(&cb).into_iter().flatten().map(|(c, _)| *c));
         points.push(0);
         points.sort_unstable();
         points.dedup();

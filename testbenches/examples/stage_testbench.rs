@@ -1,9 +1,12 @@
 //! A stage testbench of your own, with the kit as a library: the Cube-4L
 //! compositor (`hdl::cube4l::compositor`, the paper's §3.7) driven with
 //! random operands in rust-hdl's simulator and checked on every clock
-//! against the golden model's `composite`, then its emitted Verilog run
+//! against the golden model's `composite` (its answer for the operands of
+//! clock `t` comes out `LATENCY` clocks later), then its emitted Verilog run
 //! under Icarus Verilog on the same operands (`cosim::harness::run_stage`)
-//! and checked the same way.
+//! and checked the same way. For a testbench outside Rust, `cube
+//! stage-vectors` writes the same kind of stimulus and expected outputs as
+//! JSON, and `testbenches/cocotb` drives them with cocotb.
 //!
 //! ```sh
 //! cargo run --release -p testbenches --example stage_testbench
@@ -15,6 +18,7 @@
 use golden_model::cube4l::compositor::composite;
 use golden_model::cube4l::plan::Order;
 use golden_model::cube4l::shader::Sample;
+use hdl::cube4l::compositor::LATENCY;
 use rust_hdl::prelude::*;
 use scene::Mode;
 use std::sync::{Arc, Mutex};
@@ -72,7 +76,7 @@ fn main() {
     sim.add_testbench(move |mut sim: Sim<hdl::cube4l::compositor::Compositor>| {
         let mut x = sim.init()?;
         x.order.next = ORDER_WORD.to_bits();
-        for &(acc, new, valid) in &tb {
+        for (t, &(acc, new, valid)) in tb.iter().enumerate() {
             x.acc_r.next = (acc[0] as u64).to_bits();
             x.acc_g.next = (acc[1] as u64).to_bits();
             x.acc_b.next = (acc[2] as u64).to_bits();
@@ -89,7 +93,10 @@ fn main() {
                 x.out_b.val().to_u32(),
                 x.out_a.val().to_u32(),
             ];
-            if got != golden((acc, new, valid)) {
+            let Some(i) = (t + 1).checked_sub(LATENCY) else {
+                continue;
+            };
+            if got != golden(tb[i]) {
                 *count.lock().unwrap() += 1;
             }
         }
@@ -100,7 +107,7 @@ fn main() {
     let n = *mismatches.lock().unwrap();
     println!(
         "rust-hdl: {} clocks, {n} differ from the golden model",
-        vs.len()
+        vs.len() + 1 - LATENCY
     );
 
     // The emitted Verilog under Icarus: inputs in port order (acc_r, acc_g,
@@ -119,6 +126,7 @@ fn main() {
         Ok(outs) => {
             let wrong = outs
                 .iter()
+                .skip(LATENCY - 1)
                 .zip(&vs)
                 .filter(|(o, v)| {
                     let got: Vec<Option<u64>> = o.iter().take(4).copied().collect();
@@ -127,7 +135,7 @@ fn main() {
                 .count();
             println!(
                 "Icarus:   {} clocks, {wrong} differ from the golden model",
-                outs.len()
+                outs.len() + 1 - LATENCY
             );
             assert_eq!(n + wrong, 0, "the stage differs from its golden model");
         }

@@ -124,7 +124,7 @@ pub fn require_tool(tool: &str) {
         .unwrap_or(false);
     assert!(
         found,
-        "`{tool}` is not installed: run scripts/test, which installs it"
+        "`{tool}` is not installed: run scripts/setup, which installs it"
     );
 }
 
@@ -163,7 +163,11 @@ pub fn run_sim<T: rust_hdl::prelude::Block + Send + 'static>(
                 .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
                 .collect();
             let path = dir.join(format!("{file}.vcd"));
-            sim.run_traced(uut, max_time, std::fs::File::create(&path).unwrap())
+            sim.run_traced(
+                uut,
+                max_time,
+                std::io::BufWriter::new(std::fs::File::create(&path).unwrap()),
+            )
         }
         None => sim.run(uut, max_time),
     };
@@ -261,23 +265,35 @@ macro_rules! for_each_p {
     }};
 }
 
-/// Convert a VCD with `vcd2fst` (GTKWave's parser) and fail with its message
-/// if it rejects the file.
-pub fn assert_vcd_parses(vcd: &std::path::Path) {
-    require_tool("vcd2fst");
-    let fst = vcd.with_extension("fst");
-    let out = std::process::Command::new("vcd2fst")
-        .arg(vcd)
-        .arg(&fst)
-        .output()
-        .unwrap();
+/// Check that GTKWave's own tools read a trace: `vcd2fst` converts a VCD,
+/// `fst2vcd` an FST; fail with the tool's message if it rejects the file.
+pub fn assert_trace_opens(trace: &std::path::Path) {
+    let fst = trace.extension().is_some_and(|e| e == "fst");
+    let (tool, other) = if fst {
+        ("fst2vcd", trace.with_extension("fst.vcd"))
+    } else {
+        ("vcd2fst", trace.with_extension("vcd.fst"))
+    };
+    require_tool(tool);
+    let mut cmd = std::process::Command::new(tool);
+    if fst {
+        cmd.arg("-f").arg(trace).arg("-o").arg(&other);
+    } else {
+        cmd.arg(trace).arg(&other);
+    }
+    let out = cmd.output().unwrap();
     assert!(
         out.status.success(),
-        "vcd2fst rejects {}: {}",
-        vcd.display(),
+        "{tool} rejects {}: {}",
+        trace.display(),
         String::from_utf8_lossy(&out.stderr)
     );
-    assert!(std::fs::metadata(&fst).unwrap().len() > 0);
+    assert!(std::fs::metadata(&other).unwrap().len() > 0);
+}
+
+/// A whole trace of a simulation to `path` (VCD or FST by its extension).
+pub fn trace_to(path: &std::path::Path) -> cosim::trace::Request {
+    cosim::trace::Request::new(path, cosim::trace::Limits::default()).unwrap()
 }
 
 /// The first sweep of a scene as the fault-injection tests take it: its

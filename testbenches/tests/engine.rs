@@ -16,7 +16,7 @@ fn engine(scene_file: &str) -> (Scene, Volume) {
         .unwrap();
     let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
         panic!(
-            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/test does it)."
+            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/setup does it)."
         )
     });
     (s, vol)

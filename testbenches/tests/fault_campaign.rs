@@ -85,16 +85,21 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     let (sweep, config) = (&part.sweep, &part.config);
     let dir = tempfile::tempdir().unwrap();
     let run = |v: &str, name: &str| {
-        let vcd = dir.path().join(format!("{name}.vcd"));
+        let vcd = dir.path().join(format!("{name}.fst"));
+        let trace = testbenches::trace_to(&vcd);
         // A pixel the golden model could never output (undefined, stray)
         // is an error of the run: a difference all the same.
-        let pixels =
-            match simulate_altered::<Cube4l>(&s, &cam, &vol, Engine::Iverilog, Some(&vcd), &|_| {
-                v.to_string()
-            }) {
-                Ok(r) => (r.mismatches > 0).then(|| format!("{} pixels", r.mismatches)),
-                Err(e) => Some(e),
-            };
+        let pixels = match simulate_altered::<Cube4l>(
+            &s,
+            &cam,
+            &vol,
+            Engine::Iverilog,
+            Some(&trace),
+            &|_| v.to_string(),
+        ) {
+            Ok(r) => (r.mismatches > 0).then(|| format!("{} pixels", r.mismatches)),
+            Err(e) => Some(e),
+        };
         (pixels, Trace::load(&vcd).unwrap())
     };
     let (clean_pixels, clean) = run(&verilog, "clean");

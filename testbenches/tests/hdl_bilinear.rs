@@ -102,7 +102,7 @@ fn run(frac: u32, max: u32, wide: bool, max0: u32) {
     sim.run_traced(
         Box::new(uut),
         20 * (N + LATENCY) as u64 + 100,
-        std::fs::File::create(&vcd).unwrap(),
+        std::io::BufWriter::new(std::fs::File::create(&vcd).unwrap()),
     )
     .unwrap_or_else(|e| panic!("simulation failed: {e:?}"));
 }

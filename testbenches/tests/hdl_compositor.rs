@@ -10,7 +10,7 @@ use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::compositor::{Compositor, LATENCY};
 use rust_hdl::prelude::*;
 use scene::Mode;
-use testbenches::{assert_vcd_parses, require_tool, Vectors};
+use testbenches::{assert_trace_opens, require_tool, Vectors};
 
 const N: usize = 600;
 
@@ -110,7 +110,7 @@ fn run(mode: Mode, order: Order, bits: u32) -> std::path::PathBuf {
     sim.run_traced(
         Box::new(uut),
         20 * N as u64 + 100,
-        std::fs::File::create(&vcd).unwrap(),
+        std::io::BufWriter::new(std::fs::File::create(&vcd).unwrap()),
     )
     .unwrap_or_else(|e| panic!("simulation failed: {e:?}"));
     vcd
@@ -146,5 +146,5 @@ fn compositor_verilog_passes_yosys() {
 
 #[test]
 fn compositor_vcd_parses_with_vcd2fst() {
-    assert_vcd_parses(&run(Mode::Composite, Order::BackToFront, 8));
+    assert_trace_opens(&run(Mode::Composite, Order::BackToFront, 8));
 }

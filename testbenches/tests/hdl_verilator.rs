@@ -12,7 +12,7 @@ use scene::volume::{builtin, Volume};
 use scene::Scene;
 use std::path::PathBuf;
 use std::sync::OnceLock;
-use testbenches::{assert_vcd_parses, require_tool, scene};
+use testbenches::{assert_trace_opens, require_tool, scene, trace_to};
 
 /// The trace-comparison scene: the sphere, p = 2, shaded composite at an
 /// oblique view (one sweep).
@@ -38,7 +38,14 @@ fn rust_hdl_vcd() -> &'static PathBuf {
     VCD.get_or_init(|| {
         let (s, vol) = sphere();
         let vcd = vcd_dir().join("sphere_p2_rust_hdl.vcd");
-        let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::RustHdl, Some(&vcd)).unwrap();
+        let r = simulate::<Cube4l>(
+            &s,
+            &s.camera(),
+            &vol,
+            Engine::RustHdl,
+            Some(&trace_to(&vcd)),
+        )
+        .unwrap();
         assert_eq!(r.mismatches, 0, "rust-hdl: {:?}", r.first);
         vcd
     })
@@ -48,10 +55,18 @@ fn rust_hdl_vcd() -> &'static PathBuf {
 fn verilator_trace_equals_rust_hdl_trace() {
     require_tool("verilator");
     let (s, vol) = sphere();
-    let vcd = vcd_dir().join("sphere_p2_verilator.vcd");
-    let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::Verilator, Some(&vcd)).unwrap();
+    // Verilator's trace as FST, compared with rust-hdl's VCD.
+    let vcd = vcd_dir().join("sphere_p2_verilator.fst");
+    let r = simulate::<Cube4l>(
+        &s,
+        &s.camera(),
+        &vol,
+        Engine::Verilator,
+        Some(&trace_to(&vcd)),
+    )
+    .unwrap();
     assert_eq!(r.mismatches, 0, "verilator: {:?}", r.first);
-    assert_vcd_parses(&vcd);
+    assert_trace_opens(&vcd);
     let (a, b) = (
         Trace::load(rust_hdl_vcd()).unwrap(),
         Trace::load(&vcd).unwrap(),
@@ -85,11 +100,12 @@ fn verilator_trace_equals_rust_hdl_trace() {
         "first differences: {:?}",
         &c.mismatches[..c.mismatches.len().min(5)]
     );
-    // The save file beside the VCD names only signals that are in it.
+    // The save file beside the trace names only signals that are in it
+    // (read from GTKWave's own conversion of the FST).
     let gtkw = std::fs::read_to_string(vcd.with_extension("gtkw")).unwrap();
     let names: Vec<&str> = gtkw.lines().filter(|l| l.starts_with("TOP.top.")).collect();
     assert!(names.len() > 20);
-    let text = std::fs::read_to_string(&vcd).unwrap();
+    let text = std::fs::read_to_string(vcd.with_extension("fst.vcd")).unwrap();
     for n in names {
         let leaf = n.rsplit('.').next().unwrap().split('[').next().unwrap();
         assert!(text.contains(&format!(" {leaf} ")), "{n} is not in the VCD");
@@ -107,9 +123,14 @@ fn a_swapped_neighbour_link_is_caught_by_pixels_and_by_the_trace() {
     let broken = verilog.replace(link, "lanes$1$g_from_left_xm = lanes$1$g_to_right_xm;");
     let vcd = vcd_dir().join("sphere_p2_verilator_fault.vcd");
     let cam = s.camera();
-    let r = simulate_altered::<Cube4l>(&s, &cam, &vol, Engine::Verilator, Some(&vcd), &|_| {
-        broken.clone()
-    })
+    let r = simulate_altered::<Cube4l>(
+        &s,
+        &cam,
+        &vol,
+        Engine::Verilator,
+        Some(&trace_to(&vcd)),
+        &|_| broken.clone(),
+    )
     .unwrap();
     assert!(r.mismatches > 0, "the pixel comparison missed the fault");
     let c = compare(
@@ -141,7 +162,7 @@ fn engine_frame_matches_under_verilator() {
     let s = Scene::load(&path).unwrap();
     let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
         panic!(
-            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/test does it)."
+            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/setup does it)."
         )
     });
     assert_eq!(vol.dims, [256, 256, 110]);

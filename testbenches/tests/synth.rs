@@ -8,13 +8,13 @@ use cosim::synth::{parse_stat, synthesize, Target};
 use hdl::cube4l::config::frame_clocks;
 use testbenches::scene;
 
-/// An ECP5 tool that `scripts/test` installs: on the PATH (`tool` then
+/// An ECP5 tool that `scripts/setup` installs: on the PATH (`tool` then
 /// gives its bare name) or in its venv.
 fn require_ecp5_tool(name: &str) {
     let t = cosim::synth::ecp5::tool(name);
     assert!(
         t == std::path::Path::new(name) || t.is_file(),
-        "`{name}` is not installed: run scripts/test, which installs it"
+        "`{name}` is not installed: run scripts/setup, which installs it"
     );
 }
 

@@ -20,7 +20,7 @@ pub const LUTS: u64 = 83_640;
 pub const BLOCK_RAMS: u64 = 208;
 pub const MULTIPLIERS: u64 = 156;
 
-/// A tool of the ECP5 flow: on the PATH, or in the venv `scripts/test`
+/// A tool of the ECP5 flow: on the PATH, or in the venv `scripts/setup`
 /// makes.
 pub fn tool(name: &str) -> PathBuf {
     let on_path = std::env::var_os("PATH")

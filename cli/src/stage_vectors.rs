@@ -1,0 +1,99 @@
+//! `cube stage-vectors`: write a stage's emitted Verilog and its stimulus
+//! with the golden model's expected outputs (`cosim::stage_vectors`), for a
+//! testbench outside the kit: `testbenches/cocotb/run.py DIR` drives them
+//! with cocotb under Icarus or Verilator.
+
+use crate::output::{self, write_json, write_text};
+use anyhow::{bail, Result};
+use clap::ValueEnum;
+use golden_model::cube4l::plan::Order;
+use scene::Mode;
+use std::path::PathBuf;
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum StageMode {
+    Composite,
+    Mip,
+    Minip,
+    Xray,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum StageOrder {
+    FrontToBack,
+    BackToFront,
+}
+
+#[derive(clap::Args)]
+pub struct StageVectorsArgs {
+    /// The stage (the Cube-4L compositor, §3.7).
+    #[arg(long, default_value = "compositor")]
+    stage: String,
+    #[arg(long, value_enum, default_value = "composite")]
+    mode: StageMode,
+    #[arg(long, value_enum, default_value = "front-to-back")]
+    order: StageOrder,
+    /// Bits of each RGBA channel (4..=15).
+    #[arg(long, default_value_t = 8)]
+    rgba_bits: u32,
+    /// Clocks of stimulus (1..=1000000).
+    #[arg(long, default_value_t = 1000)]
+    clocks: usize,
+    /// The operand generator's seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// The folder for STAGE.v and STAGE.json.
+    #[arg(long)]
+    out: PathBuf,
+}
+
+pub fn run(args: StageVectorsArgs) -> Result<()> {
+    if !cosim::stage_vectors::STAGES.contains(&args.stage.as_str()) {
+        bail!(
+            "stage-vectors: --stage {}: the stages are {}",
+            args.stage,
+            cosim::stage_vectors::STAGES.join(", ")
+        );
+    }
+    if !(4..=15).contains(&args.rgba_bits) {
+        bail!(
+            "stage-vectors: --rgba-bits {} unsupported (4..=15)",
+            args.rgba_bits
+        );
+    }
+    if !(1..=1_000_000).contains(&args.clocks) {
+        bail!(
+            "stage-vectors: --clocks {} outside 1..=1000000",
+            args.clocks
+        );
+    }
+    let mode = match args.mode {
+        StageMode::Composite => Mode::Composite,
+        StageMode::Mip => Mode::Mip,
+        StageMode::Minip => Mode::Minip,
+        StageMode::Xray => Mode::Xray,
+    };
+    let order = match args.order {
+        StageOrder::FrontToBack => Order::FrontToBack,
+        StageOrder::BackToFront => Order::BackToFront,
+    };
+    let files =
+        cosim::stage_vectors::compositor(mode, order, args.rgba_bits, args.clocks, args.seed);
+    let (v, j) = (
+        args.out.join(format!("{}.v", args.stage)),
+        args.out.join(format!("{}.json", args.stage)),
+    );
+    let mut outs = output::Files::default();
+    outs.output("the stage's Verilog", &v)?;
+    outs.output("the stage's vectors", &j)?;
+    write_text(&v, &files.verilog)?;
+    write_json(&j, &files.vectors)?;
+    println!(
+        "wrote {} and {} ({} clocks; outputs {} clocks after their inputs)",
+        v.display(),
+        j.display(),
+        args.clocks,
+        files.vectors["latency"]
+    );
+    Ok(())
+}

@@ -1,0 +1,477 @@
+//! Traces as a user asks for them: VCD or FST by the file's extension,
+//! limited by scope, depth and clock range, with every simulation of a run
+//! (a multi-sweep scene's memory loads) one after another in one file.
+//!
+//! Each engine first writes a VCD of its simulation into a scratch file:
+//! rust-hdl's tracer, Icarus's `$dumpvars`, Verilator's `VerilatedVcdC`
+//! (Verilator dumps only the asked clock range, so a full frame's trace of
+//! a few clocks stays small). [`finish`] then streams those VCDs with
+//! `wellen` into the file asked for, written with `fst-writer` or the `vcd`
+//! crate, keeping only the signals and clocks the [`Limits`] name.
+//!
+//! Times are the engines' own: clock `t` spans `[10t, 10t + 10)`, its rising
+//! edge at `10t + 5`. A later simulation of the run continues at the clock
+//! after the previous one's last.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use wellen::{Hierarchy, ItemRef, SignalEncoding, SignalRef, SignalValueRef};
+
+/// Time units of one clock in every engine's trace.
+pub const CLOCK_TIME: u64 = 10;
+
+/// A trace file's format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    Vcd,
+    Fst,
+}
+
+impl Format {
+    /// The format a file's extension names: `.vcd` or `.fst`; anything else
+    /// is an error, never a file written in the other format.
+    pub fn of(path: &Path) -> Result<Format, String> {
+        match path.extension().and_then(|e| e.to_str()) {
+            Some("vcd") => Ok(Format::Vcd),
+            Some("fst") => Ok(Format::Fst),
+            _ => Err(format!(
+                "{}: a trace's name ends in .vcd or .fst (its format)",
+                path.display()
+            )),
+        }
+    }
+}
+
+/// What a trace keeps. The top's `clock` and `start` are always kept.
+#[derive(Debug, Clone, Default)]
+pub struct Limits {
+    /// Globs on a signal's dotted name below the design's top (`lanes$0.*`,
+    /// `*shader*`); a signal is kept when any matches. Empty: every signal.
+    pub scopes: Vec<glob::Pattern>,
+    /// The deepest module below the top whose signals are kept (0: the
+    /// top's own ports and registers).
+    pub depth: Option<usize>,
+    /// Clocks kept, `[first, end)`, counted from the run's first clock.
+    pub clocks: Option<(u64, u64)>,
+}
+
+impl Limits {
+    /// Whether a signal `below` the top (its scopes and name) is kept.
+    fn keeps(&self, below: &[&str]) -> bool {
+        if let [name] = below {
+            if *name == "clock" || *name == "start" {
+                return true;
+            }
+        }
+        let depth_ok = self.depth.is_none_or(|d| below.len() <= d + 1);
+        let dotted = below.join(".");
+        let scope_ok = self.scopes.is_empty() || self.scopes.iter().any(|p| p.matches(&dotted));
+        depth_ok && scope_ok
+    }
+
+    /// The range of times kept, `[from, to)`.
+    fn times(&self) -> (u64, u64) {
+        self.clocks.map_or((0, u64::MAX), |(a, b)| {
+            (a * CLOCK_TIME, b.saturating_mul(CLOCK_TIME))
+        })
+    }
+}
+
+/// A trace to write: where, in which format, and what it keeps.
+#[derive(Debug, Clone)]
+pub struct Request {
+    /// Where the trace is written.
+    pub path: PathBuf,
+    pub format: Format,
+    pub limits: Limits,
+    /// Where the caller moves it once written (a trace is written whole
+    /// through a temporary name), which its save file names.
+    pub lands_at: Option<PathBuf>,
+}
+
+impl Request {
+    /// A trace at `path`, its format from the extension.
+    pub fn new(path: &Path, limits: Limits) -> Result<Request, String> {
+        if let Some((a, b)) = limits.clocks {
+            if a >= b {
+                return Err(format!("trace clocks {a}..{b}: an empty range"));
+            }
+        }
+        Ok(Request {
+            path: path.to_path_buf(),
+            format: Format::of(path)?,
+            limits,
+            lands_at: None,
+        })
+    }
+}
+
+/// What [`finish`] wrote.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Written {
+    /// Signals kept, of those the engine traced.
+    pub signals: usize,
+    pub of: usize,
+    /// Simulations one after another in the file.
+    pub parts: usize,
+    /// The file's size.
+    pub bytes: u64,
+    /// The traced span in clocks, `[first, end)`.
+    pub clocks: (u64, u64),
+}
+
+/// A kept variable of the first part: its place in the output hierarchy.
+struct Kept {
+    full: String,
+    width: u32,
+}
+
+/// Stream the engine traces `raws` (one per simulation, in order; the
+/// design's top at the dotted scope `top`) into `req.path`. `clocks` is the
+/// run's length in clocks (0 when unknown: the traces' own end). The engine
+/// traces are scratch files: one, whole and in the format asked for, is
+/// moved into place as it is.
+pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result<Written, String> {
+    let first = raws.first().ok_or("no trace to write")?;
+    let opts = wellen::LoadOptions::default();
+    let open = |p: &Path| {
+        wellen::stream::read_from_file(p, &opts).map_err(|e| format!("{}: {e}", p.display()))
+    };
+    let head = open(first)?;
+    let h = head.hierarchy();
+    let whole =
+        req.limits.scopes.is_empty() && req.limits.depth.is_none() && req.limits.clocks.is_none();
+    if raws.len() == 1 && whole && Format::of(first).ok() == Some(req.format) {
+        let vars = h.all_vars().count();
+        drop(head);
+        std::fs::rename(first, &req.path)
+            .or_else(|_| std::fs::copy(first, &req.path).map(|_| ()))
+            .map_err(|e| format!("{}: {e}", req.path.display()))?;
+        let bytes = std::fs::metadata(&req.path).map_or(0, |m| m.len());
+        return Ok(Written {
+            signals: vars,
+            of: vars,
+            parts: 1,
+            bytes,
+            clocks: (0, clocks),
+        });
+    }
+    let top_path: Vec<&str> = top.split('.').collect();
+    // The output hierarchy: the first part's, pruned to the kept variables.
+    let mut kept: Vec<Kept> = Vec::new();
+    let mut outline: Vec<Node> = Vec::new();
+    let mut of = 0usize;
+    for item in h.items() {
+        walk(
+            h,
+            item,
+            &mut Vec::new(),
+            &top_path,
+            &req.limits,
+            &mut outline,
+            &mut kept,
+            &mut of,
+        );
+    }
+    let always = [format!("{top}.clock"), format!("{top}.start")];
+    if kept.iter().all(|k| always.contains(&k.full)) {
+        return Err(format!(
+            "{}: the trace limits keep no signal (scopes are globs on names below the top, e.g. 'lanes$0.*')",
+            req.path.display()
+        ));
+    }
+    let mut sink = Sink::open(req, &outline)?;
+    let (from, to) = req.limits.times();
+    let mut offset = 0u64;
+    let mut last_time = 0u64;
+    for raw in raws {
+        let mut wave = open(raw)?;
+        let h = wave.hierarchy();
+        // This part's signals onto the output's, by full name.
+        let by_name: HashMap<&str, usize> = kept
+            .iter()
+            .enumerate()
+            .map(|(i, k)| (k.full.as_str(), i))
+            .collect();
+        let mut map: HashMap<SignalRef, Vec<usize>> = HashMap::new();
+        for v in h.all_vars() {
+            let var = &h[v];
+            if let Some(&i) = by_name.get(var.full_name(h).as_str()) {
+                map.entry(var.signal_ref()).or_default().push(i);
+            }
+        }
+        let signals: Vec<SignalRef> = map.keys().copied().collect();
+        // Values before `from`, emitted all at once when it is reached.
+        let mut held: HashMap<usize, String> = HashMap::new();
+        let mut started = false;
+        let mut now = None;
+        let mut end = offset;
+        let result = wave.stream_changes(
+            wellen::stream::Filter::include_signals(&signals),
+            |t, signal, value| -> Result<(), String> {
+                let t = t + offset;
+                end = end.max(t);
+                let SignalValueRef::BitVec(bv) = value else {
+                    return Ok(());
+                };
+                let Some(outs) = map.get(&signal) else {
+                    return Ok(());
+                };
+                if t >= to {
+                    return Ok(());
+                }
+                if t < from {
+                    for &o in outs {
+                        held.insert(o, bv.bit_string());
+                    }
+                    return Ok(());
+                }
+                if !started {
+                    started = true;
+                    let at = from.max(offset);
+                    if !held.is_empty() {
+                        sink.time(at)?;
+                        now = Some(at);
+                        let mut h: Vec<_> = held.drain().collect();
+                        h.sort();
+                        for (o, v) in h {
+                            sink.change(o, &v, kept[o].width)?;
+                        }
+                    }
+                }
+                if now != Some(t) {
+                    sink.time(t)?;
+                    now = Some(t);
+                }
+                let bits = bv.bit_string();
+                for &o in outs {
+                    sink.change(o, &bits, kept[o].width)?;
+                }
+                Ok(())
+            },
+        );
+        result.map_err(|e| match e {
+            wellen::stream::StreamError::Wellen(e) => format!("{}: {e}", raw.display()),
+            wellen::stream::StreamError::Callback(e) => e,
+        })?;
+        last_time = last_time.max(end);
+        // The next simulation starts at the clock after this one's last.
+        offset = (end / CLOCK_TIME + 1) * CLOCK_TIME;
+    }
+    let span_end = clocks.max(last_time / CLOCK_TIME).min(to / CLOCK_TIME);
+    sink.close()?;
+    let bytes = std::fs::metadata(&req.path)
+        .map_err(|e| format!("{}: {e}", req.path.display()))?
+        .len();
+    Ok(Written {
+        signals: kept.len(),
+        of,
+        parts: raws.len(),
+        bytes,
+        clocks: (from / CLOCK_TIME, span_end),
+    })
+}
+
+/// One line of the output's hierarchy.
+enum Node {
+    Scope(String),
+    Var {
+        name: String,
+        width: u32,
+        index: Option<(i64, i64)>,
+    },
+    Up,
+}
+
+/// Add `item` (below the scopes `path`) to `outline` when it is, or holds,
+/// a kept variable; `of` counts the variables seen.
+#[allow(clippy::too_many_arguments)]
+fn walk<'a>(
+    h: &'a Hierarchy,
+    item: ItemRef,
+    path: &mut Vec<&'a str>,
+    top: &[&str],
+    limits: &Limits,
+    outline: &mut Vec<Node>,
+    kept: &mut Vec<Kept>,
+    of: &mut usize,
+) {
+    match item {
+        ItemRef::Scope(s) => {
+            let scope = &h[s];
+            path.push(scope.name(h));
+            let mark = outline.len();
+            outline.push(Node::Scope(scope.name(h).to_string()));
+            let children: Vec<ItemRef> = scope.items(h).collect();
+            for child in children {
+                walk(h, child, path, top, limits, outline, kept, of);
+            }
+            if outline.len() == mark + 1 {
+                outline.pop();
+            } else {
+                outline.push(Node::Up);
+            }
+            path.pop();
+        }
+        ItemRef::Var(v) => {
+            let var = &h[v];
+            *of += 1;
+            let SignalEncoding::BitVector(width) = var.signal_encoding(h) else {
+                return;
+            };
+            let name = var.name(h);
+            let keep = match path.strip_prefix(top) {
+                Some(below) => {
+                    let mut b: Vec<&str> = below.to_vec();
+                    b.push(name);
+                    limits.keeps(&b)
+                }
+                // Outside the design's top: the harness's own signals.
+                None => limits.scopes.is_empty() && limits.depth.is_none(),
+            };
+            if keep {
+                outline.push(Node::Var {
+                    name: name.to_string(),
+                    width,
+                    index: var.index().map(|i| (i.msb(), i.lsb())),
+                });
+                kept.push(Kept {
+                    full: var.full_name(h),
+                    width,
+                });
+            }
+        }
+    }
+}
+
+/// The output file being written.
+enum Sink {
+    Fst {
+        body: Box<fst_writer::FstBodyWriter<std::io::BufWriter<std::fs::File>>>,
+        ids: Vec<fst_writer::FstSignalId>,
+    },
+    Vcd {
+        w: vcd::Writer<std::io::BufWriter<std::fs::File>>,
+        ids: Vec<vcd::IdCode>,
+    },
+}
+
+/// FST value changes are buffered in memory; a block is written out when
+/// this much has gathered.
+const FST_FLUSH_BYTES: usize = 32 << 20;
+
+impl Sink {
+    fn open(req: &Request, outline: &[Node]) -> Result<Sink, String> {
+        let io = |e: &dyn std::fmt::Display| format!("{}: {e}", req.path.display());
+        match req.format {
+            Format::Fst => {
+                let info = fst_writer::FstInfo {
+                    start_time: 0,
+                    timescale_exponent: -12,
+                    version: "cube".into(),
+                    date: String::new(),
+                    file_type: fst_writer::FstFileType::Verilog,
+                };
+                let mut head = fst_writer::open_fst(&req.path, &info).map_err(|e| io(&e))?;
+                let mut ids = Vec::new();
+                for node in outline {
+                    match node {
+                        Node::Scope(name) => head
+                            .scope(name, "", fst_writer::FstScopeType::Module)
+                            .map_err(|e| io(&e))?,
+                        Node::Up => head.up_scope().map_err(|e| io(&e))?,
+                        Node::Var {
+                            name, width, index, ..
+                        } => {
+                            let name = match index {
+                                Some((m, l)) if *width > 1 => format!("{name} [{m}:{l}]"),
+                                _ => name.clone(),
+                            };
+                            ids.push(
+                                head.var(
+                                    name,
+                                    fst_writer::FstSignalType::bit_vec(*width),
+                                    fst_writer::FstVarType::Wire,
+                                    fst_writer::FstVarDirection::Implicit,
+                                    None,
+                                )
+                                .map_err(|e| io(&e))?,
+                            );
+                        }
+                    }
+                }
+                let body = head.finish().map_err(|e| io(&e))?;
+                Ok(Sink::Fst {
+                    body: Box::new(body),
+                    ids,
+                })
+            }
+            Format::Vcd => {
+                let f = std::fs::File::create(&req.path).map_err(|e| io(&e))?;
+                let mut w = vcd::Writer::new(std::io::BufWriter::new(f));
+                let mut ids = Vec::new();
+                (|| -> std::io::Result<()> {
+                    w.timescale(1, vcd::TimescaleUnit::PS)?;
+                    for node in outline {
+                        match node {
+                            Node::Scope(name) => w.add_module(name)?,
+                            Node::Up => w.upscope()?,
+                            Node::Var {
+                                name, width, index, ..
+                            } => {
+                                let index = index
+                                    .filter(|_| *width > 1)
+                                    .map(|(m, l)| vcd::ReferenceIndex::Range(m as i32, l as i32));
+                                ids.push(w.add_var(vcd::VarType::Wire, *width, name, index)?);
+                            }
+                        }
+                    }
+                    w.enddefinitions()
+                })()
+                .map_err(|e| io(&e))?;
+                Ok(Sink::Vcd { w, ids })
+            }
+        }
+    }
+
+    fn time(&mut self, t: u64) -> Result<(), String> {
+        match self {
+            Sink::Fst { body, .. } => {
+                if body.size() >= FST_FLUSH_BYTES {
+                    body.flush().map_err(|e| e.to_string())?;
+                }
+                body.time_change(t).map_err(|e| e.to_string())
+            }
+            Sink::Vcd { w, .. } => w.timestamp(t).map_err(|e| e.to_string()),
+        }
+    }
+
+    fn change(&mut self, out: usize, bits: &str, width: u32) -> Result<(), String> {
+        match self {
+            Sink::Fst { body, ids } => body
+                .signal_change(ids[out], bits.as_bytes())
+                .map_err(|e| e.to_string()),
+            Sink::Vcd { w, ids } => {
+                let mut v = bits.bytes().map(|b| match b {
+                    b'0' => vcd::Value::V0,
+                    b'1' => vcd::Value::V1,
+                    b'z' | b'Z' => vcd::Value::Z,
+                    _ => vcd::Value::X,
+                });
+                if width == 1 {
+                    w.change_scalar(ids[out], v.next_back().unwrap_or(vcd::Value::X))
+                } else {
+                    w.change_vector(ids[out], v)
+                }
+                .map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    fn close(self) -> Result<(), String> {
+        match self {
+            Sink::Fst { body, .. } => (*body).finish().map(|_| ()).map_err(|e| e.to_string()),
+            Sink::Vcd { mut w, .. } => w.flush().map_err(|e| e.to_string()),
+        }
+    }
+}
