@@ -6,7 +6,8 @@ long ones spend their time in one simulation on one core; on two cores
 half the machine idles. This builds every test binary once (`cargo test
 --workspace --no-run`), then runs them in two lanes, longest first (the
 times of the last run, in target/test-times.json), each in its package's
-folder as cargo runs it, then the doc tests. Each binary's output is
+folder and with `.cargo/config.toml`'s [env] as cargo runs it, then the doc
+tests. Each binary's output is
 printed whole when it ends. Closes with one line over all binaries,
 `tests: N passed, M failed`, and exits 1 when any binary failed.
 
@@ -17,6 +18,7 @@ import json
 import os
 import subprocess
 import sys
+import tomllib
 import threading
 import time
 from pathlib import Path
@@ -53,6 +55,20 @@ def binaries():
     return found
 
 
+def cargo_env():
+    """The environment cargo gives a test: ours, with `.cargo/config.toml`'s
+    [env] table (RUST_MIN_STACK: rust-hdl's signals are large)."""
+    env = dict(os.environ)
+    try:
+        table = tomllib.loads((ROOT / ".cargo" / "config.toml").read_text()).get("env", {})
+    except OSError:
+        table = {}
+    for key, value in table.items():
+        value = value["value"] if isinstance(value, dict) else value
+        env.setdefault(key, str(value))
+    return env
+
+
 def main():
     args = sys.argv[1:]
     lanes = 2
@@ -66,6 +82,7 @@ def main():
         last = {}
     # Longest first: a long binary started last would run alone at the end.
     todo.sort(key=lambda b: -last.get(b[0], 0.0))
+    env = cargo_env()
     lock = threading.Lock()
     results = {}
     started = time.time()
@@ -80,6 +97,7 @@ def main():
             run = subprocess.run(
                 [exe, *extra],
                 cwd=folder,
+                env=env,
                 stdout=subprocess.PIPE,
                 stderr=subprocess.STDOUT,
                 text=True,

@@ -3,7 +3,7 @@
 //! subcommands it returns its own exit code: 0 equal, 1 different, 2 bad
 //! input.
 
-use cosim::vcd_diff::{compare, show as hex, Trace};
+use cosim::vcd_diff::{compare_from, show as hex, Trace};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -21,6 +21,11 @@ pub struct VcdDiffArgs {
     /// shallowest of that name) or a dotted path.
     #[arg(long, default_value = "clock")]
     clock: String,
+    /// Line B's first cycle up with A's cycle N (B traced clocks N.. of the
+    /// run A traced whole: `cube sim --trace-clocks N..`); cycles printed
+    /// are B's.
+    #[arg(long, default_value_t = 0, value_name = "N")]
+    a_from: u64,
 }
 
 /// Compares the traces and returns the exit code: 0 equal, 1 different, 2
@@ -32,10 +37,11 @@ pub fn run(args: VcdDiffArgs) -> i32 {
         signals,
         show,
         clock,
+        a_from,
     } = args;
     let load = |p: &PathBuf| Trace::load_with_clock(p, &clock);
     let loaded = load(&a).and_then(|ta| Ok((ta, load(&b)?)));
-    let c = match loaded.and_then(|(ta, tb)| compare(&ta, &tb, signals.as_deref())) {
+    let c = match loaded.and_then(|(ta, tb)| compare_from(&ta, a_from, &tb, signals.as_deref())) {
         Ok(c) => c,
         Err(e) => {
             eprintln!("cube: vcd-diff: {e}");

@@ -176,7 +176,12 @@ pub fn simulate_frames<A: Arch>(
             .collect(),
         None => vec![],
     };
-    let clocks = trace.and_then(|t| t.limits.clocks);
+    // Verilator dumps only the clocks asked for; its clock count restarts
+    // with each simulation, so only a run of one simulation is cut there
+    // (the limits apply again as the trace is written).
+    let clocks = trace
+        .and_then(|t| t.limits.clocks)
+        .filter(|_| groups.len() == 1);
     for (n, g) in groups.iter().enumerate() {
         let raw = raws.get(n).map(|p| p.as_path());
         let modules = A::modules(&parts[g.start].1, vol);

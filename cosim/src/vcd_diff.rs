@@ -252,6 +252,18 @@ pub fn show(bits: &str) -> String {
 /// Compare two traces over the signals whose aligned name matches `pattern`
 /// (a glob; every signal when `None`).
 pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison, BadTrace> {
+    compare_from(a, 0, b, pattern)
+}
+
+/// [`compare`], with B's cycle 0 lined up with A's cycle `from` (B traced a
+/// clock range of A's run: `cube sim --trace-clocks`). Mismatches and
+/// `cycles_a` count from there.
+pub fn compare_from(
+    a: &Trace,
+    from: u64,
+    b: &Trace,
+    pattern: Option<&str>,
+) -> Result<Comparison, BadTrace> {
     let pat = pattern
         .map(glob::Pattern::new)
         .transpose()
@@ -278,7 +290,8 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
             "the traces have no signal in common (check --signals)".into(),
         ));
     }
-    let cycles = a.cycles.min(b.cycles);
+    let cycles_a = a.cycles.saturating_sub(from);
+    let cycles = cycles_a.min(b.cycles);
     let mut mismatches = Vec::new();
     for name in &common {
         let (ca, cb) = (na[*name], nb[*name]);
@@ -288,7 +301,7 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
             .get(&ca)
             .into_iter()
             .flatten()
-            .map(|(c, _)| *c)
+            .filter_map(|(c, _)| c.checked_sub(from))
             .collect();
         points.extend(b.samples.get(&cb).into_iter().flatten().map(|(c, _)| *c));
         points.push(0);
@@ -297,12 +310,12 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
         if let Some(&c) = points
             .iter()
             .filter(|&&c| c < cycles)
-            .find(|&&c| a.at(ca, c) != b.at(cb, c))
+            .find(|&&c| a.at(ca, c + from) != b.at(cb, c))
         {
             mismatches.push(SignalMismatch {
                 cycle: c,
                 signal: name.to_string(),
-                a: a.at(ca, c).to_string(),
+                a: a.at(ca, c + from).to_string(),
                 b: b.at(cb, c).to_string(),
             });
         }
@@ -320,7 +333,7 @@ pub fn compare(a: &Trace, b: &Trace, pattern: Option<&str>) -> Result<Comparison
             .filter(|k| !na.contains_key(*k) && keep(k))
             .cloned()
             .collect(),
-        cycles_a: a.cycles,
+        cycles_a,
         cycles_b: b.cycles,
         mismatches,
     })

@@ -112,6 +112,45 @@ fn verilator_trace_equals_rust_hdl_trace() {
     }
 }
 
+/// Verilator dumps only the clocks asked for: the trace of clocks
+/// 2400..2500 holds 100 rising edges, each equal to the same clock of the
+/// whole trace, in a file a fraction of its size.
+#[test]
+fn verilator_traces_only_the_clocks_asked_for() {
+    require_tool("verilator");
+    let (s, vol) = sphere();
+    let whole = vcd_dir().join("sphere_p2_verilator_whole.fst");
+    let part = vcd_dir().join("sphere_p2_verilator_2400_2500.fst");
+    simulate::<Cube4l>(
+        &s,
+        &s.camera(),
+        &vol,
+        Engine::Verilator,
+        Some(&trace_to(&whole)),
+    )
+    .unwrap();
+    let limits = cosim::trace::Limits {
+        clocks: Some((2400, 2500)),
+        ..Default::default()
+    };
+    let req = cosim::trace::Request::new(&part, limits).unwrap();
+    let r = simulate::<Cube4l>(&s, &s.camera(), &vol, Engine::Verilator, Some(&req)).unwrap();
+    assert_eq!(r.mismatches, 0);
+    assert_trace_opens(&part);
+    let (w, p) = (Trace::load(&whole).unwrap(), Trace::load(&part).unwrap());
+    assert_eq!(p.cycles, 100);
+    let size = |f: &PathBuf| std::fs::metadata(f).unwrap().len();
+    assert!(
+        size(&part) * 5 < size(&whole),
+        "{} against {}",
+        size(&part),
+        size(&whole)
+    );
+    let c = cosim::vcd_diff::compare_from(&w, 2400, &p, None).unwrap();
+    assert!(c.compared > 2000, "{} signals compared", c.compared);
+    assert!(c.mismatches.is_empty(), "{:?}", c.mismatches.first());
+}
+
 #[test]
 fn a_swapped_neighbour_link_is_caught_by_pixels_and_by_the_trace() {
     require_tool("verilator");
