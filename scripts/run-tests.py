@@ -5,7 +5,8 @@
 long ones spend their time in one simulation on one core; on two cores
 half the machine idles. This builds every test binary once (`cargo test
 --workspace --no-run`), then runs them in two lanes, longest first (the
-times of the last run, in target/test-times.json), each in its package's
+times of the last run, in target/test-times.json, else those of a full run
+committed in scripts/test-times.json), each in its package's
 folder and with `.cargo/config.toml`'s [env] as cargo runs it, then the doc
 tests. Each binary's output is
 printed whole when it ends. Closes with one line over all binaries,
@@ -25,6 +26,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 TIMES = ROOT / "target" / "test-times.json"
+# The times of a full run, committed: the order on a fresh clone.
+COMMITTED_TIMES = ROOT / "scripts" / "test-times.json"
 
 
 def binaries():
@@ -76,10 +79,13 @@ def main():
         lanes, args = int(args[1]), args[2:]
     extra = args[1:] if args[:1] == ["--"] else args
     todo = binaries()
-    try:
-        last = json.loads(TIMES.read_text())
-    except (OSError, ValueError):
-        last = {}
+    last = {}
+    for times in (TIMES, COMMITTED_TIMES):
+        try:
+            last = json.loads(times.read_text())
+            break
+        except (OSError, ValueError):
+            continue
     # Longest first: a long binary started last would run alone at the end.
     todo.sort(key=lambda b: -last.get(b[0], 0.0))
     env = cargo_env()

@@ -752,6 +752,13 @@ fn build(verilog: &str, harness: &str) -> Result<(PathBuf, bool), String> {
     if exe.exists() {
         return Ok((exe, true));
     }
+    // One build at a time in a process (each uses both cores): a second
+    // thread wanting the same design waits, then finds it in the cache.
+    static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    if exe.exists() {
+        return Ok((exe, true));
+    }
     let tmp = dir.with_extension(format!("tmp{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&tmp);
     std::fs::create_dir_all(&tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;

@@ -33,7 +33,10 @@ def main() -> int:
     results = runner.test(
         hdl_toplevel="top",
         test_module="test_stage",
-        test_dir=Path(__file__).resolve().parent,
+        # Runs (and results.xml) in the build folder: never in the sources,
+        # and two runs on two folders never share one. test_stage.py is found
+        # on this script's path.
+        test_dir=build,
         build_dir=build,
         extra_env={"CUBE_STAGE_VECTORS": str(vectors)},
         timescale=("1ns", "1ps"),
