@@ -124,6 +124,21 @@ pub struct Written {
 struct Kept {
     full: String,
     width: u32,
+    /// The first kept variable on the same signal (Verilator traces a port
+    /// and its copies in the parents as one): this one is declared as its
+    /// alias and gets no value changes of its own.
+    alias_of: Option<usize>,
+}
+
+/// The output's hierarchy as the first trace's is walked.
+#[derive(Default)]
+struct Outline {
+    nodes: Vec<Node>,
+    kept: Vec<Kept>,
+    /// Variables seen.
+    of: usize,
+    /// The first kept variable of each signal.
+    first_of: HashMap<SignalRef, usize>,
 }
 
 /// Stream the engine traces `raws` (one per simulation, in order; the
@@ -158,9 +173,7 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
     }
     let top_path: Vec<&str> = top.split('.').collect();
     // The output hierarchy: the first part's, pruned to the kept variables.
-    let mut kept: Vec<Kept> = Vec::new();
-    let mut outline: Vec<Node> = Vec::new();
-    let mut of = 0usize;
+    let mut outline = Outline::default();
     for item in h.items() {
         walk(
             h,
@@ -169,10 +182,11 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
             &top_path,
             &req.limits,
             &mut outline,
-            &mut kept,
-            &mut of,
         );
     }
+    let Outline {
+        nodes, kept, of, ..
+    } = outline;
     let always = [format!("{top}.clock"), format!("{top}.start")];
     if kept.iter().all(|k| always.contains(&k.full)) {
         return Err(format!(
@@ -180,7 +194,7 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
             req.path.display()
         ));
     }
-    let mut sink = Sink::open(req, &outline)?;
+    let mut sink = Sink::open(req, &nodes, &kept)?;
     let (from, to) = req.limits.times();
     let mut offset = 0u64;
     let mut last_time = 0u64;
@@ -284,63 +298,92 @@ enum Node {
 }
 
 /// Add `item` (below the scopes `path`) to `outline` when it is, or holds,
-/// a kept variable; `of` counts the variables seen.
-#[allow(clippy::too_many_arguments)]
+/// a kept variable.
 fn walk<'a>(
     h: &'a Hierarchy,
     item: ItemRef,
     path: &mut Vec<&'a str>,
     top: &[&str],
     limits: &Limits,
-    outline: &mut Vec<Node>,
-    kept: &mut Vec<Kept>,
-    of: &mut usize,
+    outline: &mut Outline,
 ) {
     match item {
         ItemRef::Scope(s) => {
             let scope = &h[s];
-            path.push(scope.name(h));
-            let mark = outline.len();
-            outline.push(Node::Scope(scope.name(h).to_string()));
             let children: Vec<ItemRef> = scope.items(h).collect();
-            for child in children {
-                walk(h, child, path, top, limits, outline, kept, of);
+            // wellen reads a memory's words (`mem[0]`, `mem[1]`...) as a
+            // scope `mem` of variables `[0]`, `[1]`...: they stay words of
+            // the scope they are in.
+            let words = !children.is_empty()
+                && children.iter().all(|c| match c {
+                    ItemRef::Var(v) => h[*v].name(h).starts_with('['),
+                    ItemRef::Scope(_) => false,
+                });
+            if words {
+                for child in children {
+                    if let ItemRef::Var(v) = child {
+                        let name = format!("{}{}", scope.name(h), h[v].name(h));
+                        add_var(h, v, name, path, top, limits, outline);
+                    }
+                }
+                return;
             }
-            if outline.len() == mark + 1 {
-                outline.pop();
+            path.push(scope.name(h));
+            let mark = outline.nodes.len();
+            outline.nodes.push(Node::Scope(scope.name(h).to_string()));
+            for child in children {
+                walk(h, child, path, top, limits, outline);
+            }
+            if outline.nodes.len() == mark + 1 {
+                outline.nodes.pop();
             } else {
-                outline.push(Node::Up);
+                outline.nodes.push(Node::Up);
             }
             path.pop();
         }
-        ItemRef::Var(v) => {
-            let var = &h[v];
-            *of += 1;
-            let SignalEncoding::BitVector(width) = var.signal_encoding(h) else {
-                return;
-            };
-            let name = var.name(h);
-            let keep = match path.strip_prefix(top) {
-                Some(below) => {
-                    let mut b: Vec<&str> = below.to_vec();
-                    b.push(name);
-                    limits.keeps(&b)
-                }
-                // Outside the design's top: the harness's own signals.
-                None => limits.scopes.is_empty() && limits.depth.is_none(),
-            };
-            if keep {
-                outline.push(Node::Var {
-                    name: name.to_string(),
-                    width,
-                    index: var.index().map(|i| (i.msb(), i.lsb())),
-                });
-                kept.push(Kept {
-                    full: var.full_name(h),
-                    width,
-                });
-            }
+        ItemRef::Var(v) => add_var(h, v, h[v].name(h).to_string(), path, top, limits, outline),
+    }
+}
+
+/// Add the variable `v`, named `name` below the scopes `path`, to
+/// `outline` when the limits keep it.
+fn add_var(
+    h: &Hierarchy,
+    v: wellen::VarRef,
+    name: String,
+    path: &[&str],
+    top: &[&str],
+    limits: &Limits,
+    outline: &mut Outline,
+) {
+    let var = &h[v];
+    outline.of += 1;
+    let SignalEncoding::BitVector(width) = var.signal_encoding(h) else {
+        return;
+    };
+    let keep = match path.strip_prefix(top) {
+        Some(below) => {
+            let mut b: Vec<&str> = below.to_vec();
+            b.push(&name);
+            limits.keeps(&b)
         }
+        // Outside the design's top: the harness's own signals.
+        None => limits.scopes.is_empty() && limits.depth.is_none(),
+    };
+    if keep {
+        let i = outline.kept.len();
+        let alias_of = outline.first_of.get(&var.signal_ref()).copied();
+        outline.first_of.entry(var.signal_ref()).or_insert(i);
+        outline.nodes.push(Node::Var {
+            name,
+            width,
+            index: var.index().map(|i| (i.msb(), i.lsb())),
+        });
+        outline.kept.push(Kept {
+            full: var.full_name(h),
+            width,
+            alias_of,
+        });
     }
 }
 
@@ -361,7 +404,7 @@ enum Sink {
 const FST_FLUSH_BYTES: usize = 32 << 20;
 
 impl Sink {
-    fn open(req: &Request, outline: &[Node]) -> Result<Sink, String> {
+    fn open(req: &Request, outline: &[Node], kept: &[Kept]) -> Result<Sink, String> {
         let io = |e: &dyn std::fmt::Display| format!("{}: {e}", req.path.display());
         match req.format {
             Format::Fst => {
@@ -384,16 +427,17 @@ impl Sink {
                             name, width, index, ..
                         } => {
                             let name = match index {
-                                Some((m, l)) if *width > 1 => format!("{name} [{m}:{l}]"),
+                                Some((m, l)) => format!("{name} [{m}:{l}]"),
                                 _ => name.clone(),
                             };
+                            let alias = kept[ids.len()].alias_of.map(|a| ids[a]);
                             ids.push(
                                 head.var(
                                     name,
                                     fst_writer::FstSignalType::bit_vec(*width),
                                     fst_writer::FstVarType::Wire,
                                     fst_writer::FstVarDirection::Implicit,
-                                    None,
+                                    alias,
                                 )
                                 .map_err(|e| io(&e))?,
                             );
@@ -420,9 +464,15 @@ impl Sink {
                                 name, width, index, ..
                             } => {
                                 let index = index
-                                    .filter(|_| *width > 1)
                                     .map(|(m, l)| vcd::ReferenceIndex::Range(m as i32, l as i32));
-                                ids.push(w.add_var(vcd::VarType::Wire, *width, name, index)?);
+                                let id = match kept[ids.len()].alias_of {
+                                    Some(a) => {
+                                        w.var_def(vcd::VarType::Wire, *width, ids[a], name, index)?;
+                                        ids[a]
+                                    }
+                                    None => w.add_var(vcd::VarType::Wire, *width, name, index)?,
+                                };
+                                ids.push(id);
                             }
                         }
                     }
