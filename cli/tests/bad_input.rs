@@ -228,3 +228,49 @@ fn vcd_diff_counts_cycles_on_a_named_clock() {
     assert_eq!(o.status.code(), Some(0), "{text}");
     assert!(text.contains("over 2 cycles"), "{text}");
 }
+
+#[test]
+fn bad_trace_requests_are_one_line_naming_the_flag() {
+    let (d, s) = setup();
+    let p = d.path();
+    for (flags, needle) in [
+        (
+            vec!["--trace", "t.txt"],
+            "--trace: t.txt: a trace's name ends in .vcd or .fst",
+        ),
+        (vec!["--trace", "t"], "ends in .vcd or .fst"),
+        (
+            vec!["--trace", "t.vcd", "--trace-clocks", "5..2"],
+            "trace clocks 5..2: an empty range",
+        ),
+        (
+            vec!["--trace", "t.vcd", "--trace-clocks", "abc"],
+            "--trace-clocks abc: expected FIRST..END",
+        ),
+        (
+            vec![
+                "--trace",
+                "t.fst",
+                "--trace-clocks",
+                "0..99999999999999999999",
+            ],
+            "--trace-clocks 0..99999999999999999999",
+        ),
+        (
+            vec!["--trace", "t.vcd", "--trace-scope", "["],
+            "--trace-scope [",
+        ),
+        (vec!["--trace-depth", "2"], "--trace"),
+    ] {
+        let mut args = vec!["sim", "--scene", &s];
+        args.extend(flags);
+        one_line_error(&cube(&args, p), needle);
+    }
+    let left: Vec<_> = std::fs::read_dir(p)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().to_string())
+        .filter(|n| n != "s.json")
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+}

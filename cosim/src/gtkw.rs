@@ -59,14 +59,14 @@ pub fn render(trace: &Path, written: &Written, top: &str, waves: &[Wave]) -> Str
     let dump = absolute(trace);
     let save = dump.with_extension("gtkw");
     let (first, end) = written.clocks;
-    let span = ((end.saturating_sub(first)).max(1) * CLOCK_TIME) as f64;
+    let span = (end.saturating_sub(first).max(1)).saturating_mul(CLOCK_TIME) as f64;
     // GTKWave shows 2^-zoom time units a pixel.
     let zoom = (PANE_PIXELS / span).log2().floor();
     let mut s = format!(
         "{MARK}: the next run's trace replaces it\n[dumpfile] \"{}\"\n[savefile] \"{}\"\n[timestart] {}\n[size] 1400 900\n*{zoom:.6} -1{}\n",
         dump.display(),
         save.display(),
-        first * CLOCK_TIME,
+        first.saturating_mul(CLOCK_TIME),
         " -1".repeat(26)
     );
     s.push_str(&format!("{BINARY}\n{top}.clock\n{top}.start\n"));

@@ -72,7 +72,7 @@ impl Limits {
     /// The range of times kept, `[from, to)`.
     fn times(&self) -> (u64, u64) {
         self.clocks.map_or((0, u64::MAX), |(a, b)| {
-            (a * CLOCK_TIME, b.saturating_mul(CLOCK_TIME))
+            (a.saturating_mul(CLOCK_TIME), b.saturating_mul(CLOCK_TIME))
         })
     }
 }
