@@ -201,10 +201,12 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
     for raw in raws {
         let mut wave = open(raw)?;
         let h = wave.hierarchy();
-        // This part's signals onto the output's, by full name.
+        // This part's signals onto the output's, by full name (an alias
+        // shares its first variable's changes).
         let by_name: HashMap<&str, usize> = kept
             .iter()
             .enumerate()
+            .filter(|(_, k)| k.alias_of.is_none())
             .map(|(i, k)| (k.full.as_str(), i))
             .collect();
         let mut map: HashMap<SignalRef, Vec<usize>> = HashMap::new();
