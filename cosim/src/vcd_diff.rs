@@ -57,10 +57,19 @@ fn plain(name: &str) -> String {
 pub const MAX_SCOPE_DEPTH: usize = 256;
 
 /// Check, before parsing, that the header's `$scope`s nest at most `max`
-/// deep (a scan of its words up to `$enddefinitions`).
+/// deep (a scan of its words up to `$enddefinitions`). A file that does not
+/// open as VCD text (FST, whose reader does not recurse) is not scanned.
 fn scope_depth_within(path: &Path, max: usize) -> std::io::Result<()> {
     use std::io::BufRead;
-    let f = std::io::BufReader::new(std::fs::File::open(path)?);
+    let mut f = std::io::BufReader::new(std::fs::File::open(path)?);
+    let text = f
+        .fill_buf()?
+        .iter()
+        .find(|b| !b.is_ascii_whitespace())
+        .is_some_and(|&b| b == b'$');
+    if !text {
+        return Ok(());
+    }
     let mut depth = 0usize;
     for line in f.split(b'\n') {
         for word in line?.split(|b| b.is_ascii_whitespace()) {

@@ -42,4 +42,4 @@ async def stage_matches_the_golden_model(dut):
                 checked += 1
         await Timer(1, unit="ns")
     dut._log.info("%d outputs checked over %d clocks", checked, len(inputs))
-    assert checked == len(expected[: len(inputs) + 1 - latency]) * len(expected[0])
+    assert checked == (len(inputs) + 1 - latency) * len(expected[0])

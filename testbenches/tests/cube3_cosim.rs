@@ -69,12 +69,8 @@ fn every_engine_matches_the_golden_model_and_the_traces_agree() {
     assert!(rust.clocks > rust.ideal_clocks);
     assert_trace_opens(&rust_vcd);
     assert!(rust_vcd.with_extension("gtkw").exists());
-    let cmp = compare(
-        &Trace::load(&rust_vcd).unwrap(),
-        &Trace::load(&verilator_vcd).unwrap(),
-        None,
-    )
-    .unwrap();
+    let rust_trace = Trace::load(&rust_vcd).unwrap();
+    let cmp = compare(&rust_trace, &Trace::load(&verilator_vcd).unwrap(), None).unwrap();
     assert!(cmp.compared > 500, "{} signals compared", cmp.compared);
     assert!(
         cmp.equal(),
@@ -85,10 +81,7 @@ fn every_engine_matches_the_golden_model_and_the_traces_agree() {
     // are four-state, X until first written, so it is not compared with
     // rust-hdl's two-state trace).
     assert_trace_opens(&icarus_fst);
-    assert_eq!(
-        Trace::load(&icarus_fst).unwrap().cycles,
-        Trace::load(&rust_vcd).unwrap().cycles
-    );
+    assert_eq!(Trace::load(&icarus_fst).unwrap().cycles, rust_trace.cycles);
 }
 
 #[test]
