@@ -1,7 +1,7 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator), [`unorm`] (the exact unorm multiplier),
 //! and their pipelined forms [`piped_mul`] and [`piped_over`],
-//! [`delay_line`] and [`ram`] (block RAM as deep as the scene needs), the
+//! [`delay_line`] (and [`registered_line`], its output a register) and [`ram`] (block RAM as deep as the scene needs), the
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
 //! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
@@ -18,6 +18,7 @@ pub mod over;
 pub mod piped_mul;
 pub mod piped_over;
 pub mod ram;
+pub mod registered_line;
 pub mod regs;
 pub mod shader;
 pub mod square;

@@ -463,13 +463,14 @@ impl PipelineConfig {
 
     /// Bits of block RAM the pipelines' buffers hold (not the CFB's
     /// voxel memory), as built: per lane the compositing-buffer history and
-    /// the gradient unit's B and C slices (a line of 1 is a register).
+    /// the gradient unit's B and C slices (a line of L keeps L - 1 words and
+    /// its output register; a line of 2 or 1 is registers alone).
     pub fn buffer_bits(&self) -> u64 {
         let lane: u64 = self
             .lines()
             .iter()
-            .filter(|l| l.0 > 1)
-            .map(|&(l, bits)| l as u64 * bits)
+            .filter(|l| l.0 > 2)
+            .map(|&(l, bits)| (l as u64 - 1) * bits)
             .sum();
         self.p as u64 * lane
     }

@@ -962,172 +962,63 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'hf;
-    localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [63:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [63:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [63:0] one$d;
-    wire  [63:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam0$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$lanes$0$taps$rows$beam0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$lanes$0$taps$rows$beam0$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$lanes$0$taps$rows$beam0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$0$taps$rows$beam0$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$lanes$0$taps$rows$beam0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [63:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$lanes$0$taps$rows$beam0
-module top$lanes$0$taps$rows$beam0$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$one
-module top$lanes$0$taps$rows$beam0$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$ptr
-module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [63:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [63:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[15:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$taps$rows$beam0$ram
-module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
-module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
+module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -1138,7 +1029,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hf;
+    localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1165,7 +1056,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam1$ram ram(
+    top$lanes$0$taps$rows$beam0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1174,17 +1065,17 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$beam1$ptr ptr(
+    top$lanes$0$taps$rows$beam0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$beam0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$beam1$one one(
+    top$lanes$0$taps$rows$beam0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -1225,8 +1116,8 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$beam1
-module top$lanes$0$taps$rows$beam1$one(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0$line
+module top$lanes$0$taps$rows$beam0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1242,8 +1133,8 @@ module top$lanes$0$taps$rows$beam1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$one
-module top$lanes$0$taps$rows$beam1$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0$line$one
+module top$lanes$0$taps$rows$beam0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1259,8 +1150,8 @@ module top$lanes$0$taps$rows$beam1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$ptr
-module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$beam0$line$ptr
+module top$lanes$0$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1273,7 +1164,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[15:0];
+    reg [31:0] mem[14:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
@@ -1284,8 +1175,8 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
           mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$taps$rows$beam1$ram
-module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0$line$ram
+module top$lanes$0$taps$rows$beam0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1301,7 +1192,316 @@ module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$0$taps$rows$beam0$line$rd_flipped
+module top$lanes$0$taps$rows$beam0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$line_last
+module top$lanes$0$taps$rows$beam0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$out
+module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$taps$rows$beam1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$taps$rows$beam1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$taps$rows$beam1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$taps$rows$beam1
+module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'he;
+    localparam  single = 1'b0;
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [63:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [63:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [63:0] one$d;
+    wire  [63:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$taps$rows$beam1$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$taps$rows$beam1$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$taps$rows$beam1$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$0$taps$rows$beam1$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [63:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$0$taps$rows$beam1$line
+module top$lanes$0$taps$rows$beam1$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$line$one
+module top$lanes$0$taps$rows$beam1$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$line$ptr
+module top$lanes$0$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [63:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [63:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[14:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$taps$rows$beam1$line$ram
+module top$lanes$0$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$line$rd_flipped
+module top$lanes$0$taps$rows$beam1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$line_last
+module top$lanes$0$taps$rows$beam1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$out
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1329,8 +1529,74 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$taps$rows$ring$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$taps$rows$ring$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$taps$rows$ring$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$taps$rows$ring
+module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h1e1;
+    localparam  longest_last = 16'h1e0;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1357,7 +1623,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$ring$ram ram(
+    top$lanes$0$taps$rows$ring$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1366,17 +1632,17 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$ring$ptr ptr(
+    top$lanes$0$taps$rows$ring$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$ring$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$ring$one one(
+    top$lanes$0$taps$rows$ring$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -1417,8 +1683,8 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$ring
-module top$lanes$0$taps$rows$ring$one(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring$line
+module top$lanes$0$taps$rows$ring$line$one(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1434,8 +1700,8 @@ module top$lanes$0$taps$rows$ring$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$one
-module top$lanes$0$taps$rows$ring$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring$line$one
+module top$lanes$0$taps$rows$ring$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1451,8 +1717,8 @@ module top$lanes$0$taps$rows$ring$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$ptr
-module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$ring$line$ptr
+module top$lanes$0$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1464,7 +1730,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[481:0];
+    reg [31:0] mem[480:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};
@@ -1475,8 +1741,8 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
           mem[write_address[8:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$taps$rows$ring$ram
-module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring$line$ram
+module top$lanes$0$taps$rows$ring$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1492,7 +1758,41 @@ module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$rd_flipped
+endmodule // top$lanes$0$taps$rows$ring$line$rd_flipped
+module top$lanes$0$taps$rows$ring$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$line_last
+module top$lanes$0$taps$rows$ring$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$out
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -3579,172 +3879,63 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'hf;
-    localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [63:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [63:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [63:0] one$d;
-    wire  [63:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam0$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$lanes$1$taps$rows$beam0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$lanes$1$taps$rows$beam0$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$lanes$1$taps$rows$beam0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$1$taps$rows$beam0$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$lanes$1$taps$rows$beam0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [63:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$lanes$1$taps$rows$beam0
-module top$lanes$1$taps$rows$beam0$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$one
-module top$lanes$1$taps$rows$beam0$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$ptr
-module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [63:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [63:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[15:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$taps$rows$beam0$ram
-module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
-module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
+module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -3755,7 +3946,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hf;
+    localparam  longest_last = 16'he;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -3782,7 +3973,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam1$ram ram(
+    top$lanes$1$taps$rows$beam0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3791,17 +3982,17 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$beam1$ptr ptr(
+    top$lanes$1$taps$rows$beam0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$beam0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$beam1$one one(
+    top$lanes$1$taps$rows$beam0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -3842,8 +4033,8 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$beam1
-module top$lanes$1$taps$rows$beam1$one(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0$line
+module top$lanes$1$taps$rows$beam0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -3859,8 +4050,8 @@ module top$lanes$1$taps$rows$beam1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$one
-module top$lanes$1$taps$rows$beam1$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0$line$one
+module top$lanes$1$taps$rows$beam0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3876,8 +4067,8 @@ module top$lanes$1$taps$rows$beam1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$ptr
-module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$beam0$line$ptr
+module top$lanes$1$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -3890,7 +4081,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[15:0];
+    reg [31:0] mem[14:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
@@ -3901,8 +4092,8 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
           mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$taps$rows$beam1$ram
-module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0$line$ram
+module top$lanes$1$taps$rows$beam0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3918,7 +4109,316 @@ module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$1$taps$rows$beam0$line$rd_flipped
+module top$lanes$1$taps$rows$beam0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$line_last
+module top$lanes$1$taps$rows$beam0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$out
+module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$taps$rows$beam1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$taps$rows$beam1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$taps$rows$beam1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$taps$rows$beam1
+module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'he;
+    localparam  single = 1'b0;
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [63:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [63:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [63:0] one$d;
+    wire  [63:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$taps$rows$beam1$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$taps$rows$beam1$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$taps$rows$beam1$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$1$taps$rows$beam1$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [63:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$1$taps$rows$beam1$line
+module top$lanes$1$taps$rows$beam1$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$line$one
+module top$lanes$1$taps$rows$beam1$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$line$ptr
+module top$lanes$1$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [63:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [63:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[14:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[3:0]][31:24], 8'd0, mem[read_address[3:0]][23:16], 8'd0, mem[read_address[3:0]][15:8], 8'd0, mem[read_address[3:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[3:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$taps$rows$beam1$line$ram
+module top$lanes$1$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$line$rd_flipped
+module top$lanes$1$taps$rows$beam1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$line_last
+module top$lanes$1$taps$rows$beam1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$out
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -3946,8 +4446,74 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 64'hff00ff00ff00ff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$taps$rows$ring$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$taps$rows$ring$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$taps$rows$ring$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$taps$rows$ring
+module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h1e1;
+    localparam  longest_last = 16'h1e0;
     localparam  single = 1'b0;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -3974,7 +4540,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$ring$ram ram(
+    top$lanes$1$taps$rows$ring$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3983,17 +4549,17 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$ring$ptr ptr(
+    top$lanes$1$taps$rows$ring$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$ring$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$ring$one one(
+    top$lanes$1$taps$rows$ring$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -4034,8 +4600,8 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$ring
-module top$lanes$1$taps$rows$ring$one(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring$line
+module top$lanes$1$taps$rows$ring$line$one(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4051,8 +4617,8 @@ module top$lanes$1$taps$rows$ring$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$one
-module top$lanes$1$taps$rows$ring$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring$line$one
+module top$lanes$1$taps$rows$ring$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4068,8 +4634,8 @@ module top$lanes$1$taps$rows$ring$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$ptr
-module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$ring$line$ptr
+module top$lanes$1$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4081,7 +4647,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[481:0];
+    reg [31:0] mem[480:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[8:0]][31:24], 8'd0, mem[read_address[8:0]][23:16], 8'd0, mem[read_address[8:0]][15:8], 8'd0, mem[read_address[8:0]][7:0]};
@@ -4092,8 +4658,8 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
           mem[write_address[8:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$taps$rows$ring$ram
-module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring$line$ram
+module top$lanes$1$taps$rows$ring$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4109,7 +4675,41 @@ module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$rd_flipped
+endmodule // top$lanes$1$taps$rows$ring$line$rd_flipped
+module top$lanes$1$taps$rows$ring$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$line_last
+module top$lanes$1$taps$rows$ring$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$out
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments

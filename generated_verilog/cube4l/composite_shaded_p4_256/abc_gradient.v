@@ -494,6 +494,896 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_a$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$feed$abc$line_a$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$feed$abc$line_a$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_a
+module top$lanes$0$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3fbd;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_a$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_a$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_a$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$0$feed$abc$line_a$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_a$line
+module top$lanes$0$feed$abc$line_a$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$line$one
+module top$lanes$0$feed$abc$line_a$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$line$ptr
+module top$lanes$0$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16317:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_a$line$ram
+module top$lanes$0$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$line$rd_flipped
+module top$lanes$0$feed$abc$line_a$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$line_last
+module top$lanes$0$feed$abc$line_a$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$out
+module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_b$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$feed$abc$line_b$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$feed$abc$line_b$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_b
+module top$lanes$0$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_b$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_b$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_b$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$0$feed$abc$line_b$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_b$line
+module top$lanes$0$feed$abc$line_b$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$line$one
+module top$lanes$0$feed$abc$line_b$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$line$ptr
+module top$lanes$0$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_b$line$ram
+module top$lanes$0$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$line$rd_flipped
+module top$lanes$0$feed$abc$line_b$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$line_last
+module top$lanes$0$feed$abc$line_b$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$out
+module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_c$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$feed$abc$line_c$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$feed$abc$line_c$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_c
+module top$lanes$0$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_c$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$0$feed$abc$line_c$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$0$feed$abc$line_c$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$0$feed$abc$line_c$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_c$line
+module top$lanes$0$feed$abc$line_c$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$line$one
+module top$lanes$0$feed$abc$line_c$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$line$ptr
+module top$lanes$0$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$0$feed$abc$line_c$line$ram
+module top$lanes$0$feed$abc$line_c$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$line$rd_flipped
+module top$lanes$0$feed$abc$line_c$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$line_last
+module top$lanes$0$feed$abc$line_c$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$out
+module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$0$feed$abc$line_d$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$0$feed$abc$line_d$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$0$feed$abc$line_d$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$0$feed$abc$line_d
+module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
@@ -522,7 +1412,7 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$feed$abc$line_a$ram ram(
+    top$lanes$0$feed$abc$line_d$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -531,17 +1421,17 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$feed$abc$line_a$ptr ptr(
+    top$lanes$0$feed$abc$line_d$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$feed$abc$line_a$rd_flipped rd_flipped(
+    top$lanes$0$feed$abc$line_d$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$feed$abc$line_a$one one(
+    top$lanes$0$feed$abc$line_d$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -582,8 +1472,8 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$feed$abc$line_a
-module top$lanes$0$feed$abc$line_a$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$line
+module top$lanes$0$feed$abc$line_d$line$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -599,8 +1489,8 @@ module top$lanes$0$feed$abc$line_a$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$one
-module top$lanes$0$feed$abc$line_a$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$line$one
+module top$lanes$0$feed$abc$line_d$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -616,8 +1506,8 @@ module top$lanes$0$feed$abc$line_a$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$ptr
-module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$line_d$line$ptr
+module top$lanes$0$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -640,8 +1530,8 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
           mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$0$feed$abc$line_a$ram
-module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$line$ram
+module top$lanes$0$feed$abc$line_d$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -657,107 +1547,8 @@ module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$rd_flipped
-module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_b$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$0$feed$abc$line_b$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$0$feed$abc$line_b$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_b
-module top$lanes$0$feed$abc$line_b$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$line$rd_flipped
+module top$lanes$0$feed$abc$line_d$line_last(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -773,8 +1564,8 @@ module top$lanes$0$feed$abc$line_b$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$one
-module top$lanes$0$feed$abc$line_b$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$line_last
+module top$lanes$0$feed$abc$line_d$out(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -790,398 +1581,7 @@ module top$lanes$0$feed$abc$line_b$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$ptr
-module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$feed$abc$line_b$ram
-module top$lanes$0$feed$abc$line_b$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_b$rd_flipped
-module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_c$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$0$feed$abc$line_c$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$0$feed$abc$line_c$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_c
-module top$lanes$0$feed$abc$line_c$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$one
-module top$lanes$0$feed$abc$line_c$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$ptr
-module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$feed$abc$line_c$ram
-module top$lanes$0$feed$abc$line_c$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$rd_flipped
-module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fbf;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_d$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$0$feed$abc$line_d$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$0$feed$abc$line_d$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_d
-module top$lanes$0$feed$abc$line_d$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_d$one
-module top$lanes$0$feed$abc$line_d$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_d$ptr
-module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[16319:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$0$feed$abc$line_d$ram
-module top$lanes$0$feed$abc$line_d$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$0$feed$abc$line_d$out
 module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -1763,6 +2163,896 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_a$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$feed$abc$line_a$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$feed$abc$line_a$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_a
+module top$lanes$1$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3fbd;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_a$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_a$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_a$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$1$feed$abc$line_a$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_a$line
+module top$lanes$1$feed$abc$line_a$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$line$one
+module top$lanes$1$feed$abc$line_a$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$line$ptr
+module top$lanes$1$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16317:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_a$line$ram
+module top$lanes$1$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$line$rd_flipped
+module top$lanes$1$feed$abc$line_a$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$line_last
+module top$lanes$1$feed$abc$line_a$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$out
+module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_b$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$feed$abc$line_b$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$feed$abc$line_b$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_b
+module top$lanes$1$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_b$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_b$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_b$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$1$feed$abc$line_b$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_b$line
+module top$lanes$1$feed$abc$line_b$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$line$one
+module top$lanes$1$feed$abc$line_b$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$line$ptr
+module top$lanes$1$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_b$line$ram
+module top$lanes$1$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$line$rd_flipped
+module top$lanes$1$feed$abc$line_b$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$line_last
+module top$lanes$1$feed$abc$line_b$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$out
+module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_c$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$feed$abc$line_c$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$feed$abc$line_c$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_c
+module top$lanes$1$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_c$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$1$feed$abc$line_c$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$1$feed$abc$line_c$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$1$feed$abc$line_c$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_c$line
+module top$lanes$1$feed$abc$line_c$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$line$one
+module top$lanes$1$feed$abc$line_c$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$line$ptr
+module top$lanes$1$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$1$feed$abc$line_c$line$ram
+module top$lanes$1$feed$abc$line_c$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$line$rd_flipped
+module top$lanes$1$feed$abc$line_c$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$line_last
+module top$lanes$1$feed$abc$line_c$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$out
+module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$1$feed$abc$line_d$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$1$feed$abc$line_d$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$1$feed$abc$line_d$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$1$feed$abc$line_d
+module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
@@ -1791,7 +3081,7 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$feed$abc$line_a$ram ram(
+    top$lanes$1$feed$abc$line_d$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1800,17 +3090,17 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$feed$abc$line_a$ptr ptr(
+    top$lanes$1$feed$abc$line_d$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$feed$abc$line_a$rd_flipped rd_flipped(
+    top$lanes$1$feed$abc$line_d$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$feed$abc$line_a$one one(
+    top$lanes$1$feed$abc$line_d$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -1851,8 +3141,8 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$feed$abc$line_a
-module top$lanes$1$feed$abc$line_a$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$line
+module top$lanes$1$feed$abc$line_d$line$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1868,8 +3158,8 @@ module top$lanes$1$feed$abc$line_a$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$one
-module top$lanes$1$feed$abc$line_a$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$line$one
+module top$lanes$1$feed$abc$line_d$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1885,8 +3175,8 @@ module top$lanes$1$feed$abc$line_a$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$ptr
-module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$line_d$line$ptr
+module top$lanes$1$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1909,8 +3199,8 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
           mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$1$feed$abc$line_a$ram
-module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$line$ram
+module top$lanes$1$feed$abc$line_d$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1926,107 +3216,8 @@ module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$rd_flipped
-module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_b$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$1$feed$abc$line_b$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$1$feed$abc$line_b$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_b
-module top$lanes$1$feed$abc$line_b$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$line$rd_flipped
+module top$lanes$1$feed$abc$line_d$line_last(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2042,8 +3233,8 @@ module top$lanes$1$feed$abc$line_b$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$one
-module top$lanes$1$feed$abc$line_b$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$line_last
+module top$lanes$1$feed$abc$line_d$out(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2059,398 +3250,7 @@ module top$lanes$1$feed$abc$line_b$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$ptr
-module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$feed$abc$line_b$ram
-module top$lanes$1$feed$abc$line_b$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_b$rd_flipped
-module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_c$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$1$feed$abc$line_c$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$1$feed$abc$line_c$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_c
-module top$lanes$1$feed$abc$line_c$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$one
-module top$lanes$1$feed$abc$line_c$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$ptr
-module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$feed$abc$line_c$ram
-module top$lanes$1$feed$abc$line_c$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$rd_flipped
-module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fbf;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_d$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$1$feed$abc$line_d$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$1$feed$abc$line_d$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_d
-module top$lanes$1$feed$abc$line_d$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_d$one
-module top$lanes$1$feed$abc$line_d$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_d$ptr
-module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[16319:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$1$feed$abc$line_d$ram
-module top$lanes$1$feed$abc$line_d$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$1$feed$abc$line_d$out
 module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -3032,6 +3832,896 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_a$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$2$feed$abc$line_a$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$2$feed$abc$line_a$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_a
+module top$lanes$2$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3fbd;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_a$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_a$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_a$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$2$feed$abc$line_a$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_a$line
+module top$lanes$2$feed$abc$line_a$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$line$one
+module top$lanes$2$feed$abc$line_a$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$line$ptr
+module top$lanes$2$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16317:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_a$line$ram
+module top$lanes$2$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$line$rd_flipped
+module top$lanes$2$feed$abc$line_a$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$line_last
+module top$lanes$2$feed$abc$line_a$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$out
+module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_b$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$2$feed$abc$line_b$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$2$feed$abc$line_b$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_b
+module top$lanes$2$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_b$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_b$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_b$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$2$feed$abc$line_b$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_b$line
+module top$lanes$2$feed$abc$line_b$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$line$one
+module top$lanes$2$feed$abc$line_b$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$line$ptr
+module top$lanes$2$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_b$line$ram
+module top$lanes$2$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$line$rd_flipped
+module top$lanes$2$feed$abc$line_b$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$line_last
+module top$lanes$2$feed$abc$line_b$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$out
+module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_c$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$2$feed$abc$line_c$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$2$feed$abc$line_c$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_c
+module top$lanes$2$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_c$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$2$feed$abc$line_c$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$2$feed$abc$line_c$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$2$feed$abc$line_c$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_c$line
+module top$lanes$2$feed$abc$line_c$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$line$one
+module top$lanes$2$feed$abc$line_c$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$line$ptr
+module top$lanes$2$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$2$feed$abc$line_c$line$ram
+module top$lanes$2$feed$abc$line_c$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$line$rd_flipped
+module top$lanes$2$feed$abc$line_c$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$line_last
+module top$lanes$2$feed$abc$line_c$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$out
+module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$2$feed$abc$line_d$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$2$feed$abc$line_d$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$2$feed$abc$line_d$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$2$feed$abc$line_d
+module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
@@ -3060,7 +4750,7 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$feed$abc$line_a$ram ram(
+    top$lanes$2$feed$abc$line_d$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3069,17 +4759,17 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$feed$abc$line_a$ptr ptr(
+    top$lanes$2$feed$abc$line_d$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$feed$abc$line_a$rd_flipped rd_flipped(
+    top$lanes$2$feed$abc$line_d$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$feed$abc$line_a$one one(
+    top$lanes$2$feed$abc$line_d$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -3120,8 +4810,8 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$feed$abc$line_a
-module top$lanes$2$feed$abc$line_a$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$line
+module top$lanes$2$feed$abc$line_d$line$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3137,8 +4827,8 @@ module top$lanes$2$feed$abc$line_a$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$one
-module top$lanes$2$feed$abc$line_a$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$line$one
+module top$lanes$2$feed$abc$line_d$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3154,8 +4844,8 @@ module top$lanes$2$feed$abc$line_a$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$ptr
-module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$line_d$line$ptr
+module top$lanes$2$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -3178,8 +4868,8 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
           mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$2$feed$abc$line_a$ram
-module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$line$ram
+module top$lanes$2$feed$abc$line_d$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3195,107 +4885,8 @@ module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$rd_flipped
-module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_b$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$2$feed$abc$line_b$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$2$feed$abc$line_b$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_b
-module top$lanes$2$feed$abc$line_b$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$line$rd_flipped
+module top$lanes$2$feed$abc$line_d$line_last(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3311,8 +4902,8 @@ module top$lanes$2$feed$abc$line_b$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$one
-module top$lanes$2$feed$abc$line_b$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$line_last
+module top$lanes$2$feed$abc$line_d$out(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3328,398 +4919,7 @@ module top$lanes$2$feed$abc$line_b$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$ptr
-module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$2$feed$abc$line_b$ram
-module top$lanes$2$feed$abc$line_b$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_b$rd_flipped
-module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_c$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$2$feed$abc$line_c$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$2$feed$abc$line_c$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_c
-module top$lanes$2$feed$abc$line_c$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$one
-module top$lanes$2$feed$abc$line_c$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$ptr
-module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$2$feed$abc$line_c$ram
-module top$lanes$2$feed$abc$line_c$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$rd_flipped
-module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fbf;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_d$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$2$feed$abc$line_d$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$2$feed$abc$line_d$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_d
-module top$lanes$2$feed$abc$line_d$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_d$one
-module top$lanes$2$feed$abc$line_d$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_d$ptr
-module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[16319:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$2$feed$abc$line_d$ram
-module top$lanes$2$feed$abc$line_d$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$2$feed$abc$line_d$out
 module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -4301,6 +5501,896 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_a$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$3$feed$abc$line_a$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$3$feed$abc$line_a$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_a
+module top$lanes$3$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3fbd;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_a$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_a$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_a$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$3$feed$abc$line_a$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_a$line
+module top$lanes$3$feed$abc$line_a$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$line$one
+module top$lanes$3$feed$abc$line_a$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$line$ptr
+module top$lanes$3$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [7:0] mem[16317:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[13:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_a$line$ram
+module top$lanes$3$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$line$rd_flipped
+module top$lanes$3$feed$abc$line_a$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$line_last
+module top$lanes$3$feed$abc$line_a$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$out
+module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_b$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$3$feed$abc$line_b$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$3$feed$abc$line_b$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_b
+module top$lanes$3$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_b$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_b$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_b$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$3$feed$abc$line_b$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_b$line
+module top$lanes$3$feed$abc$line_b$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$line$one
+module top$lanes$3$feed$abc$line_b$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$line$ptr
+module top$lanes$3$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_b$line$ram
+module top$lanes$3$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$line$rd_flipped
+module top$lanes$3$feed$abc$line_b$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$line_last
+module top$lanes$3$feed$abc$line_b$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$out
+module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_c$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$3$feed$abc$line_c$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$3$feed$abc$line_c$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_c
+module top$lanes$3$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h3e;
+    localparam  single = 1'b0;
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [15:0] one$d;
+    wire  [15:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_c$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$lanes$3$feed$abc$line_c$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$lanes$3$feed$abc$line_c$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$lanes$3$feed$abc$line_c$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [15:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_c$line
+module top$lanes$3$feed$abc$line_c$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$line$one
+module top$lanes$3$feed$abc$line_c$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$line$ptr
+module top$lanes$3$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [7:0] mem[62:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= {write_data[7:0]};
+       end
+    end
+endmodule // top$lanes$3$feed$abc$line_c$line$ram
+module top$lanes$3$feed$abc$line_c$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$line$rd_flipped
+module top$lanes$3$feed$abc$line_c$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$line_last
+module top$lanes$3$feed$abc$line_c$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$out
+module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 16'hff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [15:0] line$data_in;
+    reg  line$write_enable;
+    wire  [15:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [15:0] out$d;
+    wire  [15:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$lanes$3$feed$abc$line_d$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$lanes$3$feed$abc$line_d$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$lanes$3$feed$abc$line_d$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$lanes$3$feed$abc$line_d
+module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] data_in;
+    input wire  write_enable;
+    output reg  [15:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  single = 1'b0;
@@ -4329,7 +6419,7 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$feed$abc$line_a$ram ram(
+    top$lanes$3$feed$abc$line_d$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4338,17 +6428,17 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$feed$abc$line_a$ptr ptr(
+    top$lanes$3$feed$abc$line_d$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$feed$abc$line_a$rd_flipped rd_flipped(
+    top$lanes$3$feed$abc$line_d$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$feed$abc$line_a$one one(
+    top$lanes$3$feed$abc$line_d$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -4389,8 +6479,8 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$feed$abc$line_a
-module top$lanes$3$feed$abc$line_a$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$line
+module top$lanes$3$feed$abc$line_d$line$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4406,8 +6496,8 @@ module top$lanes$3$feed$abc$line_a$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$one
-module top$lanes$3$feed$abc$line_a$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$line$one
+module top$lanes$3$feed$abc$line_d$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4423,8 +6513,8 @@ module top$lanes$3$feed$abc$line_a$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$ptr
-module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$line_d$line$ptr
+module top$lanes$3$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4447,8 +6537,8 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
           mem[write_address[13:0]] <= {write_data[7:0]};
        end
     end
-endmodule // top$lanes$3$feed$abc$line_a$ram
-module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$line$ram
+module top$lanes$3$feed$abc$line_d$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4464,107 +6554,8 @@ module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$rd_flipped
-module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_b$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$3$feed$abc$line_b$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$3$feed$abc$line_b$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_b
-module top$lanes$3$feed$abc$line_b$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$line$rd_flipped
+module top$lanes$3$feed$abc$line_d$line_last(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4580,8 +6571,8 @@ module top$lanes$3$feed$abc$line_b$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$one
-module top$lanes$3$feed$abc$line_b$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$line_last
+module top$lanes$3$feed$abc$line_d$out(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4597,398 +6588,7 @@ module top$lanes$3$feed$abc$line_b$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$ptr
-module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$3$feed$abc$line_b$ram
-module top$lanes$3$feed$abc$line_b$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_b$rd_flipped
-module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3f;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_c$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$3$feed$abc$line_c$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$3$feed$abc$line_c$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_c
-module top$lanes$3$feed$abc$line_c$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$one
-module top$lanes$3$feed$abc$line_c$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$ptr
-module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[63:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$3$feed$abc$line_c$ram
-module top$lanes$3$feed$abc$line_c$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$rd_flipped
-module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fbf;
-    localparam  single = 1'b0;
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [15:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [15:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [15:0] one$d;
-    wire  [15:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_d$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    top$lanes$3$feed$abc$line_d$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$lanes$3$feed$abc$line_d$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
-    );
-    
-    // Update code
-    reg  [15:0] data_out_pass;
-    always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
-        end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_d
-module top$lanes$3$feed$abc$line_d$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_d$one
-module top$lanes$3$feed$abc$line_d$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_d$ptr
-module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[16319:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$lanes$3$feed$abc$line_d$ram
-module top$lanes$3$feed$abc$line_d$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$3$feed$abc$line_d$out
 module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
