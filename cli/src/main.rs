@@ -79,8 +79,34 @@ enum Command {
     Scenes,
 }
 
+/// rust-hdl builds a pipeline's signals on the stack of the thread that
+/// builds it: a perspective pipeline (the divider's stages in every lane of
+/// both CFBs) takes more than the main thread's 8 MiB. The work runs on a
+/// thread with room for it, and rust-hdl's simulation threads get as much
+/// as the tests give them (`.cargo/config.toml`) unless the environment
+/// says otherwise.
+const STACK_BYTES: usize = 64 << 20;
+const MIN_STACK_BYTES: &str = "33554432";
+
 fn main() {
+    if std::env::var_os("RUST_MIN_STACK").is_none() {
+        std::env::set_var("RUST_MIN_STACK", MIN_STACK_BYTES);
+    }
+    // Signals are blocked here, before any thread starts, so that every
+    // thread inherits the mask and only the watcher takes them.
     stop::watch();
+    let worker = std::thread::Builder::new()
+        .name("cube".into())
+        .stack_size(STACK_BYTES)
+        .spawn(run)
+        .expect("start the main thread");
+    // A panic has printed its message on the worker; exit as Rust does.
+    if worker.join().is_err() {
+        std::process::exit(101);
+    }
+}
+
+fn run() {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         // Help and version go to stdout as clap prints them.

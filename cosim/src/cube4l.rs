@@ -56,7 +56,9 @@ fn stage_file(name: &str) -> &'static str {
     let parts: Vec<&str> = name.split('$').collect();
     match parts.as_slice() {
         ["top"] => "top.v",
-        ["top", "cfb" | "late", "lanes", _, div, ..] if div.starts_with("div_") => "divider.v",
+        ["top", "cfb" | "late", "lanes", _, "div", ..] | ["top", "cfb" | "late", "lead", ..] => {
+            "divider.v"
+        }
         ["top", "cfb" | "late", ..] => "cfb.v",
         ["top", "lanes", _, "feed", "abc", ..] => "abc_gradient.v",
         ["top", "lanes", _, "shader", ..] => "shader.v",
@@ -105,11 +107,9 @@ lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'wri
 // The bilinear unit's four channels share one 32-bit datapath, which X-ray
 // needs for its sum in channel 0; channels 1-3 carry 16-bit values.
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
-// Perspective only. rust-hdl emits the logic of a module as one always block,
-// so Verilator sees the block, the divider it feeds and the block again as a
-// loop, though the divider inputs come from registers and the rust-hdl
-// logic-loop check passes. This only costs Verilator some speed.
-lint_off -rule UNOPTFLAT -file "*cfb.v" -match "*div_*"
+// The sight-ray divider's last stage leaves the remainders and the
+// denominator behind: the quotients are all it answers.
+lint_off -rule UNUSEDSIGNAL -file "*divider.v" -match "*Signal is not used: 'stages$16$*'*"
 // The shader's r is as wide as Cube-3's RPC leaves (32 bits); a Cube-4L lane
 // takes its low 16.
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'shader$r'*"
@@ -151,7 +151,7 @@ pub fn left_out(config: &PipelineConfig) -> Vec<LeftOut> {
     if !config.perspective {
         v.push(LeftOut {
             name: "sight_ray_divider",
-            instances: &["div_x", "div_y"],
+            instances: &["div", "lead"],
         });
     }
     v
@@ -493,10 +493,22 @@ impl Arch for Cube4l {
                 clocks: slice,
             });
         }
+        let lead = if c.perspective {
+            hdl::cube4l::counter_lead::LEAD as i64
+        } else {
+            0
+        };
+        if lead > 0 {
+            v.push(ClockTerm {
+                key: "divider_lead",
+                what: "sight-ray divider's lead",
+                clocks: lead,
+            });
+        }
         v.push(ClockTerm {
             key: "fill",
             what: "fill",
-            clocks: hdl::cube4l::config::fill_clocks(c.gradient()) as i64,
+            clocks: hdl::cube4l::config::fill_clocks(c) as i64 - lead,
         });
         v
     }
@@ -510,11 +522,7 @@ impl Arch for Cube4l {
     }
 
     fn projected_clocks(n: u64, config: &PipelineConfig) -> Option<u64> {
-        Some(hdl::cube4l::config::frame_clocks(
-            n,
-            config.p as u64,
-            config.gradient(),
-        ))
+        Some(hdl::cube4l::config::frame_clocks(n, config))
     }
 
     fn waves(part: &Part, top: &str) -> Vec<Wave> {

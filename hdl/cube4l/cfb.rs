@@ -3,10 +3,12 @@
 //! N_B and N_s, the pipeline-to-dataset transform for the sweep's major axis,
 //! the control bits SR, ER, BS, invalid and edge, the frame registers dx and
 //! dy, and the base-plane pixel address. Each beat it reads one voxel per
-//! pipeline and emits it with its control `ADDRESS_STAGES + 1` clocks after
-//! the counters issue it (the address pipeline: the skew and transform,
-//! the three stride products, their sum, each registered, then the block
-//! RAM's registered read), exactly as `golden_model::cube4l::cfb::CfbStream`.
+//! pipeline and emits it with its control `ADDRESS_STAGES + READ_STAGES`
+//! clocks after the counters issue it (the address pipeline: the skew and
+//! transform, the three stride products, their sum, each registered; then
+//! the block RAM's registered read and a register after it, so that the
+//! memory's clock-to-out reaches no logic), exactly as
+//! `golden_model::cube4l::cfb::CfbStream`.
 //!
 //! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
 //! `N_s`. Dataset voxel `(u, v, w)` is at address `u div P + v*b + w*b*n_v`
@@ -18,7 +20,7 @@
 //! For volumes beyond on-chip memory
 //! ([`PipelineConfig::external_memory`]), each lane presents its read
 //! address on `ext_addr` and takes the voxel from `ext_data` one clock
-//! later, as a synchronous external RAM answers.
+//! later, as a synchronous external RAM answers, into the same register.
 //!
 //! The view is the host's registers (`golden_model::cube4l::regs`): the
 //! dims, the slices streamed, the axes, the memory's address layout, the
@@ -30,6 +32,7 @@
 
 use super::cfb_lane::CfbLane;
 use super::config::PipelineConfig;
+use super::counter_lead::CounterLead;
 use golden_model::cube4l::plan::Face;
 use rust_hdl::prelude::*;
 
@@ -58,8 +61,8 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<A>>,
     pub load_data: Signal<In, Bits<16>>,
-    /// The beat on the lanes is valid (`ADDRESS_STAGES + 1` clocks after
-    /// it was issued).
+    /// The beat on the lanes is valid (`ADDRESS_STAGES + READ_STAGES`
+    /// clocks after it was issued).
     pub valid: Signal<Out, Bit>,
     pub n_s: Signal<Out, Bits<16>>,
     pub n_beam: Signal<Out, Bits<16>>,
@@ -96,9 +99,19 @@ pub struct Cfb<const P: usize, const A: usize> {
     ns_c: DFF<Bits<16>>,
     nbeam_c: DFF<Bits<16>>,
     nb_c: DFF<Bits<16>>,
+    /// Perspective views: the counters' lead before the address pipeline,
+    /// while each lane's divider takes them as issued.
+    lead: CounterLead,
+    perspective: Constant<Bit>,
+    /// The counters as the address pipeline takes them: as issued, or
+    /// (perspective) from the lead.
+    e_run: Signal<Local, Bit>,
+    e_ns: Signal<Local, Bits<16>>,
+    e_nbeam: Signal<Local, Bits<16>>,
+    e_nb: Signal<Local, Bits<16>>,
     /// The counters and `running` through the lanes' address pipeline
     /// (`ADDRESS_STAGES`, three clocks: `_d1` to `_d3`), then the RAM
-    /// read's clock (`_q`).
+    /// read's clock (`_d4`) and its output register's (`_q`).
     run_d1: DFF<Bit>,
     run_d2: DFF<Bit>,
     run_d3: DFF<Bit>,
@@ -111,6 +124,10 @@ pub struct Cfb<const P: usize, const A: usize> {
     nb_d1: DFF<Bits<16>>,
     nb_d2: DFF<Bits<16>>,
     nb_d3: DFF<Bits<16>>,
+    run_d4: DFF<Bit>,
+    ns_d4: DFF<Bits<16>>,
+    nbeam_d4: DFF<Bits<16>>,
+    nb_d4: DFF<Bits<16>>,
     valid_q: DFF<Bit>,
     ns_q: DFF<Bits<16>>,
     nbeam_q: DFF<Bits<16>>,
@@ -175,6 +192,12 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             ns_c: Default::default(),
             nbeam_c: Default::default(),
             nb_c: Default::default(),
+            lead: CounterLead::new(c.perspective),
+            perspective: Constant::new(c.perspective),
+            e_run: Default::default(),
+            e_ns: Default::default(),
+            e_nbeam: Default::default(),
+            e_nb: Default::default(),
             run_d1: Default::default(),
             run_d2: Default::default(),
             run_d3: Default::default(),
@@ -187,6 +210,10 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             nb_d1: Default::default(),
             nb_d2: Default::default(),
             nb_d3: Default::default(),
+            run_d4: Default::default(),
+            ns_d4: Default::default(),
+            nbeam_d4: Default::default(),
+            nb_d4: Default::default(),
             valid_q: Default::default(),
             ns_q: Default::default(),
             nbeam_q: Default::default(),
@@ -204,12 +231,29 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q, run_d1,
-            run_d2, run_d3, ns_d1, ns_d2, ns_d3, nbeam_d1, nbeam_d2, nbeam_d3, nb_d1, nb_d2, nb_d3
+            run_d2, run_d3, run_d4, ns_d1, ns_d2, ns_d3, ns_d4, nbeam_d1, nbeam_d2, nbeam_d3,
+            nbeam_d4, nb_d1, nb_d2, nb_d3, nb_d4
         );
-        self.run_d1.d.next = self.running.q.val();
-        self.ns_d1.d.next = self.ns_c.q.val();
-        self.nbeam_d1.d.next = self.nbeam_c.q.val();
-        self.nb_d1.d.next = self.nb_c.q.val();
+        self.lead.clock.next = self.clock.val();
+        self.lead.reset.next = self.reset.val();
+        self.lead.running.next = self.running.q.val();
+        self.lead.n_s.next = self.ns_c.q.val();
+        self.lead.n_beam.next = self.nbeam_c.q.val();
+        self.lead.n_b.next = self.nb_c.q.val();
+        self.e_run.next = self.running.q.val();
+        self.e_ns.next = self.ns_c.q.val();
+        self.e_nbeam.next = self.nbeam_c.q.val();
+        self.e_nb.next = self.nb_c.q.val();
+        if self.perspective.val() {
+            self.e_run.next = self.lead.running_out.val();
+            self.e_ns.next = self.lead.n_s_out.val();
+            self.e_nbeam.next = self.lead.n_beam_out.val();
+            self.e_nb.next = self.lead.n_b_out.val();
+        }
+        self.run_d1.d.next = self.e_run.val();
+        self.ns_d1.d.next = self.e_ns.val();
+        self.nbeam_d1.d.next = self.e_nbeam.val();
+        self.nb_d1.d.next = self.e_nb.val();
         self.run_d2.d.next = self.run_d1.q.val();
         self.ns_d2.d.next = self.ns_d1.q.val();
         self.nbeam_d2.d.next = self.nbeam_d1.q.val();
@@ -218,6 +262,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         self.ns_d3.d.next = self.ns_d2.q.val();
         self.nbeam_d3.d.next = self.nbeam_d2.q.val();
         self.nb_d3.d.next = self.nb_d2.q.val();
+        self.run_d4.d.next = self.run_d3.q.val();
+        self.ns_d4.d.next = self.ns_d3.q.val();
+        self.nbeam_d4.d.next = self.nbeam_d3.q.val();
+        self.nb_d4.d.next = self.nb_d3.q.val();
         // The slices streamed, the last beam, the last partial beam.
         self.z0.next = self.slices.val().get_bits::<16>(32);
         self.z1.next = self.slices.val().get_bits::<16>(48);
@@ -234,12 +282,15 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.lanes[k].eye_x.next = self.eye_x.val();
             self.lanes[k].eye_y.next = self.eye_y.val();
             self.lanes[k].eye_z.next = self.eye_z.val();
-            self.lanes[k].a_n_s.next = self.ns_c.q.val();
-            self.lanes[k].a_n_beam.next = self.nbeam_c.q.val();
-            self.lanes[k].a_n_b.next = self.nb_c.q.val();
-            self.lanes[k].n_s.next = self.ns_d3.q.val();
-            self.lanes[k].n_beam.next = self.nbeam_d3.q.val();
-            self.lanes[k].n_b.next = self.nb_d3.q.val();
+            self.lanes[k].d_n_s.next = self.ns_c.q.val();
+            self.lanes[k].d_n_beam.next = self.nbeam_c.q.val();
+            self.lanes[k].d_n_b.next = self.nb_c.q.val();
+            self.lanes[k].a_n_s.next = self.e_ns.val();
+            self.lanes[k].a_n_beam.next = self.e_nbeam.val();
+            self.lanes[k].a_n_b.next = self.e_nb.val();
+            self.lanes[k].n_s.next = self.ns_d4.q.val();
+            self.lanes[k].n_beam.next = self.nbeam_d4.q.val();
+            self.lanes[k].n_b.next = self.nb_d4.q.val();
             self.lanes[k].load_enable.next = self.load_enable.val();
             self.lanes[k].load_module.next = self.load_module.val();
             self.lanes[k].load_address.next = self.load_address.val();
@@ -292,11 +343,14 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         if self.reset.val() {
             self.running.d.next = false;
         }
-        self.valid_q.d.next = self.run_d3.q.val();
-        self.ns_q.d.next = self.ns_d3.q.val();
-        self.nbeam_q.d.next = self.nbeam_d3.q.val();
-        self.nb_q.d.next = self.nb_d3.q.val();
+        self.valid_q.d.next = self.run_d4.q.val();
+        self.ns_q.d.next = self.ns_d4.q.val();
+        self.nbeam_q.d.next = self.nbeam_d4.q.val();
+        self.nb_q.d.next = self.nb_d4.q.val();
         self.busy.next = self.running.q.val();
+        if self.perspective.val() {
+            self.busy.next = self.lead.busy.val();
+        }
         self.valid.next = self.valid_q.q.val();
         self.n_s.next = self.ns_q.q.val();
         self.n_beam.next = self.nbeam_q.q.val();

@@ -27,8 +27,13 @@ pub struct CfbLane<const A: usize> {
     pub eye_y: Signal<In, Bits<64>>,
     pub eye_z: Signal<In, Bits<64>>,
     /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam)
-    /// as issued, for the address, and `ADDRESS_STAGES` clocks later, for
-    /// the control computed beside the memory read.
+    /// as issued, for the perspective divider; for the address (the same,
+    /// or `counter_lead::LEAD` clocks later with a divider); and
+    /// `ADDRESS_STAGES + 1` clocks after the address's, for the control
+    /// computed beside the memory read's output register.
+    pub d_n_s: Signal<In, Bits<16>>,
+    pub d_n_beam: Signal<In, Bits<16>>,
+    pub d_n_b: Signal<In, Bits<16>>,
     pub a_n_s: Signal<In, Bits<16>>,
     pub a_n_beam: Signal<In, Bits<16>>,
     pub a_n_b: Signal<In, Bits<16>>,
@@ -44,8 +49,8 @@ pub struct CfbLane<const A: usize> {
     /// clock later.
     pub ext_addr: Signal<Out, Bits<32>>,
     pub ext_data: Signal<In, Bits<16>>,
-    /// Outputs, one clock after the delayed counters (`ADDRESS_STAGES + 1`
-    /// after the issued ones).
+    /// Outputs, one clock after the delayed counters (`ADDRESS_STAGES +
+    /// READ_STAGES` after the issued ones).
     pub value: Signal<Out, Bits<16>>,
     pub x: Signal<Out, Bits<16>>,
     pub y: Signal<Out, Bits<16>>,
@@ -74,8 +79,6 @@ pub struct CfbLane<const A: usize> {
     p_shift: Constant<Bits<8>>,
     perspective: Constant<Bit>,
     external: Constant<Bit>,
-    frac: Constant<Bits<8>>,
-    one: Constant<Bits<32>>,
     // The registers' fields.
     nx: Signal<Local, Bits<16>>,
     nx_last: Signal<Local, Bits<16>>,
@@ -94,7 +97,7 @@ pub struct CfbLane<const A: usize> {
     dx_abs: Signal<Local, Bits<64>>,
     dy_abs: Signal<Local, Bits<64>>,
     /// The parallel view's increments, registered from `Dx` and `Dy`: they
-    /// hold for a frame, and the control reads them `ADDRESS_STAGES` clocks
+    /// hold for a frame, and the control reads them `ADDRESS_STAGES + 1` clocks
     /// after the start at the earliest. Sign (when nonzero), magnitude, and
     /// positive-and-nonzero.
     par_dxn: DFF<Bit>,
@@ -103,14 +106,8 @@ pub struct CfbLane<const A: usize> {
     par_dyn: DFF<Bit>,
     par_dym: DFF<Bits<32>>,
     par_dy_pos: DFF<Bit>,
-    div_x: Divider,
-    div_y: Divider,
-    sx: Signal<Local, Bits<64>>,
-    sy: Signal<Local, Bits<64>>,
-    sz: Signal<Local, Bits<64>>,
-    sx_mag: Signal<Local, Bits<64>>,
-    sy_mag: Signal<Local, Bits<64>>,
-    sz_mag: Signal<Local, Bits<64>>,
+    /// Perspective views: the sight-ray increments, from the issued counters.
+    div: Divider,
     dxn: Signal<Local, Bit>,
     dxm: Signal<Local, Bits<32>>,
     dyn_: Signal<Local, Bit>,
@@ -149,7 +146,10 @@ pub struct CfbLane<const A: usize> {
     y_q: DFF<Bits<16>>,
     z_q: DFF<Bits<16>>,
     addr_q: DFF<Bits<32>>,
+    addr_q2: DFF<Bits<32>>,
     pad_q: DFF<Bit>,
+    /// The memory's (or the external port's) word, registered.
+    value_q: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
     edge_q: DFF<Bit>,
     face_q: DFF<Bits<3>>,
@@ -173,6 +173,9 @@ impl<const A: usize> CfbLane<A> {
             eye_x: Default::default(),
             eye_y: Default::default(),
             eye_z: Default::default(),
+            d_n_s: Default::default(),
+            d_n_beam: Default::default(),
+            d_n_b: Default::default(),
             a_n_s: Default::default(),
             a_n_beam: Default::default(),
             a_n_b: Default::default(),
@@ -218,8 +221,6 @@ impl<const A: usize> CfbLane<A> {
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
             perspective: Constant::new(c.perspective),
             external: Constant::new(external),
-            frac: Constant::new((c.frac_bits as u64).to_bits()),
-            one: Constant::new((1u64 << c.frac_bits).to_bits()),
             nx: Default::default(),
             nx_last: Default::default(),
             ny_last: Default::default(),
@@ -241,14 +242,7 @@ impl<const A: usize> CfbLane<A> {
             par_dyn: Default::default(),
             par_dym: Default::default(),
             par_dy_pos: Default::default(),
-            div_x: Divider::new(c.perspective),
-            div_y: Divider::new(c.perspective),
-            sx: Default::default(),
-            sy: Default::default(),
-            sz: Default::default(),
-            sx_mag: Default::default(),
-            sy_mag: Default::default(),
-            sz_mag: Default::default(),
+            div: Divider::new(k, p, c.frac_bits, c.perspective),
             dxn: Default::default(),
             dxm: Default::default(),
             dyn_: Default::default(),
@@ -285,7 +279,9 @@ impl<const A: usize> CfbLane<A> {
             y_q: Default::default(),
             z_q: Default::default(),
             addr_q: Default::default(),
+            addr_q2: Default::default(),
             pad_q: Default::default(),
+            value_q: Default::default(),
             sr_q: Default::default(),
             edge_q: Default::default(),
             face_q: Default::default(),
@@ -308,9 +304,10 @@ impl<const A: usize> Logic for CfbLane<A> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, x_q, y_q, z_q, addr_q, pad_q, sr_q, edge_q, face_q, bx_q, by_q, dxn_q,
-            dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v, m_w_lo, m_w_hi,
-            m_pad, addr, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym, par_dy_pos
+            self, clock, x_q, y_q, z_q, addr_q, addr_q2, pad_q, value_q, sr_q, edge_q, face_q,
+            bx_q, by_q, dxn_q, dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u,
+            m_v, m_w_lo, m_w_hi, m_pad, addr, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym,
+            par_dy_pos
         );
         // The view registers' fields.
         self.nx.next = self.dims.val().get_bits::<16>(0);
@@ -352,7 +349,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.memory.write_address.next = self.load_address.val();
         self.memory.write_data.next = self.load_data.val();
         // The address, in four clocks (`ADDRESS_STAGES` and the RAM's
-        // registered read). 1: skew, the lane's x within the partial beam,
+        // registered read; its output register makes five). 1: skew, the lane's x within the partial beam,
         // and pipeline to dataset coordinates.
         self.a_xc.next = (self.a_n_b.val() << self.p_shift.val())
             | ((self.lane.val() - self.a_n_beam.val() - self.a_n_s.val()) & self.p_mask.val());
@@ -398,26 +395,13 @@ impl<const A: usize> Logic for CfbLane<A> {
             | ((self.lane.val() - self.n_beam.val() - self.n_s.val()) & self.p_mask.val());
         self.is_pad.next = self.xc.val() >= self.nx.val();
         // Sight-ray increments: frame registers, or the per-voxel divider.
-        self.sx.next = (bit_cast::<64, 16>(self.xc.val()) << self.frac.val()) + self.eye_x.val();
-        self.sy.next =
-            (bit_cast::<64, 16>(self.n_beam.val()) << self.frac.val()) + self.eye_y.val();
-        self.sz.next = (bit_cast::<64, 16>(self.n_s.val()) << self.frac.val()) + self.eye_z.val();
-        self.sx_mag.next = self.sx.val();
-        if self.sx.val().get_bit(63) {
-            self.sx_mag.next = 0 - self.sx.val();
-        }
-        self.sy_mag.next = self.sy.val();
-        if self.sy.val().get_bit(63) {
-            self.sy_mag.next = 0 - self.sy.val();
-        }
-        self.sz_mag.next = self.sz.val();
-        if self.sz.val().get_bit(63) {
-            self.sz_mag.next = 0 - self.sz.val();
-        }
-        self.div_x.num.next = (self.sx_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
-        self.div_x.den.next = self.sz_mag.val();
-        self.div_y.num.next = (self.sy_mag.val() << self.frac.val()) + (self.sz_mag.val() >> 1);
-        self.div_y.den.next = self.sz_mag.val();
+        self.div.clock.next = self.clock.val();
+        self.div.n_s.next = self.d_n_s.val();
+        self.div.n_beam.next = self.d_n_beam.val();
+        self.div.n_b.next = self.d_n_b.val();
+        self.div.eye_x.next = self.eye_x.val();
+        self.div.eye_y.next = self.eye_y.val();
+        self.div.eye_z.next = self.eye_z.val();
         self.dxn.next = self.par_dxn.q.val();
         self.dxm.next = self.par_dxm.q.val();
         self.dyn_.next = self.par_dyn.q.val();
@@ -428,32 +412,11 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.dy_neg_nz.next = self.par_dyn.q.val();
         self.inval.next = false;
         if self.perspective.val() {
-            self.dxn.next = self.sx.val().get_bit(63) ^ self.sz.val().get_bit(63);
-            self.dyn_.next = self.sy.val().get_bit(63) ^ self.sz.val().get_bit(63);
-            self.dxm.next = self.div_x.q.val();
-            self.dym.next = self.div_y.q.val();
-            self.inval.next = (self.sz_mag.val() == 0)
-                | self.div_x.overflow.val()
-                | self.div_y.overflow.val()
-                | (self.div_x.q.val() > self.one.val())
-                | (self.div_y.q.val() > self.one.val());
-            if self.inval.val() {
-                // Saturate to the 3x3 region: sign(S_x) * sign(S_z).
-                self.dxm.next = 0.into();
-                if (self.sx_mag.val() != 0) & (self.sz_mag.val() != 0) {
-                    self.dxm.next = self.one.val();
-                }
-                self.dym.next = 0.into();
-                if (self.sy_mag.val() != 0) & (self.sz_mag.val() != 0) {
-                    self.dym.next = self.one.val();
-                }
-            }
-            if self.dxm.val() == 0 {
-                self.dxn.next = false;
-            }
-            if self.dym.val() == 0 {
-                self.dyn_.next = false;
-            }
+            self.dxn.next = self.div.dx_neg.val();
+            self.dyn_.next = self.div.dy_neg.val();
+            self.dxm.next = self.div.dx_mag.val();
+            self.dym.next = self.div.dy_mag.val();
+            self.inval.next = self.div.invalid.val();
             self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
             self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
             self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
@@ -499,6 +462,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.y_q.d.next = self.n_beam.val();
         self.z_q.d.next = self.n_s.val();
         self.addr_q.d.next = self.addr.q.val();
+        self.addr_q2.d.next = self.addr_q.q.val();
         self.pad_q.d.next = self.is_pad.val();
         self.sr_q.d.next = self.n_s.val() == self.z0.val();
         self.edge_q.d.next = self.is_pad.val()
@@ -519,17 +483,18 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.halo_q.d.next =
             (self.n_s.val() + 1 <= self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.
-        self.value.next = self.memory.read_data.val();
+        self.value_q.d.next = self.memory.read_data.val();
         if self.external.val() {
-            self.value.next = self.ext_data.val();
+            self.value_q.d.next = self.ext_data.val();
         }
+        self.value.next = self.value_q.q.val();
         if self.pad_q.q.val() {
             self.value.next = 0.into();
         }
         self.x.next = self.x_q.q.val();
         self.y.next = self.y_q.q.val();
         self.z.next = self.z_q.q.val();
-        self.address.next = self.addr_q.q.val();
+        self.address.next = self.addr_q2.q.val();
         self.pad.next = self.pad_q.q.val();
         self.sr.next = self.sr_q.q.val();
         self.er.next = self.face_q.q.val() != 0;

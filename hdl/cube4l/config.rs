@@ -341,25 +341,37 @@ const _: () = assert!(shader::LATENCY > bilinear::LATENCY);
 /// skew and pipeline-to-dataset transform, the stride products, their sum.
 pub const ADDRESS_STAGES: usize = 3;
 
+/// Clocks from the CFB's registered address to its voxel on the lanes: the
+/// block RAM's registered read and the register after it.
+pub const READ_STAGES: usize = 2;
+
 /// Clocks of a sweep beyond one beat per clock: the start register, the
-/// CFB's address stages, the block-RAM read, the shader's input register,
-/// the gather's delay, the bilinear unit's latency and the compositor's
-/// first stage (its last register ends the last beat's own clock), and
-/// with a gradient unit one more (its output register).
-pub fn fill_clocks(gradient: bool) -> u64 {
-    3 + ADDRESS_STAGES as u64
+/// CFB's address stages, the block-RAM read and its output register, the
+/// shader's input register, the gather's delay, the bilinear unit's latency
+/// and the compositor's first stage (its last register ends the last beat's
+/// own clock); with a gradient unit one more (its output register), and
+/// with the perspective divider the counters' lead before the address
+/// stages ([`super::counter_lead::LEAD`]).
+pub fn fill_clocks(c: &PipelineConfig) -> u64 {
+    2 + ADDRESS_STAGES as u64
+        + READ_STAGES as u64
         + GATHER_DELAY as u64
         + bilinear::LATENCY as u64
         + (compositor::LATENCY - 1) as u64
-        + gradient as u64
+        + c.gradient() as u64
+        + if c.perspective {
+            super::counter_lead::LEAD as u64
+        } else {
+            0
+        }
 }
 
-/// Clocks for one frame of an n³ volume at `p` pipelines: one voxel per
-/// pipeline per clock over n slices of n beams of ceil(n/p) partial beams,
-/// plus one slice for the gradient unit and the pipeline's fill.
-pub fn frame_clocks(n: u64, p: u64, gradient: bool) -> u64 {
-    let slice = n * n.div_ceil(p);
-    n * slice + if gradient { slice } else { 0 } + fill_clocks(gradient)
+/// Clocks for one frame of an n³ volume on `c`: one voxel per pipeline per
+/// clock over n slices of n beams of ceil(n/p) partial beams, plus one
+/// slice for the gradient unit and the pipeline's fill.
+pub fn frame_clocks(n: u64, c: &PipelineConfig) -> u64 {
+    let slice = n * n.div_ceil(c.p as u64);
+    n * slice + if c.gradient() { slice } else { 0 } + fill_clocks(c)
 }
 
 /// The taps' `(e_x, e_y)` offsets, in the order of the lane's `t0..t8`.

@@ -2,7 +2,8 @@
 //! per pipeline per clock.
 //!
 //! The [`cfb::Cfb`] (skewed memory, address generator, control bits, with
-//! each lane's [`cfb_lane::CfbLane`] and the perspective [`divider`]) feeds
+//! each lane's [`cfb_lane::CfbLane`] and, for perspective views, its
+//! [`divider`] of [`div_stage`]s and the [`counter_lead`]) feeds
 //! `P` pipelines ([`pipe_lane::PipeLane`]), joined by nearest-neighbour
 //! links in [`pipeline::Pipeline`]. A lane holds the input selection
 //! ([`lane_feed`], with the [`abc_gradient`] unit), the shader
@@ -21,6 +22,8 @@ pub mod cfb_lane;
 pub mod compositor;
 pub mod config;
 pub mod control_delay;
+pub mod counter_lead;
+pub mod div_stage;
 pub mod divider;
 pub mod lane_feed;
 pub mod pipe_lane;

@@ -229,7 +229,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             late_wait: Default::default(),
             gradient: Constant::new(config.gradient()),
             flush: Default::default(),
-            flush_clocks: Constant::new(super::config::fill_clocks(true).to_bits()),
+            flush_clocks: Constant::new(super::config::fill_clocks(config).to_bits()),
             quiet: Default::default(),
         }
     }

@@ -11,7 +11,8 @@ use golden_model::cube4l::regs::ViewRegs;
 use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::{
     cfb::{face_code, Cfb},
-    config::ADDRESS_STAGES,
+    config::{ADDRESS_STAGES, READ_STAGES},
+    counter_lead::LEAD,
     PipelineConfig,
 };
 use rust_hdl::prelude::*;
@@ -94,6 +95,7 @@ fn run_sweep_memory<const P: usize>(
     );
     let words = ViewRegs::new(sweep, vol.dims, P, false, scene::Mode::Composite).words();
     let mut uut = Cfb::<P, A>::new(&config, external);
+    let perspective = config.perspective;
     uut.connect_all();
     let mut sim = Simulation::new();
     sim.add_clock(5, |x: &mut Box<Cfb<P, A>>| x.clock.next = !x.clock.val());
@@ -189,10 +191,12 @@ fn run_sweep_memory<const P: usize>(
         // One beat per clock with no gaps: counted from the clock after the
         // start pulse is registered (the RAM read latency overlaps it), the
         // last beat is out after as many clocks as there are beats, and the
-        // address stages.
+        // address stages and the read's output register, and for
+        // perspective views the counters' lead before the address.
+        let lead = if perspective { LEAD as u64 } else { 0 };
         assert_eq!(
             cycles,
-            beats.len() as u64 + ADDRESS_STAGES as u64,
+            beats.len() as u64 + ADDRESS_STAGES as u64 + READ_STAGES as u64 - 1 + lead,
             "{label}: clocks per sweep"
         );
         sim.done(x)

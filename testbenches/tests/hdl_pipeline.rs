@@ -128,7 +128,7 @@ fn run_sweep<const P: usize>(
             x.reset.next = true;
             wait_clock_cycle!(sim, clock, x);
             x.reset.next = false;
-            for t in 0..3 * hdl::cube4l::config::fill_clocks(true) + 64 {
+            for t in 0..3 * hdl::cube4l::config::fill_clocks(&config) + 64 {
                 wait_clock_cycle!(sim, clock, x);
                 assert!(!x.busy.val(), "{label}: busy {t} clocks after the reset");
                 for k in 0..P {
@@ -321,15 +321,16 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 22 clocks of fill: the start register, the
-    // CFB's three address stages, the block-RAM read, the shader's input
+    // One beat per clock plus 23 clocks of fill: the start register, the
+    // CFB's three address stages, the block-RAM read and its output
+    // register, the shader's input
     // register, seven clocks of gather delay
     // (the shader's 15 stages less the bilinear unit's 7, less the input
     // register), the bilinear unit's seven stages and the compositor's first
     // two (its third register ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 22,
+        ideal + 23,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }

@@ -6,6 +6,7 @@ use cosim::arch::Arch;
 use cosim::cube4l::Cube4l;
 use cosim::synth::{parse_stat, synthesize, Target};
 use hdl::cube4l::config::frame_clocks;
+use hdl::cube4l::PipelineConfig;
 use testbenches::scene;
 
 /// An ECP5 tool that `scripts/setup` installs: on the PATH (`tool` then
@@ -107,6 +108,11 @@ fn stat_parsing_and_frame_clocks() {
     assert_eq!(types["LUT4"], 486);
     assert_eq!(types.len(), 2);
     // 256 slices of 256 beams of 64 partial beams, one gradient slice, fill.
-    assert_eq!(frame_clocks(256, 4, true), 256 * 256 * 64 + 256 * 64 + 23);
-    assert_eq!(frame_clocks(8, 1, false), 512 + 22);
+    let shaded = PipelineConfig::parse("composite_shaded_p4_256").unwrap();
+    assert_eq!(frame_clocks(256, &shaded), 256 * 256 * 64 + 256 * 64 + 24);
+    let mip = PipelineConfig::parse("mip_p1_8").unwrap();
+    assert_eq!(frame_clocks(8, &mip), 512 + 23);
+    // The perspective divider's 22 clocks lead the address by 18.
+    let perspective = PipelineConfig::parse("composite_perspective_p2_32").unwrap();
+    assert_eq!(frame_clocks(32, &perspective), 32 * 32 * 16 + 23 + 18);
 }

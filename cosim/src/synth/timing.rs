@@ -30,7 +30,7 @@ pub fn stage_of(cell: &str) -> &'static str {
     let parts: Vec<&str> = cell.split(['.', '$']).collect();
     let after_lane = |i: usize| parts.get(i).copied().unwrap_or("");
     match parts.first().copied().unwrap_or("") {
-        "cfb" | "late" if parts.iter().any(|p| p.starts_with("div_")) => "divider",
+        "cfb" | "late" if parts.iter().any(|p| *p == "div" || *p == "lead") => "divider",
         "cfb" => "cfb",
         "late" => "cfb (late control)",
         "lanes" => match after_lane(2) {
@@ -140,7 +140,8 @@ mod tests {
         assert_eq!(t.to.stage, "compositor");
         assert_eq!(t.cells.len(), 3);
         assert!((t.logic_ns - 3.5).abs() < 1e-9 && (t.routing_ns - 1.0).abs() < 1e-9);
-        assert_eq!(stage_of("late.lanes$1.div_x.q_FF"), "divider");
+        assert_eq!(stage_of("late.lanes$1.div.stages$3.rx_FF"), "divider");
+        assert_eq!(stage_of("cfb.lead.ns_q$17_FF"), "divider");
         assert_eq!(stage_of("lanes$3.feed.abc.line_a.ram"), "abc_gradient");
         assert_eq!(stage_of("uut.lanes$0.shader.r_q"), "shader");
         assert_eq!(stage_of("uut.view.r$0.q_SB_DFFE_Q_15_DFFLC"), "regs");

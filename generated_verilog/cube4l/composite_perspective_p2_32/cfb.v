@@ -65,6 +65,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     output reg  [15:0] dy_mag$0;
     output reg  [15:0] dy_mag$1;
     
+    // Constant declarations
+    localparam  perspective = 1'b1;
+    
     // Stub signals
     reg  lanes$0$clock;
     reg  [63:0] lanes$0$dims;
@@ -76,6 +79,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$0$eye_x;
     reg  [63:0] lanes$0$eye_y;
     reg  [63:0] lanes$0$eye_z;
+    reg  [15:0] lanes$0$d_n_s;
+    reg  [15:0] lanes$0$d_n_beam;
+    reg  [15:0] lanes$0$d_n_b;
     reg  [15:0] lanes$0$a_n_s;
     reg  [15:0] lanes$0$a_n_beam;
     reg  [15:0] lanes$0$a_n_b;
@@ -116,6 +122,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$1$eye_x;
     reg  [63:0] lanes$1$eye_y;
     reg  [63:0] lanes$1$eye_z;
+    reg  [15:0] lanes$1$d_n_s;
+    reg  [15:0] lanes$1$d_n_beam;
+    reg  [15:0] lanes$1$d_n_b;
     reg  [15:0] lanes$1$a_n_s;
     reg  [15:0] lanes$1$a_n_beam;
     reg  [15:0] lanes$1$a_n_b;
@@ -158,6 +167,17 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_c$d;
     wire  [15:0] nb_c$q;
     reg  nb_c$clock;
+    reg  lead$clock;
+    reg  lead$reset;
+    reg  lead$running;
+    reg  [15:0] lead$n_s;
+    reg  [15:0] lead$n_beam;
+    reg  [15:0] lead$n_b;
+    wire  lead$running_out;
+    wire  [15:0] lead$n_s_out;
+    wire  [15:0] lead$n_beam_out;
+    wire  [15:0] lead$n_b_out;
+    wire  lead$busy;
     reg  run_d1$d;
     wire  run_d1$q;
     reg  run_d1$clock;
@@ -194,6 +214,18 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_d3$d;
     wire  [15:0] nb_d3$q;
     reg  nb_d3$clock;
+    reg  run_d4$d;
+    wire  run_d4$q;
+    reg  run_d4$clock;
+    reg  [15:0] ns_d4$d;
+    wire  [15:0] ns_d4$q;
+    reg  ns_d4$clock;
+    reg  [15:0] nbeam_d4$d;
+    wire  [15:0] nbeam_d4$q;
+    reg  nbeam_d4$clock;
+    reg  [15:0] nb_d4$d;
+    wire  [15:0] nb_d4$q;
+    reg  nb_d4$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -208,6 +240,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  nb_q$clock;
     
     // Local signals
+    reg  e_run;
+    reg  [15:0] e_ns;
+    reg  [15:0] e_nbeam;
+    reg  [15:0] e_nb;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [15:0] ny_last;
@@ -225,6 +261,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$0$eye_x),
         .eye_y(lanes$0$eye_y),
         .eye_z(lanes$0$eye_z),
+        .d_n_s(lanes$0$d_n_s),
+        .d_n_beam(lanes$0$d_n_beam),
+        .d_n_b(lanes$0$d_n_b),
         .a_n_s(lanes$0$a_n_s),
         .a_n_beam(lanes$0$a_n_beam),
         .a_n_b(lanes$0$a_n_b),
@@ -267,6 +306,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$1$eye_x),
         .eye_y(lanes$1$eye_y),
         .eye_z(lanes$1$eye_z),
+        .d_n_s(lanes$1$d_n_s),
+        .d_n_beam(lanes$1$d_n_beam),
+        .d_n_b(lanes$1$d_n_b),
         .a_n_s(lanes$1$a_n_s),
         .a_n_beam(lanes$1$a_n_beam),
         .a_n_b(lanes$1$a_n_b),
@@ -317,6 +359,19 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .d(nb_c$d),
         .q(nb_c$q),
         .clock(nb_c$clock)
+    );
+    top$cfb$lead lead(
+        .clock(lead$clock),
+        .reset(lead$reset),
+        .running(lead$running),
+        .n_s(lead$n_s),
+        .n_beam(lead$n_beam),
+        .n_b(lead$n_b),
+        .running_out(lead$running_out),
+        .n_s_out(lead$n_s_out),
+        .n_beam_out(lead$n_beam_out),
+        .n_b_out(lead$n_b_out),
+        .busy(lead$busy)
     );
     top$cfb$run_d1 run_d1(
         .d(run_d1$d),
@@ -378,6 +433,26 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_d3$q),
         .clock(nb_d3$clock)
     );
+    top$cfb$run_d4 run_d4(
+        .d(run_d4$d),
+        .q(run_d4$q),
+        .clock(run_d4$clock)
+    );
+    top$cfb$ns_d4 ns_d4(
+        .d(ns_d4$d),
+        .q(ns_d4$q),
+        .clock(ns_d4$clock)
+    );
+    top$cfb$nbeam_d4 nbeam_d4(
+        .d(nbeam_d4$d),
+        .q(nbeam_d4$q),
+        .clock(nbeam_d4$clock)
+    );
+    top$cfb$nb_d4 nb_d4(
+        .d(nb_d4$d),
+        .q(nb_d4$q),
+        .clock(nb_d4$clock)
+    );
     top$cfb$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -400,6 +475,7 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     );
     
     // Update code
+    reg  busy_pass;
     always @(*) begin
         running$clock = clock;
         ns_c$clock = clock;
@@ -412,15 +488,19 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         run_d1$clock = clock;
         run_d2$clock = clock;
         run_d3$clock = clock;
+        run_d4$clock = clock;
         ns_d1$clock = clock;
         ns_d2$clock = clock;
         ns_d3$clock = clock;
+        ns_d4$clock = clock;
         nbeam_d1$clock = clock;
         nbeam_d2$clock = clock;
         nbeam_d3$clock = clock;
+        nbeam_d4$clock = clock;
         nb_d1$clock = clock;
         nb_d2$clock = clock;
         nb_d3$clock = clock;
+        nb_d4$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -432,19 +512,39 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         run_d1$d = run_d1$q;
         run_d2$d = run_d2$q;
         run_d3$d = run_d3$q;
+        run_d4$d = run_d4$q;
         ns_d1$d = ns_d1$q;
         ns_d2$d = ns_d2$q;
         ns_d3$d = ns_d3$q;
+        ns_d4$d = ns_d4$q;
         nbeam_d1$d = nbeam_d1$q;
         nbeam_d2$d = nbeam_d2$q;
         nbeam_d3$d = nbeam_d3$q;
+        nbeam_d4$d = nbeam_d4$q;
         nb_d1$d = nb_d1$q;
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
-        run_d1$d = running$q;
-        ns_d1$d = ns_c$q;
-        nbeam_d1$d = nbeam_c$q;
-        nb_d1$d = nb_c$q;
+        nb_d4$d = nb_d4$q;
+        lead$clock = clock;
+        lead$reset = reset;
+        lead$running = running$q;
+        lead$n_s = ns_c$q;
+        lead$n_beam = nbeam_c$q;
+        lead$n_b = nb_c$q;
+        e_run = running$q;
+        e_ns = ns_c$q;
+        e_nbeam = nbeam_c$q;
+        e_nb = nb_c$q;
+        if (perspective) begin
+            e_run = lead$running_out;
+            e_ns = lead$n_s_out;
+            e_nbeam = lead$n_beam_out;
+            e_nb = lead$n_b_out;
+        end
+        run_d1$d = e_run;
+        ns_d1$d = e_ns;
+        nbeam_d1$d = e_nbeam;
+        nb_d1$d = e_nb;
         run_d2$d = run_d1$q;
         ns_d2$d = ns_d1$q;
         nbeam_d2$d = nbeam_d1$q;
@@ -453,6 +553,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         ns_d3$d = ns_d2$q;
         nbeam_d3$d = nbeam_d2$q;
         nb_d3$d = nb_d2$q;
+        run_d4$d = run_d3$q;
+        ns_d4$d = ns_d3$q;
+        nbeam_d4$d = nbeam_d3$q;
+        nb_d4$d = nb_d3$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -467,12 +571,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$eye_x = eye_x;
         lanes$0$eye_y = eye_y;
         lanes$0$eye_z = eye_z;
-        lanes$0$a_n_s = ns_c$q;
-        lanes$0$a_n_beam = nbeam_c$q;
-        lanes$0$a_n_b = nb_c$q;
-        lanes$0$n_s = ns_d3$q;
-        lanes$0$n_beam = nbeam_d3$q;
-        lanes$0$n_b = nb_d3$q;
+        lanes$0$d_n_s = ns_c$q;
+        lanes$0$d_n_beam = nbeam_c$q;
+        lanes$0$d_n_b = nb_c$q;
+        lanes$0$a_n_s = e_ns;
+        lanes$0$a_n_beam = e_nbeam;
+        lanes$0$a_n_b = e_nb;
+        lanes$0$n_s = ns_d4$q;
+        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$n_b = nb_d4$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -507,12 +614,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$eye_x = eye_x;
         lanes$1$eye_y = eye_y;
         lanes$1$eye_z = eye_z;
-        lanes$1$a_n_s = ns_c$q;
-        lanes$1$a_n_beam = nbeam_c$q;
-        lanes$1$a_n_b = nb_c$q;
-        lanes$1$n_s = ns_d3$q;
-        lanes$1$n_beam = nbeam_d3$q;
-        lanes$1$n_b = nb_d3$q;
+        lanes$1$d_n_s = ns_c$q;
+        lanes$1$d_n_beam = nbeam_c$q;
+        lanes$1$d_n_b = nb_c$q;
+        lanes$1$a_n_s = e_ns;
+        lanes$1$a_n_beam = e_nbeam;
+        lanes$1$a_n_b = e_nb;
+        lanes$1$n_s = ns_d4$q;
+        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$n_b = nb_d4$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -566,20 +676,24 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d3$q;
-        ns_q$d = ns_d3$q;
-        nbeam_q$d = nbeam_d3$q;
-        nb_q$d = nb_d3$q;
-        busy = running$q;
+        valid_q$d = run_d4$q;
+        ns_q$d = ns_d4$q;
+        nbeam_q$d = nbeam_d4$q;
+        nb_q$d = nb_d4$q;
+        busy_pass = running$q;
+        if (perspective) begin
+            busy_pass = lead$busy;
+        end
         valid = valid_q$q;
         n_s = ns_q$q;
         n_beam = nbeam_q$q;
         n_b = nb_q$q;
         bs = nb_q$q == 'h0;
+        busy = busy_pass;
     end
     
 endmodule // top$cfb
-module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -592,6 +706,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -629,8 +746,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h1;
     localparam  perspective = 1'b1;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -658,14 +773,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg;
+    wire  [31:0] div$dx_mag;
+    wire  div$dy_neg;
+    wire  [31:0] div$dy_mag;
+    wire  div$invalid;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -726,9 +845,15 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -761,12 +886,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -824,17 +943,19 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(par_dy_pos$q),
         .clock(par_dy_pos$clock)
     );
-    top$cfb$lanes$0$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$0$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
+    top$cfb$lanes$0$div div(
+        .clock(div$clock),
+        .n_s(div$n_s),
+        .n_beam(div$n_beam),
+        .n_b(div$n_b),
+        .eye_x(div$eye_x),
+        .eye_y(div$eye_y),
+        .eye_z(div$eye_z),
+        .dx_neg(div$dx_neg),
+        .dx_mag(div$dx_mag),
+        .dy_neg(div$dy_neg),
+        .dy_mag(div$dy_mag),
+        .invalid(div$invalid)
     );
     top$cfb$lanes$0$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -936,10 +1057,20 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$0$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$0$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -974,7 +1105,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1006,7 +1139,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1102,25 +1237,13 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -1131,27 +1254,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -1199,6 +1306,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -1211,17 +1319,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -1341,6 +1450,23 @@ module top$cfb$lanes$0$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q
+module top$cfb$lanes$0$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q2
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1756,6 +1882,23 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$value_q
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -1807,7 +1950,7 @@ module top$cfb$lanes$0$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$z_q
-module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -1820,6 +1963,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -1857,8 +2003,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h1;
     localparam  perspective = 1'b1;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -1886,14 +2030,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q;
-    wire  div_x$overflow;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q;
-    wire  div_y$overflow;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg;
+    wire  [31:0] div$dx_mag;
+    wire  div$dy_neg;
+    wire  [31:0] div$dy_mag;
+    wire  div$invalid;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -1954,9 +2102,15 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1989,12 +2143,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -2052,17 +2200,19 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(par_dy_pos$q),
         .clock(par_dy_pos$clock)
     );
-    top$cfb$lanes$1$div_x div_x(
-        .num(div_x$num),
-        .den(div_x$den),
-        .q(div_x$q),
-        .overflow(div_x$overflow)
-    );
-    top$cfb$lanes$1$div_y div_y(
-        .num(div_y$num),
-        .den(div_y$den),
-        .q(div_y$q),
-        .overflow(div_y$overflow)
+    top$cfb$lanes$1$div div(
+        .clock(div$clock),
+        .n_s(div$n_s),
+        .n_beam(div$n_beam),
+        .n_b(div$n_b),
+        .eye_x(div$eye_x),
+        .eye_y(div$eye_y),
+        .eye_z(div$eye_z),
+        .dx_neg(div$dx_neg),
+        .dx_mag(div$dx_mag),
+        .dy_neg(div$dy_neg),
+        .dy_mag(div$dy_mag),
+        .invalid(div$invalid)
     );
     top$cfb$lanes$1$dxn_q dxn_q(
         .d(dxn_q$d),
@@ -2164,10 +2314,20 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$1$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$1$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -2202,7 +2362,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -2234,7 +2396,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -2330,25 +2494,13 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -2359,27 +2511,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -2427,6 +2563,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -2439,17 +2576,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -2569,6 +2707,23 @@ module top$cfb$lanes$1$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q
+module top$cfb$lanes$1$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q2
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -2984,6 +3139,23 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$value_q
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3103,6 +3275,23 @@ module top$cfb$nb_d3(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d3
+module top$cfb$nb_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d4
 module top$cfb$nb_q(d,q,clock);
     
     // Module arguments
@@ -3188,6 +3377,23 @@ module top$cfb$nbeam_d3(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d3
+module top$cfb$nbeam_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d4
 module top$cfb$nbeam_q(d,q,clock);
     
     // Module arguments
@@ -3273,6 +3479,23 @@ module top$cfb$ns_d3(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d3
+module top$cfb$ns_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d4
 module top$cfb$ns_q(d,q,clock);
     
     // Module arguments
@@ -3341,6 +3564,23 @@ module top$cfb$run_d3(d,q,clock);
     end
           
 endmodule // top$cfb$run_d3
+module top$cfb$run_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d4
 module top$cfb$running(d,q,clock);
     
     // Module arguments

@@ -105,6 +105,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     output reg  [15:0] dy_mag$2;
     output reg  [15:0] dy_mag$3;
     
+    // Constant declarations
+    localparam  perspective = 1'b0;
+    
     // Stub signals
     reg  lanes$0$clock;
     reg  [63:0] lanes$0$dims;
@@ -116,6 +119,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$0$eye_x;
     reg  [63:0] lanes$0$eye_y;
     reg  [63:0] lanes$0$eye_z;
+    reg  [15:0] lanes$0$d_n_s;
+    reg  [15:0] lanes$0$d_n_beam;
+    reg  [15:0] lanes$0$d_n_b;
     reg  [15:0] lanes$0$a_n_s;
     reg  [15:0] lanes$0$a_n_beam;
     reg  [15:0] lanes$0$a_n_b;
@@ -156,6 +162,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$1$eye_x;
     reg  [63:0] lanes$1$eye_y;
     reg  [63:0] lanes$1$eye_z;
+    reg  [15:0] lanes$1$d_n_s;
+    reg  [15:0] lanes$1$d_n_beam;
+    reg  [15:0] lanes$1$d_n_b;
     reg  [15:0] lanes$1$a_n_s;
     reg  [15:0] lanes$1$a_n_beam;
     reg  [15:0] lanes$1$a_n_b;
@@ -196,6 +205,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$2$eye_x;
     reg  [63:0] lanes$2$eye_y;
     reg  [63:0] lanes$2$eye_z;
+    reg  [15:0] lanes$2$d_n_s;
+    reg  [15:0] lanes$2$d_n_beam;
+    reg  [15:0] lanes$2$d_n_b;
     reg  [15:0] lanes$2$a_n_s;
     reg  [15:0] lanes$2$a_n_beam;
     reg  [15:0] lanes$2$a_n_b;
@@ -236,6 +248,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [63:0] lanes$3$eye_x;
     reg  [63:0] lanes$3$eye_y;
     reg  [63:0] lanes$3$eye_z;
+    reg  [15:0] lanes$3$d_n_s;
+    reg  [15:0] lanes$3$d_n_beam;
+    reg  [15:0] lanes$3$d_n_b;
     reg  [15:0] lanes$3$a_n_s;
     reg  [15:0] lanes$3$a_n_beam;
     reg  [15:0] lanes$3$a_n_b;
@@ -278,6 +293,17 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_c$d;
     wire  [15:0] nb_c$q;
     reg  nb_c$clock;
+    reg  lead$clock;
+    reg  lead$reset;
+    reg  lead$running;
+    reg  [15:0] lead$n_s;
+    reg  [15:0] lead$n_beam;
+    reg  [15:0] lead$n_b;
+    wire  lead$running_out = 'h0;
+    wire  [15:0] lead$n_s_out = 'h0;
+    wire  [15:0] lead$n_beam_out = 'h0;
+    wire  [15:0] lead$n_b_out = 'h0;
+    wire  lead$busy = 'h0;
     reg  run_d1$d;
     wire  run_d1$q;
     reg  run_d1$clock;
@@ -314,6 +340,18 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_d3$d;
     wire  [15:0] nb_d3$q;
     reg  nb_d3$clock;
+    reg  run_d4$d;
+    wire  run_d4$q;
+    reg  run_d4$clock;
+    reg  [15:0] ns_d4$d;
+    wire  [15:0] ns_d4$q;
+    reg  ns_d4$clock;
+    reg  [15:0] nbeam_d4$d;
+    wire  [15:0] nbeam_d4$q;
+    reg  nbeam_d4$clock;
+    reg  [15:0] nb_d4$d;
+    wire  [15:0] nb_d4$q;
+    reg  nb_d4$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -328,6 +366,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  nb_q$clock;
     
     // Local signals
+    reg  e_run;
+    reg  [15:0] e_ns;
+    reg  [15:0] e_nbeam;
+    reg  [15:0] e_nb;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [15:0] ny_last;
@@ -345,6 +387,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$0$eye_x),
         .eye_y(lanes$0$eye_y),
         .eye_z(lanes$0$eye_z),
+        .d_n_s(lanes$0$d_n_s),
+        .d_n_beam(lanes$0$d_n_beam),
+        .d_n_b(lanes$0$d_n_b),
         .a_n_s(lanes$0$a_n_s),
         .a_n_beam(lanes$0$a_n_beam),
         .a_n_b(lanes$0$a_n_b),
@@ -387,6 +432,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$1$eye_x),
         .eye_y(lanes$1$eye_y),
         .eye_z(lanes$1$eye_z),
+        .d_n_s(lanes$1$d_n_s),
+        .d_n_beam(lanes$1$d_n_beam),
+        .d_n_b(lanes$1$d_n_b),
         .a_n_s(lanes$1$a_n_s),
         .a_n_beam(lanes$1$a_n_beam),
         .a_n_b(lanes$1$a_n_b),
@@ -429,6 +477,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$2$eye_x),
         .eye_y(lanes$2$eye_y),
         .eye_z(lanes$2$eye_z),
+        .d_n_s(lanes$2$d_n_s),
+        .d_n_beam(lanes$2$d_n_beam),
+        .d_n_b(lanes$2$d_n_b),
         .a_n_s(lanes$2$a_n_s),
         .a_n_beam(lanes$2$a_n_beam),
         .a_n_b(lanes$2$a_n_b),
@@ -471,6 +522,9 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .eye_x(lanes$3$eye_x),
         .eye_y(lanes$3$eye_y),
         .eye_z(lanes$3$eye_z),
+        .d_n_s(lanes$3$d_n_s),
+        .d_n_beam(lanes$3$d_n_beam),
+        .d_n_b(lanes$3$d_n_b),
         .a_n_s(lanes$3$a_n_s),
         .a_n_beam(lanes$3$a_n_beam),
         .a_n_b(lanes$3$a_n_b),
@@ -582,6 +636,26 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_d3$q),
         .clock(nb_d3$clock)
     );
+    top$cfb$run_d4 run_d4(
+        .d(run_d4$d),
+        .q(run_d4$q),
+        .clock(run_d4$clock)
+    );
+    top$cfb$ns_d4 ns_d4(
+        .d(ns_d4$d),
+        .q(ns_d4$q),
+        .clock(ns_d4$clock)
+    );
+    top$cfb$nbeam_d4 nbeam_d4(
+        .d(nbeam_d4$d),
+        .q(nbeam_d4$q),
+        .clock(nbeam_d4$clock)
+    );
+    top$cfb$nb_d4 nb_d4(
+        .d(nb_d4$d),
+        .q(nb_d4$q),
+        .clock(nb_d4$clock)
+    );
     top$cfb$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -604,6 +678,7 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     );
     
     // Update code
+    reg  busy_pass;
     always @(*) begin
         running$clock = clock;
         ns_c$clock = clock;
@@ -616,15 +691,19 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         run_d1$clock = clock;
         run_d2$clock = clock;
         run_d3$clock = clock;
+        run_d4$clock = clock;
         ns_d1$clock = clock;
         ns_d2$clock = clock;
         ns_d3$clock = clock;
+        ns_d4$clock = clock;
         nbeam_d1$clock = clock;
         nbeam_d2$clock = clock;
         nbeam_d3$clock = clock;
+        nbeam_d4$clock = clock;
         nb_d1$clock = clock;
         nb_d2$clock = clock;
         nb_d3$clock = clock;
+        nb_d4$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -636,19 +715,39 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         run_d1$d = run_d1$q;
         run_d2$d = run_d2$q;
         run_d3$d = run_d3$q;
+        run_d4$d = run_d4$q;
         ns_d1$d = ns_d1$q;
         ns_d2$d = ns_d2$q;
         ns_d3$d = ns_d3$q;
+        ns_d4$d = ns_d4$q;
         nbeam_d1$d = nbeam_d1$q;
         nbeam_d2$d = nbeam_d2$q;
         nbeam_d3$d = nbeam_d3$q;
+        nbeam_d4$d = nbeam_d4$q;
         nb_d1$d = nb_d1$q;
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
-        run_d1$d = running$q;
-        ns_d1$d = ns_c$q;
-        nbeam_d1$d = nbeam_c$q;
-        nb_d1$d = nb_c$q;
+        nb_d4$d = nb_d4$q;
+        lead$clock = clock;
+        lead$reset = reset;
+        lead$running = running$q;
+        lead$n_s = ns_c$q;
+        lead$n_beam = nbeam_c$q;
+        lead$n_b = nb_c$q;
+        e_run = running$q;
+        e_ns = ns_c$q;
+        e_nbeam = nbeam_c$q;
+        e_nb = nb_c$q;
+        if (perspective) begin
+            e_run = lead$running_out;
+            e_ns = lead$n_s_out;
+            e_nbeam = lead$n_beam_out;
+            e_nb = lead$n_b_out;
+        end
+        run_d1$d = e_run;
+        ns_d1$d = e_ns;
+        nbeam_d1$d = e_nbeam;
+        nb_d1$d = e_nb;
         run_d2$d = run_d1$q;
         ns_d2$d = ns_d1$q;
         nbeam_d2$d = nbeam_d1$q;
@@ -657,6 +756,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         ns_d3$d = ns_d2$q;
         nbeam_d3$d = nbeam_d2$q;
         nb_d3$d = nb_d2$q;
+        run_d4$d = run_d3$q;
+        ns_d4$d = ns_d3$q;
+        nbeam_d4$d = nbeam_d3$q;
+        nb_d4$d = nb_d3$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_last = dims[('h10)+:(16)] - 'h1;
@@ -671,12 +774,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$eye_x = eye_x;
         lanes$0$eye_y = eye_y;
         lanes$0$eye_z = eye_z;
-        lanes$0$a_n_s = ns_c$q;
-        lanes$0$a_n_beam = nbeam_c$q;
-        lanes$0$a_n_b = nb_c$q;
-        lanes$0$n_s = ns_d3$q;
-        lanes$0$n_beam = nbeam_d3$q;
-        lanes$0$n_b = nb_d3$q;
+        lanes$0$d_n_s = ns_c$q;
+        lanes$0$d_n_beam = nbeam_c$q;
+        lanes$0$d_n_b = nb_c$q;
+        lanes$0$a_n_s = e_ns;
+        lanes$0$a_n_beam = e_nbeam;
+        lanes$0$a_n_b = e_nb;
+        lanes$0$n_s = ns_d4$q;
+        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$n_b = nb_d4$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -711,12 +817,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$eye_x = eye_x;
         lanes$1$eye_y = eye_y;
         lanes$1$eye_z = eye_z;
-        lanes$1$a_n_s = ns_c$q;
-        lanes$1$a_n_beam = nbeam_c$q;
-        lanes$1$a_n_b = nb_c$q;
-        lanes$1$n_s = ns_d3$q;
-        lanes$1$n_beam = nbeam_d3$q;
-        lanes$1$n_b = nb_d3$q;
+        lanes$1$d_n_s = ns_c$q;
+        lanes$1$d_n_beam = nbeam_c$q;
+        lanes$1$d_n_b = nb_c$q;
+        lanes$1$a_n_s = e_ns;
+        lanes$1$a_n_beam = e_nbeam;
+        lanes$1$a_n_b = e_nb;
+        lanes$1$n_s = ns_d4$q;
+        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$n_b = nb_d4$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -751,12 +860,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$2$eye_x = eye_x;
         lanes$2$eye_y = eye_y;
         lanes$2$eye_z = eye_z;
-        lanes$2$a_n_s = ns_c$q;
-        lanes$2$a_n_beam = nbeam_c$q;
-        lanes$2$a_n_b = nb_c$q;
-        lanes$2$n_s = ns_d3$q;
-        lanes$2$n_beam = nbeam_d3$q;
-        lanes$2$n_b = nb_d3$q;
+        lanes$2$d_n_s = ns_c$q;
+        lanes$2$d_n_beam = nbeam_c$q;
+        lanes$2$d_n_b = nb_c$q;
+        lanes$2$a_n_s = e_ns;
+        lanes$2$a_n_beam = e_nbeam;
+        lanes$2$a_n_b = e_nb;
+        lanes$2$n_s = ns_d4$q;
+        lanes$2$n_beam = nbeam_d4$q;
+        lanes$2$n_b = nb_d4$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -791,12 +903,15 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$3$eye_x = eye_x;
         lanes$3$eye_y = eye_y;
         lanes$3$eye_z = eye_z;
-        lanes$3$a_n_s = ns_c$q;
-        lanes$3$a_n_beam = nbeam_c$q;
-        lanes$3$a_n_b = nb_c$q;
-        lanes$3$n_s = ns_d3$q;
-        lanes$3$n_beam = nbeam_d3$q;
-        lanes$3$n_b = nb_d3$q;
+        lanes$3$d_n_s = ns_c$q;
+        lanes$3$d_n_beam = nbeam_c$q;
+        lanes$3$d_n_b = nb_c$q;
+        lanes$3$a_n_s = e_ns;
+        lanes$3$a_n_beam = e_nbeam;
+        lanes$3$a_n_b = e_nb;
+        lanes$3$n_s = ns_d4$q;
+        lanes$3$n_beam = nbeam_d4$q;
+        lanes$3$n_b = nb_d4$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -850,20 +965,24 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d3$q;
-        ns_q$d = ns_d3$q;
-        nbeam_q$d = nbeam_d3$q;
-        nb_q$d = nb_d3$q;
-        busy = running$q;
+        valid_q$d = run_d4$q;
+        ns_q$d = ns_d4$q;
+        nbeam_q$d = nbeam_d4$q;
+        nb_q$d = nb_d4$q;
+        busy_pass = running$q;
+        if (perspective) begin
+            busy_pass = lead$busy;
+        end
         valid = valid_q$q;
         n_s = ns_q$q;
         n_beam = nbeam_q$q;
         n_b = nb_q$q;
         bs = nb_q$q == 'h0;
+        busy = busy_pass;
     end
     
 endmodule // top$cfb
-module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -876,6 +995,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -913,8 +1035,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h2;
     localparam  perspective = 1'b0;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -942,14 +1062,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q = 'h0;
-    wire  div_x$overflow = 'h0;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q = 'h0;
-    wire  div_y$overflow = 'h0;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg = 'h0;
+    wire  [31:0] div$dx_mag = 'h0;
+    wire  div$dy_neg = 'h0;
+    wire  [31:0] div$dy_mag = 'h0;
+    wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -1010,9 +1134,15 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1045,12 +1175,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -1208,10 +1332,20 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$0$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$0$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1246,7 +1380,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1278,7 +1414,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1374,25 +1512,13 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -1403,27 +1529,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -1471,6 +1581,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -1483,17 +1594,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -1613,6 +1725,23 @@ module top$cfb$lanes$0$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q
+module top$cfb$lanes$0$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q2
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -2028,6 +2157,23 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$value_q
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2079,7 +2225,7 @@ module top$cfb$lanes$0$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$z_q
-module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -2092,6 +2238,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -2129,8 +2278,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h2;
     localparam  perspective = 1'b0;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -2158,14 +2305,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q = 'h0;
-    wire  div_x$overflow = 'h0;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q = 'h0;
-    wire  div_y$overflow = 'h0;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg = 'h0;
+    wire  [31:0] div$dx_mag = 'h0;
+    wire  div$dy_neg = 'h0;
+    wire  [31:0] div$dy_mag = 'h0;
+    wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -2226,9 +2377,15 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -2261,12 +2418,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -2424,10 +2575,20 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$1$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$1$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -2462,7 +2623,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -2494,7 +2657,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -2590,25 +2755,13 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -2619,27 +2772,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -2687,6 +2824,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -2699,17 +2837,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -2829,6 +2968,23 @@ module top$cfb$lanes$1$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q
+module top$cfb$lanes$1$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q2
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -3244,6 +3400,23 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$value_q
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3295,7 +3468,7 @@ module top$cfb$lanes$1$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$z_q
-module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -3308,6 +3481,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -3345,8 +3521,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h2;
     localparam  perspective = 1'b0;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -3374,14 +3548,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q = 'h0;
-    wire  div_x$overflow = 'h0;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q = 'h0;
-    wire  div_y$overflow = 'h0;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg = 'h0;
+    wire  [31:0] div$dx_mag = 'h0;
+    wire  div$dy_neg = 'h0;
+    wire  [31:0] div$dy_mag = 'h0;
+    wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -3442,9 +3620,15 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -3477,12 +3661,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -3640,10 +3818,20 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$2$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$2$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$2$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -3678,7 +3866,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3710,7 +3900,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3806,25 +3998,13 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -3835,27 +4015,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -3903,6 +4067,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -3915,17 +4080,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -4045,6 +4211,23 @@ module top$cfb$lanes$2$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q
+module top$cfb$lanes$2$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$addr_q2
 module top$cfb$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -4460,6 +4643,23 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
+module top$cfb$lanes$2$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$value_q
 module top$cfb$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -4511,7 +4711,7 @@ module top$cfb$lanes$2$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$z_q
-module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -4524,6 +4724,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [63:0] eye_x;
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
+    input wire  [15:0] d_n_s;
+    input wire  [15:0] d_n_beam;
+    input wire  [15:0] d_n_b;
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
@@ -4561,8 +4764,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     localparam  p_shift = 8'h2;
     localparam  perspective = 1'b0;
     localparam  external = 1'b0;
-    localparam  frac = 8'h8;
-    localparam  one = 'h100;
     
     // Stub signals
     reg  [15:0] memory$read_address;
@@ -4590,14 +4791,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
     reg  par_dy_pos$clock;
-    reg  [63:0] div_x$num;
-    reg  [63:0] div_x$den;
-    wire  [31:0] div_x$q = 'h0;
-    wire  div_x$overflow = 'h0;
-    reg  [63:0] div_y$num;
-    reg  [63:0] div_y$den;
-    wire  [31:0] div_y$q = 'h0;
-    wire  div_y$overflow = 'h0;
+    reg  div$clock;
+    reg  [15:0] div$n_s;
+    reg  [15:0] div$n_beam;
+    reg  [15:0] div$n_b;
+    reg  [63:0] div$eye_x;
+    reg  [63:0] div$eye_y;
+    reg  [63:0] div$eye_z;
+    wire  div$dx_neg = 'h0;
+    wire  [31:0] div$dx_mag = 'h0;
+    wire  div$dy_neg = 'h0;
+    wire  [31:0] div$dy_mag = 'h0;
+    wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
@@ -4658,9 +4863,15 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q$d;
     wire  [31:0] addr_q$q;
     reg  addr_q$clock;
+    reg  [31:0] addr_q2$d;
+    wire  [31:0] addr_q2$q;
+    reg  addr_q2$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
+    reg  [15:0] value_q$d;
+    wire  [15:0] value_q$q;
+    reg  value_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -4693,12 +4904,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
-    reg  [63:0] sx;
-    reg  [63:0] sy;
-    reg  [63:0] sz;
-    reg  [63:0] sx_mag;
-    reg  [63:0] sy_mag;
-    reg  [63:0] sz_mag;
     reg  dxn;
     reg  [31:0] dxm;
     reg  dyn_;
@@ -4856,10 +5061,20 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q$q),
         .clock(addr_q$clock)
     );
+    top$cfb$lanes$3$addr_q2 addr_q2(
+        .d(addr_q2$d),
+        .q(addr_q2$q),
+        .clock(addr_q2$clock)
+    );
     top$cfb$lanes$3$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
         .clock(pad_q$clock)
+    );
+    top$cfb$lanes$3$value_q value_q(
+        .d(value_q$d),
+        .q(value_q$q),
+        .clock(value_q$clock)
     );
     top$cfb$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -4894,7 +5109,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$clock = clock;
         z_q$clock = clock;
         addr_q$clock = clock;
+        addr_q2$clock = clock;
         pad_q$clock = clock;
+        value_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -4926,7 +5143,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = y_q$q;
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
+        addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
+        value_q$d = value_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -5022,25 +5241,13 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         ext_addr = addr$q;
         xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         is_pad = xc >= nx;
-        sx = (64'(xc) << frac) + eye_x;
-        sy = (64'(n_beam) << frac) + eye_y;
-        sz = (64'(n_s) << frac) + eye_z;
-        sx_mag = sx;
-        if (sx['h3f]) begin
-            sx_mag = 'h0 - sx;
-        end
-        sy_mag = sy;
-        if (sy['h3f]) begin
-            sy_mag = 'h0 - sy;
-        end
-        sz_mag = sz;
-        if (sz['h3f]) begin
-            sz_mag = 'h0 - sz;
-        end
-        div_x$num = (sx_mag << frac) + (sz_mag >> 'h1);
-        div_x$den = sz_mag;
-        div_y$num = (sy_mag << frac) + (sz_mag >> 'h1);
-        div_y$den = sz_mag;
+        div$clock = clock;
+        div$n_s = d_n_s;
+        div$n_beam = d_n_beam;
+        div$n_b = d_n_b;
+        div$eye_x = eye_x;
+        div$eye_y = eye_y;
+        div$eye_z = eye_z;
         dxn = par_dxn$q;
         dxm = par_dxm$q;
         dyn_ = par_dyn$q;
@@ -5051,27 +5258,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dy_neg_nz = par_dyn$q;
         inval = 1'b0;
         if (perspective) begin
-            dxn = sx['h3f] ^ sz['h3f];
-            dyn_ = sy['h3f] ^ sz['h3f];
-            dxm = div_x$q;
-            dym = div_y$q;
-            inval = (sz_mag == 'h0) | div_x$overflow | div_y$overflow | (div_x$q > one) | (div_y$q > one);
-            if (inval) begin
-                dxm = 'h0;
-                if ((sx_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dxm = one;
-                end
-                dym = 'h0;
-                if ((sy_mag != 'h0) & (sz_mag != 'h0)) begin
-                    dym = one;
-                end
-            end
-            if (dxm == 'h0) begin
-                dxn = 1'b0;
-            end
-            if (dym == 'h0) begin
-                dyn_ = 1'b0;
-            end
+            dxn = div$dx_neg;
+            dyn_ = div$dy_neg;
+            dxm = div$dx_mag;
+            dym = div$dy_mag;
+            inval = div$invalid;
             dx_pos = ~dxn & (dxm != 'h0);
             dx_neg_nz = dxn & (dxm != 'h0);
             dy_pos = ~dyn_ & (dym != 'h0);
@@ -5119,6 +5310,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         y_q$d = n_beam;
         z_q$d = n_s;
         addr_q$d = addr$q;
+        addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
@@ -5131,17 +5323,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_pass = memory$read_data;
+        value_q$d = memory$read_data;
         if (external) begin
-            value_pass = ext_data;
+            value_q$d = ext_data;
         end
+        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q$q;
+        address = addr_q2$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -5261,6 +5454,23 @@ module top$cfb$lanes$3$addr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q
+module top$cfb$lanes$3$addr_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$addr_q2
 module top$cfb$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -5676,6 +5886,23 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
+module top$cfb$lanes$3$value_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$value_q
 module top$cfb$lanes$3$x_q(d,q,clock);
     
     // Module arguments
@@ -5795,6 +6022,23 @@ module top$cfb$nb_d3(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d3
+module top$cfb$nb_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d4
 module top$cfb$nb_q(d,q,clock);
     
     // Module arguments
@@ -5880,6 +6124,23 @@ module top$cfb$nbeam_d3(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d3
+module top$cfb$nbeam_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d4
 module top$cfb$nbeam_q(d,q,clock);
     
     // Module arguments
@@ -5965,6 +6226,23 @@ module top$cfb$ns_d3(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d3
+module top$cfb$ns_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d4
 module top$cfb$ns_q(d,q,clock);
     
     // Module arguments
@@ -6033,6 +6311,23 @@ module top$cfb$run_d3(d,q,clock);
     end
           
 endmodule // top$cfb$run_d3
+module top$cfb$run_d4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d4
 module top$cfb$running(d,q,clock);
     
     // Module arguments
