@@ -40,16 +40,35 @@ impl Drop for Running {
     }
 }
 
-/// Send SIGTERM to every tool this process is running (when the kit itself
-/// is stopped: they would go on writing into work it removes).
+/// Stop every tool this process is running (when the kit itself is
+/// stopped: they would go on writing into work it removes): SIGTERM, and
+/// SIGKILL for those still there after [`STOP_GRACE`]. The WebAssembly
+/// builds of yosys and nextpnr run in a Python process that does not act
+/// on SIGTERM while the module computes.
 pub fn stop_running() {
-    for &pid in RUNNING.lock().unwrap_or_else(|e| e.into_inner()).iter() {
-        // SAFETY: kill has no memory preconditions; the pid is a child's.
-        unsafe {
-            libc::kill(pid as libc::pid_t, libc::SIGTERM);
+    let pids: Vec<u32> = RUNNING.lock().unwrap_or_else(|e| e.into_inner()).clone();
+    let signal = |pid: u32, sig: libc::c_int| {
+        // SAFETY: kill has no memory preconditions; the pid is a child's,
+        // not yet reaped while it is in RUNNING.
+        unsafe { libc::kill(pid as libc::pid_t, sig) == 0 }
+    };
+    for &pid in &pids {
+        signal(pid, libc::SIGTERM);
+    }
+    let deadline = std::time::Instant::now() + STOP_GRACE;
+    while std::time::Instant::now() < deadline {
+        if !pids.iter().any(|&pid| signal(pid, 0)) {
+            return;
         }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    for &pid in &pids {
+        signal(pid, libc::SIGKILL);
     }
 }
+
+/// How long a stopped tool may take to exit before it is killed.
+pub const STOP_GRACE: Duration = Duration::from_secs(2);
 
 /// How long an Icarus run may go without a heartbeat before it is taken
 /// for a zero-time loop: the slowest run here writes one every few seconds.
