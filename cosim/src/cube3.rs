@@ -143,10 +143,12 @@ impl Cube3Build {
         };
         b.neighbourhood = match number(rest.next(), "n", "the gradient neighbourhood")? {
             6 => Neighbourhood::N6,
+            10 => Neighbourhood::N10,
             12 => Neighbourhood::N12,
+            26 => Neighbourhood::N26,
             k => {
                 return Err(bad(&format!(
-                    "the {k}-neighbourhood is not built (6 or 12)"
+                    "the {k}-neighbourhood is not built (6, 10, 12 or 26)"
                 )))
             }
         };
@@ -174,6 +176,7 @@ impl Cube3Build {
             p: self.p,
             perspective: self.perspective,
             gradients: Units::of_build(self).gradient,
+            voxel_bits: self.voxel_bits,
         }
     }
 
@@ -218,6 +221,12 @@ pub const LINT_WAIVERS: &str = r#"// The beam fetch's write addresses and load a
 // largest memory: each module and buffer uses the low bits.
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_address$*"
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'load_address'*"
+// A 2-DSB word and the X-ray opacity table store only the bits a voxel
+// (an opacity) has: the rest of the 16- or 32-bit datapath word is unread.
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_data'*"
+// The schedule's chunk counter is as wide as its 24-bit register field;
+// the group tables take its low GROUP_BITS, a parallel chunk its low 16.
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'chunk'*"
 // The opacity table, as long as the scene's, takes the low bits of a unit's
 // opacity row.
 lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'row$*"
@@ -266,6 +275,10 @@ struct Units {
     lighting: bool,
     gradient_opacity: bool,
     xray: bool,
+    /// The 26-neighbourhood's sums, the 10's basis (with the gradient
+    /// units).
+    n26: bool,
+    n10: bool,
 }
 
 impl Units {
@@ -278,6 +291,8 @@ impl Units {
             lighting: b.shading,
             gradient_opacity: b.gradient_opacity,
             xray: b.mode == Mode::Xray,
+            n26: b.neighbourhood == Neighbourhood::N26,
+            n10: b.neighbourhood == Neighbourhood::N10,
         }
     }
 
@@ -293,6 +308,14 @@ impl Units {
                 .as_ref()
                 .is_some_and(|s| s.opacity.as_ref().and_then(|o| o.gm_shift).is_some()),
             xray: p.opacity.is_some(),
+            n26: p
+                .abc
+                .as_ref()
+                .is_some_and(|a| a.neighbourhood == Neighbourhood::N26),
+            n10: p
+                .abc
+                .as_ref()
+                .is_some_and(|a| a.neighbourhood == Neighbourhood::N10),
         }
     }
 
@@ -310,6 +333,19 @@ impl Units {
                 name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
                 instances: &["abc"],
             });
+        } else {
+            if !self.n26 {
+                v.push(LeftOut {
+                    name: "abc_26_sums (the 26-neighbourhood's weighted differences)",
+                    instances: &["sums26"],
+                });
+            }
+            if !self.n10 {
+                v.push(LeftOut {
+                    name: "abc_10_basis (the 10-neighbourhood's lerps, basis correction and registers)",
+                    instances: &["basis10", "regs10"],
+                });
+            }
         }
         if self.shaders {
             v.push(LeftOut {
@@ -369,6 +405,7 @@ fn scene_parts(scene: &Scene, camera: &Camera, n: Option<usize>) -> Result<Vec<P
                 p: config.pipeline.p,
                 perspective: config.pipeline.perspective,
                 gradients: config.pipeline.abc.is_some(),
+                voxel_bits: config.pipeline.voxel_bits,
             };
             Ok(Part {
                 view,
@@ -750,12 +787,11 @@ impl Arch for Cube3 {
 
     fn buffer_memory(config: &Cube3Build, _parts: &[Part]) -> BufferMemory {
         // The build's 2-DSBs hold the longest PRP of its class: `R` rays of
-        // `G·P` 16-bit words, where the least is `n` planes of voxel bits a
-        // ray.
+        // `G·P` words of voxel bits, where the least is `n` planes a ray.
         let s = config.sizes();
         BufferMemory {
             what: "three 2-D skewed buffers",
-            bits: (3 * s.p * s.rays() * s.segments() * 16) as u64,
+            bits: (3 * s.p * s.rays() * s.segments()) as u64 * config.voxel_bits as u64,
             minimum_bits: (3 * s.rays() * s.n) as u64 * config.voxel_bits as u64,
         }
     }

@@ -79,8 +79,8 @@ pub enum Reg {
     /// the stream's first ray and scanline and the view's offset
     /// `u0 | v0 << 16 | offset << 32` (two's complement);
     C3Origin = 0x33,
-    /// the fetch's schedule: `period - 1 | last chunk << 16 | last plane
-    /// << 32`;
+    /// the fetch's schedule: `period - 1 | last chunk << 24 | last plane
+    /// << 48` (24-bit period and chunk);
     C3Schedule = 0x34,
     /// the cast rays and scanlines `ray_lo | ray_span << 16 | line_lo << 32
     /// | line_span << 48`;
@@ -90,8 +90,15 @@ pub enum Reg {
     /// (`G | G - 2 << 16 | trilin latency + G << 32 | ABC delay - 1 << 48`);
     C3Delays = 0x36,
     /// the ABC sample-plane lines' lengths less one: `G - 3 | T - 2G - 3
-    /// << 16`.
+    /// << 16`;
     C3Lines = 0x37,
+    /// the 10-neighbourhood's weights `T_x | T_y << 16` and its basis
+    /// correction's rows `C_i0 | C_i1 << 16 | C_i2 << 32` (two's
+    /// complement, `W` fractional bits): one set, a parallel view's.
+    C3Weights10 = 0x38,
+    C3Basis10X = 0x39,
+    C3Basis10Y = 0x3a,
+    C3Basis10Z = 0x3b,
 }
 
 impl Reg {
@@ -168,13 +175,13 @@ impl ViewTable {
             ViewTable::Dx => 0x05_0000,
             ViewTable::Dy => 0x06_0000,
             ViewTable::PosX => 0x07_0000,
-            ViewTable::PosY => 0x08_0000,
-            ViewTable::Groups => 0x09_0000,
+            ViewTable::PosY => 0x20_0000,
+            ViewTable::Groups => 0x24_0000,
             ViewTable::Bounds(j) => lane(0x0a_0000, j, 0x100),
             ViewTable::Inner(j) => lane(0x0a_1000, j, 0x100),
             ViewTable::Wx(j) => lane(0x10_0000, j, 0x1_0000),
             ViewTable::Wy(j) => lane(0x18_0000, j, 0x1_0000),
-            ViewTable::GroupX(j) => lane(0x20_0000, j, 0x1_0000),
+            ViewTable::GroupX(j) => lane(0x28_0000, j, 0x4_0000),
         }
     }
 
@@ -345,6 +352,10 @@ mod tests {
         assert!(Table::Specular.base() + 4096 <= ViewTable::XrayOpacity.base());
         assert!(ViewTable::Bounds(7).base() + 256 <= ViewTable::Inner(0).base());
         assert!(ViewTable::Inner(7).base() + 256 <= ViewTable::Wx(0).base());
-        assert!(ViewTable::GroupX(7).base() + 0x1_0000 <= 1 << ADDRESS_BITS);
+        // The perspective tables of a 256 class: 2^18 rows and groups.
+        assert!(ViewTable::Wy(7).base() + 0x1_0000 <= ViewTable::PosY.base());
+        assert!(ViewTable::PosY.base() + 0x4_0000 <= ViewTable::Groups.base());
+        assert!(ViewTable::Groups.base() + 0x4_0000 <= ViewTable::GroupX(0).base());
+        assert!(ViewTable::GroupX(7).base() + 0x4_0000 <= 1 << ADDRESS_BITS);
     }
 }

@@ -11,7 +11,8 @@
 //! The ports and timing are those of rust-hdl's `RAM` (a registered read, a
 //! write on the clock edge), which fixes the depth at `2^N` and the width at
 //! `D`; hence this widget, with its own Verilog. A memory of at most
-//! [`DISTRIBUTED_WORDS`] words asks synthesis for LUT RAM.
+//! [`DISTRIBUTED_WORDS`] words, or of at most [`DISTRIBUTED_BITS`] bits,
+//! asks synthesis for LUT RAM.
 
 use rust_hdl::core::timing::TimingInfo;
 use rust_hdl::prelude::*;
@@ -199,9 +200,12 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam
                 format!("{{{}}}", read.join(", ")),
             )
         };
-        // A short memory is LUT RAM: a block RAM for 64 words would waste
-        // most of its 18 Kbit (yosys picks block RAM for wide ones).
-        let style = if self._words.len() <= DISTRIBUTED_WORDS {
+        // A short or small memory is LUT RAM: a block RAM for 64 words, or
+        // for a 256-entry table of 8-bit words, would waste most of its 18
+        // Kbit (yosys picks block RAM for wide ones).
+        let style = if self._words.len() <= DISTRIBUTED_WORDS
+            || self._words.len() * self.word_bits() <= DISTRIBUTED_BITS
+        {
             "(* ram_style = \"distributed\" *)\n"
         } else {
             ""
@@ -249,6 +253,10 @@ end
 
 /// Memories of at most this many words are built as LUT RAM.
 pub const DISTRIBUTED_WORDS: usize = 64;
+
+/// ... and memories of at most this many bits: an eighth of an ECP5 block
+/// RAM's 18 Kbit or less (about 100 LUT4 for 256 words of 8 bits).
+pub const DISTRIBUTED_BITS: usize = 2048;
 
 /// Address bits of an on-chip memory module: 2^16 words. Larger voxel
 /// memories are external RAM.

@@ -1,32 +1,48 @@
-//! The gradient estimator of one Cube-3 ABC unit (§4, Figs. 8 and 11), bit
-//! for bit as `golden_model::cube3::abc::gradient` for the 6- and the
-//! 12-neighbourhood, in [`LATENCY`] clocks. [`super::abc_gradient`] brings it
+//! The gradient estimator of one Cube-3 ABC unit (§4, Figs. 8, 9 and 11),
+//! bit for bit as `golden_model::cube3::abc::gradient` for the 6-, 12- and
+//! 26-neighbourhood, in [`LATENCY`] clocks. [`super::abc_gradient`] brings it
 //! the samples around the centre `S(0, 0, 0)` of the above, current and
 //! below sample planes (`S(i, j, l)`: ray `u + i`, scanline `v + j`, plane
 //! `k + l`):
 //!
 //! - `xp, xm, yp, ym` = `S(±1, 0, 0)`, `S(0, ±1, 0)`: `G_x`, `G_y` are their
 //!   differences (both neighbourhoods);
-//! - `kp{3a + b}`, `km{3a + b}` = `S(1 - b, 1 - a, ±1)`: the planes `k ± 1`.
+//! - `kp{3a + b}`, `km{3a + b}` = `S(1 - b, 1 - a, ±1)`: the planes `k ± 1`;
+//! - `c0, c2, c6, c8` = `S(±1, ±1, 0)`, the current plane's corners
+//!   (numbered as `kp`): the 26 only.
 //!
 //! **6** (Fig. 8): `G_r = S(0, 0, 1) - S(0, 0, -1)`, along the ray, then the
 //! shear `g_z = G_r - ((DX·G_x + DY·G_y + 2^(W-1)) >> W)` (arithmetic
-//! shift): two 16-bit multipliers per product of the 25-bit difference and
-//! the 16-bit increment, registered, then the sum. **12** (Fig. 11): `g_z` is
+//! shift): a [`SignedProduct`] of the difference and the 16-bit increment
+//! each (two 16-bit multipliers where samples are wider than 16 bits),
+//! registered, then the sum. **12** (Fig. 11): `g_z` is
 //! the difference of two bilinear interpolations ([`Lerp`]s with weights
 //! `|DX|`, `|DY|`): on plane `k + 1` of the rays `(0 | -s_x, 0 | -s_y)` and
 //! on plane `k - 1` of `(0 | s_x, 0 | s_y)`, the signs selecting the taps.
+//! **26** (Fig. 9): the 6's shear on the weighted differences of all 26
+//! neighbours ([`AbcSums26`], two clocks, as the 6's differences wait).
+//! **10** (Fig. 10, parallel views): lerped neighbours and the host's basis
+//! correction ([`AbcBasis10`], in place of the shear).
 //!
 //! Every component is saturated to `±(2^(gradient_bits-1) - 1)` in the last
 //! clock and leaves as a 32-bit two's-complement word. The neighbourhood is
-//! a build parameter: the other one's multipliers or lerps are built with
-//! their outputs unused, for synthesis to remove.
+//! a build parameter: the 6's and 12's multipliers or lerps are built with
+//! their outputs unused where the other is chosen, for synthesis to remove;
+//! the 26's sums only in a 26 build (the export leaves them out of the
+//! others).
 
+use super::abc_basis10::{self, AbcBasis10};
+use super::abc_sums26::{self, AbcSums26};
+use super::signed_product::SignedProduct;
 use crate::common::lerp::Lerp;
+use golden_model::cube3::plan::Neighbourhood;
 use rust_hdl::prelude::*;
 
 /// Clocks from the neighbourhood to the gradient word.
 pub const LATENCY: usize = 5;
+// The 26's differences take the 6's place in `gx_q[2]`; the 10's gradient
+// the shear's place in the last clock.
+const _: () = assert!(abc_sums26::LATENCY == 2 && abc_basis10::LATENCY == LAST);
 const LAST: usize = LATENCY - 1;
 
 /// `clamp(v, -lim, lim)` of a 64-bit two's-complement word, as 32 bits.
@@ -72,36 +88,6 @@ impl Logic for Saturate {
     }
 }
 
-/// `DX·G` for a 32-bit two's-complement `G` of at most 25 significant bits
-/// and `DX` in sign and magnitude: a 64-bit two's-complement product from
-/// two 16x16 multipliers.
-#[derive(LogicBlock, Default)]
-struct SignedProduct {
-    pub g: Signal<In, Bits<32>>,
-    pub d_neg: Signal<In, Bit>,
-    pub d_mag: Signal<In, Bits<16>>,
-    pub y: Signal<Out, Bits<64>>,
-    mag: Signal<Local, Bits<32>>,
-    prod: Signal<Local, Bits<64>>,
-}
-
-impl Logic for SignedProduct {
-    #[hdl_gen]
-    fn update(&mut self) {
-        self.mag.next = self.g.val();
-        if self.g.val().get_bit(31) {
-            self.mag.next = !self.g.val() + 1;
-        }
-        self.prod.next = (bit_cast::<64, 32>(self.mag.val().get_bits::<16>(16) * self.d_mag.val())
-            << 16)
-            + bit_cast::<64, 32>(self.mag.val().get_bits::<16>(0) * self.d_mag.val());
-        self.y.next = self.prod.val();
-        if self.g.val().get_bit(31) ^ self.d_neg.val() {
-            self.y.next = !self.prod.val() + 1;
-        }
-    }
-}
-
 /// One lane's gradient estimator.
 #[derive(LogicBlock)]
 pub struct AbcEstimator {
@@ -128,6 +114,15 @@ pub struct AbcEstimator {
     pub km6: Signal<In, Bits<32>>,
     pub km7: Signal<In, Bits<32>>,
     pub km8: Signal<In, Bits<32>>,
+    pub c0: Signal<In, Bits<32>>,
+    pub c2: Signal<In, Bits<32>>,
+    pub c6: Signal<In, Bits<32>>,
+    pub c8: Signal<In, Bits<32>>,
+    /// The 10's weights and basis correction (the host's registers).
+    pub weights10: Signal<In, Bits<64>>,
+    pub basis10_x: Signal<In, Bits<64>>,
+    pub basis10_y: Signal<In, Bits<64>>,
+    pub basis10_z: Signal<In, Bits<64>>,
     /// The centre ray's increments, `W` fractional bits.
     pub dx_neg: Signal<In, Bit>,
     pub dx_mag: Signal<In, Bits<16>>,
@@ -141,9 +136,15 @@ pub struct AbcEstimator {
     pub gy: Signal<Out, Bits<32>>,
     pub gz: Signal<Out, Bits<32>>,
     n12: Constant<Bit>,
+    n26: Constant<Bit>,
+    n10: Constant<Bit>,
     half: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
     sign_ext: Constant<Bits<64>>,
+    /// The 26: its differences, in place of the 6's from clock 2 on.
+    sums26: AbcSums26,
+    /// The 10: its gradient, in place of the 6's in the last clock.
+    basis10: AbcBasis10,
     /// The differences, G_x and G_y four clocks, G_r three (the 6).
     gx_q: [DFF<Bits<32>>; 4],
     gy_q: [DFF<Bits<32>>; 4],
@@ -190,11 +191,15 @@ pub struct AbcEstimator {
 }
 
 impl AbcEstimator {
-    /// `n12`: the 12-neighbourhood, else the 6; `wide`: samples of more than
-    /// 16 bits.
-    pub fn new(n12: bool, weight_bits: u32, gradient_bits: u32, wide: bool) -> AbcEstimator {
+    /// Neighbourhood `n`; `wide`: samples of more than 16 bits.
+    pub fn new(
+        n: Neighbourhood,
+        weight_bits: u32,
+        gradient_bits: u32,
+        wide: bool,
+    ) -> Result<AbcEstimator, String> {
         let lerp = || Lerp::new(weight_bits, wide);
-        AbcEstimator {
+        Ok(AbcEstimator {
             clock: Default::default(),
             xp: Default::default(),
             xm: Default::default(),
@@ -218,6 +223,14 @@ impl AbcEstimator {
             km6: Default::default(),
             km7: Default::default(),
             km8: Default::default(),
+            c0: Default::default(),
+            c2: Default::default(),
+            c6: Default::default(),
+            c8: Default::default(),
+            weights10: Default::default(),
+            basis10_x: Default::default(),
+            basis10_y: Default::default(),
+            basis10_z: Default::default(),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
             dy_neg: Default::default(),
@@ -227,7 +240,11 @@ impl AbcEstimator {
             gx: Default::default(),
             gy: Default::default(),
             gz: Default::default(),
-            n12: Constant::new(n12),
+            n12: Constant::new(n == Neighbourhood::N12),
+            n26: Constant::new(n == Neighbourhood::N26),
+            n10: Constant::new(n == Neighbourhood::N10),
+            sums26: Default::default(),
+            basis10: AbcBasis10::new(weight_bits, wide),
             half: Constant::new((1u64 << (weight_bits - 1)).to_bits()),
             shift: Constant::new((weight_bits as u64).to_bits()),
             sign_ext: Constant::new((u64::MAX << 32).to_bits()),
@@ -238,8 +255,8 @@ impl AbcEstimator {
             dx_mag_q: Default::default(),
             dy_neg_q: Default::default(),
             dy_mag_q: Default::default(),
-            px: Default::default(),
-            py: Default::default(),
+            px: SignedProduct::new(wide),
+            py: SignedProduct::new(wide),
             px_q: Default::default(),
             py_q: Default::default(),
             shear_sum: Default::default(),
@@ -269,7 +286,7 @@ impl AbcEstimator {
             gy_out: Default::default(),
             gz_out: Default::default(),
             centre_q: Default::default(),
-        }
+        })
     }
 }
 
@@ -314,6 +331,63 @@ impl Logic for AbcEstimator {
             self.gx_q[i].d.next = self.gx_q[i - 1].q.val();
             self.gy_q[i].d.next = self.gy_q[i - 1].q.val();
             self.gr_q[i].d.next = self.gr_q[i - 1].q.val();
+        }
+        // The 26, clocks 0-1: its differences replace the 6's at clock 2.
+        self.sums26.clock.next = self.clock.val();
+        self.sums26.xp.next = self.xp.val();
+        self.sums26.xm.next = self.xm.val();
+        self.sums26.yp.next = self.yp.val();
+        self.sums26.ym.next = self.ym.val();
+        self.sums26.c0.next = self.c0.val();
+        self.sums26.c2.next = self.c2.val();
+        self.sums26.c6.next = self.c6.val();
+        self.sums26.c8.next = self.c8.val();
+        self.sums26.kp0.next = self.kp0.val();
+        self.sums26.kp1.next = self.kp1.val();
+        self.sums26.kp2.next = self.kp2.val();
+        self.sums26.kp3.next = self.kp3.val();
+        self.sums26.kp4.next = self.kp4.val();
+        self.sums26.kp5.next = self.kp5.val();
+        self.sums26.kp6.next = self.kp6.val();
+        self.sums26.kp7.next = self.kp7.val();
+        self.sums26.kp8.next = self.kp8.val();
+        self.sums26.km0.next = self.km0.val();
+        self.sums26.km1.next = self.km1.val();
+        self.sums26.km2.next = self.km2.val();
+        self.sums26.km3.next = self.km3.val();
+        self.sums26.km4.next = self.km4.val();
+        self.sums26.km5.next = self.km5.val();
+        self.sums26.km6.next = self.km6.val();
+        self.sums26.km7.next = self.km7.val();
+        self.sums26.km8.next = self.km8.val();
+        // The 10, clocks 0-4.
+        self.basis10.clock.next = self.clock.val();
+        self.basis10.xp.next = self.xp.val();
+        self.basis10.xm.next = self.xm.val();
+        self.basis10.yp.next = self.yp.val();
+        self.basis10.ym.next = self.ym.val();
+        self.basis10.kp1.next = self.kp1.val();
+        self.basis10.kp3.next = self.kp3.val();
+        self.basis10.kp4.next = self.kp4.val();
+        self.basis10.kp5.next = self.kp5.val();
+        self.basis10.kp7.next = self.kp7.val();
+        self.basis10.km1.next = self.km1.val();
+        self.basis10.km3.next = self.km3.val();
+        self.basis10.km4.next = self.km4.val();
+        self.basis10.km5.next = self.km5.val();
+        self.basis10.km7.next = self.km7.val();
+        self.basis10.dx_neg.next = self.dx_neg.val();
+        self.basis10.dx_mag.next = self.dx_mag.val();
+        self.basis10.dy_neg.next = self.dy_neg.val();
+        self.basis10.dy_mag.next = self.dy_mag.val();
+        self.basis10.weights.next = self.weights10.val();
+        self.basis10.basis_x.next = self.basis10_x.val();
+        self.basis10.basis_y.next = self.basis10_y.val();
+        self.basis10.basis_z.next = self.basis10_z.val();
+        if self.n26.val() {
+            self.gx_q[2].d.next = self.sums26.gx.val();
+            self.gy_q[2].d.next = self.sums26.gy.val();
+            self.gr_q[2].d.next = self.sums26.gr.val();
         }
         self.dx_neg_q[0].d.next = self.dx_neg.val();
         self.dx_mag_q[0].d.next = self.dx_mag.val();
@@ -429,6 +503,11 @@ impl Logic for AbcEstimator {
             self.sat_y.v.next = bit_cast::<64, 32>(self.gy_q[3].q.val()) | self.sign_ext.val();
         }
         self.sat_z.v.next = self.gz_wide.val();
+        if self.n10.val() {
+            self.sat_x.v.next = self.basis10.gx.val();
+            self.sat_y.v.next = self.basis10.gy.val();
+            self.sat_z.v.next = self.basis10.gz.val();
+        }
         self.gx_out.d.next = self.sat_x.y.val();
         self.gy_out.d.next = self.sat_y.y.val();
         self.gz_out.d.next = self.sat_z.y.val();

@@ -1,7 +1,8 @@
 //! The gradient half of Cube-3's ABC shading units (§4; §5, Fig. 12): `P`
 //! lanes take the TRILIN units' samples, one per lane per clock, and put out
 //! each sample's gradient word, bit for bit as
-//! `golden_model::cube3::abc::gradient` (6- or 12-neighbourhood).
+//! `golden_model::cube3::abc::gradient` (6-, 10-, 12- or 26-neighbourhood;
+//! the 10's weights and basis correction are the host's registers).
 //!
 //! **Stream.** Sample planes arrive scanline after scanline, ray after ray
 //! (`R` rays of a scanline, a scanline every `T >= R·G` clocks), each ray
@@ -27,6 +28,9 @@
 
 use super::abc_estimator::AbcEstimator;
 use super::plane_taps::PlaneTaps;
+use crate::common::regs::{Regs, ADDRESS_BITS};
+use golden_model::cube3::plan::Neighbourhood;
+use golden_model::host::Reg;
 use rust_hdl::prelude::*;
 
 /// Clocks from a sample's entry to its neighbourhood's centre tap.
@@ -38,6 +42,10 @@ pub fn centre(scanline: usize, segments: usize) -> usize {
 #[derive(LogicBlock)]
 pub struct AbcUnit<const P: usize, const H: usize> {
     pub clock: Signal<In, Clock>,
+    /// The host port: the 10's registers.
+    pub host_write: Signal<In, Bit>,
+    pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
+    pub host_data: Signal<In, Bits<64>>,
     /// The sample-plane lines' lengths less one (`PlaneTaps`).
     pub ray_last: Signal<In, Bits<H>>,
     pub line_last: Signal<In, Bits<H>>,
@@ -54,6 +62,8 @@ pub struct AbcUnit<const P: usize, const H: usize> {
     pub gz: [Signal<Out, Bits<32>>; P],
     lanes: [PlaneTaps<H>; P],
     estimators: [AbcEstimator; P],
+    /// The 10: `C3Weights10`, `C3Basis10X/Y/Z`.
+    regs10: Regs<4>,
     /// Without it the outputs read 0, as in emitted Verilog that leaves the
     /// unit out (`export::prune`).
     enabled: Constant<Bit>,
@@ -68,11 +78,11 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
     const P_END: usize = P + 1;
 
     /// For a scanline every `scanline` clocks and rays of `segments` at
-    /// most; `n12`: the 12-neighbourhood, else the 6.
+    /// most, with the gradients of neighbourhood `n`.
     pub fn new(
         scanline: usize,
         segments: usize,
-        n12: bool,
+        n: Neighbourhood,
         weight_bits: u32,
         sample_bits: u32,
         gradient_bits: u32,
@@ -80,7 +90,7 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
         AbcUnit::build(
             scanline,
             segments,
-            n12,
+            n,
             weight_bits,
             sample_bits,
             gradient_bits,
@@ -92,24 +102,34 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
     /// lines.
     pub fn left_out(segments: usize) -> Result<AbcUnit<P, H>, String> {
         let g = segments.max(3);
-        AbcUnit::build(2 * g + 3, g, false, 8, 8, 9, false)
+        AbcUnit::build(2 * g + 3, g, Neighbourhood::N6, 8, 8, 9, false)
     }
 
     fn build(
         scanline: usize,
         segments: usize,
-        n12: bool,
+        n: Neighbourhood,
         weight_bits: u32,
         sample_bits: u32,
         gradient_bits: u32,
         enabled: bool,
     ) -> Result<AbcUnit<P, H>, String> {
         let mut lanes = Vec::with_capacity(P);
+        let mut estimators = Vec::with_capacity(P);
         for _ in 0..P {
             lanes.push(PlaneTaps::new(scanline, segments)?);
+            estimators.push(AbcEstimator::new(
+                n,
+                weight_bits,
+                gradient_bits,
+                sample_bits > 16,
+            )?);
         }
         Ok(AbcUnit {
             clock: Default::default(),
+            host_write: Default::default(),
+            host_address: Default::default(),
+            host_data: Default::default(),
             ray_last: Default::default(),
             line_last: Default::default(),
             sample: std::array::from_fn(|_| Default::default()),
@@ -122,9 +142,16 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
             gy: std::array::from_fn(|_| Default::default()),
             gz: std::array::from_fn(|_| Default::default()),
             lanes: lanes.try_into().ok().expect("P lanes"),
-            estimators: std::array::from_fn(|_| {
-                AbcEstimator::new(n12, weight_bits, gradient_bits, sample_bits > 16)
-            }),
+            estimators: estimators.try_into().ok().expect("P estimators"),
+            regs10: Regs::new(
+                [
+                    Reg::C3Weights10,
+                    Reg::C3Basis10X,
+                    Reg::C3Basis10Y,
+                    Reg::C3Basis10Z,
+                ]
+                .map(Reg::address),
+            ),
             enabled: Constant::new(enabled),
         })
     }
@@ -138,7 +165,15 @@ impl<const P: usize, const H: usize> AbcUnit<P, H> {
 impl<const P: usize, const H: usize> Logic for AbcUnit<P, H> {
     #[hdl_gen]
     fn update(&mut self) {
+        self.regs10.clock.next = self.clock.val();
+        self.regs10.host_write.next = self.host_write.val();
+        self.regs10.host_address.next = self.host_address.val();
+        self.regs10.host_data.next = self.host_data.val();
         for i in 0..P {
+            self.estimators[i].weights10.next = self.regs10.q[0].val();
+            self.estimators[i].basis10_x.next = self.regs10.q[1].val();
+            self.estimators[i].basis10_y.next = self.regs10.q[2].val();
+            self.estimators[i].basis10_z.next = self.regs10.q[3].val();
             self.lanes[i].clock.next = self.clock.val();
             self.lanes[i].ray_last.next = self.ray_last.val();
             self.lanes[i].line_last.next = self.line_last.val();
@@ -150,6 +185,11 @@ impl<const P: usize, const H: usize> Logic for AbcUnit<P, H> {
             self.estimators[i].xm.next = self.lanes[i].t121.val();
             self.estimators[i].yp.next = self.lanes[i].t011.val();
             self.estimators[i].ym.next = self.lanes[i].t211.val();
+            // The current plane's corners S(±1, ±1, 0) (the 26).
+            self.estimators[i].c0.next = self.lanes[i].t001.val();
+            self.estimators[i].c2.next = self.lanes[i].t021.val();
+            self.estimators[i].c6.next = self.lanes[i].t201.val();
+            self.estimators[i].c8.next = self.lanes[i].t221.val();
             self.estimators[i].dx_neg.next = self.dx_neg.val();
             self.estimators[i].dx_mag.next = self.dx_mag.val();
             self.estimators[i].dy_neg.next = self.dy_neg.val();

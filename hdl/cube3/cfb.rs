@@ -198,7 +198,11 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
         let words = if s.external() { 2 } else { s.module_words() };
         let ram = || DepthRam::with_words(words);
-        let buffer = || DepthRam::with_words(buffer_words);
+        // A 2-DSB word holds one voxel: its `voxel_bits`, not the 16-bit
+        // datapath word (half the block RAM for 8-bit voxels).
+        let voxel = ((1u64 << s.voxel_bits) - 1).to_bits();
+        let buffer =
+            || DepthRam::with_words(buffer_words).fields(&[(0, s.voxel_bits as usize)], voxel);
         Ok(BeamFetch {
             clock: Default::default(),
             host_write: Default::default(),

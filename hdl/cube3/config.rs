@@ -19,8 +19,9 @@ pub const TEMPLATE_BITS: usize = 16;
 
 /// Address bits of the parallel `pos_x` table: up to 1024 planes.
 pub const PLANE_BITS: usize = 10;
-/// Address bits of the perspective group and row tables.
-pub const GROUP_BITS: usize = 16;
+/// Address bits of the perspective group and row tables: `(n + 1)·(2n +
+/// 4)` groups, 132 612 for a 256 class.
+pub const GROUP_BITS: usize = 18;
 
 /// One clock of a perspective PRP's writes: plane `plane`, stream rays
 /// `ray .. ray + x.len()` at beam positions `x` (increasing, within `P`
@@ -228,8 +229,11 @@ pub struct Cube3Config {
 /// What the ABC units are built from.
 #[derive(Debug, Clone)]
 pub struct AbcConfig {
-    /// The 12-neighbourhood, else the 6.
-    pub n12: bool,
+    /// The neighbourhood: the 6, 10, 12 or 26.
+    pub neighbourhood: Neighbourhood,
+    /// The 10 (parallel views): the view's weights `T` and basis
+    /// correction `C` (`golden_model::cube3::abc::RayCoeffs`).
+    pub basis10: Option<([u32; 2], [[i64; 3]; 3])>,
     /// The increments `DX` of each stream ray and `DY` of each stream
     /// scanline (perspective), or the one of a parallel view.
     pub dx: Vec<i32>,
@@ -280,21 +284,37 @@ impl Cube3Config {
                 false => Ok(d),
             }
         };
+        let basis10 = match (n, perspective) {
+            (Neighbourhood::N10, true) if shader.needs_gradient => {
+                return Err("cube3.gradient 10 is built in hardware for parallel views only: a perspective view's basis correction differs from ray to ray (the 6, 12 or 26 render it)".to_string());
+            }
+            (Neighbourhood::N10, false) => {
+                let c = golden_model::cube3::abc::RayCoeffs::new(
+                    view.x.d(0),
+                    view.y.d(0),
+                    view.weight_bits,
+                );
+                let fits = |v: i64| (-(1 << 15)..1 << 15).contains(&v);
+                if !c.c10.iter().flatten().all(|&v| fits(v)) || c.t.iter().any(|&t| t >= 1 << 16) {
+                    return Err(
+                        "the 10-neighbourhood's basis correction exceeds its 16-bit registers"
+                            .to_string(),
+                    );
+                }
+                Some((c.t, c.c10))
+            }
+            _ => None,
+        };
         let abc = match (shader.needs_gradient, n) {
             (false, _) => None,
-            (true, Neighbourhood::N6 | Neighbourhood::N12) => Some(AbcConfig {
-                n12: n == Neighbourhood::N12,
+            (true, _) => Some(AbcConfig {
+                neighbourhood: n,
+                basis10,
                 dx: increments(&view.x, &ray_u)?,
                 dy: increments(&view.y, &line_v)?,
                 sample_bits: widths.sample_bits,
                 gradient_bits: widths.gradient_bits,
             }),
-            (true, n) => {
-                let count = if n == Neighbourhood::N10 { 10 } else { 26 };
-                return Err(format!(
-                    "cube3.gradient {count} is not built in hardware (the 6 or the 12)"
-                ));
-            }
         };
         let w = view.weight_bits;
         let [nx, ny, nk] = view.dims.map(|n| n as i64);
@@ -493,6 +513,8 @@ pub struct Cube3Sizes {
     pub perspective: bool,
     /// The ABC units are built: a halo scanline each side.
     pub gradients: bool,
+    /// Bits of a voxel: the 2-DSBs store these bits of each word.
+    pub voxel_bits: u32,
 }
 
 impl Cube3Sizes {
@@ -582,6 +604,27 @@ fn field(v: i64, at: u32) -> u64 {
     ((v as u64) & 0xffff) << at
 }
 
+/// The 10-neighbourhood's registers: the weights `T` and the basis
+/// correction's rows, in 16-bit two's-complement fields.
+pub fn basis10_writes(t: [u32; 2], c: &[[i64; 3]; 3]) -> Vec<Write> {
+    let row = |r: &[i64; 3]| field(r[0], 0) | field(r[1], 16) | field(r[2], 32);
+    vec![
+        reg(
+            Reg::C3Weights10,
+            field(t[0] as i64, 0) | field(t[1] as i64, 16),
+        ),
+        reg(Reg::C3Basis10X, row(&c[0])),
+        reg(Reg::C3Basis10Y, row(&c[1])),
+        reg(Reg::C3Basis10Z, row(&c[2])),
+    ]
+}
+
+/// A 24-bit field: the schedule's period and its last perspective group
+/// (up to 2^18 in a 256 class).
+fn field24(v: i64, at: u32) -> u64 {
+    ((v as u64) & 0xff_ffff) << at
+}
+
 impl BeamFetchConfig {
     /// The beam fetch's view words: the stream, dims, strides, origin
     /// (with the pipeline's `offset`) and schedule registers, the `pos_x`
@@ -619,7 +662,7 @@ impl BeamFetchConfig {
             ),
             reg(
                 Reg::C3Schedule,
-                field(f.period() as i64 - 1, 0) | field(last_chunk, 16) | field(last_plane, 32),
+                field24(f.period() as i64 - 1, 0) | field24(last_chunk, 24) | field(last_plane, 48),
             ),
         ];
         let word16 = |v: &[i32]| v.iter().map(|&x| (x as u64) & 0xffff).collect::<Vec<_>>();
@@ -693,6 +736,9 @@ impl Cube3Config {
             };
             w.extend(ViewTable::Dx.writes(inc(&a.dx)));
             w.extend(ViewTable::Dy.writes(inc(&a.dy)));
+            if let Some((t, c)) = &a.basis10 {
+                w.extend(basis10_writes(*t, c));
+            }
         }
         for j in 0..p {
             let bound = |b: &[[u32; 4]], k: usize| {

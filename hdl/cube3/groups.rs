@@ -23,7 +23,7 @@ pub struct Groups<const P: usize> {
     pub host_data: Signal<In, Bits<64>>,
     /// The stream's first ray (`BeamFetch`'s register).
     pub u0: Signal<In, Bits<16>>,
-    pub chunk: Signal<In, Bits<16>>,
+    pub chunk: Signal<In, Bits<24>>,
     pub plane_count: Signal<In, Bits<16>>,
     pub plane: Signal<Out, Bits<16>>,
     pub first_ray: Signal<Out, Bits<16>>,
@@ -87,8 +87,8 @@ impl<const P: usize> Logic for Groups<P> {
         self.groups.host_address.next = self.host_address.val();
         self.groups.host_data.next = self.host_data.val();
         self.pos_x.address.next = self.plane_count.val().get_bits::<PLANE_BITS>(0);
-        self.groups.address.next = self.chunk.val();
-        self.chunk_ray.next = self.chunk.val() << self.shift.val();
+        self.groups.address.next = self.chunk.val().get_bits::<GROUP_BITS>(0);
+        self.chunk_ray.next = self.chunk.val().get_bits::<16>(0) << self.shift.val();
         self.x0.next = self.u0.val() + self.pos_x.data.val() + self.chunk_ray.val();
         self.plane.next = self.plane_count.val();
         self.first_ray.next = self.chunk_ray.val();
@@ -101,7 +101,7 @@ impl<const P: usize> Logic for Groups<P> {
             self.group_x[j].host_write.next = self.host_write.val();
             self.group_x[j].host_address.next = self.host_address.val();
             self.group_x[j].host_data.next = self.host_data.val();
-            self.group_x[j].address.next = self.chunk.val();
+            self.group_x[j].address.next = self.chunk.val().get_bits::<GROUP_BITS>(0);
             self.x[j].next = self.x0.val() + self.index[j].val();
             self.holds[j].next = true;
             if self.perspective.val() {

@@ -6,13 +6,17 @@
 //! [`groups`] and [`schedule`]) to the [`pipeline::Cube3`] pipeline: the
 //! [`ray_control`] (with its [`templates`] and [`increments`]), the
 //! TRILIN units ([`trilin_lanes`] of [`trilin`]), the ABC gradient units
-//! ([`abc_gradient`], with [`plane_taps`] and the [`abc_estimator`]), the
+//! ([`abc_gradient`], with [`plane_taps`] and the [`abc_estimator`], and
+//! for the 26- and 10-neighbourhoods [`abc_sums26`] and [`abc_basis10`],
+//! their products [`signed_product`]s), the
 //! shaders (`common::shader`) and the Ray Projection Cone
 //! ([`compositor`], a tree of [`rpc_node`]s). [`config`] holds what they
 //! are built from.
 
+pub mod abc_basis10;
 pub mod abc_estimator;
 pub mod abc_gradient;
+pub mod abc_sums26;
 pub mod cfb;
 pub mod compositor;
 pub mod config;
@@ -23,6 +27,7 @@ pub mod plane_taps;
 pub mod ray_control;
 pub mod rpc_node;
 pub mod schedule;
+pub mod signed_product;
 pub mod system;
 pub mod templates;
 pub mod trilin;

@@ -148,7 +148,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             Some(a) => AbcUnit::new(
                 s.period(),
                 s.segments(),
-                a.n12,
+                a.neighbourhood,
                 c.weight_bits,
                 a.sample_bits,
                 a.gradient_bits,
@@ -216,7 +216,11 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
             inner_bit: std::array::from_fn(|i| Constant::new((1u64 << (16 + i)).to_bits())),
             row: std::array::from_fn(|_| Default::default()),
             opacity: std::array::from_fn(|_| {
-                Table::new(ViewTable::XrayOpacity.base(), table.len(), &[(0, 32)])
+                Table::new(
+                    ViewTable::XrayOpacity.base(),
+                    table.len(),
+                    &[(0, c.rgba_bits as usize)],
+                )
             }),
             leaf_q: std::array::from_fn(|_| Default::default()),
             leaf_valid_q: std::array::from_fn(|_| Default::default()),
@@ -264,6 +268,9 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         self.control.host_data.next = self.host_data.val();
         self.lanes.clock.next = self.clock.val();
         self.abc.clock.next = self.clock.val();
+        self.abc.host_write.next = self.host_write.val();
+        self.abc.host_address.next = self.host_address.val();
+        self.abc.host_data.next = self.host_data.val();
         self.rpc.clock.next = self.clock.val();
         self.flags_line.clock.next = self.clock.val();
         self.rpc_flags_q.clock.next = self.clock.val();

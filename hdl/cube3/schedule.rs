@@ -14,7 +14,8 @@ pub struct Schedule {
     pub start: Signal<In, Bit>,
     pub writing: Signal<Out, Bit>,
     pub plane: Signal<Out, Bits<16>>,
-    pub chunk: Signal<Out, Bits<16>>,
+    /// The chunk (parallel) or group (perspective: up to 2^18) written.
+    pub chunk: Signal<Out, Bits<24>>,
     pub period: Signal<Out, Bits<16>>,
     pub write_buffer: Signal<Out, Bits<2>>,
     pub reading: Signal<Out, Bit>,
@@ -31,19 +32,19 @@ pub struct Schedule {
     /// The counts less one: the period's clocks, the scanlines written (the
     /// stream's `S`, then one more period of reads), the planes and chunks
     /// of a PRP, the rays and segments read.
-    last_tick: Signal<Local, Bits<16>>,
+    last_tick: Signal<Local, Bits<24>>,
     last_write_period: Signal<Local, Bits<16>>,
     last_plane: Signal<Local, Bits<16>>,
-    last_chunk: Signal<Local, Bits<16>>,
+    last_chunk: Signal<Local, Bits<24>>,
     last_ray: Signal<Local, Bits<16>>,
     last_segment: Signal<Local, Bits<16>>,
     last_period: Signal<Local, Bits<16>>,
     first_read_period: Constant<Bits<16>>,
     active: DFF<Bit>,
-    tick: DFF<Bits<16>>,
+    tick: DFF<Bits<24>>,
     period_q: DFF<Bits<16>>,
     plane_q: DFF<Bits<16>>,
-    chunk_q: DFF<Bits<16>>,
+    chunk_q: DFF<Bits<24>>,
     ray_q: DFF<Bits<16>>,
     segment_q: DFF<Bits<16>>,
     written: DFF<Bit>,
@@ -110,9 +111,9 @@ impl Logic for Schedule {
         self.last_ray.next = self.regs.q[0].val().get_bits::<16>(0) - 1;
         self.last_write_period.next = self.regs.q[0].val().get_bits::<16>(16);
         self.last_segment.next = self.regs.q[0].val().get_bits::<16>(32) - 1;
-        self.last_tick.next = self.regs.q[1].val().get_bits::<16>(0);
-        self.last_chunk.next = self.regs.q[1].val().get_bits::<16>(16);
-        self.last_plane.next = self.regs.q[1].val().get_bits::<16>(32);
+        self.last_tick.next = self.regs.q[1].val().get_bits::<24>(0);
+        self.last_chunk.next = self.regs.q[1].val().get_bits::<24>(24);
+        self.last_plane.next = self.regs.q[1].val().get_bits::<16>(48);
         self.last_period.next = self.last_write_period.val() + 1;
         self.writing.next = self.active.q.val()
             & !self.written.q.val()

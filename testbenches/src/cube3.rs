@@ -103,6 +103,7 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
         p,
         perspective: config.perspective,
         gradients: config.abc.is_some(),
+        voxel_bits: config.voxel_bits,
     };
     assert_eq!(sizes.refuses(&system), None, "{name}");
     Case {

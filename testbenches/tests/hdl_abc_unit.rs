@@ -1,9 +1,11 @@
 //! `hdl::cube3::abc_gradient::AbcUnit` against `golden_model::cube3::abc::gradient`,
-//! clock by clock, for the 6- and the 12-neighbourhood: the golden model's
-//! sample planes of real views (oblique parallel on a non-cubic volume, a
-//! close perspective eye, 16-bit voxels with saturating gradient words)
-//! stream in as the TRILIN units deliver them, p = 1, 2, 4 and 8 lanes, in
-//! rust-hdl simulation and as emitted Verilog under Icarus and Verilator.
+//! clock by clock, for the 6-, 10-, 12- and 26-neighbourhood (the 10 on
+//! parallel views, its registers written through the host port as the
+//! stream starts): the golden model's sample planes of real views (oblique
+//! parallel on a non-cubic volume, a close perspective eye, 16-bit voxels
+//! with saturating gradient words, a view at exactly 45°) stream in as the
+//! TRILIN units deliver them, p = 1, 2, 4 and 8 lanes, in rust-hdl
+//! simulation and as emitted Verilog under Icarus and Verilator.
 //! Every sample whose whole neighbourhood lies in the streamed planes is
 //! compared (the golden model takes no gradient elsewhere).
 
@@ -12,8 +14,10 @@ use cosim::Engine;
 use golden_model::cube3::abc::{gradient, Planes, RayCoeffs};
 use golden_model::cube3::plan::{Neighbourhood, Plan};
 use golden_model::cube3::{prp, trilin};
+use golden_model::host::Write;
 use hdl::cube3::abc_estimator::LATENCY;
 use hdl::cube3::abc_gradient::{centre, AbcUnit};
+use hdl::cube3::config::basis10_writes;
 use hdl::cube3::plane_taps::line_lengths;
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
@@ -34,7 +38,7 @@ struct Clock {
 
 struct Case {
     name: String,
-    n12: bool,
+    n: Neighbourhood,
     weight_bits: u32,
     sample_bits: u32,
     gradient_bits: u32,
@@ -42,6 +46,8 @@ struct Case {
     segments: usize,
     clocks: Vec<Clock>,
     compared: usize,
+    /// Host writes on the first clocks (the 10's registers).
+    writes: Vec<Write>,
 }
 
 fn case(name: &str, json: &str, p: usize, n: Neighbourhood, lines: i32) -> Case {
@@ -110,9 +116,17 @@ fn case(name: &str, json: &str, p: usize, n: Neighbourhood, lines: i32) -> Case 
             }
         }
     }
+    let writes = match n {
+        Neighbourhood::N10 => {
+            let c = RayCoeffs::new(view.x.d(0), view.y.d(0), w);
+            basis10_writes(c.t, &c.c10)
+        }
+        _ => vec![],
+    };
     Case {
         name: format!("{name}, p={p}, {}-neighbourhood", n.count()),
-        n12: n == Neighbourhood::N12,
+        writes,
+        n,
         weight_bits: w,
         sample_bits: sb,
         gradient_bits: gb,
@@ -129,28 +143,64 @@ const PERSPECTIVE: &str = r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 1
     "mode": "composite", "image": [16, 16]}"#;
 const FULL_SCALE: &str = r#"{"volume": {"builtin": "checkerboard", "dims": [10, 10, 10]}, "view": {"projection": "parallel", "rotate_deg": [-15, 25, 0]},
     "mode": "composite", "image": [16, 16], "hardware": {"voxel_bits": 16}, "cube3": {"sample_bits": 24, "gradient_bits": 25}}"#;
+/// Rays at exactly 45° in x: `|DX| = 2^W`, the steepest a base plane takes.
+const FORTY_FIVE: &str = r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 10]}, "view": {"projection": "parallel", "rotate_deg": [0, 45, 0]},
+    "mode": "composite", "image": [16, 16]}"#;
 const DEEP: &str = r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 17]}, "view": {"projection": "parallel", "rotate_deg": [10, -20, 0]},
     "mode": "composite", "image": [16, 16]}"#;
 
+/// Every neighbourhood, and those built for perspective views (the 10's
+/// basis correction is one set, a parallel view's).
+const ALL: [Neighbourhood; 4] = [
+    Neighbourhood::N6,
+    Neighbourhood::N10,
+    Neighbourhood::N12,
+    Neighbourhood::N26,
+];
+const PERSPECTIVE_BUILT: [Neighbourhood; 3] =
+    [Neighbourhood::N6, Neighbourhood::N12, Neighbourhood::N26];
+
 fn cases(p: usize) -> Vec<Case> {
-    let both = [Neighbourhood::N6, Neighbourhood::N12];
     match p {
-        1 => vec![case("oblique", OBLIQUE, 1, Neighbourhood::N12, 2)],
-        2 => both
+        1 => [Neighbourhood::N10, Neighbourhood::N12, Neighbourhood::N26]
+            .iter()
+            .map(|&n| case("oblique", OBLIQUE, 1, n, 2))
+            .collect(),
+        2 => PERSPECTIVE_BUILT
+            .iter()
+            .map(|&n| case("close perspective eye", PERSPECTIVE, 2, n, 2))
+            .chain(
+                ALL.iter()
+                    .map(|&n| case("16-bit voxels", FULL_SCALE, 2, n, 2)),
+            )
+            .collect(),
+        4 => ALL
             .iter()
             .flat_map(|&n| {
                 [
-                    case("close perspective eye", PERSPECTIVE, 2, n, 2),
-                    case("16-bit voxels", FULL_SCALE, 2, n, 2),
+                    case("oblique, non-cubic", OBLIQUE, 4, n, 3),
+                    case("45 degrees", FORTY_FIVE, 4, n, 2),
                 ]
             })
             .collect(),
-        4 => both
+        _ => [Neighbourhood::N6, Neighbourhood::N10, Neighbourhood::N26]
             .iter()
-            .map(|&n| case("oblique, non-cubic", OBLIQUE, 4, n, 3))
+            .map(|&n| case("17 deep", DEEP, 8, n, 2))
             .collect(),
-        _ => vec![case("17 deep", DEEP, 8, Neighbourhood::N6, 2)],
     }
+}
+
+/// The host write of clock `t`, if any.
+fn host_write(c: &Case, t: usize) -> Option<&Write> {
+    c.writes.get(t)
+}
+
+#[test]
+fn the_45_degree_case_has_rays_at_45_degrees() {
+    let s = scene(FORTY_FIVE);
+    let plan = Plan::new(&s, &s.camera()).unwrap();
+    let view = &plan.views[0];
+    assert_eq!(view.x.d(0).unsigned_abs(), 1 << view.weight_bits);
 }
 
 fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
@@ -159,7 +209,7 @@ fn unit<const P: usize>(c: &Case) -> AbcUnit<P, H> {
     let mut uut = AbcUnit::<P, H>::new(
         c.rays * c.segments + 20,
         c.segments + 2,
-        c.n12,
+        c.n,
         c.weight_bits,
         c.sample_bits,
         c.gradient_bits,
@@ -233,6 +283,10 @@ fn rust_hdl_run<const P: usize>() {
                 let [ray_last, line_last] = line_lasts(&c);
                 x.ray_last.next = (ray_last as u64).to_bits();
                 x.line_last.next = (line_last as u64).to_bits();
+                let w = host_write(&c, t);
+                x.host_write.next = w.is_some();
+                x.host_address.next = (w.map_or(0, |w| w.address) as u64).to_bits();
+                x.host_data.next = w.map_or(0, |w| w.data).to_bits();
             }
             Edge::After(t) => {
                 for (i, w) in due(&c, t, d).into_iter().flatten().enumerate() {
@@ -268,6 +322,7 @@ fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: 
     let vectors: Vec<Vec<u64>> = (0..clocks)
         .map(|t| {
             let (samples, dx, dy) = inputs(c, t, d);
+            let w = host_write(c, t);
             ports
                 .iter()
                 .filter(|p| p.input)
@@ -277,9 +332,13 @@ fn verilog_case<const P: usize>(engine: Engine, c: &Case, verilog: &str, count: 
                         "dx_neg" => (dx < 0) as u64,
                         "dx_mag" => dx.unsigned_abs() as u64,
                         "dy_neg" => (dy < 0) as u64,
+                        "dy_mag" => dy.unsigned_abs() as u64,
                         "ray_last" => line_lasts(c)[0] as u64,
                         "line_last" => line_lasts(c)[1] as u64,
-                        _ => dy.unsigned_abs() as u64,
+                        "host_write" => w.is_some() as u64,
+                        "host_address" => w.map_or(0, |w| w.address) as u64,
+                        "host_data" => w.map_or(0, |w| w.data),
+                        other => panic!("unexpected input port {other}"),
                     },
                 })
                 .collect()
@@ -319,6 +378,9 @@ fn verilog_of<const P: usize>(c: &Case) -> String {
 #[test]
 fn abc_unit_verilog_matches_golden_model_under_icarus() {
     require_tool("iverilog");
+    for c in cases(1) {
+        verilog_case::<1>(Engine::Iverilog, &c, &verilog_of::<1>(&c), false);
+    }
     for c in cases(2) {
         verilog_case::<2>(Engine::Iverilog, &c, &verilog_of::<2>(&c), false);
     }
@@ -332,6 +394,19 @@ fn abc_unit_verilog_matches_golden_model_under_verilator() {
     require_tool("verilator");
     for c in cases(4) {
         verilog_case::<4>(Engine::Verilator, &c, &verilog_of::<4>(&c), false);
+    }
+    // The 26 and the 10 at p = 1, and the 26 in perspective at p = 2.
+    for c in cases(1)
+        .iter()
+        .filter(|c| matches!(c.n, Neighbourhood::N26 | Neighbourhood::N10))
+    {
+        verilog_case::<1>(Engine::Verilator, c, &verilog_of::<1>(c), false);
+    }
+    for c in cases(2)
+        .iter()
+        .filter(|c| c.n == Neighbourhood::N26 && c.name.contains("perspective"))
+    {
+        verilog_case::<2>(Engine::Verilator, c, &verilog_of::<2>(c), false);
     }
 }
 

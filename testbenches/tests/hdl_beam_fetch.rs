@@ -85,6 +85,7 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
         p,
         perspective: config.perspective(),
         gradients: false,
+        voxel_bits: s.hardware.voxel_bits,
     };
     Case {
         name: format!("{name}, p={p}"),

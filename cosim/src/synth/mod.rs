@@ -240,7 +240,8 @@ pub fn synthesize(
 }
 
 /// The iCE40 has no LUT RAM: drop the emitted Verilog's request for it
-/// (`hdl::common::ram::DISTRIBUTED_WORDS`, `ram_style = "distributed"`), in
+/// (`hdl::common::ram::DISTRIBUTED_WORDS` and `DISTRIBUTED_BITS`,
+/// `ram_style = "distributed"`), in
 /// the work directory's copy, so yosys maps those short memories to block
 /// RAM or logic instead of failing.
 fn no_lut_ram(dir: &Path, files: &[String]) -> Result<(), String> {

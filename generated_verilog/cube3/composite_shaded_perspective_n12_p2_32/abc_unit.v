@@ -1,7 +1,10 @@
-module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,centre$0,centre$1,gx$0,gx$1,gy$0,gy$1,gz$0,gz$1);
+module top$pipeline$abc(clock,host_write,host_address,host_data,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag,dy_neg,dy_mag,centre$0,centre$1,gx$0,gx$1,gy$0,gy$1,gz$0,gz$1);
     
     // Module arguments
     input wire  clock;
+    input wire  host_write;
+    input wire  [23:0] host_address;
+    input wire  [63:0] host_data;
     input wire  [15:0] ray_last;
     input wire  [15:0] line_last;
     input wire  [31:0] sample$0;
@@ -108,6 +111,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
     reg  [31:0] estimators$0$km6;
     reg  [31:0] estimators$0$km7;
     reg  [31:0] estimators$0$km8;
+    reg  [31:0] estimators$0$c0;
+    reg  [31:0] estimators$0$c2;
+    reg  [31:0] estimators$0$c6;
+    reg  [31:0] estimators$0$c8;
+    reg  [63:0] estimators$0$weights10;
+    reg  [63:0] estimators$0$basis10_x;
+    reg  [63:0] estimators$0$basis10_y;
+    reg  [63:0] estimators$0$basis10_z;
     reg  estimators$0$dx_neg;
     reg  [15:0] estimators$0$dx_mag;
     reg  estimators$0$dy_neg;
@@ -140,6 +151,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
     reg  [31:0] estimators$1$km6;
     reg  [31:0] estimators$1$km7;
     reg  [31:0] estimators$1$km8;
+    reg  [31:0] estimators$1$c0;
+    reg  [31:0] estimators$1$c2;
+    reg  [31:0] estimators$1$c6;
+    reg  [31:0] estimators$1$c8;
+    reg  [63:0] estimators$1$weights10;
+    reg  [63:0] estimators$1$basis10_x;
+    reg  [63:0] estimators$1$basis10_y;
+    reg  [63:0] estimators$1$basis10_z;
     reg  estimators$1$dx_neg;
     reg  [15:0] estimators$1$dx_mag;
     reg  estimators$1$dy_neg;
@@ -149,6 +168,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
     wire  [31:0] estimators$1$gx;
     wire  [31:0] estimators$1$gy;
     wire  [31:0] estimators$1$gz;
+    reg  regs10$clock;
+    reg  regs10$host_write;
+    reg  [23:0] regs10$host_address;
+    reg  [63:0] regs10$host_data;
+    wire  [63:0] regs10$q$0 = 'h0;
+    wire  [63:0] regs10$q$1 = 'h0;
+    wire  [63:0] regs10$q$2 = 'h0;
+    wire  [63:0] regs10$q$3 = 'h0;
     
     // Sub module instances
     top$pipeline$abc$lanes$0 lanes$0(
@@ -241,6 +268,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
         .km6(estimators$0$km6),
         .km7(estimators$0$km7),
         .km8(estimators$0$km8),
+        .c0(estimators$0$c0),
+        .c2(estimators$0$c2),
+        .c6(estimators$0$c6),
+        .c8(estimators$0$c8),
+        .weights10(estimators$0$weights10),
+        .basis10_x(estimators$0$basis10_x),
+        .basis10_y(estimators$0$basis10_y),
+        .basis10_z(estimators$0$basis10_z),
         .dx_neg(estimators$0$dx_neg),
         .dx_mag(estimators$0$dx_mag),
         .dy_neg(estimators$0$dy_neg),
@@ -275,6 +310,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
         .km6(estimators$1$km6),
         .km7(estimators$1$km7),
         .km8(estimators$1$km8),
+        .c0(estimators$1$c0),
+        .c2(estimators$1$c2),
+        .c6(estimators$1$c6),
+        .c8(estimators$1$c8),
+        .weights10(estimators$1$weights10),
+        .basis10_x(estimators$1$basis10_x),
+        .basis10_y(estimators$1$basis10_y),
+        .basis10_z(estimators$1$basis10_z),
         .dx_neg(estimators$1$dx_neg),
         .dx_mag(estimators$1$dx_mag),
         .dy_neg(estimators$1$dy_neg),
@@ -296,6 +339,14 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
     reg  [31:0] gz$0_pass;
     reg  [31:0] gz$1_pass;
     always @(*) begin
+        regs10$clock = clock;
+        regs10$host_write = host_write;
+        regs10$host_address = host_address;
+        regs10$host_data = host_data;
+        estimators$0$weights10 = regs10$q$0;
+        estimators$0$basis10_x = regs10$q$1;
+        estimators$0$basis10_y = regs10$q$2;
+        estimators$0$basis10_z = regs10$q$3;
         lanes$0$clock = clock;
         lanes$0$ray_last = ray_last;
         lanes$0$line_last = line_last;
@@ -305,6 +356,10 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
         estimators$0$xm = lanes$0$t121;
         estimators$0$yp = lanes$0$t011;
         estimators$0$ym = lanes$0$t211;
+        estimators$0$c0 = lanes$0$t001;
+        estimators$0$c2 = lanes$0$t021;
+        estimators$0$c6 = lanes$0$t201;
+        estimators$0$c8 = lanes$0$t221;
         estimators$0$dx_neg = dx_neg;
         estimators$0$dx_mag = dx_mag;
         estimators$0$dy_neg = dy_neg;
@@ -320,6 +375,10 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
             gy$0_pass = estimators$0$gy;
             gz$0_pass = estimators$0$gz;
         end
+        estimators$1$weights10 = regs10$q$0;
+        estimators$1$basis10_x = regs10$q$1;
+        estimators$1$basis10_y = regs10$q$2;
+        estimators$1$basis10_z = regs10$q$3;
         lanes$1$clock = clock;
         lanes$1$ray_last = ray_last;
         lanes$1$line_last = line_last;
@@ -329,6 +388,10 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
         estimators$1$xm = lanes$1$t121;
         estimators$1$yp = lanes$1$t011;
         estimators$1$ym = lanes$1$t211;
+        estimators$1$c0 = lanes$1$t001;
+        estimators$1$c2 = lanes$1$t021;
+        estimators$1$c6 = lanes$1$t201;
+        estimators$1$c8 = lanes$1$t221;
         estimators$1$dx_neg = dx_neg;
         estimators$1$dx_mag = dx_mag;
         estimators$1$dy_neg = dy_neg;
@@ -391,7 +454,7 @@ module top$pipeline$abc(clock,ray_last,line_last,sample$0,sample$1,dx_neg,dx_mag
     end
     
 endmodule // top$pipeline$abc
-module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,kp6,kp7,kp8,km0,km1,km2,km3,km4,km5,km6,km7,km8,dx_neg,dx_mag,dy_neg,dy_mag,centre,sample,gx,gy,gz);
+module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,kp6,kp7,kp8,km0,km1,km2,km3,km4,km5,km6,km7,km8,c0,c2,c6,c8,weights10,basis10_x,basis10_y,basis10_z,dx_neg,dx_mag,dy_neg,dy_mag,centre,sample,gx,gy,gz);
     
     // Module arguments
     input wire  clock;
@@ -417,6 +480,14 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     input wire  [31:0] km6;
     input wire  [31:0] km7;
     input wire  [31:0] km8;
+    input wire  [31:0] c0;
+    input wire  [31:0] c2;
+    input wire  [31:0] c6;
+    input wire  [31:0] c8;
+    input wire  [63:0] weights10;
+    input wire  [63:0] basis10_x;
+    input wire  [63:0] basis10_y;
+    input wire  [63:0] basis10_z;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
@@ -429,11 +500,69 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     
     // Constant declarations
     localparam  n12 = 1'b1;
+    localparam  n26 = 1'b0;
+    localparam  n10 = 1'b0;
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  sign_ext = 64'hffffffff00000000;
     
     // Stub signals
+    reg  sums26$clock;
+    reg  [31:0] sums26$xp;
+    reg  [31:0] sums26$xm;
+    reg  [31:0] sums26$yp;
+    reg  [31:0] sums26$ym;
+    reg  [31:0] sums26$c0;
+    reg  [31:0] sums26$c2;
+    reg  [31:0] sums26$c6;
+    reg  [31:0] sums26$c8;
+    reg  [31:0] sums26$kp0;
+    reg  [31:0] sums26$kp1;
+    reg  [31:0] sums26$kp2;
+    reg  [31:0] sums26$kp3;
+    reg  [31:0] sums26$kp4;
+    reg  [31:0] sums26$kp5;
+    reg  [31:0] sums26$kp6;
+    reg  [31:0] sums26$kp7;
+    reg  [31:0] sums26$kp8;
+    reg  [31:0] sums26$km0;
+    reg  [31:0] sums26$km1;
+    reg  [31:0] sums26$km2;
+    reg  [31:0] sums26$km3;
+    reg  [31:0] sums26$km4;
+    reg  [31:0] sums26$km5;
+    reg  [31:0] sums26$km6;
+    reg  [31:0] sums26$km7;
+    reg  [31:0] sums26$km8;
+    wire  [31:0] sums26$gx = 'h0;
+    wire  [31:0] sums26$gy = 'h0;
+    wire  [31:0] sums26$gr = 'h0;
+    reg  basis10$clock;
+    reg  [31:0] basis10$xp;
+    reg  [31:0] basis10$xm;
+    reg  [31:0] basis10$yp;
+    reg  [31:0] basis10$ym;
+    reg  [31:0] basis10$kp1;
+    reg  [31:0] basis10$kp3;
+    reg  [31:0] basis10$kp4;
+    reg  [31:0] basis10$kp5;
+    reg  [31:0] basis10$kp7;
+    reg  [31:0] basis10$km1;
+    reg  [31:0] basis10$km3;
+    reg  [31:0] basis10$km4;
+    reg  [31:0] basis10$km5;
+    reg  [31:0] basis10$km7;
+    reg  basis10$dx_neg;
+    reg  [15:0] basis10$dx_mag;
+    reg  basis10$dy_neg;
+    reg  [15:0] basis10$dy_mag;
+    reg  [63:0] basis10$weights;
+    reg  [63:0] basis10$basis_x;
+    reg  [63:0] basis10$basis_y;
+    reg  [63:0] basis10$basis_z;
+    wire  [63:0] basis10$gx = 'h0;
+    wire  [63:0] basis10$gy = 'h0;
+    wire  [63:0] basis10$gz = 'h0;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -904,6 +1033,61 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        sums26$clock = clock;
+        sums26$xp = xp;
+        sums26$xm = xm;
+        sums26$yp = yp;
+        sums26$ym = ym;
+        sums26$c0 = c0;
+        sums26$c2 = c2;
+        sums26$c6 = c6;
+        sums26$c8 = c8;
+        sums26$kp0 = kp0;
+        sums26$kp1 = kp1;
+        sums26$kp2 = kp2;
+        sums26$kp3 = kp3;
+        sums26$kp4 = kp4;
+        sums26$kp5 = kp5;
+        sums26$kp6 = kp6;
+        sums26$kp7 = kp7;
+        sums26$kp8 = kp8;
+        sums26$km0 = km0;
+        sums26$km1 = km1;
+        sums26$km2 = km2;
+        sums26$km3 = km3;
+        sums26$km4 = km4;
+        sums26$km5 = km5;
+        sums26$km6 = km6;
+        sums26$km7 = km7;
+        sums26$km8 = km8;
+        basis10$clock = clock;
+        basis10$xp = xp;
+        basis10$xm = xm;
+        basis10$yp = yp;
+        basis10$ym = ym;
+        basis10$kp1 = kp1;
+        basis10$kp3 = kp3;
+        basis10$kp4 = kp4;
+        basis10$kp5 = kp5;
+        basis10$kp7 = kp7;
+        basis10$km1 = km1;
+        basis10$km3 = km3;
+        basis10$km4 = km4;
+        basis10$km5 = km5;
+        basis10$km7 = km7;
+        basis10$dx_neg = dx_neg;
+        basis10$dx_mag = dx_mag;
+        basis10$dy_neg = dy_neg;
+        basis10$dy_mag = dy_mag;
+        basis10$weights = weights10;
+        basis10$basis_x = basis10_x;
+        basis10$basis_y = basis10_y;
+        basis10$basis_z = basis10_z;
+        if (n26) begin
+            gx_q$2$d = sums26$gx;
+            gy_q$2$d = sums26$gy;
+            gr_q$2$d = sums26$gr;
+        end
         dx_neg_q$0$d = dx_neg;
         dx_mag_q$0$d = dx_mag;
         dy_neg_q$0$d = dy_neg;
@@ -1014,6 +1198,11 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
             sat_y$v = 64'(gy_q$3$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        if (n10) begin
+            sat_x$v = basis10$gx;
+            sat_y$v = basis10$gy;
+            sat_z$v = basis10$gz;
+        end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
         gz_out$d = sat_z$y;
@@ -3291,6 +3480,9 @@ module top$pipeline$abc$estimators$0$px(g,d_neg,d_mag,y);
     input wire  [15:0] d_mag;
     output reg  [63:0] y;
     
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
     // Local signals
     reg  [31:0] mag;
     reg  [63:0] prod;
@@ -3302,7 +3494,10 @@ module top$pipeline$abc$estimators$0$px(g,d_neg,d_mag,y);
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
-        prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        prod = 64'(mag[('h0)+:(16)] * d_mag);
+        if (wide) begin
+            prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        end
         y_pass = prod;
         if (g['h1f] ^ d_neg) begin
             y_pass = ~prod + 'h1;
@@ -3336,6 +3531,9 @@ module top$pipeline$abc$estimators$0$py(g,d_neg,d_mag,y);
     input wire  [15:0] d_mag;
     output reg  [63:0] y;
     
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
     // Local signals
     reg  [31:0] mag;
     reg  [63:0] prod;
@@ -3347,7 +3545,10 @@ module top$pipeline$abc$estimators$0$py(g,d_neg,d_mag,y);
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
-        prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        prod = 64'(mag[('h0)+:(16)] * d_mag);
+        if (wide) begin
+            prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        end
         y_pass = prod;
         if (g['h1f] ^ d_neg) begin
             y_pass = ~prod + 'h1;
@@ -3469,7 +3670,7 @@ module top$pipeline$abc$estimators$0$sat_z(v,y);
     end
     
 endmodule // top$pipeline$abc$estimators$0$sat_z
-module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,kp6,kp7,kp8,km0,km1,km2,km3,km4,km5,km6,km7,km8,dx_neg,dx_mag,dy_neg,dy_mag,centre,sample,gx,gy,gz);
+module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,kp6,kp7,kp8,km0,km1,km2,km3,km4,km5,km6,km7,km8,c0,c2,c6,c8,weights10,basis10_x,basis10_y,basis10_z,dx_neg,dx_mag,dy_neg,dy_mag,centre,sample,gx,gy,gz);
     
     // Module arguments
     input wire  clock;
@@ -3495,6 +3696,14 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     input wire  [31:0] km6;
     input wire  [31:0] km7;
     input wire  [31:0] km8;
+    input wire  [31:0] c0;
+    input wire  [31:0] c2;
+    input wire  [31:0] c6;
+    input wire  [31:0] c8;
+    input wire  [63:0] weights10;
+    input wire  [63:0] basis10_x;
+    input wire  [63:0] basis10_y;
+    input wire  [63:0] basis10_z;
     input wire  dx_neg;
     input wire  [15:0] dx_mag;
     input wire  dy_neg;
@@ -3507,11 +3716,69 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     
     // Constant declarations
     localparam  n12 = 1'b1;
+    localparam  n26 = 1'b0;
+    localparam  n10 = 1'b0;
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  sign_ext = 64'hffffffff00000000;
     
     // Stub signals
+    reg  sums26$clock;
+    reg  [31:0] sums26$xp;
+    reg  [31:0] sums26$xm;
+    reg  [31:0] sums26$yp;
+    reg  [31:0] sums26$ym;
+    reg  [31:0] sums26$c0;
+    reg  [31:0] sums26$c2;
+    reg  [31:0] sums26$c6;
+    reg  [31:0] sums26$c8;
+    reg  [31:0] sums26$kp0;
+    reg  [31:0] sums26$kp1;
+    reg  [31:0] sums26$kp2;
+    reg  [31:0] sums26$kp3;
+    reg  [31:0] sums26$kp4;
+    reg  [31:0] sums26$kp5;
+    reg  [31:0] sums26$kp6;
+    reg  [31:0] sums26$kp7;
+    reg  [31:0] sums26$kp8;
+    reg  [31:0] sums26$km0;
+    reg  [31:0] sums26$km1;
+    reg  [31:0] sums26$km2;
+    reg  [31:0] sums26$km3;
+    reg  [31:0] sums26$km4;
+    reg  [31:0] sums26$km5;
+    reg  [31:0] sums26$km6;
+    reg  [31:0] sums26$km7;
+    reg  [31:0] sums26$km8;
+    wire  [31:0] sums26$gx = 'h0;
+    wire  [31:0] sums26$gy = 'h0;
+    wire  [31:0] sums26$gr = 'h0;
+    reg  basis10$clock;
+    reg  [31:0] basis10$xp;
+    reg  [31:0] basis10$xm;
+    reg  [31:0] basis10$yp;
+    reg  [31:0] basis10$ym;
+    reg  [31:0] basis10$kp1;
+    reg  [31:0] basis10$kp3;
+    reg  [31:0] basis10$kp4;
+    reg  [31:0] basis10$kp5;
+    reg  [31:0] basis10$kp7;
+    reg  [31:0] basis10$km1;
+    reg  [31:0] basis10$km3;
+    reg  [31:0] basis10$km4;
+    reg  [31:0] basis10$km5;
+    reg  [31:0] basis10$km7;
+    reg  basis10$dx_neg;
+    reg  [15:0] basis10$dx_mag;
+    reg  basis10$dy_neg;
+    reg  [15:0] basis10$dy_mag;
+    reg  [63:0] basis10$weights;
+    reg  [63:0] basis10$basis_x;
+    reg  [63:0] basis10$basis_y;
+    reg  [63:0] basis10$basis_z;
+    wire  [63:0] basis10$gx = 'h0;
+    wire  [63:0] basis10$gy = 'h0;
+    wire  [63:0] basis10$gz = 'h0;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -3982,6 +4249,61 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        sums26$clock = clock;
+        sums26$xp = xp;
+        sums26$xm = xm;
+        sums26$yp = yp;
+        sums26$ym = ym;
+        sums26$c0 = c0;
+        sums26$c2 = c2;
+        sums26$c6 = c6;
+        sums26$c8 = c8;
+        sums26$kp0 = kp0;
+        sums26$kp1 = kp1;
+        sums26$kp2 = kp2;
+        sums26$kp3 = kp3;
+        sums26$kp4 = kp4;
+        sums26$kp5 = kp5;
+        sums26$kp6 = kp6;
+        sums26$kp7 = kp7;
+        sums26$kp8 = kp8;
+        sums26$km0 = km0;
+        sums26$km1 = km1;
+        sums26$km2 = km2;
+        sums26$km3 = km3;
+        sums26$km4 = km4;
+        sums26$km5 = km5;
+        sums26$km6 = km6;
+        sums26$km7 = km7;
+        sums26$km8 = km8;
+        basis10$clock = clock;
+        basis10$xp = xp;
+        basis10$xm = xm;
+        basis10$yp = yp;
+        basis10$ym = ym;
+        basis10$kp1 = kp1;
+        basis10$kp3 = kp3;
+        basis10$kp4 = kp4;
+        basis10$kp5 = kp5;
+        basis10$kp7 = kp7;
+        basis10$km1 = km1;
+        basis10$km3 = km3;
+        basis10$km4 = km4;
+        basis10$km5 = km5;
+        basis10$km7 = km7;
+        basis10$dx_neg = dx_neg;
+        basis10$dx_mag = dx_mag;
+        basis10$dy_neg = dy_neg;
+        basis10$dy_mag = dy_mag;
+        basis10$weights = weights10;
+        basis10$basis_x = basis10_x;
+        basis10$basis_y = basis10_y;
+        basis10$basis_z = basis10_z;
+        if (n26) begin
+            gx_q$2$d = sums26$gx;
+            gy_q$2$d = sums26$gy;
+            gr_q$2$d = sums26$gr;
+        end
         dx_neg_q$0$d = dx_neg;
         dx_mag_q$0$d = dx_mag;
         dy_neg_q$0$d = dy_neg;
@@ -4092,6 +4414,11 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
             sat_y$v = 64'(gy_q$3$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        if (n10) begin
+            sat_x$v = basis10$gx;
+            sat_y$v = basis10$gy;
+            sat_z$v = basis10$gz;
+        end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
         gz_out$d = sat_z$y;
@@ -6369,6 +6696,9 @@ module top$pipeline$abc$estimators$1$px(g,d_neg,d_mag,y);
     input wire  [15:0] d_mag;
     output reg  [63:0] y;
     
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
     // Local signals
     reg  [31:0] mag;
     reg  [63:0] prod;
@@ -6380,7 +6710,10 @@ module top$pipeline$abc$estimators$1$px(g,d_neg,d_mag,y);
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
-        prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        prod = 64'(mag[('h0)+:(16)] * d_mag);
+        if (wide) begin
+            prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        end
         y_pass = prod;
         if (g['h1f] ^ d_neg) begin
             y_pass = ~prod + 'h1;
@@ -6414,6 +6747,9 @@ module top$pipeline$abc$estimators$1$py(g,d_neg,d_mag,y);
     input wire  [15:0] d_mag;
     output reg  [63:0] y;
     
+    // Constant declarations
+    localparam  wide = 1'b0;
+    
     // Local signals
     reg  [31:0] mag;
     reg  [63:0] prod;
@@ -6425,7 +6761,10 @@ module top$pipeline$abc$estimators$1$py(g,d_neg,d_mag,y);
         if (g['h1f]) begin
             mag = ~g + 'h1;
         end
-        prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        prod = 64'(mag[('h0)+:(16)] * d_mag);
+        if (wide) begin
+            prod = (64'(mag[('h10)+:(16)] * d_mag) << 'h10) + 64'(mag[('h0)+:(16)] * d_mag);
+        end
         y_pass = prod;
         if (g['h1f] ^ d_neg) begin
             y_pass = ~prod + 'h1;

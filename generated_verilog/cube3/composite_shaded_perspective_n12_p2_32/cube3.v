@@ -185,6 +185,9 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     wire  leaf_valid_q$1$q;
     reg  leaf_valid_q$1$clock;
     reg  abc$clock;
+    reg  abc$host_write;
+    reg  [23:0] abc$host_address;
+    reg  [63:0] abc$host_data;
     reg  [15:0] abc$ray_last;
     reg  [15:0] abc$line_last;
     reg  [31:0] abc$sample$0;
@@ -480,6 +483,9 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     );
     top$pipeline$abc abc(
         .clock(abc$clock),
+        .host_write(abc$host_write),
+        .host_address(abc$host_address),
+        .host_data(abc$host_data),
         .ray_last(abc$ray_last),
         .line_last(abc$line_last),
         .sample$0(abc$sample$0),
@@ -581,6 +587,9 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         control$host_data = host_data;
         lanes$clock = clock;
         abc$clock = clock;
+        abc$host_write = host_write;
+        abc$host_address = host_address;
+        abc$host_data = host_data;
         rpc$clock = clock;
         flags_line$clock = clock;
         rpc_flags_q$clock = clock;
@@ -1242,15 +1251,15 @@ module top$pipeline$opacity$0$ram(read_address,read_clock,read_data,write_addres
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[1:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[0:0]];
+       read_data <= {24'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[0:0]] <= write_data;
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$pipeline$opacity$0$ram
@@ -1313,15 +1322,15 @@ module top$pipeline$opacity$1$ram(read_address,read_clock,read_data,write_addres
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[1:0];
+    reg [7:0] mem[1:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[0:0]];
+       read_data <= {24'd0, mem[read_address[0:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[0:0]] <= write_data;
+          mem[write_address[0:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$pipeline$opacity$1$ram

@@ -96,7 +96,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [23:0] group$host_address;
     reg  [63:0] group$host_data;
     reg  [15:0] group$u0;
-    reg  [15:0] group$chunk;
+    reg  [23:0] group$chunk;
     reg  [15:0] group$plane_count;
     wire  [15:0] group$plane;
     wire  [15:0] group$first_ray;
@@ -108,7 +108,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  pos_y$host_write;
     reg  [23:0] pos_y$host_address;
     reg  [63:0] pos_y$host_data;
-    reg  [15:0] pos_y$address;
+    reg  [17:0] pos_y$address;
     wire  [15:0] pos_y$data;
     reg  regs$clock;
     reg  regs$host_write;
@@ -122,7 +122,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  schedule$start;
     wire  schedule$writing;
     wire  [15:0] schedule$plane;
-    wire  [15:0] schedule$chunk;
+    wire  [23:0] schedule$chunk;
     wire  [15:0] schedule$period;
     wire  [1:0] schedule$write_buffer;
     wire  schedule$reading;
@@ -474,7 +474,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         group$chunk = schedule$chunk;
         group$plane_count = schedule$plane;
         row_entry = schedule$period * row_stride + 32'(group$plane);
-        pos_y$address = row_entry[('h0)+:(16)];
+        pos_y$address = row_entry[('h0)+:(18)];
         row = v0 + schedule$period + pos_y$data;
         lane_ray$0 = group$first_ray + index$0;
         lane_inside$0 = group$holds$0 & ~group$x$0['hf] & (group$x$0 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
@@ -752,15 +752,15 @@ module top$fetch$buffer0$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer0$0
@@ -776,15 +776,15 @@ module top$fetch$buffer0$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer0$1
@@ -800,15 +800,15 @@ module top$fetch$buffer1$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer1$0
@@ -824,15 +824,15 @@ module top$fetch$buffer1$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer1$1
@@ -848,15 +848,15 @@ module top$fetch$buffer2$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer2$0
@@ -872,15 +872,15 @@ module top$fetch$buffer2$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[66047:0];
+    reg [7:0] mem[66047:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[16:0]];
+       read_data <= {8'd0, mem[read_address[16:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[16:0]] <= write_data;
+          mem[write_address[16:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer2$1
@@ -926,7 +926,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
     input wire  [23:0] host_address;
     input wire  [63:0] host_data;
     input wire  [15:0] u0;
-    input wire  [15:0] chunk;
+    input wire  [23:0] chunk;
     input wire  [15:0] plane_count;
     output reg  [15:0] plane;
     output reg  [15:0] first_ray;
@@ -952,19 +952,19 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
     reg  groups$host_write;
     reg  [23:0] groups$host_address;
     reg  [63:0] groups$host_data;
-    reg  [15:0] groups$address;
+    reg  [17:0] groups$address;
     wire  [31:0] groups$data = 'h0;
     reg  group_x$0$clock;
     reg  group_x$0$host_write;
     reg  [23:0] group_x$0$host_address;
     reg  [63:0] group_x$0$host_data;
-    reg  [15:0] group_x$0$address;
+    reg  [17:0] group_x$0$address;
     wire  [16:0] group_x$0$data = 'h0;
     reg  group_x$1$clock;
     reg  group_x$1$host_write;
     reg  [23:0] group_x$1$host_address;
     reg  [63:0] group_x$1$host_data;
-    reg  [15:0] group_x$1$address;
+    reg  [17:0] group_x$1$address;
     wire  [16:0] group_x$1$data = 'h0;
     
     // Local signals
@@ -998,8 +998,8 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         groups$host_address = host_address;
         groups$host_data = host_data;
         pos_x$address = plane_count[('h0)+:(10)];
-        groups$address = chunk;
-        chunk_ray = chunk << shift;
+        groups$address = chunk[('h0)+:(18)];
+        chunk_ray = chunk[('h0)+:(16)] << shift;
         x0 = u0 + pos_x$data + chunk_ray;
         plane_pass = plane_count;
         first_ray_pass = chunk_ray;
@@ -1011,7 +1011,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$0$host_write = host_write;
         group_x$0$host_address = host_address;
         group_x$0$host_data = host_data;
-        group_x$0$address = chunk;
+        group_x$0$address = chunk[('h0)+:(18)];
         x$0_pass = x0 + index$0;
         holds$0_pass = 1'b1;
         if (perspective) begin
@@ -1022,7 +1022,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$1$host_write = host_write;
         group_x$1$host_address = host_address;
         group_x$1$host_data = host_data;
-        group_x$1$address = chunk;
+        group_x$1$address = chunk[('h0)+:(18)];
         x$1_pass = x0 + index$1;
         holds$1_pass = 1'b1;
         if (perspective) begin
@@ -1273,7 +1273,7 @@ module top$fetch$pos_y(clock,host_write,host_address,host_data,address,data);
     input wire  host_write;
     input wire  [23:0] host_address;
     input wire  [63:0] host_data;
-    input wire  [15:0] address;
+    input wire  [17:0] address;
     output reg  [15:0] data;
     
     // Update code (custom)
@@ -1286,7 +1286,7 @@ module top$fetch$pos_y(clock,host_write,host_address,host_data,address,data);
     always @(*) data = mem[address[8:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd524288 && host_address < 24'd524800) begin
+       if (host_write && host_address >= 24'd2097152 && host_address < 24'd2097664) begin
           mem[host_address[8:0]] <= host_data[15:0];
        end
     end
@@ -1500,7 +1500,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
     input wire  start;
     output reg  writing;
     output reg  [15:0] plane;
-    output reg  [15:0] chunk;
+    output reg  [23:0] chunk;
     output reg  [15:0] period;
     output reg  [1:0] write_buffer;
     output reg  reading;
@@ -1525,8 +1525,8 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
     reg  active$d;
     wire  active$q;
     reg  active$clock;
-    reg  [15:0] tick$d;
-    wire  [15:0] tick$q;
+    reg  [23:0] tick$d;
+    wire  [23:0] tick$q;
     reg  tick$clock;
     reg  [15:0] period_q$d;
     wire  [15:0] period_q$q;
@@ -1534,8 +1534,8 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
     reg  [15:0] plane_q$d;
     wire  [15:0] plane_q$q;
     reg  plane_q$clock;
-    reg  [15:0] chunk_q$d;
-    wire  [15:0] chunk_q$q;
+    reg  [23:0] chunk_q$d;
+    wire  [23:0] chunk_q$q;
     reg  chunk_q$clock;
     reg  [15:0] ray_q$d;
     wire  [15:0] ray_q$q;
@@ -1560,10 +1560,10 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
     reg  n_q$clock;
     
     // Local signals
-    reg  [15:0] last_tick;
+    reg  [23:0] last_tick;
     reg  [15:0] last_write_period;
     reg  [15:0] last_plane;
-    reg  [15:0] last_chunk;
+    reg  [23:0] last_chunk;
     reg  [15:0] last_ray;
     reg  [15:0] last_segment;
     reg  [15:0] last_period;
@@ -1671,9 +1671,9 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
         last_ray = regs$q$0[('h0)+:(16)] - 'h1;
         last_write_period = regs$q$0[('h10)+:(16)];
         last_segment = regs$q$0[('h20)+:(16)] - 'h1;
-        last_tick = regs$q$1[('h0)+:(16)];
-        last_chunk = regs$q$1[('h10)+:(16)];
-        last_plane = regs$q$1[('h20)+:(16)];
+        last_tick = regs$q$1[('h0)+:(24)];
+        last_chunk = regs$q$1[('h18)+:(24)];
+        last_plane = regs$q$1[('h30)+:(16)];
         last_period = last_write_period + 'h1;
         writing = active$q & ~written$q & (period_q$q <= last_write_period);
         reading = active$q & ~read$q & (period_q$q >= first_read_period);
@@ -1778,13 +1778,13 @@ endmodule // top$fetch$schedule$c_q
 module top$fetch$schedule$chunk_q(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 24'h0;
     end
     
     always @(posedge clock) begin
@@ -1982,13 +1982,13 @@ endmodule // top$fetch$schedule$segment_q
 module top$fetch$schedule$tick(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 24'h0;
     end
     
     always @(posedge clock) begin

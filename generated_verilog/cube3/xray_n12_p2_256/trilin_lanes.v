@@ -480,6 +480,7 @@ module top$pipeline$lanes$cur_line$0$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[126:0];
     
     always @(posedge read_clock) begin
@@ -654,6 +655,7 @@ module top$pipeline$lanes$cur_line$1$ram(read_address,read_clock,read_data,write
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[126:0];
     
     always @(posedge read_clock) begin
@@ -896,6 +898,7 @@ module top$pipeline$lanes$next_line$0$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[126:0];
     
     always @(posedge read_clock) begin
@@ -1070,6 +1073,7 @@ module top$pipeline$lanes$next_line$1$ram(read_address,read_clock,read_data,writ
     input wire  write_enable;
     
     // Update code (custom)
+    (* ram_style = "distributed" *)
     reg [15:0] mem[126:0];
     
     always @(posedge read_clock) begin
