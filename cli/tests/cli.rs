@@ -1079,11 +1079,11 @@ fn cube3_sim_verilog_and_their_refusals() {
     // One design for both base planes: the view is the host's.
     assert_eq!(m["designs"].as_array().map(|b| b.len()), Some(1));
     assert!(d.path().join("pv/beam_fetch.v").exists());
-    // What the RTL does not build: the 10-neighbourhood.
+    // What the RTL does not build: the 10-neighbourhood in perspective.
     let n10 = write(
         d.path(),
         "c.json",
-        r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "parallel", "rotate_deg": [25, 35, 0]},
+        r#"{"volume": {"builtin": "phantom", "dims": [10, 9, 8]}, "view": {"projection": "perspective", "eye": [-12, -5, -12], "target": [4.5, 4, 3.5], "fov_deg": 60},
             "mode": "composite", "hardware": {"pipelines": 2}, "cube3": {"gradient": 10}}"#,
     );
     for cmd in ["sim", "verilog"] {
@@ -1092,7 +1092,7 @@ fn cube3_sim_verilog_and_their_refusals() {
                 &[cmd, "--arch", "cube3", "--scene", &n10, "--out", "w"],
                 d.path(),
             ),
-            "is not built in hardware (the 6, 12 or 26)",
+            "cube3.gradient 10 is built in hardware for parallel views only",
         );
     }
 }

@@ -958,6 +958,8 @@ mod tests {
     fn configuration_names_read_back() {
         for name in [
             "composite_shaded_n12_p4_32",
+            "composite_shaded_n26_p4_32",
+            "composite_shaded_n10_p2_16",
             "first_opaque_gm_perspective_n6_p2_20",
             "minip_n12_p8_256_v16_c12",
             "xray_n12_p2_256",
@@ -971,7 +973,7 @@ mod tests {
         );
         for (bad, why) in [
             ("mip_n12_p4", "the largest volume side"),
-            ("mip_n26_p4_32", "26-neighbourhood"),
+            ("mip_n8_p4_32", "8-neighbourhood"),
             ("glow_n12_p4_32", "the mode is"),
             ("mip_n12_p4_32_q3", "unknown field 'q3'"),
             ("mip_shaded_n12_p4_32_v8", "it reads as"),

@@ -18,8 +18,14 @@ static RUNNING: Mutex<Vec<u32>> = Mutex::new(Vec::new());
 /// A started tool's listing in [`RUNNING`], until it is dropped.
 struct Running(u32);
 
-/// Start `cmd` with its output piped, listed in [`RUNNING`].
+/// Start `cmd` with its output piped, listed in [`RUNNING`]. A tool run
+/// in a work directory keeps its own temporary files there (`TMPDIR`), so
+/// that removing the work removes them, even from a tool that was killed
+/// (the WebAssembly builds unpack into `$TMPDIR/yowasp_*`).
 fn spawn(cmd: &mut Command, what: &str) -> Result<(Child, Running), String> {
+    if let Some(dir) = cmd.get_current_dir().map(Path::to_path_buf) {
+        cmd.env("TMPDIR", dir);
+    }
     let child = cmd
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
