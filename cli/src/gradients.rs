@@ -1,14 +1,15 @@
 //! `cube gradients`: the Cube-3 paper's Fig. 15. The built-in volume-sampled
 //! sphere turns about the vertical axis; at each angle, every cast ray's
-//! first sample at or above the threshold gives one gradient per ABC
-//! neighbourhood (6, 10, 12, 26), and the mean angle between the estimated
-//! normal (the negated gradient) and the sphere's analytic normal is
-//! reported per neighbourhood, with a plot.
+//! threshold crossing (interpolated between samples, or the first sample
+//! past it) gives one gradient per ABC neighbourhood (6, 10, 12, 26), and
+//! the mean angle between the estimated normal (the negated gradient) and
+//! the sphere's analytic normal is reported per neighbourhood, with the
+//! basis correction and without it (the 12 needs none), with a plot.
 
 use crate::common::{angle_sweep, load};
 use crate::output::{write_json, write_png_rgb8, Files};
 use anyhow::{bail, Context, Result};
-use golden_model::cube3::surface::{crossings, ALL};
+use golden_model::cube3::surface::{crossings, At, ALL};
 use plotters::prelude::*;
 use serde_json::json;
 use std::path::PathBuf;
@@ -24,12 +25,30 @@ pub struct GradientsArgs {
     /// Threshold in voxel units; default half of full scale.
     #[arg(long)]
     threshold: Option<u32>,
+    /// Where a ray's crossing is taken: `interpolated` between the samples
+    /// on either side of the threshold (as §6.2 measures, at the surface),
+    /// or the `first` sample past it.
+    #[arg(long, value_enum, default_value_t = CrossingAt::Interpolated)]
+    crossing: CrossingAt,
     #[arg(long)]
     json: Option<PathBuf>,
-    /// The four curves (PNG).
+    /// The curves (PNG), with the paper's 3° for the 12.
     #[arg(long)]
     plot: Option<PathBuf>,
 }
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum CrossingAt {
+    Interpolated,
+    First,
+}
+
+/// The neighbourhoods whose basis correction can be left out (the 12 has
+/// none), by index in `ALL`.
+const CORRECTED: [usize; 3] = [0, 1, 3];
+
+/// The paper's Fig. 15: the 12's error, "flat at about 3°".
+const PAPER_12_DEG: f64 = 3.0;
 
 pub fn run(args: GradientsArgs) -> Result<()> {
     let angles = angle_sweep(&args.range)?;
@@ -59,24 +78,39 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     let offset = scene.volume.crop.map_or([0; 3], |c| c.offset);
     let centre = centre - glam::DVec3::from_array(offset.map(|o| o as f64));
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
+    let at = match args.crossing {
+        CrossingAt::Interpolated => At::Interpolated,
+        CrossingAt::First => At::FirstSample,
+    };
     println!(
-        "{:>7} {:>8} {:>8} {:>8} {:>8} {:>9}",
-        "angle", "6", "10", "12", "26", "crossings"
+        "mean angle to the analytic normal, degrees; crossings {}; u: without the basis correction",
+        match at {
+            At::Interpolated => "interpolated at the threshold",
+            At::FirstSample => "at the first sample past the threshold",
+        }
+    );
+    println!(
+        "{:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>9}",
+        "angle", "6", "10", "12", "26", "6u", "10u", "26u", "crossings"
     );
     let mut rows = Vec::new();
-    let mut curves = vec![Vec::new(); 4];
+    let mut curves = vec![Vec::new(); 4 + CORRECTED.len()];
     for &a in &angles {
         let scene = base_scene.with(|s| s.view.rotate_deg = Some([base[0], a, base[2]]))?;
         let cam = scene.camera();
-        let xs = crossings(&scene, &cam, &vol, threshold)?;
-        let mut sum = [0.0f64; 4];
-        let mut count = [0u64; 4];
+        let xs = crossings(&scene, &cam, &vol, threshold, at)?;
+        // Per curve: the four corrected, then the uncorrected 6, 10, 26.
+        let mut sum = [0.0f64; 7];
+        let mut count = [0u64; 7];
         for c in &xs {
             let n = (c.position - centre).normalize_or_zero();
-            for (j, g) in c.gradients.iter().enumerate() {
+            let estimates = (0..4)
+                .map(|j| c.gradients[j])
+                .chain(CORRECTED.map(|j| c.uncorrected[j]));
+            for (i, g) in estimates.enumerate() {
                 if g.length() > 0.0 && n.length() > 0.0 {
-                    sum[j] += (-g.normalize()).dot(n).clamp(-1.0, 1.0).acos().to_degrees();
-                    count[j] += 1;
+                    sum[i] += (-g.normalize()).dot(n).clamp(-1.0, 1.0).acos().to_degrees();
+                    count[i] += 1;
                 }
             }
         }
@@ -89,22 +123,26 @@ pub fn run(args: GradientsArgs) -> Result<()> {
                 xs.len()
             );
         }
-        let mean: [f64; 4] = std::array::from_fn(|j| sum[j] / count[j] as f64);
+        let mean: [f64; 7] = std::array::from_fn(|i| sum[i] / count[i].max(1) as f64);
         println!(
-            "{a:>7.2} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>9}",
+            "{a:>7.2} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>7.3} {:>9}",
             mean[0],
             mean[1],
             mean[2],
             mean[3],
+            mean[4],
+            mean[5],
+            mean[6],
             xs.len()
         );
-        for j in 0..4 {
-            curves[j].push((a, mean[j]));
+        for (curve, m) in curves.iter_mut().zip(mean) {
+            curve.push((a, m));
         }
         rows.push(json!({
             "angle": a,
             "crossings": xs.len(),
             "mean_error_deg": {"6": mean[0], "10": mean[1], "12": mean[2], "26": mean[3]},
+            "uncorrected_mean_error_deg": {"6": mean[4], "10": mean[5], "26": mean[6]},
         }));
     }
     if let Some(p) = &args.plot {
@@ -117,7 +155,12 @@ pub fn run(args: GradientsArgs) -> Result<()> {
             &json!({
                 "scene": args.scene.display().to_string(),
                 "threshold": threshold,
+                "crossing": match at {
+                    At::Interpolated => "interpolated",
+                    At::FirstSample => "first sample",
+                },
                 "neighbourhoods": ALL.map(|n| n.count()),
+                "paper_12_deg": PAPER_12_DEG,
                 "rows": rows,
             }),
         )?;
@@ -128,7 +171,8 @@ pub fn run(args: GradientsArgs) -> Result<()> {
 const PLOT_W: u32 = 800;
 const PLOT_H: u32 = 500;
 
-/// Draw the four curves (mean error in degrees against angle).
+/// Draw the curves (mean error in degrees against angle) and the paper's
+/// level for the 12.
 fn plot(curves: &[Vec<(f64, f64)>], from: f64, to: f64) -> Result<Vec<u8>> {
     // Text needs a font that every machine has: DejaVu Sans, embedded.
     plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
@@ -137,7 +181,12 @@ fn plot(curves: &[Vec<(f64, f64)>], from: f64, to: f64) -> Result<Vec<u8>> {
     {
         let root = BitMapBackend::with_buffer(&mut buf, (PLOT_W, PLOT_H)).into_drawing_area();
         root.fill(&WHITE)?;
-        let top = curves.iter().flatten().map(|p| p.1).fold(1.0, f64::max) * 1.1;
+        let top = curves
+            .iter()
+            .flatten()
+            .map(|p| p.1)
+            .fold(PAPER_12_DEG, f64::max)
+            * 1.1;
         let mut chart = ChartBuilder::on(&root)
             .caption(
                 "ABC gradient error against the analytic sphere normal",
@@ -153,15 +202,35 @@ fn plot(curves: &[Vec<(f64, f64)>], from: f64, to: f64) -> Result<Vec<u8>> {
             .y_desc("mean angular error (degrees)")
             .draw()?;
         let colours = [RED, BLUE, GREEN, MAGENTA];
-        for (j, c) in curves.iter().enumerate() {
-            let colour = colours[j];
+        for (i, c) in curves.iter().enumerate() {
+            // The corrected curves solid, the uncorrected ones thin, in
+            // their neighbourhood's colour.
+            let (j, corrected) = if i < 4 {
+                (i, true)
+            } else {
+                (CORRECTED[i - 4], false)
+            };
+            let style = colours[j].stroke_width(if corrected { 2 } else { 1 });
+            let label = format!(
+                "{}-neighbourhood{}",
+                ALL[j].count(),
+                if corrected { "" } else { ", uncorrected" }
+            );
             chart
-                .draw_series(LineSeries::new(c.iter().copied(), colour.stroke_width(2)))?
-                .label(format!("{}-neighbourhood", ALL[j].count()))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                });
+                .draw_series(LineSeries::new(c.iter().copied(), style))?
+                .label(label)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
         }
+        let paper = BLACK.mix(0.6).stroke_width(1);
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(from, PAPER_12_DEG), (to, PAPER_12_DEG)],
+                6,
+                4,
+                paper,
+            ))?
+            .label("paper: the 12, about 3°")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], paper));
         chart
             .configure_series_labels()
             .background_style(WHITE.mix(0.8))

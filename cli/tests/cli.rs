@@ -656,33 +656,40 @@ fn cube3_bad_input_names_the_field() {
 
 #[test]
 fn committed_fig15_is_current() {
-    // docs/cube3/fig15.{json,png} are `cube gradients` output; regenerate
-    // with the command in the README when this fails.
+    // docs/cube3/fig15*.{json,png} are `cube gradients` output for two
+    // sphere sizes; regenerate with the commands in docs/accuracy.md when
+    // this fails.
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
     let d = tempfile::tempdir().unwrap();
-    let (j, p) = (d.path().join("f.json"), d.path().join("f.png"));
-    let o = cube(
-        &[
-            "gradients",
-            "--scene",
-            "scenes/fig15_sphere.json",
-            "--json",
-            j.to_str().unwrap(),
-            "--plot",
-            p.to_str().unwrap(),
-        ],
-        root,
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let mut got = read_json(&j);
-    let mut want = read_json(&root.join("docs/cube3/fig15.json"));
-    got["scene"] = serde_json::Value::Null;
-    want["scene"] = serde_json::Value::Null;
-    assert_eq!(got, want, "docs/cube3/fig15.json is stale");
-    assert!(
-        std::fs::read(&p).unwrap() == std::fs::read(root.join("docs/cube3/fig15.png")).unwrap(),
-        "docs/cube3/fig15.png is stale"
-    );
+    for (scene, stem) in [
+        ("scenes/fig15_sphere.json", "fig15"),
+        ("scenes/fig15_sphere_128.json", "fig15_128"),
+    ] {
+        let (j, p) = (d.path().join("f.json"), d.path().join("f.png"));
+        let o = cube(
+            &[
+                "gradients",
+                "--scene",
+                scene,
+                "--json",
+                j.to_str().unwrap(),
+                "--plot",
+                p.to_str().unwrap(),
+            ],
+            root,
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let got = read_json(&j);
+        let want = read_json(&root.join(format!("docs/cube3/{stem}.json")));
+        assert_eq!(got, want, "docs/cube3/{stem}.json is stale");
+        assert!(
+            std::fs::read(&p).unwrap()
+                == std::fs::read(root.join(format!("docs/cube3/{stem}.png"))).unwrap(),
+            "docs/cube3/{stem}.png is stale"
+        );
+        std::fs::remove_file(&j).unwrap();
+        std::fs::remove_file(&p).unwrap();
+    }
 }
 
 #[test]

@@ -593,8 +593,26 @@ impl SceneSpec {
                 if self.volume.kind.is_some() || self.volume.window.is_some() {
                     return Err(scene_err("'type' and 'window' apply only to raw volumes"));
                 }
+                if let Some(w) = self.volume.shell {
+                    if b != "sphere" {
+                        return Err(scene_err(
+                            "volume.shell applies only to the built-in sphere",
+                        ));
+                    }
+                    if !(0.5..=crate::volume::MAX_SHELL).contains(&w) {
+                        return Err(scene_err(format!(
+                            "volume.shell {w} must lie in 0.5..={} voxels",
+                            crate::volume::MAX_SHELL
+                        )));
+                    }
+                }
             }
             (None, Some(_)) => {
+                if self.volume.shell.is_some() {
+                    return Err(scene_err(
+                        "volume.shell applies only to the built-in sphere",
+                    ));
+                }
                 if self.volume.kind.is_none() {
                     return Err(scene_err("raw volume needs 'type' (u8, u16 or i16)"));
                 }
@@ -758,6 +776,18 @@ mod tests {
             "[16,16,16], \"crop\": {\"offset\": [8, 0, 0], \"dims\": [9, 4, 4]}}",
         );
         assert!(err_of(&crop).contains("crop"));
+        for (shell, why) in [("0.1", "must lie in"), ("17", "must lie in")] {
+            let text = MIN.replace("[16,16,16]}", &format!("[16,16,16], \"shell\": {shell}}}"));
+            let e = err_of(&text);
+            assert!(
+                e.contains("volume.shell") && e.contains(why),
+                "{shell}: {e}"
+            );
+        }
+        let ramp = MIN
+            .replace("sphere\"", "ramp\"")
+            .replace("[16,16,16]}", "[16,16,16], \"shell\": 2}");
+        assert!(err_of(&ramp).contains("only to the built-in sphere"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"voxel_bits\": 10}}");
         assert!(err_of(&hw).contains("voxel_bits"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"rgba_bits\": 16}}");

@@ -18,7 +18,16 @@ pub struct VolumeSpec {
     pub window: Option<[f64; 2]>,
     /// Optional sub-box of the loaded volume; the scene then renders it alone.
     pub crop: Option<Crop>,
+    /// The built-in sphere's shell: the width in voxels of its
+    /// volume-sampling ramp (default [`SPHERE_SHELL`]).
+    pub shell: Option<f64>,
 }
+
+/// The built-in sphere's default shell: a one-voxel box filter.
+pub const SPHERE_SHELL: f64 = 1.0;
+
+/// The widest shell a scene may ask for, in voxels.
+pub const MAX_SHELL: f64 = 16.0;
 
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
 #[serde(deny_unknown_fields)]
@@ -66,7 +75,7 @@ pub struct Volume {
 
 /// Built-in volumes: name and one-line description.
 pub const BUILTINS: &[(&str, &str)] = &[
-    ("sphere", "volume-sampled (anti-aliased) solid sphere, radius 0.4 of the smallest side, analytic normals known"),
+    ("sphere", "volume-sampled (anti-aliased) solid sphere, radius 0.4 of the smallest side, analytic normals known; its shell a ramp of 'shell' voxels (default 1)"),
     ("phantom", "head-like phantom: skull shell, brain, ventricles and a dense lesion"),
     ("head", "anatomical head facing +z, top at +y: skin, skull with orbits, nasal aperture, cheekbones, jaw and teeth, brain and ventricles, neck and spine; every boundary a straight ramp about 4 voxels wide, so it renders without terraces"),
     ("checkerboard", "alternating empty and full-scale cubes, 8 per side"),
@@ -116,6 +125,9 @@ impl Volume {
 
     fn load_whole(spec: &VolumeSpec, bits: u32) -> Result<Volume> {
         match (&spec.builtin, &spec.raw) {
+            (Some(name), None) if name == "sphere" => {
+                Ok(sphere(spec.dims, bits, spec.shell.unwrap_or(SPHERE_SHELL)))
+            }
             (Some(name), None) => builtin(name, spec.dims, bits),
             (None, Some(path)) => {
                 let kind = spec
@@ -245,6 +257,13 @@ fn fill(dims: [usize; 3], bits: u32, f: impl Fn(DVec3) -> f64 + Sync) -> Volume 
 /// (negative inside): the volume-sampling ramp of one voxel width.
 fn coverage(d: f64) -> f64 {
     (0.5 - d).clamp(0.0, 1.0)
+}
+
+/// The built-in sphere ([`sphere_geometry`]), its surface a linear ramp
+/// `shell` voxels wide centred on the radius.
+fn sphere(dims: [usize; 3], bits: u32, shell: f64) -> Volume {
+    let (c, r) = sphere_geometry(dims);
+    fill(dims, bits, |p| coverage(((p - c).length() - r) / shell))
 }
 
 fn ellipsoid(p: DVec3, c: DVec3, r: DVec3) -> f64 {
@@ -569,10 +588,7 @@ pub fn builtin(name: &str, dims: [usize; 3], bits: u32) -> Result<Volume> {
     let n = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64);
     let c = (n - 1.0) / 2.0;
     let vol = match name {
-        "sphere" => {
-            let (c, r) = sphere_geometry(dims);
-            fill(dims, bits, |p| coverage((p - c).length() - r))
-        }
+        "sphere" => sphere(dims, bits, SPHERE_SHELL),
         "phantom" => {
             let h = n * 0.5;
             let skull_out = h * DVec3::new(0.82, 0.92, 0.85);
@@ -776,5 +792,23 @@ mod tests {
             .all(|&v| v == 0));
         let r = builtin("ramp", [5, 2, 2], 8).unwrap();
         assert_eq!(&r.data[0..5], &[0, 64, 128, 191, 255]);
+    }
+
+    #[test]
+    fn the_spheres_shell_is_a_ramp_of_its_width() {
+        // Along +x from the centre of a 32-cube (c = 15.5, r = 12.8), the
+        // value at distance d from the surface is 1/2 - d/shell, clamped:
+        // u = 28 lies 12.5 out, d = -0.3.
+        for (shell, want) in [(1.0, 0.8), (2.0, 0.65), (4.0, 0.575)] {
+            let s = sphere([32, 32, 32], 16, shell);
+            let got = s.get(28, 15, 15) as f64 / 65535.0;
+            let d = (DVec3::new(28.0, 15.0, 15.0) - DVec3::splat(15.5)).length() - 12.8;
+            assert!((got - (0.5 - d / shell)).abs() < 1e-4, "{shell}: {got}");
+            assert!((want - got).abs() < 0.03, "{shell}: {got}");
+        }
+        assert_eq!(
+            sphere([32, 32, 32], 8, SPHERE_SHELL).data,
+            builtin("sphere", [32, 32, 32], 8).unwrap().data
+        );
     }
 }

@@ -110,32 +110,24 @@ impl RayCoeffs {
     }
 }
 
-/// Gradient word: `2∇` in traversal axes, sample units, saturated; and
-/// whether a component saturated.
-pub fn gradient(
+/// The three differences an estimator takes, along its own basis `B` (the
+/// 6, 26 and 10: see the module's notes) or along the axes (the 12), before
+/// any basis correction: `2∇·b_i` in sample units.
+pub fn differences(
     n: Neighbourhood,
     planes: &Planes,
     u: i32,
     k: usize,
     c: &RayCoeffs,
     w: u32,
-    gradient_bits: u32,
-) -> ([i32; 3], bool) {
+) -> [i64; 3] {
     let s = |i, j, l| planes.s(u, k, i, j, l) as i64;
-    let half = 1i64 << (w - 1);
-    let shear = |[gx, gy, gr]: [i64; 3]| {
-        [
-            gx,
-            gy,
-            gr - ((c.dx as i64 * gx + c.dy as i64 * gy + half) >> w),
-        ]
-    };
-    let g = match n {
-        Neighbourhood::N6 => shear([
+    match n {
+        Neighbourhood::N6 => [
             s(1, 0, 0) - s(-1, 0, 0),
             s(0, 1, 0) - s(0, -1, 0),
             s(0, 0, 1) - s(0, 0, -1),
-        ]),
+        ],
         Neighbourhood::N26 => {
             let wt = |d: i32| 4i64 >> (d - 1);
             let mut g = [0i64; 3];
@@ -147,7 +139,7 @@ pub fn gradient(
                     g[2] += wgt * (s(a, b, 1) - s(a, b, -1));
                 }
             }
-            shear(g.map(|v| (v + 8) >> 4))
+            g.map(|v| (v + 8) >> 4)
         }
         Neighbourhood::N10 => {
             let (sx, sy) = (c.dx.signum(), c.dy.signum());
@@ -155,11 +147,7 @@ pub fn gradient(
             let p = |i, j, l0| planes.s(u, k, i, j, l0);
             let gx = l(p(1, 0, 0), p(1, 0, -sx), c.t[0]) - l(p(-1, 0, 0), p(-1, 0, sx), c.t[0]);
             let gy = l(p(0, 1, 0), p(0, 1, -sy), c.t[1]) - l(p(0, -1, 0), p(0, -1, sy), c.t[1]);
-            let gr = s(0, 0, 1) - s(0, 0, -1);
-            let g = [gx, gy, gr];
-            std::array::from_fn(|i| {
-                (c.c10[i].iter().zip(g).map(|(a, b)| a * b).sum::<i64>() + half) >> w
-            })
+            [gx, gy, s(0, 0, 1) - s(0, 0, -1)]
         }
         Neighbourhood::N12 => {
             let (sx, sy) = (c.dx.signum(), c.dy.signum());
@@ -176,7 +164,41 @@ pub fn gradient(
                 bilinear(1, -sx, -sy) - bilinear(-1, sx, sy),
             ]
         }
-    };
+    }
+}
+
+/// `B⁻¹` applied to an estimator's [`differences`]: the shear for the 6 and
+/// 26, the per-ray matrix `C` for the 10, nothing for the 12.
+pub fn basis_corrected(n: Neighbourhood, g: [i64; 3], c: &RayCoeffs, w: u32) -> [i64; 3] {
+    let half = 1i64 << (w - 1);
+    match n {
+        Neighbourhood::N6 | Neighbourhood::N26 => {
+            let [gx, gy, gr] = g;
+            [
+                gx,
+                gy,
+                gr - ((c.dx as i64 * gx + c.dy as i64 * gy + half) >> w),
+            ]
+        }
+        Neighbourhood::N10 => std::array::from_fn(|i| {
+            (c.c10[i].iter().zip(g).map(|(a, b)| a * b).sum::<i64>() + half) >> w
+        }),
+        Neighbourhood::N12 => g,
+    }
+}
+
+/// Gradient word: `2∇` in traversal axes, sample units, saturated; and
+/// whether a component saturated.
+pub fn gradient(
+    n: Neighbourhood,
+    planes: &Planes,
+    u: i32,
+    k: usize,
+    c: &RayCoeffs,
+    w: u32,
+    gradient_bits: u32,
+) -> ([i32; 3], bool) {
+    let g = basis_corrected(n, differences(n, planes, u, k, c, w), c, w);
     let lim = (1i64 << (gradient_bits - 1)) - 1;
     let mut sat = false;
     let out = g.map(|v| {
