@@ -402,8 +402,13 @@ pub fn error_line(m: &Option<ErrorMetrics>) -> String {
     match m {
         None => format!("error {NO_FOREGROUND}"),
         Some(m) => format!(
-            "error: rel. Euclidean {:.3} %, RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
-            m.rel_euclid_pct, m.rmse, m.psnr_db, m.max_abs
+            "error: rel. Euclidean {:.3} % (foreground / sqrt 3; all pixels {:.3} %, of the reference's magnitude {} %), RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+            m.rel_euclid_pct,
+            m.rel_euclid_all_pct,
+            na_or(m.rel_euclid_to_ref_pct, 3),
+            m.rmse,
+            m.psnr_db,
+            m.max_abs
         ),
     }
 }
@@ -414,6 +419,8 @@ pub fn error_json(m: &Option<ErrorMetrics>) -> Value {
     let Some(m) = m else {
         return json!({
             "rel_euclid_pct": "n/a",
+            "rel_euclid_all_pct": "n/a",
+            "rel_euclid_to_ref_pct": "n/a",
             "rmse": "n/a",
             "psnr_db": "n/a",
             "max_abs": "n/a",
@@ -423,6 +430,8 @@ pub fn error_json(m: &Option<ErrorMetrics>) -> Value {
     };
     json!({
         "rel_euclid_pct": m.rel_euclid_pct,
+        "rel_euclid_all_pct": m.rel_euclid_all_pct,
+        "rel_euclid_to_ref_pct": m.rel_euclid_to_ref_pct.map_or(json!("n/a"), |x| json!(x)),
         "rmse": m.rmse,
         "psnr_db": if m.psnr_db.is_finite() { json!(m.psnr_db) } else { json!(null) },
         "max_abs": m.max_abs,

@@ -157,7 +157,9 @@ fn hw_params(frac: u32, rgba: u32, voxel: u32) -> Vec<(&'static str, Value)> {
 }
 
 /// The four ABC neighbourhoods at the scene's widths, then the weight
-/// (`frac_bits`) and sample widths one at a time at the 12-neighbourhood.
+/// (`frac_bits`) and sample widths one at a time at the 12-neighbourhood,
+/// and the widths where the model's rounding stops mattering (12-bit
+/// weights and RGBA: within 0.5 % of its float twin, docs/accuracy.md).
 fn cube3_grid(scene: &Scene) -> Vec<Variant> {
     let hw = scene.hardware;
     let vb = hw.voxel_bits;
@@ -176,12 +178,21 @@ fn cube3_grid(scene: &Scene) -> Vec<Variant> {
             ..variant(params(g, hw.frac_bits, sb), json!({}))
         });
     }
-    for f in [4, 6, 10] {
+    for f in [4, 6, 10, 12] {
         v.push(Variant {
             gradient: Some(12),
             ..variant(params(12, f, sb), json!({"hardware": {"frac_bits": f}}))
         });
     }
+    let mut knee = params(12, 12, sb);
+    knee.push(("rgba_bits", json!(12)));
+    v.push(Variant {
+        gradient: Some(12),
+        ..variant(
+            knee,
+            json!({"hardware": {"frac_bits": 12, "rgba_bits": 12}}),
+        )
+    });
     for s in [vb, vb + 2, vb + 6, vb + 8] {
         v.push(Variant {
             gradient: Some(12),

@@ -255,6 +255,58 @@ fn angles_reports_error_per_angle() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j: serde_json::Value = read_json(&d.path().join("a.json"));
     assert_eq!(j["rows"].as_array().unwrap().len(), 3);
+    assert_eq!(j["against"], "reference");
+    let e = &j["rows"][0]["error"];
+    for reading in [
+        "rel_euclid_pct",
+        "rel_euclid_all_pct",
+        "rel_euclid_to_ref_pct",
+    ] {
+        assert!(e[reading].as_f64().unwrap() > 0.0, "{reading}: {e}");
+    }
+    // The fixed-point model against its float twin: its rounding alone,
+    // and each row against True3D as well.
+    let o = cube(
+        &[
+            "angles",
+            "--scene",
+            &scene,
+            "--range",
+            "0",
+            "45",
+            "45",
+            "--arch",
+            "cube3",
+            "--against",
+            "sheared-float",
+            "--json",
+            "q.json",
+        ],
+        d.path(),
+    );
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        out.contains("error of cube3 against sheared-float"),
+        "{out}"
+    );
+    let q: serde_json::Value = read_json(&d.path().join("q.json"));
+    assert_eq!(q["against"], "sheared-float");
+    assert!(q["rows"][1]["error_vs_true3d"]["rel_euclid_pct"].is_f64());
+    assert!(q["rows"][1]["true3d_error"].is_null());
+    let o = cube(
+        &[
+            "angles",
+            "--scene",
+            &scene,
+            "--arch",
+            "cube3",
+            "--against",
+            "cube3",
+        ],
+        d.path(),
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("would compare cube3 with itself"));
 }
 
 #[test]
