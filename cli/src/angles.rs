@@ -6,8 +6,10 @@
 //! tri-linear samples in float).
 
 use crate::common::{angle_sweep, check_step, error_json, load, na_or, render_arch, Arch};
-use crate::output::{write_json, Files};
+use crate::output::{write_json, write_png_rgb8, Files};
+use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Result};
+use plotters::style::colors::{BLUE, RED};
 use reference::metrics::compare;
 use serde_json::json;
 use std::path::PathBuf;
@@ -23,6 +25,11 @@ pub struct AnglesArgs {
     ref_step: f64,
     #[arg(long)]
     json: Option<PathBuf>,
+    /// The error curves (PNG): foreground and all-pixel readings, against
+    /// the yardstick and (cube3, sheared-float) True3D, with the paper's
+    /// bounds when the yardstick is the reference.
+    #[arg(long)]
+    plot: Option<PathBuf>,
     /// Architecture to compare with the reference.
     #[arg(long, value_enum, default_value = "cube4l")]
     arch: Arch,
@@ -42,6 +49,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         range,
         ref_step,
         json: json_path,
+        plot,
         arch,
         gradient,
         against,
@@ -59,6 +67,9 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     files.scene("--scene", &scene_path, &base_scene)?;
     if let Some(j) = &json_path {
         files.output("--json", j)?;
+    }
+    if let Some(p) = &plot {
+        files.output("--plot", p)?;
     }
     let scene = &base_scene;
     let base = scene.view.rotate_deg.unwrap_or([0.0; 3]);
@@ -86,7 +97,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         "major",
         if with_true3d { "vs true3d %" } else { "" }
     );
-    for a in angles {
+    for &a in &angles {
         let scene = base_scene.with(|s| s.view.rotate_deg = Some([base[0], a, base[2]]))?;
         let g = render_arch(&scene, &vol, arch, ref_step, gradient)?;
         let yardstick_gradient =
@@ -129,6 +140,10 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         "largest rel. Euclidean error: {}",
         worst.map_or("n/a".into(), |w| format!("{w:.3} %"))
     );
+    if let Some(p) = &plot {
+        let png = plot_rows(&rows, arch, against, &angles)?;
+        write_png_rgb8(p, PLOT_W, PLOT_H, png)?;
+    }
     if let Some(j) = json_path {
         let worst = worst.map_or(json!("n/a"), |w| json!(w));
         write_json(
@@ -137,4 +152,54 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         )?;
     }
     Ok(())
+}
+
+/// The rows' errors as curves: thick for the foreground reading, thin for
+/// all pixels; red against the yardstick, blue against True3D. The paper's
+/// bounds (§6: < 1.3 % against VolRen, < 0.3 % against True3D) are drawn
+/// when the yardstick is the reference and True3D is measured.
+fn plot_rows(
+    rows: &[serde_json::Value],
+    arch: Arch,
+    against: Arch,
+    angles: &[f64],
+) -> Result<Vec<u8>> {
+    let curve = |key: &str, reading: &str| -> Vec<(f64, f64)> {
+        rows.iter()
+            .filter_map(|r| Some((r["angle"].as_f64()?, r[key][reading].as_f64()?)))
+            .collect()
+    };
+    let mut curves = Vec::new();
+    let mut levels = Vec::new();
+    for (key, name, colour) in [
+        ("error", against.name(), RED),
+        ("error_vs_true3d", "true3d", BLUE),
+    ] {
+        for (reading, what, width) in [
+            ("rel_euclid_pct", "foreground", 2),
+            ("rel_euclid_all_pct", "all pixels", 1),
+        ] {
+            let points = curve(key, reading);
+            if !points.is_empty() {
+                curves.push(Curve {
+                    label: format!("against {name}, {what}"),
+                    colour,
+                    width,
+                    points,
+                });
+            }
+        }
+    }
+    if against == Arch::Reference && rows.iter().any(|r| !r["error_vs_true3d"].is_null()) {
+        levels.push(("paper: < 1.3 % against VolRen".to_string(), 1.3));
+        levels.push(("paper: < 0.3 % against True3D".to_string(), 0.3));
+    }
+    angle_plot(
+        &format!("{}: relative Euclidean RGB error (Cube-3 §6)", arch.name()),
+        "error (% of sqrt 3)",
+        &curves,
+        &levels,
+        angles[0],
+        angles[angles.len() - 1],
+    )
 }

@@ -8,9 +8,10 @@
 
 use crate::common::{angle_sweep, load};
 use crate::output::{write_json, write_png_rgb8, Files};
+use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Context, Result};
 use golden_model::cube3::surface::{crossings, At, ALL};
-use plotters::prelude::*;
+use plotters::style::colors::{BLUE, GREEN, MAGENTA, RED};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -168,75 +169,38 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     Ok(())
 }
 
-const PLOT_W: u32 = 800;
-const PLOT_H: u32 = 500;
-
-/// Draw the curves (mean error in degrees against angle) and the paper's
-/// level for the 12.
+/// The curves (mean error in degrees against angle): the corrected ones
+/// thick, the uncorrected thin in their neighbourhood's colour, and the
+/// paper's level for the 12.
 fn plot(curves: &[Vec<(f64, f64)>], from: f64, to: f64) -> Result<Vec<u8>> {
-    // Text needs a font that every machine has: DejaVu Sans, embedded.
-    plotters::style::register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular())
-        .map_err(|_| anyhow::anyhow!("registering the embedded font"))?;
-    let mut buf = vec![0u8; (PLOT_W * PLOT_H * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, (PLOT_W, PLOT_H)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let top = curves
-            .iter()
-            .flatten()
-            .map(|p| p.1)
-            .fold(PAPER_12_DEG, f64::max)
-            * 1.1;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "ABC gradient error against the analytic sphere normal",
-                ("sans-serif", 20),
-            )
-            .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(55)
-            .build_cartesian_2d(from..to.max(from + 1.0), 0.0..top)?;
-        chart
-            .configure_mesh()
-            .x_desc("rotation about the vertical axis (degrees)")
-            .y_desc("mean angular error (degrees)")
-            .draw()?;
-        let colours = [RED, BLUE, GREEN, MAGENTA];
-        for (i, c) in curves.iter().enumerate() {
-            // The corrected curves solid, the uncorrected ones thin, in
-            // their neighbourhood's colour.
+    let colours = [RED, BLUE, GREEN, MAGENTA];
+    let curves: Vec<Curve> = curves
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
             let (j, corrected) = if i < 4 {
                 (i, true)
             } else {
                 (CORRECTED[i - 4], false)
             };
-            let style = colours[j].stroke_width(if corrected { 2 } else { 1 });
-            let label = format!(
-                "{}-neighbourhood{}",
-                ALL[j].count(),
-                if corrected { "" } else { ", uncorrected" }
-            );
-            chart
-                .draw_series(LineSeries::new(c.iter().copied(), style))?
-                .label(label)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
-        }
-        let paper = BLACK.mix(0.6).stroke_width(1);
-        chart
-            .draw_series(DashedLineSeries::new(
-                [(from, PAPER_12_DEG), (to, PAPER_12_DEG)],
-                6,
-                4,
-                paper,
-            ))?
-            .label("paper: the 12, about 3°")
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], paper));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()?;
-        root.present()?;
-    }
-    Ok(buf)
+            Curve {
+                label: format!(
+                    "{}-neighbourhood{}",
+                    ALL[j].count(),
+                    if corrected { "" } else { ", uncorrected" }
+                ),
+                colour: colours[j],
+                width: if corrected { 2 } else { 1 },
+                points: c.clone(),
+            }
+        })
+        .collect();
+    angle_plot(
+        "ABC gradient error against the analytic sphere normal",
+        "mean angular error (degrees)",
+        &curves,
+        &[("paper: the 12, about 3°".into(), PAPER_12_DEG)],
+        from,
+        to,
+    )
 }

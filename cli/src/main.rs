@@ -11,6 +11,7 @@ mod compare;
 mod default_run;
 mod gradients;
 mod output;
+mod plot;
 mod render;
 mod reports;
 mod scenes;

@@ -42,6 +42,11 @@ fn major(d: DVec3) -> usize {
     }
 }
 
+/// How far outside a bound a sample may lie and count as inside: f64's
+/// residue, far below any slope a view can have (the fixed-point models
+/// resolve 2^-15 of a voxel).
+const INSIDE_EPS: f64 = 1e-9;
+
 /// One base plane in float.
 struct Plane {
     perm: [usize; 3],
@@ -387,8 +392,17 @@ impl Caster<'_> {
         let to_ds = pl.m().transpose();
         for k in 0..pl.dims[2] as i64 {
             let p = pl.pos(u, v, k as f64);
+            // Positions carry f64 residue (cos 90° is 6e-17, so a ray on a
+            // face runs a hair outside it): within INSIDE_EPS is inside, as
+            // the fixed-point models, whose slopes round to 0, have it.
             let inside = |lo: f64, hx: f64, hy: f64, hz: f64| {
-                p.x >= lo && p.y >= lo && p.z >= lo && p.x <= hx && p.y <= hy && p.z <= hz
+                let e = INSIDE_EPS;
+                p.x >= lo - e
+                    && p.y >= lo - e
+                    && p.z >= lo - e
+                    && p.x <= hx + e
+                    && p.y <= hy + e
+                    && p.z <= hz + e
             };
             if !inside(0.0, nx - 1.0, ny - 1.0, nk - 1.0) {
                 continue;
