@@ -57,7 +57,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     if arch == against {
         bail!("--arch {} would compare {0} with itself", arch.name());
     }
-    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat) {
+    if gradient.is_some() && !arch.takes_gradient() {
         bail!("--gradient needs --arch cube3, true3d or sheared-float");
     }
     check_step(ref_step)?;
@@ -97,11 +97,10 @@ pub fn run(args: AnglesArgs) -> Result<()> {
         "major",
         if with_true3d { "vs true3d %" } else { "" }
     );
+    let yardstick_gradient = gradient.filter(|_| against.takes_gradient());
     for &a in &angles {
         let scene = base_scene.with(|s| s.view.rotate_deg = Some([base[0], a, base[2]]))?;
         let g = render_arch(&scene, &vol, arch, ref_step, gradient)?;
-        let yardstick_gradient =
-            gradient.filter(|_| matches!(against, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat));
         let r = render_arch(&scene, &vol, against, ref_step, yardstick_gradient)?;
         let m = compare(&g.image, &r.image);
         let cam = scene.camera();

@@ -30,6 +30,12 @@ pub enum Arch {
 }
 
 impl Arch {
+    /// Whether `--gradient` (an ABC neighbourhood) applies: Cube-3 and its
+    /// float twins.
+    pub fn takes_gradient(self) -> bool {
+        matches!(self, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat)
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             Arch::Cube4l => "cube4l",

@@ -58,7 +58,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
         gradient,
         repeat,
     } = args;
-    if gradient.is_some() && !matches!(arch, Arch::Cube3 | Arch::True3d | Arch::ShearedFloat) {
+    if gradient.is_some() && !arch.takes_gradient() {
         bail!("--gradient needs --arch cube3, true3d or sheared-float");
     }
     let with_ref = compare_reference || diff.is_some();

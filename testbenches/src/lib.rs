@@ -3,6 +3,7 @@
 //! CFB's skewed voxel stream exactly as the hardware will receive it.
 
 pub mod cube3;
+pub mod faults;
 
 use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
 use golden_model::cube4l::compositor::{composite, gather, reset_value};

@@ -120,16 +120,24 @@ fn a_fault_in_the_emitted_verilog_is_caught_by_pixels_and_traces() {
     assert!(!cmp.equal(), "the trace comparison missed the fault");
 }
 
-#[test]
-fn the_engine_frame_runs_through_verilator_bit_exact() {
-    require_tool("verilator");
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/engine_mip.json");
+/// A committed scene of the engine data set, and its volume.
+fn engine_scene(name: &str) -> (scene::Scene, Volume) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../scenes")
+        .join(name);
     let s = scene::Scene::load(&path).unwrap();
     let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
         panic!(
             "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/setup does it)."
         )
     });
+    (s, vol)
+}
+
+#[test]
+fn the_engine_frame_runs_through_verilator_bit_exact() {
+    require_tool("verilator");
+    let (s, vol) = engine_scene("engine_mip.json");
     let r = simulate(&s, &s.camera(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "{:?}", r.first);
     // 414 scanlines of 207 rays of 64 segments (K = 256, p = 4), periods
@@ -185,14 +193,7 @@ fn the_10_and_the_26_render_bit_exact_through_the_system() {
 #[test]
 fn a_perspective_engine_frame_runs_through_verilator_bit_exact() {
     require_tool("verilator");
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../scenes/engine_cube3_perspective.json");
-    let s = scene::Scene::load(&path).unwrap();
-    let vol = Volume::from_spec(&s.volume, 8).unwrap_or_else(|e| {
-        panic!(
-            "{e}\nThe engine data set is missing: run scripts/fetch-engine (scripts/setup does it)."
-        )
-    });
+    let (s, vol) = engine_scene("engine_cube3_perspective.json");
     let r = simulate(&s, &s.camera(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "{:?}", r.first);
     // The eye off a corner sees the volume's rays leave through three

@@ -18,61 +18,9 @@
 use std::cell::OnceCell;
 
 use cosim::cube3::Cube3;
-use cosim::sim::simulate_altered;
-use cosim::vcd_diff::{compare, Trace};
-use cosim::verilog::split_modules;
-use cosim::Engine;
 use scene::volume::Volume;
+use testbenches::faults::{campaign, fault, inject, line_of, module_text, run};
 use testbenches::{require_tool, scene};
-
-/// One edit: in module `module`, the first `from` becomes `to`.
-struct Fault {
-    kind: &'static str,
-    what: String,
-    module: &'static str,
-    from: String,
-    to: String,
-}
-
-fn fault(kind: &'static str, what: &str, module: &'static str, from: &str, to: &str) -> Fault {
-    Fault {
-        kind,
-        what: what.into(),
-        module,
-        from: from.into(),
-        to: to.into(),
-    }
-}
-
-/// The text of module `name` in `verilog`.
-fn module_text(verilog: &str, name: &str) -> String {
-    split_modules(verilog)
-        .into_iter()
-        .find(|m| m.name == name)
-        .unwrap_or_else(|| panic!("no module {name} in the emitted Verilog"))
-        .text
-}
-
-fn inject(verilog: &str, f: &Fault) -> String {
-    let text = module_text(verilog, f.module);
-    assert!(
-        text.contains(&f.from),
-        "fault site '{}' not found in {}",
-        f.from,
-        f.module
-    );
-    verilog.replacen(&text, &text.replacen(&f.from, &f.to, 1), 1)
-}
-
-/// The line of `module` that starts (after indentation) with `prefix`.
-fn line_of(verilog: &str, module: &str, prefix: &str) -> String {
-    module_text(verilog, module)
-        .lines()
-        .map(str::trim)
-        .find(|l| l.starts_with(prefix))
-        .unwrap_or_else(|| panic!("no line '{prefix}' in {module}"))
-        .to_string()
-}
 
 /// The assignments of `module` that start with `first` and `second`, the
 /// second after the first: the text from one through the other, and that
@@ -103,22 +51,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     let cam = s.camera();
     let dir = tempfile::tempdir().unwrap();
     let run = |alter: &dyn Fn(&str) -> String, name: &str| {
-        let vcd = dir.path().join(format!("{name}.fst"));
-        let trace = testbenches::trace_to(&vcd);
-        // A pixel the golden model could never output (undefined, stray)
-        // is an error of the run: a difference all the same.
-        let pixels = match simulate_altered::<Cube3>(
-            &s,
-            &cam,
-            &vol,
-            Engine::Iverilog,
-            Some(&trace),
-            alter,
-        ) {
-            Ok(r) => (r.mismatches > 0).then(|| format!("{} pixels", r.mismatches)),
-            Err(e) => Some(e),
-        };
-        (pixels, Trace::load(&vcd).unwrap())
+        run::<Cube3>((&s, &cam, &vol), dir.path(), name, alter)
     };
     // The clean run keeps the Verilog it simulated: the faults' sites.
     let emitted = OnceCell::new();
@@ -231,29 +164,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "(unit_scanline > inner$0$data",
         ),
     ];
-    let mut table = vec![
-        "| # | kind | fault | base-plane pixels differing | first bad cycle | first signal |"
-            .to_string(),
-        "|---|---|---|---|---|---|".to_string(),
-    ];
-    let mut missed = Vec::new();
-    for (i, f) in faults.iter().enumerate() {
-        let (pixels, trace) = run(&|v| inject(v, f), &format!("fault{i}"));
-        let c = compare(&clean, &trace, None).unwrap();
-        let first = c.mismatches.first();
-        table.push(format!(
-            "| {} | {} | {} | {} | {} | `{}` |",
-            i + 1,
-            f.kind,
-            f.what,
-            pixels.as_deref().unwrap_or("none"),
-            first.map_or("-".into(), |m| m.cycle.to_string()),
-            first.map_or("-", |m| m.signal.as_str()),
-        ));
-        if pixels.is_none() || c.equal() {
-            missed.push(f.what.clone());
-        }
-    }
-    println!("{}", table.join("\n"));
-    assert!(missed.is_empty(), "faults not caught: {missed:?}");
+    campaign(&faults, &clean, |f, i| {
+        run(&|v| inject(v, f), &format!("fault{i}"))
+    });
 }

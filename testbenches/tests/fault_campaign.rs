@@ -15,61 +15,9 @@
 //! the campaign table that the README shows.
 
 use cosim::cube4l::Cube4l;
-use cosim::sim::simulate_altered;
-use cosim::vcd_diff::{compare, Trace};
-use cosim::verilog::split_modules;
-use cosim::Engine;
 use scene::volume::builtin;
+use testbenches::faults::{campaign, fault, inject, line_of, run};
 use testbenches::{emitted_sweep, require_tool, scene, EmittedSweep};
-
-/// One edit: in module `module`, the first `from` becomes `to`.
-struct Fault {
-    kind: &'static str,
-    what: String,
-    module: &'static str,
-    from: String,
-    to: String,
-}
-
-fn fault(kind: &'static str, what: &str, module: &'static str, from: &str, to: &str) -> Fault {
-    Fault {
-        kind,
-        what: what.into(),
-        module,
-        from: from.into(),
-        to: to.into(),
-    }
-}
-
-/// The text of module `name` in `verilog`.
-fn module_text(verilog: &str, name: &str) -> String {
-    split_modules(verilog)
-        .into_iter()
-        .find(|m| m.name == name)
-        .unwrap_or_else(|| panic!("no module {name} in the emitted Verilog"))
-        .text
-}
-
-fn inject(verilog: &str, f: &Fault) -> String {
-    let text = module_text(verilog, f.module);
-    assert!(
-        text.contains(&f.from),
-        "fault site '{}' not found in {}",
-        f.from,
-        f.module
-    );
-    verilog.replacen(&text, &text.replacen(&f.from, &f.to, 1), 1)
-}
-
-/// The line of `module` that starts (after indentation) with `prefix`.
-fn line_of(verilog: &str, module: &str, prefix: &str) -> String {
-    module_text(verilog, module)
-        .lines()
-        .map(str::trim)
-        .find(|l| l.starts_with(prefix))
-        .unwrap_or_else(|| panic!("no line '{prefix}' in {module}"))
-        .to_string()
-}
 
 #[test]
 fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
@@ -84,24 +32,8 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
     let EmittedSweep { part, verilog } = emitted_sweep(&s, &vol);
     let (sweep, config) = (&part.sweep, &part.config);
     let dir = tempfile::tempdir().unwrap();
-    let run = |v: &str, name: &str| {
-        let vcd = dir.path().join(format!("{name}.fst"));
-        let trace = testbenches::trace_to(&vcd);
-        // A pixel the golden model could never output (undefined, stray)
-        // is an error of the run: a difference all the same.
-        let pixels = match simulate_altered::<Cube4l>(
-            &s,
-            &cam,
-            &vol,
-            Engine::Iverilog,
-            Some(&trace),
-            &|_| v.to_string(),
-        ) {
-            Ok(r) => (r.mismatches > 0).then(|| format!("{} pixels", r.mismatches)),
-            Err(e) => Some(e),
-        };
-        (pixels, Trace::load(&vcd).unwrap())
-    };
+    let run =
+        |v: &str, name: &str| run::<Cube4l>((&s, &cam, &vol), dir.path(), name, &|_| v.to_string());
     let (clean_pixels, clean) = run(&verilog, "clean");
     assert_eq!(
         clean_pixels, None,
@@ -239,29 +171,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "qm$2 = 16'(q_mag$1);",
         ),
     ];
-    let mut table = vec![
-        "| # | kind | fault | base-plane pixels differing | first bad cycle | first signal |"
-            .to_string(),
-        "|---|---|---|---|---|---|".to_string(),
-    ];
-    let mut missed = Vec::new();
-    for (i, f) in faults.iter().enumerate() {
-        let (pixels, trace) = run(&inject(&verilog, f), &format!("fault{i}"));
-        let c = compare(&clean, &trace, None).unwrap();
-        let first = c.mismatches.first();
-        table.push(format!(
-            "| {} | {} | {} | {} | {} | `{}` |",
-            i + 1,
-            f.kind,
-            f.what,
-            pixels.as_deref().unwrap_or("none"),
-            first.map_or("-".into(), |m| m.cycle.to_string()),
-            first.map_or("-", |m| m.signal.as_str()),
-        ));
-        if pixels.is_none() || c.equal() {
-            missed.push(f.what.clone());
-        }
-    }
-    println!("{}", table.join("\n"));
-    assert!(missed.is_empty(), "faults not caught: {missed:?}");
+    campaign(&faults, &clean, |f, i| {
+        run(&inject(&verilog, f), &format!("fault{i}"))
+    });
 }

@@ -77,11 +77,16 @@ pub fn crossings(
                         }
                         let (dx, dy) = (view.x.d(u), view.y.d(v));
                         let c = RayCoeffs::new(dx, dy, w);
+                        // Sample k's position in traversal space, W
+                        // fractional bits.
+                        let at_k = |k: usize| {
+                            let zq = ((k as i64) << w) + view.offset as i64;
+                            (sample_pos(u, k, dx, w), sample_pos(v, k, dy, w), zq)
+                        };
                         // Sample k of this ray, in dataset space: position,
                         // corrected and uncorrected gradients.
                         let sample = |k: usize| {
-                            let (xq, yq) = (sample_pos(u, k, dx, w), sample_pos(v, k, dy, w));
-                            let zq = ((k as i64) << w) + view.offset as i64;
+                            let (xq, yq, zq) = at_k(k);
                             let mut q = DVec3::new(xq as f64, yq as f64, zq as f64) / one;
                             if !view.positive {
                                 q.z -= (nk - 1) as f64;
@@ -102,8 +107,7 @@ pub fn crossings(
                         };
                         let mut before: Option<(usize, u32)> = None;
                         for k in 0..nk as usize {
-                            let (xq, yq) = (sample_pos(u, k, dx, w), sample_pos(v, k, dy, w));
-                            let zq = ((k as i64) << w) + view.offset as i64;
+                            let (xq, yq, zq) = at_k(k);
                             let inner = |q: i64, n: i64| q >= 1 << w && q <= (n - 2) << w;
                             if !(inner(xq, nx) && inner(yq, ny) && inner(zq, nk)) {
                                 continue;
