@@ -144,10 +144,22 @@ pub const RNORM_FRAC: u32 = 15;
 /// most 15 in magnitude.
 pub const MAX_N2: u32 = 3 * 15 * 15;
 
-/// `1 / |q|` of a quantized normal of squared length `n2`, in
-/// [`RNORM_FRAC`] fractional bits, rounded to nearest; 0 for `n2 = 0`. A
-/// constant table of the hardware (it depends on no scene).
+/// Words of the hardware's [`rnorm`] ROM: a 10-bit address, which holds
+/// every `|q|²` up to [`MAX_N2`].
+pub const RNORM_WORDS: u32 = 1024;
+
+/// `1 / |q|` of a quantized normal of squared length `n2` (below
+/// [`RNORM_WORDS`]), in [`RNORM_FRAC`] fractional bits, rounded to nearest; 0 for
+/// `n2 = 0`. A constant table of the hardware (it depends on no scene),
+/// built once.
 pub fn rnorm(n2: u32) -> u32 {
+    static TABLE: std::sync::LazyLock<Vec<u32>> =
+        std::sync::LazyLock::new(|| (0..RNORM_WORDS).map(rnorm_entry).collect());
+    TABLE[n2 as usize]
+}
+
+/// One entry of the [`rnorm`] table.
+fn rnorm_entry(n2: u32) -> u32 {
     if n2 == 0 {
         return 0;
     }

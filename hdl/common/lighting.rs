@@ -24,7 +24,7 @@
 use super::regs::{Regs, ADDRESS_BITS};
 use super::table::Table;
 use golden_model::host::{Reg, Table as HostTable};
-use golden_model::lut::{rnorm, COS_BITS, DIR_FRAC, RNORM_FRAC};
+use golden_model::lut::{rnorm, COS_BITS, DIR_FRAC, RNORM_FRAC, RNORM_WORDS};
 use rust_hdl::prelude::*;
 
 /// Clocks from the quantized normal to the terms.
@@ -110,7 +110,9 @@ impl Lighting {
             diffuse: Default::default(),
             specular: Default::default(),
             regs: Regs::new([Reg::Light.address(), Reg::Half.address()]),
-            rnorm: (0..1024u32).map(|n2| (rnorm(n2) as u64).to_bits()).into(),
+            rnorm: (0..RNORM_WORDS)
+                .map(|n2| (rnorm(n2) as u64).to_bits())
+                .into(),
             square: std::array::from_fn(|_| (0..16u64).map(|m| (m * m).to_bits()).into()),
             diffuse_table: Table::new(HostTable::Diffuse.base(), words, &word),
             specular_table: Table::new(HostTable::Specular.base(), words, &word),

@@ -37,17 +37,26 @@ pub fn gather(
     frac: u32,
     reset: [u32; 4],
 ) -> [u32; 4] {
-    let cell = |cx: isize, cy: isize| -> [u32; 4] {
-        if cx < 0 || cy < 0 || cx >= nx as isize || cy >= ny as isize {
-            reset
-        } else {
-            prev[cx as usize + nx * cy as usize]
-        }
-    };
-    let (x, y) = (x as isize, y as isize);
-    let (x2, y2) = (x - dx.signum() as isize, y - dy.signum() as isize);
     let (wx, wy) = (dx.unsigned_abs(), dy.unsigned_abs());
-    let (c00, c10, c01, c11) = (cell(x, y), cell(x2, y), cell(x, y2), cell(x2, y2));
+    let (c00, c10, c01, c11) = if x > 0 && y > 0 && x + 1 < nx && y + 1 < ny {
+        // Inside the slice's border: all four cells are in it.
+        let i = x + nx * y;
+        let ix = (i as isize - dx.signum() as isize) as usize;
+        let iy = (i as isize - dy.signum() as isize * nx as isize) as usize;
+        let ixy = (ix as isize - dy.signum() as isize * nx as isize) as usize;
+        (prev[i], prev[ix], prev[iy], prev[ixy])
+    } else {
+        let cell = |cx: isize, cy: isize| -> [u32; 4] {
+            if cx < 0 || cy < 0 || cx >= nx as isize || cy >= ny as isize {
+                reset
+            } else {
+                prev[cx as usize + nx * cy as usize]
+            }
+        };
+        let (x, y) = (x as isize, y as isize);
+        let (x2, y2) = (x - dx.signum() as isize, y - dy.signum() as isize);
+        (cell(x, y), cell(x2, y), cell(x, y2), cell(x2, y2))
+    };
     std::array::from_fn(|i| {
         let top = lerp_frac(c00[i], c10[i], wx, frac);
         let bottom = lerp_frac(c01[i], c11[i], wx, frac);

@@ -8,7 +8,9 @@
 //! Software shortcuts that cannot change a bit of the result: a voxel whose
 //! opacity row is zero skips gradient and shading (its composite is the
 //! identity), and front to back a cell whose gathered opacity is already
-//! full skips the voxel (`mul(0, x) = 0`).
+//! full skips the voxel (`mul(0, x) = 0`), and a voxel that leaves an
+//! empty cell empty, with nothing but empty cells around it in the previous
+//! slice, is skipped whole (`render_sweep`).
 
 pub mod cfb;
 pub mod compositor;
@@ -22,7 +24,7 @@ pub use frame::{BasePlane, Frame, Stats};
 
 use compositor::{composite, gather, reset_value};
 use gradient::central_difference;
-use plan::{Face, Order, Plan, Sweep};
+use plan::{Face, Order, Plan, Rays, Sweep};
 use rayon::prelude::*;
 use scene::volume::Volume;
 use scene::{Camera, Mode, Scene};
@@ -31,7 +33,36 @@ use shader::Shader;
 /// A pixel leaving on ER: base-plane address, value and face.
 type PixelOut = ([usize; 2], [u32; 4], Face);
 
+/// Columns `lo..hi` of a compositing-buffer row that may hold something
+/// other than the reset value (`lo >= hi`: the whole row is reset).
+#[derive(Debug, Clone, Copy)]
+struct Span {
+    lo: usize,
+    hi: usize,
+}
+
+const EMPTY: Span = Span {
+    lo: usize::MAX,
+    hi: 0,
+};
+
+impl Span {
+    fn union(self, o: Span) -> Span {
+        Span {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
+    }
+}
+
 /// Render one sweep to its base plane.
+///
+/// A voxel whose composite is the identity (`Shader::is_identity`) inside
+/// the slice (no ER there) makes its cell what the bilinear unit gathers,
+/// with no control bits, shading or compositing. The empty-space skip: when
+/// the cell's 3x3 neighbourhood in the previous slice is all reset, that is
+/// the reset value exactly (`lerp_frac(a, a, w) = a`; the bilinear unit reads
+/// inside the 3x3 since |dx|, |dy| <= 1), and the gather is skipped too.
 pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
     let [nx, ny, _] = sweep.dims;
     let frac = sweep.frac;
@@ -43,54 +74,97 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
     let mut next = vec![reset; nx * ny];
+    let mut prev_span = vec![EMPTY; ny];
+    let mut next_span = vec![EMPTY; ny];
     let mut stats = Stats::default();
+    let parallel = match sweep.rays {
+        Rays::Parallel { dx, dy } => Some((dx, dy)),
+        Rays::Perspective { .. } => None,
+    };
+    // Front to back, a full opacity hides everything behind it.
+    let full = crate::fixed::max_of(shader.rgba_bits);
+    let hides = sweep.order == Order::FrontToBack
+        && matches!(shader.mode, Mode::Composite | Mode::FirstOpaque);
+    let opaque_front = |acc: [u32; 4]| hides && acc[3] == full;
     for z in sweep.z0..=sweep.z1 {
         let first = z == sweep.z0;
+        let last = z == sweep.z1;
+        let spans = &prev_span;
         let outputs: Vec<(Vec<PixelOut>, Stats)> = next
             .par_chunks_mut(nx)
+            .zip(next_span.par_iter_mut())
             .enumerate()
-            .map(|(y, row)| {
+            .map(|(y, (row, span))| {
                 let mut out = Vec::new();
                 let mut st = Stats::default();
+                // Columns whose 3x3 neighbourhood in the previous slice
+                // may hold something other than reset.
+                let near = spans[y.saturating_sub(1)..(y + 2).min(ny)]
+                    .iter()
+                    .fold(EMPTY, |a, &s| a.union(s));
+                let busy = near.lo.saturating_sub(1)..near.hi.saturating_add(1);
+                let inner_row = !last && y > 0 && y + 1 < ny;
+                *span = EMPTY;
                 for (x, cell) in row.iter_mut().enumerate() {
-                    let c = sweep.control(x, y, z);
-                    let acc = if c.sr || first {
-                        reset
-                    } else {
-                        gather(&prev, nx, ny, x, y, c.dx, c.dy, frac, reset)
-                    };
                     st.voxels += 1;
                     let at = x * strides[0] + y * strides[1] + z * strides[2];
                     let v = vol.data[at] as u32;
-                    let opaque_front = sweep.order == Order::FrontToBack
-                        && matches!(shader.mode, Mode::Composite | Mode::FirstOpaque)
-                        && acc[3] == crate::fixed::max_of(shader.rgba_bits);
-                    *cell = if opaque_front {
-                        st.terminated += 1;
-                        acc
+                    let inner = inner_row && x > 0 && x + 1 < nx;
+                    if inner && shader.is_identity(v) {
+                        // No ER inside the slice, and the voxel's composite
+                        // is the identity: the cell is what it gathers.
+                        *cell = if first || !busy.contains(&x) {
+                            reset
+                        } else {
+                            let (dx, dy) = match parallel {
+                                Some(d) => d,
+                                None => {
+                                    let c = sweep.control(x, y, z);
+                                    (c.dx, c.dy)
+                                }
+                            };
+                            let acc = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
+                            st.terminated += opaque_front(acc) as u64;
+                            acc
+                        };
                     } else {
-                        if shader.mode.uses_colour() && !shader.transparent(v, &c) {
-                            st.shaded += 1;
+                        let c = sweep.control(x, y, z);
+                        let acc = if first {
+                            reset
+                        } else {
+                            gather(&prev, nx, ny, x, y, c.dx, c.dy, frac, reset)
+                        };
+                        *cell = if opaque_front(acc) {
+                            st.terminated += 1;
+                            acc
+                        } else {
+                            if shader.mode.uses_colour() && !shader.transparent(v, &c) {
+                                st.shaded += 1;
+                            }
+                            let sample = shader.sample(v, &c, || {
+                                central_difference(|ox, oy, oz| {
+                                    let i = at as isize
+                                        + ox * strides[0] as isize
+                                        + oy * strides[1] as isize
+                                        + oz * strides[2] as isize;
+                                    vol.data[i as usize]
+                                })
+                            });
+                            let (r, clipped) =
+                                composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
+                            st.saturations += clipped as u64;
+                            r
+                        };
+                        if c.er {
+                            let addr = sweep
+                                .base_address(x, y, z, c.face)
+                                .expect("ER cells have a face");
+                            out.push((addr, *cell, c.face));
                         }
-                        let sample = shader.sample(v, &c, || {
-                            central_difference(|ox, oy, oz| {
-                                let i = at as isize
-                                    + ox * strides[0] as isize
-                                    + oy * strides[1] as isize
-                                    + oz * strides[2] as isize;
-                                vol.data[i as usize]
-                            })
-                        });
-                        let (r, clipped) =
-                            composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
-                        st.saturations += clipped as u64;
-                        r
-                    };
-                    if c.er {
-                        let addr = sweep
-                            .base_address(x, y, z, c.face)
-                            .expect("ER cells have a face");
-                        out.push((addr, *cell, c.face));
+                    }
+                    if *cell != reset {
+                        span.lo = span.lo.min(x);
+                        span.hi = x + 1;
                     }
                 }
                 st.pixels_out += out.len() as u64;
@@ -104,6 +178,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
             }
         }
         std::mem::swap(&mut prev, &mut next);
+        std::mem::swap(&mut prev_span, &mut next_span);
     }
     (base, stats)
 }

@@ -111,6 +111,20 @@ impl Shader {
         }
     }
 
+    /// Whether compositing voxel `v` leaves every cell as it is, whatever
+    /// its control bits: composite, first-opaque and X-ray, its opacity row
+    /// is zero (a zero sample: `acc + mul(M - a, 0) = acc` front to back,
+    /// `0 + mul(M, acc) = acc` back to front, `acc + 0` in X-ray); MIP, it is
+    /// 0 (`max(acc, 0)`); MinIP, it is the largest voxel (`min(acc, max)`).
+    pub fn is_identity(&self, v: u32) -> bool {
+        match (&self.opacity, self.mode) {
+            (_, Mode::Mip) => v == 0,
+            (_, Mode::Minip) => v == max_of(self.voxel_bits),
+            (Some(o), _) => o.row_max[o.row(v)] == 0,
+            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        }
+    }
+
     /// Classify and shade voxel `v` with control `c`; `gradient` is called only
     /// when the scene needs one and the voxel is not transparent.
     pub fn sample(&self, v: u32, c: &Control, gradient: impl FnOnce() -> [i32; 3]) -> Sample {
