@@ -30,7 +30,7 @@ pub mod trilin;
 use abc::{gradient, Planes, RayCoeffs};
 use plan::{sample_pos, Neighbourhood, Plan, View, Widths};
 use rayon::prelude::*;
-use rpc::{identity, node, pixel, tree};
+use rpc::{fold, identity, node, pixel};
 use scene::volume::Volume;
 use scene::{Camera, CubeError, Image, Mode, Result, Scene};
 use shade::Shader;
@@ -101,15 +101,16 @@ pub fn neighbourhood(scene: &Scene, n: Option<u32>) -> Result<Neighbourhood> {
     })
 }
 
-/// Scanlines rendered per parallel task.
-const CHUNK: i32 = 8;
-
-/// The view's scanlines in ascending runs of `CHUNK`, `[first, last]`: each
-/// run interpolates two sample planes beyond its own, for the gradients.
+/// The view's scanlines in ascending runs, `[first, last]`: each run
+/// fetches three PRPs and interpolates two sample planes beyond its own (for
+/// the gradients), so runs are as long as four per thread allow, and at
+/// least 8 scanlines. The result does not depend on the split.
 pub fn chunks(view: &View) -> Vec<[i32; 2]> {
+    let lines = (view.v[1] - view.v[0] + 1).max(1) as usize;
+    let run = lines.div_ceil(4 * rayon::current_num_threads()).max(8);
     (view.v[0]..=view.v[1])
-        .step_by(CHUNK as usize)
-        .map(|va| [va, (va + CHUNK - 1).min(view.v[1])])
+        .step_by(run)
+        .map(|va| [va, (va + run as i32 - 1).min(view.v[1])])
         .collect()
 }
 
@@ -135,8 +136,18 @@ pub fn render_view(
         pixels: Vec::with_capacity(w * h),
         cast: Vec::with_capacity(w * h),
     };
+    // TRILIN's samples in one pass down the base plane: every scanline's
+    // plane, and with gradients the planes above the first and below the
+    // last (independent of how the software splits the scanlines).
+    let planes = h as u64 + 2 * shader.needs_gradient as u64;
+    let rays = (view.u[1] - view.u[0] + 3) as u64;
     let mut stats = Stats {
         weight_clamps: view.weight_clamps,
+        interpolated: if view.on_grid {
+            0
+        } else {
+            planes * rays * view.dims[2] as u64
+        },
         ..Stats::default()
     };
     for (px, cast, s) in rows {
@@ -150,8 +161,7 @@ pub fn render_view(
 /// Walk scanlines `va..=vb`, calling `visit(v, planes)` with the above,
 /// current and below sample planes of each (above and below are zero when
 /// `gradients` is false). PRPs `va - 1 ..= vb + 2` are fetched, sample planes
-/// `va - 1 ..= vb + 1` interpolated, in a window of three. Returns the
-/// number of sample planes interpolated.
+/// `va - 1 ..= vb + 1` interpolated, in a window of three.
 pub fn scanlines(
     vol: &Volume,
     view: &View,
@@ -159,16 +169,13 @@ pub fn scanlines(
     gradients: bool,
     [va, vb]: [i32; 2],
     mut visit: impl FnMut(i32, &Planes),
-) -> u64 {
+) {
     let (pu0, prays) = (view.u[0] - 1, (view.u[1] - view.u[0] + 4) as usize);
     let fetch = |v: i32| prp::fetch(vol, view, v, pu0, prays);
     let nk = view.dims[2];
     let zero = |v: i32| SamplePlane::zero(v, pu0, prays - 1, nk);
-    let mut planes_made = 0u64;
-    let mut interp = |v: i32, cur: &prp::Prp, next: &prp::Prp| {
-        planes_made += 1;
-        trilin::plane(view, v, cur, next, sample_frac)
-    };
+    let interp =
+        |v: i32, cur: &prp::Prp, next: &prp::Prp| trilin::plane(view, v, cur, next, sample_frac);
     let mut cur = fetch(va - 1);
     let mut next = fetch(va);
     let mut above = if gradients {
@@ -198,7 +205,6 @@ pub fn scanlines(
         above = current;
         current = below;
     }
-    planes_made
 }
 
 /// Scanlines `va..=vb` of a base plane: pixels, cast flags and counters.
@@ -215,7 +221,7 @@ fn render_rows(
     let mut pixels = Vec::new();
     let mut cast = Vec::new();
     let f = shader.widths.sample_frac();
-    let planes_made = scanlines(
+    scanlines(
         vol,
         view,
         f,
@@ -238,10 +244,6 @@ fn render_rows(
             }
         },
     );
-    if !view.on_grid {
-        let rays = (view.u[1] - view.u[0] + 3) as u64;
-        stats.interpolated = planes_made * rays * view.dims[2] as u64;
-    }
     (pixels, cast, stats)
 }
 
@@ -265,8 +267,9 @@ fn cast_ray(
     let m = crate::fixed::max_of(rgba);
     let within = |q: i64, lo: i64, hi: i64| q >= lo << w && q <= hi << w;
     let mut st = Stats::default();
-    let mut acc = identity(mode);
-    let mut leaves = vec![identity(mode); p];
+    let id = identity(mode);
+    let mut acc = id;
+    let mut leaves = vec![id; p];
     for seg in 0..nk.div_ceil(p) {
         if matches!(mode, Mode::Composite | Mode::FirstOpaque) && acc.value[3] == m {
             st.terminated += (nk - seg * p) as u64;
@@ -275,7 +278,7 @@ fn cast_ray(
         for (i, leaf) in leaves.iter_mut().enumerate() {
             let k = seg * p + i;
             if k >= nk {
-                *leaf = identity(mode);
+                *leaf = id;
                 continue;
             }
             st.samples += 1;
@@ -303,10 +306,14 @@ fn cast_ray(
             });
             st.shaded += shaded as u64;
         }
-        let (root, c1) = tree(mode, &leaves, rgba);
-        let (a, c2) = node(mode, acc, root, rgba);
-        acc = a;
-        st.composite_saturations += c1 + c2 as u64;
+        // A segment of identities leaves the accumulator as it is, with no
+        // clipped node (`op(x, id) = op(id, x) = x`).
+        if leaves.iter().any(|l| *l != id) {
+            let c1 = fold(mode, &mut leaves, rgba);
+            let (a, c2) = node(mode, acc, leaves[0], rgba);
+            acc = a;
+            st.composite_saturations += c1 + c2 as u64;
+        }
     }
     (pixel(mode, acc, shader.widths.voxel_bits), acc.valid, st)
 }

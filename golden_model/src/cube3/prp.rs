@@ -36,16 +36,25 @@ impl Prp {
 }
 
 /// Fetch and align the PRP of scanline `v`, for rays `u0..u0 + rays`.
+/// Beam by beam: plane `k`'s row `y = Y_k(v)` is found once, then each
+/// ray's voxel `X_k(u)` on it (`View::voxel`'s bounds and axes, unrolled).
 pub fn fetch(vol: &Volume, view: &View, v: i32, u0: i32, rays: usize) -> Prp {
-    let nk = view.dims[2];
-    let mut data = Vec::with_capacity(rays * (nk + 1));
-    let index = |d: [usize; 3]| d[0] + vol.dims[0] * (d[1] + vol.dims[1] * d[2]);
-    for i in 0..rays {
-        let u = u0 + i as i32;
-        for k in 0..=nk {
-            let y = view.y.pos(v, k);
-            let x = view.x.pos(u, k);
-            data.push(view.voxel(x, y, k).map_or(0, |d| vol.data[index(d)] as u32));
+    let [nx, ny, nk] = view.dims;
+    let mut data = vec![0; rays * (nk + 1)];
+    let stride = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
+    let [sx, sy, sk] = view.perm.map(|a| stride[a]);
+    for k in 0..nk {
+        let y = view.y.pos(v, k);
+        if y < 0 || y as usize >= ny {
+            continue;
+        }
+        let slice = if view.positive { k } else { nk - 1 - k };
+        let beam = y as usize * sy + slice * sk;
+        for (i, d) in data.iter_mut().skip(k).step_by(nk + 1).enumerate() {
+            let x = view.x.pos(u0 + i as i32, k);
+            if x >= 0 && (x as usize) < nx {
+                *d = vol.data[beam + x as usize * sx] as u32;
+            }
         }
     }
     Prp {

@@ -85,18 +85,25 @@ pub fn node(mode: Mode, l: Leaf, r: Leaf, rgba_bits: u32) -> (Leaf, bool) {
 pub fn tree(mode: Mode, leaves: &[Leaf], rgba_bits: u32) -> (Leaf, u64) {
     debug_assert!(leaves.len().is_power_of_two());
     let mut level = leaves.to_vec();
-    let mut clips = 0;
-    while level.len() > 1 {
-        level = level
-            .chunks(2)
-            .map(|c| {
-                let (v, clipped) = node(mode, c[0], c[1], rgba_bits);
-                clips += clipped as u64;
-                v
-            })
-            .collect();
-    }
+    let clips = fold(mode, &mut level, rgba_bits);
     (level[0], clips)
+}
+
+/// [`tree`] in place: level by level, node `i` overwrites `level[i]` (its
+/// children `2i` and `2i + 1` are read first, and no later node reads it),
+/// leaving the root in `level[0]`. Returns the number of clipped nodes.
+pub fn fold(mode: Mode, level: &mut [Leaf], rgba_bits: u32) -> u64 {
+    let mut clips = 0;
+    let mut n = level.len();
+    while n > 1 {
+        for i in 0..n / 2 {
+            let (v, clipped) = node(mode, level[2 * i], level[2 * i + 1], rgba_bits);
+            clips += clipped as u64;
+            level[i] = v;
+        }
+        n /= 2;
+    }
+    clips
 }
 
 /// The base-plane pixel of a finished ray: the accumulator, or the reset

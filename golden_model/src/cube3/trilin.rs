@@ -36,8 +36,13 @@ pub struct Weights {
     pub wy: u32,
 }
 
-/// One sheared tri-linear interpolation.
+/// One sheared tri-linear interpolation. Eight equal voxels give that voxel
+/// (`lerp(a, a, w) = a` at every step), without the seven lerps.
 pub fn interpolate(cell: &Cell, w: Weights, weight_bits: u32, sample_frac: u32) -> u32 {
+    let a = cell[0][0];
+    if cell.iter().all(|&[f, b]| f == a && b == a) {
+        return a << sample_frac;
+    }
     let z = |[f, b]: [u32; 2]| lerp_frac(f << sample_frac, b << sample_frac, w.offset, weight_bits);
     let [a, b, c, d] = cell.map(z);
     let top = lerp_frac(a, b, w.wx, weight_bits);
