@@ -179,6 +179,17 @@ impl Template {
         }
     }
 
+    /// The `K` weights of ray `u`, sample by sample.
+    pub fn weights(&self, u: i32) -> &[u32] {
+        match self {
+            Template::Parallel { weight, .. } => weight,
+            Template::Perspective { weight, .. } => {
+                let k = self.planes();
+                &weight[self.ray(u) * k..][..k]
+            }
+        }
+    }
+
     /// Whether every weight is 0 and every step is in {0, ±1} with the
     /// offset 0: samples sit on the grid.
     fn on_grid(&self, w: u32) -> bool {

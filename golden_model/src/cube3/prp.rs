@@ -31,7 +31,12 @@ pub struct Prp {
 impl Prp {
     /// Voxel of discrete ray `u` on plane `k`.
     pub fn at(&self, u: i32, k: usize) -> u32 {
-        self.data[(u - self.u0) as usize * (self.planes + 1) + k]
+        self.ray(u)[k]
+    }
+
+    /// Row `u` of the buffer: discrete ray `u`'s voxels on planes `0..=K`.
+    pub fn ray(&self, u: i32) -> &[u32] {
+        &self.data[(u - self.u0) as usize * (self.planes + 1)..][..self.planes + 1]
     }
 }
 

@@ -81,12 +81,15 @@ impl SamplePlane {
 /// The eight voxels of sample `k` of ray `u`: rays A, B from the 2-D
 /// buffer of scanline `v` (`cur`), C, D from that of `v + 1` (`next`).
 pub fn cell(cur: &Prp, next: &Prp, u: i32, k: usize) -> Cell {
-    [
-        [cur.at(u, k), cur.at(u, k + 1)],
-        [cur.at(u + 1, k), cur.at(u + 1, k + 1)],
-        [next.at(u, k), next.at(u, k + 1)],
-        [next.at(u + 1, k), next.at(u + 1, k + 1)],
-    ]
+    rays_at(
+        [cur.ray(u), cur.ray(u + 1), next.ray(u), next.ray(u + 1)],
+        k,
+    )
+}
+
+/// `[front, back]` at sample `k` of the four rays A, B, C, D.
+fn rays_at(r: [&[u32]; 4], k: usize) -> Cell {
+    r.map(|ray| [ray[k], ray[k + 1]])
 }
 
 /// Interpolate the plane of scanline `v` from the 2-D buffers of `v` and
@@ -95,20 +98,23 @@ pub fn plane(view: &View, v: i32, cur: &Prp, next: &Prp, sample_frac: u32) -> Sa
     let nk = view.dims[2];
     let rays = cur.rays - 1;
     let wb = view.weight_bits;
+    let wy = view.y.weights(v);
     let mut data = Vec::with_capacity(rays * nk);
     for i in 0..rays {
         let u = cur.u0 + i as i32;
+        let r = [cur.ray(u), cur.ray(u + 1), next.ray(u), next.ray(u + 1)];
+        if view.on_grid {
+            data.extend(r[0][..nk].iter().map(|&a| a << sample_frac));
+            continue;
+        }
+        let wx = view.x.weights(u);
         for k in 0..nk {
-            data.push(if view.on_grid {
-                cur.at(u, k) << sample_frac
-            } else {
-                let w = Weights {
-                    offset: view.offset,
-                    wx: view.x.weight(u, k),
-                    wy: view.y.weight(v, k),
-                };
-                interpolate(&cell(cur, next, u, k), w, wb, sample_frac)
-            });
+            let w = Weights {
+                offset: view.offset,
+                wx: wx[k],
+                wy: wy[k],
+            };
+            data.push(interpolate(&rays_at(r, k), w, wb, sample_frac));
         }
     }
     SamplePlane {
