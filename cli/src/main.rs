@@ -22,6 +22,7 @@ mod synth;
 mod tradeoff;
 mod vcd_diff;
 mod verilog;
+mod volume;
 
 use clap::{Parser, Subcommand};
 
@@ -76,6 +77,9 @@ enum Command {
     /// its precisions and parameters: JSON, CSV, a log-log plot with the
     /// Pareto front, and a Markdown table.
     Tradeoff(tradeoff::TradeoffArgs),
+    /// Write the scene's volume (built-in or raw, windowed, at its voxel
+    /// width) as a raw file, for renderers outside the kit.
+    Volume(volume::VolumeArgs),
     /// List the built-in volumes.
     Scenes,
 }
@@ -145,6 +149,7 @@ fn run() {
         Some(Command::StageVectors(args)) => stage_vectors::run(args),
         Some(Command::Compare(args)) => compare::run(args),
         Some(Command::Tradeoff(args)) => tradeoff::run(args),
+        Some(Command::Volume(args)) => volume::run(args),
         Some(Command::Scenes) => scenes::run(),
     };
     if let Err(e) = r {

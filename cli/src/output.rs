@@ -319,9 +319,13 @@ pub fn write_json(path: &Path, v: &serde_json::Value) -> Result<()> {
     })
 }
 
-pub fn write_text(path: &Path, text: &str) -> Result<()> {
+pub fn write_bytes(path: &Path, bytes: &[u8]) -> Result<()> {
     atomic_write(path, |f| {
-        f.write_all(text.as_bytes())?;
+        f.write_all(bytes)?;
         Ok(())
     })
+}
+
+pub fn write_text(path: &Path, text: &str) -> Result<()> {
+    write_bytes(path, text.as_bytes())
 }

@@ -1233,3 +1233,46 @@ fn cube3_sim_verilog_and_their_refusals() {
         );
     }
 }
+
+#[test]
+fn volume_writes_the_voxels_a_renderer_reads() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    // 8-bit: the raw file comes back byte for byte.
+    let raw8: Vec<u8> = (0..24u8).map(|i| i * 10).collect();
+    std::fs::write(p.join("v8.raw"), &raw8).unwrap();
+    let s8 = write(
+        p,
+        "v8.json",
+        r#"{"volume": {"raw": "v8.raw", "dims": [4, 3, 2], "type": "u8"}, "view": {"projection": "parallel"}, "image": [8, 8]}"#,
+    );
+    let o = cube(&["volume", "--scene", &s8, "--out", "out8.raw"], p);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("4x3x2 u8 voxels"));
+    assert_eq!(std::fs::read(p.join("out8.raw")).unwrap(), raw8);
+    // 16-bit voxels: two bytes each, little-endian.
+    let raw16: Vec<u8> = (0..24u16).flat_map(|i| (i * 2731).to_le_bytes()).collect();
+    std::fs::write(p.join("v16.raw"), &raw16).unwrap();
+    let s16 = write(
+        p,
+        "v16.json",
+        r#"{"volume": {"raw": "v16.raw", "dims": [4, 3, 2], "type": "u16"}, "view": {"projection": "parallel"}, "image": [8, 8],
+            "hardware": {"voxel_bits": 16, "rgba_bits": 12}}"#,
+    );
+    let o = cube(&["volume", "--scene", &s16, "--out", "out16.raw"], p);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read(p.join("out16.raw")).unwrap(), raw16);
+    // A built-in: one byte per voxel.
+    let o = cube(
+        &[
+            "volume",
+            "--scene",
+            &write(p, "s.json", SPHERE),
+            "--out",
+            "s.raw",
+        ],
+        p,
+    );
+    assert!(o.status.success());
+    assert_eq!(std::fs::read(p.join("s.raw")).unwrap().len(), 16 * 16 * 16);
+}

@@ -47,6 +47,7 @@ fn commands() -> Vec<(Vec<&'static str>, Vec<&'static str>)> {
             vec!["--out", "--json", "--vcd"],
         ),
         (vec!["synth", "--scene", "s.json"], vec!["--json"]),
+        (vec!["volume", "--scene", "s.json"], vec!["--out"]),
     ]
 }
 
