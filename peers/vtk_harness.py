@@ -1,6 +1,6 @@
 """VTK's vtkFixedPointVolumeRayCastMapper on a cube scene, for scripts/peers.
 
-Usage: vtk_harness.py SCENE CAMERA_JSON REPEAT OUT.png
+Usage: vtk_harness.py SCENE CAMERA_JSON REPEAT OUT.png [THREADS]
 
 CAMERA_JSON is `cube render --arch reference --json`'s output: its
 details.camera (right, up, forward, image centre, voxel lengths per pixel)
@@ -11,7 +11,8 @@ coefficients with one directional light, in camera space as the scene gives
 it. Prints one JSON line with the medians of REPEAT runs: frame (a render
 after the camera moved), tf_change (a render after the opacity function
 changed) and prep (the first render, which builds the mapper's tables).
-Renders offscreen (EGL when there is no display).
+Renders offscreen (EGL when there is no display), on THREADS threads
+(default: VTK's own choice, every core).
 """
 import json
 import os
@@ -21,7 +22,7 @@ import time
 import vtk
 
 
-def main(scene_path, camera_path, repeat, out):
+def main(scene_path, camera_path, repeat, out, threads=None):
     s = json.load(open(scene_path))
     cam = json.load(open(camera_path))["details"]["camera"]
     v = s["volume"]
@@ -70,6 +71,8 @@ def main(scene_path, camera_path, repeat, out):
     mapper.SetInputConnection(reader.GetOutputPort())
     mapper.SetSampleDistance(1.0)
     mapper.SetAutoAdjustSampleDistances(0)
+    if threads is not None:
+        mapper.SetNumberOfThreads(threads)
     volume = vtk.vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -136,4 +139,5 @@ def main(scene_path, camera_path, repeat, out):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4])
+    main(sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4],
+         int(sys.argv[5]) if len(sys.argv) > 5 else None)

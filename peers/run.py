@@ -1,0 +1,280 @@
+"""The peers run of scripts/peers (which installs and builds first).
+
+Usage: run.py SCENE REPEAT OUT SIZES SCALING_SCENE
+
+1. On SCENE: VolPack (1 thread), VTK's vtkFixedPointVolumeRayCastMapper and
+   every software path of the kit (the quantized projection and splatting,
+   the Cube-4L and Cube-3 golden models), the kit's and VTK's at 1 thread
+   and at every core. Each image is judged against the scene's float
+   reference (`cube compare`, `--compare-reference`).
+2. Scaling: SCALING_SCENE with the built-in phantom at each of SIZES (N³
+   voxels), written raw by `cube volume` so that the peers read the same
+   voxels, every renderer at every core. The exponent of time in voxels is
+   a least-squares fit of log time on log voxels; memory is the peak
+   resident set of the renderer's process at the largest size.
+
+Writes OUT/peers.md and OUT/peers.json (each whole or not at all) and the
+peers' images of SCENE beside them. Ratios are time over the peer's time in
+the same run (below 1: faster).
+"""
+import datetime
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+CUBE = "target/release/cube"
+VENV_PY = "target/peers/venv/bin/python"
+VOLPACK = "target/peers/volpack_harness"
+CORES = os.cpu_count()
+KIT = ["quantized-projection", "quantized-splat", "cube4l", "cube3"]
+
+
+def fail(msg):
+    sys.exit(f"scripts/peers: {msg}")
+
+
+def run(cmd, env=None, rss=None):
+    """Run cmd; returns stdout. With rss, the peak resident set (KiB) of the
+    process goes into the list rss."""
+    full = cmd
+    tfile = None
+    if rss is not None:
+        tfile = tempfile.NamedTemporaryFile("r", suffix=".rss", delete=False)
+        full = ["/usr/bin/time", "-f", "%M", "-o", tfile.name] + cmd
+    e = dict(os.environ, **(env or {}))
+    p = subprocess.run(full, env=e, capture_output=True, text=True)
+    if p.returncode != 0:
+        fail(f"{' '.join(cmd[:4])}... failed:\n{p.stderr.strip()[-2000:]}")
+    if tfile is not None:
+        rss.append(int(open(tfile.name).read().split()[-1]))
+        os.unlink(tfile.name)
+    return p.stdout
+
+
+def volpack_args(scene_path):
+    """The scene's numbers for the VolPack harness."""
+    s = json.load(open(scene_path))
+    v = s["volume"]
+    if "raw" not in v or v.get("type") != "u8" or "window" in v or "crop" in v:
+        fail(f"{scene_path}: the scene needs a u8 raw volume without window or crop")
+    view = s["view"]
+    if view.get("projection") != "parallel":
+        fail(f"{scene_path}: the scene needs a parallel view")
+    if s.get("mode", "composite") != "composite":
+        fail(f"{scene_path}: the scene needs composite mode")
+    raw = os.path.join(os.path.dirname(scene_path), v["raw"])
+    nx, ny, nz = v["dims"]
+    rx, ry, rz = view.get("rotate_deg", [0, 0, 0])
+    # Zoom 1 fits the volume's diagonal to the image; VolPack's object
+    # units make the largest dimension 1.
+    half = math.sqrt(nx * nx + ny * ny + nz * nz) / max(nx, ny, nz) / 2 / view.get("zoom", 1.0)
+    w, h = s["image"]
+    sh = s.get("shading", {})
+    on = sh.get("enabled", True)
+    t = s["transfer"]
+    # VolPack's lookup shader indexes by normal alone: one material, the
+    # mean of the transfer function's colours.
+    col = [sum(c[i] for c in t["color"]) / len(t["color"]) for i in (1, 2, 3)]
+    lx, ly, lz = sh.get("light_dir", [0.3, 0.3, 1.0])
+    ramp = t["opacity"]
+    head = [raw, nx, ny, nz, rx, ry, rz, half, w, h]
+    tail = [sh.get("ambient", 0.25) if on else 1.0, sh.get("diffuse", 0.6) if on else 0.0,
+            sh.get("specular", 0.3) if on else 0.0, sh.get("shininess", 12),
+            # VolPack's eye x and y axes point opposite to the scene
+            # camera's right and down (found against the reference image).
+            -lx, -ly, lz, *col, len(ramp)]
+    for x, a in ramp:
+        tail += [round(x), a]
+    return [str(a) for a in head], [str(a) for a in tail]
+
+
+def volpack(scene, repeat, out_png, rss=None):
+    head, tail = volpack_args(scene)
+    ppm = out_png[:-4] + ".ppm"
+    j = json.loads(run([VOLPACK, *head, str(repeat), ppm, *tail], rss=rss).strip().splitlines()[-1])
+    run([sys.executable, "peers/ppm2png.py", ppm, out_png])
+    os.unlink(ppm)
+    return j
+
+
+def vtk_camera(scene, tmp):
+    cam = os.path.join(tmp, "camera.json")
+    if os.path.exists(cam):
+        os.unlink(cam)
+    # The camera alone is wanted: the coarsest reference step is enough.
+    run([CUBE, "render", "--scene", scene, "--arch", "reference", "--ref-step", "4", "--json", cam])
+    return cam
+
+
+def vtk(scene, cam, repeat, out_png, threads, rss=None):
+    out = run([VENV_PY, "peers/vtk_harness.py", scene, cam, str(repeat), out_png, str(threads)], rss=rss)
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def cube(scene, arch, repeat, out_png, out_json, threads, judge, rss=None):
+    cmd = [CUBE, "render", "--scene", scene, "--arch", arch, "--repeat", str(repeat),
+           "--out", out_png, "--json", out_json]
+    if judge:
+        cmd.append("--compare-reference")
+    run(cmd, env={"RAYON_NUM_THREADS": str(threads)}, rss=rss)
+    return json.load(open(out_json))
+
+
+def error_of(tmp, scene, png):
+    j = os.path.join(tmp, os.path.basename(png) + ".error.json")
+    run([CUBE, "compare", "--scene", scene, "--image", png, "--json", j])
+    return json.load(open(j))["error"]
+
+
+def fit_exponent(points):
+    """Least-squares slope of log t on log n."""
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else None
+
+
+def scene_rows(scene, repeat, tmp):
+    rows = []
+    print(f"VolPack (classified shear-warp), {repeat} runs...", flush=True)
+    png = os.path.join(tmp, "volpack.png")
+    vp = volpack(scene, repeat, png)
+    e = error_of(tmp, scene, png)
+    rows.append({"renderer": "VolPack 1.0 (Debian libvolpack1-dev)", "method": "classified shear-warp",
+                 "threads": 1, "frame_s": vp["frame_seconds"], "tf_change_s": vp["tf_change_seconds"],
+                 "prep_s": vp["prep_seconds"], "error": e, "image": "volpack.png",
+                 "notes": f"min voxel opacity {vp['min_voxel_opacity']}, max ray opacity "
+                          f"{vp['max_ray_opacity']}; one material colour"})
+    cam = vtk_camera(scene, tmp)
+    for threads in sorted({CORES, 1}, reverse=True):
+        print(f"VTK (vtkFixedPointVolumeRayCastMapper), {threads} thread(s), {repeat} runs...", flush=True)
+        png = os.path.join(tmp, f"vtk_{threads}t.png")
+        vt = vtk(scene, cam, repeat, png, threads)
+        rows.append({"renderer": f"VTK {vt['version']} (PyPI vtk)", "method": "vtkFixedPointVolumeRayCastMapper",
+                     "threads": vt["threads"], "frame_s": vt["frame_seconds"],
+                     "tf_change_s": vt["tf_change_seconds"], "prep_s": vt["prep_seconds"],
+                     "error": error_of(tmp, scene, png), "image": f"vtk_{threads}t.png",
+                     "notes": "sample distance 1 voxel, offscreen (EGL); prep = first render"})
+    for arch in KIT:
+        for threads in sorted({CORES, 1}, reverse=True):
+            print(f"cube {arch}, {threads} thread(s), {repeat} runs...", flush=True)
+            png = os.path.join(tmp, f"{arch}_{threads}t.png")
+            j = cube(scene, arch, repeat, png, os.path.join(tmp, f"{arch}_{threads}t.json"), threads, True)
+            d = j.get("details", {})
+            if arch.startswith("quantized"):
+                tf, prep = d["tf_change_seconds"], d["volume_prep_seconds"]
+                notes = f"n = {d['subdivisions']}, {d['normals']} normals"
+            else:
+                # The golden models build their tables every frame: a
+                # transfer-function change costs one frame, and there is no
+                # per-volume step.
+                tf, prep = j["seconds"], None
+                notes = "bit-exact fixed point, tables built every frame"
+            rows.append({"renderer": "cube", "method": arch, "threads": threads,
+                         "frame_s": d.get("frame_seconds", j["seconds"]), "tf_change_s": tf, "prep_s": prep,
+                         "error": j["error"], "image": f"{arch}_{threads}t.png", "notes": notes})
+    return rows
+
+
+def scaling(template, sizes, repeat, tmp):
+    s = json.load(open(template))
+    table = []
+    names = ["VolPack, 1 thread", f"VTK FixedPoint, {CORES} threads"] + [f"cube {a}, {CORES} threads" for a in KIT]
+    times = {n: {} for n in names}
+    rss = {n: None for n in names}
+    for n in sizes:
+        d = os.path.join(tmp, f"phantom{n}")
+        os.makedirs(d)
+        s["volume"] = {"builtin": "phantom", "dims": [n, n, n]}
+        built = os.path.join(d, "builtin.json")
+        json.dump(s, open(built, "w"))
+        run([CUBE, "volume", "--scene", built, "--out", os.path.join(d, "phantom.raw")])
+        s["volume"] = {"raw": "phantom.raw", "dims": [n, n, n], "type": "u8"}
+        scene = os.path.join(d, "scene.json")
+        json.dump(s, open(scene, "w"))
+        last = n == sizes[-1]
+        print(f"scaling: phantom {n}³...", flush=True)
+        mem = []
+        times[names[0]][n] = volpack(scene, repeat, os.path.join(d, "volpack.png"), rss=mem)["frame_seconds"]
+        cam = vtk_camera(scene, d)
+        times[names[1]][n] = vtk(scene, cam, repeat, os.path.join(d, "vtk.png"), CORES, rss=mem)["frame_seconds"]
+        for a, name in zip(KIT, names[2:]):
+            j = cube(scene, a, repeat, os.path.join(d, f"{a}.png"), os.path.join(d, f"{a}.json"), CORES, False, rss=mem)
+            times[name][n] = j.get("details", {}).get("frame_seconds", j["seconds"])
+        if last:
+            for name, kib in zip(names, mem):
+                rss[name] = kib
+        shutil.rmtree(d)
+    for name in names:
+        pts = [(n ** 3, times[name][n]) for n in sizes]
+        table.append({"renderer": name, "frame_s": {str(n): times[name][n] for n in sizes},
+                      "exponent": fit_exponent(pts) if len(pts) > 1 else None,
+                      "peak_rss_mib_at_largest": rss[name] / 1024 if rss[name] else None})
+    return table
+
+
+def markdown(report):
+    ms = lambda x: "—" if x is None else f"{x * 1e3:.1f}"
+    ratio = lambda a, b: "—" if a is None or b is None else f"{a / b:.2f}"
+    rows = report["rows"]
+    vp = rows[0]
+    vtk_by = {r["threads"]: r for r in rows if r["renderer"].startswith("VTK")}
+    md = [f"# Peers on {report['scene']}", "",
+          f"{report['cpu']}, {report['cores']} cores; medians of {report['repeat']} runs; {report['date']}. "
+          "Ratios are time over the peer's time in this run (below 1: faster than the peer); "
+          "the VTK ratio is against VTK at the same number of threads.",
+          "", "| renderer | method | threads | per frame ms | after a TF change ms | per-volume prep ms "
+          "| rel. Euclidean % | PSNR dB | frame / VolPack | TF change / VolPack | frame / VTK | notes |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        e = r["error"]
+        v = vtk_by.get(r["threads"])
+        md.append(f"| {r['renderer']} | {r['method']} | {r['threads']} | {ms(r['frame_s'])} | {ms(r['tf_change_s'])} "
+                  f"| {ms(r['prep_s'])} | {e['rel_euclid_pct']:.2f} | {e['psnr_db']:.2f} "
+                  f"| {ratio(r['frame_s'], vp['frame_s'])} | {ratio(r['tf_change_s'], vp['tf_change_s'])} "
+                  f"| {ratio(r['frame_s'], v and v['frame_s'])} | {r['notes']} |")
+    sc = report.get("scaling")
+    if sc:
+        sizes = list(sc[0]["frame_s"].keys())
+        md += ["", f"## Scaling: the built-in phantom, {report['scaling_scene']}", "",
+               "Per frame ms at N³ voxels; the exponent is the least-squares slope of log time on log voxels; "
+               f"memory is the process's peak resident set at {sizes[-1]}³.", "",
+               "| renderer | " + " | ".join(f"{n}³" for n in sizes) + " | exponent | peak MiB |",
+               "|---|" + "---|" * (len(sizes) + 2)]
+        for r in sc:
+            x = r["exponent"]
+            m = r["peak_rss_mib_at_largest"]
+            md.append(f"| {r['renderer']} | " + " | ".join(ms(r["frame_s"][n]) for n in sizes)
+                      + f" | {'—' if x is None else f'{x:.2f}'} | {'—' if m is None else f'{m:.0f}'} |")
+    return "\n".join(md) + "\n"
+
+
+def main(scene, repeat, out, sizes, scaling_scene):
+    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
+    os.makedirs(out, exist_ok=True)
+    tmp = tempfile.mkdtemp(prefix=".peers.", dir=out)
+    try:
+        report = {"scene": scene, "repeat": repeat, "cpu": cpu, "cores": CORES,
+                  "date": datetime.date.today().isoformat(), "rows": scene_rows(scene, repeat, tmp)}
+        if sizes:
+            report["scaling_scene"] = scaling_scene
+            report["scaling"] = scaling(scaling_scene, sizes, repeat, tmp)
+        open(os.path.join(tmp, "peers.json"), "w").write(json.dumps(report, indent=2) + "\n")
+        open(os.path.join(tmp, "peers.md"), "w").write(markdown(report))
+        for f in ["peers.json", "peers.md"] + [r["image"] for r in report["rows"]]:
+            os.replace(os.path.join(tmp, f), os.path.join(out, f))
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    print(open(os.path.join(out, "peers.md")).read())
+
+
+if __name__ == "__main__":
+    a = sys.argv[1:]
+    if len(a) != 5:
+        fail("run.py SCENE REPEAT OUT SIZES SCALING_SCENE")
+    main(a[0], int(a[1]), a[2], [int(n) for n in a[3].split(",") if n], a[4])
