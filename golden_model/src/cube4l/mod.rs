@@ -86,6 +86,9 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     let hides = sweep.order == Order::FrontToBack
         && matches!(shader.mode, Mode::Composite | Mode::FirstOpaque);
     let opaque_front = |acc: [u32; 4]| hides && acc[3] == full;
+    let identity: Vec<bool> = (0..=crate::fixed::max_of(shader.voxel_bits))
+        .map(|v| shader.is_identity(v))
+        .collect();
     for z in sweep.z0..=sweep.z1 {
         let first = z == sweep.z0;
         let last = z == sweep.z1;
@@ -105,28 +108,28 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                 let busy = near.lo.saturating_sub(1)..near.hi.saturating_add(1);
                 let inner_row = !last && y > 0 && y + 1 < ny;
                 *span = EMPTY;
+                st.voxels += nx as u64;
+                let row_at = y * strides[1] + z * strides[2];
                 for (x, cell) in row.iter_mut().enumerate() {
-                    st.voxels += 1;
-                    let at = x * strides[0] + y * strides[1] + z * strides[2];
+                    let at = row_at + x * strides[0];
                     let v = vol.data[at] as u32;
                     let inner = inner_row && x > 0 && x + 1 < nx;
-                    if inner && shader.is_identity(v) {
+                    if inner && identity[v as usize] {
                         // No ER inside the slice, and the voxel's composite
                         // is the identity: the cell is what it gathers.
-                        *cell = if first || !busy.contains(&x) {
-                            reset
-                        } else {
-                            let (dx, dy) = match parallel {
-                                Some(d) => d,
-                                None => {
-                                    let c = sweep.control(x, y, z);
-                                    (c.dx, c.dy)
-                                }
-                            };
-                            let acc = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
-                            st.terminated += opaque_front(acc) as u64;
-                            acc
+                        if first || !busy.contains(&x) {
+                            *cell = reset;
+                            continue;
+                        }
+                        let (dx, dy) = match parallel {
+                            Some(d) => d,
+                            None => {
+                                let c = sweep.control(x, y, z);
+                                (c.dx, c.dy)
+                            }
                         };
+                        *cell = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
+                        st.terminated += opaque_front(*cell) as u64;
                     } else {
                         let c = sweep.control(x, y, z);
                         let acc = if first {
@@ -189,7 +192,9 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> scene::Result<Fra
     let mut stats = Stats::default();
     for sweep in &plan.sweeps {
         let shader = Shader::new(scene, camera, sweep);
-        let (b, s) = render_sweep(vol, sweep, &shader);
+        // On a pool thread, each slice's rows are shared out without waking
+        // the calling thread.
+        let (b, s) = rayon::scope(|_| render_sweep(vol, sweep, &shader));
         bases.push(b);
         stats = stats + s;
     }
