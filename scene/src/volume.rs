@@ -186,16 +186,14 @@ pub fn from_raw(
             bytes.len()
         ));
     }
-    let raw: Vec<f64> = match kind {
-        RawType::U8 => bytes.iter().map(|&b| b as f64).collect(),
-        RawType::U16 => bytes
-            .chunks_exact(2)
-            .map(|c| u16::from_le_bytes([c[0], c[1]]) as f64)
-            .collect(),
-        RawType::I16 => bytes
-            .chunks_exact(2)
-            .map(|c| i16::from_le_bytes([c[0], c[1]]) as f64)
-            .collect(),
+    // Raw values one at a time, with no copy of the volume wider than the
+    // result (a 512³ volume of f64 would take 1 GiB).
+    let raw = |i: usize| -> f64 {
+        match kind {
+            RawType::U8 => bytes[i] as f64,
+            RawType::U16 => u16::from_le_bytes([bytes[2 * i], bytes[2 * i + 1]]) as f64,
+            RawType::I16 => i16::from_le_bytes([bytes[2 * i], bytes[2 * i + 1]]) as f64,
+        }
     };
     let vmax = max_value(bits);
     let data = match window {
@@ -206,18 +204,18 @@ pub fn from_raw(
             if !(width.is_finite() && width > 0.0) {
                 return Err(format!("window [{lo}, {hi}] must be finite with hi > lo"));
             }
-            raw.iter()
-                .map(|&r| (((r - lo) / width).clamp(0.0, 1.0) * vmax as f64).round() as u16)
+            (0..n)
+                .map(|i| (((raw(i) - lo) / width).clamp(0.0, 1.0) * vmax as f64).round() as u16)
                 .collect()
         }
         None => {
-            if let Some(pos) = raw.iter().position(|&r| r < 0.0 || r > vmax as f64) {
+            if let Some(pos) = (0..n).position(|i| raw(i) < 0.0 || raw(i) > vmax as f64) {
                 return Err(format!(
                     "voxel {pos} has value {} outside [0, {vmax}] for voxel_bits {bits}; give a 'window' to map it",
-                    raw[pos]
+                    raw(pos)
                 ));
             }
-            raw.iter().map(|&r| r as u16).collect()
+            (0..n).map(|i| raw(i) as u16).collect()
         }
     };
     Ok(Volume { dims, bits, data })
