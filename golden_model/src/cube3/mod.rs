@@ -270,10 +270,18 @@ fn cast_ray(
     let id = identity(mode);
     let mut acc = id;
     let mut leaves = vec![id; p];
+    let ray = planes.current.ray(u);
     for seg in 0..nk.div_ceil(p) {
         if matches!(mode, Mode::Composite | Mode::FirstOpaque) && acc.value[3] == m {
             st.terminated += (nk - seg * p) as u64;
             break;
+        }
+        // A segment of zero leaves leaves the accumulator as it is, with no
+        // clipped node: its samples are counted and skipped.
+        let samples = &ray[seg * p..((seg + 1) * p).min(nk)];
+        if samples.iter().all(|&s| shader.is_identity(s)) {
+            st.samples += samples.len() as u64;
+            continue;
         }
         for (i, leaf) in leaves.iter_mut().enumerate() {
             let k = seg * p + i;

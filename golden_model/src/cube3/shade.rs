@@ -93,6 +93,17 @@ impl Shader {
         s >> self.widths.sample_frac()
     }
 
+    /// Whether sample `s` gives a zero leaf wherever it lies (composite,
+    /// first-opaque and X-ray: its opacity row is zero, and outside the
+    /// volume the leaf is zero too). MIP and MinIP take every sample inside.
+    pub fn is_identity(&self, s: u32) -> bool {
+        match (&self.opacity, self.mode) {
+            (_, Mode::Mip | Mode::Minip) => false,
+            (Some(o), _) => o.row_max[o.row(self.index(s))] == 0,
+            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        }
+    }
+
     /// Certainly transparent before any gradient: the software's empty-space
     /// skip (it cannot change a bit).
     pub fn transparent(&self, s: u32, inner: bool) -> bool {

@@ -63,7 +63,12 @@ pub struct SamplePlane {
 
 impl SamplePlane {
     pub fn at(&self, u: i32, k: usize) -> u32 {
-        self.data[(u - self.u0) as usize * self.planes + k]
+        self.ray(u)[k]
+    }
+
+    /// Ray `u`'s samples `0..K`.
+    pub fn ray(&self, u: i32) -> &[u32] {
+        &self.data[(u - self.u0) as usize * self.planes..][..self.planes]
     }
 
     /// An all-zero plane (a scanline beyond the base plane).
