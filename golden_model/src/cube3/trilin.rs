@@ -50,6 +50,22 @@ pub fn interpolate(cell: &Cell, w: Weights, weight_bits: u32, sample_frac: u32) 
     lerp_frac(top, bottom, w.wy, weight_bits)
 }
 
+/// [`interpolate`] in i32, where every voxel `<< sample_frac` is below
+/// `2^(30 - weight_bits)`.
+fn interpolate_i32(cell: &Cell, w: Weights, weight_bits: u32, sample_frac: u32) -> u32 {
+    let half = 1 << (weight_bits - 1);
+    let lerp = |a: i32, b: i32, w: u32| a + (((b - a) * w as i32 + half) >> weight_bits);
+    let z = |[f, b]: [u32; 2]| {
+        lerp(
+            (f << sample_frac) as i32,
+            (b << sample_frac) as i32,
+            w.offset,
+        )
+    };
+    let [a, b, c, d] = cell.map(z);
+    lerp(lerp(a, b, w.wx), lerp(c, d, w.wx), w.wy) as u32
+}
+
 /// One interpolated plane of continuous rays: scanline `v`, rays
 /// `u0..u0 + rays`, samples `0..K`.
 #[derive(Debug, Clone)]
@@ -112,6 +128,15 @@ pub fn plane(view: &View, v: i32, cur: &Prp, next: &Prp, sample_frac: u32) -> Sa
             data.extend(r[0][..nk].iter().map(|&a| a << sample_frac));
             continue;
         }
+        let any = r.iter().fold(0, |o, ray| ray.iter().fold(o, |o, &v| o | v));
+        if any == 0 {
+            // Four empty rays: every sample is 0.
+            data.resize(data.len() + nk, 0);
+            continue;
+        }
+        // Every product of a difference and a weight fits 31 bits: the
+        // same lerps in i32.
+        let narrow = wb <= 16 && (any as u64) << sample_frac < 1 << (30 - wb);
         let wx = view.x.weights(u);
         for k in 0..nk {
             let w = Weights {
@@ -119,7 +144,12 @@ pub fn plane(view: &View, v: i32, cur: &Prp, next: &Prp, sample_frac: u32) -> Sa
                 wx: wx[k],
                 wy: wy[k],
             };
-            data.push(interpolate(&rays_at(r, k), w, wb, sample_frac));
+            let cell = rays_at(r, k);
+            data.push(if narrow {
+                interpolate_i32(&cell, w, wb, sample_frac)
+            } else {
+                interpolate(&cell, w, wb, sample_frac)
+            });
         }
     }
     SamplePlane {
@@ -181,6 +211,35 @@ mod tests {
             interpolate(&cell, w(192, 64, 128), 8, 8),
             (8.5 * 256.0) as u32
         );
+    }
+
+    #[test]
+    fn the_i32_lerps_equal_the_i64_ones_where_they_apply() {
+        // 8-bit voxels with 8 fractional bits of sample and 8 of weight,
+        // 16-bit voxels with none and 12 of weight: the widest that fit.
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |m: u32| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x % (m as u64 + 1)) as u32
+        };
+        for (vmax, frac, wb) in [(255, 8, 8), (65535, 0, 12), (255, 0, 16)] {
+            for _ in 0..20_000 {
+                let cell: Cell = std::array::from_fn(|_| [next(vmax), next(vmax)]);
+                let w = Weights {
+                    offset: next(1 << wb),
+                    wx: next(1 << wb),
+                    wy: next(1 << wb),
+                };
+                assert!((vmax as u64) << frac < 1 << (30 - wb));
+                assert_eq!(
+                    interpolate_i32(&cell, w, wb, frac),
+                    interpolate(&cell, w, wb, frac),
+                    "{cell:?} {w:?}"
+                );
+            }
+        }
     }
 
     #[test]
