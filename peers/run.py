@@ -39,20 +39,19 @@ def fail(msg):
 
 def run(cmd, env=None, rss=None):
     """Run cmd; returns stdout. With rss, the peak resident set (KiB) of the
-    process goes into the list rss."""
-    full = cmd
-    tfile = None
-    if rss is not None:
-        tfile = tempfile.NamedTemporaryFile("r", suffix=".rss", delete=False)
-        full = ["/usr/bin/time", "-f", "%M", "-o", tfile.name] + cmd
+    process goes into the list rss (from wait4: no tool needed)."""
     e = dict(os.environ, **(env or {}))
-    p = subprocess.run(full, env=e, capture_output=True, text=True)
-    if p.returncode != 0:
-        fail(f"{' '.join(cmd[:4])}... failed:\n{p.stderr.strip()[-2000:]}")
-    if tfile is not None:
-        rss.append(int(open(tfile.name).read().split()[-1]))
-        os.unlink(tfile.name)
-    return p.stdout
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        p = subprocess.Popen(cmd, env=e, stdout=out, stderr=err, text=True)
+        _, status, usage = os.wait4(p.pid, 0)
+        p.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        err.seek(0)
+        if p.returncode != 0:
+            fail(f"{' '.join(cmd[:4])}... failed:\n{err.read().strip()[-2000:]}")
+        if rss is not None:
+            rss.append(usage.ru_maxrss)
+        return out.read()
 
 
 def volpack_args(scene_path):
