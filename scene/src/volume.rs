@@ -208,15 +208,14 @@ pub fn from_raw(
                 .map(|i| (((raw(i) - lo) / width).clamp(0.0, 1.0) * vmax as f64).round() as u16)
                 .collect()
         }
-        None => {
-            if let Some(pos) = (0..n).position(|i| raw(i) < 0.0 || raw(i) > vmax as f64) {
-                return Err(format!(
-                    "voxel {pos} has value {} outside [0, {vmax}] for voxel_bits {bits}; give a 'window' to map it",
-                    raw(pos)
-                ));
-            }
-            (0..n).map(|i| raw(i) as u16).collect()
-        }
+        None => (0..n)
+            .map(|i| match raw(i) {
+                r if (0.0..=vmax as f64).contains(&r) => Ok(r as u16),
+                r => Err(format!(
+                    "voxel {i} has value {r} outside [0, {vmax}] for voxel_bits {bits}; give a 'window' to map it"
+                )),
+            })
+            .collect::<std::result::Result<_, _>>()?,
     };
     Ok(Volume { dims, bits, data })
 }

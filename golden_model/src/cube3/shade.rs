@@ -107,10 +107,9 @@ impl Shader {
     /// Certainly transparent before any gradient: the software's empty-space
     /// skip (it cannot change a bit).
     pub fn transparent(&self, s: u32, inner: bool) -> bool {
-        match (&self.opacity, self.mode) {
-            (_, Mode::Mip | Mode::Minip) => false,
-            (Some(o), _) => (self.needs_gradient && !inner) || o.row_max[o.row(self.index(s))] == 0,
-            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        match self.mode {
+            Mode::Mip | Mode::Minip => false,
+            _ => (self.needs_gradient && !inner) || self.is_identity(s),
         }
     }
 

@@ -102,12 +102,9 @@ impl Shader {
     /// Whether the voxel is certainly transparent before any gradient is
     /// computed: the empty-space skip of the software path.
     pub fn transparent(&self, v: u32, c: &Control) -> bool {
-        match (&self.opacity, self.mode) {
-            (_, Mode::Mip | Mode::Minip) => false,
-            (Some(o), _) => {
-                c.invalid || (self.needs_gradient && c.edge) || o.row_max[o.row(v)] == 0
-            }
-            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        match self.mode {
+            Mode::Mip | Mode::Minip => false,
+            _ => c.invalid || (self.needs_gradient && c.edge) || self.is_identity(v),
         }
     }
 
