@@ -85,13 +85,13 @@ pub fn run(args: RenderArgs) -> Result<()> {
         let d = &r.extra;
         let ms = |k: &str| d[k].as_f64().unwrap_or(0.0) * 1e3;
         println!(
-            "  per volume {:.1} ms; per frame {:.2} ms (view {:.2}, classify {:.2}, render {:.2}); after a transfer-function change {:.2} ms",
+            "  per volume {:.1} ms; per frame {:.2} ms (view {:.2}, render {:.2}); after a transfer-function change {:.2} ms (classify {:.2})",
             ms("volume_prep_seconds"),
             ms("frame_seconds"),
             ms("view_prep_seconds"),
-            ms("classify_seconds"),
             ms("render_seconds"),
-            ms("tf_change_seconds")
+            ms("tf_change_seconds"),
+            ms("classify_seconds")
         );
         let pct =
             |k: &str| 100.0 * d[k].as_f64().unwrap_or(0.0) / d["voxels"].as_f64().unwrap_or(1.0);

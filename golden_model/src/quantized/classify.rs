@@ -21,11 +21,15 @@
 //! gradient magnitude multiplies `α` first, so composite and first-opaque
 //! shape `α` per voxel (`Classes::shape`).
 
-use super::grid::{Grid, GMAG_LEVELS};
+use super::grid::{Grid, B, B3, GMAG_LEVELS};
 use super::view::ViewTables;
 use super::{Method, Params};
+use rayon::prelude::*;
 use scene::transfer::TransferFn;
 use scene::{EmptySpace, Mode, Scene};
+
+// A row of a block is one byte of flags.
+const _: () = assert!(B == 8);
 
 /// Largest opacity a splat may take before `−ln(1 − α)` (an opaque
 /// voxel's infinite optical depth) is formed.
@@ -46,39 +50,39 @@ pub struct Classes {
     pub gradient: Option<Vec<f32>>,
     /// Per block: whether it can add anything.
     pub live: Vec<bool>,
+    /// Per row of `B` voxels of a live block (`b·B² + k·B + j`): bit `i`
+    /// set when voxel `i` can add anything. The renderer visits set bits
+    /// only; a row of zero is skipped whole.
+    pub rows: Vec<u8>,
     /// Voxels on the volume's boundary are transparent (the scene needs
     /// gradients, and they have no full neighbourhood).
     pub inner: bool,
     pub shaded: bool,
     /// First-opaque: the opacity at which a voxel counts as opaque.
     pub threshold: f32,
+    /// The view's mean chord through a voxel (set by [`Classes::view`]).
     pub chord: f64,
     pub integral: f64,
+    /// Per value: the transfer function's opacity per voxel length.
+    opacity: Vec<f64>,
+    /// X-ray: `m` of the module doc, for the view.
+    scale: f64,
 }
 
 impl Classes {
-    pub fn new(scene: &Scene, grid: &Grid, view: &ViewTables, params: &Params) -> Classes {
+    /// Classify for the scene's transfer function: everything but the
+    /// per-view terms, which [`Classes::view`] sets.
+    pub fn new(scene: &Scene, grid: &Grid, params: &Params) -> Classes {
         let tf = TransferFn::new(scene);
         let vmax = ((1u64 << scene.hardware.voxel_bits) - 1) as usize;
         let mode = scene.mode;
-        let chord = view.geom.chord();
-        let integral = params.kernel.integral();
-        let f = view.geom.forward.abs();
-        let axis = if f.x >= f.y && f.x >= f.z {
-            0
-        } else if f.y >= f.z {
-            1
-        } else {
-            2
-        };
-        let m = f[axis] / grid.dims[axis] as f64;
-        let alpha: Vec<f64> = (0..=vmax).map(|v| tf.opacity(v as f64)).collect();
+        let opacity: Vec<f64> = (0..=vmax).map(|v| tf.opacity(v as f64)).collect();
         let uses_gradient = tf.has_gradient_opacity() && mode.uses_colour();
         let mut classes = Classes {
             mode,
             method: params.method,
             term: Vec::new(),
-            alpha: alpha.iter().map(|&a| a as f32).collect(),
+            alpha: opacity.iter().map(|&a| a as f32).collect(),
             colour: (0..=vmax)
                 .map(|v| tf.colour(v as f64).to_array().map(|c| c as f32))
                 .collect(),
@@ -88,24 +92,16 @@ impl Classes {
                     .collect()
             }),
             live: Vec::new(),
+            rows: Vec::new(),
             inner: mode.uses_colour() && (scene.shading.enabled || tf.has_gradient_opacity()),
             shaded: scene.shading.enabled,
             threshold: scene.transfer.opaque_threshold as f32,
-            chord,
-            integral,
+            chord: f64::NAN,
+            integral: params.kernel.integral(),
+            opacity,
+            scale: f64::NAN,
         };
-        classes.term = alpha
-            .iter()
-            .enumerate()
-            .map(|(v, &a)| match mode {
-                Mode::Composite | Mode::FirstOpaque => classes.shape(a) as f32,
-                Mode::Xray => match params.method {
-                    Method::Projection => (a * chord * m) as f32,
-                    Method::Splat => (a * m / integral) as f32,
-                },
-                Mode::Mip | Mode::Minip => (v as f64 / vmax as f64) as f32,
-            })
-            .collect();
+        let alpha = &classes.opacity;
         // Which values can add anything: any opacity (first-opaque: enough
         // opacity); MIP any value above zero; MinIP every value.
         let threshold = scene.transfer.opaque_threshold;
@@ -132,7 +128,57 @@ impl Classes {
                 any(lo, hi)
             })
             .collect();
+        classes.rows = vec![0u8; grid.min.len() * B * B];
         classes
+            .rows
+            .par_chunks_mut(B * B)
+            .enumerate()
+            .filter(|(b, _)| classes.live[*b])
+            .for_each(|(b, rows)| {
+                let e = grid.extent(b);
+                let vals = &grid.values[b * B3..(b + 1) * B3];
+                for k in 0..e[2] {
+                    for j in 0..e[1] {
+                        let row = &vals[(k * B + j) * B..][..e[0]];
+                        rows[k * B + j] = row
+                            .iter()
+                            .enumerate()
+                            .fold(0, |m, (i, &v)| m | (adds[v as usize] as u8) << i);
+                    }
+                }
+            });
+        classes
+    }
+
+    /// Set the per-view terms: the opacity corrected to the view's chord
+    /// and X-ray's scale to the mean per slice of the major axis.
+    pub fn view(&mut self, grid: &Grid, view: &ViewTables) {
+        self.chord = view.geom.chord();
+        let f = view.geom.forward.abs();
+        let axis = if f.x >= f.y && f.x >= f.z {
+            0
+        } else if f.y >= f.z {
+            1
+        } else {
+            2
+        };
+        self.scale = f[axis] / grid.dims[axis] as f64;
+        let vmax = (self.opacity.len() - 1) as f64;
+        self.term = (0..self.opacity.len())
+            .map(|v| self.term_of(v, vmax))
+            .collect();
+    }
+
+    fn term_of(&self, v: usize, vmax: f64) -> f32 {
+        let (a, m) = (self.opacity[v], self.scale);
+        match self.mode {
+            Mode::Composite | Mode::FirstOpaque => self.shape(a) as f32,
+            Mode::Xray => match self.method {
+                Method::Projection => (a * self.chord * m) as f32,
+                Method::Splat => (a * m / self.integral) as f32,
+            },
+            Mode::Mip | Mode::Minip => (v as f64 / vmax) as f32,
+        }
     }
 
     /// Composite and first-opaque: the term of opacity `a` (per voxel

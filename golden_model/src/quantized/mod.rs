@@ -15,8 +15,10 @@
 //!    §2.3), the shading table over the normal codes, the block order and
 //!    which image bands each block reaches.
 //! 3. **Per transfer function** (`classify`): colour and opacity tables by
-//!    voxel value and which blocks are empty. Changing the transfer
-//!    function reruns only this stage and the rendering.
+//!    voxel value, which blocks are empty, and in each other block which
+//!    voxels can add anything (a byte of flags per row). Changing the
+//!    transfer function reruns only this stage and the rendering; a new
+//!    view sets only the per-view opacity terms (256 or 65,536 entries).
 //! 4. **Rendering** (`traverse`, §3.3): blocks and voxels back to front
 //!    (the paper), or front to back with early ray termination.
 //!
@@ -119,8 +121,11 @@ impl Params {
 /// Seconds spent in each stage.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Times {
+    /// The grid (per volume).
     pub volume: f64,
+    /// The view tables and the classification's per-view terms (per frame).
     pub view: f64,
+    /// The classification (per transfer function).
     pub classify: f64,
     pub render: f64,
 }
@@ -152,30 +157,43 @@ pub fn render(scene: &Scene, vol: &Volume, method: Method) -> Result<(Image, Sta
     let t = Instant::now();
     let grid = Grid::new(vol, params.normals);
     let volume = t.elapsed().as_secs_f64();
-    let (img, stats, mut times, _) = frame(scene, &grid, &params)?;
+    let t = Instant::now();
+    let mut classes = Classes::new(scene, &grid, &params);
+    let classify = t.elapsed().as_secs_f64();
+    let (img, stats, mut times, _) = frame(scene, &grid, &mut classes, &params)?;
     times.volume = volume;
+    times.classify = classify;
     Ok((img, stats, times))
 }
 
-/// One frame from a grid built before: view tables, classification and
-/// rendering (the volume time is 0). The view tables are returned for
-/// [`reclassify`].
+/// One frame at the scene's view, from a grid and a classification built
+/// before: the view tables with the classification's per-view terms, and
+/// the rendering (the volume and classification times are 0). The view
+/// tables are returned for [`reclassify`].
 pub fn frame(
     scene: &Scene,
     grid: &Grid,
+    classes: &mut Classes,
     params: &Params,
 ) -> Result<(Image, Stats, Times, ViewTables)> {
     let camera = scene.camera();
     let t = Instant::now();
     let view = ViewTables::new(scene, &camera, grid, params);
+    classes.view(grid, &view);
     let view_s = t.elapsed().as_secs_f64();
-    let (img, stats, mut times) = reclassify(scene, grid, &view, params);
-    times.view = view_s;
+    let t = Instant::now();
+    let (img, stats) = traverse::render(scene.mode, grid, &view, classes, params);
+    let times = Times {
+        view: view_s,
+        render: t.elapsed().as_secs_f64(),
+        ..Times::default()
+    };
     Ok((img, stats, times, view))
 }
 
-/// A new transfer function on the same view: classification and rendering
-/// only, no pass over the volume.
+/// A new transfer function at the same view: classification and
+/// rendering. Classification reads the blocks' minima and maxima and the
+/// voxels of the blocks left live, never the rest of the volume.
 pub fn reclassify(
     scene: &Scene,
     grid: &Grid,
@@ -183,7 +201,8 @@ pub fn reclassify(
     params: &Params,
 ) -> (Image, Stats, Times) {
     let t = Instant::now();
-    let classes = Classes::new(scene, grid, view, params);
+    let mut classes = Classes::new(scene, grid, params);
+    classes.view(grid, view);
     let classify = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let (img, stats) = traverse::render(scene.mode, grid, view, &classes, params);

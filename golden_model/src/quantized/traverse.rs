@@ -4,7 +4,14 @@
 //! ray the voxels it crosses then come in ray order, which is all a pixel
 //! needs. Each voxel's centre is its block's origin plus integer steps
 //! (additions only); its square and subdivision come from shifts of that
-//! fixed-point position.
+//! fixed-point position. Within a row of a block only the voxels the
+//! classification flags as able to add anything are visited.
+//!
+//! A projected voxel draws its class's sure pixels in groups of
+//! `view::LANES`, the padding and the failed undecided pixels masked out
+//! rather than branched around, so the work per voxel does not depend on
+//! its class. Its pixels are indexed in its footprint window, checked once
+//! per voxel.
 //!
 //! The image is cut into bands of `BAND` rows, rendered in parallel. A band
 //! visits the blocks that reach it, in traversal order, and draws every
@@ -19,8 +26,9 @@
 
 use super::classify::Classes;
 use super::grid::{Grid, B, B3};
-use super::view::{Footprint, ViewTables, BAND, FRAC};
+use super::view::{ClassRange, Footprint, ViewTables, Window, BAND, FRAC, LANES};
 use super::{Method, Params, Stats};
+use glam::{BVec4A, Vec4};
 use rayon::prelude::*;
 use scene::{Image, Mode, Traversal};
 
@@ -30,33 +38,41 @@ pub const OPAQUE: f32 = 1.0 - 1.0 / 1024.0;
 
 const MASK: i64 = (1 << FRAC) - 1;
 
-/// What a voxel adds to the pixels it covers: its colour and its term
-/// (`classify`).
-#[derive(Debug, Clone, Copy)]
-struct Src {
-    c: [f32; 3],
-    t: f32,
-}
-
-/// A mode's per-voxel source and per-pixel operator.
+/// A mode's per-voxel source and per-pixel operator. Pixels are `Vec4`
+/// (red, green, blue, opacity) so the over operator is one four-lane
+/// multiply and add; every lane is the same IEEE operation, in the same
+/// order, as the scalar form.
 trait Kind: Sync {
+    /// What a voxel adds to the pixels it covers.
+    type Src: Copy;
     /// Starting value of every channel of a pixel.
     const INIT: f32;
     /// Whether finished pixels and blocks are skipped (front to back).
     const OCCLUDES: bool;
-    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Src>;
-    fn apply(dst: &mut [f32; 4], s: &Src, w: f32);
+    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Self::Src>;
+    fn apply(dst: &mut Vec4, s: &Self::Src, w: f32);
+    /// `apply` when `on`, else leave `dst` as it is, without a branch: the
+    /// padded and undecided pixels of a projection class go through here.
+    #[inline(always)]
+    fn apply_if(dst: &mut Vec4, s: &Self::Src, w: f32, on: bool) {
+        let mut new = *dst;
+        Self::apply(&mut new, s, w);
+        *dst = Vec4::select(BVec4A::splat(on), new, *dst);
+    }
 }
 
-/// The voxel's shaded colour.
+/// The voxel's shaded colour, with opacity lane 1.
 #[inline(always)]
-fn colour(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16) -> [f32; 3] {
-    let c = cl.colour[v];
+fn colour(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16) -> Vec4 {
+    let [r, g, b] = cl.colour[v];
+    let c = Vec4::new(r, g, b, 1.0);
     if !cl.shaded {
         return c;
     }
     let [d, s] = shade[n as usize];
-    c.map(|x| (x * d + s).min(1.0))
+    let mut c = (c * d + Vec4::splat(s)).min(Vec4::ONE);
+    c.w = 1.0;
+    c
 }
 
 /// Composite and first-opaque: the voxel's opacity term, or None when it
@@ -74,41 +90,53 @@ fn opacity(cl: &Classes, v: usize, g: u8) -> Option<f32> {
     (t > 0.0).then_some(t)
 }
 
+/// A composited voxel: its colour `c` (opacity lane 1) and opacity term
+/// `t`; projected back to front, also `pre = c·α` and `k = 1 − α`, the
+/// per-voxel halves of the over operator.
+#[derive(Clone, Copy)]
+struct Coloured {
+    c: Vec4,
+    t: f32,
+    pre: Vec4,
+    k: f32,
+}
+
 /// Composite: the over operator; `SPLAT` takes opacity `1 − e^(−t·w)`.
 struct Over<const F2B: bool, const SPLAT: bool>;
 
 impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
+    type Src = Coloured;
     const INIT: f32 = 0.0;
     const OCCLUDES: bool = F2B;
     #[inline(always)]
-    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Src> {
+    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Coloured> {
         let t = opacity(cl, v, g)?;
-        Some(Src {
-            c: colour(cl, shade, v, n),
-            t,
-        })
+        let c = colour(cl, shade, v, n);
+        // Projection takes α = t at every pixel: form the voxel's half of
+        // the back-to-front operator once.
+        let (pre, k) = if SPLAT || F2B {
+            (Vec4::ZERO, 0.0)
+        } else {
+            (c * t, 1.0 - t)
+        };
+        Some(Coloured { c, t, pre, k })
     }
     #[inline(always)]
-    fn apply(dst: &mut [f32; 4], s: &Src, w: f32) {
+    fn apply(dst: &mut Vec4, s: &Coloured, w: f32) {
         let a = || if SPLAT { 1.0 - (-s.t * w).exp() } else { s.t };
         if F2B {
-            if dst[3] < OPAQUE {
-                let a = a();
-                let k = (1.0 - dst[3]) * a;
-                for (d, c) in dst.iter_mut().zip(s.c) {
-                    *d += k * c;
-                }
-                dst[3] += k;
+            // The opacity lane of `c` is 1: it accumulates k.
+            if dst.w < OPAQUE {
+                let k = (1.0 - dst.w) * a();
+                *dst += k * s.c;
             }
-        } else {
+        } else if SPLAT {
             // Back to front the accumulated opacity is never read (no
-            // occlusion test; the image is the colour over black), so
-            // only the colour channels are composited.
+            // occlusion test; the image is the colour over black).
             let a = a();
-            let k = 1.0 - a;
-            for (d, c) in dst[..3].iter_mut().zip(s.c) {
-                *d = c * a + k * *d;
-            }
+            *dst = s.c * a + (1.0 - a) * *dst;
+        } else {
+            *dst = s.pre + s.k * *dst;
         }
     }
 }
@@ -118,20 +146,18 @@ impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
 struct First<const F2B: bool>;
 
 impl<const F2B: bool> Kind for First<F2B> {
+    type Src = Vec4;
     const INIT: f32 = 0.0;
     const OCCLUDES: bool = F2B;
     #[inline(always)]
-    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Src> {
+    fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Vec4> {
         let t = opacity(cl, v, g)?;
-        (t >= cl.threshold).then(|| Src {
-            c: colour(cl, shade, v, n),
-            t,
-        })
+        (t >= cl.threshold).then(|| colour(cl, shade, v, n))
     }
     #[inline(always)]
-    fn apply(dst: &mut [f32; 4], s: &Src, _w: f32) {
-        if !F2B || dst[3] == 0.0 {
-            *dst = [s.c[0], s.c[1], s.c[2], 1.0];
+    fn apply(dst: &mut Vec4, c: &Vec4, _w: f32) {
+        if !F2B || dst.w == 0.0 {
+            *dst = *c;
         }
     }
 }
@@ -140,16 +166,17 @@ impl<const F2B: bool> Kind for First<F2B> {
 struct Max;
 
 impl Kind for Max {
+    type Src = f32;
     const INIT: f32 = 0.0;
     const OCCLUDES: bool = false;
     #[inline(always)]
-    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<Src> {
+    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<f32> {
         let t = cl.term[v];
-        (t > 0.0).then_some(Src { c: [0.0; 3], t })
+        (t > 0.0).then_some(t)
     }
     #[inline(always)]
-    fn apply(dst: &mut [f32; 4], s: &Src, _w: f32) {
-        dst[0] = dst[0].max(s.t);
+    fn apply(dst: &mut Vec4, t: &f32, _w: f32) {
+        dst.x = dst.x.max(*t);
     }
 }
 
@@ -157,18 +184,16 @@ impl Kind for Max {
 struct Min;
 
 impl Kind for Min {
+    type Src = f32;
     const INIT: f32 = f32::INFINITY;
     const OCCLUDES: bool = false;
     #[inline(always)]
-    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<Src> {
-        Some(Src {
-            c: [0.0; 3],
-            t: cl.term[v],
-        })
+    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<f32> {
+        Some(cl.term[v])
     }
     #[inline(always)]
-    fn apply(dst: &mut [f32; 4], s: &Src, _w: f32) {
-        dst[0] = dst[0].min(s.t);
+    fn apply(dst: &mut Vec4, t: &f32, _w: f32) {
+        dst.x = dst.x.min(*t);
     }
 }
 
@@ -176,16 +201,17 @@ impl Kind for Min {
 struct Sum<const SPLAT: bool>;
 
 impl<const SPLAT: bool> Kind for Sum<SPLAT> {
+    type Src = f32;
     const INIT: f32 = 0.0;
     const OCCLUDES: bool = false;
     #[inline(always)]
-    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<Src> {
+    fn source(cl: &Classes, _: &[[f32; 2]], v: usize, _: u16, _: u8) -> Option<f32> {
         let t = cl.term[v];
-        (t > 0.0).then_some(Src { c: [0.0; 3], t })
+        (t > 0.0).then_some(t)
     }
     #[inline(always)]
-    fn apply(dst: &mut [f32; 4], s: &Src, w: f32) {
-        dst[0] += if SPLAT { s.t * w } else { s.t };
+    fn apply(dst: &mut Vec4, t: &f32, w: f32) {
+        dst.x += if SPLAT { t * w } else { *t };
     }
 }
 
@@ -236,35 +262,29 @@ pub fn render(
         let out = &mut img.rgb[k * BAND * w..(k * BAND * w + px.len())];
         for (o, p) in out.iter_mut().zip(px) {
             *o = match mode {
-                Mode::Composite | Mode::FirstOpaque => [p[0], p[1], p[2]].map(|x| x as f64),
-                Mode::Mip => [p[0] as f64; 3],
-                Mode::Minip => [if p[0].is_finite() { p[0] as f64 } else { 0.0 }; 3],
-                Mode::Xray => [(p[0] as f64).min(1.0); 3],
+                Mode::Composite | Mode::FirstOpaque => [p.x, p.y, p.z].map(|x| x as f64),
+                Mode::Mip => [p.x as f64; 3],
+                Mode::Minip => [if p.x.is_finite() { p.x as f64 } else { 0.0 }; 3],
+                Mode::Xray => [(p.x as f64).min(1.0); 3],
             };
         }
     }
     (img, stats)
 }
 
-fn run<K: Kind>(
-    _: K,
-    grid: &Grid,
-    view: &ViewTables,
-    cl: &Classes,
-) -> Vec<(Vec<[f32; 4]>, Counts)> {
+fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<Vec4>, Counts)> {
     match &view.footprint {
         Footprint::Projection {
             table,
-            sure_start,
+            ranges,
             sure,
-            und_start,
             undecided,
         } => {
             let fp = Projected {
+                window: view.window,
                 class_of: &table.class_of,
-                sure_start,
+                ranges,
                 sure,
-                und_start,
                 undecided,
                 eqs: &table.eqs,
             };
@@ -272,6 +292,7 @@ fn run<K: Kind>(
         }
         Footprint::Splat { table, offsets } => {
             let fp = Splatted {
+                window: view.window,
                 start: &table.start,
                 offsets,
                 weights: &table.weights,
@@ -286,7 +307,7 @@ fn bands<K: Kind, F: Draw>(
     grid: &Grid,
     view: &ViewTables,
     cl: &Classes,
-) -> Vec<(Vec<[f32; 4]>, Counts)> {
+) -> Vec<(Vec<Vec4>, Counts)> {
     (0..view.bands.len())
         .into_par_iter()
         .map(|band| render_band::<K, F>(fp, grid, view, cl, band))
@@ -299,23 +320,23 @@ fn bands<K: Kind, F: Draw>(
 trait Draw: Sync {
     fn draw<K: Kind>(
         &self,
-        buf: &mut [[f32; 4]],
+        buf: &mut [Vec4],
         cell: usize,
         fx: u64,
         fy: u64,
         base: isize,
-        src: &Src,
+        src: &K::Src,
     );
 }
 
 /// §2.2: the class's sure pixels, and the undecided ones that pass their
 /// edge tests (Eq. 5).
 struct Projected<'a> {
+    window: Window,
     class_of: &'a [u16],
-    sure_start: &'a [u32],
-    sure: &'a [isize],
-    und_start: &'a [u32],
-    undecided: &'a [(isize, u32, u32)],
+    ranges: &'a [ClassRange],
+    sure: &'a [u32],
+    undecided: &'a [(u32, u32, u32)],
     eqs: &'a [[f64; 3]],
 }
 
@@ -323,38 +344,50 @@ impl Draw for Projected<'_> {
     #[inline(always)]
     fn draw<K: Kind>(
         &self,
-        buf: &mut [[f32; 4]],
+        buf: &mut [Vec4],
         cell: usize,
         fx: u64,
         fy: u64,
         base: isize,
-        src: &Src,
+        src: &K::Src,
     ) {
-        let c = self.class_of[cell] as usize;
-        for &o in &self.sure[self.sure_start[c] as usize..self.sure_start[c + 1] as usize] {
-            K::apply(&mut buf[(base + o) as usize], src, 1.0);
+        let win = self.window.at(buf, base);
+        let r = self.ranges[self.class_of[cell] as usize];
+        let sure = &self.sure[r.sure as usize..(r.sure + r.padded) as usize];
+        for (g, group) in sure.chunks_exact(LANES).enumerate() {
+            for (j, &o) in group.iter().enumerate() {
+                let on = ((g * LANES + j) as u32) < r.sure_len;
+                // SAFETY: every offset is below the window's length
+                // (asserted where the view tables are built).
+                K::apply_if(unsafe { win.get_unchecked_mut(o as usize) }, src, 1.0, on);
+            }
         }
-        let und = &self.undecided[self.und_start[c] as usize..self.und_start[c + 1] as usize];
-        if und.is_empty() {
+        if r.und_len == 0 {
             return;
         }
         let scale = 1.0 / (1u64 << FRAC) as f64;
         let (x, y) = (fx as f64 * scale, fy as f64 * scale);
-        for &(o, first, len) in und {
-            let inside = self.eqs[first as usize..(first + len) as usize]
-                .iter()
-                .all(|e| e[0] * x + e[1] * y >= -e[2]);
-            if inside {
-                K::apply(&mut buf[(base + o) as usize], src, 1.0);
+        for &(o, first, len) in &self.undecided[r.und as usize..(r.und + r.und_len) as usize] {
+            let mut inside = true;
+            for e in &self.eqs[first as usize..(first + len) as usize] {
+                inside &= e[0] * x + e[1] * y >= -e[2];
             }
+            // SAFETY: as for the sure pixels.
+            K::apply_if(
+                unsafe { win.get_unchecked_mut(o as usize) },
+                src,
+                1.0,
+                inside,
+            );
         }
     }
 }
 
 /// §2.3: the subdivision's pixels with their kernel weights.
 struct Splatted<'a> {
+    window: Window,
     start: &'a [u32],
-    offsets: &'a [isize],
+    offsets: &'a [u32],
     weights: &'a [f32],
 }
 
@@ -362,16 +395,19 @@ impl Draw for Splatted<'_> {
     #[inline(always)]
     fn draw<K: Kind>(
         &self,
-        buf: &mut [[f32; 4]],
+        buf: &mut [Vec4],
         cell: usize,
         _: u64,
         _: u64,
         base: isize,
-        src: &Src,
+        src: &K::Src,
     ) {
+        let win = self.window.at(buf, base);
         let (s, t) = (self.start[cell] as usize, self.start[cell + 1] as usize);
         for (&o, &w) in self.offsets[s..t].iter().zip(&self.weights[s..t]) {
-            K::apply(&mut buf[(base + o) as usize], src, w);
+            // SAFETY: every offset is below the window's length (asserted
+            // where the view tables are built).
+            K::apply(unsafe { win.get_unchecked_mut(o as usize) }, src, w);
         }
     }
 }
@@ -396,11 +432,11 @@ fn render_band<K: Kind, F: Draw>(
     view: &ViewTables,
     cl: &Classes,
     band: usize,
-) -> (Vec<[f32; 4]>, Counts) {
+) -> (Vec<Vec4>, Counts) {
     let (w, h) = (view.geom.width, view.geom.height);
     let (y0, y1) = (band * BAND, ((band + 1) * BAND).min(h));
     let (m, stride) = (view.margin, view.stride);
-    let mut buf = vec![[K::INIT; 4]; (y1 - y0 + 2 * m) * stride];
+    let mut buf = vec![Vec4::splat(K::INIT); (y1 - y0 + 2 * m) * stride];
     let [[ex0, ey0], [ex1, ey1]] = view.ext.map(|e| e.map(|x| x as i64));
     let one = 1i64 << FRAC;
     // Centres whose footprint reaches the band's rows and the image's
@@ -491,17 +527,23 @@ fn render_band<K: Kind, F: Draw>(
                     continue;
                 }
                 counts.inspected += (i1.min(h1) - i0.max(h0)).max(0) as u64;
+                // The row's voxels that can add anything, within i0..i1.
+                let within = ((1u32 << i1) - (1u32 << i0)) as u8;
+                let mut bits = cl.rows[b * B * B + k * B + j] & within;
                 let row = b * B3 + (k * B + j) * B;
-                for ti in 0..(i1 - i0) as usize {
-                    let i = at(0, i0 as usize, i1 as usize, ti);
-                    let idx = row + i;
-                    let Some(src) = K::source(
-                        cl,
-                        &view.shade,
-                        grid.values[idx] as usize,
-                        grid.normals[idx],
-                        grid.gmag[idx],
-                    ) else {
+                let values: &[u16; B] = grid.values[row..row + B].try_into().unwrap();
+                let normals: &[u16; B] = grid.normals[row..row + B].try_into().unwrap();
+                let gmag: &[u8; B] = grid.gmag[row..row + B].try_into().unwrap();
+                while bits != 0 {
+                    let i = if view.descending[0] {
+                        7 - bits.leading_zeros() as usize
+                    } else {
+                        bits.trailing_zeros() as usize
+                    } & (B - 1);
+                    bits ^= 1 << i;
+                    let Some(src) =
+                        K::source(cl, &view.shade, values[i] as usize, normals[i], gmag[i])
+                    else {
                         continue;
                     };
                     counts.treated += ((i as i64) >= h0 && (i as i64) < h1) as u64;
@@ -528,7 +570,7 @@ fn render_band<K: Kind, F: Draw>(
 /// Whether every pixel of the box `[x0, x1, y0, y1]` (inclusive, image
 /// coordinates, rows within the band) is finished.
 fn finished(
-    buf: &[[f32; 4]],
+    buf: &[Vec4],
     [x0, x1, y0, y1]: [i32; 4],
     band_y0: usize,
     m: usize,
@@ -539,7 +581,7 @@ fn finished(
     for y in y0..=y1 {
         let r = (y as usize - band_y0 + m) * stride + m;
         for x in x0..=x1 {
-            if buf[r + x as usize][3] < OPAQUE {
+            if buf[r + x as usize].w < OPAQUE {
                 return false;
             }
         }

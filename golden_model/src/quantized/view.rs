@@ -84,23 +84,59 @@ impl Geometry {
     }
 }
 
+/// Sure pixels are drawn in groups of this many, so that the loop's trip
+/// count (one group for most classes) does not vary from voxel to voxel.
+pub const LANES: usize = 4;
+
+/// Where one projection class's pixels lie in the footprint's lists.
+#[derive(Debug, Clone, Copy)]
+pub struct ClassRange {
+    /// `sure[sure..sure + padded]`, of which the first `sure_len` are real.
+    pub sure: u32,
+    pub padded: u32,
+    pub sure_len: u32,
+    /// `undecided[und..und + und_len]`.
+    pub und: u32,
+    pub und_len: u32,
+}
+
 /// A footprint table with offsets made single integers.
 #[derive(Debug, Clone)]
 pub enum Footprint {
     Projection {
         table: ProjectionTable,
-        /// Per class: `sure[sure_start[c]..sure_start[c + 1]]`.
-        sure_start: Vec<u32>,
-        sure: Vec<isize>,
-        /// Per class: `undecided[und_start[c]..und_start[c + 1]]` as
-        /// (offset, first equation, equation count).
-        und_start: Vec<u32>,
-        undecided: Vec<(isize, u32, u32)>,
+        /// Per class: where its pixels lie in `sure` and `undecided`.
+        ranges: Vec<ClassRange>,
+        /// Each class's sure offsets in the window, padded to a multiple
+        /// of `LANES` by repeating its last one.
+        sure: Vec<u32>,
+        /// Undecided pixels as (offset in the window, first equation,
+        /// equation count).
+        undecided: Vec<(u32, u32, u32)>,
     },
     Splat {
         table: SplatTable,
-        offsets: Vec<isize>,
+        /// Offsets in the window.
+        offsets: Vec<u32>,
     },
+}
+
+/// The pixels of a band buffer that a voxel's footprint can reach: every
+/// footprint offset is an index below `len` from the square's top-left
+/// pixel moved by `lo`.
+#[derive(Debug, Clone, Copy)]
+pub struct Window {
+    pub lo: isize,
+    pub len: usize,
+}
+
+impl Window {
+    /// The window of the voxel whose square's top-left pixel is `buf[base]`
+    /// (one bounds check per voxel; its offsets then index it unchecked).
+    #[inline(always)]
+    pub fn at<T>(self, buf: &mut [T], base: isize) -> &mut [T] {
+        &mut buf[(base + self.lo) as usize..][..self.len]
+    }
 }
 
 /// Everything a frame needs that depends on the view alone.
@@ -114,6 +150,8 @@ pub struct ViewTables {
     /// Rows and columns of margin around a band's buffer, and its stride.
     pub margin: usize,
     pub stride: usize,
+    /// Where a footprint's offsets point, from the square's top-left pixel.
+    pub window: Window,
     /// Per normal code (directions, then flat): ambient + diffuse, and
     /// specular.
     pub shade: Vec<[f32; 2]>,
@@ -154,26 +192,49 @@ impl ViewTables {
         let margin = span + 1;
         let stride = geom.width + 2 * margin;
         let lin = |o: &[i32; 2]| o[1] as isize * stride as isize + o[0] as isize;
+        // Each offset lies within ext per axis, so its single integer lies
+        // in lin(ext[0])..=lin(ext[1]).
+        let window = Window {
+            lo: lin(&ext[0]),
+            len: (lin(&ext[1]) - lin(&ext[0])) as usize + 1,
+        };
+        let rel = |o: &[i32; 2]| {
+            let r = lin(o) - window.lo;
+            assert!(
+                (0..window.len as isize).contains(&r),
+                "footprint offset outside its window"
+            );
+            r as u32
+        };
         let (footprint, entries, classes) = match tables {
             Ok(table) => {
-                let (mut sure_start, mut sure) = (vec![0u32], Vec::new());
-                let (mut und_start, mut undecided) = (vec![0u32], Vec::new());
+                let (mut ranges, mut sure, mut undecided) = (Vec::new(), Vec::new(), Vec::new());
                 for c in &table.classes {
-                    sure.extend(c.sure.iter().map(lin));
-                    undecided.extend(c.undecided.iter().map(|u| (lin(&u.offset), u.first, u.len)));
-                    sure_start.push(sure.len() as u32);
-                    und_start.push(undecided.len() as u32);
+                    let first = sure.len();
+                    sure.extend(c.sure.iter().map(rel));
+                    if let Some(&last) = sure.last().filter(|_| !c.sure.is_empty()) {
+                        sure.resize(first + c.sure.len().next_multiple_of(LANES), last);
+                    }
+                    ranges.push(ClassRange {
+                        sure: first as u32,
+                        padded: (sure.len() - first) as u32,
+                        sure_len: c.sure.len() as u32,
+                        und: undecided.len() as u32,
+                        und_len: c.undecided.len() as u32,
+                    });
+                    undecided.extend(c.undecided.iter().map(|u| (rel(&u.offset), u.first, u.len)));
                 }
-                let (e, k) = (
-                    (sure.len() + undecided.len()) as u64,
-                    table.classes.len() as u64,
-                );
+                let e = table
+                    .classes
+                    .iter()
+                    .map(|c| c.sure.len() + c.undecided.len())
+                    .sum::<usize>() as u64;
+                let k = table.classes.len() as u64;
                 (
                     Footprint::Projection {
                         table,
-                        sure_start,
+                        ranges,
                         sure,
-                        und_start,
                         undecided,
                     },
                     e,
@@ -181,7 +242,7 @@ impl ViewTables {
                 )
             }
             Err(table) => {
-                let offsets: Vec<isize> = table.offsets.iter().map(lin).collect();
+                let offsets: Vec<u32> = table.offsets.iter().map(rel).collect();
                 let e = offsets.len() as u64;
                 (Footprint::Splat { table, offsets }, e, (n * n) as u64)
             }
@@ -252,6 +313,7 @@ impl ViewTables {
             ext,
             margin,
             stride,
+            window,
             shade,
             descending,
             bands,
