@@ -362,3 +362,41 @@ fn empty_and_impulse_volumes() {
         "{ours:?} vs {theirs:?}"
     );
 }
+
+/// The per-row flags are exactly the voxels, within each live block's
+/// extent, whose value can add anything (here, a band of opacity), and no
+/// voxel of an empty block or beyond the volume is flagged.
+#[test]
+fn row_flags_mark_exactly_the_voxels_that_can_add() {
+    let s = scene(
+        r#"{"builtin": "phantom", "dims": [21, 18, 13]}"#,
+        [20.0, 30.0, 0.0],
+        r#", "transfer": {"opacity": [[0, 0], [90, 0], [100, 0.5], [140, 0.5], [150, 0]], "color": [[0, 1, 1, 1]]}"#,
+    );
+    let vol = Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
+    let params = q::Params::of(&s, Method::Projection).unwrap();
+    let grid = q::Grid::new(&vol, params.normals);
+    let cl = q::Classes::new(&s, &grid, &params);
+    let adds = |v: u16| (91..150).contains(&v);
+    let b8 = q::grid::B;
+    let (mut flagged, mut want) = (0, 0);
+    for b in 0..grid.min.len() {
+        let e = grid.extent(b);
+        for k in 0..b8 {
+            for j in 0..b8 {
+                let row = cl.rows[(b * b8 + k) * b8 + j];
+                for i in 0..b8 {
+                    let inside = i < e[0] && j < e[1] && k < e[2];
+                    let v = grid.values[((b * b8 + k) * b8 + j) * b8 + i];
+                    let expect = inside && cl.live[b] && adds(v);
+                    assert_eq!(row >> i & 1 == 1, expect, "block {b} voxel {i} {j} {k}");
+                    flagged += (row >> i & 1) as usize;
+                    want += (inside && adds(v)) as usize;
+                }
+            }
+        }
+    }
+    // Every voxel that can add lies in a live block, and some do.
+    assert_eq!(flagged, want);
+    assert!(want > 0);
+}
