@@ -530,6 +530,9 @@ fn render_band<K: Kind, F: Draw>(
                 // The row's voxels that can add anything, within i0..i1.
                 let within = ((1u32 << i1) - (1u32 << i0)) as u8;
                 let mut bits = cl.rows[b * B * B + k * B + j] & within;
+                if bits == 0 {
+                    continue;
+                }
                 let row = b * B3 + (k * B + j) * B;
                 let values: &[u16; B] = grid.values[row..row + B].try_into().unwrap();
                 let normals: &[u16; B] = grid.normals[row..row + B].try_into().unwrap();
