@@ -59,10 +59,11 @@ pub fn case_in_view(name: &str, json: &str, p: usize, scanlines: usize, vi: usiz
     let (base, _) = render_view(&vol, view, &shader, n, p);
     let (nk, g, r) = (view.dims[2], config.segments, config.rays);
     let (mut cur, mut next, mut want) = (vec![], vec![], vec![]);
+    let traversal = prp::Traversal::new(&vol, view);
     for vi in 0..config.scanlines {
         let v = config.v0 + vi as i32;
-        let pc = prp::fetch(&vol, view, v, config.u0, r);
-        let pn = prp::fetch(&vol, view, v + 1, config.u0, r);
+        let pc = prp::fetch(&traversal, view, v, config.u0, r);
+        let pn = prp::fetch(&traversal, view, v + 1, config.u0, r);
         for ri in 0..r {
             let u = config.u0 + ri as i32;
             for seg in 0..g {

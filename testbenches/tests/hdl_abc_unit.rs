@@ -63,10 +63,11 @@ fn case(name: &str, json: &str, p: usize, n: Neighbourhood, lines: i32) -> Case 
     let g = nk.div_ceil(p);
     // Sample planes v0 - 1 ..= v0 + lines: the gradients of v0 .. v0 + lines.
     let v0 = (view.v[0] + view.v[1]) / 2 - lines / 2;
+    let traversal = prp::Traversal::new(&vol, view);
     let planes: Vec<trilin::SamplePlane> = (v0 - 1..=v0 + lines)
         .map(|v| {
-            let cur = prp::fetch(&vol, view, v, pu0, prays);
-            let next = prp::fetch(&vol, view, v + 1, pu0, prays);
+            let cur = prp::fetch(&traversal, view, v, pu0, prays);
+            let next = prp::fetch(&traversal, view, v + 1, pu0, prays);
             trilin::plane(view, v, &cur, &next, f)
         })
         .collect();

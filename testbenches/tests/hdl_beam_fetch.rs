@@ -63,10 +63,11 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
         );
     }
     let mut want = Vec::new();
+    let traversal = prp::Traversal::new(&vol, view);
     for vi in 0..scanlines {
         let v = v0 + vi as i32;
-        let pc = prp::fetch(&vol, view, v, u0, rays);
-        let pn = prp::fetch(&vol, view, v + 1, u0, rays);
+        let pc = prp::fetch(&traversal, view, v, u0, rays);
+        let pn = prp::fetch(&traversal, view, v + 1, u0, rays);
         for r in 0..rays {
             let u = u0 + r as i32;
             for seg in 0..config.segments {

@@ -45,9 +45,10 @@ fn view_case(name: &str, json: &str, lines: i32) -> Case {
     let v0 = (view.v[0] + view.v[1]) / 2 - lines / 2;
     let mut inputs = Vec::new();
     let mut want = Vec::new();
+    let traversal = prp::Traversal::new(&vol, view);
     for v in v0..v0 + lines {
-        let cur = prp::fetch(&vol, view, v, pu0, rays);
-        let next = prp::fetch(&vol, view, v + 1, pu0, rays);
+        let cur = prp::fetch(&traversal, view, v, pu0, rays);
+        let next = prp::fetch(&traversal, view, v + 1, pu0, rays);
         want.extend(trilin::plane(view, v, &cur, &next, f).data);
         for i in 0..rays - 1 {
             let u = pu0 + i as i32;

@@ -52,9 +52,10 @@ fn case(name: &str, json: &str, p: usize, lines: i32) -> Case {
     let v0 = (view.v[0] + view.v[1]) / 2 - lines / 2;
     let lane = |prp: &prp::Prp, u: i32, k: usize| if k <= nk { prp.at(u, k) } else { 0 };
     let mut clocks: Vec<Clock> = Vec::new();
+    let traversal = prp::Traversal::new(&vol, view);
     for v in v0..v0 + lines {
-        let cur = prp::fetch(&vol, view, v, pu0, prays);
-        let next = prp::fetch(&vol, view, v + 1, pu0, prays);
+        let cur = prp::fetch(&traversal, view, v, pu0, prays);
+        let next = prp::fetch(&traversal, view, v + 1, pu0, prays);
         let plane = trilin::plane(view, v, &cur, &next, f);
         let base = clocks.len();
         for r in 0..prays {

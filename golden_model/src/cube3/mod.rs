@@ -124,6 +124,7 @@ pub fn render_view(
 ) -> (BasePlane, Stats) {
     let [w, h] = view.base_dims();
     let (u0, v0) = (view.u[0], view.v[0]);
+    let vol = &prp::Traversal::new(vol, view);
     let rows: Vec<(Vec<[u32; 4]>, Vec<bool>, Stats)> = chunks(view)
         .into_par_iter()
         .map(|[va, vb]| render_rows(vol, view, shader, n, p, va, vb))
@@ -163,7 +164,7 @@ pub fn render_view(
 /// `gradients` is false). PRPs `va - 1 ..= vb + 2` are fetched, sample planes
 /// `va - 1 ..= vb + 1` interpolated, in a window of three.
 pub fn scanlines(
-    vol: &Volume,
+    vol: &prp::Traversal,
     view: &View,
     sample_frac: u32,
     gradients: bool,
@@ -209,7 +210,7 @@ pub fn scanlines(
 
 /// Scanlines `va..=vb` of a base plane: pixels, cast flags and counters.
 fn render_rows(
-    vol: &Volume,
+    vol: &prp::Traversal,
     view: &View,
     shader: &Shader,
     n: Neighbourhood,

@@ -15,7 +15,56 @@
 //! an addressing choice that does not change a value.
 
 use super::plan::View;
+use rayon::prelude::*;
 use scene::volume::Volume;
+
+/// The volume in one base plane's traversal order `(x, y, k)`, `x`
+/// fastest: the order Cube-3's memory modules hold it in
+/// (`BeamFetchConfig::modules`, without the skew), built once a base
+/// plane, so that each beam is a row. (Read in the dataset's own order, a
+/// beam along the dataset's slowest axis is a cache miss a voxel.)
+#[derive(Debug, Clone)]
+pub struct Traversal {
+    nx: usize,
+    ny: usize,
+    data: Vec<u16>,
+}
+
+impl Traversal {
+    pub fn new(vol: &Volume, view: &View) -> Traversal {
+        let [nx, ny, nk] = view.dims;
+        let stride = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
+        let [sx, sy, sk] = view.perm.map(|a| stride[a]);
+        let mut data = vec![0; nx * ny * nk];
+        data.par_chunks_mut(nx * ny)
+            .enumerate()
+            .for_each(|(k, plane)| {
+                let slice = &vol.data[if view.positive { k } else { nk - 1 - k } * sk..];
+                // The inner loop runs along the dataset's shorter stride:
+                // a stride of whole slices would map every read of a row
+                // to one cache set.
+                if sx <= sy {
+                    for (y, row) in plane.chunks_exact_mut(nx).enumerate() {
+                        for (x, d) in row.iter_mut().enumerate() {
+                            *d = slice[y * sy + x * sx];
+                        }
+                    }
+                } else {
+                    for x in 0..nx {
+                        for y in 0..ny {
+                            plane[y * nx + x] = slice[y * sy + x * sx];
+                        }
+                    }
+                }
+            });
+        Traversal { nx, ny, data }
+    }
+
+    /// Row `y` of slice `k`, `x` in `0..n_x`.
+    fn beam(&self, y: usize, k: usize) -> &[u16] {
+        &self.data[(k * self.ny + y) * self.nx..][..self.nx]
+    }
+}
 
 /// One 2-D skewed buffer: rays `u0..u0 + rays`, planes `0..=K` (plane `K`
 /// lies behind the volume and reads 0; it is the back plane of sample
@@ -40,25 +89,22 @@ impl Prp {
     }
 }
 
-/// Fetch and align the PRP of scanline `v`, for rays `u0..u0 + rays`.
-/// Beam by beam: plane `k`'s row `y = Y_k(v)` is found once, then each
-/// ray's voxel `X_k(u)` on it (`View::voxel`'s bounds and axes, unrolled).
-pub fn fetch(vol: &Volume, view: &View, v: i32, u0: i32, rays: usize) -> Prp {
+/// Fetch and align the PRP of scanline `v`, for rays `u0..u0 + rays`, from
+/// the volume in `view`'s traversal order. Beam by beam: plane `k`'s row
+/// `y = Y_k(v)` is found once, then each ray's voxel `X_k(u)` on it.
+pub fn fetch(vol: &Traversal, view: &View, v: i32, u0: i32, rays: usize) -> Prp {
     let [nx, ny, nk] = view.dims;
     let mut data = vec![0; rays * (nk + 1)];
-    let stride = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
-    let [sx, sy, sk] = view.perm.map(|a| stride[a]);
     for k in 0..nk {
         let y = view.y.pos(v, k);
         if y < 0 || y as usize >= ny {
             continue;
         }
-        let slice = if view.positive { k } else { nk - 1 - k };
-        let beam = y as usize * sy + slice * sk;
+        let beam = vol.beam(y as usize, k);
         for (i, d) in data.iter_mut().skip(k).step_by(nk + 1).enumerate() {
             let x = view.x.pos(u0 + i as i32, k);
             if x >= 0 && (x as usize) < nx {
-                *d = vol.data[beam + x as usize * sx] as u32;
+                *d = beam[x as usize] as u32;
             }
         }
     }
@@ -67,5 +113,44 @@ pub fn fetch(vol: &Volume, view: &View, v: i32, u0: i32, rays: usize) -> Prp {
         rays,
         planes: nk,
         data,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cube3::plan::Plan;
+    use scene::Scene;
+
+    #[test]
+    fn the_traversal_copy_holds_each_voxel_where_the_view_puts_it() {
+        // Every major axis, both directions: the traversal's x is then the
+        // dataset's fastest or slowest axis (both copy loops).
+        for rot in [
+            "[10, 0, 0]",
+            "[0, 180, 0]",
+            "[80, 20, 0]",
+            "[-80, 20, 0]",
+            "[0, 80, 10]",
+            "[0, -80, 10]",
+        ] {
+            let json = format!(
+                r#"{{"volume": {{"builtin": "phantom", "dims": [9, 7, 5]}}, "view": {{"projection": "parallel", "rotate_deg": {rot}}}, "image": [16, 16]}}"#
+            );
+            let s = Scene::from_json(&json, None).unwrap();
+            let vol = Volume::from_spec(&s.volume, 8).unwrap();
+            for view in &Plan::new(&s, &s.camera()).unwrap().views {
+                let t = Traversal::new(&vol, view);
+                let [nx, ny, nk] = view.dims;
+                for k in 0..nk {
+                    for y in 0..ny {
+                        for x in 0..nx {
+                            let [a, b, c] = view.voxel(x as i32, y as i32, k).unwrap();
+                            assert_eq!(t.beam(y, k)[x], vol.get(a, b, c), "{rot} ({x}, {y}, {k})");
+                        }
+                    }
+                }
+            }
+        }
     }
 }

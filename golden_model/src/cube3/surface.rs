@@ -11,6 +11,7 @@
 
 use super::abc::{differences, gradient, RayCoeffs};
 use super::plan::{sample_pos, Neighbourhood, Plan, Widths};
+use super::prp::Traversal;
 use super::{chunks, scanlines};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -66,6 +67,7 @@ pub fn crossings(
         let [nx, ny, nk] = view.dims.map(|n| n as i64);
         let to_dataset = view.to_traversal().transpose();
         let one = (1i64 << w) as f64;
+        let vol = &Traversal::new(vol, view);
         let rows: Vec<Vec<Crossing>> = chunks(view)
             .into_par_iter()
             .map(|run| {
