@@ -15,7 +15,6 @@
 //! an addressing choice that does not change a value.
 
 use super::plan::View;
-use rayon::prelude::*;
 use scene::volume::Volume;
 
 /// The volume in one base plane's traversal order `(x, y, k)`, `x`
@@ -25,44 +24,25 @@ use scene::volume::Volume;
 /// beam along the dataset's slowest axis is a cache miss a voxel.)
 #[derive(Debug, Clone)]
 pub struct Traversal {
-    nx: usize,
-    ny: usize,
+    dims: [usize; 3],
+    positive: bool,
     data: Vec<u16>,
 }
 
 impl Traversal {
     pub fn new(vol: &Volume, view: &View) -> Traversal {
-        let [nx, ny, nk] = view.dims;
-        let stride = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
-        let [sx, sy, sk] = view.perm.map(|a| stride[a]);
-        let mut data = vec![0; nx * ny * nk];
-        data.par_chunks_mut(nx * ny)
-            .enumerate()
-            .for_each(|(k, plane)| {
-                let slice = &vol.data[if view.positive { k } else { nk - 1 - k } * sk..];
-                // The inner loop runs along the dataset's shorter stride:
-                // a stride of whole slices would map every read of a row
-                // to one cache set.
-                if sx <= sy {
-                    for (y, row) in plane.chunks_exact_mut(nx).enumerate() {
-                        for (x, d) in row.iter_mut().enumerate() {
-                            *d = slice[y * sy + x * sx];
-                        }
-                    }
-                } else {
-                    for x in 0..nx {
-                        for y in 0..ny {
-                            plane[y * nx + x] = slice[y * sy + x * sx];
-                        }
-                    }
-                }
-            });
-        Traversal { nx, ny, data }
+        Traversal {
+            dims: view.dims,
+            positive: view.positive,
+            data: vol.permuted(view.perm),
+        }
     }
 
-    /// Row `y` of slice `k`, `x` in `0..n_x`.
+    /// Row `y` of plane `k`, `x` in `0..n_x`.
     fn beam(&self, y: usize, k: usize) -> &[u16] {
-        &self.data[(k * self.ny + y) * self.nx..][..self.nx]
+        let [nx, ny, nk] = self.dims;
+        let slice = if self.positive { k } else { nk - 1 - k };
+        &self.data[(slice * ny + y) * nx..][..nx]
     }
 }
 

@@ -66,10 +66,10 @@ impl Span {
 pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
     let [nx, ny, _] = sweep.dims;
     let frac = sweep.frac;
-    let strides = {
-        let ds = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
-        [ds[sweep.perm[0]], ds[sweep.perm[1]], ds[sweep.perm[2]]]
-    };
+    // The volume in the sweep's order, once a sweep, so that a slice's rows
+    // are contiguous (the CFB's beams).
+    let voxels = vol.permuted(sweep.perm);
+    let strides = [1, nx, nx * ny];
     let reset = reset_value(shader.mode, shader.voxel_bits);
     let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
@@ -112,7 +112,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                 let row_at = y * strides[1] + z * strides[2];
                 for (x, cell) in row.iter_mut().enumerate() {
                     let at = row_at + x * strides[0];
-                    let v = vol.data[at] as u32;
+                    let v = voxels[at] as u32;
                     let inner = inner_row && x > 0 && x + 1 < nx;
                     if inner && identity[v as usize] {
                         // No ER inside the slice, and the voxel's composite
@@ -150,7 +150,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                                         + ox * strides[0] as isize
                                         + oy * strides[1] as isize
                                         + oz * strides[2] as isize;
-                                    vol.data[i as usize]
+                                    voxels[i as usize]
                                 })
                             });
                             let (r, clipped) =
