@@ -32,7 +32,7 @@ use std::path::Path;
 
 /// 2-DSB and delay-line address bits of every Cube-3 build: a 2-DSB module
 /// of a 256-a-side build holds 516 rays of 128 segments (p = 2), and the
-/// ABC units' sample-plane lines are a scanline period long (13 313 clocks
+/// ABC units' sample-plane lines are a scanline period long (13 314 clocks
 /// for the engine at p = 4).
 pub const B: usize = 17;
 pub const H: usize = 16;

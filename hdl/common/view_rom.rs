@@ -2,9 +2,11 @@
 //! `words` words of `W` bits read *asynchronously*, as the ROMs of a
 //! design built for one view were, so that the stages reading it keep
 //! their timing. It is distributed (LUT) RAM, not block RAM: the view
-//! tables are a few entries a plane or a ray (Cube-3's templates, bounds,
-//! increments and de-fanning groups), and a registered read would move
-//! every address a clock earlier.
+//! tables are a few entries a plane or a ray (Cube-3's templates, bounds
+//! and increments), and a registered read would move every address a
+//! clock earlier. (Cube-3's de-fanning group and row tables, thousands of
+//! words, are block RAM: [`super::table::Table`], addressed a clock
+//! ahead.)
 //!
 //! The write port takes every host write in its window `base .. base +
 //! words` (aligned to its depth); reads use the low `bits_for(words)` address bits (the depth is

@@ -36,7 +36,9 @@
 //!
 //! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
 //! at address `r·G + k div P`, so a ray's `P` planes of a segment lie in `P`
-//! modules at one address. Memory module `m` takes the address of the lane
+//! modules at one address. The group (its tables read a clock ahead, or
+//! the parallel chunk's counters) is registered while `pos_y` gives its
+//! row; then memory module `m` takes the address of the lane
 //! whose voxel it holds, and one clock later 2-DSB module `d` takes the
 //! word of the lane whose ray it stores: a voxel may travel from any module
 //! to any other in a clock (a `P`-way crossbar each way). In a parallel
@@ -53,15 +55,16 @@
 //! `j mod 3` takes scanline `v_0 + j` (for `j <= S`) while, from period 2,
 //! scanlines `v_0 + j - 2` (`cur`) and `v_0 + j - 1` (`next`) are read, `R·G`
 //! segments on consecutive clocks, `valid` high. `T` is the longer of the
-//! writes (the groups, and the read latency) and the reads (`R·G` and the
-//! read latency): [`BeamFetchConfig::period`].
+//! writes (the groups, and the row's and the memory's reads:
+//! [`WRITE_LATENCY`](super::config::WRITE_LATENCY)) and the reads (`R·G`
+//! and the read latency): [`BeamFetchConfig::period`].
 
 use super::config::{Cube3Sizes, GROUP_BITS, PLANE_BITS};
 use super::groups::Groups;
 use super::schedule::Schedule;
-use crate::common::ram::DepthRam;
+use crate::common::ram::{bits_for, DepthRam};
 use crate::common::regs::{Regs, ADDRESS_BITS};
-use crate::common::view_rom::ViewRom;
+use crate::common::table::Table;
 use golden_model::host::{Reg, ViewTable};
 use rust_hdl::prelude::*;
 
@@ -99,8 +102,9 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     /// This clock's group of rays.
     group: Groups<P>,
     /// `Y_k(v) - v` by plane (parallel), or by scanline and plane at
-    /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`).
-    pos_y: ViewRom<16, GROUP_BITS>,
+    /// `j·(K + 1) + k` (perspective: `row_stride = K + 1`); block RAM in a
+    /// perspective build, read a clock after the group.
+    pos_y: Table<16, GROUP_BITS>,
     /// `C3Stream`, `C3Dims`, `C3Address`, `C3Origin`.
     regs: Regs<4>,
     /// `K + 1` in a perspective build; a parallel build's is 0, so
@@ -109,7 +113,17 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     perspective: Constant<Bit>,
     row_entry: Signal<Local, Bits<32>>,
     schedule: Schedule,
-    /// The write side: this clock's plane, row and first ray, and per lane
+    /// The group, registered beside `pos_y`'s read: its plane, first ray,
+    /// each lane's `x` and whether it holds a ray, with the schedule's
+    /// period, write flag and buffer.
+    plane_r: DFF<Bits<16>>,
+    first_ray_r: DFF<Bits<16>>,
+    x_r: [DFF<Bits<16>>; P],
+    holds_r: [DFF<Bit>; P],
+    period_r: DFF<Bits<16>>,
+    writing_r: DFF<Bit>,
+    buffer_r: DFF<Bits<2>>,
+    /// The write side: the group's plane, row and first ray, and per lane
     /// its ray, voxel `x`, module, address and whether it holds a ray and
     /// lies in the volume.
     row: Signal<Local, Bits<16>>,
@@ -225,7 +239,11 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             buffer1: std::array::from_fn(|_| buffer()),
             buffer2: std::array::from_fn(|_| buffer()),
             group: Groups::new(s),
-            pos_y: ViewRom::new(ViewTable::PosY.base(), rows),
+            pos_y: Table::new(
+                ViewTable::PosY.base(),
+                1 << bits_for(rows as u64),
+                &[(0, 16)],
+            ),
             regs: Regs::new(
                 [Reg::C3Stream, Reg::C3Dims, Reg::C3Address, Reg::C3Origin].map(Reg::address),
             ),
@@ -233,6 +251,13 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             row_stride: Default::default(),
             perspective: Constant::new(s.perspective),
             schedule: Schedule::default(),
+            plane_r: Default::default(),
+            first_ray_r: Default::default(),
+            x_r: std::array::from_fn(|_| Default::default()),
+            holds_r: std::array::from_fn(|_| Default::default()),
+            period_r: Default::default(),
+            writing_r: Default::default(),
+            buffer_r: Default::default(),
             row: Default::default(),
             lane_ray: std::array::from_fn(|_| Default::default()),
             lane_inside: std::array::from_fn(|_| Default::default()),
@@ -287,7 +312,22 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
 impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, plane_q, write_q, buffer_q, read_q, lane_q, cur_q, next_q);
+        dff_setup!(
+            self,
+            clock,
+            plane_r,
+            first_ray_r,
+            period_r,
+            writing_r,
+            buffer_r,
+            plane_q,
+            write_q,
+            buffer_q,
+            read_q,
+            lane_q,
+            cur_q,
+            next_q
+        );
         // The view's registers.
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
@@ -319,33 +359,45 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.schedule.host_write.next = self.host_write.val();
         self.schedule.host_address.next = self.host_address.val();
         self.schedule.host_data.next = self.host_data.val();
-        // This clock's group of rays, and its beam's row.
+        // This clock's group of rays, and its row's entry.
         self.group.chunk.next = self.schedule.chunk.val();
+        self.group.chunk_next.next = self.schedule.chunk_next.val();
         self.group.plane_count.next = self.schedule.plane.val();
         self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
             + bit_cast::<32, 16>(self.group.plane.val());
         self.pos_y.address.next = self.row_entry.val().get_bits::<GROUP_BITS>(0);
-        self.row.next = self.v0.val() + self.schedule.period.val() + self.pos_y.data.val();
+        self.plane_r.d.next = self.group.plane.val();
+        self.first_ray_r.d.next = self.group.first_ray.val();
+        self.period_r.d.next = self.schedule.period.val();
+        self.writing_r.d.next = self.schedule.writing.val();
+        self.buffer_r.d.next = self.schedule.write_buffer.val();
+        // A clock later, with the row's `pos_y`: the beam's row, and each
+        // lane's memory module and address.
+        self.row.next = self.v0.val() + self.period_r.q.val() + self.pos_y.data.val();
         for j in 0..P {
-            self.lane_ray[j].next = self.group.first_ray.val() + self.index[j].val();
-            self.lane_inside[j].next = self.group.holds[j].val()
-                & !self.group.x[j].val().get_bit(15)
-                & (self.group.x[j].val() < self.n_x.val())
+            self.x_r[j].clock.next = self.clock.val();
+            self.holds_r[j].clock.next = self.clock.val();
+            self.x_r[j].d.next = self.group.x[j].val();
+            self.holds_r[j].d.next = self.group.holds[j].val();
+            self.lane_ray[j].next = self.first_ray_r.q.val() + self.index[j].val();
+            self.lane_inside[j].next = self.holds_r[j].q.val()
+                & !self.x_r[j].q.val().get_bit(15)
+                & (self.x_r[j].q.val() < self.n_x.val())
                 & !self.row.val().get_bit(15)
                 & (self.row.val() < self.n_y.val())
-                & (self.group.plane.val() < self.n_k.val());
+                & (self.plane_r.q.val() < self.n_k.val());
             self.lane_module[j].next =
-                (self.group.x[j].val() + self.row.val() + self.group.plane.val()) & self.mask.val();
+                (self.x_r[j].q.val() + self.row.val() + self.plane_r.q.val()) & self.mask.val();
             // (`* one` widens the column to 32 bits inside the loop.)
-            self.lane_column[j].next = self.group.x[j].val() >> self.shift.val();
+            self.lane_column[j].next = self.x_r[j].q.val() >> self.shift.val();
             self.lane_address[j].next = self.lane_column[j].val() * self.one.val()
                 + self.row.val() * self.row_words.val()
-                + self.group.plane.val() * self.plane_words.val();
+                + self.plane_r.q.val() * self.plane_words.val();
             self.holds_q[j].clock.next = self.clock.val();
             self.inside_q[j].clock.next = self.clock.val();
             self.module_q[j].clock.next = self.clock.val();
             self.ray_q[j].clock.next = self.clock.val();
-            self.holds_q[j].d.next = self.group.holds[j].val();
+            self.holds_q[j].d.next = self.holds_r[j].q.val();
             self.inside_q[j].d.next = self.lane_inside[j].val();
             self.module_q[j].d.next = self.lane_module[j].val();
             self.ray_q[j].d.next = self.lane_ray[j].val();
@@ -382,10 +434,10 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 self.word[m].next = self.ext_data[m].val();
             }
         }
-        self.plane_q.d.next = self.group.plane.val();
-        self.write_q.d.next = self.schedule.writing.val();
+        self.plane_q.d.next = self.plane_r.q.val();
+        self.write_q.d.next = self.writing_r.q.val();
         self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
-        self.buffer_q.d.next = self.schedule.write_buffer.val();
+        self.buffer_q.d.next = self.buffer_r.q.val();
         // Memory modules back to lanes, and lanes to 2-DSB modules: ray r
         // of plane k to module (r + k) mod P at address r*G + k div P.
         for j in 0..P {

@@ -23,6 +23,11 @@ pub const PLANE_BITS: usize = 10;
 /// 4)` groups, 132 612 for a 256 class.
 pub const GROUP_BITS: usize = 18;
 
+/// Clocks from a group's schedule count to its voxels' 2-DSB write: the
+/// row's `pos_y` read (the group registered beside it) and the memory
+/// modules' read ([`super::cfb`]).
+pub const WRITE_LATENCY: usize = 2;
+
 /// One clock of a perspective PRP's writes: plane `plane`, stream rays
 /// `ray .. ray + x.len()` at beam positions `x` (increasing, within `P`
 /// consecutive voxels).
@@ -141,7 +146,7 @@ impl BeamFetchConfig {
 
     /// Clocks of a scanline period.
     pub fn period(&self) -> usize {
-        let writes = self.write_clocks() + 1;
+        let writes = self.write_clocks() + WRITE_LATENCY;
         let reads = self.rays * self.segments + 1;
         writes.max(reads)
     }
@@ -556,7 +561,7 @@ impl Cube3Sizes {
         } else {
             self.planes() * self.rays().div_ceil(self.p)
         };
-        (writes + 1).max(self.rays() * self.segments() + 1)
+        (writes + WRITE_LATENCY).max(self.rays() * self.segments() + 1)
     }
 
     /// Words of a memory module: `ceil(n / p)·n²`.

@@ -2,9 +2,15 @@
 //! parallel view's chunk of consecutive rays, or a perspective view's
 //! de-fanning group from tables the host loads. A sub-block of
 //! [`super::cfb::BeamFetch`].
+//!
+//! The group tables hold a word a group of every plane (thousands of
+//! words), so they are block RAM: their read is registered, addressed by
+//! the schedule's next chunk so that the word answers this clock's chunk.
 
 use super::config::{Cube3Sizes, GROUP_BITS, PLANE_BITS};
+use crate::common::ram::bits_for;
 use crate::common::regs::ADDRESS_BITS;
+use crate::common::table::Table;
 use crate::common::view_rom::ViewRom;
 use golden_model::host::ViewTable;
 use rust_hdl::prelude::*;
@@ -24,6 +30,8 @@ pub struct Groups<const P: usize> {
     /// The stream's first ray (`BeamFetch`'s register).
     pub u0: Signal<In, Bits<16>>,
     pub chunk: Signal<In, Bits<24>>,
+    /// The next clock's chunk (the group tables' read address).
+    pub chunk_next: Signal<In, Bits<24>>,
     pub plane_count: Signal<In, Bits<16>>,
     pub plane: Signal<Out, Bits<16>>,
     pub first_ray: Signal<Out, Bits<16>>,
@@ -36,8 +44,8 @@ pub struct Groups<const P: usize> {
     x0: Signal<Local, Bits<16>>,
     /// Perspective: each group's `[plane, first ray]` and its lanes' `x`
     /// (bit 16: the lane holds a ray).
-    groups: ViewRom<32, GROUP_BITS>,
-    group_x: [ViewRom<17, GROUP_BITS>; P],
+    groups: Table<32, GROUP_BITS>,
+    group_x: [Table<17, GROUP_BITS>; P],
     index: [Constant<Bits<16>>; P],
     shift: Constant<Bits<16>>,
 }
@@ -48,7 +56,7 @@ impl<const P: usize> Groups<P> {
     pub fn new(s: &Cube3Sizes) -> Groups<P> {
         let k = |v: i64| Constant::new(((v as u64) & 0xffff).to_bits());
         let (planes, groups) = match s.perspective {
-            true => (2, s.groups()),
+            true => (2, 1 << bits_for(s.groups() as u64)),
             false => (s.planes(), 2),
         };
         Groups {
@@ -58,6 +66,7 @@ impl<const P: usize> Groups<P> {
             host_data: Default::default(),
             u0: Default::default(),
             chunk: Default::default(),
+            chunk_next: Default::default(),
             plane_count: Default::default(),
             plane: Default::default(),
             first_ray: Default::default(),
@@ -67,8 +76,10 @@ impl<const P: usize> Groups<P> {
             pos_x: ViewRom::new(ViewTable::PosX.base(), planes),
             chunk_ray: Default::default(),
             x0: Default::default(),
-            groups: ViewRom::new(ViewTable::Groups.base(), groups),
-            group_x: std::array::from_fn(|j| ViewRom::new(ViewTable::GroupX(j).base(), groups)),
+            groups: Table::new(ViewTable::Groups.base(), groups, &[(0, 32)]),
+            group_x: std::array::from_fn(|j| {
+                Table::new(ViewTable::GroupX(j).base(), groups, &[(0, 17)])
+            }),
             index: std::array::from_fn(|j| k(j as i64)),
             shift: k(P.trailing_zeros() as i64),
         }
@@ -87,7 +98,7 @@ impl<const P: usize> Logic for Groups<P> {
         self.groups.host_address.next = self.host_address.val();
         self.groups.host_data.next = self.host_data.val();
         self.pos_x.address.next = self.plane_count.val().get_bits::<PLANE_BITS>(0);
-        self.groups.address.next = self.chunk.val().get_bits::<GROUP_BITS>(0);
+        self.groups.address.next = self.chunk_next.val().get_bits::<GROUP_BITS>(0);
         self.chunk_ray.next = self.chunk.val().get_bits::<16>(0) << self.shift.val();
         self.x0.next = self.u0.val() + self.pos_x.data.val() + self.chunk_ray.val();
         self.plane.next = self.plane_count.val();
@@ -101,7 +112,7 @@ impl<const P: usize> Logic for Groups<P> {
             self.group_x[j].host_write.next = self.host_write.val();
             self.group_x[j].host_address.next = self.host_address.val();
             self.group_x[j].host_data.next = self.host_data.val();
-            self.group_x[j].address.next = self.chunk.val().get_bits::<GROUP_BITS>(0);
+            self.group_x[j].address.next = self.chunk_next.val().get_bits::<GROUP_BITS>(0);
             self.x[j].next = self.x0.val() + self.index[j].val();
             self.holds[j].next = true;
             if self.perspective.val() {

@@ -16,6 +16,9 @@ pub struct Schedule {
     pub plane: Signal<Out, Bits<16>>,
     /// The chunk (parallel) or group (perspective: up to 2^18) written.
     pub chunk: Signal<Out, Bits<24>>,
+    /// The chunk of the next clock (the counter's input), so that the group
+    /// tables' registered read answers `chunk` in its own clock.
+    pub chunk_next: Signal<Out, Bits<24>>,
     pub period: Signal<Out, Bits<16>>,
     pub write_buffer: Signal<Out, Bits<2>>,
     pub reading: Signal<Out, Bit>,
@@ -62,6 +65,7 @@ impl Default for Schedule {
             writing: Default::default(),
             plane: Default::default(),
             chunk: Default::default(),
+            chunk_next: Default::default(),
             period: Default::default(),
             write_buffer: Default::default(),
             reading: Default::default(),
@@ -179,6 +183,7 @@ impl Logic for Schedule {
         }
         self.plane.next = self.plane_q.q.val();
         self.chunk.next = self.chunk_q.q.val();
+        self.chunk_next.next = self.chunk_q.d.val();
         self.period.next = self.period_q.q.val();
         self.write_buffer.next = self.w_q.q.val();
         self.ray.next = self.ray_q.q.val();

@@ -165,6 +165,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [63:0] group$host_data;
     reg  [15:0] group$u0;
     reg  [23:0] group$chunk;
+    reg  [23:0] group$chunk_next;
     reg  [15:0] group$plane_count;
     wire  [15:0] group$plane;
     wire  [15:0] group$first_ray;
@@ -195,6 +196,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     wire  schedule$writing;
     wire  [15:0] schedule$plane;
     wire  [23:0] schedule$chunk;
+    wire  [23:0] schedule$chunk_next;
     wire  [15:0] schedule$period;
     wire  [1:0] schedule$write_buffer;
     wire  schedule$reading;
@@ -205,6 +207,45 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  schedule$host_write;
     reg  [23:0] schedule$host_address;
     reg  [63:0] schedule$host_data;
+    reg  [15:0] plane_r$d;
+    wire  [15:0] plane_r$q;
+    reg  plane_r$clock;
+    reg  [15:0] first_ray_r$d;
+    wire  [15:0] first_ray_r$q;
+    reg  first_ray_r$clock;
+    reg  [15:0] x_r$0$d;
+    wire  [15:0] x_r$0$q;
+    reg  x_r$0$clock;
+    reg  [15:0] x_r$1$d;
+    wire  [15:0] x_r$1$q;
+    reg  x_r$1$clock;
+    reg  [15:0] x_r$2$d;
+    wire  [15:0] x_r$2$q;
+    reg  x_r$2$clock;
+    reg  [15:0] x_r$3$d;
+    wire  [15:0] x_r$3$q;
+    reg  x_r$3$clock;
+    reg  holds_r$0$d;
+    wire  holds_r$0$q;
+    reg  holds_r$0$clock;
+    reg  holds_r$1$d;
+    wire  holds_r$1$q;
+    reg  holds_r$1$clock;
+    reg  holds_r$2$d;
+    wire  holds_r$2$q;
+    reg  holds_r$2$clock;
+    reg  holds_r$3$d;
+    wire  holds_r$3$q;
+    reg  holds_r$3$clock;
+    reg  [15:0] period_r$d;
+    wire  [15:0] period_r$q;
+    reg  period_r$clock;
+    reg  writing_r$d;
+    wire  writing_r$q;
+    reg  writing_r$clock;
+    reg  [1:0] buffer_r$d;
+    wire  [1:0] buffer_r$q;
+    reg  buffer_r$clock;
     reg  holds_q$0$d;
     wire  holds_q$0$q;
     reg  holds_q$0$clock;
@@ -494,6 +535,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .host_data(group$host_data),
         .u0(group$u0),
         .chunk(group$chunk),
+        .chunk_next(group$chunk_next),
         .plane_count(group$plane_count),
         .plane(group$plane),
         .first_ray(group$first_ray),
@@ -530,6 +572,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .writing(schedule$writing),
         .plane(schedule$plane),
         .chunk(schedule$chunk),
+        .chunk_next(schedule$chunk_next),
         .period(schedule$period),
         .write_buffer(schedule$write_buffer),
         .reading(schedule$reading),
@@ -540,6 +583,71 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .host_write(schedule$host_write),
         .host_address(schedule$host_address),
         .host_data(schedule$host_data)
+    );
+    top$fetch$plane_r plane_r(
+        .d(plane_r$d),
+        .q(plane_r$q),
+        .clock(plane_r$clock)
+    );
+    top$fetch$first_ray_r first_ray_r(
+        .d(first_ray_r$d),
+        .q(first_ray_r$q),
+        .clock(first_ray_r$clock)
+    );
+    top$fetch$x_r$0 x_r$0(
+        .d(x_r$0$d),
+        .q(x_r$0$q),
+        .clock(x_r$0$clock)
+    );
+    top$fetch$x_r$1 x_r$1(
+        .d(x_r$1$d),
+        .q(x_r$1$q),
+        .clock(x_r$1$clock)
+    );
+    top$fetch$x_r$2 x_r$2(
+        .d(x_r$2$d),
+        .q(x_r$2$q),
+        .clock(x_r$2$clock)
+    );
+    top$fetch$x_r$3 x_r$3(
+        .d(x_r$3$d),
+        .q(x_r$3$q),
+        .clock(x_r$3$clock)
+    );
+    top$fetch$holds_r$0 holds_r$0(
+        .d(holds_r$0$d),
+        .q(holds_r$0$q),
+        .clock(holds_r$0$clock)
+    );
+    top$fetch$holds_r$1 holds_r$1(
+        .d(holds_r$1$d),
+        .q(holds_r$1$q),
+        .clock(holds_r$1$clock)
+    );
+    top$fetch$holds_r$2 holds_r$2(
+        .d(holds_r$2$d),
+        .q(holds_r$2$q),
+        .clock(holds_r$2$clock)
+    );
+    top$fetch$holds_r$3 holds_r$3(
+        .d(holds_r$3$d),
+        .q(holds_r$3$q),
+        .clock(holds_r$3$clock)
+    );
+    top$fetch$period_r period_r(
+        .d(period_r$d),
+        .q(period_r$q),
+        .clock(period_r$clock)
+    );
+    top$fetch$writing_r writing_r(
+        .d(writing_r$d),
+        .q(writing_r$q),
+        .clock(writing_r$clock)
+    );
+    top$fetch$buffer_r buffer_r(
+        .d(buffer_r$d),
+        .q(buffer_r$q),
+        .clock(buffer_r$clock)
     );
     top$fetch$holds_q$0 holds_q$0(
         .d(holds_q$0$d),
@@ -671,6 +779,11 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [31:0] ext_addr$2_pass;
     reg  [31:0] ext_addr$3_pass;
     always @(*) begin
+        plane_r$clock = clock;
+        first_ray_r$clock = clock;
+        period_r$clock = clock;
+        writing_r$clock = clock;
+        buffer_r$clock = clock;
         plane_q$clock = clock;
         write_q$clock = clock;
         buffer_q$clock = clock;
@@ -678,6 +791,11 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_q$clock = clock;
         cur_q$clock = clock;
         next_q$clock = clock;
+        plane_r$d = plane_r$q;
+        first_ray_r$d = first_ray_r$q;
+        period_r$d = period_r$q;
+        writing_r$d = writing_r$q;
+        buffer_r$d = buffer_r$q;
         plane_q$d = plane_q$q;
         write_q$d = write_q$q;
         buffer_q$d = buffer_q$q;
@@ -716,59 +834,81 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         schedule$host_address = host_address;
         schedule$host_data = host_data;
         group$chunk = schedule$chunk;
+        group$chunk_next = schedule$chunk_next;
         group$plane_count = schedule$plane;
         row_entry = schedule$period * row_stride + 32'(group$plane);
         pos_y$address = row_entry[('h0)+:(18)];
-        row = v0 + schedule$period + pos_y$data;
-        lane_ray$0 = group$first_ray + index$0;
-        lane_inside$0 = group$holds$0 & ~group$x$0['hf] & (group$x$0 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
-        lane_module$0 = (group$x$0 + row + group$plane) & mask;
-        lane_column$0 = group$x$0 >> shift;
-        lane_address$0 = lane_column$0 * one + row * row_words + group$plane * plane_words;
+        plane_r$d = group$plane;
+        first_ray_r$d = group$first_ray;
+        period_r$d = schedule$period;
+        writing_r$d = schedule$writing;
+        buffer_r$d = schedule$write_buffer;
+        row = v0 + period_r$q + pos_y$data;
+        x_r$0$clock = clock;
+        holds_r$0$clock = clock;
+        x_r$0$d = group$x$0;
+        holds_r$0$d = group$holds$0;
+        lane_ray$0 = first_ray_r$q + index$0;
+        lane_inside$0 = holds_r$0$q & ~x_r$0$q['hf] & (x_r$0$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
+        lane_module$0 = (x_r$0$q + row + plane_r$q) & mask;
+        lane_column$0 = x_r$0$q >> shift;
+        lane_address$0 = lane_column$0 * one + row * row_words + plane_r$q * plane_words;
         holds_q$0$clock = clock;
         inside_q$0$clock = clock;
         module_q$0$clock = clock;
         ray_q$0$clock = clock;
-        holds_q$0$d = group$holds$0;
+        holds_q$0$d = holds_r$0$q;
         inside_q$0$d = lane_inside$0;
         module_q$0$d = lane_module$0;
         ray_q$0$d = lane_ray$0;
-        lane_ray$1 = group$first_ray + index$1;
-        lane_inside$1 = group$holds$1 & ~group$x$1['hf] & (group$x$1 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
-        lane_module$1 = (group$x$1 + row + group$plane) & mask;
-        lane_column$1 = group$x$1 >> shift;
-        lane_address$1 = lane_column$1 * one + row * row_words + group$plane * plane_words;
+        x_r$1$clock = clock;
+        holds_r$1$clock = clock;
+        x_r$1$d = group$x$1;
+        holds_r$1$d = group$holds$1;
+        lane_ray$1 = first_ray_r$q + index$1;
+        lane_inside$1 = holds_r$1$q & ~x_r$1$q['hf] & (x_r$1$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
+        lane_module$1 = (x_r$1$q + row + plane_r$q) & mask;
+        lane_column$1 = x_r$1$q >> shift;
+        lane_address$1 = lane_column$1 * one + row * row_words + plane_r$q * plane_words;
         holds_q$1$clock = clock;
         inside_q$1$clock = clock;
         module_q$1$clock = clock;
         ray_q$1$clock = clock;
-        holds_q$1$d = group$holds$1;
+        holds_q$1$d = holds_r$1$q;
         inside_q$1$d = lane_inside$1;
         module_q$1$d = lane_module$1;
         ray_q$1$d = lane_ray$1;
-        lane_ray$2 = group$first_ray + index$2;
-        lane_inside$2 = group$holds$2 & ~group$x$2['hf] & (group$x$2 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
-        lane_module$2 = (group$x$2 + row + group$plane) & mask;
-        lane_column$2 = group$x$2 >> shift;
-        lane_address$2 = lane_column$2 * one + row * row_words + group$plane * plane_words;
+        x_r$2$clock = clock;
+        holds_r$2$clock = clock;
+        x_r$2$d = group$x$2;
+        holds_r$2$d = group$holds$2;
+        lane_ray$2 = first_ray_r$q + index$2;
+        lane_inside$2 = holds_r$2$q & ~x_r$2$q['hf] & (x_r$2$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
+        lane_module$2 = (x_r$2$q + row + plane_r$q) & mask;
+        lane_column$2 = x_r$2$q >> shift;
+        lane_address$2 = lane_column$2 * one + row * row_words + plane_r$q * plane_words;
         holds_q$2$clock = clock;
         inside_q$2$clock = clock;
         module_q$2$clock = clock;
         ray_q$2$clock = clock;
-        holds_q$2$d = group$holds$2;
+        holds_q$2$d = holds_r$2$q;
         inside_q$2$d = lane_inside$2;
         module_q$2$d = lane_module$2;
         ray_q$2$d = lane_ray$2;
-        lane_ray$3 = group$first_ray + index$3;
-        lane_inside$3 = group$holds$3 & ~group$x$3['hf] & (group$x$3 < n_x) & ~row['hf] & (row < n_y) & (group$plane < n_k);
-        lane_module$3 = (group$x$3 + row + group$plane) & mask;
-        lane_column$3 = group$x$3 >> shift;
-        lane_address$3 = lane_column$3 * one + row * row_words + group$plane * plane_words;
+        x_r$3$clock = clock;
+        holds_r$3$clock = clock;
+        x_r$3$d = group$x$3;
+        holds_r$3$d = group$holds$3;
+        lane_ray$3 = first_ray_r$q + index$3;
+        lane_inside$3 = holds_r$3$q & ~x_r$3$q['hf] & (x_r$3$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
+        lane_module$3 = (x_r$3$q + row + plane_r$q) & mask;
+        lane_column$3 = x_r$3$q >> shift;
+        lane_address$3 = lane_column$3 * one + row * row_words + plane_r$q * plane_words;
         holds_q$3$clock = clock;
         inside_q$3$clock = clock;
         module_q$3$clock = clock;
         ray_q$3$clock = clock;
-        holds_q$3$d = group$holds$3;
+        holds_q$3$d = holds_r$3$q;
         inside_q$3$d = lane_inside$3;
         module_q$3$d = lane_module$3;
         ray_q$3$d = lane_ray$3;
@@ -912,10 +1052,10 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         if (external) begin
             word$3 = ext_data$3;
         end
-        plane_q$d = group$plane;
-        write_q$d = schedule$writing;
+        plane_q$d = plane_r$q;
+        write_q$d = writing_r$q;
         plane_segment = plane_q$q >> shift;
-        buffer_q$d = schedule$write_buffer;
+        buffer_q$d = buffer_r$q;
         value$0 = 'h0;
         if (inside_q$0$q & (module_q$0$q == index$0)) begin
             value$0 = word$0;
@@ -1793,6 +1933,23 @@ module top$fetch$buffer_q(d,q,clock);
     end
           
 endmodule // top$fetch$buffer_q
+module top$fetch$buffer_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$buffer_r
 module top$fetch$cur_q(d,q,clock);
     
     // Module arguments
@@ -1810,7 +1967,24 @@ module top$fetch$cur_q(d,q,clock);
     end
           
 endmodule // top$fetch$cur_q
-module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_count,plane,first_ray,x$0,x$1,x$2,x$3,holds$0,holds$1,holds$2,holds$3);
+module top$fetch$first_ray_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$first_ray_r
+module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_next,plane_count,plane,first_ray,x$0,x$1,x$2,x$3,holds$0,holds$1,holds$2,holds$3);
     
     // Module arguments
     input wire  clock;
@@ -1819,6 +1993,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
     input wire  [63:0] host_data;
     input wire  [15:0] u0;
     input wire  [23:0] chunk;
+    input wire  [23:0] chunk_next;
     input wire  [15:0] plane_count;
     output reg  [15:0] plane;
     output reg  [15:0] first_ray;
@@ -1912,7 +2087,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         groups$host_address = host_address;
         groups$host_data = host_data;
         pos_x$address = plane_count[('h0)+:(10)];
-        groups$address = chunk[('h0)+:(18)];
+        groups$address = chunk_next[('h0)+:(18)];
         chunk_ray = chunk[('h0)+:(16)] << shift;
         x0 = u0 + pos_x$data + chunk_ray;
         plane_pass = plane_count;
@@ -1925,7 +2100,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$0$host_write = host_write;
         group_x$0$host_address = host_address;
         group_x$0$host_data = host_data;
-        group_x$0$address = chunk[('h0)+:(18)];
+        group_x$0$address = chunk_next[('h0)+:(18)];
         x$0_pass = x0 + index$0;
         holds$0_pass = 1'b1;
         if (perspective) begin
@@ -1936,7 +2111,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$1$host_write = host_write;
         group_x$1$host_address = host_address;
         group_x$1$host_data = host_data;
-        group_x$1$address = chunk[('h0)+:(18)];
+        group_x$1$address = chunk_next[('h0)+:(18)];
         x$1_pass = x0 + index$1;
         holds$1_pass = 1'b1;
         if (perspective) begin
@@ -1947,7 +2122,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$2$host_write = host_write;
         group_x$2$host_address = host_address;
         group_x$2$host_data = host_data;
-        group_x$2$address = chunk[('h0)+:(18)];
+        group_x$2$address = chunk_next[('h0)+:(18)];
         x$2_pass = x0 + index$2;
         holds$2_pass = 1'b1;
         if (perspective) begin
@@ -1958,7 +2133,7 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,plane_co
         group_x$3$host_write = host_write;
         group_x$3$host_address = host_address;
         group_x$3$host_data = host_data;
-        group_x$3$address = chunk[('h0)+:(18)];
+        group_x$3$address = chunk_next[('h0)+:(18)];
         x$3_pass = x0 + index$3;
         holds$3_pass = 1'b1;
         if (perspective) begin
@@ -2071,6 +2246,74 @@ module top$fetch$holds_q$3(d,q,clock);
     end
           
 endmodule // top$fetch$holds_q$3
+module top$fetch$holds_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_r$0
+module top$fetch$holds_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_r$1
+module top$fetch$holds_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_r$2
+module top$fetch$holds_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$holds_r$3
 module top$fetch$inside_q$0(d,q,clock);
     
     // Module arguments
@@ -2337,6 +2580,23 @@ module top$fetch$next_q(d,q,clock);
     end
           
 endmodule // top$fetch$next_q
+module top$fetch$period_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$period_r
 module top$fetch$plane_q(d,q,clock);
     
     // Module arguments
@@ -2354,6 +2614,23 @@ module top$fetch$plane_q(d,q,clock);
     end
           
 endmodule // top$fetch$plane_q
+module top$fetch$plane_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$plane_r
 module top$fetch$pos_y(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -2364,21 +2641,67 @@ module top$fetch$pos_y(clock,host_write,host_address,host_data,address,data);
     input wire  [17:0] address;
     output reg  [15:0] data;
     
-    // Update code (custom)
-    reg [15:0] mem[63:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 16'd0;
+    // Constant declarations
+    localparam  base = 24'h200000;
+    localparam  window = 24'h240000;
+    
+    // Stub signals
+    reg  [17:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [15:0] ram$read_data;
+    reg  [17:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [15:0] ram$write_data;
+    reg  ram$write_enable;
+    
+    // Sub module instances
+    top$fetch$pos_y$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        ram$write_enable = host_write & (host_address >= base) & (host_address < window);
+        ram$write_address = 18'(host_address - base);
+        ram$write_data = 16'(host_data);
+        ram$read_address = address;
+        data = ram$read_data;
     end
     
-    always @(*) data = mem[address[5:0]];
+endmodule // top$fetch$pos_y
+module top$fetch$pos_y$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd2097152 && host_address < 24'd2097216) begin
-          mem[host_address[5:0]] <= host_data[15:0];
+    // Module arguments
+    input wire  [17:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [17:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [15:0] mem[63:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[5:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[5:0]] <= write_data;
        end
     end
-endmodule // top$fetch$pos_y
+endmodule // top$fetch$pos_y$ram
 module top$fetch$ray_q$0(d,q,clock);
     
     // Module arguments
@@ -2615,7 +2938,7 @@ module top$fetch$regs$r$3(d,q,clock);
     end
           
 endmodule // top$fetch$regs$r$3
-module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,reading,ray,segment,cur_buffer,next_buffer,host_write,host_address,host_data);
+module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,write_buffer,reading,ray,segment,cur_buffer,next_buffer,host_write,host_address,host_data);
     
     // Module arguments
     input wire  clock;
@@ -2623,6 +2946,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
     output reg  writing;
     output reg  [15:0] plane;
     output reg  [23:0] chunk;
+    output reg  [23:0] chunk_next;
     output reg  [15:0] period;
     output reg  [1:0] write_buffer;
     output reg  reading;
@@ -2854,6 +3178,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,period,write_buffer,re
         end
         plane = plane_q$q;
         chunk = chunk_q$q;
+        chunk_next = chunk_q$d;
         period = period_q$q;
         write_buffer = w_q$q;
         ray = ray_q$q;
@@ -3169,3 +3494,88 @@ module top$fetch$write_q(d,q,clock);
     end
           
 endmodule // top$fetch$write_q
+module top$fetch$writing_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$writing_r
+module top$fetch$x_r$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$x_r$0
+module top$fetch$x_r$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$x_r$1
+module top$fetch$x_r$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$x_r$2
+module top$fetch$x_r$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$x_r$3
