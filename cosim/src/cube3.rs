@@ -224,9 +224,11 @@ lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are no
 // A 2-DSB word and the X-ray opacity table store only the bits a voxel
 // (an opacity) has: the rest of the 16- or 32-bit datapath word is unread.
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_data'*"
-// The schedule's chunk counter is as wide as its 24-bit register field;
-// the group tables take its low GROUP_BITS, a parallel chunk its low 16.
+// The schedule's chunk counter (and its next value) is as wide as its
+// 24-bit register field; the group tables take its low GROUP_BITS, a
+// parallel chunk its low 16.
 lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'chunk'*"
+lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'chunk_next'*"
 // The opacity table, as long as the scene's, takes the low bits of a unit's
 // opacity row.
 lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'row$*"
