@@ -38,6 +38,9 @@ pub struct Shader {
     pub lighting: Option<Lighting>,
     pub needs_gradient: bool,
     pub threshold: u32,
+    /// [`Shader::is_identity`] by the sample's integer part, built once
+    /// (empty for MIP and MinIP, which have no identity sample).
+    identity: Vec<bool>,
 }
 
 impl Shader {
@@ -63,6 +66,12 @@ impl Shader {
                 .normalize();
             Lighting::new(&scene.shading, to_dataset, light, -view.view_dir, rb)
         });
+        // A zero opacity row: the leaf is zero wherever the sample lies.
+        let identity = match (&opacity, mode) {
+            (_, Mode::Mip | Mode::Minip) => Vec::new(),
+            (Some(o), _) => (0..1u32 << vb).map(|i| o.row_max[o.row(i)] == 0).collect(),
+            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
+        };
         Shader {
             mode,
             widths,
@@ -71,6 +80,7 @@ impl Shader {
             lighting,
             needs_gradient: shading || grad_opacity,
             threshold: quantize_unorm(scene.transfer.opaque_threshold, rb),
+            identity,
         }
     }
 
@@ -97,11 +107,7 @@ impl Shader {
     /// first-opaque and X-ray: its opacity row is zero, and outside the
     /// volume the leaf is zero too). MIP and MinIP take every sample inside.
     pub fn is_identity(&self, s: u32) -> bool {
-        match (&self.opacity, self.mode) {
-            (_, Mode::Mip | Mode::Minip) => false,
-            (Some(o), _) => o.row_max[o.row(self.index(s))] == 0,
-            (None, _) => unreachable!("composite, first-opaque and X-ray have an opacity LUT"),
-        }
+        !self.identity.is_empty() && self.identity[self.index(s) as usize]
     }
 
     /// Certainly transparent before any gradient: the software's empty-space
