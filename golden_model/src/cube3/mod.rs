@@ -229,6 +229,9 @@ fn render_rows(
         shader.needs_gradient,
         [va, vb],
         |v, window| {
+            // A ray's estimator constants, kept while its increments repeat
+            // (every ray of a parallel view).
+            let mut coeffs: Option<RayCoeffs> = None;
             for u in view.u[0]..=view.u[1] {
                 if !view.casts(u, v) {
                     cast.push(false);
@@ -236,7 +239,13 @@ fn render_rows(
                     continue;
                 }
                 stats.rays += 1;
-                let (px, any, s) = cast_ray(view, shader, n, p, window, u, v);
+                if shader.needs_gradient {
+                    let (dx, dy, w) = (view.x.d(u), view.y.d(v), view.weight_bits);
+                    if coeffs.is_none_or(|c| (c.dx, c.dy) != (dx, dy)) {
+                        coeffs = Some(RayCoeffs::new(dx, dy, w));
+                    }
+                }
+                let (px, any, s) = cast_ray(view, shader, n, p, window, coeffs.as_ref(), u, v);
                 // A MIP/MinIP ray without a sample inside the volume has
                 // no value: the warp leaves it out, as it does uncast rays.
                 cast.push(any);
@@ -250,19 +259,20 @@ fn render_rows(
 
 /// One ray through the RPC: its base-plane pixel, whether it holds a value
 /// (MIP/MinIP: some sample was inside the volume) and counters.
+#[allow(clippy::too_many_arguments)]
 fn cast_ray(
     view: &View,
     shader: &Shader,
     n: Neighbourhood,
     p: usize,
     planes: &Planes,
+    coeffs: Option<&RayCoeffs>,
     u: i32,
     v: i32,
 ) -> ([u32; 4], bool, Stats) {
     let w = view.weight_bits;
     let [nx, ny, nk] = view.dims;
     let (dx, dy) = (view.x.d(u), view.y.d(v));
-    let coeffs = shader.needs_gradient.then(|| RayCoeffs::new(dx, dy, w));
     let mode = shader.mode;
     let rgba = shader.widths.rgba_bits;
     let m = crate::fixed::max_of(rgba);
@@ -306,7 +316,7 @@ fn cast_ray(
                     planes,
                     u,
                     k,
-                    coeffs.as_ref().unwrap(),
+                    coeffs.expect("the ray's estimator constants, with gradients"),
                     w,
                     shader.widths.gradient_bits,
                 );
