@@ -118,9 +118,16 @@ impl Volume {
                         }
                     }
                 } else {
-                    for x in 0..nx {
-                        for y in 0..ny {
-                            plane[y * nx + x] = slice[y * sy + x * sx];
+                    // In tiles, so that neither the reads nor the writes
+                    // stride through more cache lines than a tile's side.
+                    const TILE: usize = 32;
+                    for x0 in (0..nx).step_by(TILE) {
+                        for y0 in (0..ny).step_by(TILE) {
+                            for x in x0..(x0 + TILE).min(nx) {
+                                for y in y0..(y0 + TILE).min(ny) {
+                                    plane[y * nx + x] = slice[y * sy + x * sx];
+                                }
+                            }
                         }
                     }
                 }
@@ -674,30 +681,32 @@ mod tests {
     #[test]
     fn permuted_puts_each_axis_where_asked() {
         // Voxel (u, v, w) holds 100u + 10v + w; both copy loops (x the
-        // dataset's shorter or longer stride).
-        let dims = [2, 3, 4];
-        let data = (0..24)
-            .map(|i| (100 * (i % 2) + 10 * (i / 2 % 3) + i / 6) as u16)
-            .collect();
-        let vol = Volume {
-            dims,
-            bits: 16,
-            data,
-        };
-        for perm in [[0, 1, 2], [1, 2, 0], [2, 0, 1], [1, 0, 2]] {
-            let out = vol.permuted(perm);
-            let n = perm.map(|a| dims[a]);
-            for (i, &got) in out.iter().enumerate() {
-                let p = [i % n[0], i / n[0] % n[1], i / (n[0] * n[1])];
-                let mut d = [0; 3];
-                for (axis, &a) in perm.iter().enumerate() {
-                    d[a] = p[axis];
+        // dataset's shorter or longer stride), the second in several tiles
+        // where the sides exceed one.
+        for dims in [[2, 3, 4], [37, 33, 3]] {
+            let value = |[u, v, w]: [usize; 3]| 100 * u + 10 * v + w;
+            let data = (0..dims[0] * dims[1] * dims[2])
+                .map(|i| {
+                    let (u, v) = (i % dims[0], i / dims[0] % dims[1]);
+                    value([u, v, i / (dims[0] * dims[1])]) as u16
+                })
+                .collect();
+            let vol = Volume {
+                dims,
+                bits: 16,
+                data,
+            };
+            for perm in [[0, 1, 2], [1, 2, 0], [2, 0, 1], [1, 0, 2]] {
+                let out = vol.permuted(perm);
+                let n = perm.map(|a| dims[a]);
+                for (i, &got) in out.iter().enumerate() {
+                    let p = [i % n[0], i / n[0] % n[1], i / (n[0] * n[1])];
+                    let mut d = [0; 3];
+                    for (axis, &a) in perm.iter().enumerate() {
+                        d[a] = p[axis];
+                    }
+                    assert_eq!(got as usize, value(d), "{dims:?} {perm:?} {p:?}");
                 }
-                assert_eq!(
-                    got as usize,
-                    100 * d[0] + 10 * d[1] + d[2],
-                    "{perm:?} {p:?}"
-                );
             }
         }
     }

@@ -29,6 +29,7 @@ use rayon::prelude::*;
 use scene::volume::Volume;
 use scene::{Camera, Mode, Scene};
 use shader::Shader;
+use std::borrow::Cow;
 
 /// A pixel leaving on ER: base-plane address, value and face.
 type PixelOut = ([usize; 2], [u32; 4], Face);
@@ -66,10 +67,15 @@ impl Span {
 pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
     let [nx, ny, _] = sweep.dims;
     let frac = sweep.frac;
-    // The volume in the sweep's order, once a sweep, so that a slice's rows
-    // are contiguous (the CFB's beams).
-    let voxels = vol.permuted(sweep.perm);
-    let strides = [1, nx, nx * ny];
+    // A sweep whose rows run across the dataset's slices reads a copy of
+    // the volume in its own order, made once a sweep: at a stride of a
+    // whole slice every voxel of a row falls in one cache set. Other
+    // sweeps read the volume as it is (a copy costs more than it saves).
+    let ds = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
+    let (voxels, strides): (Cow<[u16]>, _) = match sweep.perm[0] {
+        2 => (Cow::Owned(vol.permuted(sweep.perm)), [1, nx, nx * ny]),
+        _ => (Cow::Borrowed(&vol.data), sweep.perm.map(|a| ds[a])),
+    };
     let reset = reset_value(shader.mode, shader.voxel_bits);
     let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
