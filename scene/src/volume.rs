@@ -5,6 +5,7 @@ use crate::error::{CubeError, Result};
 use glam::DVec3;
 use rayon::prelude::*;
 use serde::Deserialize;
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 #[derive(Debug, Clone, Deserialize)]
@@ -99,7 +100,17 @@ impl Volume {
 
     /// The voxels with dataset axis `perm[0]` fastest, then `perm[1]`, then
     /// `perm[2]` (a renderer's traversal order, so that its rows are
-    /// contiguous). The inner loop runs along the dataset's shorter stride
+    /// contiguous): the volume's own voxels when that is already their
+    /// order, else a copy ([`Volume::permuted`]).
+    pub fn in_order(&self, perm: [usize; 3]) -> Cow<'_, [u16]> {
+        match perm {
+            [0, 1, 2] => Cow::Borrowed(&self.data),
+            _ => Cow::Owned(self.permuted(perm)),
+        }
+    }
+
+    /// A copy of the voxels in the order of [`Volume::in_order`]. The inner
+    /// loop runs along the dataset's shorter stride
     /// of the first two: a stride of whole slices would map every read of a
     /// row to one cache set.
     pub fn permuted(&self, perm: [usize; 3]) -> Vec<u16> {

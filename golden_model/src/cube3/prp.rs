@@ -16,25 +16,27 @@
 
 use super::plan::View;
 use scene::volume::Volume;
+use std::borrow::Cow;
 
 /// The volume in one base plane's traversal order `(x, y, k)`, `x`
 /// fastest: the order Cube-3's memory modules hold it in
 /// (`BeamFetchConfig::modules`, without the skew), built once a base
-/// plane, so that each beam is a row. (Read in the dataset's own order, a
-/// beam along the dataset's slowest axis is a cache miss a voxel.)
+/// plane, so that each beam is a row (the volume itself where that is its
+/// order). Read in the dataset's own order, a beam along the dataset's
+/// slowest axis is a cache miss a voxel.
 #[derive(Debug, Clone)]
-pub struct Traversal {
+pub struct Traversal<'a> {
     dims: [usize; 3],
     positive: bool,
-    data: Vec<u16>,
+    data: Cow<'a, [u16]>,
 }
 
-impl Traversal {
-    pub fn new(vol: &Volume, view: &View) -> Traversal {
+impl<'a> Traversal<'a> {
+    pub fn new(vol: &'a Volume, view: &View) -> Traversal<'a> {
         Traversal {
             dims: view.dims,
             positive: view.positive,
-            data: vol.permuted(view.perm),
+            data: vol.in_order(view.perm),
         }
     }
 
