@@ -1,6 +1,6 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
-//! [`over`] (the over operator), [`unorm`] (the exact unorm multiplier),
-//! and their pipelined forms [`piped_mul`] and [`piped_over`],
+//! [`over`] (the over operator, fused for the RPC's one-clock loop), the
+//! pipelined [`piped_mul`] (the exact unorm multiplier) and [`piped_over`],
 //! [`delay_line`] (and [`registered_line`], its output a register) and [`ram`] (block RAM as deep as the scene needs), the
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
@@ -23,7 +23,6 @@ pub mod regs;
 pub mod shader;
 pub mod square;
 pub mod table;
-pub mod unorm;
 pub mod view_rom;
 
 use rust_hdl::prelude::*;

@@ -1,5 +1,5 @@
 //! `mul(a, b) = round(a*b / (2^bits - 1))` for unorm words over a register,
-//! bit for bit as [`super::unorm::MulUnorm`]: the 16x16 product and its
+//! bit for bit as `golden_model::fixed::mul_unorm`: the 16x16 product and its
 //! rounding half are registered (`t = a*b + 2^(bits-1)`), and
 //! `y = (t + (t >> bits)) >> bits` leaves combinationally from the register
 //! one clock after `a` and `b`, so the multiplier has a clock to itself.

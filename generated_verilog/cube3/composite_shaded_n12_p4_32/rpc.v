@@ -1131,63 +1131,42 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$0$ch_a$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_a
-module top$pipeline$rpc$nodes$0$ch_a$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$0$ch_a$mul
 module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     
     // Module arguments
@@ -1198,63 +1177,42 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$0$ch_b$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_b
-module top$pipeline$rpc$nodes$0$ch_b$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$0$ch_b$mul
 module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     
     // Module arguments
@@ -1265,63 +1223,42 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$0$ch_g$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_g
-module top$pipeline$rpc$nodes$0$ch_g$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$0$ch_g$mul
 module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     
     // Module arguments
@@ -1332,63 +1269,42 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$0$ch_r$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$0$ch_r
-module top$pipeline$rpc$nodes$0$ch_r$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$0$ch_r$mul
 module top$pipeline$rpc$nodes$0$reg_a(d,q,clock);
     
     // Module arguments
@@ -1655,63 +1571,42 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$1$ch_a$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_a
-module top$pipeline$rpc$nodes$1$ch_a$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$1$ch_a$mul
 module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     
     // Module arguments
@@ -1722,63 +1617,42 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$1$ch_b$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_b
-module top$pipeline$rpc$nodes$1$ch_b$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$1$ch_b$mul
 module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     
     // Module arguments
@@ -1789,63 +1663,42 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$1$ch_g$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_g
-module top$pipeline$rpc$nodes$1$ch_g$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$1$ch_g$mul
 module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     
     // Module arguments
@@ -1856,63 +1709,42 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$1$ch_r$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$1$ch_r
-module top$pipeline$rpc$nodes$1$ch_r$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$1$ch_r$mul
 module top$pipeline$rpc$nodes$1$reg_a(d,q,clock);
     
     // Module arguments
@@ -2179,63 +2011,42 @@ module top$pipeline$rpc$nodes$2$ch_a(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$2$ch_a$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_a
-module top$pipeline$rpc$nodes$2$ch_a$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$2$ch_a$mul
 module top$pipeline$rpc$nodes$2$ch_b(front,back,front_alpha,result);
     
     // Module arguments
@@ -2246,63 +2057,42 @@ module top$pipeline$rpc$nodes$2$ch_b(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$2$ch_b$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_b
-module top$pipeline$rpc$nodes$2$ch_b$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$2$ch_b$mul
 module top$pipeline$rpc$nodes$2$ch_g(front,back,front_alpha,result);
     
     // Module arguments
@@ -2313,63 +2103,42 @@ module top$pipeline$rpc$nodes$2$ch_g(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$2$ch_g$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_g
-module top$pipeline$rpc$nodes$2$ch_g$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$2$ch_g$mul
 module top$pipeline$rpc$nodes$2$ch_r(front,back,front_alpha,result);
     
     // Module arguments
@@ -2380,63 +2149,42 @@ module top$pipeline$rpc$nodes$2$ch_r(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$2$ch_r$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$2$ch_r
-module top$pipeline$rpc$nodes$2$ch_r$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$2$ch_r$mul
 module top$pipeline$rpc$nodes$2$reg_a(d,q,clock);
     
     // Module arguments
@@ -2703,63 +2451,42 @@ module top$pipeline$rpc$nodes$3$ch_a(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$3$ch_a$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_a
-module top$pipeline$rpc$nodes$3$ch_a$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$3$ch_a$mul
 module top$pipeline$rpc$nodes$3$ch_b(front,back,front_alpha,result);
     
     // Module arguments
@@ -2770,63 +2497,42 @@ module top$pipeline$rpc$nodes$3$ch_b(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$3$ch_b$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_b
-module top$pipeline$rpc$nodes$3$ch_b$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$3$ch_b$mul
 module top$pipeline$rpc$nodes$3$ch_g(front,back,front_alpha,result);
     
     // Module arguments
@@ -2837,63 +2543,42 @@ module top$pipeline$rpc$nodes$3$ch_g(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$3$ch_g$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_g
-module top$pipeline$rpc$nodes$3$ch_g$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$3$ch_g$mul
 module top$pipeline$rpc$nodes$3$ch_r(front,back,front_alpha,result);
     
     // Module arguments
@@ -2904,63 +2589,42 @@ module top$pipeline$rpc$nodes$3$ch_r(front,back,front_alpha,result);
     
     // Constant declarations
     localparam  m = 16'hff;
-    
-    // Stub signals
-    reg  [15:0] mul$a;
-    reg  [15:0] mul$b;
-    wire  [15:0] mul$y;
+    localparam  k = 8'h8;
+    localparam  k2 = 8'h10;
+    localparam  k3 = 8'h18;
+    localparam  half = 64'h8080;
+    localparam  wide = 1'b0;
+    localparam  enabled = 1'b1;
     
     // Local signals
-    reg  [31:0] sum;
-    
-    // Sub module instances
-    top$pipeline$rpc$nodes$3$ch_r$mul mul(
-        .a(mul$a),
-        .b(mul$b),
-        .y(mul$y)
-    );
+    reg  [15:0] a;
+    reg  [15:0] b;
+    reg  [63:0] product;
+    reg  [63:0] sum;
     
     // Update code
     reg  [15:0] result_pass;
     always @(*) begin
-        mul$a = m - front_alpha;
-        mul$b = back;
-        sum = 32'(front) + 32'(mul$y);
-        result_pass = 16'(sum);
-        if (sum > 32'(m)) begin
+        a = ~front_alpha & m;
+        b = back & m;
+        if (wide) begin
+            product = (64'(a * b) << k) + 64'(a * b);
+        end
+        else begin
+            product = 64'(a * ((b << k) | b));
+        end
+        if (~enabled) begin
+            product = 'h0;
+        end
+        sum = ((64'(front & m)) << k2) + half + product;
+        result_pass = 16'(sum >> k2);
+        if (|(sum >> k3)) begin
             result_pass = m;
         end
         result = result_pass;
     end
     
 endmodule // top$pipeline$rpc$nodes$3$ch_r
-module top$pipeline$rpc$nodes$3$ch_r$mul(a,b,y);
-    
-    // Module arguments
-    input wire  [15:0] a;
-    input wire  [15:0] b;
-    output reg  [15:0] y;
-    
-    // Constant declarations
-    localparam  half = 'h80;
-    localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
-    
-    // Local signals
-    reg  [31:0] t;
-    
-    // Update code
-    reg  [15:0] y_pass;
-    always @(*) begin
-        t = a * b + half;
-        y_pass = 16'((t + (t >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
-    end
-    
-endmodule // top$pipeline$rpc$nodes$3$ch_r$mul
 module top$pipeline$rpc$nodes$3$reg_a(d,q,clock);
     
     // Module arguments
