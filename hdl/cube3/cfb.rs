@@ -36,12 +36,15 @@
 //!
 //! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
 //! at address `r·G + k div P`, so a ray's `P` planes of a segment lie in `P`
-//! modules at one address. The group (its tables read a clock ahead, or
-//! the parallel chunk's counters) is registered while `pos_y` gives its
-//! row; then memory module `m` takes the address of the lane
-//! whose voxel it holds, and one clock later 2-DSB module `d` takes the
-//! word of the lane whose ray it stores: a voxel may travel from any module
-//! to any other in a clock (a `P`-way crossbar each way). In a parallel
+//! modules at one address. The write side is five stages, each ending in
+//! registers, so no multiplier or crossbar lies between a block RAM and
+//! another: (0) the group (its tables read a clock ahead, or the parallel
+//! chunk's counters) is registered while `pos_y` is read; (1) the beam's
+//! row; (2) each lane's memory module and address `x div P + y·b +
+//! k·b·n_y`, and its ray's 2-DSB module and address; (3) memory module `m`
+//! takes the address of the lane whose voxel it holds; (4) with the word,
+//! 2-DSB module `d` takes the word of the lane whose ray it stores: a voxel
+//! may travel from any module to any other (a `P`-way crossbar each way). In a parallel
 //! view both are rotations, by `(x_0 + y + k) mod P` and `(r + k) mod P`;
 //! between consecutive beams the first changes by `pos_x[k+1] - pos_x[k] +
 //! pos_y[k+1] - pos_y[k] + 1`, the shift of the paper's Fast Bus. A
@@ -49,7 +52,8 @@
 //! crossbar.
 //!
 //! **Reads.** Segment `s` of ray `r` reads address `r·G + s` of every module
-//! of the `cur` and `next` buffers; lane `i` takes module `(r + i) mod P`.
+//! of the `cur` and `next` buffers (a counter: the segments are read in
+//! that order); lane `i` takes module `(r + i) mod P`.
 //!
 //! **Schedule.** Scanline periods of `T` clocks: in period `j` the buffer
 //! `j mod 3` takes scanline `v_0 + j` (for `j <= S`) while, from period 2,
@@ -112,6 +116,8 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     row_stride: Signal<Local, Bits<16>>,
     perspective: Constant<Bit>,
     row_entry: Signal<Local, Bits<32>>,
+    /// `period·row_stride`, registered from the schedule's next period.
+    row_base_r: DFF<Bits<32>>,
     schedule: Schedule,
     /// The group, registered beside `pos_y`'s read: its plane, first ray,
     /// each lane's `x` and whether it holds a ray, with the schedule's
@@ -123,31 +129,53 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     period_r: DFF<Bits<16>>,
     writing_r: DFF<Bit>,
     buffer_r: DFF<Bits<2>>,
-    /// The write side: the group's plane, row and first ray, and per lane
-    /// its ray, voxel `x`, module, address and whether it holds a ray and
-    /// lies in the volume.
-    row: Signal<Local, Bits<16>>,
-    lane_ray: [Signal<Local, Bits<16>>; P],
+    /// Write stage 1, with `pos_y`: the beam's row, the plane and
+    /// `plane·plane_words`, and per lane its ray, `x` and whether it holds
+    /// a ray; the write flag and buffer beside them.
+    s1_row: DFF<Bits<16>>,
+    s1_plane: DFF<Bits<16>>,
+    s1_plane_offset: DFF<Bits<32>>,
+    s1_ray: [DFF<Bits<16>>; P],
+    s1_x: [DFF<Bits<16>>; P],
+    s1_holds: [DFF<Bit>; P],
+    s1_writing: DFF<Bit>,
+    s1_buffer: DFF<Bits<2>>,
+    /// Write stage 2, per lane: whether its voxel lies in the volume, its
+    /// memory module and address, its 2-DSB module and address, and whether
+    /// its ray is in the stream; computed, then registered.
     lane_inside: [Signal<Local, Bit>; P],
     lane_module: [Signal<Local, Bits<16>>; P],
     lane_column: [Signal<Local, Bits<16>>; P],
     lane_address: [Signal<Local, Bits<32>>; P],
-    /// Per memory module: the address it reads, and whether it reads.
+    lane_dsb: [Signal<Local, Bits<16>>; P],
+    lane_write_address: [Signal<Local, Bits<32>>; P],
+    s2_inside: [DFF<Bit>; P],
+    s2_module: [DFF<Bits<16>>; P],
+    s2_address: [DFF<Bits<32>>; P],
+    s2_holds: [DFF<Bit>; P],
+    s2_dsb: [DFF<Bits<16>>; P],
+    s2_write_address: [DFF<Bits<32>>; P],
+    s2_in_stream: [DFF<Bit>; P],
+    s2_writing: DFF<Bit>,
+    s2_buffer: DFF<Bits<2>>,
+    /// Write stage 3, per memory module: the address it reads (the lanes'
+    /// crossbar), and whether it reads.
     address: [Signal<Local, Bits<32>>; P],
     reads: [Signal<Local, Bit>; P],
-    /// One clock later, with the memory's data.
+    /// Write stage 4, with the memory's data: stage 2's lane fields a
+    /// clock later.
     holds_q: [DFF<Bit>; P],
     inside_q: [DFF<Bit>; P],
     module_q: [DFF<Bits<16>>; P],
-    ray_q: [DFF<Bits<16>>; P],
-    plane_q: DFF<Bits<16>>,
+    dsb_q: [DFF<Bits<16>>; P],
+    write_address_q: [DFF<Bits<32>>; P],
+    in_stream_q: [DFF<Bit>; P],
     write_q: DFF<Bit>,
-    plane_segment: Signal<Local, Bits<16>>,
     buffer_q: DFF<Bits<2>>,
     value: [Signal<Local, Bits<16>>; P],
-    /// Per 2-DSB module: the lane's word, ray and whether one is written.
+    /// Per 2-DSB module: the lane's word and address, and whether one is
+    /// written.
     dsb_data: [Signal<Local, Bits<16>>; P],
-    dsb_ray: [Signal<Local, Bits<16>>; P],
     dsb_write: [Signal<Local, Bit>; P],
     write_address: [Signal<Local, Bits<32>>; P],
     read_address: Signal<Local, Bits<32>>,
@@ -250,6 +278,7 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             row_entry: Default::default(),
             row_stride: Default::default(),
             perspective: Constant::new(s.perspective),
+            row_base_r: Default::default(),
             schedule: Schedule::default(),
             plane_r: Default::default(),
             first_ray_r: Default::default(),
@@ -258,25 +287,41 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             period_r: Default::default(),
             writing_r: Default::default(),
             buffer_r: Default::default(),
-            row: Default::default(),
-            lane_ray: std::array::from_fn(|_| Default::default()),
+            s1_row: Default::default(),
+            s1_plane: Default::default(),
+            s1_plane_offset: Default::default(),
+            s1_writing: Default::default(),
+            s1_buffer: Default::default(),
+            s2_writing: Default::default(),
+            s2_buffer: Default::default(),
+            write_q: Default::default(),
+            buffer_q: Default::default(),
+            s1_ray: std::array::from_fn(|_| Default::default()),
+            s1_x: std::array::from_fn(|_| Default::default()),
+            s1_holds: std::array::from_fn(|_| Default::default()),
             lane_inside: std::array::from_fn(|_| Default::default()),
             lane_module: std::array::from_fn(|_| Default::default()),
             lane_column: std::array::from_fn(|_| Default::default()),
             lane_address: std::array::from_fn(|_| Default::default()),
+            lane_dsb: std::array::from_fn(|_| Default::default()),
+            lane_write_address: std::array::from_fn(|_| Default::default()),
+            s2_inside: std::array::from_fn(|_| Default::default()),
+            s2_module: std::array::from_fn(|_| Default::default()),
+            s2_address: std::array::from_fn(|_| Default::default()),
+            s2_holds: std::array::from_fn(|_| Default::default()),
+            s2_dsb: std::array::from_fn(|_| Default::default()),
+            s2_write_address: std::array::from_fn(|_| Default::default()),
+            s2_in_stream: std::array::from_fn(|_| Default::default()),
             address: std::array::from_fn(|_| Default::default()),
             reads: std::array::from_fn(|_| Default::default()),
             holds_q: std::array::from_fn(|_| Default::default()),
             inside_q: std::array::from_fn(|_| Default::default()),
             module_q: std::array::from_fn(|_| Default::default()),
-            ray_q: std::array::from_fn(|_| Default::default()),
-            plane_q: Default::default(),
-            write_q: Default::default(),
-            plane_segment: Default::default(),
-            buffer_q: Default::default(),
+            dsb_q: std::array::from_fn(|_| Default::default()),
+            write_address_q: std::array::from_fn(|_| Default::default()),
+            in_stream_q: std::array::from_fn(|_| Default::default()),
             value: std::array::from_fn(|_| Default::default()),
             dsb_data: std::array::from_fn(|_| Default::default()),
-            dsb_ray: std::array::from_fn(|_| Default::default()),
             dsb_write: std::array::from_fn(|_| Default::default()),
             write_address: std::array::from_fn(|_| Default::default()),
             read_address: Default::default(),
@@ -320,7 +365,14 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             period_r,
             writing_r,
             buffer_r,
-            plane_q,
+            row_base_r,
+            s1_row,
+            s1_plane,
+            s1_plane_offset,
+            s1_writing,
+            s1_buffer,
+            s2_writing,
+            s2_buffer,
             write_q,
             buffer_q,
             read_q,
@@ -359,57 +411,98 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.schedule.host_write.next = self.host_write.val();
         self.schedule.host_address.next = self.host_address.val();
         self.schedule.host_data.next = self.host_data.val();
-        // This clock's group of rays, and its row's entry.
+        // Write stage 0: this clock's group of rays, and its row's entry
+        // (`period·row_stride` registered from the next period).
         self.group.chunk.next = self.schedule.chunk.val();
         self.group.chunk_next.next = self.schedule.chunk_next.val();
         self.group.plane_count.next = self.schedule.plane.val();
-        self.row_entry.next = self.schedule.period.val() * self.row_stride.val()
-            + bit_cast::<32, 16>(self.group.plane.val());
+        self.row_base_r.d.next = self.schedule.period_next.val() * self.row_stride.val();
+        self.row_entry.next = self.row_base_r.q.val() + bit_cast::<32, 16>(self.group.plane.val());
         self.pos_y.address.next = self.row_entry.val().get_bits::<GROUP_BITS>(0);
         self.plane_r.d.next = self.group.plane.val();
         self.first_ray_r.d.next = self.group.first_ray.val();
         self.period_r.d.next = self.schedule.period.val();
         self.writing_r.d.next = self.schedule.writing.val();
         self.buffer_r.d.next = self.schedule.write_buffer.val();
-        // A clock later, with the row's `pos_y`: the beam's row, and each
-        // lane's memory module and address.
-        self.row.next = self.v0.val() + self.period_r.q.val() + self.pos_y.data.val();
+        // Stage 1, with the row's `pos_y`: the beam's row.
+        self.s1_row.d.next = self.v0.val() + self.period_r.q.val() + self.pos_y.data.val();
+        self.s1_plane.d.next = self.plane_r.q.val();
+        self.s1_plane_offset.d.next = self.plane_r.q.val() * self.plane_words.val();
+        self.s1_writing.d.next = self.writing_r.q.val();
+        self.s1_buffer.d.next = self.buffer_r.q.val();
+        self.s2_writing.d.next = self.s1_writing.q.val();
+        self.s2_buffer.d.next = self.s1_buffer.q.val();
+        self.write_q.d.next = self.s2_writing.q.val();
+        self.buffer_q.d.next = self.s2_buffer.q.val();
         for j in 0..P {
             self.x_r[j].clock.next = self.clock.val();
             self.holds_r[j].clock.next = self.clock.val();
-            self.x_r[j].d.next = self.group.x[j].val();
-            self.holds_r[j].d.next = self.group.holds[j].val();
-            self.lane_ray[j].next = self.first_ray_r.q.val() + self.index[j].val();
-            self.lane_inside[j].next = self.holds_r[j].q.val()
-                & !self.x_r[j].q.val().get_bit(15)
-                & (self.x_r[j].q.val() < self.n_x.val())
-                & !self.row.val().get_bit(15)
-                & (self.row.val() < self.n_y.val())
-                & (self.plane_r.q.val() < self.n_k.val());
-            self.lane_module[j].next =
-                (self.x_r[j].q.val() + self.row.val() + self.plane_r.q.val()) & self.mask.val();
-            // (`* one` widens the column to 32 bits inside the loop.)
-            self.lane_column[j].next = self.x_r[j].q.val() >> self.shift.val();
-            self.lane_address[j].next = self.lane_column[j].val() * self.one.val()
-                + self.row.val() * self.row_words.val()
-                + self.plane_r.q.val() * self.plane_words.val();
+            self.s1_ray[j].clock.next = self.clock.val();
+            self.s1_x[j].clock.next = self.clock.val();
+            self.s1_holds[j].clock.next = self.clock.val();
+            self.s2_inside[j].clock.next = self.clock.val();
+            self.s2_module[j].clock.next = self.clock.val();
+            self.s2_address[j].clock.next = self.clock.val();
+            self.s2_holds[j].clock.next = self.clock.val();
+            self.s2_dsb[j].clock.next = self.clock.val();
+            self.s2_write_address[j].clock.next = self.clock.val();
+            self.s2_in_stream[j].clock.next = self.clock.val();
             self.holds_q[j].clock.next = self.clock.val();
             self.inside_q[j].clock.next = self.clock.val();
             self.module_q[j].clock.next = self.clock.val();
-            self.ray_q[j].clock.next = self.clock.val();
-            self.holds_q[j].d.next = self.holds_r[j].q.val();
-            self.inside_q[j].d.next = self.lane_inside[j].val();
-            self.module_q[j].d.next = self.lane_module[j].val();
-            self.ray_q[j].d.next = self.lane_ray[j].val();
+            self.dsb_q[j].clock.next = self.clock.val();
+            self.write_address_q[j].clock.next = self.clock.val();
+            self.in_stream_q[j].clock.next = self.clock.val();
+            self.x_r[j].d.next = self.group.x[j].val();
+            self.holds_r[j].d.next = self.group.holds[j].val();
+            self.s1_ray[j].d.next = self.first_ray_r.q.val() + self.index[j].val();
+            self.s1_x[j].d.next = self.x_r[j].q.val();
+            self.s1_holds[j].d.next = self.holds_r[j].q.val();
+            // Stage 2: each lane's memory module and address, and the 2-DSB
+            // module and address of its ray (ray r of plane k to module
+            // (r + k) mod P at r*G + k div P).
+            self.lane_inside[j].next = self.s1_holds[j].q.val()
+                & !self.s1_x[j].q.val().get_bit(15)
+                & (self.s1_x[j].q.val() < self.n_x.val())
+                & !self.s1_row.q.val().get_bit(15)
+                & (self.s1_row.q.val() < self.n_y.val())
+                & (self.s1_plane.q.val() < self.n_k.val());
+            self.lane_module[j].next =
+                (self.s1_x[j].q.val() + self.s1_row.q.val() + self.s1_plane.q.val())
+                    & self.mask.val();
+            // (`* one` widens the column to 32 bits inside the loop.)
+            self.lane_column[j].next = self.s1_x[j].q.val() >> self.shift.val();
+            self.lane_address[j].next = self.lane_column[j].val() * self.one.val()
+                + self.s1_row.q.val() * self.row_words.val()
+                + self.s1_plane_offset.q.val();
+            self.lane_dsb[j].next =
+                (self.s1_ray[j].q.val() + self.s1_plane.q.val()) & self.mask.val();
+            self.lane_write_address[j].next = self.s1_ray[j].q.val() * self.segments.val()
+                + bit_cast::<32, 16>(self.s1_plane.q.val() >> self.shift.val());
+            self.s2_inside[j].d.next = self.lane_inside[j].val();
+            self.s2_module[j].d.next = self.lane_module[j].val();
+            self.s2_address[j].d.next = self.lane_address[j].val();
+            self.s2_holds[j].d.next = self.s1_holds[j].q.val();
+            self.s2_dsb[j].d.next = self.lane_dsb[j].val();
+            self.s2_write_address[j].d.next = self.lane_write_address[j].val();
+            self.s2_in_stream[j].d.next = self.s1_ray[j].q.val() < self.rays.val();
+            // Stage 4's copies.
+            self.holds_q[j].d.next = self.s2_holds[j].q.val();
+            self.inside_q[j].d.next = self.s2_inside[j].q.val();
+            self.module_q[j].d.next = self.s2_module[j].q.val();
+            self.dsb_q[j].d.next = self.s2_dsb[j].q.val();
+            self.write_address_q[j].d.next = self.s2_write_address[j].q.val();
+            self.in_stream_q[j].d.next = self.s2_in_stream[j].q.val();
         }
-        // Lanes to memory modules: each module reads the voxel of the lane
-        // in it (at most one: the lanes' x lie within P consecutive).
+        // Stage 3, lanes to memory modules: each module reads the voxel of
+        // the lane in it (at most one: the lanes' x lie within P
+        // consecutive).
         for m in 0..P {
             self.address[m].next = 0.into();
             self.reads[m].next = false;
             for j in 0..P {
-                if self.lane_inside[j].val() & (self.lane_module[j].val() == self.index[m].val()) {
-                    self.address[m].next = self.lane_address[j].val();
+                if self.s2_inside[j].q.val() & (self.s2_module[j].q.val() == self.index[m].val()) {
+                    self.address[m].next = self.s2_address[j].q.val();
                     self.reads[m].next = true;
                 }
             }
@@ -434,12 +527,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 self.word[m].next = self.ext_data[m].val();
             }
         }
-        self.plane_q.d.next = self.plane_r.q.val();
-        self.write_q.d.next = self.writing_r.q.val();
-        self.plane_segment.next = self.plane_q.q.val() >> self.shift.val();
-        self.buffer_q.d.next = self.buffer_r.q.val();
-        // Memory modules back to lanes, and lanes to 2-DSB modules: ray r
-        // of plane k to module (r + k) mod P at address r*G + k div P.
+        // Stage 4: memory modules back to lanes, and lanes to 2-DSB modules.
         for j in 0..P {
             self.value[j].next = 0.into();
             for m in 0..P {
@@ -450,20 +538,15 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         }
         for d in 0..P {
             self.dsb_data[d].next = 0.into();
-            self.dsb_ray[d].next = 0.into();
+            self.write_address[d].next = 0.into();
             self.dsb_write[d].next = false;
             for j in 0..P {
-                if self.holds_q[j].q.val()
-                    & (((self.ray_q[j].q.val() + self.plane_q.q.val()) & self.mask.val())
-                        == self.index[d].val())
-                {
+                if self.holds_q[j].q.val() & (self.dsb_q[j].q.val() == self.index[d].val()) {
                     self.dsb_data[d].next = self.value[j].val();
-                    self.dsb_ray[d].next = self.ray_q[j].q.val();
-                    self.dsb_write[d].next = true;
+                    self.write_address[d].next = self.write_address_q[j].q.val();
+                    self.dsb_write[d].next = self.in_stream_q[j].q.val();
                 }
             }
-            self.write_address[d].next = self.dsb_ray[d].val() * self.segments.val()
-                + bit_cast::<32, 16>(self.plane_segment.val());
             self.buffer0[d].write_clock.next = self.clock.val();
             self.buffer1[d].write_clock.next = self.clock.val();
             self.buffer2[d].write_clock.next = self.clock.val();
@@ -475,23 +558,20 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             self.buffer2[d].write_data.next = self.dsb_data[d].val();
             self.buffer0[d].write_enable.next = self.write_q.q.val()
                 & self.dsb_write[d].val()
-                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[0].val());
             self.buffer1[d].write_enable.next = self.write_q.q.val()
                 & self.dsb_write[d].val()
-                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[1].val());
             self.buffer2[d].write_enable.next = self.write_q.q.val()
                 & self.dsb_write[d].val()
-                & (self.dsb_ray[d].val() < self.rays.val())
                 & (self.buffer_q.q.val() == self.buffer_id[2].val());
         }
-        // Reads: segment s of ray r at r*G + s in every module; lane i takes
-        // module (r + i) mod P a clock later.
+        // Reads: segment s of ray r at r*G + s in every module (the
+        // schedule's count of reads); lane i takes module (r + i) mod P a
+        // clock later.
         self.read_address.next = 0.into();
         if self.schedule.reading.val() {
-            self.read_address.next = self.schedule.ray.val() * self.segments.val()
-                + bit_cast::<32, 16>(self.schedule.segment.val());
+            self.read_address.next = self.schedule.read_address.val();
         }
         self.read_q.d.next = self.schedule.reading.val();
         self.lane_q.d.next = self.schedule.ray.val() & self.mask.val();

@@ -23,10 +23,11 @@ pub const PLANE_BITS: usize = 10;
 /// 4)` groups, 132 612 for a 256 class.
 pub const GROUP_BITS: usize = 18;
 
-/// Clocks from a group's schedule count to its voxels' 2-DSB write: the
-/// row's `pos_y` read (the group registered beside it) and the memory
-/// modules' read ([`super::cfb`]).
-pub const WRITE_LATENCY: usize = 2;
+/// Clocks from a group's schedule count to its voxels' 2-DSB write
+/// ([`super::cfb`]'s write stages): the row's `pos_y` read (the group
+/// registered beside it), the row, the lanes' addresses, and the memory
+/// modules' read.
+pub const WRITE_LATENCY: usize = 4;
 
 /// One clock of a perspective PRP's writes: plane `plane`, stream rays
 /// `ray .. ray + x.len()` at beam positions `x` (increasing, within `P`
@@ -702,8 +703,10 @@ impl Cube3Config {
     pub fn view_writes(&self) -> Vec<Write> {
         let c = self;
         let (g, p) = (c.segments as i64, c.p);
+        // The centre line ends a clock before the centre: the increments'
+        // tables are read into a register.
         let centre_last = if c.perspective {
-            (super::trilin::LATENCY as i64 + g + 1) - 1
+            (super::trilin::LATENCY as i64 + g + 1) - 2
         } else {
             0
         };

@@ -10,16 +10,18 @@ use golden_model::host::ViewTable;
 use rust_hdl::prelude::*;
 
 /// The increments of the ABC units' centre ray: the units' ray and
-/// scanline through a delay line to the centre (perspective), then tables
-/// by ray and scanline (sign in bit 16) the host loads; a parallel view's
-/// one entry at address 0 (the mask clears the address).
+/// scanline through a delay line to a clock before the centre
+/// (perspective), then tables by ray and scanline (sign in bit 16) the
+/// host loads, read into a register; a parallel view's one entry at
+/// address 0 (the mask clears the address).
 #[derive(LogicBlock)]
 pub struct Increments<const H: usize> {
     pub clock: Signal<In, Clock>,
     pub host_write: Signal<In, Bit>,
     pub host_address: Signal<In, Bits<ADDRESS_BITS>>,
     pub host_data: Signal<In, Bits<64>>,
-    /// The centre line's length less one (`RayControl`'s register).
+    /// The centre line's length less one (`RayControl`'s register): a clock
+    /// short of the centre, for the tables' registered read.
     pub centre_last: Signal<In, Bits<H>>,
     pub ray: Signal<In, Bits<16>>,
     pub scanline: Signal<In, Bits<16>>,
@@ -33,6 +35,8 @@ pub struct Increments<const H: usize> {
     dy_address: Signal<Local, Bits<16>>,
     dx_rom: ViewRom<17, TEMPLATE_BITS>,
     dy_rom: ViewRom<17, TEMPLATE_BITS>,
+    dx_q: DFF<Bits<17>>,
+    dy_q: DFF<Bits<17>>,
 }
 
 impl<const H: usize> Increments<H> {
@@ -61,6 +65,8 @@ impl<const H: usize> Increments<H> {
             dy_address: Default::default(),
             dx_rom: ViewRom::new(ViewTable::Dx.base(), rays),
             dy_rom: ViewRom::new(ViewTable::Dy.base(), scanlines),
+            dx_q: Default::default(),
+            dy_q: Default::default(),
         }
     }
 }
@@ -68,6 +74,7 @@ impl<const H: usize> Increments<H> {
 impl<const H: usize> Logic for Increments<H> {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(self, clock, dx_q, dy_q);
         self.centre_line.clock.next = self.clock.val();
         self.centre_line.last.next = self.centre_last.val();
         self.dx_rom.clock.next = self.clock.val();
@@ -87,9 +94,13 @@ impl<const H: usize> Logic for Increments<H> {
             (self.centre_line.data_out.val().get_bits::<16>(16) - 1) & self.mask.val();
         self.dx_rom.address.next = self.dx_address.val();
         self.dy_rom.address.next = self.dy_address.val();
-        self.dx_neg.next = self.dx_rom.data.val().get_bit(16);
-        self.dx_mag.next = self.dx_rom.data.val().get_bits::<16>(0);
-        self.dy_neg.next = self.dy_rom.data.val().get_bit(16);
-        self.dy_mag.next = self.dy_rom.data.val().get_bits::<16>(0);
+        // Registered: the increments reach the ABC units' multipliers from
+        // flip-flops, not through the line and the tables.
+        self.dx_q.d.next = self.dx_rom.data.val();
+        self.dy_q.d.next = self.dy_rom.data.val();
+        self.dx_neg.next = self.dx_q.q.val().get_bit(16);
+        self.dx_mag.next = self.dx_q.q.val().get_bits::<16>(0);
+        self.dy_neg.next = self.dy_q.q.val().get_bit(16);
+        self.dy_mag.next = self.dy_q.q.val().get_bits::<16>(0);
     }
 }

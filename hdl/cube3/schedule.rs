@@ -20,10 +20,15 @@ pub struct Schedule {
     /// tables' registered read answers `chunk` in its own clock.
     pub chunk_next: Signal<Out, Bits<24>>,
     pub period: Signal<Out, Bits<16>>,
+    /// The period of the next clock (the counter's input).
+    pub period_next: Signal<Out, Bits<16>>,
     pub write_buffer: Signal<Out, Bits<2>>,
     pub reading: Signal<Out, Bit>,
     pub ray: Signal<Out, Bits<16>>,
     pub segment: Signal<Out, Bits<16>>,
+    /// `ray·G + segment`, counted: the reads' 2-DSB address, from a
+    /// register (the segments of a period are read in that order).
+    pub read_address: Signal<Out, Bits<32>>,
     pub cur_buffer: Signal<Out, Bits<2>>,
     pub next_buffer: Signal<Out, Bits<2>>,
     /// The host port: the view's counts (`C3Stream`, `C3Schedule`), in the
@@ -50,6 +55,7 @@ pub struct Schedule {
     chunk_q: DFF<Bits<24>>,
     ray_q: DFF<Bits<16>>,
     segment_q: DFF<Bits<16>>,
+    address_q: DFF<Bits<32>>,
     written: DFF<Bit>,
     read: DFF<Bit>,
     w_q: DFF<Bits<2>>,
@@ -67,10 +73,12 @@ impl Default for Schedule {
             chunk: Default::default(),
             chunk_next: Default::default(),
             period: Default::default(),
+            period_next: Default::default(),
             write_buffer: Default::default(),
             reading: Default::default(),
             ray: Default::default(),
             segment: Default::default(),
+            read_address: Default::default(),
             cur_buffer: Default::default(),
             next_buffer: Default::default(),
             host_write: Default::default(),
@@ -92,6 +100,7 @@ impl Default for Schedule {
             chunk_q: Default::default(),
             ray_q: Default::default(),
             segment_q: Default::default(),
+            address_q: Default::default(),
             written: Default::default(),
             read: Default::default(),
             w_q: Default::default(),
@@ -105,8 +114,8 @@ impl Logic for Schedule {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, active, tick, period_q, plane_q, chunk_q, ray_q, segment_q, written, read,
-            w_q, c_q, n_q
+            self, clock, active, tick, period_q, plane_q, chunk_q, ray_q, segment_q, address_q,
+            written, read, w_q, c_q, n_q
         );
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
@@ -139,6 +148,7 @@ impl Logic for Schedule {
         // Reads: segment by segment, ray by ray.
         if self.reading.val() {
             self.segment_q.d.next = self.segment_q.q.val() + 1;
+            self.address_q.d.next = self.address_q.q.val() + 1;
             if self.segment_q.q.val() == self.last_segment.val() {
                 self.segment_q.d.next = 0.into();
                 self.ray_q.d.next = self.ray_q.q.val() + 1;
@@ -160,6 +170,7 @@ impl Logic for Schedule {
                 self.plane_q.d.next = 0.into();
                 self.segment_q.d.next = 0.into();
                 self.ray_q.d.next = 0.into();
+                self.address_q.d.next = 0.into();
                 self.written.d.next = false;
                 self.read.d.next = false;
                 self.c_q.d.next = self.n_q.q.val();
@@ -175,6 +186,7 @@ impl Logic for Schedule {
             self.plane_q.d.next = 0.into();
             self.segment_q.d.next = 0.into();
             self.ray_q.d.next = 0.into();
+            self.address_q.d.next = 0.into();
             self.written.d.next = false;
             self.read.d.next = false;
             self.w_q.d.next = 0.into();
@@ -185,9 +197,11 @@ impl Logic for Schedule {
         self.chunk.next = self.chunk_q.q.val();
         self.chunk_next.next = self.chunk_q.d.val();
         self.period.next = self.period_q.q.val();
+        self.period_next.next = self.period_q.d.val();
         self.write_buffer.next = self.w_q.q.val();
         self.ray.next = self.ray_q.q.val();
         self.segment.next = self.segment_q.q.val();
+        self.read_address.next = self.address_q.q.val();
         self.cur_buffer.next = self.c_q.q.val();
         self.next_buffer.next = self.n_q.q.val();
     }

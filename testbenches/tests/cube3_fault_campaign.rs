@@ -87,10 +87,10 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         ),
         fault(
             "Fast Bus rotation",
-            "2-DSB module 0 takes lane 0's ray r of plane k when (r + k + 1) mod P = 0",
+            "lane 0's ray r of plane k goes to 2-DSB module (r + k + 1) mod P",
             fetch,
-            "(((ray_q$0$q + plane_q$q) & mask) == index$0)",
-            "(((ray_q$0$q + plane_q$q + 'h1) & mask) == index$0)",
+            "lane_dsb$0 = (s1_ray$0$q + s1_plane$q) & mask;",
+            "lane_dsb$0 = (s1_ray$0$q + s1_plane$q + 'h1) & mask;",
         ),
         fault(
             "2-DSB wrong buffer",

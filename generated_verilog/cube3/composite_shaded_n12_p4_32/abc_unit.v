@@ -14530,7 +14530,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14664,7 +14664,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -15054,7 +15054,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15188,7 +15188,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -16667,7 +16667,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16801,7 +16801,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -17191,7 +17191,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -17325,7 +17325,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -18804,7 +18804,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18938,7 +18938,7 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -19328,7 +19328,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19462,7 +19462,7 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -20941,7 +20941,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21075,7 +21075,7 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -21465,7 +21465,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21599,7 +21599,7 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];

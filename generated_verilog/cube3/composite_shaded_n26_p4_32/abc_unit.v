@@ -16246,7 +16246,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16380,7 +16380,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -16770,7 +16770,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16904,7 +16904,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -18383,7 +18383,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18517,7 +18517,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -18907,7 +18907,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19041,7 +19041,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -20520,7 +20520,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20654,7 +20654,7 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -21044,7 +21044,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21178,7 +21178,7 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -22657,7 +22657,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -22791,7 +22791,7 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -23181,7 +23181,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22a;
+    localparam  longest_last = 16'h22c;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -23315,7 +23315,7 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[554:0];
+    reg [31:0] mem[556:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];

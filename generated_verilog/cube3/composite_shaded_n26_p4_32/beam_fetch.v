@@ -191,6 +191,9 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     wire  [63:0] regs$q$1;
     wire  [63:0] regs$q$2;
     wire  [63:0] regs$q$3;
+    reg  [31:0] row_base_r$d;
+    wire  [31:0] row_base_r$q;
+    reg  row_base_r$clock;
     reg  schedule$clock;
     reg  schedule$start;
     wire  schedule$writing;
@@ -198,10 +201,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     wire  [23:0] schedule$chunk;
     wire  [23:0] schedule$chunk_next;
     wire  [15:0] schedule$period;
+    wire  [15:0] schedule$period_next;
     wire  [1:0] schedule$write_buffer;
     wire  schedule$reading;
     wire  [15:0] schedule$ray;
     wire  [15:0] schedule$segment;
+    wire  [31:0] schedule$read_address;
     wire  [1:0] schedule$cur_buffer;
     wire  [1:0] schedule$next_buffer;
     reg  schedule$host_write;
@@ -246,6 +251,147 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [1:0] buffer_r$d;
     wire  [1:0] buffer_r$q;
     reg  buffer_r$clock;
+    reg  [15:0] s1_row$d;
+    wire  [15:0] s1_row$q;
+    reg  s1_row$clock;
+    reg  [15:0] s1_plane$d;
+    wire  [15:0] s1_plane$q;
+    reg  s1_plane$clock;
+    reg  [31:0] s1_plane_offset$d;
+    wire  [31:0] s1_plane_offset$q;
+    reg  s1_plane_offset$clock;
+    reg  [15:0] s1_ray$0$d;
+    wire  [15:0] s1_ray$0$q;
+    reg  s1_ray$0$clock;
+    reg  [15:0] s1_ray$1$d;
+    wire  [15:0] s1_ray$1$q;
+    reg  s1_ray$1$clock;
+    reg  [15:0] s1_ray$2$d;
+    wire  [15:0] s1_ray$2$q;
+    reg  s1_ray$2$clock;
+    reg  [15:0] s1_ray$3$d;
+    wire  [15:0] s1_ray$3$q;
+    reg  s1_ray$3$clock;
+    reg  [15:0] s1_x$0$d;
+    wire  [15:0] s1_x$0$q;
+    reg  s1_x$0$clock;
+    reg  [15:0] s1_x$1$d;
+    wire  [15:0] s1_x$1$q;
+    reg  s1_x$1$clock;
+    reg  [15:0] s1_x$2$d;
+    wire  [15:0] s1_x$2$q;
+    reg  s1_x$2$clock;
+    reg  [15:0] s1_x$3$d;
+    wire  [15:0] s1_x$3$q;
+    reg  s1_x$3$clock;
+    reg  s1_holds$0$d;
+    wire  s1_holds$0$q;
+    reg  s1_holds$0$clock;
+    reg  s1_holds$1$d;
+    wire  s1_holds$1$q;
+    reg  s1_holds$1$clock;
+    reg  s1_holds$2$d;
+    wire  s1_holds$2$q;
+    reg  s1_holds$2$clock;
+    reg  s1_holds$3$d;
+    wire  s1_holds$3$q;
+    reg  s1_holds$3$clock;
+    reg  s1_writing$d;
+    wire  s1_writing$q;
+    reg  s1_writing$clock;
+    reg  [1:0] s1_buffer$d;
+    wire  [1:0] s1_buffer$q;
+    reg  s1_buffer$clock;
+    reg  s2_inside$0$d;
+    wire  s2_inside$0$q;
+    reg  s2_inside$0$clock;
+    reg  s2_inside$1$d;
+    wire  s2_inside$1$q;
+    reg  s2_inside$1$clock;
+    reg  s2_inside$2$d;
+    wire  s2_inside$2$q;
+    reg  s2_inside$2$clock;
+    reg  s2_inside$3$d;
+    wire  s2_inside$3$q;
+    reg  s2_inside$3$clock;
+    reg  [15:0] s2_module$0$d;
+    wire  [15:0] s2_module$0$q;
+    reg  s2_module$0$clock;
+    reg  [15:0] s2_module$1$d;
+    wire  [15:0] s2_module$1$q;
+    reg  s2_module$1$clock;
+    reg  [15:0] s2_module$2$d;
+    wire  [15:0] s2_module$2$q;
+    reg  s2_module$2$clock;
+    reg  [15:0] s2_module$3$d;
+    wire  [15:0] s2_module$3$q;
+    reg  s2_module$3$clock;
+    reg  [31:0] s2_address$0$d;
+    wire  [31:0] s2_address$0$q;
+    reg  s2_address$0$clock;
+    reg  [31:0] s2_address$1$d;
+    wire  [31:0] s2_address$1$q;
+    reg  s2_address$1$clock;
+    reg  [31:0] s2_address$2$d;
+    wire  [31:0] s2_address$2$q;
+    reg  s2_address$2$clock;
+    reg  [31:0] s2_address$3$d;
+    wire  [31:0] s2_address$3$q;
+    reg  s2_address$3$clock;
+    reg  s2_holds$0$d;
+    wire  s2_holds$0$q;
+    reg  s2_holds$0$clock;
+    reg  s2_holds$1$d;
+    wire  s2_holds$1$q;
+    reg  s2_holds$1$clock;
+    reg  s2_holds$2$d;
+    wire  s2_holds$2$q;
+    reg  s2_holds$2$clock;
+    reg  s2_holds$3$d;
+    wire  s2_holds$3$q;
+    reg  s2_holds$3$clock;
+    reg  [15:0] s2_dsb$0$d;
+    wire  [15:0] s2_dsb$0$q;
+    reg  s2_dsb$0$clock;
+    reg  [15:0] s2_dsb$1$d;
+    wire  [15:0] s2_dsb$1$q;
+    reg  s2_dsb$1$clock;
+    reg  [15:0] s2_dsb$2$d;
+    wire  [15:0] s2_dsb$2$q;
+    reg  s2_dsb$2$clock;
+    reg  [15:0] s2_dsb$3$d;
+    wire  [15:0] s2_dsb$3$q;
+    reg  s2_dsb$3$clock;
+    reg  [31:0] s2_write_address$0$d;
+    wire  [31:0] s2_write_address$0$q;
+    reg  s2_write_address$0$clock;
+    reg  [31:0] s2_write_address$1$d;
+    wire  [31:0] s2_write_address$1$q;
+    reg  s2_write_address$1$clock;
+    reg  [31:0] s2_write_address$2$d;
+    wire  [31:0] s2_write_address$2$q;
+    reg  s2_write_address$2$clock;
+    reg  [31:0] s2_write_address$3$d;
+    wire  [31:0] s2_write_address$3$q;
+    reg  s2_write_address$3$clock;
+    reg  s2_in_stream$0$d;
+    wire  s2_in_stream$0$q;
+    reg  s2_in_stream$0$clock;
+    reg  s2_in_stream$1$d;
+    wire  s2_in_stream$1$q;
+    reg  s2_in_stream$1$clock;
+    reg  s2_in_stream$2$d;
+    wire  s2_in_stream$2$q;
+    reg  s2_in_stream$2$clock;
+    reg  s2_in_stream$3$d;
+    wire  s2_in_stream$3$q;
+    reg  s2_in_stream$3$clock;
+    reg  s2_writing$d;
+    wire  s2_writing$q;
+    reg  s2_writing$clock;
+    reg  [1:0] s2_buffer$d;
+    wire  [1:0] s2_buffer$q;
+    reg  s2_buffer$clock;
     reg  holds_q$0$d;
     wire  holds_q$0$q;
     reg  holds_q$0$clock;
@@ -282,21 +428,42 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] module_q$3$d;
     wire  [15:0] module_q$3$q;
     reg  module_q$3$clock;
-    reg  [15:0] ray_q$0$d;
-    wire  [15:0] ray_q$0$q;
-    reg  ray_q$0$clock;
-    reg  [15:0] ray_q$1$d;
-    wire  [15:0] ray_q$1$q;
-    reg  ray_q$1$clock;
-    reg  [15:0] ray_q$2$d;
-    wire  [15:0] ray_q$2$q;
-    reg  ray_q$2$clock;
-    reg  [15:0] ray_q$3$d;
-    wire  [15:0] ray_q$3$q;
-    reg  ray_q$3$clock;
-    reg  [15:0] plane_q$d;
-    wire  [15:0] plane_q$q;
-    reg  plane_q$clock;
+    reg  [15:0] dsb_q$0$d;
+    wire  [15:0] dsb_q$0$q;
+    reg  dsb_q$0$clock;
+    reg  [15:0] dsb_q$1$d;
+    wire  [15:0] dsb_q$1$q;
+    reg  dsb_q$1$clock;
+    reg  [15:0] dsb_q$2$d;
+    wire  [15:0] dsb_q$2$q;
+    reg  dsb_q$2$clock;
+    reg  [15:0] dsb_q$3$d;
+    wire  [15:0] dsb_q$3$q;
+    reg  dsb_q$3$clock;
+    reg  [31:0] write_address_q$0$d;
+    wire  [31:0] write_address_q$0$q;
+    reg  write_address_q$0$clock;
+    reg  [31:0] write_address_q$1$d;
+    wire  [31:0] write_address_q$1$q;
+    reg  write_address_q$1$clock;
+    reg  [31:0] write_address_q$2$d;
+    wire  [31:0] write_address_q$2$q;
+    reg  write_address_q$2$clock;
+    reg  [31:0] write_address_q$3$d;
+    wire  [31:0] write_address_q$3$q;
+    reg  write_address_q$3$clock;
+    reg  in_stream_q$0$d;
+    wire  in_stream_q$0$q;
+    reg  in_stream_q$0$clock;
+    reg  in_stream_q$1$d;
+    wire  in_stream_q$1$q;
+    reg  in_stream_q$1$clock;
+    reg  in_stream_q$2$d;
+    wire  in_stream_q$2$q;
+    reg  in_stream_q$2$clock;
+    reg  in_stream_q$3$d;
+    wire  in_stream_q$3$q;
+    reg  in_stream_q$3$clock;
     reg  write_q$d;
     wire  write_q$q;
     reg  write_q$clock;
@@ -323,11 +490,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] word$3;
     reg  [15:0] row_stride;
     reg  [31:0] row_entry;
-    reg  [15:0] row;
-    reg  [15:0] lane_ray$0;
-    reg  [15:0] lane_ray$1;
-    reg  [15:0] lane_ray$2;
-    reg  [15:0] lane_ray$3;
     reg  lane_inside$0;
     reg  lane_inside$1;
     reg  lane_inside$2;
@@ -344,6 +506,14 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [31:0] lane_address$1;
     reg  [31:0] lane_address$2;
     reg  [31:0] lane_address$3;
+    reg  [15:0] lane_dsb$0;
+    reg  [15:0] lane_dsb$1;
+    reg  [15:0] lane_dsb$2;
+    reg  [15:0] lane_dsb$3;
+    reg  [31:0] lane_write_address$0;
+    reg  [31:0] lane_write_address$1;
+    reg  [31:0] lane_write_address$2;
+    reg  [31:0] lane_write_address$3;
     reg  [31:0] address$0;
     reg  [31:0] address$1;
     reg  [31:0] address$2;
@@ -352,7 +522,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  reads$1;
     reg  reads$2;
     reg  reads$3;
-    reg  [15:0] plane_segment;
     reg  [15:0] value$0;
     reg  [15:0] value$1;
     reg  [15:0] value$2;
@@ -361,10 +530,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] dsb_data$1;
     reg  [15:0] dsb_data$2;
     reg  [15:0] dsb_data$3;
-    reg  [15:0] dsb_ray$0;
-    reg  [15:0] dsb_ray$1;
-    reg  [15:0] dsb_ray$2;
-    reg  [15:0] dsb_ray$3;
     reg  dsb_write$0;
     reg  dsb_write$1;
     reg  dsb_write$2;
@@ -566,6 +731,11 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q$2(regs$q$2),
         .q$3(regs$q$3)
     );
+    top$fetch$row_base_r row_base_r(
+        .d(row_base_r$d),
+        .q(row_base_r$q),
+        .clock(row_base_r$clock)
+    );
     top$fetch$schedule schedule(
         .clock(schedule$clock),
         .start(schedule$start),
@@ -574,10 +744,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .chunk(schedule$chunk),
         .chunk_next(schedule$chunk_next),
         .period(schedule$period),
+        .period_next(schedule$period_next),
         .write_buffer(schedule$write_buffer),
         .reading(schedule$reading),
         .ray(schedule$ray),
         .segment(schedule$segment),
+        .read_address(schedule$read_address),
         .cur_buffer(schedule$cur_buffer),
         .next_buffer(schedule$next_buffer),
         .host_write(schedule$host_write),
@@ -649,6 +821,241 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(buffer_r$q),
         .clock(buffer_r$clock)
     );
+    top$fetch$s1_row s1_row(
+        .d(s1_row$d),
+        .q(s1_row$q),
+        .clock(s1_row$clock)
+    );
+    top$fetch$s1_plane s1_plane(
+        .d(s1_plane$d),
+        .q(s1_plane$q),
+        .clock(s1_plane$clock)
+    );
+    top$fetch$s1_plane_offset s1_plane_offset(
+        .d(s1_plane_offset$d),
+        .q(s1_plane_offset$q),
+        .clock(s1_plane_offset$clock)
+    );
+    top$fetch$s1_ray$0 s1_ray$0(
+        .d(s1_ray$0$d),
+        .q(s1_ray$0$q),
+        .clock(s1_ray$0$clock)
+    );
+    top$fetch$s1_ray$1 s1_ray$1(
+        .d(s1_ray$1$d),
+        .q(s1_ray$1$q),
+        .clock(s1_ray$1$clock)
+    );
+    top$fetch$s1_ray$2 s1_ray$2(
+        .d(s1_ray$2$d),
+        .q(s1_ray$2$q),
+        .clock(s1_ray$2$clock)
+    );
+    top$fetch$s1_ray$3 s1_ray$3(
+        .d(s1_ray$3$d),
+        .q(s1_ray$3$q),
+        .clock(s1_ray$3$clock)
+    );
+    top$fetch$s1_x$0 s1_x$0(
+        .d(s1_x$0$d),
+        .q(s1_x$0$q),
+        .clock(s1_x$0$clock)
+    );
+    top$fetch$s1_x$1 s1_x$1(
+        .d(s1_x$1$d),
+        .q(s1_x$1$q),
+        .clock(s1_x$1$clock)
+    );
+    top$fetch$s1_x$2 s1_x$2(
+        .d(s1_x$2$d),
+        .q(s1_x$2$q),
+        .clock(s1_x$2$clock)
+    );
+    top$fetch$s1_x$3 s1_x$3(
+        .d(s1_x$3$d),
+        .q(s1_x$3$q),
+        .clock(s1_x$3$clock)
+    );
+    top$fetch$s1_holds$0 s1_holds$0(
+        .d(s1_holds$0$d),
+        .q(s1_holds$0$q),
+        .clock(s1_holds$0$clock)
+    );
+    top$fetch$s1_holds$1 s1_holds$1(
+        .d(s1_holds$1$d),
+        .q(s1_holds$1$q),
+        .clock(s1_holds$1$clock)
+    );
+    top$fetch$s1_holds$2 s1_holds$2(
+        .d(s1_holds$2$d),
+        .q(s1_holds$2$q),
+        .clock(s1_holds$2$clock)
+    );
+    top$fetch$s1_holds$3 s1_holds$3(
+        .d(s1_holds$3$d),
+        .q(s1_holds$3$q),
+        .clock(s1_holds$3$clock)
+    );
+    top$fetch$s1_writing s1_writing(
+        .d(s1_writing$d),
+        .q(s1_writing$q),
+        .clock(s1_writing$clock)
+    );
+    top$fetch$s1_buffer s1_buffer(
+        .d(s1_buffer$d),
+        .q(s1_buffer$q),
+        .clock(s1_buffer$clock)
+    );
+    top$fetch$s2_inside$0 s2_inside$0(
+        .d(s2_inside$0$d),
+        .q(s2_inside$0$q),
+        .clock(s2_inside$0$clock)
+    );
+    top$fetch$s2_inside$1 s2_inside$1(
+        .d(s2_inside$1$d),
+        .q(s2_inside$1$q),
+        .clock(s2_inside$1$clock)
+    );
+    top$fetch$s2_inside$2 s2_inside$2(
+        .d(s2_inside$2$d),
+        .q(s2_inside$2$q),
+        .clock(s2_inside$2$clock)
+    );
+    top$fetch$s2_inside$3 s2_inside$3(
+        .d(s2_inside$3$d),
+        .q(s2_inside$3$q),
+        .clock(s2_inside$3$clock)
+    );
+    top$fetch$s2_module$0 s2_module$0(
+        .d(s2_module$0$d),
+        .q(s2_module$0$q),
+        .clock(s2_module$0$clock)
+    );
+    top$fetch$s2_module$1 s2_module$1(
+        .d(s2_module$1$d),
+        .q(s2_module$1$q),
+        .clock(s2_module$1$clock)
+    );
+    top$fetch$s2_module$2 s2_module$2(
+        .d(s2_module$2$d),
+        .q(s2_module$2$q),
+        .clock(s2_module$2$clock)
+    );
+    top$fetch$s2_module$3 s2_module$3(
+        .d(s2_module$3$d),
+        .q(s2_module$3$q),
+        .clock(s2_module$3$clock)
+    );
+    top$fetch$s2_address$0 s2_address$0(
+        .d(s2_address$0$d),
+        .q(s2_address$0$q),
+        .clock(s2_address$0$clock)
+    );
+    top$fetch$s2_address$1 s2_address$1(
+        .d(s2_address$1$d),
+        .q(s2_address$1$q),
+        .clock(s2_address$1$clock)
+    );
+    top$fetch$s2_address$2 s2_address$2(
+        .d(s2_address$2$d),
+        .q(s2_address$2$q),
+        .clock(s2_address$2$clock)
+    );
+    top$fetch$s2_address$3 s2_address$3(
+        .d(s2_address$3$d),
+        .q(s2_address$3$q),
+        .clock(s2_address$3$clock)
+    );
+    top$fetch$s2_holds$0 s2_holds$0(
+        .d(s2_holds$0$d),
+        .q(s2_holds$0$q),
+        .clock(s2_holds$0$clock)
+    );
+    top$fetch$s2_holds$1 s2_holds$1(
+        .d(s2_holds$1$d),
+        .q(s2_holds$1$q),
+        .clock(s2_holds$1$clock)
+    );
+    top$fetch$s2_holds$2 s2_holds$2(
+        .d(s2_holds$2$d),
+        .q(s2_holds$2$q),
+        .clock(s2_holds$2$clock)
+    );
+    top$fetch$s2_holds$3 s2_holds$3(
+        .d(s2_holds$3$d),
+        .q(s2_holds$3$q),
+        .clock(s2_holds$3$clock)
+    );
+    top$fetch$s2_dsb$0 s2_dsb$0(
+        .d(s2_dsb$0$d),
+        .q(s2_dsb$0$q),
+        .clock(s2_dsb$0$clock)
+    );
+    top$fetch$s2_dsb$1 s2_dsb$1(
+        .d(s2_dsb$1$d),
+        .q(s2_dsb$1$q),
+        .clock(s2_dsb$1$clock)
+    );
+    top$fetch$s2_dsb$2 s2_dsb$2(
+        .d(s2_dsb$2$d),
+        .q(s2_dsb$2$q),
+        .clock(s2_dsb$2$clock)
+    );
+    top$fetch$s2_dsb$3 s2_dsb$3(
+        .d(s2_dsb$3$d),
+        .q(s2_dsb$3$q),
+        .clock(s2_dsb$3$clock)
+    );
+    top$fetch$s2_write_address$0 s2_write_address$0(
+        .d(s2_write_address$0$d),
+        .q(s2_write_address$0$q),
+        .clock(s2_write_address$0$clock)
+    );
+    top$fetch$s2_write_address$1 s2_write_address$1(
+        .d(s2_write_address$1$d),
+        .q(s2_write_address$1$q),
+        .clock(s2_write_address$1$clock)
+    );
+    top$fetch$s2_write_address$2 s2_write_address$2(
+        .d(s2_write_address$2$d),
+        .q(s2_write_address$2$q),
+        .clock(s2_write_address$2$clock)
+    );
+    top$fetch$s2_write_address$3 s2_write_address$3(
+        .d(s2_write_address$3$d),
+        .q(s2_write_address$3$q),
+        .clock(s2_write_address$3$clock)
+    );
+    top$fetch$s2_in_stream$0 s2_in_stream$0(
+        .d(s2_in_stream$0$d),
+        .q(s2_in_stream$0$q),
+        .clock(s2_in_stream$0$clock)
+    );
+    top$fetch$s2_in_stream$1 s2_in_stream$1(
+        .d(s2_in_stream$1$d),
+        .q(s2_in_stream$1$q),
+        .clock(s2_in_stream$1$clock)
+    );
+    top$fetch$s2_in_stream$2 s2_in_stream$2(
+        .d(s2_in_stream$2$d),
+        .q(s2_in_stream$2$q),
+        .clock(s2_in_stream$2$clock)
+    );
+    top$fetch$s2_in_stream$3 s2_in_stream$3(
+        .d(s2_in_stream$3$d),
+        .q(s2_in_stream$3$q),
+        .clock(s2_in_stream$3$clock)
+    );
+    top$fetch$s2_writing s2_writing(
+        .d(s2_writing$d),
+        .q(s2_writing$q),
+        .clock(s2_writing$clock)
+    );
+    top$fetch$s2_buffer s2_buffer(
+        .d(s2_buffer$d),
+        .q(s2_buffer$q),
+        .clock(s2_buffer$clock)
+    );
     top$fetch$holds_q$0 holds_q$0(
         .d(holds_q$0$d),
         .q(holds_q$0$q),
@@ -709,30 +1116,65 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(module_q$3$q),
         .clock(module_q$3$clock)
     );
-    top$fetch$ray_q$0 ray_q$0(
-        .d(ray_q$0$d),
-        .q(ray_q$0$q),
-        .clock(ray_q$0$clock)
+    top$fetch$dsb_q$0 dsb_q$0(
+        .d(dsb_q$0$d),
+        .q(dsb_q$0$q),
+        .clock(dsb_q$0$clock)
     );
-    top$fetch$ray_q$1 ray_q$1(
-        .d(ray_q$1$d),
-        .q(ray_q$1$q),
-        .clock(ray_q$1$clock)
+    top$fetch$dsb_q$1 dsb_q$1(
+        .d(dsb_q$1$d),
+        .q(dsb_q$1$q),
+        .clock(dsb_q$1$clock)
     );
-    top$fetch$ray_q$2 ray_q$2(
-        .d(ray_q$2$d),
-        .q(ray_q$2$q),
-        .clock(ray_q$2$clock)
+    top$fetch$dsb_q$2 dsb_q$2(
+        .d(dsb_q$2$d),
+        .q(dsb_q$2$q),
+        .clock(dsb_q$2$clock)
     );
-    top$fetch$ray_q$3 ray_q$3(
-        .d(ray_q$3$d),
-        .q(ray_q$3$q),
-        .clock(ray_q$3$clock)
+    top$fetch$dsb_q$3 dsb_q$3(
+        .d(dsb_q$3$d),
+        .q(dsb_q$3$q),
+        .clock(dsb_q$3$clock)
     );
-    top$fetch$plane_q plane_q(
-        .d(plane_q$d),
-        .q(plane_q$q),
-        .clock(plane_q$clock)
+    top$fetch$write_address_q$0 write_address_q$0(
+        .d(write_address_q$0$d),
+        .q(write_address_q$0$q),
+        .clock(write_address_q$0$clock)
+    );
+    top$fetch$write_address_q$1 write_address_q$1(
+        .d(write_address_q$1$d),
+        .q(write_address_q$1$q),
+        .clock(write_address_q$1$clock)
+    );
+    top$fetch$write_address_q$2 write_address_q$2(
+        .d(write_address_q$2$d),
+        .q(write_address_q$2$q),
+        .clock(write_address_q$2$clock)
+    );
+    top$fetch$write_address_q$3 write_address_q$3(
+        .d(write_address_q$3$d),
+        .q(write_address_q$3$q),
+        .clock(write_address_q$3$clock)
+    );
+    top$fetch$in_stream_q$0 in_stream_q$0(
+        .d(in_stream_q$0$d),
+        .q(in_stream_q$0$q),
+        .clock(in_stream_q$0$clock)
+    );
+    top$fetch$in_stream_q$1 in_stream_q$1(
+        .d(in_stream_q$1$d),
+        .q(in_stream_q$1$q),
+        .clock(in_stream_q$1$clock)
+    );
+    top$fetch$in_stream_q$2 in_stream_q$2(
+        .d(in_stream_q$2$d),
+        .q(in_stream_q$2$q),
+        .clock(in_stream_q$2$clock)
+    );
+    top$fetch$in_stream_q$3 in_stream_q$3(
+        .d(in_stream_q$3$d),
+        .q(in_stream_q$3$q),
+        .clock(in_stream_q$3$clock)
     );
     top$fetch$write_q write_q(
         .d(write_q$d),
@@ -784,7 +1226,14 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         period_r$clock = clock;
         writing_r$clock = clock;
         buffer_r$clock = clock;
-        plane_q$clock = clock;
+        row_base_r$clock = clock;
+        s1_row$clock = clock;
+        s1_plane$clock = clock;
+        s1_plane_offset$clock = clock;
+        s1_writing$clock = clock;
+        s1_buffer$clock = clock;
+        s2_writing$clock = clock;
+        s2_buffer$clock = clock;
         write_q$clock = clock;
         buffer_q$clock = clock;
         read_q$clock = clock;
@@ -796,7 +1245,14 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         period_r$d = period_r$q;
         writing_r$d = writing_r$q;
         buffer_r$d = buffer_r$q;
-        plane_q$d = plane_q$q;
+        row_base_r$d = row_base_r$q;
+        s1_row$d = s1_row$q;
+        s1_plane$d = s1_plane$q;
+        s1_plane_offset$d = s1_plane_offset$q;
+        s1_writing$d = s1_writing$q;
+        s1_buffer$d = s1_buffer$q;
+        s2_writing$d = s2_writing$q;
+        s2_buffer$d = s2_buffer$q;
         write_q$d = write_q$q;
         buffer_q$d = buffer_q$q;
         read_q$d = read_q$q;
@@ -836,98 +1292,207 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         group$chunk = schedule$chunk;
         group$chunk_next = schedule$chunk_next;
         group$plane_count = schedule$plane;
-        row_entry = schedule$period * row_stride + 32'(group$plane);
+        row_base_r$d = schedule$period_next * row_stride;
+        row_entry = row_base_r$q + 32'(group$plane);
         pos_y$address = row_entry[('h0)+:(18)];
         plane_r$d = group$plane;
         first_ray_r$d = group$first_ray;
         period_r$d = schedule$period;
         writing_r$d = schedule$writing;
         buffer_r$d = schedule$write_buffer;
-        row = v0 + period_r$q + pos_y$data;
+        s1_row$d = v0 + period_r$q + pos_y$data;
+        s1_plane$d = plane_r$q;
+        s1_plane_offset$d = plane_r$q * plane_words;
+        s1_writing$d = writing_r$q;
+        s1_buffer$d = buffer_r$q;
+        s2_writing$d = s1_writing$q;
+        s2_buffer$d = s1_buffer$q;
+        write_q$d = s2_writing$q;
+        buffer_q$d = s2_buffer$q;
         x_r$0$clock = clock;
         holds_r$0$clock = clock;
-        x_r$0$d = group$x$0;
-        holds_r$0$d = group$holds$0;
-        lane_ray$0 = first_ray_r$q + index$0;
-        lane_inside$0 = holds_r$0$q & ~x_r$0$q['hf] & (x_r$0$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
-        lane_module$0 = (x_r$0$q + row + plane_r$q) & mask;
-        lane_column$0 = x_r$0$q >> shift;
-        lane_address$0 = lane_column$0 * one + row * row_words + plane_r$q * plane_words;
+        s1_ray$0$clock = clock;
+        s1_x$0$clock = clock;
+        s1_holds$0$clock = clock;
+        s2_inside$0$clock = clock;
+        s2_module$0$clock = clock;
+        s2_address$0$clock = clock;
+        s2_holds$0$clock = clock;
+        s2_dsb$0$clock = clock;
+        s2_write_address$0$clock = clock;
+        s2_in_stream$0$clock = clock;
         holds_q$0$clock = clock;
         inside_q$0$clock = clock;
         module_q$0$clock = clock;
-        ray_q$0$clock = clock;
-        holds_q$0$d = holds_r$0$q;
-        inside_q$0$d = lane_inside$0;
-        module_q$0$d = lane_module$0;
-        ray_q$0$d = lane_ray$0;
+        dsb_q$0$clock = clock;
+        write_address_q$0$clock = clock;
+        in_stream_q$0$clock = clock;
+        x_r$0$d = group$x$0;
+        holds_r$0$d = group$holds$0;
+        s1_ray$0$d = first_ray_r$q + index$0;
+        s1_x$0$d = x_r$0$q;
+        s1_holds$0$d = holds_r$0$q;
+        lane_inside$0 = s1_holds$0$q & ~s1_x$0$q['hf] & (s1_x$0$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
+        lane_module$0 = (s1_x$0$q + s1_row$q + s1_plane$q) & mask;
+        lane_column$0 = s1_x$0$q >> shift;
+        lane_address$0 = lane_column$0 * one + s1_row$q * row_words + s1_plane_offset$q;
+        lane_dsb$0 = (s1_ray$0$q + s1_plane$q) & mask;
+        lane_write_address$0 = s1_ray$0$q * segments + 32'(s1_plane$q >> shift);
+        s2_inside$0$d = lane_inside$0;
+        s2_module$0$d = lane_module$0;
+        s2_address$0$d = lane_address$0;
+        s2_holds$0$d = s1_holds$0$q;
+        s2_dsb$0$d = lane_dsb$0;
+        s2_write_address$0$d = lane_write_address$0;
+        s2_in_stream$0$d = s1_ray$0$q < rays;
+        holds_q$0$d = s2_holds$0$q;
+        inside_q$0$d = s2_inside$0$q;
+        module_q$0$d = s2_module$0$q;
+        dsb_q$0$d = s2_dsb$0$q;
+        write_address_q$0$d = s2_write_address$0$q;
+        in_stream_q$0$d = s2_in_stream$0$q;
         x_r$1$clock = clock;
         holds_r$1$clock = clock;
-        x_r$1$d = group$x$1;
-        holds_r$1$d = group$holds$1;
-        lane_ray$1 = first_ray_r$q + index$1;
-        lane_inside$1 = holds_r$1$q & ~x_r$1$q['hf] & (x_r$1$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
-        lane_module$1 = (x_r$1$q + row + plane_r$q) & mask;
-        lane_column$1 = x_r$1$q >> shift;
-        lane_address$1 = lane_column$1 * one + row * row_words + plane_r$q * plane_words;
+        s1_ray$1$clock = clock;
+        s1_x$1$clock = clock;
+        s1_holds$1$clock = clock;
+        s2_inside$1$clock = clock;
+        s2_module$1$clock = clock;
+        s2_address$1$clock = clock;
+        s2_holds$1$clock = clock;
+        s2_dsb$1$clock = clock;
+        s2_write_address$1$clock = clock;
+        s2_in_stream$1$clock = clock;
         holds_q$1$clock = clock;
         inside_q$1$clock = clock;
         module_q$1$clock = clock;
-        ray_q$1$clock = clock;
-        holds_q$1$d = holds_r$1$q;
-        inside_q$1$d = lane_inside$1;
-        module_q$1$d = lane_module$1;
-        ray_q$1$d = lane_ray$1;
+        dsb_q$1$clock = clock;
+        write_address_q$1$clock = clock;
+        in_stream_q$1$clock = clock;
+        x_r$1$d = group$x$1;
+        holds_r$1$d = group$holds$1;
+        s1_ray$1$d = first_ray_r$q + index$1;
+        s1_x$1$d = x_r$1$q;
+        s1_holds$1$d = holds_r$1$q;
+        lane_inside$1 = s1_holds$1$q & ~s1_x$1$q['hf] & (s1_x$1$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
+        lane_module$1 = (s1_x$1$q + s1_row$q + s1_plane$q) & mask;
+        lane_column$1 = s1_x$1$q >> shift;
+        lane_address$1 = lane_column$1 * one + s1_row$q * row_words + s1_plane_offset$q;
+        lane_dsb$1 = (s1_ray$1$q + s1_plane$q) & mask;
+        lane_write_address$1 = s1_ray$1$q * segments + 32'(s1_plane$q >> shift);
+        s2_inside$1$d = lane_inside$1;
+        s2_module$1$d = lane_module$1;
+        s2_address$1$d = lane_address$1;
+        s2_holds$1$d = s1_holds$1$q;
+        s2_dsb$1$d = lane_dsb$1;
+        s2_write_address$1$d = lane_write_address$1;
+        s2_in_stream$1$d = s1_ray$1$q < rays;
+        holds_q$1$d = s2_holds$1$q;
+        inside_q$1$d = s2_inside$1$q;
+        module_q$1$d = s2_module$1$q;
+        dsb_q$1$d = s2_dsb$1$q;
+        write_address_q$1$d = s2_write_address$1$q;
+        in_stream_q$1$d = s2_in_stream$1$q;
         x_r$2$clock = clock;
         holds_r$2$clock = clock;
-        x_r$2$d = group$x$2;
-        holds_r$2$d = group$holds$2;
-        lane_ray$2 = first_ray_r$q + index$2;
-        lane_inside$2 = holds_r$2$q & ~x_r$2$q['hf] & (x_r$2$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
-        lane_module$2 = (x_r$2$q + row + plane_r$q) & mask;
-        lane_column$2 = x_r$2$q >> shift;
-        lane_address$2 = lane_column$2 * one + row * row_words + plane_r$q * plane_words;
+        s1_ray$2$clock = clock;
+        s1_x$2$clock = clock;
+        s1_holds$2$clock = clock;
+        s2_inside$2$clock = clock;
+        s2_module$2$clock = clock;
+        s2_address$2$clock = clock;
+        s2_holds$2$clock = clock;
+        s2_dsb$2$clock = clock;
+        s2_write_address$2$clock = clock;
+        s2_in_stream$2$clock = clock;
         holds_q$2$clock = clock;
         inside_q$2$clock = clock;
         module_q$2$clock = clock;
-        ray_q$2$clock = clock;
-        holds_q$2$d = holds_r$2$q;
-        inside_q$2$d = lane_inside$2;
-        module_q$2$d = lane_module$2;
-        ray_q$2$d = lane_ray$2;
+        dsb_q$2$clock = clock;
+        write_address_q$2$clock = clock;
+        in_stream_q$2$clock = clock;
+        x_r$2$d = group$x$2;
+        holds_r$2$d = group$holds$2;
+        s1_ray$2$d = first_ray_r$q + index$2;
+        s1_x$2$d = x_r$2$q;
+        s1_holds$2$d = holds_r$2$q;
+        lane_inside$2 = s1_holds$2$q & ~s1_x$2$q['hf] & (s1_x$2$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
+        lane_module$2 = (s1_x$2$q + s1_row$q + s1_plane$q) & mask;
+        lane_column$2 = s1_x$2$q >> shift;
+        lane_address$2 = lane_column$2 * one + s1_row$q * row_words + s1_plane_offset$q;
+        lane_dsb$2 = (s1_ray$2$q + s1_plane$q) & mask;
+        lane_write_address$2 = s1_ray$2$q * segments + 32'(s1_plane$q >> shift);
+        s2_inside$2$d = lane_inside$2;
+        s2_module$2$d = lane_module$2;
+        s2_address$2$d = lane_address$2;
+        s2_holds$2$d = s1_holds$2$q;
+        s2_dsb$2$d = lane_dsb$2;
+        s2_write_address$2$d = lane_write_address$2;
+        s2_in_stream$2$d = s1_ray$2$q < rays;
+        holds_q$2$d = s2_holds$2$q;
+        inside_q$2$d = s2_inside$2$q;
+        module_q$2$d = s2_module$2$q;
+        dsb_q$2$d = s2_dsb$2$q;
+        write_address_q$2$d = s2_write_address$2$q;
+        in_stream_q$2$d = s2_in_stream$2$q;
         x_r$3$clock = clock;
         holds_r$3$clock = clock;
-        x_r$3$d = group$x$3;
-        holds_r$3$d = group$holds$3;
-        lane_ray$3 = first_ray_r$q + index$3;
-        lane_inside$3 = holds_r$3$q & ~x_r$3$q['hf] & (x_r$3$q < n_x) & ~row['hf] & (row < n_y) & (plane_r$q < n_k);
-        lane_module$3 = (x_r$3$q + row + plane_r$q) & mask;
-        lane_column$3 = x_r$3$q >> shift;
-        lane_address$3 = lane_column$3 * one + row * row_words + plane_r$q * plane_words;
+        s1_ray$3$clock = clock;
+        s1_x$3$clock = clock;
+        s1_holds$3$clock = clock;
+        s2_inside$3$clock = clock;
+        s2_module$3$clock = clock;
+        s2_address$3$clock = clock;
+        s2_holds$3$clock = clock;
+        s2_dsb$3$clock = clock;
+        s2_write_address$3$clock = clock;
+        s2_in_stream$3$clock = clock;
         holds_q$3$clock = clock;
         inside_q$3$clock = clock;
         module_q$3$clock = clock;
-        ray_q$3$clock = clock;
-        holds_q$3$d = holds_r$3$q;
-        inside_q$3$d = lane_inside$3;
-        module_q$3$d = lane_module$3;
-        ray_q$3$d = lane_ray$3;
+        dsb_q$3$clock = clock;
+        write_address_q$3$clock = clock;
+        in_stream_q$3$clock = clock;
+        x_r$3$d = group$x$3;
+        holds_r$3$d = group$holds$3;
+        s1_ray$3$d = first_ray_r$q + index$3;
+        s1_x$3$d = x_r$3$q;
+        s1_holds$3$d = holds_r$3$q;
+        lane_inside$3 = s1_holds$3$q & ~s1_x$3$q['hf] & (s1_x$3$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
+        lane_module$3 = (s1_x$3$q + s1_row$q + s1_plane$q) & mask;
+        lane_column$3 = s1_x$3$q >> shift;
+        lane_address$3 = lane_column$3 * one + s1_row$q * row_words + s1_plane_offset$q;
+        lane_dsb$3 = (s1_ray$3$q + s1_plane$q) & mask;
+        lane_write_address$3 = s1_ray$3$q * segments + 32'(s1_plane$q >> shift);
+        s2_inside$3$d = lane_inside$3;
+        s2_module$3$d = lane_module$3;
+        s2_address$3$d = lane_address$3;
+        s2_holds$3$d = s1_holds$3$q;
+        s2_dsb$3$d = lane_dsb$3;
+        s2_write_address$3$d = lane_write_address$3;
+        s2_in_stream$3$d = s1_ray$3$q < rays;
+        holds_q$3$d = s2_holds$3$q;
+        inside_q$3$d = s2_inside$3$q;
+        module_q$3$d = s2_module$3$q;
+        dsb_q$3$d = s2_dsb$3$q;
+        write_address_q$3$d = s2_write_address$3$q;
+        in_stream_q$3$d = s2_in_stream$3$q;
         address$0 = 'h0;
         reads$0 = 1'b0;
-        if (lane_inside$0 & (lane_module$0 == index$0)) begin
-            address$0 = lane_address$0;
+        if (s2_inside$0$q & (s2_module$0$q == index$0)) begin
+            address$0 = s2_address$0$q;
             reads$0 = 1'b1;
         end
-        if (lane_inside$1 & (lane_module$1 == index$0)) begin
-            address$0 = lane_address$1;
+        if (s2_inside$1$q & (s2_module$1$q == index$0)) begin
+            address$0 = s2_address$1$q;
             reads$0 = 1'b1;
         end
-        if (lane_inside$2 & (lane_module$2 == index$0)) begin
-            address$0 = lane_address$2;
+        if (s2_inside$2$q & (s2_module$2$q == index$0)) begin
+            address$0 = s2_address$2$q;
             reads$0 = 1'b1;
         end
-        if (lane_inside$3 & (lane_module$3 == index$0)) begin
-            address$0 = lane_address$3;
+        if (s2_inside$3$q & (s2_module$3$q == index$0)) begin
+            address$0 = s2_address$3$q;
             reads$0 = 1'b1;
         end
         memory$0$read_clock = clock;
@@ -949,20 +1514,20 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         end
         address$1 = 'h0;
         reads$1 = 1'b0;
-        if (lane_inside$0 & (lane_module$0 == index$1)) begin
-            address$1 = lane_address$0;
+        if (s2_inside$0$q & (s2_module$0$q == index$1)) begin
+            address$1 = s2_address$0$q;
             reads$1 = 1'b1;
         end
-        if (lane_inside$1 & (lane_module$1 == index$1)) begin
-            address$1 = lane_address$1;
+        if (s2_inside$1$q & (s2_module$1$q == index$1)) begin
+            address$1 = s2_address$1$q;
             reads$1 = 1'b1;
         end
-        if (lane_inside$2 & (lane_module$2 == index$1)) begin
-            address$1 = lane_address$2;
+        if (s2_inside$2$q & (s2_module$2$q == index$1)) begin
+            address$1 = s2_address$2$q;
             reads$1 = 1'b1;
         end
-        if (lane_inside$3 & (lane_module$3 == index$1)) begin
-            address$1 = lane_address$3;
+        if (s2_inside$3$q & (s2_module$3$q == index$1)) begin
+            address$1 = s2_address$3$q;
             reads$1 = 1'b1;
         end
         memory$1$read_clock = clock;
@@ -984,20 +1549,20 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         end
         address$2 = 'h0;
         reads$2 = 1'b0;
-        if (lane_inside$0 & (lane_module$0 == index$2)) begin
-            address$2 = lane_address$0;
+        if (s2_inside$0$q & (s2_module$0$q == index$2)) begin
+            address$2 = s2_address$0$q;
             reads$2 = 1'b1;
         end
-        if (lane_inside$1 & (lane_module$1 == index$2)) begin
-            address$2 = lane_address$1;
+        if (s2_inside$1$q & (s2_module$1$q == index$2)) begin
+            address$2 = s2_address$1$q;
             reads$2 = 1'b1;
         end
-        if (lane_inside$2 & (lane_module$2 == index$2)) begin
-            address$2 = lane_address$2;
+        if (s2_inside$2$q & (s2_module$2$q == index$2)) begin
+            address$2 = s2_address$2$q;
             reads$2 = 1'b1;
         end
-        if (lane_inside$3 & (lane_module$3 == index$2)) begin
-            address$2 = lane_address$3;
+        if (s2_inside$3$q & (s2_module$3$q == index$2)) begin
+            address$2 = s2_address$3$q;
             reads$2 = 1'b1;
         end
         memory$2$read_clock = clock;
@@ -1019,20 +1584,20 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         end
         address$3 = 'h0;
         reads$3 = 1'b0;
-        if (lane_inside$0 & (lane_module$0 == index$3)) begin
-            address$3 = lane_address$0;
+        if (s2_inside$0$q & (s2_module$0$q == index$3)) begin
+            address$3 = s2_address$0$q;
             reads$3 = 1'b1;
         end
-        if (lane_inside$1 & (lane_module$1 == index$3)) begin
-            address$3 = lane_address$1;
+        if (s2_inside$1$q & (s2_module$1$q == index$3)) begin
+            address$3 = s2_address$1$q;
             reads$3 = 1'b1;
         end
-        if (lane_inside$2 & (lane_module$2 == index$3)) begin
-            address$3 = lane_address$2;
+        if (s2_inside$2$q & (s2_module$2$q == index$3)) begin
+            address$3 = s2_address$2$q;
             reads$3 = 1'b1;
         end
-        if (lane_inside$3 & (lane_module$3 == index$3)) begin
-            address$3 = lane_address$3;
+        if (s2_inside$3$q & (s2_module$3$q == index$3)) begin
+            address$3 = s2_address$3$q;
             reads$3 = 1'b1;
         end
         memory$3$read_clock = clock;
@@ -1052,10 +1617,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         if (external) begin
             word$3 = ext_data$3;
         end
-        plane_q$d = plane_r$q;
-        write_q$d = writing_r$q;
-        plane_segment = plane_q$q >> shift;
-        buffer_q$d = buffer_r$q;
         value$0 = 'h0;
         if (inside_q$0$q & (module_q$0$q == index$0)) begin
             value$0 = word$0;
@@ -1109,29 +1670,28 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
             value$3 = word$3;
         end
         dsb_data$0 = 'h0;
-        dsb_ray$0 = 'h0;
+        write_address$0 = 'h0;
         dsb_write$0 = 1'b0;
-        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$0)) begin
+        if (holds_q$0$q & (dsb_q$0$q == index$0)) begin
             dsb_data$0 = value$0;
-            dsb_ray$0 = ray_q$0$q;
-            dsb_write$0 = 1'b1;
+            write_address$0 = write_address_q$0$q;
+            dsb_write$0 = in_stream_q$0$q;
         end
-        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$0)) begin
+        if (holds_q$1$q & (dsb_q$1$q == index$0)) begin
             dsb_data$0 = value$1;
-            dsb_ray$0 = ray_q$1$q;
-            dsb_write$0 = 1'b1;
+            write_address$0 = write_address_q$1$q;
+            dsb_write$0 = in_stream_q$1$q;
         end
-        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$0)) begin
+        if (holds_q$2$q & (dsb_q$2$q == index$0)) begin
             dsb_data$0 = value$2;
-            dsb_ray$0 = ray_q$2$q;
-            dsb_write$0 = 1'b1;
+            write_address$0 = write_address_q$2$q;
+            dsb_write$0 = in_stream_q$2$q;
         end
-        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$0)) begin
+        if (holds_q$3$q & (dsb_q$3$q == index$0)) begin
             dsb_data$0 = value$3;
-            dsb_ray$0 = ray_q$3$q;
-            dsb_write$0 = 1'b1;
+            write_address$0 = write_address_q$3$q;
+            dsb_write$0 = in_stream_q$3$q;
         end
-        write_address$0 = dsb_ray$0 * segments + 32'(plane_segment);
         buffer0$0$write_clock = clock;
         buffer1$0$write_clock = clock;
         buffer2$0$write_clock = clock;
@@ -1141,33 +1701,32 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$0$write_data = dsb_data$0;
         buffer1$0$write_data = dsb_data$0;
         buffer2$0$write_data = dsb_data$0;
-        buffer0$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$0$write_enable = write_q$q & dsb_write$0 & (dsb_ray$0 < rays) & (buffer_q$q == buffer_id$2);
+        buffer0$0$write_enable = write_q$q & dsb_write$0 & (buffer_q$q == buffer_id$0);
+        buffer1$0$write_enable = write_q$q & dsb_write$0 & (buffer_q$q == buffer_id$1);
+        buffer2$0$write_enable = write_q$q & dsb_write$0 & (buffer_q$q == buffer_id$2);
         dsb_data$1 = 'h0;
-        dsb_ray$1 = 'h0;
+        write_address$1 = 'h0;
         dsb_write$1 = 1'b0;
-        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$1)) begin
+        if (holds_q$0$q & (dsb_q$0$q == index$1)) begin
             dsb_data$1 = value$0;
-            dsb_ray$1 = ray_q$0$q;
-            dsb_write$1 = 1'b1;
+            write_address$1 = write_address_q$0$q;
+            dsb_write$1 = in_stream_q$0$q;
         end
-        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$1)) begin
+        if (holds_q$1$q & (dsb_q$1$q == index$1)) begin
             dsb_data$1 = value$1;
-            dsb_ray$1 = ray_q$1$q;
-            dsb_write$1 = 1'b1;
+            write_address$1 = write_address_q$1$q;
+            dsb_write$1 = in_stream_q$1$q;
         end
-        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$1)) begin
+        if (holds_q$2$q & (dsb_q$2$q == index$1)) begin
             dsb_data$1 = value$2;
-            dsb_ray$1 = ray_q$2$q;
-            dsb_write$1 = 1'b1;
+            write_address$1 = write_address_q$2$q;
+            dsb_write$1 = in_stream_q$2$q;
         end
-        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$1)) begin
+        if (holds_q$3$q & (dsb_q$3$q == index$1)) begin
             dsb_data$1 = value$3;
-            dsb_ray$1 = ray_q$3$q;
-            dsb_write$1 = 1'b1;
+            write_address$1 = write_address_q$3$q;
+            dsb_write$1 = in_stream_q$3$q;
         end
-        write_address$1 = dsb_ray$1 * segments + 32'(plane_segment);
         buffer0$1$write_clock = clock;
         buffer1$1$write_clock = clock;
         buffer2$1$write_clock = clock;
@@ -1177,33 +1736,32 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$1$write_data = dsb_data$1;
         buffer1$1$write_data = dsb_data$1;
         buffer2$1$write_data = dsb_data$1;
-        buffer0$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$1$write_enable = write_q$q & dsb_write$1 & (dsb_ray$1 < rays) & (buffer_q$q == buffer_id$2);
+        buffer0$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$0);
+        buffer1$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$1);
+        buffer2$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$2);
         dsb_data$2 = 'h0;
-        dsb_ray$2 = 'h0;
+        write_address$2 = 'h0;
         dsb_write$2 = 1'b0;
-        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$2)) begin
+        if (holds_q$0$q & (dsb_q$0$q == index$2)) begin
             dsb_data$2 = value$0;
-            dsb_ray$2 = ray_q$0$q;
-            dsb_write$2 = 1'b1;
+            write_address$2 = write_address_q$0$q;
+            dsb_write$2 = in_stream_q$0$q;
         end
-        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$2)) begin
+        if (holds_q$1$q & (dsb_q$1$q == index$2)) begin
             dsb_data$2 = value$1;
-            dsb_ray$2 = ray_q$1$q;
-            dsb_write$2 = 1'b1;
+            write_address$2 = write_address_q$1$q;
+            dsb_write$2 = in_stream_q$1$q;
         end
-        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$2)) begin
+        if (holds_q$2$q & (dsb_q$2$q == index$2)) begin
             dsb_data$2 = value$2;
-            dsb_ray$2 = ray_q$2$q;
-            dsb_write$2 = 1'b1;
+            write_address$2 = write_address_q$2$q;
+            dsb_write$2 = in_stream_q$2$q;
         end
-        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$2)) begin
+        if (holds_q$3$q & (dsb_q$3$q == index$2)) begin
             dsb_data$2 = value$3;
-            dsb_ray$2 = ray_q$3$q;
-            dsb_write$2 = 1'b1;
+            write_address$2 = write_address_q$3$q;
+            dsb_write$2 = in_stream_q$3$q;
         end
-        write_address$2 = dsb_ray$2 * segments + 32'(plane_segment);
         buffer0$2$write_clock = clock;
         buffer1$2$write_clock = clock;
         buffer2$2$write_clock = clock;
@@ -1213,33 +1771,32 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$2$write_data = dsb_data$2;
         buffer1$2$write_data = dsb_data$2;
         buffer2$2$write_data = dsb_data$2;
-        buffer0$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$2$write_enable = write_q$q & dsb_write$2 & (dsb_ray$2 < rays) & (buffer_q$q == buffer_id$2);
+        buffer0$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$0);
+        buffer1$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$1);
+        buffer2$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$2);
         dsb_data$3 = 'h0;
-        dsb_ray$3 = 'h0;
+        write_address$3 = 'h0;
         dsb_write$3 = 1'b0;
-        if (holds_q$0$q & (((ray_q$0$q + plane_q$q) & mask) == index$3)) begin
+        if (holds_q$0$q & (dsb_q$0$q == index$3)) begin
             dsb_data$3 = value$0;
-            dsb_ray$3 = ray_q$0$q;
-            dsb_write$3 = 1'b1;
+            write_address$3 = write_address_q$0$q;
+            dsb_write$3 = in_stream_q$0$q;
         end
-        if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$3)) begin
+        if (holds_q$1$q & (dsb_q$1$q == index$3)) begin
             dsb_data$3 = value$1;
-            dsb_ray$3 = ray_q$1$q;
-            dsb_write$3 = 1'b1;
+            write_address$3 = write_address_q$1$q;
+            dsb_write$3 = in_stream_q$1$q;
         end
-        if (holds_q$2$q & (((ray_q$2$q + plane_q$q) & mask) == index$3)) begin
+        if (holds_q$2$q & (dsb_q$2$q == index$3)) begin
             dsb_data$3 = value$2;
-            dsb_ray$3 = ray_q$2$q;
-            dsb_write$3 = 1'b1;
+            write_address$3 = write_address_q$2$q;
+            dsb_write$3 = in_stream_q$2$q;
         end
-        if (holds_q$3$q & (((ray_q$3$q + plane_q$q) & mask) == index$3)) begin
+        if (holds_q$3$q & (dsb_q$3$q == index$3)) begin
             dsb_data$3 = value$3;
-            dsb_ray$3 = ray_q$3$q;
-            dsb_write$3 = 1'b1;
+            write_address$3 = write_address_q$3$q;
+            dsb_write$3 = in_stream_q$3$q;
         end
-        write_address$3 = dsb_ray$3 * segments + 32'(plane_segment);
         buffer0$3$write_clock = clock;
         buffer1$3$write_clock = clock;
         buffer2$3$write_clock = clock;
@@ -1249,12 +1806,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$3$write_data = dsb_data$3;
         buffer1$3$write_data = dsb_data$3;
         buffer2$3$write_data = dsb_data$3;
-        buffer0$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$0);
-        buffer1$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$1);
-        buffer2$3$write_enable = write_q$q & dsb_write$3 & (dsb_ray$3 < rays) & (buffer_q$q == buffer_id$2);
+        buffer0$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$0);
+        buffer1$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$1);
+        buffer2$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$2);
         read_address = 'h0;
         if (schedule$reading) begin
-            read_address = schedule$ray * segments + 32'(schedule$segment);
+            read_address = schedule$read_address;
         end
         read_q$d = schedule$reading;
         lane_q$d = schedule$ray & mask;
@@ -1967,6 +2524,74 @@ module top$fetch$cur_q(d,q,clock);
     end
           
 endmodule // top$fetch$cur_q
+module top$fetch$dsb_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$dsb_q$0
+module top$fetch$dsb_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$dsb_q$1
+module top$fetch$dsb_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$dsb_q$2
+module top$fetch$dsb_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$dsb_q$3
 module top$fetch$first_ray_r(d,q,clock);
     
     // Module arguments
@@ -2314,6 +2939,74 @@ module top$fetch$holds_r$3(d,q,clock);
     end
           
 endmodule // top$fetch$holds_r$3
+module top$fetch$in_stream_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$in_stream_q$0
+module top$fetch$in_stream_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$in_stream_q$1
+module top$fetch$in_stream_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$in_stream_q$2
+module top$fetch$in_stream_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$in_stream_q$3
 module top$fetch$inside_q$0(d,q,clock);
     
     // Module arguments
@@ -2597,23 +3290,6 @@ module top$fetch$period_r(d,q,clock);
     end
           
 endmodule // top$fetch$period_r
-module top$fetch$plane_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$plane_q
 module top$fetch$plane_r(d,q,clock);
     
     // Module arguments
@@ -2702,74 +3378,6 @@ module top$fetch$pos_y$ram(read_address,read_clock,read_data,write_address,write
        end
     end
 endmodule // top$fetch$pos_y$ram
-module top$fetch$ray_q$0(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$ray_q$0
-module top$fetch$ray_q$1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$ray_q$1
-module top$fetch$ray_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$ray_q$2
-module top$fetch$ray_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$ray_q$3
 module top$fetch$read_q(d,q,clock);
     
     // Module arguments
@@ -2938,7 +3546,823 @@ module top$fetch$regs$r$3(d,q,clock);
     end
           
 endmodule // top$fetch$regs$r$3
-module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,write_buffer,reading,ray,segment,cur_buffer,next_buffer,host_write,host_address,host_data);
+module top$fetch$row_base_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$row_base_r
+module top$fetch$s1_buffer(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_buffer
+module top$fetch$s1_holds$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_holds$0
+module top$fetch$s1_holds$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_holds$1
+module top$fetch$s1_holds$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_holds$2
+module top$fetch$s1_holds$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_holds$3
+module top$fetch$s1_plane(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_plane
+module top$fetch$s1_plane_offset(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_plane_offset
+module top$fetch$s1_ray$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_ray$0
+module top$fetch$s1_ray$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_ray$1
+module top$fetch$s1_ray$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_ray$2
+module top$fetch$s1_ray$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_ray$3
+module top$fetch$s1_row(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_row
+module top$fetch$s1_writing(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_writing
+module top$fetch$s1_x$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_x$0
+module top$fetch$s1_x$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_x$1
+module top$fetch$s1_x$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_x$2
+module top$fetch$s1_x$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s1_x$3
+module top$fetch$s2_address$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_address$0
+module top$fetch$s2_address$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_address$1
+module top$fetch$s2_address$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_address$2
+module top$fetch$s2_address$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_address$3
+module top$fetch$s2_buffer(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_buffer
+module top$fetch$s2_dsb$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_dsb$0
+module top$fetch$s2_dsb$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_dsb$1
+module top$fetch$s2_dsb$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_dsb$2
+module top$fetch$s2_dsb$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_dsb$3
+module top$fetch$s2_holds$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_holds$0
+module top$fetch$s2_holds$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_holds$1
+module top$fetch$s2_holds$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_holds$2
+module top$fetch$s2_holds$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_holds$3
+module top$fetch$s2_in_stream$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_in_stream$0
+module top$fetch$s2_in_stream$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_in_stream$1
+module top$fetch$s2_in_stream$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_in_stream$2
+module top$fetch$s2_in_stream$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_in_stream$3
+module top$fetch$s2_inside$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_inside$0
+module top$fetch$s2_inside$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_inside$1
+module top$fetch$s2_inside$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_inside$2
+module top$fetch$s2_inside$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_inside$3
+module top$fetch$s2_module$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_module$0
+module top$fetch$s2_module$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_module$1
+module top$fetch$s2_module$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_module$2
+module top$fetch$s2_module$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_module$3
+module top$fetch$s2_write_address$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_write_address$0
+module top$fetch$s2_write_address$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_write_address$1
+module top$fetch$s2_write_address$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_write_address$2
+module top$fetch$s2_write_address$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_write_address$3
+module top$fetch$s2_writing(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$s2_writing
+module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,period_next,write_buffer,reading,ray,segment,read_address,cur_buffer,next_buffer,host_write,host_address,host_data);
     
     // Module arguments
     input wire  clock;
@@ -2948,10 +4372,12 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
     output reg  [23:0] chunk;
     output reg  [23:0] chunk_next;
     output reg  [15:0] period;
+    output reg  [15:0] period_next;
     output reg  [1:0] write_buffer;
     output reg  reading;
     output reg  [15:0] ray;
     output reg  [15:0] segment;
+    output reg  [31:0] read_address;
     output reg  [1:0] cur_buffer;
     output reg  [1:0] next_buffer;
     input wire  host_write;
@@ -2989,6 +4415,9 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
     reg  [15:0] segment_q$d;
     wire  [15:0] segment_q$q;
     reg  segment_q$clock;
+    reg  [31:0] address_q$d;
+    wire  [31:0] address_q$q;
+    reg  address_q$clock;
     reg  written$d;
     wire  written$q;
     reg  written$clock;
@@ -3058,6 +4487,11 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
         .q(segment_q$q),
         .clock(segment_q$clock)
     );
+    top$fetch$schedule$address_q address_q(
+        .d(address_q$d),
+        .q(address_q$q),
+        .clock(address_q$clock)
+    );
     top$fetch$schedule$written written(
         .d(written$d),
         .q(written$q),
@@ -3093,6 +4527,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
         chunk_q$clock = clock;
         ray_q$clock = clock;
         segment_q$clock = clock;
+        address_q$clock = clock;
         written$clock = clock;
         read$clock = clock;
         w_q$clock = clock;
@@ -3105,6 +4540,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
         chunk_q$d = chunk_q$q;
         ray_q$d = ray_q$q;
         segment_q$d = segment_q$q;
+        address_q$d = address_q$q;
         written$d = written$q;
         read$d = read$q;
         w_q$d = w_q$q;
@@ -3135,6 +4571,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
         end
         if (reading) begin
             segment_q$d = segment_q$q + 'h1;
+            address_q$d = address_q$q + 'h1;
             if (segment_q$q == last_segment) begin
                 segment_q$d = 'h0;
                 ray_q$d = ray_q$q + 'h1;
@@ -3155,6 +4592,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
                 plane_q$d = 'h0;
                 segment_q$d = 'h0;
                 ray_q$d = 'h0;
+                address_q$d = 'h0;
                 written$d = 1'b0;
                 read$d = 1'b0;
                 c_q$d = n_q$q;
@@ -3170,6 +4608,7 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
             plane_q$d = 'h0;
             segment_q$d = 'h0;
             ray_q$d = 'h0;
+            address_q$d = 'h0;
             written$d = 1'b0;
             read$d = 1'b0;
             w_q$d = 'h0;
@@ -3180,9 +4619,11 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,writ
         chunk = chunk_q$q;
         chunk_next = chunk_q$d;
         period = period_q$q;
+        period_next = period_q$d;
         write_buffer = w_q$q;
         ray = ray_q$q;
         segment = segment_q$q;
+        read_address = address_q$q;
         cur_buffer = c_q$q;
         next_buffer = n_q$q;
     end
@@ -3205,6 +4646,23 @@ module top$fetch$schedule$active(d,q,clock);
     end
           
 endmodule // top$fetch$schedule$active
+module top$fetch$schedule$address_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$schedule$address_q
 module top$fetch$schedule$c_q(d,q,clock);
     
     // Module arguments
@@ -3477,6 +4935,74 @@ module top$fetch$schedule$written(d,q,clock);
     end
           
 endmodule // top$fetch$schedule$written
+module top$fetch$write_address_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$write_address_q$0
+module top$fetch$write_address_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$write_address_q$1
+module top$fetch$write_address_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$write_address_q$2
+module top$fetch$write_address_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$write_address_q$3
 module top$fetch$write_q(d,q,clock);
     
     // Module arguments

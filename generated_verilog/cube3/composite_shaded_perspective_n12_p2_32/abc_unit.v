@@ -7680,7 +7680,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bd;
+    localparam  longest_last = 16'h8bf;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7814,7 +7814,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2237:0];
+    reg [31:0] mem[2239:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -8204,7 +8204,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bd;
+    localparam  longest_last = 16'h8bf;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8338,7 +8338,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2237:0];
+    reg [31:0] mem[2239:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -9817,7 +9817,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bd;
+    localparam  longest_last = 16'h8bf;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -9951,7 +9951,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2237:0];
+    reg [31:0] mem[2239:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -10341,7 +10341,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bd;
+    localparam  longest_last = 16'h8bf;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10475,7 +10475,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2237:0];
+    reg [31:0] mem[2239:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];

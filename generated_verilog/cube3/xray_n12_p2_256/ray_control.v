@@ -437,6 +437,12 @@ module top$pipeline$control$increments(clock,host_write,host_address,host_data,c
     reg  [63:0] dy_rom$host_data;
     reg  [15:0] dy_rom$address;
     wire  [16:0] dy_rom$data;
+    reg  [16:0] dx_q$d;
+    wire  [16:0] dx_q$q;
+    reg  dx_q$clock;
+    reg  [16:0] dy_q$d;
+    wire  [16:0] dy_q$q;
+    reg  dy_q$clock;
     
     // Local signals
     reg  [15:0] dx_address;
@@ -466,9 +472,23 @@ module top$pipeline$control$increments(clock,host_write,host_address,host_data,c
         .address(dy_rom$address),
         .data(dy_rom$data)
     );
+    top$pipeline$control$increments$dx_q dx_q(
+        .d(dx_q$d),
+        .q(dx_q$q),
+        .clock(dx_q$clock)
+    );
+    top$pipeline$control$increments$dy_q dy_q(
+        .d(dy_q$d),
+        .q(dy_q$q),
+        .clock(dy_q$clock)
+    );
     
     // Update code
     always @(*) begin
+        dx_q$clock = clock;
+        dy_q$clock = clock;
+        dx_q$d = dx_q$q;
+        dy_q$d = dy_q$q;
         centre_line$clock = clock;
         centre_line$last = centre_last;
         dx_rom$clock = clock;
@@ -485,10 +505,12 @@ module top$pipeline$control$increments(clock,host_write,host_address,host_data,c
         dy_address = (centre_line$data_out[('h10)+:(16)] - 'h1) & mask;
         dx_rom$address = dx_address;
         dy_rom$address = dy_address;
-        dx_neg = dx_rom$data['h10];
-        dx_mag = dx_rom$data[('h0)+:(16)];
-        dy_neg = dy_rom$data['h10];
-        dy_mag = dy_rom$data[('h0)+:(16)];
+        dx_q$d = dx_rom$data;
+        dy_q$d = dy_rom$data;
+        dx_neg = dx_q$q['h10];
+        dx_mag = dx_q$q[('h0)+:(16)];
+        dy_neg = dy_q$q['h10];
+        dy_mag = dy_q$q[('h0)+:(16)];
     end
     
 endmodule // top$pipeline$control$increments
@@ -667,6 +689,23 @@ module top$pipeline$control$increments$centre_line$rd_flipped(d,q,clock);
     end
           
 endmodule // top$pipeline$control$increments$centre_line$rd_flipped
+module top$pipeline$control$increments$dx_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$dx_q
 module top$pipeline$control$increments$dx_rom(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -692,6 +731,23 @@ module top$pipeline$control$increments$dx_rom(clock,host_write,host_address,host
        end
     end
 endmodule // top$pipeline$control$increments$dx_rom
+module top$pipeline$control$increments$dy_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$increments$dy_q
 module top$pipeline$control$increments$dy_rom(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
