@@ -45,6 +45,10 @@ pub struct Over {
     /// `M - A_front`, and the back value, masked to `k` bits.
     a: Signal<Local, Bits<16>>,
     b: Signal<Local, Bits<16>>,
+    front_m: Signal<Local, Bits<16>>,
+    /// `{b, b}`, and `a·{b, b}` (`k <= 8`) or `a·b` (`k > 8`).
+    bb: Signal<Local, Bits<16>>,
+    ab: Signal<Local, Bits<32>>,
     /// `a·b·(2^k + 1)`.
     product: Signal<Local, Bits<64>>,
     sum: Signal<Local, Bits<64>>,
@@ -69,6 +73,9 @@ impl Over {
             result: Default::default(),
             a: Default::default(),
             b: Default::default(),
+            front_m: Default::default(),
+            bb: Default::default(),
+            ab: Default::default(),
             product: Default::default(),
             sum: Default::default(),
         }
@@ -80,17 +87,20 @@ impl Logic for Over {
     fn update(&mut self) {
         self.a.next = !self.front_alpha.val() & self.m.val();
         self.b.next = self.back.val() & self.m.val();
+        self.front_m.next = self.front.val() & self.m.val();
+        self.bb.next = (self.b.val() << self.k.val()) | self.b.val();
         if self.wide.val() {
-            self.product.next = (bit_cast::<64, 32>(self.a.val() * self.b.val()) << self.k.val())
-                + bit_cast::<64, 32>(self.a.val() * self.b.val());
+            self.ab.next = self.a.val() * self.b.val();
+            self.product.next = (bit_cast::<64, 32>(self.ab.val()) << self.k.val())
+                + bit_cast::<64, 32>(self.ab.val());
         } else {
-            self.product.next =
-                bit_cast::<64, 32>(self.a.val() * ((self.b.val() << self.k.val()) | self.b.val()));
+            self.ab.next = self.a.val() * self.bb.val();
+            self.product.next = bit_cast::<64, 32>(self.ab.val());
         }
         if !self.enabled.val() {
             self.product.next = 0.into();
         }
-        self.sum.next = ((bit_cast::<64, 16>(self.front.val() & self.m.val())) << self.k2.val())
+        self.sum.next = (bit_cast::<64, 16>(self.front_m.val()) << self.k2.val())
             + self.half.val()
             + self.product.val();
         self.result.next = bit_cast::<16, 64>(self.sum.val() >> self.k2.val());

@@ -134,6 +134,7 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     /// a ray; the write flag and buffer beside them.
     s1_row: DFF<Bits<16>>,
     s1_plane: DFF<Bits<16>>,
+    s1_plane_segment: Signal<Local, Bits<16>>,
     s1_plane_offset: DFF<Bits<32>>,
     s1_ray: [DFF<Bits<16>>; P],
     s1_x: [DFF<Bits<16>>; P],
@@ -289,6 +290,7 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             buffer_r: Default::default(),
             s1_row: Default::default(),
             s1_plane: Default::default(),
+            s1_plane_segment: Default::default(),
             s1_plane_offset: Default::default(),
             s1_writing: Default::default(),
             s1_buffer: Default::default(),
@@ -428,6 +430,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.s1_row.d.next = self.v0.val() + self.period_r.q.val() + self.pos_y.data.val();
         self.s1_plane.d.next = self.plane_r.q.val();
         self.s1_plane_offset.d.next = self.plane_r.q.val() * self.plane_words.val();
+        self.s1_plane_segment.next = self.s1_plane.q.val() >> self.shift.val();
         self.s1_writing.d.next = self.writing_r.q.val();
         self.s1_buffer.d.next = self.buffer_r.q.val();
         self.s2_writing.d.next = self.s1_writing.q.val();
@@ -478,7 +481,7 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             self.lane_dsb[j].next =
                 (self.s1_ray[j].q.val() + self.s1_plane.q.val()) & self.mask.val();
             self.lane_write_address[j].next = self.s1_ray[j].q.val() * self.segments.val()
-                + bit_cast::<32, 16>(self.s1_plane.q.val() >> self.shift.val());
+                + bit_cast::<32, 16>(self.s1_plane_segment.val());
             self.s2_inside[j].d.next = self.lane_inside[j].val();
             self.s2_module[j].d.next = self.lane_module[j].val();
             self.s2_address[j].d.next = self.lane_address[j].val();

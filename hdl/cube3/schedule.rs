@@ -25,7 +25,6 @@ pub struct Schedule {
     pub write_buffer: Signal<Out, Bits<2>>,
     pub reading: Signal<Out, Bit>,
     pub ray: Signal<Out, Bits<16>>,
-    pub segment: Signal<Out, Bits<16>>,
     /// `ray·G + segment`, counted: the reads' 2-DSB address, from a
     /// register (the segments of a period are read in that order).
     pub read_address: Signal<Out, Bits<32>>,
@@ -77,7 +76,6 @@ impl Default for Schedule {
             write_buffer: Default::default(),
             reading: Default::default(),
             ray: Default::default(),
-            segment: Default::default(),
             read_address: Default::default(),
             cur_buffer: Default::default(),
             next_buffer: Default::default(),
@@ -200,7 +198,6 @@ impl Logic for Schedule {
         self.period_next.next = self.period_q.d.val();
         self.write_buffer.next = self.w_q.q.val();
         self.ray.next = self.ray_q.q.val();
-        self.segment.next = self.segment_q.q.val();
         self.read_address.next = self.address_q.q.val();
         self.cur_buffer.next = self.c_q.q.val();
         self.next_buffer.next = self.n_q.q.val();

@@ -205,7 +205,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     wire  [1:0] schedule$write_buffer;
     wire  schedule$reading;
     wire  [15:0] schedule$ray;
-    wire  [15:0] schedule$segment;
     wire  [31:0] schedule$read_address;
     wire  [1:0] schedule$cur_buffer;
     wire  [1:0] schedule$next_buffer;
@@ -490,6 +489,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] word$3;
     reg  [15:0] row_stride;
     reg  [31:0] row_entry;
+    reg  [15:0] s1_plane_segment;
     reg  lane_inside$0;
     reg  lane_inside$1;
     reg  lane_inside$2;
@@ -748,7 +748,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .write_buffer(schedule$write_buffer),
         .reading(schedule$reading),
         .ray(schedule$ray),
-        .segment(schedule$segment),
         .read_address(schedule$read_address),
         .cur_buffer(schedule$cur_buffer),
         .next_buffer(schedule$next_buffer),
@@ -1303,6 +1302,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         s1_row$d = v0 + period_r$q + pos_y$data;
         s1_plane$d = plane_r$q;
         s1_plane_offset$d = plane_r$q * plane_words;
+        s1_plane_segment = s1_plane$q >> shift;
         s1_writing$d = writing_r$q;
         s1_buffer$d = buffer_r$q;
         s2_writing$d = s1_writing$q;
@@ -1337,7 +1337,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_column$0 = s1_x$0$q >> shift;
         lane_address$0 = lane_column$0 * one + s1_row$q * row_words + s1_plane_offset$q;
         lane_dsb$0 = (s1_ray$0$q + s1_plane$q) & mask;
-        lane_write_address$0 = s1_ray$0$q * segments + 32'(s1_plane$q >> shift);
+        lane_write_address$0 = s1_ray$0$q * segments + 32'(s1_plane_segment);
         s2_inside$0$d = lane_inside$0;
         s2_module$0$d = lane_module$0;
         s2_address$0$d = lane_address$0;
@@ -1379,7 +1379,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_column$1 = s1_x$1$q >> shift;
         lane_address$1 = lane_column$1 * one + s1_row$q * row_words + s1_plane_offset$q;
         lane_dsb$1 = (s1_ray$1$q + s1_plane$q) & mask;
-        lane_write_address$1 = s1_ray$1$q * segments + 32'(s1_plane$q >> shift);
+        lane_write_address$1 = s1_ray$1$q * segments + 32'(s1_plane_segment);
         s2_inside$1$d = lane_inside$1;
         s2_module$1$d = lane_module$1;
         s2_address$1$d = lane_address$1;
@@ -1421,7 +1421,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_column$2 = s1_x$2$q >> shift;
         lane_address$2 = lane_column$2 * one + s1_row$q * row_words + s1_plane_offset$q;
         lane_dsb$2 = (s1_ray$2$q + s1_plane$q) & mask;
-        lane_write_address$2 = s1_ray$2$q * segments + 32'(s1_plane$q >> shift);
+        lane_write_address$2 = s1_ray$2$q * segments + 32'(s1_plane_segment);
         s2_inside$2$d = lane_inside$2;
         s2_module$2$d = lane_module$2;
         s2_address$2$d = lane_address$2;
@@ -1463,7 +1463,7 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_column$3 = s1_x$3$q >> shift;
         lane_address$3 = lane_column$3 * one + s1_row$q * row_words + s1_plane_offset$q;
         lane_dsb$3 = (s1_ray$3$q + s1_plane$q) & mask;
-        lane_write_address$3 = s1_ray$3$q * segments + 32'(s1_plane$q >> shift);
+        lane_write_address$3 = s1_ray$3$q * segments + 32'(s1_plane_segment);
         s2_inside$3$d = lane_inside$3;
         s2_module$3$d = lane_module$3;
         s2_address$3$d = lane_address$3;
@@ -4362,7 +4362,7 @@ module top$fetch$s2_writing(d,q,clock);
     end
           
 endmodule // top$fetch$s2_writing
-module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,period_next,write_buffer,reading,ray,segment,read_address,cur_buffer,next_buffer,host_write,host_address,host_data);
+module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,period_next,write_buffer,reading,ray,read_address,cur_buffer,next_buffer,host_write,host_address,host_data);
     
     // Module arguments
     input wire  clock;
@@ -4376,7 +4376,6 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,peri
     output reg  [1:0] write_buffer;
     output reg  reading;
     output reg  [15:0] ray;
-    output reg  [15:0] segment;
     output reg  [31:0] read_address;
     output reg  [1:0] cur_buffer;
     output reg  [1:0] next_buffer;
@@ -4622,7 +4621,6 @@ module top$fetch$schedule(clock,start,writing,plane,chunk,chunk_next,period,peri
         period_next = period_q$d;
         write_buffer = w_q$q;
         ray = ray_q$q;
-        segment = segment_q$q;
         read_address = address_q$q;
         cur_buffer = c_q$q;
         next_buffer = n_q$q;

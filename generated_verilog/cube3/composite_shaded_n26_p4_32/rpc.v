@@ -1141,6 +1141,9 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1149,16 +1152,20 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1187,6 +1194,9 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1195,16 +1205,20 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1233,6 +1247,9 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1241,16 +1258,20 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1279,6 +1300,9 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1287,16 +1311,20 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1581,6 +1609,9 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1589,16 +1620,20 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1627,6 +1662,9 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1635,16 +1673,20 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1673,6 +1715,9 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1681,16 +1726,20 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1719,6 +1768,9 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1727,16 +1779,20 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2021,6 +2077,9 @@ module top$pipeline$rpc$nodes$2$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2029,16 +2088,20 @@ module top$pipeline$rpc$nodes$2$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2067,6 +2130,9 @@ module top$pipeline$rpc$nodes$2$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2075,16 +2141,20 @@ module top$pipeline$rpc$nodes$2$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2113,6 +2183,9 @@ module top$pipeline$rpc$nodes$2$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2121,16 +2194,20 @@ module top$pipeline$rpc$nodes$2$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2159,6 +2236,9 @@ module top$pipeline$rpc$nodes$2$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2167,16 +2247,20 @@ module top$pipeline$rpc$nodes$2$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2461,6 +2545,9 @@ module top$pipeline$rpc$nodes$3$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2469,16 +2556,20 @@ module top$pipeline$rpc$nodes$3$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2507,6 +2598,9 @@ module top$pipeline$rpc$nodes$3$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2515,16 +2609,20 @@ module top$pipeline$rpc$nodes$3$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2553,6 +2651,9 @@ module top$pipeline$rpc$nodes$3$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2561,16 +2662,20 @@ module top$pipeline$rpc$nodes$3$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -2599,6 +2704,9 @@ module top$pipeline$rpc$nodes$3$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -2607,16 +2715,20 @@ module top$pipeline$rpc$nodes$3$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;

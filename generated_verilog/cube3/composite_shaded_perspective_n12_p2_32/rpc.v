@@ -705,6 +705,9 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -713,16 +716,20 @@ module top$pipeline$rpc$nodes$0$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -751,6 +758,9 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -759,16 +769,20 @@ module top$pipeline$rpc$nodes$0$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -797,6 +811,9 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -805,16 +822,20 @@ module top$pipeline$rpc$nodes$0$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -843,6 +864,9 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -851,16 +875,20 @@ module top$pipeline$rpc$nodes$0$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1145,6 +1173,9 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1153,16 +1184,20 @@ module top$pipeline$rpc$nodes$1$ch_a(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1191,6 +1226,9 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1199,16 +1237,20 @@ module top$pipeline$rpc$nodes$1$ch_b(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1237,6 +1279,9 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1245,16 +1290,20 @@ module top$pipeline$rpc$nodes$1$ch_g(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
@@ -1283,6 +1332,9 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     // Local signals
     reg  [15:0] a;
     reg  [15:0] b;
+    reg  [15:0] front_m;
+    reg  [15:0] bb;
+    reg  [31:0] ab;
     reg  [63:0] product;
     reg  [63:0] sum;
     
@@ -1291,16 +1343,20 @@ module top$pipeline$rpc$nodes$1$ch_r(front,back,front_alpha,result);
     always @(*) begin
         a = ~front_alpha & m;
         b = back & m;
+        front_m = front & m;
+        bb = (b << k) | b;
         if (wide) begin
-            product = (64'(a * b) << k) + 64'(a * b);
+            ab = a * b;
+            product = (64'(ab) << k) + 64'(ab);
         end
         else begin
-            product = 64'(a * ((b << k) | b));
+            ab = a * bb;
+            product = 64'(ab);
         end
         if (~enabled) begin
             product = 'h0;
         end
-        sum = ((64'(front & m)) << k2) + half + product;
+        sum = (64'(front_m) << k2) + half + product;
         result_pass = 16'(sum >> k2);
         if (|(sum >> k3)) begin
             result_pass = m;
