@@ -22,7 +22,7 @@ pub mod shader;
 
 pub use frame::{BasePlane, Frame, Stats};
 
-use compositor::{composite, gather, reset_value};
+use compositor::{composite, gather, gather_row, reset_value};
 use gradient::central_difference;
 use plan::{Face, Order, Plan, Rays, Sweep};
 use rayon::prelude::*;
@@ -113,6 +113,21 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                     .fold(EMPTY, |a, &s| a.union(s));
                 let busy = near.lo.saturating_sub(1)..near.hi.saturating_add(1);
                 let inner_row = !last && y > 0 && y + 1 < ny;
+                // A parallel view's row gathers at once inside the slice's
+                // border (`gather_row`), reset where the previous slice is
+                // all reset around the cell; the cells hold what they
+                // gathered until the loop below overwrites them.
+                let whole_row = match parallel {
+                    Some((dx, dy)) if !first && y > 0 && y + 1 < ny && nx > 2 => {
+                        let (lo, hi) = (busy.start.max(1), busy.end.min(nx - 1));
+                        row.fill(reset);
+                        if lo < hi {
+                            gather_row(&prev, nx, y, (lo, hi), dx, dy, frac, &mut row[lo..hi]);
+                        }
+                        true
+                    }
+                    _ => false,
+                };
                 *span = EMPTY;
                 st.voxels += nx as u64;
                 let row_at = y * strides[1] + z * strides[2];
@@ -120,6 +135,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                     let at = row_at + x * strides[0];
                     let v = voxels[at] as u32;
                     let inner = inner_row && x > 0 && x + 1 < nx;
+                    let gathered = whole_row && x > 0 && x + 1 < nx;
                     if inner && identity[v as usize] {
                         // No ER inside the slice, and the voxel's composite
                         // is the identity: the cell is what it gathers.
@@ -127,19 +143,23 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                             *cell = reset;
                             continue;
                         }
-                        let (dx, dy) = match parallel {
-                            Some(d) => d,
-                            None => {
-                                let c = sweep.control(x, y, z);
-                                (c.dx, c.dy)
-                            }
-                        };
-                        *cell = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
+                        if !gathered {
+                            let (dx, dy) = match parallel {
+                                Some(d) => d,
+                                None => {
+                                    let c = sweep.control(x, y, z);
+                                    (c.dx, c.dy)
+                                }
+                            };
+                            *cell = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
+                        }
                         st.terminated += opaque_front(*cell) as u64;
                     } else {
                         let c = sweep.control(x, y, z);
                         let acc = if first {
                             reset
+                        } else if gathered {
+                            *cell
                         } else {
                             gather(&prev, nx, ny, x, y, c.dx, c.dy, frac, reset)
                         };
