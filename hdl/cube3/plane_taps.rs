@@ -1,6 +1,6 @@
 //! One lane's sample-plane history for Cube-3's ABC gradients (§4; §5,
 //! Fig. 12: the above, current and below sample planes): the lane's sample
-//! stream delayed through a chain of [`DelayLine`]s, with a tap at every
+//! stream delayed through a chain of delay lines, with a tap at every
 //! delay `a·T + b·G + c` for `a, b, c` in `0..3`.
 //!
 //! `G` is the clocks of a ray (its segments) and `T` the clocks from a
@@ -12,8 +12,11 @@
 //! triple `c = 0, 1, 2` is a register pair; between triples the lines are
 //! `G - 2` clocks long, and `T - 2G - 2` from one scanline to the next, so
 //! the lane stores two sample planes and two rays beside its registers.
+//! Each line ends in a register ([`RegisteredLine`]: a line one clock
+//! shorter and a flip-flop), so a tap never reaches the estimators'
+//! multipliers straight from a memory's read port.
 
-use crate::common::delay_line::DelayLine;
+use crate::common::registered_line::RegisteredLine;
 use rust_hdl::prelude::*;
 
 /// The chain's delay lines, in clocks, for scanlines every `scanline`
@@ -72,7 +75,7 @@ pub struct PlaneTaps<const H: usize> {
     head: [Signal<Local, Bits<32>>; 9],
     one: [DFF<Bits<32>>; 9],
     two: [DFF<Bits<32>>; 9],
-    lines: [DelayLine<Bits<32>, H>; 8],
+    lines: [RegisteredLine<Bits<32>, H>; 8],
     /// Which lines run from scanline to scanline.
     long: [Constant<Bit>; 8],
 }
@@ -134,7 +137,7 @@ impl<const H: usize> PlaneTaps<H> {
             head: Default::default(),
             one: Default::default(),
             two: Default::default(),
-            lines: lengths.map(|l| DelayLine::new(l, &[], (u32::MAX as u64).to_bits())),
+            lines: lengths.map(|l| RegisteredLine::new(l, &[], (u32::MAX as u64).to_bits())),
             long: std::array::from_fn(|t| Constant::new(t % 3 == 2)),
         })
     }

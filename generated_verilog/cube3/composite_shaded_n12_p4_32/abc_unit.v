@@ -14179,8 +14179,74 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$0
+module top$pipeline$abc$lanes$0$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14207,7 +14273,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$0$ram ram(
+    top$pipeline$abc$lanes$0$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -14216,17 +14282,17 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$one one(
+    top$pipeline$abc$lanes$0$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -14267,8 +14333,8 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$0
-module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line
+module top$pipeline$abc$lanes$0$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -14284,8 +14350,8 @@ module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$one
-module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$one
+module top$pipeline$abc$lanes$0$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14301,8 +14367,8 @@ module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$ptr
-module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ptr
+module top$pipeline$abc$lanes$0$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -14315,7 +14381,7 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -14326,8 +14392,8 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$0$ram
-module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ram
+module top$pipeline$abc$lanes$0$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14343,7 +14409,41 @@ module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$line_last
+module top$pipeline$abc$lanes$0$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$out
 module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14354,8 +14454,74 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$1
+module top$pipeline$abc$lanes$0$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14382,7 +14548,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$1$ram ram(
+    top$pipeline$abc$lanes$0$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -14391,17 +14557,17 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$one one(
+    top$pipeline$abc$lanes$0$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -14442,8 +14608,8 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$1
-module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line
+module top$pipeline$abc$lanes$0$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -14459,8 +14625,8 @@ module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$one
-module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$one
+module top$pipeline$abc$lanes$0$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14476,8 +14642,8 @@ module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$ptr
-module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ptr
+module top$pipeline$abc$lanes$0$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -14490,7 +14656,7 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -14501,8 +14667,8 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$1$ram
-module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ram
+module top$pipeline$abc$lanes$0$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14518,7 +14684,41 @@ module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$line_last
+module top$pipeline$abc$lanes$0$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$out
 module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14529,8 +14729,74 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$2
+module top$pipeline$abc$lanes$0$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14557,7 +14823,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$2$ram ram(
+    top$pipeline$abc$lanes$0$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -14566,17 +14832,17 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$one one(
+    top$pipeline$abc$lanes$0$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -14617,8 +14883,8 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$2
-module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line
+module top$pipeline$abc$lanes$0$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -14634,8 +14900,8 @@ module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$one
-module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$one
+module top$pipeline$abc$lanes$0$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14651,8 +14917,8 @@ module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$ptr
-module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ptr
+module top$pipeline$abc$lanes$0$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -14664,7 +14930,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -14675,8 +14941,8 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$2$ram
-module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ram
+module top$pipeline$abc$lanes$0$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14692,7 +14958,41 @@ module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$line_last
+module top$pipeline$abc$lanes$0$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$out
 module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14703,8 +15003,74 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$3
+module top$pipeline$abc$lanes$0$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14731,7 +15097,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$3$ram ram(
+    top$pipeline$abc$lanes$0$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -14740,17 +15106,17 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$one one(
+    top$pipeline$abc$lanes$0$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -14791,8 +15157,8 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$3
-module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line
+module top$pipeline$abc$lanes$0$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -14808,8 +15174,8 @@ module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$one
-module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$one
+module top$pipeline$abc$lanes$0$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14825,8 +15191,8 @@ module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$ptr
-module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ptr
+module top$pipeline$abc$lanes$0$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -14839,7 +15205,7 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -14850,8 +15216,8 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$3$ram
-module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ram
+module top$pipeline$abc$lanes$0$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -14867,7 +15233,41 @@ module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$line_last
+module top$pipeline$abc$lanes$0$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$out
 module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -14878,8 +15278,74 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$4
+module top$pipeline$abc$lanes$0$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -14906,7 +15372,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$4$ram ram(
+    top$pipeline$abc$lanes$0$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -14915,17 +15381,17 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$one one(
+    top$pipeline$abc$lanes$0$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -14966,8 +15432,8 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$4
-module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line
+module top$pipeline$abc$lanes$0$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -14983,8 +15449,8 @@ module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$one
-module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$one
+module top$pipeline$abc$lanes$0$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15000,8 +15466,8 @@ module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$ptr
-module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ptr
+module top$pipeline$abc$lanes$0$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -15014,7 +15480,7 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -15025,8 +15491,8 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$4$ram
-module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ram
+module top$pipeline$abc$lanes$0$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15042,7 +15508,41 @@ module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$line_last
+module top$pipeline$abc$lanes$0$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$out
 module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15053,8 +15553,74 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$5
+module top$pipeline$abc$lanes$0$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15081,7 +15647,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$5$ram ram(
+    top$pipeline$abc$lanes$0$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -15090,17 +15656,17 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$one one(
+    top$pipeline$abc$lanes$0$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -15141,8 +15707,8 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$5
-module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line
+module top$pipeline$abc$lanes$0$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -15158,8 +15724,8 @@ module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$one
-module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$one
+module top$pipeline$abc$lanes$0$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15175,8 +15741,8 @@ module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$ptr
-module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ptr
+module top$pipeline$abc$lanes$0$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -15188,7 +15754,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -15199,8 +15765,8 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$5$ram
-module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ram
+module top$pipeline$abc$lanes$0$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15216,7 +15782,41 @@ module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$line_last
+module top$pipeline$abc$lanes$0$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$out
 module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -15227,172 +15827,63 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$0$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$0$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$0$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$0$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$0$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$0$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$6
-module top$pipeline$abc$lanes$0$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$one
-module top$pipeline$abc$lanes$0$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$ptr
-module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$0$lines$6$ram
-module top$pipeline$abc$lanes$0$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$rd_flipped
-module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$0$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -15403,7 +15894,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15430,7 +15921,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$7$ram ram(
+    top$pipeline$abc$lanes$0$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -15439,17 +15930,17 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$one one(
+    top$pipeline$abc$lanes$0$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -15490,8 +15981,8 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$7
-module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line
+module top$pipeline$abc$lanes$0$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -15507,8 +15998,8 @@ module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$one
-module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$one
+module top$pipeline$abc$lanes$0$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15524,8 +16015,8 @@ module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$ptr
-module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ptr
+module top$pipeline$abc$lanes$0$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -15538,7 +16029,7 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -15549,8 +16040,8 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$7$ram
-module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ram
+module top$pipeline$abc$lanes$0$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -15566,7 +16057,316 @@ module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$line_last
+module top$pipeline$abc$lanes$0$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$out
+module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7
+module top$pipeline$abc$lanes$0$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7$line
+module top$pipeline$abc$lanes$0$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$one
+module top$pipeline$abc$lanes$0$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ptr
+module top$pipeline$abc$lanes$0$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ram
+module top$pipeline$abc$lanes$0$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line_last
+module top$pipeline$abc$lanes$0$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$out
 module top$pipeline$abc$lanes$0$one$0(d,q,clock);
     
     // Module arguments
@@ -16316,8 +17116,74 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$0
+module top$pipeline$abc$lanes$1$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16344,7 +17210,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$0$ram ram(
+    top$pipeline$abc$lanes$1$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16353,17 +17219,17 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$one one(
+    top$pipeline$abc$lanes$1$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16404,8 +17270,8 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$0
-module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line
+module top$pipeline$abc$lanes$1$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16421,8 +17287,8 @@ module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$one
-module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$one
+module top$pipeline$abc$lanes$1$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16438,8 +17304,8 @@ module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$ptr
-module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ptr
+module top$pipeline$abc$lanes$1$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16452,7 +17318,7 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16463,8 +17329,8 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$0$ram
-module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ram
+module top$pipeline$abc$lanes$1$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16480,7 +17346,41 @@ module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$line_last
+module top$pipeline$abc$lanes$1$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$out
 module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16491,8 +17391,74 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$1
+module top$pipeline$abc$lanes$1$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16519,7 +17485,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$1$ram ram(
+    top$pipeline$abc$lanes$1$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16528,17 +17494,17 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$one one(
+    top$pipeline$abc$lanes$1$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16579,8 +17545,8 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$1
-module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line
+module top$pipeline$abc$lanes$1$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16596,8 +17562,8 @@ module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$one
-module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$one
+module top$pipeline$abc$lanes$1$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16613,8 +17579,8 @@ module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$ptr
-module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ptr
+module top$pipeline$abc$lanes$1$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16627,7 +17593,7 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16638,8 +17604,8 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$1$ram
-module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ram
+module top$pipeline$abc$lanes$1$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16655,7 +17621,41 @@ module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$line_last
+module top$pipeline$abc$lanes$1$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$out
 module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16666,8 +17666,74 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$2
+module top$pipeline$abc$lanes$1$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16694,7 +17760,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$2$ram ram(
+    top$pipeline$abc$lanes$1$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16703,17 +17769,17 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$one one(
+    top$pipeline$abc$lanes$1$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16754,8 +17820,8 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$2
-module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line
+module top$pipeline$abc$lanes$1$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16771,8 +17837,8 @@ module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$one
-module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$one
+module top$pipeline$abc$lanes$1$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16788,8 +17854,8 @@ module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$ptr
-module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ptr
+module top$pipeline$abc$lanes$1$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16801,7 +17867,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -16812,8 +17878,8 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$2$ram
-module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ram
+module top$pipeline$abc$lanes$1$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16829,7 +17895,41 @@ module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$line_last
+module top$pipeline$abc$lanes$1$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$out
 module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16840,8 +17940,74 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$3
+module top$pipeline$abc$lanes$1$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16868,7 +18034,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$3$ram ram(
+    top$pipeline$abc$lanes$1$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16877,17 +18043,17 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$one one(
+    top$pipeline$abc$lanes$1$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16928,8 +18094,8 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$3
-module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line
+module top$pipeline$abc$lanes$1$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16945,8 +18111,8 @@ module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$one
-module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$one
+module top$pipeline$abc$lanes$1$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16962,8 +18128,8 @@ module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$ptr
-module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ptr
+module top$pipeline$abc$lanes$1$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16976,7 +18142,7 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16987,8 +18153,8 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$3$ram
-module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ram
+module top$pipeline$abc$lanes$1$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17004,7 +18170,41 @@ module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$line_last
+module top$pipeline$abc$lanes$1$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$out
 module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17015,8 +18215,74 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$4
+module top$pipeline$abc$lanes$1$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -17043,7 +18309,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$4$ram ram(
+    top$pipeline$abc$lanes$1$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -17052,17 +18318,17 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$one one(
+    top$pipeline$abc$lanes$1$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -17103,8 +18369,8 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$4
-module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line
+module top$pipeline$abc$lanes$1$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -17120,8 +18386,8 @@ module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$one
-module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$one
+module top$pipeline$abc$lanes$1$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17137,8 +18403,8 @@ module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$ptr
-module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ptr
+module top$pipeline$abc$lanes$1$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -17151,7 +18417,7 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -17162,8 +18428,8 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$4$ram
-module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ram
+module top$pipeline$abc$lanes$1$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17179,7 +18445,41 @@ module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$line_last
+module top$pipeline$abc$lanes$1$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$out
 module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17190,8 +18490,74 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$5
+module top$pipeline$abc$lanes$1$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -17218,7 +18584,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$5$ram ram(
+    top$pipeline$abc$lanes$1$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -17227,17 +18593,17 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$one one(
+    top$pipeline$abc$lanes$1$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -17278,8 +18644,8 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$5
-module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line
+module top$pipeline$abc$lanes$1$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -17295,8 +18661,8 @@ module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$one
-module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$one
+module top$pipeline$abc$lanes$1$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17312,8 +18678,8 @@ module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$ptr
-module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ptr
+module top$pipeline$abc$lanes$1$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -17325,7 +18691,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -17336,8 +18702,8 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$5$ram
-module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ram
+module top$pipeline$abc$lanes$1$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17353,7 +18719,41 @@ module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$line_last
+module top$pipeline$abc$lanes$1$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$out
 module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -17364,172 +18764,63 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$1$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$1$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$1$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$1$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$1$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$1$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$6
-module top$pipeline$abc$lanes$1$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$one
-module top$pipeline$abc$lanes$1$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$ptr
-module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$1$lines$6$ram
-module top$pipeline$abc$lanes$1$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$rd_flipped
-module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$1$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -17540,7 +18831,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -17567,7 +18858,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$7$ram ram(
+    top$pipeline$abc$lanes$1$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -17576,17 +18867,17 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$one one(
+    top$pipeline$abc$lanes$1$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -17627,8 +18918,8 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$7
-module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line
+module top$pipeline$abc$lanes$1$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -17644,8 +18935,8 @@ module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$one
-module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$one
+module top$pipeline$abc$lanes$1$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17661,8 +18952,8 @@ module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$ptr
-module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ptr
+module top$pipeline$abc$lanes$1$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -17675,7 +18966,7 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -17686,8 +18977,8 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$7$ram
-module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ram
+module top$pipeline$abc$lanes$1$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17703,7 +18994,316 @@ module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$line_last
+module top$pipeline$abc$lanes$1$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$out
+module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7
+module top$pipeline$abc$lanes$1$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7$line
+module top$pipeline$abc$lanes$1$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$one
+module top$pipeline$abc$lanes$1$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ptr
+module top$pipeline$abc$lanes$1$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ram
+module top$pipeline$abc$lanes$1$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line_last
+module top$pipeline$abc$lanes$1$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$out
 module top$pipeline$abc$lanes$1$one$0(d,q,clock);
     
     // Module arguments
@@ -18453,8 +20053,74 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$0
+module top$pipeline$abc$lanes$2$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18481,7 +20147,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$0$ram ram(
+    top$pipeline$abc$lanes$2$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18490,17 +20156,17 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$0$one one(
+    top$pipeline$abc$lanes$2$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18541,8 +20207,8 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$0
-module top$pipeline$abc$lanes$2$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line
+module top$pipeline$abc$lanes$2$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18558,8 +20224,8 @@ module top$pipeline$abc$lanes$2$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$one
-module top$pipeline$abc$lanes$2$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$one
+module top$pipeline$abc$lanes$2$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18575,8 +20241,8 @@ module top$pipeline$abc$lanes$2$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$ptr
-module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$ptr
+module top$pipeline$abc$lanes$2$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18589,7 +20255,7 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18600,8 +20266,8 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$0$ram
-module top$pipeline$abc$lanes$2$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$ram
+module top$pipeline$abc$lanes$2$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18617,7 +20283,41 @@ module top$pipeline$abc$lanes$2$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$0$line_last
+module top$pipeline$abc$lanes$2$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$0$out
 module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18628,8 +20328,74 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$1
+module top$pipeline$abc$lanes$2$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18656,7 +20422,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$1$ram ram(
+    top$pipeline$abc$lanes$2$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18665,17 +20431,17 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$1$one one(
+    top$pipeline$abc$lanes$2$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18716,8 +20482,8 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$1
-module top$pipeline$abc$lanes$2$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line
+module top$pipeline$abc$lanes$2$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18733,8 +20499,8 @@ module top$pipeline$abc$lanes$2$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$one
-module top$pipeline$abc$lanes$2$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$one
+module top$pipeline$abc$lanes$2$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18750,8 +20516,8 @@ module top$pipeline$abc$lanes$2$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$ptr
-module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$ptr
+module top$pipeline$abc$lanes$2$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18764,7 +20530,7 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18775,8 +20541,8 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$1$ram
-module top$pipeline$abc$lanes$2$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$ram
+module top$pipeline$abc$lanes$2$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18792,7 +20558,41 @@ module top$pipeline$abc$lanes$2$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$1$line_last
+module top$pipeline$abc$lanes$2$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$1$out
 module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18803,8 +20603,74 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$2
+module top$pipeline$abc$lanes$2$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18831,7 +20697,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$2$ram ram(
+    top$pipeline$abc$lanes$2$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18840,17 +20706,17 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$2$one one(
+    top$pipeline$abc$lanes$2$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18891,8 +20757,8 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$2
-module top$pipeline$abc$lanes$2$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line
+module top$pipeline$abc$lanes$2$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18908,8 +20774,8 @@ module top$pipeline$abc$lanes$2$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$one
-module top$pipeline$abc$lanes$2$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$one
+module top$pipeline$abc$lanes$2$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18925,8 +20791,8 @@ module top$pipeline$abc$lanes$2$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$ptr
-module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$ptr
+module top$pipeline$abc$lanes$2$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18938,7 +20804,7 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -18949,8 +20815,8 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$2$ram
-module top$pipeline$abc$lanes$2$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$ram
+module top$pipeline$abc$lanes$2$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18966,7 +20832,41 @@ module top$pipeline$abc$lanes$2$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$2$line_last
+module top$pipeline$abc$lanes$2$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$2$out
 module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18977,8 +20877,74 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$3
+module top$pipeline$abc$lanes$2$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19005,7 +20971,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$3$ram ram(
+    top$pipeline$abc$lanes$2$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -19014,17 +20980,17 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$3$one one(
+    top$pipeline$abc$lanes$2$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -19065,8 +21031,8 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$3
-module top$pipeline$abc$lanes$2$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line
+module top$pipeline$abc$lanes$2$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19082,8 +21048,8 @@ module top$pipeline$abc$lanes$2$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$one
-module top$pipeline$abc$lanes$2$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$one
+module top$pipeline$abc$lanes$2$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19099,8 +21065,8 @@ module top$pipeline$abc$lanes$2$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$ptr
-module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$ptr
+module top$pipeline$abc$lanes$2$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19113,7 +21079,7 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -19124,8 +21090,8 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$3$ram
-module top$pipeline$abc$lanes$2$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$ram
+module top$pipeline$abc$lanes$2$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19141,7 +21107,41 @@ module top$pipeline$abc$lanes$2$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$3$line_last
+module top$pipeline$abc$lanes$2$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$3$out
 module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19152,8 +21152,74 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$4
+module top$pipeline$abc$lanes$2$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19180,7 +21246,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$4$ram ram(
+    top$pipeline$abc$lanes$2$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -19189,17 +21255,17 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$4$one one(
+    top$pipeline$abc$lanes$2$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -19240,8 +21306,8 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$4
-module top$pipeline$abc$lanes$2$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line
+module top$pipeline$abc$lanes$2$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19257,8 +21323,8 @@ module top$pipeline$abc$lanes$2$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$one
-module top$pipeline$abc$lanes$2$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$one
+module top$pipeline$abc$lanes$2$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19274,8 +21340,8 @@ module top$pipeline$abc$lanes$2$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$ptr
-module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$ptr
+module top$pipeline$abc$lanes$2$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19288,7 +21354,7 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -19299,8 +21365,8 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$4$ram
-module top$pipeline$abc$lanes$2$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$ram
+module top$pipeline$abc$lanes$2$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19316,7 +21382,41 @@ module top$pipeline$abc$lanes$2$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$4$line_last
+module top$pipeline$abc$lanes$2$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$4$out
 module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19327,8 +21427,74 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$5
+module top$pipeline$abc$lanes$2$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19355,7 +21521,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$5$ram ram(
+    top$pipeline$abc$lanes$2$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -19364,17 +21530,17 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$5$one one(
+    top$pipeline$abc$lanes$2$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -19415,8 +21581,8 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$5
-module top$pipeline$abc$lanes$2$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line
+module top$pipeline$abc$lanes$2$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19432,8 +21598,8 @@ module top$pipeline$abc$lanes$2$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$one
-module top$pipeline$abc$lanes$2$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$one
+module top$pipeline$abc$lanes$2$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19449,8 +21615,8 @@ module top$pipeline$abc$lanes$2$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$ptr
-module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$ptr
+module top$pipeline$abc$lanes$2$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19462,7 +21628,7 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -19473,8 +21639,8 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$5$ram
-module top$pipeline$abc$lanes$2$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$ram
+module top$pipeline$abc$lanes$2$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19490,7 +21656,41 @@ module top$pipeline$abc$lanes$2$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$5$line_last
+module top$pipeline$abc$lanes$2$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$5$out
 module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19501,172 +21701,63 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$2$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$2$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$2$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$2$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$2$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$2$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$6
-module top$pipeline$abc$lanes$2$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$one
-module top$pipeline$abc$lanes$2$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$ptr
-module top$pipeline$abc$lanes$2$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$2$lines$6$ram
-module top$pipeline$abc$lanes$2$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$rd_flipped
-module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$2$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -19677,7 +21768,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19704,7 +21795,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$7$ram ram(
+    top$pipeline$abc$lanes$2$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -19713,17 +21804,17 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$7$one one(
+    top$pipeline$abc$lanes$2$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -19764,8 +21855,8 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$7
-module top$pipeline$abc$lanes$2$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line
+module top$pipeline$abc$lanes$2$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19781,8 +21872,8 @@ module top$pipeline$abc$lanes$2$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$one
-module top$pipeline$abc$lanes$2$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$one
+module top$pipeline$abc$lanes$2$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19798,8 +21889,8 @@ module top$pipeline$abc$lanes$2$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$ptr
-module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$ptr
+module top$pipeline$abc$lanes$2$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19812,7 +21903,7 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -19823,8 +21914,8 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$7$ram
-module top$pipeline$abc$lanes$2$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$ram
+module top$pipeline$abc$lanes$2$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19840,7 +21931,316 @@ module top$pipeline$abc$lanes$2$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$6$line_last
+module top$pipeline$abc$lanes$2$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$6$out
+module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$7
+module top$pipeline$abc$lanes$2$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$7$line
+module top$pipeline$abc$lanes$2$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$one
+module top$pipeline$abc$lanes$2$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$ptr
+module top$pipeline$abc$lanes$2$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$ram
+module top$pipeline$abc$lanes$2$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line_last
+module top$pipeline$abc$lanes$2$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$out
 module top$pipeline$abc$lanes$2$one$0(d,q,clock);
     
     // Module arguments
@@ -20590,8 +22990,74 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$0
+module top$pipeline$abc$lanes$3$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20618,7 +23084,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$0$ram ram(
+    top$pipeline$abc$lanes$3$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20627,17 +23093,17 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$0$one one(
+    top$pipeline$abc$lanes$3$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20678,8 +23144,8 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$0
-module top$pipeline$abc$lanes$3$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line
+module top$pipeline$abc$lanes$3$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20695,8 +23161,8 @@ module top$pipeline$abc$lanes$3$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$one
-module top$pipeline$abc$lanes$3$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$one
+module top$pipeline$abc$lanes$3$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20712,8 +23178,8 @@ module top$pipeline$abc$lanes$3$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$ptr
-module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$ptr
+module top$pipeline$abc$lanes$3$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20726,7 +23192,7 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -20737,8 +23203,8 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$0$ram
-module top$pipeline$abc$lanes$3$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$ram
+module top$pipeline$abc$lanes$3$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20754,7 +23220,41 @@ module top$pipeline$abc$lanes$3$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$0$line_last
+module top$pipeline$abc$lanes$3$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$0$out
 module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20765,8 +23265,74 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$1
+module top$pipeline$abc$lanes$3$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20793,7 +23359,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$1$ram ram(
+    top$pipeline$abc$lanes$3$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20802,17 +23368,17 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$1$one one(
+    top$pipeline$abc$lanes$3$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20853,8 +23419,8 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$1
-module top$pipeline$abc$lanes$3$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line
+module top$pipeline$abc$lanes$3$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20870,8 +23436,8 @@ module top$pipeline$abc$lanes$3$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$one
-module top$pipeline$abc$lanes$3$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$one
+module top$pipeline$abc$lanes$3$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20887,8 +23453,8 @@ module top$pipeline$abc$lanes$3$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$ptr
-module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$ptr
+module top$pipeline$abc$lanes$3$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20901,7 +23467,7 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -20912,8 +23478,8 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$1$ram
-module top$pipeline$abc$lanes$3$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$ram
+module top$pipeline$abc$lanes$3$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20929,7 +23495,41 @@ module top$pipeline$abc$lanes$3$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$1$line_last
+module top$pipeline$abc$lanes$3$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$1$out
 module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20940,8 +23540,74 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$2
+module top$pipeline$abc$lanes$3$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20968,7 +23634,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$2$ram ram(
+    top$pipeline$abc$lanes$3$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20977,17 +23643,17 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$2$one one(
+    top$pipeline$abc$lanes$3$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21028,8 +23694,8 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$2
-module top$pipeline$abc$lanes$3$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line
+module top$pipeline$abc$lanes$3$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21045,8 +23711,8 @@ module top$pipeline$abc$lanes$3$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$one
-module top$pipeline$abc$lanes$3$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$one
+module top$pipeline$abc$lanes$3$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21062,8 +23728,8 @@ module top$pipeline$abc$lanes$3$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$ptr
-module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$ptr
+module top$pipeline$abc$lanes$3$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21075,7 +23741,7 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -21086,8 +23752,8 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$2$ram
-module top$pipeline$abc$lanes$3$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$ram
+module top$pipeline$abc$lanes$3$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21103,7 +23769,41 @@ module top$pipeline$abc$lanes$3$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$2$line_last
+module top$pipeline$abc$lanes$3$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$2$out
 module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21114,8 +23814,74 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$3
+module top$pipeline$abc$lanes$3$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21142,7 +23908,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$3$ram ram(
+    top$pipeline$abc$lanes$3$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21151,17 +23917,17 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$3$one one(
+    top$pipeline$abc$lanes$3$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21202,8 +23968,8 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$3
-module top$pipeline$abc$lanes$3$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line
+module top$pipeline$abc$lanes$3$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21219,8 +23985,8 @@ module top$pipeline$abc$lanes$3$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$one
-module top$pipeline$abc$lanes$3$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$one
+module top$pipeline$abc$lanes$3$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21236,8 +24002,8 @@ module top$pipeline$abc$lanes$3$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$ptr
-module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$ptr
+module top$pipeline$abc$lanes$3$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21250,7 +24016,7 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -21261,8 +24027,8 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$3$ram
-module top$pipeline$abc$lanes$3$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$ram
+module top$pipeline$abc$lanes$3$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21278,7 +24044,41 @@ module top$pipeline$abc$lanes$3$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$3$line_last
+module top$pipeline$abc$lanes$3$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$3$out
 module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21289,8 +24089,74 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$4
+module top$pipeline$abc$lanes$3$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21317,7 +24183,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$4$ram ram(
+    top$pipeline$abc$lanes$3$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21326,17 +24192,17 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$4$one one(
+    top$pipeline$abc$lanes$3$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21377,8 +24243,8 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$4
-module top$pipeline$abc$lanes$3$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line
+module top$pipeline$abc$lanes$3$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21394,8 +24260,8 @@ module top$pipeline$abc$lanes$3$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$one
-module top$pipeline$abc$lanes$3$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$one
+module top$pipeline$abc$lanes$3$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21411,8 +24277,8 @@ module top$pipeline$abc$lanes$3$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$ptr
-module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$ptr
+module top$pipeline$abc$lanes$3$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21425,7 +24291,7 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -21436,8 +24302,8 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$4$ram
-module top$pipeline$abc$lanes$3$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$ram
+module top$pipeline$abc$lanes$3$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21453,7 +24319,41 @@ module top$pipeline$abc$lanes$3$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$4$line_last
+module top$pipeline$abc$lanes$3$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$4$out
 module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21464,8 +24364,74 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$5
+module top$pipeline$abc$lanes$3$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21492,7 +24458,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$5$ram ram(
+    top$pipeline$abc$lanes$3$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21501,17 +24467,17 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$5$one one(
+    top$pipeline$abc$lanes$3$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21552,8 +24518,8 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$5
-module top$pipeline$abc$lanes$3$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line
+module top$pipeline$abc$lanes$3$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21569,8 +24535,8 @@ module top$pipeline$abc$lanes$3$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$one
-module top$pipeline$abc$lanes$3$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$one
+module top$pipeline$abc$lanes$3$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21586,8 +24552,8 @@ module top$pipeline$abc$lanes$3$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$ptr
-module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$ptr
+module top$pipeline$abc$lanes$3$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21599,7 +24565,7 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -21610,8 +24576,8 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$5$ram
-module top$pipeline$abc$lanes$3$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$ram
+module top$pipeline$abc$lanes$3$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21627,7 +24593,41 @@ module top$pipeline$abc$lanes$3$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$5$line_last
+module top$pipeline$abc$lanes$3$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$5$out
 module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21638,172 +24638,63 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$3$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$3$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$3$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$3$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$3$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$3$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$6
-module top$pipeline$abc$lanes$3$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$one
-module top$pipeline$abc$lanes$3$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$ptr
-module top$pipeline$abc$lanes$3$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$3$lines$6$ram
-module top$pipeline$abc$lanes$3$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$rd_flipped
-module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$3$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -21814,7 +24705,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21841,7 +24732,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$7$ram ram(
+    top$pipeline$abc$lanes$3$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21850,17 +24741,17 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$7$one one(
+    top$pipeline$abc$lanes$3$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21901,8 +24792,8 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$7
-module top$pipeline$abc$lanes$3$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line
+module top$pipeline$abc$lanes$3$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21918,8 +24809,8 @@ module top$pipeline$abc$lanes$3$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$one
-module top$pipeline$abc$lanes$3$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$one
+module top$pipeline$abc$lanes$3$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21935,8 +24826,8 @@ module top$pipeline$abc$lanes$3$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$ptr
-module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$ptr
+module top$pipeline$abc$lanes$3$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21949,7 +24840,7 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -21960,8 +24851,8 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$7$ram
-module top$pipeline$abc$lanes$3$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$ram
+module top$pipeline$abc$lanes$3$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21977,7 +24868,316 @@ module top$pipeline$abc$lanes$3$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$6$line_last
+module top$pipeline$abc$lanes$3$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$6$out
+module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$7
+module top$pipeline$abc$lanes$3$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$7$line
+module top$pipeline$abc$lanes$3$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$one
+module top$pipeline$abc$lanes$3$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$ptr
+module top$pipeline$abc$lanes$3$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$ram
+module top$pipeline$abc$lanes$3$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line_last
+module top$pipeline$abc$lanes$3$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$out
 module top$pipeline$abc$lanes$3$one$0(d,q,clock);
     
     // Module arguments

@@ -15895,8 +15895,74 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$0
+module top$pipeline$abc$lanes$0$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -15923,7 +15989,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$0$ram ram(
+    top$pipeline$abc$lanes$0$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -15932,17 +15998,17 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$one one(
+    top$pipeline$abc$lanes$0$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -15983,8 +16049,8 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$0
-module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line
+module top$pipeline$abc$lanes$0$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16000,8 +16066,8 @@ module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$one
-module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$one
+module top$pipeline$abc$lanes$0$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16017,8 +16083,8 @@ module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$ptr
-module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ptr
+module top$pipeline$abc$lanes$0$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16031,7 +16097,7 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16042,8 +16108,8 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$0$ram
-module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ram
+module top$pipeline$abc$lanes$0$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16059,7 +16125,41 @@ module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$line_last
+module top$pipeline$abc$lanes$0$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$out
 module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16070,8 +16170,74 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$1
+module top$pipeline$abc$lanes$0$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16098,7 +16264,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$1$ram ram(
+    top$pipeline$abc$lanes$0$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16107,17 +16273,17 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$one one(
+    top$pipeline$abc$lanes$0$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16158,8 +16324,8 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$1
-module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line
+module top$pipeline$abc$lanes$0$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16175,8 +16341,8 @@ module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$one
-module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$one
+module top$pipeline$abc$lanes$0$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16192,8 +16358,8 @@ module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$ptr
-module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ptr
+module top$pipeline$abc$lanes$0$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16206,7 +16372,7 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16217,8 +16383,8 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$1$ram
-module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ram
+module top$pipeline$abc$lanes$0$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16234,7 +16400,41 @@ module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$line_last
+module top$pipeline$abc$lanes$0$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$out
 module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16245,8 +16445,74 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$2
+module top$pipeline$abc$lanes$0$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16273,7 +16539,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$2$ram ram(
+    top$pipeline$abc$lanes$0$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16282,17 +16548,17 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$one one(
+    top$pipeline$abc$lanes$0$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16333,8 +16599,8 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$2
-module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line
+module top$pipeline$abc$lanes$0$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16350,8 +16616,8 @@ module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$one
-module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$one
+module top$pipeline$abc$lanes$0$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16367,8 +16633,8 @@ module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$ptr
-module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ptr
+module top$pipeline$abc$lanes$0$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16380,7 +16646,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -16391,8 +16657,8 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$2$ram
-module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ram
+module top$pipeline$abc$lanes$0$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16408,7 +16674,41 @@ module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$line_last
+module top$pipeline$abc$lanes$0$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$out
 module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16419,8 +16719,74 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$3
+module top$pipeline$abc$lanes$0$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16447,7 +16813,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$3$ram ram(
+    top$pipeline$abc$lanes$0$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16456,17 +16822,17 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$one one(
+    top$pipeline$abc$lanes$0$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16507,8 +16873,8 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$3
-module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line
+module top$pipeline$abc$lanes$0$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16524,8 +16890,8 @@ module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$one
-module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$one
+module top$pipeline$abc$lanes$0$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16541,8 +16907,8 @@ module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$ptr
-module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ptr
+module top$pipeline$abc$lanes$0$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16555,7 +16921,7 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16566,8 +16932,8 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$3$ram
-module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ram
+module top$pipeline$abc$lanes$0$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16583,7 +16949,41 @@ module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$line_last
+module top$pipeline$abc$lanes$0$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$out
 module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16594,8 +16994,74 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$4
+module top$pipeline$abc$lanes$0$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16622,7 +17088,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$4$ram ram(
+    top$pipeline$abc$lanes$0$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16631,17 +17097,17 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$one one(
+    top$pipeline$abc$lanes$0$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16682,8 +17148,8 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$4
-module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line
+module top$pipeline$abc$lanes$0$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16699,8 +17165,8 @@ module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$one
-module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$one
+module top$pipeline$abc$lanes$0$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16716,8 +17182,8 @@ module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$ptr
-module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ptr
+module top$pipeline$abc$lanes$0$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16730,7 +17196,7 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -16741,8 +17207,8 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$4$ram
-module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ram
+module top$pipeline$abc$lanes$0$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16758,7 +17224,41 @@ module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$line_last
+module top$pipeline$abc$lanes$0$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$out
 module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16769,8 +17269,74 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$5
+module top$pipeline$abc$lanes$0$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -16797,7 +17363,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$5$ram ram(
+    top$pipeline$abc$lanes$0$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -16806,17 +17372,17 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$one one(
+    top$pipeline$abc$lanes$0$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -16857,8 +17423,8 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$5
-module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line
+module top$pipeline$abc$lanes$0$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -16874,8 +17440,8 @@ module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$one
-module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$one
+module top$pipeline$abc$lanes$0$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16891,8 +17457,8 @@ module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$ptr
-module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ptr
+module top$pipeline$abc$lanes$0$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -16904,7 +17470,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -16915,8 +17481,8 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$5$ram
-module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ram
+module top$pipeline$abc$lanes$0$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -16932,7 +17498,41 @@ module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$line_last
+module top$pipeline$abc$lanes$0$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$out
 module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -16943,172 +17543,63 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$0$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$0$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$0$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$0$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$0$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$0$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$6
-module top$pipeline$abc$lanes$0$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$one
-module top$pipeline$abc$lanes$0$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$ptr
-module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$0$lines$6$ram
-module top$pipeline$abc$lanes$0$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$rd_flipped
-module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$0$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -17119,7 +17610,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -17146,7 +17637,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$7$ram ram(
+    top$pipeline$abc$lanes$0$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -17155,17 +17646,17 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$one one(
+    top$pipeline$abc$lanes$0$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -17206,8 +17697,8 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$7
-module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line
+module top$pipeline$abc$lanes$0$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -17223,8 +17714,8 @@ module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$one
-module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$one
+module top$pipeline$abc$lanes$0$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17240,8 +17731,8 @@ module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$ptr
-module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ptr
+module top$pipeline$abc$lanes$0$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -17254,7 +17745,7 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -17265,8 +17756,8 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$7$ram
-module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ram
+module top$pipeline$abc$lanes$0$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17282,7 +17773,316 @@ module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$line_last
+module top$pipeline$abc$lanes$0$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$out
+module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7
+module top$pipeline$abc$lanes$0$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7$line
+module top$pipeline$abc$lanes$0$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$one
+module top$pipeline$abc$lanes$0$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ptr
+module top$pipeline$abc$lanes$0$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ram
+module top$pipeline$abc$lanes$0$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line_last
+module top$pipeline$abc$lanes$0$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$out
 module top$pipeline$abc$lanes$0$one$0(d,q,clock);
     
     // Module arguments
@@ -18032,8 +18832,74 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$0
+module top$pipeline$abc$lanes$1$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18060,7 +18926,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$0$ram ram(
+    top$pipeline$abc$lanes$1$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18069,17 +18935,17 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$one one(
+    top$pipeline$abc$lanes$1$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18120,8 +18986,8 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$0
-module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line
+module top$pipeline$abc$lanes$1$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18137,8 +19003,8 @@ module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$one
-module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$one
+module top$pipeline$abc$lanes$1$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18154,8 +19020,8 @@ module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$ptr
-module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ptr
+module top$pipeline$abc$lanes$1$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18168,7 +19034,7 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18179,8 +19045,8 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$0$ram
-module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ram
+module top$pipeline$abc$lanes$1$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18196,7 +19062,41 @@ module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$line_last
+module top$pipeline$abc$lanes$1$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$out
 module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18207,8 +19107,74 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$1
+module top$pipeline$abc$lanes$1$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18235,7 +19201,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$1$ram ram(
+    top$pipeline$abc$lanes$1$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18244,17 +19210,17 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$one one(
+    top$pipeline$abc$lanes$1$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18295,8 +19261,8 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$1
-module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line
+module top$pipeline$abc$lanes$1$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18312,8 +19278,8 @@ module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$one
-module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$one
+module top$pipeline$abc$lanes$1$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18329,8 +19295,8 @@ module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$ptr
-module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ptr
+module top$pipeline$abc$lanes$1$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18343,7 +19309,7 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18354,8 +19320,8 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$1$ram
-module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ram
+module top$pipeline$abc$lanes$1$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18371,7 +19337,41 @@ module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$line_last
+module top$pipeline$abc$lanes$1$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$out
 module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18382,8 +19382,74 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$2
+module top$pipeline$abc$lanes$1$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18410,7 +19476,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$2$ram ram(
+    top$pipeline$abc$lanes$1$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18419,17 +19485,17 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$one one(
+    top$pipeline$abc$lanes$1$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18470,8 +19536,8 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$2
-module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line
+module top$pipeline$abc$lanes$1$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18487,8 +19553,8 @@ module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$one
-module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$one
+module top$pipeline$abc$lanes$1$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18504,8 +19570,8 @@ module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$ptr
-module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ptr
+module top$pipeline$abc$lanes$1$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18517,7 +19583,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -18528,8 +19594,8 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$2$ram
-module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ram
+module top$pipeline$abc$lanes$1$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18545,7 +19611,41 @@ module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$line_last
+module top$pipeline$abc$lanes$1$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$out
 module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18556,8 +19656,74 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$3
+module top$pipeline$abc$lanes$1$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18584,7 +19750,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$3$ram ram(
+    top$pipeline$abc$lanes$1$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18593,17 +19759,17 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$one one(
+    top$pipeline$abc$lanes$1$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18644,8 +19810,8 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$3
-module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line
+module top$pipeline$abc$lanes$1$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18661,8 +19827,8 @@ module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$one
-module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$one
+module top$pipeline$abc$lanes$1$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18678,8 +19844,8 @@ module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$ptr
-module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ptr
+module top$pipeline$abc$lanes$1$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18692,7 +19858,7 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18703,8 +19869,8 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$3$ram
-module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ram
+module top$pipeline$abc$lanes$1$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18720,7 +19886,41 @@ module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$line_last
+module top$pipeline$abc$lanes$1$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$out
 module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18731,8 +19931,74 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$4
+module top$pipeline$abc$lanes$1$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18759,7 +20025,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$4$ram ram(
+    top$pipeline$abc$lanes$1$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18768,17 +20034,17 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$one one(
+    top$pipeline$abc$lanes$1$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18819,8 +20085,8 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$4
-module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line
+module top$pipeline$abc$lanes$1$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -18836,8 +20102,8 @@ module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$one
-module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$one
+module top$pipeline$abc$lanes$1$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18853,8 +20119,8 @@ module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$ptr
-module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ptr
+module top$pipeline$abc$lanes$1$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -18867,7 +20133,7 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -18878,8 +20144,8 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$4$ram
-module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ram
+module top$pipeline$abc$lanes$1$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -18895,7 +20161,41 @@ module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$line_last
+module top$pipeline$abc$lanes$1$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$out
 module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -18906,8 +20206,74 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$5
+module top$pipeline$abc$lanes$1$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -18934,7 +20300,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$5$ram ram(
+    top$pipeline$abc$lanes$1$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -18943,17 +20309,17 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$one one(
+    top$pipeline$abc$lanes$1$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -18994,8 +20360,8 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$5
-module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line
+module top$pipeline$abc$lanes$1$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19011,8 +20377,8 @@ module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$one
-module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$one
+module top$pipeline$abc$lanes$1$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19028,8 +20394,8 @@ module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$ptr
-module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ptr
+module top$pipeline$abc$lanes$1$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19041,7 +20407,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -19052,8 +20418,8 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$5$ram
-module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ram
+module top$pipeline$abc$lanes$1$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19069,7 +20435,41 @@ module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$line_last
+module top$pipeline$abc$lanes$1$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$out
 module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -19080,172 +20480,63 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$1$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$1$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$1$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$1$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$1$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$1$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$6
-module top$pipeline$abc$lanes$1$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$one
-module top$pipeline$abc$lanes$1$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$ptr
-module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$1$lines$6$ram
-module top$pipeline$abc$lanes$1$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$rd_flipped
-module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$1$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -19256,7 +20547,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -19283,7 +20574,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$7$ram ram(
+    top$pipeline$abc$lanes$1$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -19292,17 +20583,17 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$one one(
+    top$pipeline$abc$lanes$1$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -19343,8 +20634,8 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$7
-module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line
+module top$pipeline$abc$lanes$1$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -19360,8 +20651,8 @@ module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$one
-module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$one
+module top$pipeline$abc$lanes$1$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19377,8 +20668,8 @@ module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$ptr
-module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ptr
+module top$pipeline$abc$lanes$1$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -19391,7 +20682,7 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -19402,8 +20693,8 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$7$ram
-module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ram
+module top$pipeline$abc$lanes$1$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -19419,7 +20710,316 @@ module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$line_last
+module top$pipeline$abc$lanes$1$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$out
+module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7
+module top$pipeline$abc$lanes$1$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7$line
+module top$pipeline$abc$lanes$1$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$one
+module top$pipeline$abc$lanes$1$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ptr
+module top$pipeline$abc$lanes$1$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ram
+module top$pipeline$abc$lanes$1$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line_last
+module top$pipeline$abc$lanes$1$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$out
 module top$pipeline$abc$lanes$1$one$0(d,q,clock);
     
     // Module arguments
@@ -20169,8 +21769,74 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$0
+module top$pipeline$abc$lanes$2$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20197,7 +21863,7 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$0$ram ram(
+    top$pipeline$abc$lanes$2$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20206,17 +21872,17 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$0$one one(
+    top$pipeline$abc$lanes$2$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20257,8 +21923,8 @@ module top$pipeline$abc$lanes$2$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$0
-module top$pipeline$abc$lanes$2$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line
+module top$pipeline$abc$lanes$2$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20274,8 +21940,8 @@ module top$pipeline$abc$lanes$2$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$one
-module top$pipeline$abc$lanes$2$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$one
+module top$pipeline$abc$lanes$2$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20291,8 +21957,8 @@ module top$pipeline$abc$lanes$2$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$ptr
-module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$ptr
+module top$pipeline$abc$lanes$2$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20305,7 +21971,7 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -20316,8 +21982,8 @@ module top$pipeline$abc$lanes$2$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$0$ram
-module top$pipeline$abc$lanes$2$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$ram
+module top$pipeline$abc$lanes$2$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20333,7 +21999,41 @@ module top$pipeline$abc$lanes$2$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$0$line_last
+module top$pipeline$abc$lanes$2$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$0$out
 module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20344,8 +22044,74 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$1
+module top$pipeline$abc$lanes$2$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20372,7 +22138,7 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$1$ram ram(
+    top$pipeline$abc$lanes$2$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20381,17 +22147,17 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$1$one one(
+    top$pipeline$abc$lanes$2$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20432,8 +22198,8 @@ module top$pipeline$abc$lanes$2$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$1
-module top$pipeline$abc$lanes$2$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line
+module top$pipeline$abc$lanes$2$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20449,8 +22215,8 @@ module top$pipeline$abc$lanes$2$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$one
-module top$pipeline$abc$lanes$2$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$one
+module top$pipeline$abc$lanes$2$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20466,8 +22232,8 @@ module top$pipeline$abc$lanes$2$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$ptr
-module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$ptr
+module top$pipeline$abc$lanes$2$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20480,7 +22246,7 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -20491,8 +22257,8 @@ module top$pipeline$abc$lanes$2$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$1$ram
-module top$pipeline$abc$lanes$2$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$ram
+module top$pipeline$abc$lanes$2$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20508,7 +22274,41 @@ module top$pipeline$abc$lanes$2$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$1$line_last
+module top$pipeline$abc$lanes$2$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$1$out
 module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20519,8 +22319,74 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$2
+module top$pipeline$abc$lanes$2$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20547,7 +22413,7 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$2$ram ram(
+    top$pipeline$abc$lanes$2$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20556,17 +22422,17 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$2$one one(
+    top$pipeline$abc$lanes$2$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20607,8 +22473,8 @@ module top$pipeline$abc$lanes$2$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$2
-module top$pipeline$abc$lanes$2$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line
+module top$pipeline$abc$lanes$2$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20624,8 +22490,8 @@ module top$pipeline$abc$lanes$2$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$one
-module top$pipeline$abc$lanes$2$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$one
+module top$pipeline$abc$lanes$2$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20641,8 +22507,8 @@ module top$pipeline$abc$lanes$2$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$ptr
-module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$ptr
+module top$pipeline$abc$lanes$2$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20654,7 +22520,7 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -20665,8 +22531,8 @@ module top$pipeline$abc$lanes$2$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$2$ram
-module top$pipeline$abc$lanes$2$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$ram
+module top$pipeline$abc$lanes$2$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20682,7 +22548,41 @@ module top$pipeline$abc$lanes$2$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$2$line_last
+module top$pipeline$abc$lanes$2$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$2$out
 module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20693,8 +22593,74 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$3
+module top$pipeline$abc$lanes$2$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20721,7 +22687,7 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$3$ram ram(
+    top$pipeline$abc$lanes$2$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20730,17 +22696,17 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$3$one one(
+    top$pipeline$abc$lanes$2$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20781,8 +22747,8 @@ module top$pipeline$abc$lanes$2$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$3
-module top$pipeline$abc$lanes$2$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line
+module top$pipeline$abc$lanes$2$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20798,8 +22764,8 @@ module top$pipeline$abc$lanes$2$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$one
-module top$pipeline$abc$lanes$2$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$one
+module top$pipeline$abc$lanes$2$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20815,8 +22781,8 @@ module top$pipeline$abc$lanes$2$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$ptr
-module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$ptr
+module top$pipeline$abc$lanes$2$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -20829,7 +22795,7 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -20840,8 +22806,8 @@ module top$pipeline$abc$lanes$2$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$3$ram
-module top$pipeline$abc$lanes$2$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$ram
+module top$pipeline$abc$lanes$2$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20857,7 +22823,41 @@ module top$pipeline$abc$lanes$2$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$3$line_last
+module top$pipeline$abc$lanes$2$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$3$out
 module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -20868,8 +22868,74 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$4
+module top$pipeline$abc$lanes$2$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -20896,7 +22962,7 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$4$ram ram(
+    top$pipeline$abc$lanes$2$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -20905,17 +22971,17 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$4$one one(
+    top$pipeline$abc$lanes$2$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -20956,8 +23022,8 @@ module top$pipeline$abc$lanes$2$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$4
-module top$pipeline$abc$lanes$2$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line
+module top$pipeline$abc$lanes$2$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -20973,8 +23039,8 @@ module top$pipeline$abc$lanes$2$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$one
-module top$pipeline$abc$lanes$2$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$one
+module top$pipeline$abc$lanes$2$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -20990,8 +23056,8 @@ module top$pipeline$abc$lanes$2$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$ptr
-module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$ptr
+module top$pipeline$abc$lanes$2$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21004,7 +23070,7 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -21015,8 +23081,8 @@ module top$pipeline$abc$lanes$2$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$4$ram
-module top$pipeline$abc$lanes$2$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$ram
+module top$pipeline$abc$lanes$2$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21032,7 +23098,41 @@ module top$pipeline$abc$lanes$2$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$4$line_last
+module top$pipeline$abc$lanes$2$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$4$out
 module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21043,8 +23143,74 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$5
+module top$pipeline$abc$lanes$2$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21071,7 +23237,7 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$5$ram ram(
+    top$pipeline$abc$lanes$2$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21080,17 +23246,17 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$5$one one(
+    top$pipeline$abc$lanes$2$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21131,8 +23297,8 @@ module top$pipeline$abc$lanes$2$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$5
-module top$pipeline$abc$lanes$2$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line
+module top$pipeline$abc$lanes$2$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21148,8 +23314,8 @@ module top$pipeline$abc$lanes$2$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$one
-module top$pipeline$abc$lanes$2$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$one
+module top$pipeline$abc$lanes$2$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21165,8 +23331,8 @@ module top$pipeline$abc$lanes$2$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$ptr
-module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$ptr
+module top$pipeline$abc$lanes$2$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21178,7 +23344,7 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -21189,8 +23355,8 @@ module top$pipeline$abc$lanes$2$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$5$ram
-module top$pipeline$abc$lanes$2$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$ram
+module top$pipeline$abc$lanes$2$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21206,7 +23372,41 @@ module top$pipeline$abc$lanes$2$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$5$line_last
+module top$pipeline$abc$lanes$2$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$5$out
 module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -21217,172 +23417,63 @@ module top$pipeline$abc$lanes$2$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$2$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$2$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$2$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$2$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$2$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$2$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$2$lines$6
-module top$pipeline$abc$lanes$2$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$one
-module top$pipeline$abc$lanes$2$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$ptr
-module top$pipeline$abc$lanes$2$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$2$lines$6$ram
-module top$pipeline$abc$lanes$2$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$2$lines$6$rd_flipped
-module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$2$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -21393,7 +23484,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -21420,7 +23511,7 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$2$lines$7$ram ram(
+    top$pipeline$abc$lanes$2$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -21429,17 +23520,17 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$2$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$2$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$2$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$2$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$2$lines$7$one one(
+    top$pipeline$abc$lanes$2$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -21480,8 +23571,8 @@ module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$2$lines$7
-module top$pipeline$abc$lanes$2$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line
+module top$pipeline$abc$lanes$2$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -21497,8 +23588,8 @@ module top$pipeline$abc$lanes$2$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$one
-module top$pipeline$abc$lanes$2$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$one
+module top$pipeline$abc$lanes$2$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21514,8 +23605,8 @@ module top$pipeline$abc$lanes$2$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$ptr
-module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$ptr
+module top$pipeline$abc$lanes$2$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -21528,7 +23619,7 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -21539,8 +23630,8 @@ module top$pipeline$abc$lanes$2$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$2$lines$7$ram
-module top$pipeline$abc$lanes$2$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$ram
+module top$pipeline$abc$lanes$2$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -21556,7 +23647,316 @@ module top$pipeline$abc$lanes$2$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$2$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$2$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$6$line_last
+module top$pipeline$abc$lanes$2$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$6$out
+module top$pipeline$abc$lanes$2$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$7
+module top$pipeline$abc$lanes$2$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$2$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$2$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$2$lines$7$line
+module top$pipeline$abc$lanes$2$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$one
+module top$pipeline$abc$lanes$2$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$ptr
+module top$pipeline$abc$lanes$2$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$ram
+module top$pipeline$abc$lanes$2$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$2$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$line_last
+module top$pipeline$abc$lanes$2$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$2$lines$7$out
 module top$pipeline$abc$lanes$2$one$0(d,q,clock);
     
     // Module arguments
@@ -22306,8 +24706,74 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$0
+module top$pipeline$abc$lanes$3$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -22334,7 +24800,7 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$0$ram ram(
+    top$pipeline$abc$lanes$3$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -22343,17 +24809,17 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$0$one one(
+    top$pipeline$abc$lanes$3$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -22394,8 +24860,8 @@ module top$pipeline$abc$lanes$3$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$0
-module top$pipeline$abc$lanes$3$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line
+module top$pipeline$abc$lanes$3$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -22411,8 +24877,8 @@ module top$pipeline$abc$lanes$3$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$one
-module top$pipeline$abc$lanes$3$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$one
+module top$pipeline$abc$lanes$3$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22428,8 +24894,8 @@ module top$pipeline$abc$lanes$3$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$ptr
-module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$ptr
+module top$pipeline$abc$lanes$3$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -22442,7 +24908,7 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -22453,8 +24919,8 @@ module top$pipeline$abc$lanes$3$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$0$ram
-module top$pipeline$abc$lanes$3$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$ram
+module top$pipeline$abc$lanes$3$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22470,7 +24936,41 @@ module top$pipeline$abc$lanes$3$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$0$line_last
+module top$pipeline$abc$lanes$3$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$0$out
 module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -22481,8 +24981,74 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$1
+module top$pipeline$abc$lanes$3$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -22509,7 +25075,7 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$1$ram ram(
+    top$pipeline$abc$lanes$3$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -22518,17 +25084,17 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$1$one one(
+    top$pipeline$abc$lanes$3$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -22569,8 +25135,8 @@ module top$pipeline$abc$lanes$3$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$1
-module top$pipeline$abc$lanes$3$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line
+module top$pipeline$abc$lanes$3$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -22586,8 +25152,8 @@ module top$pipeline$abc$lanes$3$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$one
-module top$pipeline$abc$lanes$3$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$one
+module top$pipeline$abc$lanes$3$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22603,8 +25169,8 @@ module top$pipeline$abc$lanes$3$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$ptr
-module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$ptr
+module top$pipeline$abc$lanes$3$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -22617,7 +25183,7 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -22628,8 +25194,8 @@ module top$pipeline$abc$lanes$3$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$1$ram
-module top$pipeline$abc$lanes$3$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$ram
+module top$pipeline$abc$lanes$3$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22645,7 +25211,41 @@ module top$pipeline$abc$lanes$3$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$1$line_last
+module top$pipeline$abc$lanes$3$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$1$out
 module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -22656,8 +25256,74 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$2
+module top$pipeline$abc$lanes$3$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -22684,7 +25350,7 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$2$ram ram(
+    top$pipeline$abc$lanes$3$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -22693,17 +25359,17 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$2$one one(
+    top$pipeline$abc$lanes$3$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -22744,8 +25410,8 @@ module top$pipeline$abc$lanes$3$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$2
-module top$pipeline$abc$lanes$3$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line
+module top$pipeline$abc$lanes$3$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -22761,8 +25427,8 @@ module top$pipeline$abc$lanes$3$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$one
-module top$pipeline$abc$lanes$3$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$one
+module top$pipeline$abc$lanes$3$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22778,8 +25444,8 @@ module top$pipeline$abc$lanes$3$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$ptr
-module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$ptr
+module top$pipeline$abc$lanes$3$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -22791,7 +25457,7 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -22802,8 +25468,8 @@ module top$pipeline$abc$lanes$3$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$2$ram
-module top$pipeline$abc$lanes$3$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$ram
+module top$pipeline$abc$lanes$3$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22819,7 +25485,41 @@ module top$pipeline$abc$lanes$3$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$2$line_last
+module top$pipeline$abc$lanes$3$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$2$out
 module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -22830,8 +25530,74 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$3
+module top$pipeline$abc$lanes$3$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -22858,7 +25624,7 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$3$ram ram(
+    top$pipeline$abc$lanes$3$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -22867,17 +25633,17 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$3$one one(
+    top$pipeline$abc$lanes$3$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -22918,8 +25684,8 @@ module top$pipeline$abc$lanes$3$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$3
-module top$pipeline$abc$lanes$3$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line
+module top$pipeline$abc$lanes$3$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -22935,8 +25701,8 @@ module top$pipeline$abc$lanes$3$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$one
-module top$pipeline$abc$lanes$3$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$one
+module top$pipeline$abc$lanes$3$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22952,8 +25718,8 @@ module top$pipeline$abc$lanes$3$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$ptr
-module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$ptr
+module top$pipeline$abc$lanes$3$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -22966,7 +25732,7 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -22977,8 +25743,8 @@ module top$pipeline$abc$lanes$3$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$3$ram
-module top$pipeline$abc$lanes$3$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$ram
+module top$pipeline$abc$lanes$3$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -22994,7 +25760,41 @@ module top$pipeline$abc$lanes$3$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$3$line_last
+module top$pipeline$abc$lanes$3$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$3$out
 module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -23005,8 +25805,74 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$4
+module top$pipeline$abc$lanes$3$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -23033,7 +25899,7 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$4$ram ram(
+    top$pipeline$abc$lanes$3$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -23042,17 +25908,17 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$4$one one(
+    top$pipeline$abc$lanes$3$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -23093,8 +25959,8 @@ module top$pipeline$abc$lanes$3$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$4
-module top$pipeline$abc$lanes$3$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line
+module top$pipeline$abc$lanes$3$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -23110,8 +25976,8 @@ module top$pipeline$abc$lanes$3$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$one
-module top$pipeline$abc$lanes$3$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$one
+module top$pipeline$abc$lanes$3$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23127,8 +25993,8 @@ module top$pipeline$abc$lanes$3$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$ptr
-module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$ptr
+module top$pipeline$abc$lanes$3$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -23141,7 +26007,7 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -23152,8 +26018,8 @@ module top$pipeline$abc$lanes$3$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$4$ram
-module top$pipeline$abc$lanes$3$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$ram
+module top$pipeline$abc$lanes$3$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23169,7 +26035,41 @@ module top$pipeline$abc$lanes$3$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$4$line_last
+module top$pipeline$abc$lanes$3$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$4$out
 module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -23180,8 +26080,74 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$5
+module top$pipeline$abc$lanes$3$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h22c;
+    localparam  longest_last = 16'h22b;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -23208,7 +26174,7 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$5$ram ram(
+    top$pipeline$abc$lanes$3$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -23217,17 +26183,17 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$5$one one(
+    top$pipeline$abc$lanes$3$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -23268,8 +26234,8 @@ module top$pipeline$abc$lanes$3$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$5
-module top$pipeline$abc$lanes$3$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line
+module top$pipeline$abc$lanes$3$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -23285,8 +26251,8 @@ module top$pipeline$abc$lanes$3$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$one
-module top$pipeline$abc$lanes$3$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$one
+module top$pipeline$abc$lanes$3$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23302,8 +26268,8 @@ module top$pipeline$abc$lanes$3$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$ptr
-module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$ptr
+module top$pipeline$abc$lanes$3$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -23315,7 +26281,7 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[556:0];
+    reg [31:0] mem[555:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[9:0]];
@@ -23326,8 +26292,8 @@ module top$pipeline$abc$lanes$3$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[9:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$5$ram
-module top$pipeline$abc$lanes$3$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$ram
+module top$pipeline$abc$lanes$3$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23343,7 +26309,41 @@ module top$pipeline$abc$lanes$3$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$5$line_last
+module top$pipeline$abc$lanes$3$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$5$out
 module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -23354,172 +26354,63 @@ module top$pipeline$abc$lanes$3$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$3$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$3$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$3$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$3$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$3$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$3$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$3$lines$6
-module top$pipeline$abc$lanes$3$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$one
-module top$pipeline$abc$lanes$3$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$ptr
-module top$pipeline$abc$lanes$3$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[2:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[2:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$3$lines$6$ram
-module top$pipeline$abc$lanes$3$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$3$lines$6$rd_flipped
-module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$3$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -23530,7 +26421,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h5;
+    localparam  longest_last = 16'h4;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -23557,7 +26448,7 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$3$lines$7$ram ram(
+    top$pipeline$abc$lanes$3$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -23566,17 +26457,17 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$3$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$3$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$3$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$3$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$3$lines$7$one one(
+    top$pipeline$abc$lanes$3$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -23617,8 +26508,8 @@ module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$3$lines$7
-module top$pipeline$abc$lanes$3$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line
+module top$pipeline$abc$lanes$3$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -23634,8 +26525,8 @@ module top$pipeline$abc$lanes$3$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$one
-module top$pipeline$abc$lanes$3$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$one
+module top$pipeline$abc$lanes$3$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23651,8 +26542,8 @@ module top$pipeline$abc$lanes$3$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$ptr
-module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$ptr
+module top$pipeline$abc$lanes$3$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -23665,7 +26556,7 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[5:0];
+    reg [31:0] mem[4:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[2:0]];
@@ -23676,8 +26567,8 @@ module top$pipeline$abc$lanes$3$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[2:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$3$lines$7$ram
-module top$pipeline$abc$lanes$3$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$ram
+module top$pipeline$abc$lanes$3$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -23693,7 +26584,316 @@ module top$pipeline$abc$lanes$3$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$3$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$3$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$6$line_last
+module top$pipeline$abc$lanes$3$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$6$out
+module top$pipeline$abc$lanes$3$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$7
+module top$pipeline$abc$lanes$3$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'h4;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$3$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$3$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$3$lines$7$line
+module top$pipeline$abc$lanes$3$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$one
+module top$pipeline$abc$lanes$3$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$ptr
+module top$pipeline$abc$lanes$3$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[4:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[2:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[2:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$ram
+module top$pipeline$abc$lanes$3$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$3$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$line_last
+module top$pipeline$abc$lanes$3$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$3$lines$7$out
 module top$pipeline$abc$lanes$3$one$0(d,q,clock);
     
     // Module arguments

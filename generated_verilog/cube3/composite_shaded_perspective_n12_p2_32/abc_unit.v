@@ -7329,8 +7329,74 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$0
+module top$pipeline$abc$lanes$0$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7357,7 +7423,7 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$0$ram ram(
+    top$pipeline$abc$lanes$0$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7366,17 +7432,17 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$0$one one(
+    top$pipeline$abc$lanes$0$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -7417,8 +7483,8 @@ module top$pipeline$abc$lanes$0$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$0
-module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line
+module top$pipeline$abc$lanes$0$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7434,8 +7500,8 @@ module top$pipeline$abc$lanes$0$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$one
-module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$one
+module top$pipeline$abc$lanes$0$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7451,8 +7517,8 @@ module top$pipeline$abc$lanes$0$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$ptr
-module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ptr
+module top$pipeline$abc$lanes$0$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7465,7 +7531,7 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -7476,8 +7542,8 @@ module top$pipeline$abc$lanes$0$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$0$ram
-module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$ram
+module top$pipeline$abc$lanes$0$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7493,7 +7559,41 @@ module top$pipeline$abc$lanes$0$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$line_last
+module top$pipeline$abc$lanes$0$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$0$out
 module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7504,8 +7604,74 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$1
+module top$pipeline$abc$lanes$0$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7532,7 +7698,7 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$1$ram ram(
+    top$pipeline$abc$lanes$0$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7541,17 +7707,17 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$1$one one(
+    top$pipeline$abc$lanes$0$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -7592,8 +7758,8 @@ module top$pipeline$abc$lanes$0$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$1
-module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line
+module top$pipeline$abc$lanes$0$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7609,8 +7775,8 @@ module top$pipeline$abc$lanes$0$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$one
-module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$one
+module top$pipeline$abc$lanes$0$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7626,8 +7792,8 @@ module top$pipeline$abc$lanes$0$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$ptr
-module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ptr
+module top$pipeline$abc$lanes$0$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7640,7 +7806,7 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -7651,8 +7817,8 @@ module top$pipeline$abc$lanes$0$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$1$ram
-module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$ram
+module top$pipeline$abc$lanes$0$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7668,7 +7834,41 @@ module top$pipeline$abc$lanes$0$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$line_last
+module top$pipeline$abc$lanes$0$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$1$out
 module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7679,8 +7879,74 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$2
+module top$pipeline$abc$lanes$0$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bf;
+    localparam  longest_last = 16'h8be;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7707,7 +7973,7 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$2$ram ram(
+    top$pipeline$abc$lanes$0$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7716,17 +7982,17 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$2$one one(
+    top$pipeline$abc$lanes$0$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -7767,8 +8033,8 @@ module top$pipeline$abc$lanes$0$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$2
-module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line
+module top$pipeline$abc$lanes$0$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7784,8 +8050,8 @@ module top$pipeline$abc$lanes$0$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$one
-module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$one
+module top$pipeline$abc$lanes$0$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7801,8 +8067,8 @@ module top$pipeline$abc$lanes$0$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$ptr
-module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ptr
+module top$pipeline$abc$lanes$0$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7814,7 +8080,7 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2239:0];
+    reg [31:0] mem[2238:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -7825,8 +8091,8 @@ module top$pipeline$abc$lanes$0$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[11:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$2$ram
-module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$ram
+module top$pipeline$abc$lanes$0$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7842,7 +8108,41 @@ module top$pipeline$abc$lanes$0$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$line_last
+module top$pipeline$abc$lanes$0$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$2$out
 module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7853,8 +8153,74 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$3
+module top$pipeline$abc$lanes$0$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -7881,7 +8247,7 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$3$ram ram(
+    top$pipeline$abc$lanes$0$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7890,17 +8256,17 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$3$one one(
+    top$pipeline$abc$lanes$0$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -7941,8 +8307,8 @@ module top$pipeline$abc$lanes$0$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$3
-module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line
+module top$pipeline$abc$lanes$0$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -7958,8 +8324,8 @@ module top$pipeline$abc$lanes$0$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$one
-module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$one
+module top$pipeline$abc$lanes$0$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7975,8 +8341,8 @@ module top$pipeline$abc$lanes$0$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$ptr
-module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ptr
+module top$pipeline$abc$lanes$0$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7989,7 +8355,7 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -8000,8 +8366,8 @@ module top$pipeline$abc$lanes$0$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$3$ram
-module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$ram
+module top$pipeline$abc$lanes$0$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8017,7 +8383,41 @@ module top$pipeline$abc$lanes$0$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$line_last
+module top$pipeline$abc$lanes$0$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$3$out
 module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -8028,8 +8428,74 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$4
+module top$pipeline$abc$lanes$0$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8056,7 +8522,7 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$4$ram ram(
+    top$pipeline$abc$lanes$0$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -8065,17 +8531,17 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$4$one one(
+    top$pipeline$abc$lanes$0$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -8116,8 +8582,8 @@ module top$pipeline$abc$lanes$0$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$4
-module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line
+module top$pipeline$abc$lanes$0$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8133,8 +8599,8 @@ module top$pipeline$abc$lanes$0$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$one
-module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$one
+module top$pipeline$abc$lanes$0$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8150,8 +8616,8 @@ module top$pipeline$abc$lanes$0$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$ptr
-module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ptr
+module top$pipeline$abc$lanes$0$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -8164,7 +8630,7 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -8175,8 +8641,8 @@ module top$pipeline$abc$lanes$0$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$4$ram
-module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$ram
+module top$pipeline$abc$lanes$0$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8192,7 +8658,41 @@ module top$pipeline$abc$lanes$0$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$line_last
+module top$pipeline$abc$lanes$0$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$4$out
 module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -8203,8 +8703,74 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$5
+module top$pipeline$abc$lanes$0$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bf;
+    localparam  longest_last = 16'h8be;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8231,7 +8797,7 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$5$ram ram(
+    top$pipeline$abc$lanes$0$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -8240,17 +8806,17 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$5$one one(
+    top$pipeline$abc$lanes$0$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -8291,8 +8857,8 @@ module top$pipeline$abc$lanes$0$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$5
-module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line
+module top$pipeline$abc$lanes$0$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8308,8 +8874,8 @@ module top$pipeline$abc$lanes$0$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$one
-module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$one
+module top$pipeline$abc$lanes$0$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8325,8 +8891,8 @@ module top$pipeline$abc$lanes$0$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$ptr
-module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ptr
+module top$pipeline$abc$lanes$0$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -8338,7 +8904,7 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2239:0];
+    reg [31:0] mem[2238:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -8349,8 +8915,8 @@ module top$pipeline$abc$lanes$0$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[11:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$5$ram
-module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$ram
+module top$pipeline$abc$lanes$0$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8366,7 +8932,41 @@ module top$pipeline$abc$lanes$0$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$line_last
+module top$pipeline$abc$lanes$0$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$5$out
 module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -8377,172 +8977,63 @@ module top$pipeline$abc$lanes$0$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$0$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$0$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$0$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$0$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$0$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$0$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$0$lines$6
-module top$pipeline$abc$lanes$0$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$one
-module top$pipeline$abc$lanes$0$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$ptr
-module top$pipeline$abc$lanes$0$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[3:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[3:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$0$lines$6$ram
-module top$pipeline$abc$lanes$0$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$0$lines$6$rd_flipped
-module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$0$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -8553,7 +9044,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -8580,7 +9071,7 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$0$lines$7$ram ram(
+    top$pipeline$abc$lanes$0$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -8589,17 +9080,17 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$0$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$0$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$0$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$0$lines$7$one one(
+    top$pipeline$abc$lanes$0$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -8640,8 +9131,8 @@ module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$0$lines$7
-module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line
+module top$pipeline$abc$lanes$0$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -8657,8 +9148,8 @@ module top$pipeline$abc$lanes$0$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$one
-module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$one
+module top$pipeline$abc$lanes$0$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8674,8 +9165,8 @@ module top$pipeline$abc$lanes$0$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$ptr
-module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ptr
+module top$pipeline$abc$lanes$0$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -8688,7 +9179,7 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -8699,8 +9190,8 @@ module top$pipeline$abc$lanes$0$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$0$lines$7$ram
-module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$ram
+module top$pipeline$abc$lanes$0$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8716,7 +9207,316 @@ module top$pipeline$abc$lanes$0$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$0$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$0$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$line_last
+module top$pipeline$abc$lanes$0$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$6$out
+module top$pipeline$abc$lanes$0$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7
+module top$pipeline$abc$lanes$0$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'hc;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$0$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$0$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$0$lines$7$line
+module top$pipeline$abc$lanes$0$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$one
+module top$pipeline$abc$lanes$0$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ptr
+module top$pipeline$abc$lanes$0$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[12:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[3:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[3:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$ram
+module top$pipeline$abc$lanes$0$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$0$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$line_last
+module top$pipeline$abc$lanes$0$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$0$lines$7$out
 module top$pipeline$abc$lanes$0$one$0(d,q,clock);
     
     // Module arguments
@@ -9466,8 +10266,74 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$0$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$0$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$0$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$0
+module top$pipeline$abc$lanes$1$lines$0$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -9494,7 +10360,7 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$0$ram ram(
+    top$pipeline$abc$lanes$1$lines$0$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -9503,17 +10369,17 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$0$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$0$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$0$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$0$one one(
+    top$pipeline$abc$lanes$1$lines$0$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -9554,8 +10420,8 @@ module top$pipeline$abc$lanes$1$lines$0(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$0
-module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line
+module top$pipeline$abc$lanes$1$lines$0$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9571,8 +10437,8 @@ module top$pipeline$abc$lanes$1$lines$0$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$one
-module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$one
+module top$pipeline$abc$lanes$1$lines$0$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9588,8 +10454,8 @@ module top$pipeline$abc$lanes$1$lines$0$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$ptr
-module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ptr
+module top$pipeline$abc$lanes$1$lines$0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -9602,7 +10468,7 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -9613,8 +10479,8 @@ module top$pipeline$abc$lanes$1$lines$0$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$0$ram
-module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$ram
+module top$pipeline$abc$lanes$1$lines$0$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9630,7 +10496,41 @@ module top$pipeline$abc$lanes$1$lines$0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$0$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$0$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$0$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$line_last
+module top$pipeline$abc$lanes$1$lines$0$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$0$out
 module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9641,8 +10541,74 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$1$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$1$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$1$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$1
+module top$pipeline$abc$lanes$1$lines$1$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -9669,7 +10635,7 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$1$ram ram(
+    top$pipeline$abc$lanes$1$lines$1$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -9678,17 +10644,17 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$1$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$1$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$1$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$1$one one(
+    top$pipeline$abc$lanes$1$lines$1$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -9729,8 +10695,8 @@ module top$pipeline$abc$lanes$1$lines$1(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$1
-module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line
+module top$pipeline$abc$lanes$1$lines$1$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9746,8 +10712,8 @@ module top$pipeline$abc$lanes$1$lines$1$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$one
-module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$one
+module top$pipeline$abc$lanes$1$lines$1$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9763,8 +10729,8 @@ module top$pipeline$abc$lanes$1$lines$1$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$ptr
-module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ptr
+module top$pipeline$abc$lanes$1$lines$1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -9777,7 +10743,7 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -9788,8 +10754,8 @@ module top$pipeline$abc$lanes$1$lines$1$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$1$ram
-module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$ram
+module top$pipeline$abc$lanes$1$lines$1$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9805,7 +10771,41 @@ module top$pipeline$abc$lanes$1$lines$1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$1$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$1$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$1$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$line_last
+module top$pipeline$abc$lanes$1$lines$1$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$1$out
 module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9816,8 +10816,74 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$2$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$2$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$2$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$2
+module top$pipeline$abc$lanes$1$lines$2$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bf;
+    localparam  longest_last = 16'h8be;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -9844,7 +10910,7 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$2$ram ram(
+    top$pipeline$abc$lanes$1$lines$2$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -9853,17 +10919,17 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$2$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$2$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$2$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$2$one one(
+    top$pipeline$abc$lanes$1$lines$2$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -9904,8 +10970,8 @@ module top$pipeline$abc$lanes$1$lines$2(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$2
-module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line
+module top$pipeline$abc$lanes$1$lines$2$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -9921,8 +10987,8 @@ module top$pipeline$abc$lanes$1$lines$2$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$one
-module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$one
+module top$pipeline$abc$lanes$1$lines$2$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9938,8 +11004,8 @@ module top$pipeline$abc$lanes$1$lines$2$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$ptr
-module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ptr
+module top$pipeline$abc$lanes$1$lines$2$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -9951,7 +11017,7 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2239:0];
+    reg [31:0] mem[2238:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -9962,8 +11028,8 @@ module top$pipeline$abc$lanes$1$lines$2$ram(read_address,read_clock,read_data,wr
           mem[write_address[11:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$2$ram
-module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$ram
+module top$pipeline$abc$lanes$1$lines$2$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9979,7 +11045,41 @@ module top$pipeline$abc$lanes$1$lines$2$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$2$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$2$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$2$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$line_last
+module top$pipeline$abc$lanes$1$lines$2$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$2$out
 module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9990,8 +11090,74 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$3$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$3$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$3$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$3
+module top$pipeline$abc$lanes$1$lines$3$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10018,7 +11184,7 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$3$ram ram(
+    top$pipeline$abc$lanes$1$lines$3$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10027,17 +11193,17 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$3$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$3$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$3$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$3$one one(
+    top$pipeline$abc$lanes$1$lines$3$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -10078,8 +11244,8 @@ module top$pipeline$abc$lanes$1$lines$3(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$3
-module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line
+module top$pipeline$abc$lanes$1$lines$3$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -10095,8 +11261,8 @@ module top$pipeline$abc$lanes$1$lines$3$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$one
-module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$one
+module top$pipeline$abc$lanes$1$lines$3$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10112,8 +11278,8 @@ module top$pipeline$abc$lanes$1$lines$3$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$ptr
-module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ptr
+module top$pipeline$abc$lanes$1$lines$3$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10126,7 +11292,7 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -10137,8 +11303,8 @@ module top$pipeline$abc$lanes$1$lines$3$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$3$ram
-module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$ram
+module top$pipeline$abc$lanes$1$lines$3$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10154,7 +11320,41 @@ module top$pipeline$abc$lanes$1$lines$3$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$3$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$3$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$3$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$line_last
+module top$pipeline$abc$lanes$1$lines$3$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$3$out
 module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -10165,8 +11365,74 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$4$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$4$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$4$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$4
+module top$pipeline$abc$lanes$1$lines$4$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10193,7 +11459,7 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$4$ram ram(
+    top$pipeline$abc$lanes$1$lines$4$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10202,17 +11468,17 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$4$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$4$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$4$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$4$one one(
+    top$pipeline$abc$lanes$1$lines$4$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -10253,8 +11519,8 @@ module top$pipeline$abc$lanes$1$lines$4(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$4
-module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line
+module top$pipeline$abc$lanes$1$lines$4$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -10270,8 +11536,8 @@ module top$pipeline$abc$lanes$1$lines$4$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$one
-module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$one
+module top$pipeline$abc$lanes$1$lines$4$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10287,8 +11553,8 @@ module top$pipeline$abc$lanes$1$lines$4$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$ptr
-module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ptr
+module top$pipeline$abc$lanes$1$lines$4$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10301,7 +11567,7 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -10312,8 +11578,8 @@ module top$pipeline$abc$lanes$1$lines$4$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$4$ram
-module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$ram
+module top$pipeline$abc$lanes$1$lines$4$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10329,7 +11595,41 @@ module top$pipeline$abc$lanes$1$lines$4$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$4$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$4$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$4$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$line_last
+module top$pipeline$abc$lanes$1$lines$4$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$4$out
 module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -10340,8 +11640,74 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$5$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$5$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$5$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$5
+module top$pipeline$abc$lanes$1$lines$5$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8bf;
+    localparam  longest_last = 16'h8be;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10368,7 +11734,7 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$5$ram ram(
+    top$pipeline$abc$lanes$1$lines$5$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10377,17 +11743,17 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$5$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$5$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$5$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$5$one one(
+    top$pipeline$abc$lanes$1$lines$5$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -10428,8 +11794,8 @@ module top$pipeline$abc$lanes$1$lines$5(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$5
-module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line
+module top$pipeline$abc$lanes$1$lines$5$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -10445,8 +11811,8 @@ module top$pipeline$abc$lanes$1$lines$5$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$one
-module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$one
+module top$pipeline$abc$lanes$1$lines$5$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10462,8 +11828,8 @@ module top$pipeline$abc$lanes$1$lines$5$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$ptr
-module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ptr
+module top$pipeline$abc$lanes$1$lines$5$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10475,7 +11841,7 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[2239:0];
+    reg [31:0] mem[2238:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[11:0]];
@@ -10486,8 +11852,8 @@ module top$pipeline$abc$lanes$1$lines$5$ram(read_address,read_clock,read_data,wr
           mem[write_address[11:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$5$ram
-module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$ram
+module top$pipeline$abc$lanes$1$lines$5$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10503,7 +11869,41 @@ module top$pipeline$abc$lanes$1$lines$5$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$5$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$5$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$5$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$line_last
+module top$pipeline$abc$lanes$1$lines$5$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$5$out
 module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -10514,172 +11914,63 @@ module top$pipeline$abc$lanes$1$lines$6(clock,data_in,write_enable,data_out,last
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
-    localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
     // Stub signals
-    reg  [15:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [15:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    reg  [15:0] ptr$d;
-    wire  [15:0] ptr$q;
-    reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
-    reg  [31:0] one$d;
-    wire  [31:0] one$q;
-    reg  one$clock;
-    
-    // Local signals
-    reg  [15:0] rd;
-    reg  [15:0] next;
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$6$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
+    top$pipeline$abc$lanes$1$lines$6$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
     );
-    top$pipeline$abc$lanes$1$lines$6$ptr ptr(
-        .d(ptr$d),
-        .q(ptr$q),
-        .clock(ptr$clock)
+    top$pipeline$abc$lanes$1$lines$6$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
     );
-    top$pipeline$abc$lanes$1$lines$6$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
-    );
-    top$pipeline$abc$lanes$1$lines$6$one one(
-        .d(one$d),
-        .q(one$q),
-        .clock(one$clock)
+    top$pipeline$abc$lanes$1$lines$6$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
     );
     
     // Update code
-    reg  [31:0] data_out_pass;
     always @(*) begin
-        ptr$clock = clock;
-        rd_flipped$clock = clock;
-        one$clock = clock;
-        ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
-        one$d = one$q;
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
-            next = 'h0;
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
-        ram$write_address = ptr$q;
-        ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
-        ram$read_address = rd;
-        one$d = one$q;
-        if (write_enable) begin
-            one$d = data_in & mask;
-        end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
-        end
-        else begin
-            data_out_pass = ram$read_data;
-        end
-        data_out = data_out_pass;
+        data_out = out$q;
     end
     
 endmodule // top$pipeline$abc$lanes$1$lines$6
-module top$pipeline$abc$lanes$1$lines$6$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$one
-module top$pipeline$abc$lanes$1$lines$6$ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$ptr
-module top$pipeline$abc$lanes$1$lines$6$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[3:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[3:0]] <= write_data;
-       end
-    end
-endmodule // top$pipeline$abc$lanes$1$lines$6$ram
-module top$pipeline$abc$lanes$1$lines$6$rd_flipped(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$abc$lanes$1$lines$6$rd_flipped
-module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+module top$pipeline$abc$lanes$1$lines$6$line(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -10690,7 +11981,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'hd;
+    localparam  longest_last = 16'hc;
     localparam  single = 1'b0;
     localparam  mask = 'hffffffff;
     
@@ -10717,7 +12008,7 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$abc$lanes$1$lines$7$ram ram(
+    top$pipeline$abc$lanes$1$lines$6$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10726,17 +12017,17 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$abc$lanes$1$lines$7$ptr ptr(
+    top$pipeline$abc$lanes$1$lines$6$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$rd_flipped rd_flipped(
+    top$pipeline$abc$lanes$1$lines$6$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$abc$lanes$1$lines$7$one one(
+    top$pipeline$abc$lanes$1$lines$6$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -10777,8 +12068,8 @@ module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$abc$lanes$1$lines$7
-module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line
+module top$pipeline$abc$lanes$1$lines$6$line$one(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -10794,8 +12085,8 @@ module top$pipeline$abc$lanes$1$lines$7$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$one
-module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$one
+module top$pipeline$abc$lanes$1$lines$6$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10811,8 +12102,8 @@ module top$pipeline$abc$lanes$1$lines$7$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$ptr
-module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ptr
+module top$pipeline$abc$lanes$1$lines$6$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10825,7 +12116,7 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [31:0] mem[13:0];
+    reg [31:0] mem[12:0];
     
     always @(posedge read_clock) begin
        read_data <= mem[read_address[3:0]];
@@ -10836,8 +12127,8 @@ module top$pipeline$abc$lanes$1$lines$7$ram(read_address,read_clock,read_data,wr
           mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$abc$lanes$1$lines$7$ram
-module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$ram
+module top$pipeline$abc$lanes$1$lines$6$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10853,7 +12144,316 @@ module top$pipeline$abc$lanes$1$lines$7$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$abc$lanes$1$lines$7$rd_flipped
+endmodule // top$pipeline$abc$lanes$1$lines$6$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$6$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$line_last
+module top$pipeline$abc$lanes$1$lines$6$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$6$out
+module top$pipeline$abc$lanes$1$lines$7(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [31:0] line$data_in;
+    reg  line$write_enable;
+    wire  [31:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [31:0] out$d;
+    wire  [31:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7
+module top$pipeline$abc$lanes$1$lines$7$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] data_in;
+    input wire  write_enable;
+    output reg  [31:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
+    localparam  flip = 16'h1;
+    localparam  longest_last = 16'hc;
+    localparam  single = 1'b0;
+    localparam  mask = 'hffffffff;
+    
+    // Stub signals
+    reg  [15:0] ram$read_address;
+    reg  ram$read_clock;
+    wire  [31:0] ram$read_data;
+    reg  [15:0] ram$write_address;
+    reg  ram$write_clock;
+    reg  [31:0] ram$write_data;
+    reg  ram$write_enable;
+    reg  [15:0] ptr$d;
+    wire  [15:0] ptr$q;
+    reg  ptr$clock;
+    reg  [15:0] rd_flipped$d;
+    wire  [15:0] rd_flipped$q;
+    reg  rd_flipped$clock;
+    reg  [31:0] one$d;
+    wire  [31:0] one$q;
+    reg  one$clock;
+    
+    // Local signals
+    reg  [15:0] rd;
+    reg  [15:0] next;
+    
+    // Sub module instances
+    top$pipeline$abc$lanes$1$lines$7$line$ram ram(
+        .read_address(ram$read_address),
+        .read_clock(ram$read_clock),
+        .read_data(ram$read_data),
+        .write_address(ram$write_address),
+        .write_clock(ram$write_clock),
+        .write_data(ram$write_data),
+        .write_enable(ram$write_enable)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$ptr ptr(
+        .d(ptr$d),
+        .q(ptr$q),
+        .clock(ptr$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$rd_flipped rd_flipped(
+        .d(rd_flipped$d),
+        .q(rd_flipped$q),
+        .clock(rd_flipped$clock)
+    );
+    top$pipeline$abc$lanes$1$lines$7$line$one one(
+        .d(one$d),
+        .q(one$q),
+        .clock(one$clock)
+    );
+    
+    // Update code
+    reg  [31:0] data_out_pass;
+    always @(*) begin
+        ptr$clock = clock;
+        rd_flipped$clock = clock;
+        one$clock = clock;
+        ptr$d = ptr$q;
+        rd_flipped$d = rd_flipped$q;
+        one$d = one$q;
+        ram$read_clock = clock;
+        ram$write_clock = clock;
+        rd = rd_flipped$q ^ flip;
+        next = rd + 'h1;
+        if ((rd >= last) | (rd >= longest_last)) begin
+            next = 'h0;
+        end
+        rd_flipped$d = next ^ flip;
+        ptr$d = rd;
+        ram$write_address = ptr$q;
+        ram$write_data = data_in;
+        ram$write_enable = write_enable & ~single;
+        ram$read_address = rd;
+        one$d = one$q;
+        if (write_enable) begin
+            one$d = data_in & mask;
+        end
+        if (single | (last == 'h0)) begin
+            data_out_pass = one$q;
+        end
+        else begin
+            data_out_pass = ram$read_data;
+        end
+        data_out = data_out_pass;
+    end
+    
+endmodule // top$pipeline$abc$lanes$1$lines$7$line
+module top$pipeline$abc$lanes$1$lines$7$line$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$one
+module top$pipeline$abc$lanes$1$lines$7$line$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ptr
+module top$pipeline$abc$lanes$1$lines$7$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+    
+    // Module arguments
+    input wire  [15:0] read_address;
+    input wire  read_clock;
+    output reg  [31:0] read_data;
+    input wire  [15:0] write_address;
+    input wire  write_clock;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    (* ram_style = "distributed" *)
+    reg [31:0] mem[12:0];
+    
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address[3:0]];
+    end
+    
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address[3:0]] <= write_data;
+       end
+    end
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$ram
+module top$pipeline$abc$lanes$1$lines$7$line$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line$rd_flipped
+module top$pipeline$abc$lanes$1$lines$7$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$line_last
+module top$pipeline$abc$lanes$1$lines$7$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$lanes$1$lines$7$out
 module top$pipeline$abc$lanes$1$one$0(d,q,clock);
     
     // Module arguments
