@@ -94,11 +94,11 @@ fn a_fault_in_the_cube3_system_verilog_is_caught() {
     let c = cases(4).remove(0);
     let verilog = emitted_verilog(&c, &system::<4>(&c));
     // The Fast Bus sends lane 1's voxel one 2-DSB module too far.
-    let site = "if (holds_q$1$q & (((ray_q$1$q + plane_q$q) & mask) == index$0)) begin";
+    let site = "lane_dsb$1 = (s1_ray$1$q + s1_plane$q) & mask;";
     assert!(verilog.contains(site), "the fault site exists");
     let faulty = verilog.replacen(
         site,
-        "if (holds_q$1$q & (((ray_q$1$q + plane_q$q + 16'h1) & mask) == index$0)) begin",
+        "lane_dsb$1 = (s1_ray$1$q + s1_plane$q + 16'h1) & mask;",
         1,
     );
     let errors = verilog_case::<4>(Engine::Iverilog, &c, &faulty);
