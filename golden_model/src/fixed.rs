@@ -27,6 +27,13 @@ pub fn sat_u(v: u64, max: u32) -> u32 {
     v.min(max as u64) as u32
 }
 
+/// [`lerp_frac`] in i32, where every `(b - a)·w` fits 31 bits: the same
+/// result, in a form the compiler puts in vector lanes.
+#[inline(always)]
+pub fn lerp_i32(a: i32, b: i32, w: i32, frac: u32) -> i32 {
+    a + (((b - a) * w + (1 << (frac - 1))) >> frac)
+}
+
 /// Linear interpolation from `a` towards `b` by `w / 2^frac` (`0 <= w <= 2^frac`):
 /// `a + ((b - a) * w + 2^(frac-1)) >> frac`, an arithmetic shift, so the product
 /// is rounded half up. The result always lies between `a` and `b`.

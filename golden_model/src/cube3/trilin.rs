@@ -78,8 +78,7 @@ fn ray_i32_avx2(out: &mut [u32], r: [&[u32]; 4], wx: &[u32], wy: &[u32], w: [u32
 fn ray_i32_lanes(out: &mut [u32], r: [&[u32]; 4], wx: &[u32], wy: &[u32], w: [u32; 3]) {
     let [offset, wb, frac] = w;
     let n = out.len();
-    let half = 1i32 << (wb - 1);
-    let lerp = |a: i32, b: i32, w: i32| a + (((b - a) * w + half) >> wb);
+    let lerp = |a: i32, b: i32, w: i32| crate::fixed::lerp_i32(a, b, w, wb);
     // Exact lengths, so that the loop has no bounds checks.
     let [a, b, c, d] = r.map(|ray| &ray[..n + 1]);
     let (wx, wy) = (&wx[..n], &wy[..n]);

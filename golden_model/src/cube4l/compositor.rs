@@ -9,7 +9,7 @@
 
 use super::plan::Order;
 use super::shader::Sample;
-use crate::fixed::{lerp_frac, max_of, mul_unorm, sat_u};
+use crate::fixed::{lerp_frac, lerp_i32, max_of, mul_unorm, sat_u};
 use scene::Mode;
 
 /// Value of an empty compositing-buffer cell (the SR reset value).
@@ -62,10 +62,7 @@ pub fn gather(
         // Every product of a difference and a weight fits 31 bits: the same
         // lerps in i32, four channels at once.
         let lerp = |a: [u32; 4], b: [u32; 4], w: u32| -> [u32; 4] {
-            std::array::from_fn(|i| {
-                let d = b[i] as i32 - a[i] as i32;
-                (a[i] as i32 + ((d * w as i32 + (1 << (frac - 1))) >> frac)) as u32
-            })
+            std::array::from_fn(|i| lerp_i32(a[i] as i32, b[i] as i32, w as i32, frac) as u32)
         };
         return lerp(lerp(c00, c10, wx), lerp(c01, c11, wx), wy);
     }
@@ -139,8 +136,7 @@ fn row_i32_avx2(out: &mut [u32], c: [&[u32]; 4], w: [u32; 3]) {
 fn row_i32_lanes(out: &mut [u32], c: [&[u32]; 4], w: [u32; 3]) {
     let [wx, wy, frac] = w;
     let n = out.len();
-    let half = 1i32 << (frac - 1);
-    let lerp = |a: i32, b: i32, w: i32| a + (((b - a) * w + half) >> frac);
+    let lerp = |a: i32, b: i32, w: i32| lerp_i32(a, b, w, frac);
     // Exact lengths, so that the loop has no bounds checks.
     let [a, b, c, d] = c.map(|s| &s[..n]);
     for k in 0..n {
