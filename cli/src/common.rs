@@ -70,12 +70,17 @@ impl HwArch {
 
 /// Clocks per frame of an architecture's RTL on `scene`, as its schedule
 /// predicts them (`cosim::arch::Arch::expected_clocks`); none where the RTL
-/// does not build the scene.
+/// does not build the scene. A normal wider than the RTL's
+/// (`hardware.normal_bits`, a golden-model width) moves no clock: it is
+/// counted by the schedule of the RTL's own width.
 pub fn rtl_clocks<A: cosim::arch::Arch>(
     scene: &Scene,
     camera: &scene::Camera,
     dims: [usize; 3],
 ) -> Option<u64> {
+    let scene = &scene
+        .with(|s| s.hardware.normal_bits = hdl::common::lighting::NORMAL_BITS)
+        .ok()?;
     let build = A::needs(scene, camera, dims).ok()?;
     let parts = A::parts(scene, camera, dims, &build).ok()?;
     Some(parts.iter().map(A::expected_clocks).sum())

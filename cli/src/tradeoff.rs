@@ -145,6 +145,14 @@ fn cube4l_grid(scene: &Scene) -> Vec<Variant> {
             json!({"hardware": {"voxel_bits": b}}),
         ));
     }
+    // The normal's width matters only where the scene lights.
+    if scene.mode.uses_colour() && scene.shading.enabled {
+        for n in [4, 6, 7] {
+            let mut params = hw_params(hw.frac_bits, hw.rgba_bits, hw.voxel_bits);
+            params.push(("normal_bits", json!(n)));
+            v.push(variant(params, json!({"hardware": {"normal_bits": n}})));
+        }
+    }
     v
 }
 
@@ -159,7 +167,8 @@ fn hw_params(frac: u32, rgba: u32, voxel: u32) -> Vec<(&'static str, Value)> {
 /// The four ABC neighbourhoods at the scene's widths, then the weight
 /// (`frac_bits`) and sample widths one at a time at the 12-neighbourhood,
 /// and the widths where the model's rounding stops mattering (12-bit
-/// weights and RGBA: within 0.5 % of its float twin, docs/accuracy.md).
+/// weights and RGBA unlit, 12-bit weights and 6-bit normals lit: within
+/// 0.5 % of its float twin, docs/accuracy.md).
 fn cube3_grid(scene: &Scene) -> Vec<Variant> {
     let hw = scene.hardware;
     let vb = hw.voxel_bits;
@@ -193,6 +202,17 @@ fn cube3_grid(scene: &Scene) -> Vec<Variant> {
             json!({"hardware": {"frac_bits": 12, "rgba_bits": 12}}),
         )
     });
+    if scene.mode.uses_colour() && scene.shading.enabled {
+        let mut knee = params(12, 12, sb);
+        knee.push(("normal_bits", json!(6)));
+        v.push(Variant {
+            gradient: Some(12),
+            ..variant(
+                knee,
+                json!({"hardware": {"frac_bits": 12, "normal_bits": 6}}),
+            )
+        });
+    }
     for s in [vb, vb + 2, vb + 6, vb + 8] {
         v.push(Variant {
             gradient: Some(12),

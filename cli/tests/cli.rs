@@ -381,6 +381,27 @@ fn sim_refuses_what_the_rtl_cannot_do() {
         &cube(&["sim", "--scene", &big], d.path()),
         "--engine verilator",
     );
+    // A golden-model width the RTL is not built for, on both architectures;
+    // unlit, the normal's width does not matter.
+    let lit = r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "parallel"}, "mode": "composite", "image": [16, 16],
+            "hardware": {"normal_bits": 6}"#;
+    let wide = write(d.path(), "c.json", &format!("{lit}}}"));
+    for arch in ["cube4l", "cube3"] {
+        assert_clean_error(
+            &cube(
+                &["verilog", "--arch", arch, "--scene", &wide, "--out", "v"],
+                d.path(),
+            ),
+            "hardware.normal_bits 6",
+        );
+    }
+    let unlit = write(
+        d.path(),
+        "d.json",
+        &format!("{lit}, \"shading\": {{\"enabled\": false}}}}"),
+    );
+    let o = cube(&["verilog", "--scene", &unlit, "--out", "v"], d.path());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
 #[test]
@@ -780,6 +801,56 @@ fn the_float_twins_keep_the_rays_on_a_face_at_90_degrees() {
         let e = row[key]["rel_euclid_pct"].as_f64().unwrap();
         assert!(e < 0.01, "{key}: {e} %");
     }
+}
+
+/// The width knee (docs/accuracy.md, `scripts/cube3-widths`): Cube-3's
+/// rounding alone, the fixed-point model against its float twin on Fig. 14's
+/// phantom. At the default widths it is far from 0.5 %; with 12-bit weights
+/// and 6-bit normals it is within 0.5 % (relative Euclidean, foreground) at
+/// each angle.
+#[test]
+fn cube3_widths_knee_is_within_half_a_percent_of_the_float_twin() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+    let d = tempfile::tempdir().unwrap();
+    let worst = |widths: serde_json::Value| {
+        let mut s = read_json(&root.join("scenes/fig14_phantom.json"));
+        for (k, v) in widths.as_object().unwrap() {
+            s["hardware"][k] = v.clone();
+        }
+        let scene = write(d.path(), "s.json", &s.to_string());
+        let o = cube(
+            &[
+                "angles",
+                "--scene",
+                &scene,
+                "--arch",
+                "cube3",
+                "--against",
+                "sheared-float",
+                "--range",
+                "0",
+                "90",
+                "45",
+                "--json",
+                "a.json",
+            ],
+            d.path(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let rows = read_json(&d.path().join("a.json"))["rows"].clone();
+        let errors: Vec<f64> = rows
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["error"]["rel_euclid_pct"].as_f64().unwrap())
+            .collect();
+        assert_eq!(errors.len(), 3);
+        errors.into_iter().fold(0.0, f64::max)
+    };
+    let default = worst(serde_json::json!({}));
+    assert!(default > 1.0, "default widths: {default} %");
+    let knee = worst(serde_json::json!({"frac_bits": 12, "normal_bits": 6}));
+    assert!(knee < 0.5, "12-bit weights, 6-bit normals: {knee} %");
 }
 
 #[test]

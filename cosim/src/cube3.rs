@@ -568,6 +568,9 @@ impl Arch for Cube3 {
     fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Cube3Build, String> {
         let parts = scene_parts(scene, camera, None)?;
         let first = parts.first().ok_or("the view needs no base plane")?;
+        if let Some(why) = hdl::common::lighting::refuses(&first.shader.tables()) {
+            return Err(why);
+        }
         let hw = scene.hardware;
         Ok(Cube3Build {
             p: hw.pipelines,

@@ -16,8 +16,6 @@ pub fn lut_bits(voxel_bits: u32) -> u32 {
     voxel_bits.min(12)
 }
 
-/// Bits per signed component of the quantized gradient the lighting takes.
-pub const NORMAL_BITS: u32 = 5;
 /// Bits of the gradient-magnitude index of the 2-D opacity LUT.
 pub const GM_BITS: u32 = 4;
 
@@ -140,21 +138,32 @@ pub const COS_BITS: u32 = 10;
 pub const DIR_FRAC: u32 = 11;
 /// Fractional bits of the reciprocal norms [`rnorm`].
 pub const RNORM_FRAC: u32 = 15;
-/// Largest squared length of a quantized normal: three components of at
-/// most 15 in magnitude.
-pub const MAX_N2: u32 = 3 * 15 * 15;
+/// Widest normal the golden models take (`hardware.normal_bits`, checked
+/// by the scene).
+pub const MAX_NORMAL_BITS: u32 = 8;
 
-/// Words of the hardware's [`rnorm`] ROM: a 10-bit address, which holds
-/// every `|q|²` up to [`MAX_N2`].
-pub const RNORM_WORDS: u32 = 1024;
+/// Largest squared length of a quantized normal of `normal_bits`-bit
+/// components: three of magnitude `2^(normal_bits - 1) - 1` (675 at 5 bits).
+pub const fn max_n2(normal_bits: u32) -> u32 {
+    let m = (1u32 << (normal_bits - 1)) - 1;
+    3 * m * m
+}
 
-/// `1 / |q|` of a quantized normal of squared length `n2` (below
-/// [`RNORM_WORDS`]), in [`RNORM_FRAC`] fractional bits, rounded to nearest; 0 for
-/// `n2 = 0`. A constant table of the hardware (it depends on no scene),
-/// built once.
+/// Words of the reciprocal-norm ROM for `normal_bits`-bit normals: the power
+/// of two that holds every `|q|²` up to [`max_n2`] (1 024 at 5 bits, the
+/// RTL's; 4 096 at 6).
+pub const fn rnorm_words(normal_bits: u32) -> u32 {
+    (max_n2(normal_bits) + 1).next_power_of_two()
+}
+
+/// `1 / |q|` of a quantized normal of squared length `n2` (at most
+/// [`max_n2`] of [`MAX_NORMAL_BITS`]), in [`RNORM_FRAC`] fractional bits,
+/// rounded to nearest; 0 for `n2 = 0`. A constant table of the hardware (it
+/// depends on no scene; a narrower normal reads its first
+/// [`rnorm_words`]), built once.
 pub fn rnorm(n2: u32) -> u32 {
     static TABLE: std::sync::LazyLock<Vec<u32>> =
-        std::sync::LazyLock::new(|| (0..RNORM_WORDS).map(rnorm_entry).collect());
+        std::sync::LazyLock::new(|| (0..rnorm_words(MAX_NORMAL_BITS)).map(rnorm_entry).collect());
     TABLE[n2 as usize]
 }
 
@@ -175,7 +184,7 @@ fn rnorm_entry(n2: u32) -> u32 {
 
 /// Phong lighting by quantized normal, as a small datapath computes it
 /// (paper §3.4's reflectance, with the map factored): for the quantized
-/// gradient `q` (signed `NORMAL_BITS`-bit components in the sweep's or
+/// gradient `q` (signed `normal_bits`-bit components in the sweep's or
 /// base plane's space; the normal is `-q / |q|`), the cosines with the light
 /// and the half vector from two dot products and a reciprocal norm, each an
 /// index into a table of the diffuse multiplier and of the specular term.
@@ -184,7 +193,8 @@ fn rnorm_entry(n2: u32) -> u32 {
 /// 1. `dot = q · d` (exact integers; the registers hold `-L` and `-H` in the
 ///    gradient's space, [`DIR_FRAC`] fractional bits);
 /// 2. `dot <= 0`: index 0 and no light on the surface; else
-///    `t = min(dot, 2^16 - 1) · rnorm(|q|²)` (exact) and
+///    `t = min(dot, 2^(normal_bits + DIR_FRAC) - 1) · rnorm(|q|²)` (exact;
+///    a unit register never saturates) and
 ///    `i = min(2^COS_BITS - 1, (t · (2^COS_BITS - 1) + 2^25) >> 26)`, the
 ///    cosine `t / 2^26` to the nearest table entry;
 /// 3. `diffuse = diffuse[i_light]`; `specular = specular[i_half]` when the
@@ -203,6 +213,10 @@ pub struct Lighting {
     /// loads (they depend on the lighting coefficients only, not the view).
     pub diffuse: Vec<u32>,
     pub specular: Vec<u32>,
+    /// Bits per signed component of the quantized normal
+    /// (`hardware.normal_bits`): [`quantize_normal`](crate::cube4l::gradient::quantize_normal)'s
+    /// width and the dot products' saturation.
+    pub normal_bits: u32,
 }
 
 impl Lighting {
@@ -215,6 +229,7 @@ impl Lighting {
         light: DVec3,
         viewer: DVec3,
         rgba_bits: u32,
+        normal_bits: u32,
     ) -> Lighting {
         let h = (light + viewer).normalize_or_zero();
         // The normal is the negated gradient: n · l = -q · (to_dataset^T l) / |q|.
@@ -241,19 +256,22 @@ impl Lighting {
                     quantize_unorm(s.min(1.0), rgba_bits)
                 })
                 .collect(),
+            normal_bits,
         }
     }
 
-    /// The table index of the cosine between `-q` and the direction `d`,
-    /// and whether it is positive (steps 1-2 above).
-    pub fn cos_index(q: [i32; 3], d: [i32; 3]) -> (u32, bool) {
+    /// The table index of the cosine between `-q` (of `normal_bits`-bit
+    /// components) and the direction `d`, and whether it is positive (steps
+    /// 1-2 above).
+    pub fn cos_index(q: [i32; 3], d: [i32; 3], normal_bits: u32) -> (u32, bool) {
         let dot: i64 = (0..3).map(|i| q[i] as i64 * d[i] as i64).sum();
         if dot <= 0 {
             return (0, false);
         }
-        // A unit direction keeps |dot| <= 26 * 2048; other registers
-        // saturate to the 16-bit multiplier.
-        let dot = dot.min(0xffff);
+        // A unit direction keeps |dot| <= |q| * 2^DIR_FRAC, below
+        // 2^(normal_bits + DIR_FRAC) (at 5 bits: 26 * 2048, within the RTL's
+        // 16-bit multiplier); other registers saturate.
+        let dot = dot.min((1 << (normal_bits + DIR_FRAC)) - 1);
         let n2 = q.iter().map(|c| (c * c) as u32).sum();
         let t = dot as u64 * rnorm(n2) as u64;
         let last = (1u64 << COS_BITS) - 1;
@@ -266,9 +284,9 @@ impl Lighting {
 
     /// `[diffuse, specular]` for the quantized gradient `q`.
     pub fn reflect(&self, q: [i32; 3]) -> [u32; 2] {
-        let (il, lit) = Self::cos_index(q, self.light);
+        let (il, lit) = Self::cos_index(q, self.light, self.normal_bits);
         let s = if lit {
-            self.specular[Self::cos_index(q, self.half).0 as usize]
+            self.specular[Self::cos_index(q, self.half, self.normal_bits).0 as usize]
         } else {
             0
         };
@@ -524,8 +542,11 @@ mod tests {
         assert_eq!(rnorm(3), 18919);
         assert_eq!(rnorm(18), 7723);
         assert_eq!(rnorm(49), 4681);
-        assert_eq!(rnorm(MAX_N2), 1261);
-        for n2 in 1..=MAX_N2 {
+        assert_eq!(rnorm(max_n2(5)), 1261);
+        assert_eq!((max_n2(5), rnorm_words(5)), (675, 1024));
+        assert_eq!((max_n2(6), rnorm_words(6)), (2883, 4096));
+        assert_eq!((max_n2(8), rnorm_words(8)), (48387, 65536));
+        for n2 in 1..=max_n2(MAX_NORMAL_BITS) {
             let exact = 32768.0 / (n2 as f64).sqrt();
             assert!((rnorm(n2) as f64 - exact).abs() <= 0.5, "{n2}");
         }
@@ -536,22 +557,26 @@ mod tests {
         let z = [0, 0, -2048];
         // Facing the light: dot 14336, rnorm(49) = 4681, t = 67 106 816,
         // (t * 1023 + 2^25) >> 26 = 1023 (1023.47 clamped to the last).
-        assert_eq!(Lighting::cos_index([0, 0, -7], z), (1023, true));
+        assert_eq!(Lighting::cos_index([0, 0, -7], z, 5), (1023, true));
         // 45 degrees: t = 6144 * 7723, the cosine 0.70706 -> index 723.83 -> 723.
-        assert_eq!(Lighting::cos_index([-3, 0, -3], z), (723, true));
+        assert_eq!(Lighting::cos_index([-3, 0, -3], z, 5), (723, true));
         // Facing away and grazing: no light.
-        assert_eq!(Lighting::cos_index([0, 0, 5], z), (0, false));
-        assert_eq!(Lighting::cos_index([4, 0, 0], z), (0, false));
-        assert_eq!(Lighting::cos_index([0, 0, 0], z), (0, false));
+        assert_eq!(Lighting::cos_index([0, 0, 5], z, 5), (0, false));
+        assert_eq!(Lighting::cos_index([4, 0, 0], z, 5), (0, false));
+        assert_eq!(Lighting::cos_index([0, 0, 0], z, 5), (0, false));
         // Cube diagonal: t = 30720 * 1261, 0.57723 -> 591.02 -> 591.
-        assert_eq!(Lighting::cos_index([-15, -15, -15], z), (591, true));
+        assert_eq!(Lighting::cos_index([-15, -15, -15], z, 5), (591, true));
+        // A 6-bit normal: dot 21 * 2048 = 43 008, rnorm(841) = 1130
+        // (32768 / 29 = 1129.93), t = 48 599 040, 0.72420 -> 741.35 -> 741
+        // (the exact cosine 21/29 is 740.8 entries).
+        assert_eq!(Lighting::cos_index([-20, 0, -21], z, 6), (741, true));
     }
 
     #[test]
     fn lighting_head_on() {
         // Light and viewer both along +z: h = +z. The normal is -g.
         let z = DVec3::Z;
-        let l = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 8);
+        let l = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 8, 5);
         assert_eq!((l.light, l.half), ([0, 0, -2048], [0, 0, -2048]));
         assert_eq!(l.diffuse.len(), 1024);
         // Zero gradient: ambient only, 0.25 * 255 = 63.75.
@@ -571,7 +596,7 @@ mod tests {
         // 0.5 * 0.57771^10 = 0.00207 -> 0.53.
         assert_eq!(l.reflect([-15, -15, -15]), [137, 1]);
         // 12-bit words: 0.75 * 4095 = 3071.25, 0.5 * 4095 = 2047.5.
-        let l12 = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 12);
+        let l12 = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 12, 5);
         assert_eq!(l12.reflect([0, 0, -2]), [3071, 2048]);
         assert_eq!(l12.reflect([0, 0, 0]), [1024, 0]);
     }
@@ -581,14 +606,14 @@ mod tests {
         // Light along +x, viewer along +z: h = (1, 0, 1) / sqrt 2, whose
         // register components are round(-0.70711 * 2048) = -1448.
         let id = glam::DMat3::IDENTITY;
-        let l = Lighting::new(&shading(), id, DVec3::X, DVec3::Z, 8);
+        let l = Lighting::new(&shading(), id, DVec3::X, DVec3::Z, 8, 5);
         assert_eq!((l.light, l.half), ([-2048, 0, 0], [-1448, 0, -1448]));
         assert_eq!(l.reflect([-1, 0, 0]), [191, 4]);
         assert_eq!(l.reflect([0, 0, -1]), [64, 0]);
         assert_eq!(l.reflect([6, 0, 0]), [64, 0]);
         // Pipeline (x, y, z) is dataset (z, x, y): pipeline -z faces dataset +x.
         let perm = glam::DMat3::from_cols(DVec3::Y, DVec3::Z, DVec3::X);
-        let l = Lighting::new(&shading(), perm, DVec3::X, DVec3::Z, 8);
+        let l = Lighting::new(&shading(), perm, DVec3::X, DVec3::Z, 8, 5);
         assert_eq!((l.light, l.half), ([0, 0, -2048], [0, -1448, -1448]));
         assert_eq!(l.reflect([0, 0, -2]), [191, 4]);
         assert_eq!(l.reflect([-2, 0, 0]), [64, 0]);
@@ -608,7 +633,7 @@ mod tests {
         // within 1 of exact Phong at the normal (cosine rounded to 1/1023,
         // then to 8 bits), the specular (shininess 10) within 2.
         let (l, v) = (DVec3::new(0.3, -0.5, 0.8).normalize(), DVec3::Z);
-        let lt = Lighting::new(&shading(), glam::DMat3::IDENTITY, l, v, 8);
+        let lt = Lighting::new(&shading(), glam::DMat3::IDENTITY, l, v, 8, 5);
         let mut worst = [0f64; 2];
         for qz in -15..=15 {
             for qy in -15..=15 {

@@ -75,14 +75,15 @@ fn lit_shader(mode: Mode) -> Shader {
     (diffuse[989], specular[989]) = (128, 40);
     (diffuse[1023], specular[1023]) = (255, 200);
     let d = [2048, 0, -2048];
-    assert_eq!(Lighting::cos_index([15, -4, 0], d), (989, true));
-    assert_eq!(Lighting::cos_index([0, 0, -9], d), (1023, true));
+    assert_eq!(Lighting::cos_index([15, -4, 0], d, 5), (989, true));
+    assert_eq!(Lighting::cos_index([0, 0, -9], d, 5), (1023, true));
     Shader {
         lighting: Some(Lighting {
             light: d,
             half: d,
             diffuse,
             specular,
+            normal_bits: 5,
         }),
         needs_gradient: true,
         ..shader(mode)
@@ -192,7 +193,7 @@ fn composite_weights_colour_by_opacity() {
 #[test]
 fn composite_with_lighting() {
     let s = lit_shader(Mode::Composite);
-    assert_eq!(quantize_normal([30, -8, 0]), [15, -4, 0]);
+    assert_eq!(quantize_normal([30, -8, 0], 5), [15, -4, 0]);
     // v = 200: alpha 200, colour (200, 55, 40), [d, s] = [128, 40]:
     // shaded = round(c * 128 / 255) + 40 = 100 + 40, 28 + 40, 20 + 40;
     // weighted = round(shaded * 200 / 255) = 109.8 -> 110, 53.3 -> 53,

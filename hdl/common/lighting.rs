@@ -23,12 +23,29 @@
 
 use super::regs::{Regs, ADDRESS_BITS};
 use super::table::Table;
-use golden_model::host::{Reg, Table as HostTable};
-use golden_model::lut::{rnorm, COS_BITS, DIR_FRAC, RNORM_FRAC, RNORM_WORDS};
+use golden_model::host::{Reg, ShaderTables, Table as HostTable};
+use golden_model::lut::{rnorm, rnorm_words, COS_BITS, DIR_FRAC, RNORM_FRAC};
 use rust_hdl::prelude::*;
 
 /// Clocks from the quantized normal to the terms.
 pub const LATENCY: usize = 7;
+
+/// The normal width this unit is built for (a sign and a 4-bit magnitude a
+/// component, a 10-bit `|q|²`): the golden models' `hardware.normal_bits`
+/// default. Wider normals are a golden-model width only (docs/accuracy.md).
+pub const NORMAL_BITS: u32 = 5;
+const _: () = assert!(rnorm_words(NORMAL_BITS) == 1 << 10, "the rnorm ROM's 10-bit address");
+
+/// Why the RTL cannot light with `tables`: a normal width other than
+/// [`NORMAL_BITS`]. `None` when it can, or when nothing is lit.
+pub fn refuses(tables: &ShaderTables) -> Option<String> {
+    let bits = tables.lighting?.normal_bits;
+    (bits != NORMAL_BITS).then(|| {
+        format!(
+            "hardware.normal_bits {bits}: the RTL's lighting is built for {NORMAL_BITS}-bit normals (wider ones are a golden-model width)"
+        )
+    })
+}
 
 /// The lighting unit of one shader, with `rgba_bits` table words.
 #[derive(LogicBlock)]
@@ -110,7 +127,7 @@ impl Lighting {
             diffuse: Default::default(),
             specular: Default::default(),
             regs: Regs::new([Reg::Light.address(), Reg::Half.address()]),
-            rnorm: (0..RNORM_WORDS)
+            rnorm: (0..rnorm_words(NORMAL_BITS))
                 .map(|n2| (rnorm(n2) as u64).to_bits())
                 .into(),
             square: std::array::from_fn(|_| (0..16u64).map(|m| (m * m).to_bits()).into()),

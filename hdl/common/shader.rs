@@ -45,7 +45,7 @@ use super::regs::ADDRESS_BITS;
 use super::table::Table;
 use golden_model::fixed::max_of;
 use golden_model::host::{ShaderTables, Table as HostTable};
-use golden_model::lut::{lut_bits, NORMAL_BITS};
+use golden_model::lut::lut_bits;
 use rust_hdl::prelude::*;
 use scene::Mode;
 
@@ -156,8 +156,10 @@ pub struct ShaderConfig {
 }
 
 impl ShaderConfig {
-    /// The configuration of the golden model's tables.
+    /// The configuration of the golden model's tables, which the RTL can
+    /// light (`lighting::refuses`, checked with the scene).
     pub fn of(t: &ShaderTables, voxel_bits: u32, needs_gradient: bool, wide: bool) -> Self {
+        assert_eq!(lighting::refuses(t), None);
         ShaderConfig {
             mode: t.mode,
             voxel_bits,
@@ -172,10 +174,6 @@ impl ShaderConfig {
 
 impl Shader {
     pub fn new(c: &ShaderConfig) -> Shader {
-        assert_eq!(
-            NORMAL_BITS, 5,
-            "the RTL normal quantizer is built for 5-bit components"
-        );
         assert_eq!(
             golden_model::lut::GM_BITS,
             4,

@@ -318,6 +318,10 @@ pub struct Hardware {
     pub frac_bits: u32,
     #[serde(default = "default_rgba_bits")]
     pub rgba_bits: u32,
+    /// Bits per signed component of the quantized normal the lighting
+    /// takes (the golden models' `quantize_normal`); the RTL is built for 5.
+    #[serde(default = "default_normal_bits")]
+    pub normal_bits: u32,
 }
 
 fn default_pipelines() -> usize {
@@ -332,6 +336,9 @@ fn default_frac_bits() -> u32 {
 fn default_rgba_bits() -> u32 {
     8
 }
+fn default_normal_bits() -> u32 {
+    5
+}
 
 impl Default for Hardware {
     fn default() -> Self {
@@ -340,6 +347,7 @@ impl Default for Hardware {
             voxel_bits: 8,
             frac_bits: 8,
             rgba_bits: 8,
+            normal_bits: 5,
         }
     }
 }
@@ -560,6 +568,13 @@ impl SceneSpec {
             return Err(CubeError::Hardware(format!(
                 "frac_bits {} unsupported (2..=15: the weight 1.0 = 2^frac_bits must fit a 16-bit multiplier)",
                 hw.frac_bits
+            )));
+        }
+        // The reciprocal-norm table has 2^(2 normal_bits - 2) words.
+        if !(3..=8).contains(&hw.normal_bits) {
+            return Err(CubeError::Hardware(format!(
+                "normal_bits {} unsupported (3..=8: the reciprocal-norm table grows fourfold a bit)",
+                hw.normal_bits
             )));
         }
         if !hw.pipelines.is_power_of_two() || hw.pipelines > 16 {
@@ -792,6 +807,13 @@ mod tests {
         assert!(err_of(&hw).contains("voxel_bits"));
         let hw = MIN.replace("}}", "}, \"hardware\": {\"rgba_bits\": 16}}");
         assert!(err_of(&hw).contains("rgba_bits"));
+        for bad in [0, 2, 9, 4_000_000_000u32] {
+            let hw = MIN.replace(
+                "}}",
+                &format!("}}, \"hardware\": {{\"normal_bits\": {bad}}}}}"),
+            );
+            assert!(err_of(&hw).contains("normal_bits"), "{bad}");
+        }
         let hw = MIN.replace("}}", "}, \"hardware\": {\"pipelines\": 3}}");
         assert!(err_of(&hw).contains("pipelines"));
         for (q, field) in [

@@ -14,7 +14,7 @@
 //! 4. `gm = isqrt(gx² + gy² + gz²) >> F` (the gradient word is in sample
 //!    units); `alpha = opacity[index][gm]`, first-opaque: `alpha >= threshold
 //!    ? M : 0`.
-//! 5. `[d, s] = lighting.reflect(quantize_normal(g))`, `c = colour[index]`,
+//! 5. `[d, s] = lighting.reflect(quantize_normal(g, normal_bits))`, `c = colour[index]`,
 //!    `lut::shade_weight`: `[mul(sat(mul(c, d) + s), alpha)..., alpha]`.
 //! 6. MIP and MinIP: `[(s + 2^(F-1)) >> F, 0, 0, 0]`, the sample rounded to
 //!    voxel bits; X-ray: `[opacity[index][0], 0, 0, 0]`. They need no
@@ -64,7 +64,14 @@ impl Shader {
             let light = camera
                 .camera_to_dataset(glam::DVec3::from_array(scene.shading.light_dir))
                 .normalize();
-            Lighting::new(&scene.shading, to_dataset, light, -view.view_dir, rb)
+            Lighting::new(
+                &scene.shading,
+                to_dataset,
+                light,
+                -view.view_dir,
+                rb,
+                scene.hardware.normal_bits,
+            )
         });
         // A zero opacity row: the leaf is zero wherever the sample lies.
         let identity = match (&opacity, mode) {
@@ -182,7 +189,7 @@ impl Shader {
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(self.index(s));
                 let ds = match &self.lighting {
-                    Some(l) => l.reflect(quantize_normal(g)),
+                    Some(l) => l.reflect(quantize_normal(g, l.normal_bits)),
                     None => unlit(self.widths.rgba_bits),
                 };
                 Leaf {

@@ -6,7 +6,7 @@
 //! Fixed-point steps, in order, all unorm of `rgba_bits` (M = 2^rgba_bits - 1):
 //! 1. `alpha = opacity_lut[v >> shift][gm >> gm_shift]` (0 on invalid voxels);
 //!    first-opaque: `alpha = alpha >= threshold ? M : 0`.
-//! 2. `c = colour_lut[v >> shift]`, `[d, s] = lighting.reflect(quantize_normal(g))`.
+//! 2. `c = colour_lut[v >> shift]`, `[d, s] = lighting.reflect(quantize_normal(g, normal_bits))`.
 //! 3. `shaded = sat(mul(c, d) + s)` per RGB channel (`sat`: clamp to M).
 //! 4. `weighted = mul(shaded, alpha)`, emitted as `[r, g, b, alpha]`.
 
@@ -72,6 +72,7 @@ impl Shader {
                 light,
                 -sweep.view_dir,
                 hw.rgba_bits,
+                hw.normal_bits,
             )
         });
         Shader {
@@ -163,7 +164,7 @@ impl Shader {
                 }
                 let rgb = self.colour.as_ref().unwrap().lookup(v);
                 let ds = match &self.lighting {
-                    Some(l) => l.reflect(quantize_normal(g)),
+                    Some(l) => l.reflect(quantize_normal(g, l.normal_bits)),
                     None => unlit(self.rgba_bits),
                 };
                 Sample {
