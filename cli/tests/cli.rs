@@ -1219,7 +1219,15 @@ fn cube3_sim_verilog_and_their_refusals() {
     // clocks the RTL took.
     let c = s["clocks"].as_object().unwrap();
     let keys: Vec<&str> = c.keys().map(|k| k.as_str()).collect();
-    for k in ["segments", "idle", "prologue", "tail", "drain"] {
+    for k in [
+        "segments",
+        "segments_outside",
+        "rays_outside",
+        "idle",
+        "prologue",
+        "tail",
+        "drain",
+    ] {
         assert!(keys.contains(&k), "{k} missing: {s}");
     }
     assert_eq!(

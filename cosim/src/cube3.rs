@@ -775,8 +775,24 @@ impl Arch for Cube3 {
         let rg = (f.rays * f.segments) as i64;
         let (s, t) = (f.scanlines as i64, f.period() as i64);
         let term = |key, what, clocks| ClockTerm { key, what, clocks };
+        assert_eq!(
+            (f.rays, f.scanlines),
+            (c.pipeline.rays, c.pipeline.scanlines)
+        );
+        let (inside, crossing) = c.pipeline.segments_inside();
+        let (inside, crossing) = (inside as i64, crossing as i64);
         let terms = vec![
-            term("segments", "segments (R*S*G)", rg * s),
+            term("segments", "segments with a sample in the volume", inside),
+            term(
+                "segments_outside",
+                "segments wholly outside, on rays that cross the volume",
+                crossing - inside,
+            ),
+            term(
+                "rays_outside",
+                "segments of rays that miss the volume",
+                rg * s - crossing,
+            ),
             term("idle", "waiting for PRP writes", s * (t - rg)),
             term("prologue", "prologue", c.first_entry() as i64),
             term("tail", "last wait", -(t - rg)),

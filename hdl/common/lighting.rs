@@ -34,7 +34,10 @@ pub const LATENCY: usize = 7;
 /// component, a 10-bit `|q|²`): the golden models' `hardware.normal_bits`
 /// default. Wider normals are a golden-model width only (docs/accuracy.md).
 pub const NORMAL_BITS: u32 = 5;
-const _: () = assert!(rnorm_words(NORMAL_BITS) == 1 << 10, "the rnorm ROM's 10-bit address");
+const _: () = assert!(
+    rnorm_words(NORMAL_BITS) == 1 << 10,
+    "the rnorm ROM's 10-bit address"
+);
 
 /// Why the RTL cannot light with `tables`: a normal width other than
 /// [`NORMAL_BITS`]. `None` when it can, or when nothing is lit.

@@ -402,6 +402,30 @@ impl Cube3Config {
         })
     }
 
+    /// Of the `R·S·G` segments the stream carries: how many hold a sample
+    /// inside the volume ([`Cube3Config::bounds`]), and how many belong to
+    /// stream rays (a ray and a scanline) that hold any. The rest of a
+    /// crossing ray's segments, and every segment of a ray that misses the
+    /// volume, carry nothing a pixel takes (a gradient's neighbour rays and
+    /// scanlines aside).
+    pub fn segments_inside(&self) -> (usize, usize) {
+        let p = self.p;
+        let (mut inside, mut crossing) = (0, 0);
+        for j in 0..self.scanlines as u32 {
+            for r in 0..self.rays as u32 {
+                let holds = |b: &[u32; 4]| b[0] <= r && r <= b[1] && b[2] <= j && j <= b[3];
+                let n = self
+                    .bounds
+                    .chunks(p)
+                    .filter(|segment| segment.iter().any(holds))
+                    .count();
+                inside += n;
+                crossing += if n > 0 { self.segments } else { 0 };
+            }
+        }
+        (inside, crossing)
+    }
+
     /// Rays with their own `wx` template: every stream ray (perspective) or
     /// one.
     pub fn wx_rays(&self) -> usize {

@@ -140,13 +140,27 @@ fn the_engine_frame_runs_through_verilator_bit_exact() {
     let (s, vol) = engine_scene("engine_mip.json");
     let r = simulate(&s, &s.camera(), &vol, Engine::Verilator, None).unwrap();
     assert_eq!(r.mismatches, 0, "{:?}", r.first);
-    // 414 scanlines of 207 rays of 64 segments (K = 256, p = 4), periods
-    // of 13 316 clocks bound by the PRP writes (256 planes x 52 chunks,
-    // and their latency of 4).
-    let terms = ["segments", "idle", "prologue", "tail", "drain"].map(|k| term(&r, k));
+    // 414 scanlines of 207 rays of 64 segments (K = 256, p = 4): 5 484 672
+    // segments, of which 1 809 447 hold a sample inside the volume (1.004
+    // times the ideal), 2 571 673 lie outside on rays that cross it, and
+    // 1 103 552 belong to rays that miss it; periods of 13 316 clocks bound
+    // by the PRP writes (256 planes x 52 chunks, and their latency of 4).
+    let terms = [
+        "segments",
+        "segments_outside",
+        "rays_outside",
+        "idle",
+        "prologue",
+        "tail",
+        "drain",
+    ]
+    .map(|k| term(&r, k));
     assert_eq!(
         (r.clocks, terms),
-        (5_539_466, [5_484_672, 28_152, 26_634, -68, 76])
+        (
+            5_539_466,
+            [1_809_447, 2_571_673, 1_103_552, 28_152, 26_634, -68, 76]
+        )
     );
     assert_eq!(r.ideal_clocks, 256 * 256 * 110 / 4);
 }
