@@ -146,7 +146,7 @@ fn cube4l_grid(scene: &Scene) -> Vec<Variant> {
         ));
     }
     // The normal's width matters only where the scene lights.
-    if scene.mode.uses_colour() && scene.shading.enabled {
+    if scene.lit() {
         for n in [4, 6, 7] {
             let mut params = hw_params(hw.frac_bits, hw.rgba_bits, hw.voxel_bits);
             params.push(("normal_bits", json!(n)));
@@ -193,24 +193,14 @@ fn cube3_grid(scene: &Scene) -> Vec<Variant> {
             ..variant(params(12, f, sb), json!({"hardware": {"frac_bits": f}}))
         });
     }
-    let mut knee = params(12, 12, sb);
-    knee.push(("rgba_bits", json!(12)));
-    v.push(Variant {
-        gradient: Some(12),
-        ..variant(
-            knee,
-            json!({"hardware": {"frac_bits": 12, "rgba_bits": 12}}),
-        )
-    });
-    if scene.mode.uses_colour() && scene.shading.enabled {
+    // The knees: 12-bit RGBA beside the weights, and lit, 6-bit normals.
+    let knees = [("rgba_bits", 12), ("normal_bits", 6)];
+    for (width, bits) in knees.into_iter().take(1 + scene.lit() as usize) {
         let mut knee = params(12, 12, sb);
-        knee.push(("normal_bits", json!(6)));
+        knee.push((width, json!(bits)));
         v.push(Variant {
             gradient: Some(12),
-            ..variant(
-                knee,
-                json!({"hardware": {"frac_bits": 12, "normal_bits": 6}}),
-            )
+            ..variant(knee, json!({"hardware": {"frac_bits": 12, width: bits}}))
         });
     }
     for s in [vb, vb + 2, vb + 6, vb + 8] {

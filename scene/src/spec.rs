@@ -516,6 +516,12 @@ impl Scene {
         s.validate()
     }
 
+    /// The scene is lit: a mode with colour, and shading enabled (the
+    /// lighting's tables, and its normal width, matter only then).
+    pub fn lit(&self) -> bool {
+        self.mode.uses_colour() && self.shading.enabled
+    }
+
     /// The camera this scene's view defines, in dataset voxel coordinates.
     pub fn camera(&self) -> Camera {
         self.camera.clone()

@@ -48,7 +48,7 @@ impl Shader {
         let widths = Widths::of(scene);
         let tf = TransferFn::new(scene);
         let mode = scene.mode;
-        let shading = mode.uses_colour() && scene.shading.enabled;
+        let shading = scene.lit();
         let grad_opacity = mode.uses_colour() && tf.has_gradient_opacity();
         let spacing = if mode == Mode::Composite {
             view.spacing

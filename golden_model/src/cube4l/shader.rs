@@ -49,7 +49,7 @@ impl Shader {
         let hw = scene.hardware;
         let tf = TransferFn::new(scene);
         let mode = scene.mode;
-        let shading = mode.uses_colour() && scene.shading.enabled;
+        let shading = scene.lit();
         let grad_opacity = mode.uses_colour() && tf.has_gradient_opacity();
         let spacing = if mode == Mode::Composite {
             sweep.spacing
