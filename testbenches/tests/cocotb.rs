@@ -1,7 +1,8 @@
 //! The compositor's emitted Verilog stands on its own: cocotb (Python, the
-//! verification engineers' tool) drives it under Icarus from the files
-//! `cube stage-vectors` writes, and checks every output against the golden
-//! model's; a wrong expected value makes the cocotb test fail.
+//! verification engineers' tool) drives it under Icarus and under
+//! Verilator from the files `cube stage-vectors` writes, and checks every
+//! output against the golden model's; a wrong expected value makes the
+//! cocotb test fail.
 
 use cosim::stage_vectors::compositor;
 use golden_model::cube4l::plan::Order;
@@ -30,8 +31,16 @@ fn python() -> PathBuf {
 
 /// Write the compositor's files into a folder of their own and run the
 /// cocotb test on them; its exit status and output.
-fn cocotb(name: &str, mode: Mode, edit: impl Fn(&mut serde_json::Value)) -> (bool, String) {
-    require_tool("iverilog");
+fn cocotb(
+    name: &str,
+    simulator: &str,
+    mode: Mode,
+    edit: impl Fn(&mut serde_json::Value),
+) -> (bool, String) {
+    require_tool(match simulator {
+        "icarus" => "iverilog",
+        other => other,
+    });
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
         .join("cocotb")
         .join(name);
@@ -42,10 +51,18 @@ fn cocotb(name: &str, mode: Mode, edit: impl Fn(&mut serde_json::Value)) -> (boo
     std::fs::write(dir.join("compositor.v"), &files.verilog).unwrap();
     std::fs::write(dir.join("compositor.json"), files.vectors.to_string()).unwrap();
     let run = Path::new(env!("CARGO_MANIFEST_DIR")).join("cocotb/run.py");
+    // cocotb finds its simulator on the PATH: the kit's Verilator first.
+    let verilator = cosim::tool::verilator();
+    let mut path =
+        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()).collect::<Vec<_>>();
+    if let Some(bin) = verilator.parent().filter(|d| !d.as_os_str().is_empty()) {
+        path.insert(0, bin.to_path_buf());
+    }
     let out = Command::new(python())
         .arg(run)
         .arg(&dir)
-        .arg("icarus")
+        .arg(simulator)
+        .env("PATH", std::env::join_paths(path).unwrap())
         .output()
         .unwrap();
     let text =
@@ -60,7 +77,7 @@ fn cocotb_drives_the_emitted_compositor_and_every_output_matches() {
         ("mip", Mode::Mip),
         ("xray", Mode::Xray),
     ] {
-        let (ok, text) = cocotb(name, mode, |_| {});
+        let (ok, text) = cocotb(name, "icarus", mode, |_| {});
         assert!(ok, "{name}: {text}");
         // 600 clocks, the first 2 before the pipeline's first output.
         assert!(
@@ -76,7 +93,25 @@ fn cocotb_drives_the_emitted_compositor_and_every_output_matches() {
 
 #[test]
 fn a_wrong_expected_output_fails_the_cocotb_test() {
-    let (ok, text) = cocotb("wrong", Mode::Composite, |v| {
+    let (ok, text) = cocotb("wrong", "icarus", Mode::Composite, |v| {
+        let g = v["expected"][300]["out_g"].as_u64().unwrap();
+        v["expected"][300]["out_g"] = (g ^ 1).into();
+    });
+    assert!(!ok, "{text}");
+    assert!(text.contains("clock 302: out_g"), "{text}");
+}
+
+/// The same files under Verilator (5.048, which cocotb 2.x needs): the
+/// composite stage passes, and the wrong expected value fails it.
+#[test]
+fn cocotb_drives_the_emitted_compositor_under_verilator_too() {
+    let (ok, text) = cocotb("verilator", "verilator", Mode::Composite, |_| {});
+    assert!(ok, "{text}");
+    assert!(
+        text.contains("2392 outputs checked over 600 clocks"),
+        "{text}"
+    );
+    let (ok, text) = cocotb("verilator_wrong", "verilator", Mode::Composite, |v| {
         let g = v["expected"][300]["out_g"].as_u64().unwrap();
         v["expected"][300]["out_g"] = (g ^ 1).into();
     });

@@ -188,7 +188,7 @@ fn designs() -> Vec<(PathBuf, Vec<String>)> {
     out
 }
 
-fn run(dir: &Path, program: &str, args: &[String]) -> (bool, String) {
+fn run(dir: &Path, program: &Path, args: &[String]) -> (bool, String) {
     let o = Command::new(program)
         .args(args)
         .current_dir(dir)
@@ -206,7 +206,7 @@ fn committed_verilog_lints_clean() {
     for (dir, files) in designs() {
         let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into(), "lint.vlt".into()];
         args.extend(files);
-        let (ok, log) = run(&dir, "verilator", &args);
+        let (ok, log) = run(&dir, &cosim::tool::verilator(), &args);
         assert!(ok, "{}: verilator -Wall:\n{log}", dir.display());
     }
 }
@@ -226,7 +226,7 @@ fn lint_without_waivers_flags_exactly_the_waived_rules() {
             .unwrap();
         let mut args: Vec<String> = vec!["--lint-only".into(), "-Wall".into()];
         args.extend(files);
-        let (ok, log) = run(&dir, "verilator", &args);
+        let (ok, log) = run(&dir, &cosim::tool::verilator(), &args);
         assert!(!ok, "{design}: lint passed without its waivers");
         for line in log.lines().filter(|l| l.starts_with("%Warning-")) {
             let rule = &line["%Warning-".len()..line.find(':').unwrap()];
@@ -244,7 +244,7 @@ fn committed_verilog_compiles_with_iverilog() {
     for (dir, files) in designs() {
         let mut args: Vec<String> = vec!["-g2012".into(), "-o".into(), "/dev/null".into()];
         args.extend(files);
-        let (ok, log) = run(&dir, "iverilog", &args);
+        let (ok, log) = run(&dir, Path::new("iverilog"), &args);
         assert!(ok, "{}: iverilog:\n{log}", dir.display());
     }
 }
