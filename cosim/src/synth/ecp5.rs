@@ -29,9 +29,7 @@ pub fn tool(name: &str) -> PathBuf {
     if on_path {
         return PathBuf::from(name);
     }
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../target/fpga/venv/bin")
-        .join(name)
+    crate::tool::venv_bin(name)
 }
 
 /// Place and route `synth.json` in `dir` (from yosys `synth_ecp5`); writes
