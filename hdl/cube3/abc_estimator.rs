@@ -34,15 +34,19 @@
 use super::abc_basis10::{self, AbcBasis10};
 use super::abc_sums26::{self, AbcSums26};
 use super::signed_product::SignedProduct;
-use crate::common::lerp::Lerp;
+use crate::common::lerp::{self, Lerp};
 use golden_model::cube3::plan::Neighbourhood;
 use rust_hdl::prelude::*;
 
-/// Clocks from the neighbourhood to the gradient word.
-pub const LATENCY: usize = 5;
-// The 26's differences take the 6's place in `gx_q[2]`; the 10's gradient
-// the shear's place in the last clock.
-const _: () = assert!(abc_sums26::LATENCY == 2 && abc_basis10::LATENCY == LAST);
+/// Clocks from the neighbourhood to the gradient word: the 12's two lerps
+/// in series, each split ([`lerp::SPLIT_LATENCY`]), and the saturation.
+pub const LATENCY: usize = 2 * lerp::SPLIT_LATENCY + 1;
+// The 26's differences take the 6's place in `gx_q[2]`; the 10's gradient,
+// two registers on, the shear's place in the last clock. The register
+// arrays below are written for these latencies (`hdl_gen` takes only
+// literal indices).
+const _: () = assert!(abc_sums26::LATENCY == 2 && abc_basis10::LATENCY + 2 == LAST);
+const _: () = assert!(LATENCY == 7);
 const LAST: usize = LATENCY - 1;
 
 /// `clamp(v, -lim, lim)` of a 64-bit two's-complement word, as 32 bits.
@@ -143,18 +147,22 @@ pub struct AbcEstimator {
     sign_ext: Constant<Bits<64>>,
     /// The 26: its differences, in place of the 6's from clock 2 on.
     sums26: AbcSums26,
-    /// The 10: its gradient, in place of the 6's in the last clock.
+    /// The 10: its gradient, two registers on, in place of the 6's in the
+    /// last clock.
     basis10: AbcBasis10,
-    /// The differences, G_x and G_y four clocks, G_r three (the 6).
-    gx_q: [DFF<Bits<32>>; 4],
-    gy_q: [DFF<Bits<32>>; 4],
-    gr_q: [DFF<Bits<32>>; 4],
-    /// The increments: |DY| for the 12's second lerps (two clocks), both
-    /// for the 6's shear (three).
-    dx_neg_q: [DFF<Bit>; 3],
-    dx_mag_q: [DFF<Bits<16>>; 3],
-    dy_neg_q: [DFF<Bit>; 3],
-    dy_mag_q: [DFF<Bits<16>>; 3],
+    b10x_q: [DFF<Bits<64>>; 2],
+    b10y_q: [DFF<Bits<64>>; 2],
+    b10z_q: [DFF<Bits<64>>; 2],
+    /// The differences, G_x, G_y and G_r to the last clock (the 6).
+    gx_q: [DFF<Bits<32>>; 6],
+    gy_q: [DFF<Bits<32>>; 6],
+    gr_q: [DFF<Bits<32>>; 6],
+    /// The increments: |DY| for the 12's second lerps (three clocks), both
+    /// for the 6's shear (five).
+    dx_neg_q: [DFF<Bit>; 5],
+    dx_mag_q: [DFF<Bits<16>>; 5],
+    dy_neg_q: [DFF<Bit>; 5],
+    dy_mag_q: [DFF<Bits<16>>; 5],
     /// The 6: the shear's products, registered.
     px: SignedProduct,
     py: SignedProduct,
@@ -198,7 +206,7 @@ impl AbcEstimator {
         gradient_bits: u32,
         wide: bool,
     ) -> Result<AbcEstimator, String> {
-        let lerp = || Lerp::new(weight_bits, wide);
+        let lerp = || Lerp::split(weight_bits, wide);
         Ok(AbcEstimator {
             clock: Default::default(),
             xp: Default::default(),
@@ -245,6 +253,9 @@ impl AbcEstimator {
             n10: Constant::new(n == Neighbourhood::N10),
             sums26: Default::default(),
             basis10: AbcBasis10::new(weight_bits, wide),
+            b10x_q: Default::default(),
+            b10y_q: Default::default(),
+            b10z_q: Default::default(),
             half: Constant::new((1u64 << (weight_bits - 1)).to_bits()),
             shift: Constant::new((weight_bits as u64).to_bits()),
             sign_ext: Constant::new((u64::MAX << 32).to_bits()),
@@ -306,12 +317,17 @@ impl Logic for AbcEstimator {
         for i in LAST..LATENCY {
             self.sample.next = self.centre_q[i].q.val();
         }
-        for i in 0..4 {
+        for i in 0..6 {
             self.gx_q[i].clock.next = self.clock.val();
             self.gy_q[i].clock.next = self.clock.val();
             self.gr_q[i].clock.next = self.clock.val();
         }
-        for i in 0..3 {
+        for i in 0..2 {
+            self.b10x_q[i].clock.next = self.clock.val();
+            self.b10y_q[i].clock.next = self.clock.val();
+            self.b10z_q[i].clock.next = self.clock.val();
+        }
+        for i in 0..5 {
             self.dx_neg_q[i].clock.next = self.clock.val();
             self.dx_mag_q[i].clock.next = self.clock.val();
             self.dy_neg_q[i].clock.next = self.clock.val();
@@ -327,7 +343,7 @@ impl Logic for AbcEstimator {
         self.gx_q[0].d.next = self.xp.val() - self.xm.val();
         self.gy_q[0].d.next = self.yp.val() - self.ym.val();
         self.gr_q[0].d.next = self.kp4.val() - self.km4.val();
-        for i in 1..4 {
+        for i in 1..6 {
             self.gx_q[i].d.next = self.gx_q[i - 1].q.val();
             self.gy_q[i].d.next = self.gy_q[i - 1].q.val();
             self.gr_q[i].d.next = self.gr_q[i - 1].q.val();
@@ -360,7 +376,7 @@ impl Logic for AbcEstimator {
         self.sums26.km6.next = self.km6.val();
         self.sums26.km7.next = self.km7.val();
         self.sums26.km8.next = self.km8.val();
-        // The 10, clocks 0-4.
+        // The 10, clocks 0-4, then two registers.
         self.basis10.clock.next = self.clock.val();
         self.basis10.xp.next = self.xp.val();
         self.basis10.xm.next = self.xm.val();
@@ -393,19 +409,19 @@ impl Logic for AbcEstimator {
         self.dx_mag_q[0].d.next = self.dx_mag.val();
         self.dy_neg_q[0].d.next = self.dy_neg.val();
         self.dy_mag_q[0].d.next = self.dy_mag.val();
-        for i in 1..3 {
+        for i in 1..5 {
             self.dx_neg_q[i].d.next = self.dx_neg_q[i - 1].q.val();
             self.dx_mag_q[i].d.next = self.dx_mag_q[i - 1].q.val();
             self.dy_neg_q[i].d.next = self.dy_neg_q[i - 1].q.val();
             self.dy_mag_q[i].d.next = self.dy_mag_q[i - 1].q.val();
         }
-        // The 6, clock 3: the shear's products; clock 4: their rounded sum.
-        self.px.g.next = self.gx_q[2].q.val();
-        self.px.d_neg.next = self.dx_neg_q[2].q.val();
-        self.px.d_mag.next = self.dx_mag_q[2].q.val();
-        self.py.g.next = self.gy_q[2].q.val();
-        self.py.d_neg.next = self.dy_neg_q[2].q.val();
-        self.py.d_mag.next = self.dy_mag_q[2].q.val();
+        // The 6, clock 5: the shear's products; clock 6: their rounded sum.
+        self.px.g.next = self.gx_q[4].q.val();
+        self.px.d_neg.next = self.dx_neg_q[4].q.val();
+        self.px.d_mag.next = self.dx_mag_q[4].q.val();
+        self.py.g.next = self.gy_q[4].q.val();
+        self.py.d_neg.next = self.dy_neg_q[4].q.val();
+        self.py.d_mag.next = self.dy_mag_q[4].q.val();
         self.px_q.d.next = self.px.y.val();
         self.py_q.d.next = self.py.y.val();
         self.shear_sum.next = self.px_q.q.val() + self.py_q.q.val() + self.half.val();
@@ -465,7 +481,7 @@ impl Logic for AbcEstimator {
             self.back_x.next = self.km5.val();
             self.back_xy.next = self.back_row[2].val();
         }
-        // Clocks 0-4: the two bilinear interpolations.
+        // Clocks 0-6: the two bilinear interpolations, each lerp split.
         self.front_top.a.next = self.kp4.val();
         self.front_top.b.next = self.front_x.val();
         self.front_top.w.next = self.dx_mag.val();
@@ -474,7 +490,7 @@ impl Logic for AbcEstimator {
         self.front_bottom.w.next = self.dx_mag.val();
         self.front_y.a.next = self.front_top.y.val();
         self.front_y.b.next = self.front_bottom.y.val();
-        self.front_y.w.next = self.dy_mag_q[1].q.val();
+        self.front_y.w.next = self.dy_mag_q[2].q.val();
         self.back_top.a.next = self.km4.val();
         self.back_top.b.next = self.back_x.val();
         self.back_top.w.next = self.dx_mag.val();
@@ -483,30 +499,36 @@ impl Logic for AbcEstimator {
         self.back_bottom.w.next = self.dx_mag.val();
         self.back_y.a.next = self.back_top.y.val();
         self.back_y.b.next = self.back_bottom.y.val();
-        self.back_y.w.next = self.dy_mag_q[1].q.val();
-        // Clock 4: g_z of the chosen neighbourhood, sign-extended to 64 bits.
-        self.gr_wide.next = bit_cast::<64, 32>(self.gr_q[3].q.val());
-        if self.gr_q[3].q.val().get_bit(31) {
-            self.gr_wide.next = bit_cast::<64, 32>(self.gr_q[3].q.val()) | self.sign_ext.val();
+        self.back_y.w.next = self.dy_mag_q[2].q.val();
+        // Clock 6: g_z of the chosen neighbourhood, sign-extended to 64 bits.
+        self.gr_wide.next = bit_cast::<64, 32>(self.gr_q[5].q.val());
+        if self.gr_q[5].q.val().get_bit(31) {
+            self.gr_wide.next = bit_cast::<64, 32>(self.gr_q[5].q.val()) | self.sign_ext.val();
         }
         self.gz_wide.next = self.gr_wide.val() - self.shear.val();
         if self.n12.val() {
             self.gz_wide.next =
                 bit_cast::<64, 32>(self.front_y.y.val()) - bit_cast::<64, 32>(self.back_y.y.val());
         }
-        self.sat_x.v.next = bit_cast::<64, 32>(self.gx_q[3].q.val());
-        if self.gx_q[3].q.val().get_bit(31) {
-            self.sat_x.v.next = bit_cast::<64, 32>(self.gx_q[3].q.val()) | self.sign_ext.val();
+        self.sat_x.v.next = bit_cast::<64, 32>(self.gx_q[5].q.val());
+        if self.gx_q[5].q.val().get_bit(31) {
+            self.sat_x.v.next = bit_cast::<64, 32>(self.gx_q[5].q.val()) | self.sign_ext.val();
         }
-        self.sat_y.v.next = bit_cast::<64, 32>(self.gy_q[3].q.val());
-        if self.gy_q[3].q.val().get_bit(31) {
-            self.sat_y.v.next = bit_cast::<64, 32>(self.gy_q[3].q.val()) | self.sign_ext.val();
+        self.sat_y.v.next = bit_cast::<64, 32>(self.gy_q[5].q.val());
+        if self.gy_q[5].q.val().get_bit(31) {
+            self.sat_y.v.next = bit_cast::<64, 32>(self.gy_q[5].q.val()) | self.sign_ext.val();
         }
         self.sat_z.v.next = self.gz_wide.val();
+        self.b10x_q[0].d.next = self.basis10.gx.val();
+        self.b10y_q[0].d.next = self.basis10.gy.val();
+        self.b10z_q[0].d.next = self.basis10.gz.val();
+        self.b10x_q[1].d.next = self.b10x_q[0].q.val();
+        self.b10y_q[1].d.next = self.b10y_q[0].q.val();
+        self.b10z_q[1].d.next = self.b10z_q[0].q.val();
         if self.n10.val() {
-            self.sat_x.v.next = self.basis10.gx.val();
-            self.sat_y.v.next = self.basis10.gy.val();
-            self.sat_z.v.next = self.basis10.gz.val();
+            self.sat_x.v.next = self.b10x_q[1].q.val();
+            self.sat_y.v.next = self.b10y_q[1].q.val();
+            self.sat_z.v.next = self.b10z_q[1].q.val();
         }
         self.gx_out.d.next = self.sat_x.y.val();
         self.gy_out.d.next = self.sat_y.y.val();

@@ -981,6 +981,24 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -993,6 +1011,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -1005,6 +1029,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -1017,6 +1047,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -1026,6 +1062,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -1035,6 +1077,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -1044,6 +1092,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -1053,6 +1107,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -1127,6 +1187,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -1149,6 +1215,36 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$0$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$0$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -1168,6 +1264,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$0$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -1189,6 +1295,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -1209,6 +1325,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -1223,6 +1349,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$0$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -1239,6 +1375,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -1254,6 +1400,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -1268,6 +1424,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$0$px px(
         .g(px$g),
@@ -1385,6 +1551,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$0$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$0$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -1403,12 +1579,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -1421,6 +1601,18 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -1433,6 +1625,14 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -1451,6 +1651,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -1518,12 +1724,20 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -1589,7 +1803,7 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -1598,28 +1812,34 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -1630,6 +1850,108 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$0
+module top$pipeline$abc$estimators$0$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$0
+module top$pipeline$abc$estimators$0$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$1
+module top$pipeline$abc$estimators$0$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$0
+module top$pipeline$abc$estimators$0$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$1
+module top$pipeline$abc$estimators$0$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$0
+module top$pipeline$abc$estimators$0$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$1
 module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -1643,7 +1965,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1929,7 +2251,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2215,7 +2537,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2573,6 +2895,40 @@ module top$pipeline$abc$estimators$0$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$centre_q$4
+module top$pipeline$abc$estimators$0$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$5
+module top$pipeline$abc$estimators$0$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$6
 module top$pipeline$abc$estimators$0$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2624,6 +2980,40 @@ module top$pipeline$abc$estimators$0$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_mag_q$2
+module top$pipeline$abc$estimators$0$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$3
+module top$pipeline$abc$estimators$0$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$4
 module top$pipeline$abc$estimators$0$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2675,6 +3065,40 @@ module top$pipeline$abc$estimators$0$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_neg_q$2
+module top$pipeline$abc$estimators$0$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$3
+module top$pipeline$abc$estimators$0$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$4
 module top$pipeline$abc$estimators$0$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2726,6 +3150,40 @@ module top$pipeline$abc$estimators$0$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_mag_q$2
+module top$pipeline$abc$estimators$0$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$3
+module top$pipeline$abc$estimators$0$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$4
 module top$pipeline$abc$estimators$0$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2777,6 +3235,40 @@ module top$pipeline$abc$estimators$0$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_neg_q$2
+module top$pipeline$abc$estimators$0$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$3
+module top$pipeline$abc$estimators$0$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$4
 module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -2790,7 +3282,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3076,7 +3568,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3362,7 +3854,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3703,6 +4195,40 @@ module top$pipeline$abc$estimators$0$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gr_q$3
+module top$pipeline$abc$estimators$0$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$4
+module top$pipeline$abc$estimators$0$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$5
 module top$pipeline$abc$estimators$0$gx_out(d,q,clock);
     
     // Module arguments
@@ -3788,6 +4314,40 @@ module top$pipeline$abc$estimators$0$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gx_q$3
+module top$pipeline$abc$estimators$0$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$4
+module top$pipeline$abc$estimators$0$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$5
 module top$pipeline$abc$estimators$0$gy_out(d,q,clock);
     
     // Module arguments
@@ -3873,6 +4433,40 @@ module top$pipeline$abc$estimators$0$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gy_q$3
+module top$pipeline$abc$estimators$0$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$4
+module top$pipeline$abc$estimators$0$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$5
 module top$pipeline$abc$estimators$0$gz_out(d,q,clock);
     
     // Module arguments
@@ -4197,6 +4791,24 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -4209,6 +4821,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -4221,6 +4839,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -4233,6 +4857,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -4242,6 +4872,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -4251,6 +4887,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -4260,6 +4902,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -4269,6 +4917,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -4343,6 +4997,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -4365,6 +5025,36 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$1$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$1$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -4384,6 +5074,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$1$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -4405,6 +5105,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -4425,6 +5135,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -4439,6 +5159,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$1$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -4455,6 +5185,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -4470,6 +5210,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -4484,6 +5234,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$1$px px(
         .g(px$g),
@@ -4601,6 +5361,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$1$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$1$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4619,12 +5389,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -4637,6 +5411,18 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -4649,6 +5435,14 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -4667,6 +5461,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -4734,12 +5534,20 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -4805,7 +5613,7 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -4814,28 +5622,34 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -4846,6 +5660,108 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$1
+module top$pipeline$abc$estimators$1$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$0
+module top$pipeline$abc$estimators$1$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$1
+module top$pipeline$abc$estimators$1$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$0
+module top$pipeline$abc$estimators$1$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$1
+module top$pipeline$abc$estimators$1$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$0
+module top$pipeline$abc$estimators$1$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$1
 module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -4859,7 +5775,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5145,7 +6061,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5431,7 +6347,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5789,6 +6705,40 @@ module top$pipeline$abc$estimators$1$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$centre_q$4
+module top$pipeline$abc$estimators$1$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$5
+module top$pipeline$abc$estimators$1$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$6
 module top$pipeline$abc$estimators$1$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -5840,6 +6790,40 @@ module top$pipeline$abc$estimators$1$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_mag_q$2
+module top$pipeline$abc$estimators$1$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$3
+module top$pipeline$abc$estimators$1$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$4
 module top$pipeline$abc$estimators$1$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -5891,6 +6875,40 @@ module top$pipeline$abc$estimators$1$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_neg_q$2
+module top$pipeline$abc$estimators$1$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$3
+module top$pipeline$abc$estimators$1$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$4
 module top$pipeline$abc$estimators$1$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -5942,6 +6960,40 @@ module top$pipeline$abc$estimators$1$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_mag_q$2
+module top$pipeline$abc$estimators$1$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$3
+module top$pipeline$abc$estimators$1$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$4
 module top$pipeline$abc$estimators$1$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -5993,6 +7045,40 @@ module top$pipeline$abc$estimators$1$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_neg_q$2
+module top$pipeline$abc$estimators$1$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$3
+module top$pipeline$abc$estimators$1$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$4
 module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -6006,7 +7092,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6292,7 +7378,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6578,7 +7664,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6919,6 +8005,40 @@ module top$pipeline$abc$estimators$1$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gr_q$3
+module top$pipeline$abc$estimators$1$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$4
+module top$pipeline$abc$estimators$1$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$5
 module top$pipeline$abc$estimators$1$gx_out(d,q,clock);
     
     // Module arguments
@@ -7004,6 +8124,40 @@ module top$pipeline$abc$estimators$1$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gx_q$3
+module top$pipeline$abc$estimators$1$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$4
+module top$pipeline$abc$estimators$1$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$5
 module top$pipeline$abc$estimators$1$gy_out(d,q,clock);
     
     // Module arguments
@@ -7089,6 +8243,40 @@ module top$pipeline$abc$estimators$1$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gy_q$3
+module top$pipeline$abc$estimators$1$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$4
+module top$pipeline$abc$estimators$1$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$5
 module top$pipeline$abc$estimators$1$gz_out(d,q,clock);
     
     // Module arguments
@@ -7413,6 +8601,24 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -7425,6 +8631,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -7437,6 +8649,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -7449,6 +8667,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -7458,6 +8682,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -7467,6 +8697,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -7476,6 +8712,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -7485,6 +8727,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -7559,6 +8807,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -7581,6 +8835,36 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$2$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$2$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$2$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$2$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -7600,6 +8884,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$2$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -7621,6 +8915,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$2$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$2$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -7641,6 +8945,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$2$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$2$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -7655,6 +8969,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$2$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -7671,6 +8995,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$2$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$2$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -7686,6 +9020,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$2$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$2$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -7700,6 +9044,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$2$px px(
         .g(px$g),
@@ -7817,6 +9171,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$2$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$2$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -7835,12 +9199,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -7853,6 +9221,18 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -7865,6 +9245,14 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -7883,6 +9271,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -7950,12 +9344,20 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -8021,7 +9423,7 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -8030,28 +9432,34 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -8062,6 +9470,108 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$2
+module top$pipeline$abc$estimators$2$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10x_q$0
+module top$pipeline$abc$estimators$2$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10x_q$1
+module top$pipeline$abc$estimators$2$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10y_q$0
+module top$pipeline$abc$estimators$2$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10y_q$1
+module top$pipeline$abc$estimators$2$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10z_q$0
+module top$pipeline$abc$estimators$2$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10z_q$1
 module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -8075,7 +9585,7 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8361,7 +9871,7 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -8647,7 +10157,7 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9005,6 +10515,40 @@ module top$pipeline$abc$estimators$2$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$centre_q$4
+module top$pipeline$abc$estimators$2$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$centre_q$5
+module top$pipeline$abc$estimators$2$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$centre_q$6
 module top$pipeline$abc$estimators$2$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -9056,6 +10600,40 @@ module top$pipeline$abc$estimators$2$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dx_mag_q$2
+module top$pipeline$abc$estimators$2$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_mag_q$3
+module top$pipeline$abc$estimators$2$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_mag_q$4
 module top$pipeline$abc$estimators$2$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -9107,6 +10685,40 @@ module top$pipeline$abc$estimators$2$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dx_neg_q$2
+module top$pipeline$abc$estimators$2$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_neg_q$3
+module top$pipeline$abc$estimators$2$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_neg_q$4
 module top$pipeline$abc$estimators$2$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -9158,6 +10770,40 @@ module top$pipeline$abc$estimators$2$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dy_mag_q$2
+module top$pipeline$abc$estimators$2$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_mag_q$3
+module top$pipeline$abc$estimators$2$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_mag_q$4
 module top$pipeline$abc$estimators$2$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -9209,6 +10855,40 @@ module top$pipeline$abc$estimators$2$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dy_neg_q$2
+module top$pipeline$abc$estimators$2$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_neg_q$3
+module top$pipeline$abc$estimators$2$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_neg_q$4
 module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -9222,7 +10902,7 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9508,7 +11188,7 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9794,7 +11474,7 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10135,6 +11815,40 @@ module top$pipeline$abc$estimators$2$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gr_q$3
+module top$pipeline$abc$estimators$2$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gr_q$4
+module top$pipeline$abc$estimators$2$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gr_q$5
 module top$pipeline$abc$estimators$2$gx_out(d,q,clock);
     
     // Module arguments
@@ -10220,6 +11934,40 @@ module top$pipeline$abc$estimators$2$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gx_q$3
+module top$pipeline$abc$estimators$2$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gx_q$4
+module top$pipeline$abc$estimators$2$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gx_q$5
 module top$pipeline$abc$estimators$2$gy_out(d,q,clock);
     
     // Module arguments
@@ -10305,6 +12053,40 @@ module top$pipeline$abc$estimators$2$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gy_q$3
+module top$pipeline$abc$estimators$2$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gy_q$4
+module top$pipeline$abc$estimators$2$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gy_q$5
 module top$pipeline$abc$estimators$2$gz_out(d,q,clock);
     
     // Module arguments
@@ -10629,6 +12411,24 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -10641,6 +12441,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -10653,6 +12459,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -10665,6 +12477,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -10674,6 +12492,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -10683,6 +12507,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -10692,6 +12522,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -10701,6 +12537,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -10775,6 +12617,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -10797,6 +12645,36 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$3$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$3$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$3$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$3$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -10816,6 +12694,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$3$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -10837,6 +12725,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$3$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$3$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -10857,6 +12755,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$3$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$3$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -10871,6 +12779,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$3$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -10887,6 +12805,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$3$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$3$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -10902,6 +12830,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$3$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$3$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -10916,6 +12854,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$3$px px(
         .g(px$g),
@@ -11033,6 +12981,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$3$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$3$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -11051,12 +13009,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -11069,6 +13031,18 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -11081,6 +13055,14 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -11099,6 +13081,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -11166,12 +13154,20 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -11237,7 +13233,7 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -11246,28 +13242,34 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -11278,6 +13280,108 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$3
+module top$pipeline$abc$estimators$3$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10x_q$0
+module top$pipeline$abc$estimators$3$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10x_q$1
+module top$pipeline$abc$estimators$3$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10y_q$0
+module top$pipeline$abc$estimators$3$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10y_q$1
+module top$pipeline$abc$estimators$3$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10z_q$0
+module top$pipeline$abc$estimators$3$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10z_q$1
 module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -11291,7 +13395,7 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -11577,7 +13681,7 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -11863,7 +13967,7 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -12221,6 +14325,40 @@ module top$pipeline$abc$estimators$3$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$centre_q$4
+module top$pipeline$abc$estimators$3$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$centre_q$5
+module top$pipeline$abc$estimators$3$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$centre_q$6
 module top$pipeline$abc$estimators$3$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -12272,6 +14410,40 @@ module top$pipeline$abc$estimators$3$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dx_mag_q$2
+module top$pipeline$abc$estimators$3$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_mag_q$3
+module top$pipeline$abc$estimators$3$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_mag_q$4
 module top$pipeline$abc$estimators$3$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -12323,6 +14495,40 @@ module top$pipeline$abc$estimators$3$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dx_neg_q$2
+module top$pipeline$abc$estimators$3$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_neg_q$3
+module top$pipeline$abc$estimators$3$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_neg_q$4
 module top$pipeline$abc$estimators$3$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -12374,6 +14580,40 @@ module top$pipeline$abc$estimators$3$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dy_mag_q$2
+module top$pipeline$abc$estimators$3$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_mag_q$3
+module top$pipeline$abc$estimators$3$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_mag_q$4
 module top$pipeline$abc$estimators$3$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -12425,6 +14665,40 @@ module top$pipeline$abc$estimators$3$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dy_neg_q$2
+module top$pipeline$abc$estimators$3$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_neg_q$3
+module top$pipeline$abc$estimators$3$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_neg_q$4
 module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -12438,7 +14712,7 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -12724,7 +14998,7 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -13010,7 +15284,7 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -13351,6 +15625,40 @@ module top$pipeline$abc$estimators$3$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gr_q$3
+module top$pipeline$abc$estimators$3$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gr_q$4
+module top$pipeline$abc$estimators$3$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gr_q$5
 module top$pipeline$abc$estimators$3$gx_out(d,q,clock);
     
     // Module arguments
@@ -13436,6 +15744,40 @@ module top$pipeline$abc$estimators$3$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gx_q$3
+module top$pipeline$abc$estimators$3$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gx_q$4
+module top$pipeline$abc$estimators$3$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gx_q$5
 module top$pipeline$abc$estimators$3$gy_out(d,q,clock);
     
     // Module arguments
@@ -13521,6 +15863,40 @@ module top$pipeline$abc$estimators$3$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gy_q$3
+module top$pipeline$abc$estimators$3$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gy_q$4
+module top$pipeline$abc$estimators$3$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gy_q$5
 module top$pipeline$abc$estimators$3$gz_out(d,q,clock);
     
     // Module arguments

@@ -981,6 +981,24 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -993,6 +1011,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -1005,6 +1029,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -1017,6 +1047,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -1026,6 +1062,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -1035,6 +1077,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -1044,6 +1092,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -1053,6 +1107,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -1127,6 +1187,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -1181,6 +1247,36 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .gy(sums26$gy),
         .gr(sums26$gr)
     );
+    top$pipeline$abc$estimators$0$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$0$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -1200,6 +1296,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$0$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -1221,6 +1327,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -1241,6 +1357,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -1255,6 +1381,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$0$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -1271,6 +1407,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -1286,6 +1432,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -1300,6 +1456,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$0$px px(
         .g(px$g),
@@ -1417,6 +1583,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$0$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$0$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -1435,12 +1611,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -1453,6 +1633,18 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -1465,6 +1657,14 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -1483,6 +1683,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -1550,12 +1756,20 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -1621,7 +1835,7 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -1630,28 +1844,34 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -1662,6 +1882,108 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$0
+module top$pipeline$abc$estimators$0$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$0
+module top$pipeline$abc$estimators$0$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$1
+module top$pipeline$abc$estimators$0$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$0
+module top$pipeline$abc$estimators$0$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$1
+module top$pipeline$abc$estimators$0$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$0
+module top$pipeline$abc$estimators$0$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$1
 module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -1675,7 +1997,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1961,7 +2283,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2247,7 +2569,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2605,6 +2927,40 @@ module top$pipeline$abc$estimators$0$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$centre_q$4
+module top$pipeline$abc$estimators$0$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$5
+module top$pipeline$abc$estimators$0$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$6
 module top$pipeline$abc$estimators$0$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2656,6 +3012,40 @@ module top$pipeline$abc$estimators$0$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_mag_q$2
+module top$pipeline$abc$estimators$0$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$3
+module top$pipeline$abc$estimators$0$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$4
 module top$pipeline$abc$estimators$0$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2707,6 +3097,40 @@ module top$pipeline$abc$estimators$0$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_neg_q$2
+module top$pipeline$abc$estimators$0$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$3
+module top$pipeline$abc$estimators$0$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$4
 module top$pipeline$abc$estimators$0$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2758,6 +3182,40 @@ module top$pipeline$abc$estimators$0$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_mag_q$2
+module top$pipeline$abc$estimators$0$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$3
+module top$pipeline$abc$estimators$0$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$4
 module top$pipeline$abc$estimators$0$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2809,6 +3267,40 @@ module top$pipeline$abc$estimators$0$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_neg_q$2
+module top$pipeline$abc$estimators$0$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$3
+module top$pipeline$abc$estimators$0$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$4
 module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -2822,7 +3314,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3108,7 +3600,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3394,7 +3886,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3735,6 +4227,40 @@ module top$pipeline$abc$estimators$0$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gr_q$3
+module top$pipeline$abc$estimators$0$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$4
+module top$pipeline$abc$estimators$0$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$5
 module top$pipeline$abc$estimators$0$gx_out(d,q,clock);
     
     // Module arguments
@@ -3820,6 +4346,40 @@ module top$pipeline$abc$estimators$0$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gx_q$3
+module top$pipeline$abc$estimators$0$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$4
+module top$pipeline$abc$estimators$0$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$5
 module top$pipeline$abc$estimators$0$gy_out(d,q,clock);
     
     // Module arguments
@@ -3905,6 +4465,40 @@ module top$pipeline$abc$estimators$0$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gy_q$3
+module top$pipeline$abc$estimators$0$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$4
+module top$pipeline$abc$estimators$0$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$5
 module top$pipeline$abc$estimators$0$gz_out(d,q,clock);
     
     // Module arguments
@@ -4626,6 +5220,24 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -4638,6 +5250,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -4650,6 +5268,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -4662,6 +5286,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -4671,6 +5301,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -4680,6 +5316,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -4689,6 +5331,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -4698,6 +5346,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -4772,6 +5426,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -4826,6 +5486,36 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .gy(sums26$gy),
         .gr(sums26$gr)
     );
+    top$pipeline$abc$estimators$1$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$1$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -4845,6 +5535,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$1$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -4866,6 +5566,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -4886,6 +5596,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -4900,6 +5620,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$1$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -4916,6 +5646,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -4931,6 +5671,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -4945,6 +5695,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$1$px px(
         .g(px$g),
@@ -5062,6 +5822,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$1$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$1$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -5080,12 +5850,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -5098,6 +5872,18 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -5110,6 +5896,14 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -5128,6 +5922,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -5195,12 +5995,20 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -5266,7 +6074,7 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -5275,28 +6083,34 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -5307,6 +6121,108 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$1
+module top$pipeline$abc$estimators$1$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$0
+module top$pipeline$abc$estimators$1$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$1
+module top$pipeline$abc$estimators$1$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$0
+module top$pipeline$abc$estimators$1$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$1
+module top$pipeline$abc$estimators$1$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$0
+module top$pipeline$abc$estimators$1$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$1
 module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -5320,7 +6236,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5606,7 +6522,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5892,7 +6808,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6250,6 +7166,40 @@ module top$pipeline$abc$estimators$1$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$centre_q$4
+module top$pipeline$abc$estimators$1$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$5
+module top$pipeline$abc$estimators$1$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$6
 module top$pipeline$abc$estimators$1$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -6301,6 +7251,40 @@ module top$pipeline$abc$estimators$1$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_mag_q$2
+module top$pipeline$abc$estimators$1$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$3
+module top$pipeline$abc$estimators$1$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$4
 module top$pipeline$abc$estimators$1$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -6352,6 +7336,40 @@ module top$pipeline$abc$estimators$1$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_neg_q$2
+module top$pipeline$abc$estimators$1$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$3
+module top$pipeline$abc$estimators$1$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$4
 module top$pipeline$abc$estimators$1$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -6403,6 +7421,40 @@ module top$pipeline$abc$estimators$1$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_mag_q$2
+module top$pipeline$abc$estimators$1$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$3
+module top$pipeline$abc$estimators$1$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$4
 module top$pipeline$abc$estimators$1$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -6454,6 +7506,40 @@ module top$pipeline$abc$estimators$1$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_neg_q$2
+module top$pipeline$abc$estimators$1$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$3
+module top$pipeline$abc$estimators$1$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$4
 module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -6467,7 +7553,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6753,7 +7839,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7039,7 +8125,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -7380,6 +8466,40 @@ module top$pipeline$abc$estimators$1$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gr_q$3
+module top$pipeline$abc$estimators$1$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$4
+module top$pipeline$abc$estimators$1$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$5
 module top$pipeline$abc$estimators$1$gx_out(d,q,clock);
     
     // Module arguments
@@ -7465,6 +8585,40 @@ module top$pipeline$abc$estimators$1$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gx_q$3
+module top$pipeline$abc$estimators$1$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$4
+module top$pipeline$abc$estimators$1$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$5
 module top$pipeline$abc$estimators$1$gy_out(d,q,clock);
     
     // Module arguments
@@ -7550,6 +8704,40 @@ module top$pipeline$abc$estimators$1$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gy_q$3
+module top$pipeline$abc$estimators$1$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$4
+module top$pipeline$abc$estimators$1$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$5
 module top$pipeline$abc$estimators$1$gz_out(d,q,clock);
     
     // Module arguments
@@ -8271,6 +9459,24 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -8283,6 +9489,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -8295,6 +9507,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -8307,6 +9525,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -8316,6 +9540,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -8325,6 +9555,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -8334,6 +9570,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -8343,6 +9585,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -8417,6 +9665,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -8471,6 +9725,36 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .gy(sums26$gy),
         .gr(sums26$gr)
     );
+    top$pipeline$abc$estimators$2$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$2$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$2$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$2$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$2$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -8490,6 +9774,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$2$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -8511,6 +9805,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$2$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$2$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -8531,6 +9835,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$2$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$2$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$2$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -8545,6 +9859,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$2$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -8561,6 +9885,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$2$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$2$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -8576,6 +9910,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$2$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$2$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -8590,6 +9934,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$2$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$2$px px(
         .g(px$g),
@@ -8707,6 +10061,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$2$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$2$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -8725,12 +10089,16 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -8743,6 +10111,18 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -8755,6 +10135,14 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -8773,6 +10161,12 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -8840,12 +10234,20 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -8911,7 +10313,7 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -8920,28 +10322,34 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -8952,6 +10360,108 @@ module top$pipeline$abc$estimators$2(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$2
+module top$pipeline$abc$estimators$2$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10x_q$0
+module top$pipeline$abc$estimators$2$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10x_q$1
+module top$pipeline$abc$estimators$2$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10y_q$0
+module top$pipeline$abc$estimators$2$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10y_q$1
+module top$pipeline$abc$estimators$2$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10z_q$0
+module top$pipeline$abc$estimators$2$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$b10z_q$1
 module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -8965,7 +10475,7 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9251,7 +10761,7 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9537,7 +11047,7 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -9895,6 +11405,40 @@ module top$pipeline$abc$estimators$2$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$centre_q$4
+module top$pipeline$abc$estimators$2$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$centre_q$5
+module top$pipeline$abc$estimators$2$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$centre_q$6
 module top$pipeline$abc$estimators$2$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -9946,6 +11490,40 @@ module top$pipeline$abc$estimators$2$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dx_mag_q$2
+module top$pipeline$abc$estimators$2$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_mag_q$3
+module top$pipeline$abc$estimators$2$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_mag_q$4
 module top$pipeline$abc$estimators$2$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -9997,6 +11575,40 @@ module top$pipeline$abc$estimators$2$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dx_neg_q$2
+module top$pipeline$abc$estimators$2$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_neg_q$3
+module top$pipeline$abc$estimators$2$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dx_neg_q$4
 module top$pipeline$abc$estimators$2$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -10048,6 +11660,40 @@ module top$pipeline$abc$estimators$2$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dy_mag_q$2
+module top$pipeline$abc$estimators$2$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_mag_q$3
+module top$pipeline$abc$estimators$2$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_mag_q$4
 module top$pipeline$abc$estimators$2$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -10099,6 +11745,40 @@ module top$pipeline$abc$estimators$2$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$dy_neg_q$2
+module top$pipeline$abc$estimators$2$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_neg_q$3
+module top$pipeline$abc$estimators$2$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$dy_neg_q$4
 module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -10112,7 +11792,7 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10398,7 +12078,7 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -10684,7 +12364,7 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -11025,6 +12705,40 @@ module top$pipeline$abc$estimators$2$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gr_q$3
+module top$pipeline$abc$estimators$2$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gr_q$4
+module top$pipeline$abc$estimators$2$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gr_q$5
 module top$pipeline$abc$estimators$2$gx_out(d,q,clock);
     
     // Module arguments
@@ -11110,6 +12824,40 @@ module top$pipeline$abc$estimators$2$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gx_q$3
+module top$pipeline$abc$estimators$2$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gx_q$4
+module top$pipeline$abc$estimators$2$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gx_q$5
 module top$pipeline$abc$estimators$2$gy_out(d,q,clock);
     
     // Module arguments
@@ -11195,6 +12943,40 @@ module top$pipeline$abc$estimators$2$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$gy_q$3
+module top$pipeline$abc$estimators$2$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gy_q$4
+module top$pipeline$abc$estimators$2$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$2$gy_q$5
 module top$pipeline$abc$estimators$2$gz_out(d,q,clock);
     
     // Module arguments
@@ -11916,6 +13698,24 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -11928,6 +13728,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -11940,6 +13746,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -11952,6 +13764,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -11961,6 +13779,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -11970,6 +13794,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -11979,6 +13809,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -11988,6 +13824,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -12062,6 +13904,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -12116,6 +13964,36 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .gy(sums26$gy),
         .gr(sums26$gr)
     );
+    top$pipeline$abc$estimators$3$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$3$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$3$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$3$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$3$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -12135,6 +14013,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$3$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -12156,6 +14044,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$3$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$3$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -12176,6 +14074,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$3$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$3$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$3$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -12190,6 +14098,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$3$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -12206,6 +14124,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$3$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$3$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -12221,6 +14149,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$3$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$3$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -12235,6 +14173,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$3$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$3$px px(
         .g(px$g),
@@ -12352,6 +14300,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$3$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$3$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -12370,12 +14328,16 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -12388,6 +14350,18 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -12400,6 +14374,14 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -12418,6 +14400,12 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -12485,12 +14473,20 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -12556,7 +14552,7 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -12565,28 +14561,34 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -12597,6 +14599,108 @@ module top$pipeline$abc$estimators$3(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$3
+module top$pipeline$abc$estimators$3$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10x_q$0
+module top$pipeline$abc$estimators$3$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10x_q$1
+module top$pipeline$abc$estimators$3$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10y_q$0
+module top$pipeline$abc$estimators$3$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10y_q$1
+module top$pipeline$abc$estimators$3$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10z_q$0
+module top$pipeline$abc$estimators$3$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$b10z_q$1
 module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -12610,7 +14714,7 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -12896,7 +15000,7 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -13182,7 +15286,7 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -13540,6 +15644,40 @@ module top$pipeline$abc$estimators$3$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$centre_q$4
+module top$pipeline$abc$estimators$3$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$centre_q$5
+module top$pipeline$abc$estimators$3$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$centre_q$6
 module top$pipeline$abc$estimators$3$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -13591,6 +15729,40 @@ module top$pipeline$abc$estimators$3$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dx_mag_q$2
+module top$pipeline$abc$estimators$3$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_mag_q$3
+module top$pipeline$abc$estimators$3$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_mag_q$4
 module top$pipeline$abc$estimators$3$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -13642,6 +15814,40 @@ module top$pipeline$abc$estimators$3$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dx_neg_q$2
+module top$pipeline$abc$estimators$3$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_neg_q$3
+module top$pipeline$abc$estimators$3$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dx_neg_q$4
 module top$pipeline$abc$estimators$3$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -13693,6 +15899,40 @@ module top$pipeline$abc$estimators$3$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dy_mag_q$2
+module top$pipeline$abc$estimators$3$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_mag_q$3
+module top$pipeline$abc$estimators$3$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_mag_q$4
 module top$pipeline$abc$estimators$3$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -13744,6 +15984,40 @@ module top$pipeline$abc$estimators$3$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$dy_neg_q$2
+module top$pipeline$abc$estimators$3$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_neg_q$3
+module top$pipeline$abc$estimators$3$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$dy_neg_q$4
 module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -13757,7 +16031,7 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -14043,7 +16317,7 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -14329,7 +16603,7 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -14670,6 +16944,40 @@ module top$pipeline$abc$estimators$3$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gr_q$3
+module top$pipeline$abc$estimators$3$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gr_q$4
+module top$pipeline$abc$estimators$3$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gr_q$5
 module top$pipeline$abc$estimators$3$gx_out(d,q,clock);
     
     // Module arguments
@@ -14755,6 +17063,40 @@ module top$pipeline$abc$estimators$3$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gx_q$3
+module top$pipeline$abc$estimators$3$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gx_q$4
+module top$pipeline$abc$estimators$3$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gx_q$5
 module top$pipeline$abc$estimators$3$gy_out(d,q,clock);
     
     // Module arguments
@@ -14840,6 +17182,40 @@ module top$pipeline$abc$estimators$3$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$gy_q$3
+module top$pipeline$abc$estimators$3$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gy_q$4
+module top$pipeline$abc$estimators$3$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$3$gy_q$5
 module top$pipeline$abc$estimators$3$gz_out(d,q,clock);
     
     // Module arguments

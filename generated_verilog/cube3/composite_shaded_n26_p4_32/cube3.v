@@ -1196,7 +1196,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h242;
+    localparam  longest_last = 16'h244;
     localparam  single = 1'b0;
     localparam  mask = 'hff0fff;
     
@@ -1330,7 +1330,7 @@ module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_addre
     input wire  write_enable;
     
     // Update code (custom)
-    reg [19:0] mem[578:0];
+    reg [19:0] mem[580:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[9:0]][19:12], 4'd0, mem[read_address[9:0]][11:0]};

@@ -563,6 +563,24 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -575,6 +593,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -587,6 +611,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -599,6 +629,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -608,6 +644,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -617,6 +659,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -626,6 +674,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -635,6 +689,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -709,6 +769,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -731,6 +797,36 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$0$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$0$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$0$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -750,6 +846,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$0$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -771,6 +877,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -791,6 +907,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$0$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$0$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$0$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -805,6 +931,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$0$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -821,6 +957,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -836,6 +982,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$0$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$0$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -850,6 +1006,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$0$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$0$px px(
         .g(px$g),
@@ -967,6 +1133,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$0$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$0$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -985,12 +1161,16 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -1003,6 +1183,18 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -1015,6 +1207,14 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -1033,6 +1233,12 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -1100,12 +1306,20 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -1171,7 +1385,7 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -1180,28 +1394,34 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -1212,6 +1432,108 @@ module top$pipeline$abc$estimators$0(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$0
+module top$pipeline$abc$estimators$0$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$0
+module top$pipeline$abc$estimators$0$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10x_q$1
+module top$pipeline$abc$estimators$0$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$0
+module top$pipeline$abc$estimators$0$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10y_q$1
+module top$pipeline$abc$estimators$0$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$0
+module top$pipeline$abc$estimators$0$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$b10z_q$1
 module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -1225,7 +1547,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1511,7 +1833,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -1797,7 +2119,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2155,6 +2477,40 @@ module top$pipeline$abc$estimators$0$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$centre_q$4
+module top$pipeline$abc$estimators$0$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$5
+module top$pipeline$abc$estimators$0$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$centre_q$6
 module top$pipeline$abc$estimators$0$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2206,6 +2562,40 @@ module top$pipeline$abc$estimators$0$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_mag_q$2
+module top$pipeline$abc$estimators$0$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$3
+module top$pipeline$abc$estimators$0$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_mag_q$4
 module top$pipeline$abc$estimators$0$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2257,6 +2647,40 @@ module top$pipeline$abc$estimators$0$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dx_neg_q$2
+module top$pipeline$abc$estimators$0$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$3
+module top$pipeline$abc$estimators$0$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dx_neg_q$4
 module top$pipeline$abc$estimators$0$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -2308,6 +2732,40 @@ module top$pipeline$abc$estimators$0$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_mag_q$2
+module top$pipeline$abc$estimators$0$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$3
+module top$pipeline$abc$estimators$0$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_mag_q$4
 module top$pipeline$abc$estimators$0$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -2359,6 +2817,40 @@ module top$pipeline$abc$estimators$0$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$dy_neg_q$2
+module top$pipeline$abc$estimators$0$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$3
+module top$pipeline$abc$estimators$0$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$dy_neg_q$4
 module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -2372,7 +2864,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2658,7 +3150,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -2944,7 +3436,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -3285,6 +3777,40 @@ module top$pipeline$abc$estimators$0$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gr_q$3
+module top$pipeline$abc$estimators$0$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$4
+module top$pipeline$abc$estimators$0$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gr_q$5
 module top$pipeline$abc$estimators$0$gx_out(d,q,clock);
     
     // Module arguments
@@ -3370,6 +3896,40 @@ module top$pipeline$abc$estimators$0$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gx_q$3
+module top$pipeline$abc$estimators$0$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$4
+module top$pipeline$abc$estimators$0$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gx_q$5
 module top$pipeline$abc$estimators$0$gy_out(d,q,clock);
     
     // Module arguments
@@ -3455,6 +4015,40 @@ module top$pipeline$abc$estimators$0$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$gy_q$3
+module top$pipeline$abc$estimators$0$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$4
+module top$pipeline$abc$estimators$0$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$0$gy_q$5
 module top$pipeline$abc$estimators$0$gz_out(d,q,clock);
     
     // Module arguments
@@ -3779,6 +4373,24 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     wire  [63:0] basis10$gx = 'h0;
     wire  [63:0] basis10$gy = 'h0;
     wire  [63:0] basis10$gz = 'h0;
+    reg  [63:0] b10x_q$0$d;
+    wire  [63:0] b10x_q$0$q;
+    reg  b10x_q$0$clock;
+    reg  [63:0] b10x_q$1$d;
+    wire  [63:0] b10x_q$1$q;
+    reg  b10x_q$1$clock;
+    reg  [63:0] b10y_q$0$d;
+    wire  [63:0] b10y_q$0$q;
+    reg  b10y_q$0$clock;
+    reg  [63:0] b10y_q$1$d;
+    wire  [63:0] b10y_q$1$q;
+    reg  b10y_q$1$clock;
+    reg  [63:0] b10z_q$0$d;
+    wire  [63:0] b10z_q$0$q;
+    reg  b10z_q$0$clock;
+    reg  [63:0] b10z_q$1$d;
+    wire  [63:0] b10z_q$1$q;
+    reg  b10z_q$1$clock;
     reg  [31:0] gx_q$0$d;
     wire  [31:0] gx_q$0$q;
     reg  gx_q$0$clock;
@@ -3791,6 +4403,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gx_q$3$d;
     wire  [31:0] gx_q$3$q;
     reg  gx_q$3$clock;
+    reg  [31:0] gx_q$4$d;
+    wire  [31:0] gx_q$4$q;
+    reg  gx_q$4$clock;
+    reg  [31:0] gx_q$5$d;
+    wire  [31:0] gx_q$5$q;
+    reg  gx_q$5$clock;
     reg  [31:0] gy_q$0$d;
     wire  [31:0] gy_q$0$q;
     reg  gy_q$0$clock;
@@ -3803,6 +4421,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gy_q$3$d;
     wire  [31:0] gy_q$3$q;
     reg  gy_q$3$clock;
+    reg  [31:0] gy_q$4$d;
+    wire  [31:0] gy_q$4$q;
+    reg  gy_q$4$clock;
+    reg  [31:0] gy_q$5$d;
+    wire  [31:0] gy_q$5$q;
+    reg  gy_q$5$clock;
     reg  [31:0] gr_q$0$d;
     wire  [31:0] gr_q$0$q;
     reg  gr_q$0$clock;
@@ -3815,6 +4439,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] gr_q$3$d;
     wire  [31:0] gr_q$3$q;
     reg  gr_q$3$clock;
+    reg  [31:0] gr_q$4$d;
+    wire  [31:0] gr_q$4$q;
+    reg  gr_q$4$clock;
+    reg  [31:0] gr_q$5$d;
+    wire  [31:0] gr_q$5$q;
+    reg  gr_q$5$clock;
     reg  dx_neg_q$0$d;
     wire  dx_neg_q$0$q;
     reg  dx_neg_q$0$clock;
@@ -3824,6 +4454,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dx_neg_q$2$d;
     wire  dx_neg_q$2$q;
     reg  dx_neg_q$2$clock;
+    reg  dx_neg_q$3$d;
+    wire  dx_neg_q$3$q;
+    reg  dx_neg_q$3$clock;
+    reg  dx_neg_q$4$d;
+    wire  dx_neg_q$4$q;
+    reg  dx_neg_q$4$clock;
     reg  [15:0] dx_mag_q$0$d;
     wire  [15:0] dx_mag_q$0$q;
     reg  dx_mag_q$0$clock;
@@ -3833,6 +4469,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dx_mag_q$2$d;
     wire  [15:0] dx_mag_q$2$q;
     reg  dx_mag_q$2$clock;
+    reg  [15:0] dx_mag_q$3$d;
+    wire  [15:0] dx_mag_q$3$q;
+    reg  dx_mag_q$3$clock;
+    reg  [15:0] dx_mag_q$4$d;
+    wire  [15:0] dx_mag_q$4$q;
+    reg  dx_mag_q$4$clock;
     reg  dy_neg_q$0$d;
     wire  dy_neg_q$0$q;
     reg  dy_neg_q$0$clock;
@@ -3842,6 +4484,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  dy_neg_q$2$d;
     wire  dy_neg_q$2$q;
     reg  dy_neg_q$2$clock;
+    reg  dy_neg_q$3$d;
+    wire  dy_neg_q$3$q;
+    reg  dy_neg_q$3$clock;
+    reg  dy_neg_q$4$d;
+    wire  dy_neg_q$4$q;
+    reg  dy_neg_q$4$clock;
     reg  [15:0] dy_mag_q$0$d;
     wire  [15:0] dy_mag_q$0$q;
     reg  dy_mag_q$0$clock;
@@ -3851,6 +4499,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [15:0] dy_mag_q$2$d;
     wire  [15:0] dy_mag_q$2$q;
     reg  dy_mag_q$2$clock;
+    reg  [15:0] dy_mag_q$3$d;
+    wire  [15:0] dy_mag_q$3$q;
+    reg  dy_mag_q$3$clock;
+    reg  [15:0] dy_mag_q$4$d;
+    wire  [15:0] dy_mag_q$4$q;
+    reg  dy_mag_q$4$clock;
     reg  [31:0] px$g;
     reg  px$d_neg;
     reg  [15:0] px$d_mag;
@@ -3925,6 +4579,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [31:0] centre_q$4$d;
     wire  [31:0] centre_q$4$q;
     reg  centre_q$4$clock;
+    reg  [31:0] centre_q$5$d;
+    wire  [31:0] centre_q$5$q;
+    reg  centre_q$5$clock;
+    reg  [31:0] centre_q$6$d;
+    wire  [31:0] centre_q$6$q;
+    reg  centre_q$6$clock;
     
     // Local signals
     reg  [63:0] shear_sum;
@@ -3947,6 +4607,36 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     reg  [63:0] gz_wide;
     
     // Sub module instances
+    top$pipeline$abc$estimators$1$b10x_q$0 b10x_q$0(
+        .d(b10x_q$0$d),
+        .q(b10x_q$0$q),
+        .clock(b10x_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10x_q$1 b10x_q$1(
+        .d(b10x_q$1$d),
+        .q(b10x_q$1$q),
+        .clock(b10x_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$0 b10y_q$0(
+        .d(b10y_q$0$d),
+        .q(b10y_q$0$q),
+        .clock(b10y_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10y_q$1 b10y_q$1(
+        .d(b10y_q$1$d),
+        .q(b10y_q$1$q),
+        .clock(b10y_q$1$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$0 b10z_q$0(
+        .d(b10z_q$0$d),
+        .q(b10z_q$0$q),
+        .clock(b10z_q$0$clock)
+    );
+    top$pipeline$abc$estimators$1$b10z_q$1 b10z_q$1(
+        .d(b10z_q$1$d),
+        .q(b10z_q$1$q),
+        .clock(b10z_q$1$clock)
+    );
     top$pipeline$abc$estimators$1$gx_q$0 gx_q$0(
         .d(gx_q$0$d),
         .q(gx_q$0$q),
@@ -3966,6 +4656,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(gx_q$3$d),
         .q(gx_q$3$q),
         .clock(gx_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$4 gx_q$4(
+        .d(gx_q$4$d),
+        .q(gx_q$4$q),
+        .clock(gx_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gx_q$5 gx_q$5(
+        .d(gx_q$5$d),
+        .q(gx_q$5$q),
+        .clock(gx_q$5$clock)
     );
     top$pipeline$abc$estimators$1$gy_q$0 gy_q$0(
         .d(gy_q$0$d),
@@ -3987,6 +4687,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gy_q$3$q),
         .clock(gy_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gy_q$4 gy_q$4(
+        .d(gy_q$4$d),
+        .q(gy_q$4$q),
+        .clock(gy_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gy_q$5 gy_q$5(
+        .d(gy_q$5$d),
+        .q(gy_q$5$q),
+        .clock(gy_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$gr_q$0 gr_q$0(
         .d(gr_q$0$d),
         .q(gr_q$0$q),
@@ -4007,6 +4717,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(gr_q$3$q),
         .clock(gr_q$3$clock)
     );
+    top$pipeline$abc$estimators$1$gr_q$4 gr_q$4(
+        .d(gr_q$4$d),
+        .q(gr_q$4$q),
+        .clock(gr_q$4$clock)
+    );
+    top$pipeline$abc$estimators$1$gr_q$5 gr_q$5(
+        .d(gr_q$5$d),
+        .q(gr_q$5$q),
+        .clock(gr_q$5$clock)
+    );
     top$pipeline$abc$estimators$1$dx_neg_q$0 dx_neg_q$0(
         .d(dx_neg_q$0$d),
         .q(dx_neg_q$0$q),
@@ -4021,6 +4741,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dx_neg_q$2$d),
         .q(dx_neg_q$2$q),
         .clock(dx_neg_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$3 dx_neg_q$3(
+        .d(dx_neg_q$3$d),
+        .q(dx_neg_q$3$q),
+        .clock(dx_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_neg_q$4 dx_neg_q$4(
+        .d(dx_neg_q$4$d),
+        .q(dx_neg_q$4$q),
+        .clock(dx_neg_q$4$clock)
     );
     top$pipeline$abc$estimators$1$dx_mag_q$0 dx_mag_q$0(
         .d(dx_mag_q$0$d),
@@ -4037,6 +4767,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dx_mag_q$2$q),
         .clock(dx_mag_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dx_mag_q$3 dx_mag_q$3(
+        .d(dx_mag_q$3$d),
+        .q(dx_mag_q$3$q),
+        .clock(dx_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dx_mag_q$4 dx_mag_q$4(
+        .d(dx_mag_q$4$d),
+        .q(dx_mag_q$4$q),
+        .clock(dx_mag_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_neg_q$0 dy_neg_q$0(
         .d(dy_neg_q$0$d),
         .q(dy_neg_q$0$q),
@@ -4052,6 +4792,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(dy_neg_q$2$q),
         .clock(dy_neg_q$2$clock)
     );
+    top$pipeline$abc$estimators$1$dy_neg_q$3 dy_neg_q$3(
+        .d(dy_neg_q$3$d),
+        .q(dy_neg_q$3$q),
+        .clock(dy_neg_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_neg_q$4 dy_neg_q$4(
+        .d(dy_neg_q$4$d),
+        .q(dy_neg_q$4$q),
+        .clock(dy_neg_q$4$clock)
+    );
     top$pipeline$abc$estimators$1$dy_mag_q$0 dy_mag_q$0(
         .d(dy_mag_q$0$d),
         .q(dy_mag_q$0$q),
@@ -4066,6 +4816,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .d(dy_mag_q$2$d),
         .q(dy_mag_q$2$q),
         .clock(dy_mag_q$2$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$3 dy_mag_q$3(
+        .d(dy_mag_q$3$d),
+        .q(dy_mag_q$3$q),
+        .clock(dy_mag_q$3$clock)
+    );
+    top$pipeline$abc$estimators$1$dy_mag_q$4 dy_mag_q$4(
+        .d(dy_mag_q$4$d),
+        .q(dy_mag_q$4$q),
+        .clock(dy_mag_q$4$clock)
     );
     top$pipeline$abc$estimators$1$px px(
         .g(px$g),
@@ -4183,6 +4943,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         .q(centre_q$4$q),
         .clock(centre_q$4$clock)
     );
+    top$pipeline$abc$estimators$1$centre_q$5 centre_q$5(
+        .d(centre_q$5$d),
+        .q(centre_q$5$q),
+        .clock(centre_q$5$clock)
+    );
+    top$pipeline$abc$estimators$1$centre_q$6 centre_q$6(
+        .d(centre_q$6$d),
+        .q(centre_q$6$q),
+        .clock(centre_q$6$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4201,12 +4971,16 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         centre_q$2$clock = clock;
         centre_q$3$clock = clock;
         centre_q$4$clock = clock;
+        centre_q$5$clock = clock;
+        centre_q$6$clock = clock;
         centre_q$0$d = centre;
         centre_q$1$d = centre_q$0$q;
         centre_q$2$d = centre_q$1$q;
         centre_q$3$d = centre_q$2$q;
         centre_q$4$d = centre_q$3$q;
-        sample = centre_q$4$q;
+        centre_q$5$d = centre_q$4$q;
+        centre_q$6$d = centre_q$5$q;
+        sample = centre_q$6$q;
         gx_q$0$clock = clock;
         gy_q$0$clock = clock;
         gr_q$0$clock = clock;
@@ -4219,6 +4993,18 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$clock = clock;
         gy_q$3$clock = clock;
         gr_q$3$clock = clock;
+        gx_q$4$clock = clock;
+        gy_q$4$clock = clock;
+        gr_q$4$clock = clock;
+        gx_q$5$clock = clock;
+        gy_q$5$clock = clock;
+        gr_q$5$clock = clock;
+        b10x_q$0$clock = clock;
+        b10y_q$0$clock = clock;
+        b10z_q$0$clock = clock;
+        b10x_q$1$clock = clock;
+        b10y_q$1$clock = clock;
+        b10z_q$1$clock = clock;
         dx_neg_q$0$clock = clock;
         dx_mag_q$0$clock = clock;
         dy_neg_q$0$clock = clock;
@@ -4231,6 +5017,14 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$clock = clock;
         dy_neg_q$2$clock = clock;
         dy_mag_q$2$clock = clock;
+        dx_neg_q$3$clock = clock;
+        dx_mag_q$3$clock = clock;
+        dy_neg_q$3$clock = clock;
+        dy_mag_q$3$clock = clock;
+        dx_neg_q$4$clock = clock;
+        dx_mag_q$4$clock = clock;
+        dy_neg_q$4$clock = clock;
+        dy_mag_q$4$clock = clock;
         front_top$clock = clock;
         front_bottom$clock = clock;
         front_y$clock = clock;
@@ -4249,6 +5043,12 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         gx_q$3$d = gx_q$2$q;
         gy_q$3$d = gy_q$2$q;
         gr_q$3$d = gr_q$2$q;
+        gx_q$4$d = gx_q$3$q;
+        gy_q$4$d = gy_q$3$q;
+        gr_q$4$d = gr_q$3$q;
+        gx_q$5$d = gx_q$4$q;
+        gy_q$5$d = gy_q$4$q;
+        gr_q$5$d = gr_q$4$q;
         sums26$clock = clock;
         sums26$xp = xp;
         sums26$xm = xm;
@@ -4316,12 +5116,20 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         dx_mag_q$2$d = dx_mag_q$1$q;
         dy_neg_q$2$d = dy_neg_q$1$q;
         dy_mag_q$2$d = dy_mag_q$1$q;
-        px$g = gx_q$2$q;
-        px$d_neg = dx_neg_q$2$q;
-        px$d_mag = dx_mag_q$2$q;
-        py$g = gy_q$2$q;
-        py$d_neg = dy_neg_q$2$q;
-        py$d_mag = dy_mag_q$2$q;
+        dx_neg_q$3$d = dx_neg_q$2$q;
+        dx_mag_q$3$d = dx_mag_q$2$q;
+        dy_neg_q$3$d = dy_neg_q$2$q;
+        dy_mag_q$3$d = dy_mag_q$2$q;
+        dx_neg_q$4$d = dx_neg_q$3$q;
+        dx_mag_q$4$d = dx_mag_q$3$q;
+        dy_neg_q$4$d = dy_neg_q$3$q;
+        dy_mag_q$4$d = dy_mag_q$3$q;
+        px$g = gx_q$4$q;
+        px$d_neg = dx_neg_q$4$q;
+        px$d_mag = dx_mag_q$4$q;
+        py$g = gy_q$4$q;
+        py$d_neg = dy_neg_q$4$q;
+        py$d_mag = dy_mag_q$4$q;
         px_q$d = px$y;
         py_q$d = py$y;
         shear_sum = px_q$q + py_q$q + half;
@@ -4387,7 +5195,7 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         front_bottom$w = dx_mag;
         front_y$a = front_top$y;
         front_y$b = front_bottom$y;
-        front_y$w = dy_mag_q$1$q;
+        front_y$w = dy_mag_q$2$q;
         back_top$a = km4;
         back_top$b = back_x;
         back_top$w = dx_mag;
@@ -4396,28 +5204,34 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
         back_bottom$w = dx_mag;
         back_y$a = back_top$y;
         back_y$b = back_bottom$y;
-        back_y$w = dy_mag_q$1$q;
-        gr_wide = 64'(gr_q$3$q);
-        if (gr_q$3$q['h1f]) begin
-            gr_wide = 64'(gr_q$3$q) | sign_ext;
+        back_y$w = dy_mag_q$2$q;
+        gr_wide = 64'(gr_q$5$q);
+        if (gr_q$5$q['h1f]) begin
+            gr_wide = 64'(gr_q$5$q) | sign_ext;
         end
         gz_wide = gr_wide - shear;
         if (n12) begin
             gz_wide = 64'(front_y$y) - 64'(back_y$y);
         end
-        sat_x$v = 64'(gx_q$3$q);
-        if (gx_q$3$q['h1f]) begin
-            sat_x$v = 64'(gx_q$3$q) | sign_ext;
+        sat_x$v = 64'(gx_q$5$q);
+        if (gx_q$5$q['h1f]) begin
+            sat_x$v = 64'(gx_q$5$q) | sign_ext;
         end
-        sat_y$v = 64'(gy_q$3$q);
-        if (gy_q$3$q['h1f]) begin
-            sat_y$v = 64'(gy_q$3$q) | sign_ext;
+        sat_y$v = 64'(gy_q$5$q);
+        if (gy_q$5$q['h1f]) begin
+            sat_y$v = 64'(gy_q$5$q) | sign_ext;
         end
         sat_z$v = gz_wide;
+        b10x_q$0$d = basis10$gx;
+        b10y_q$0$d = basis10$gy;
+        b10z_q$0$d = basis10$gz;
+        b10x_q$1$d = b10x_q$0$q;
+        b10y_q$1$d = b10y_q$0$q;
+        b10z_q$1$d = b10z_q$0$q;
         if (n10) begin
-            sat_x$v = basis10$gx;
-            sat_y$v = basis10$gy;
-            sat_z$v = basis10$gz;
+            sat_x$v = b10x_q$1$q;
+            sat_y$v = b10y_q$1$q;
+            sat_z$v = b10z_q$1$q;
         end
         gx_out$d = sat_x$y;
         gy_out$d = sat_y$y;
@@ -4428,6 +5242,108 @@ module top$pipeline$abc$estimators$1(clock,xp,xm,yp,ym,kp0,kp1,kp2,kp3,kp4,kp5,k
     end
     
 endmodule // top$pipeline$abc$estimators$1
+module top$pipeline$abc$estimators$1$b10x_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$0
+module top$pipeline$abc$estimators$1$b10x_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10x_q$1
+module top$pipeline$abc$estimators$1$b10y_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$0
+module top$pipeline$abc$estimators$1$b10y_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10y_q$1
+module top$pipeline$abc$estimators$1$b10z_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$0
+module top$pipeline$abc$estimators$1$b10z_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$b10z_q$1
 module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -4441,7 +5357,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -4727,7 +5643,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5013,7 +5929,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5371,6 +6287,40 @@ module top$pipeline$abc$estimators$1$centre_q$4(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$centre_q$4
+module top$pipeline$abc$estimators$1$centre_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$5
+module top$pipeline$abc$estimators$1$centre_q$6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$centre_q$6
 module top$pipeline$abc$estimators$1$dx_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -5422,6 +6372,40 @@ module top$pipeline$abc$estimators$1$dx_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_mag_q$2
+module top$pipeline$abc$estimators$1$dx_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$3
+module top$pipeline$abc$estimators$1$dx_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_mag_q$4
 module top$pipeline$abc$estimators$1$dx_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -5473,6 +6457,40 @@ module top$pipeline$abc$estimators$1$dx_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dx_neg_q$2
+module top$pipeline$abc$estimators$1$dx_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$3
+module top$pipeline$abc$estimators$1$dx_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dx_neg_q$4
 module top$pipeline$abc$estimators$1$dy_mag_q$0(d,q,clock);
     
     // Module arguments
@@ -5524,6 +6542,40 @@ module top$pipeline$abc$estimators$1$dy_mag_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_mag_q$2
+module top$pipeline$abc$estimators$1$dy_mag_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$3
+module top$pipeline$abc$estimators$1$dy_mag_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_mag_q$4
 module top$pipeline$abc$estimators$1$dy_neg_q$0(d,q,clock);
     
     // Module arguments
@@ -5575,6 +6627,40 @@ module top$pipeline$abc$estimators$1$dy_neg_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$dy_neg_q$2
+module top$pipeline$abc$estimators$1$dy_neg_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$3
+module top$pipeline$abc$estimators$1$dy_neg_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$dy_neg_q$4
 module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     
     // Module arguments
@@ -5588,7 +6674,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -5874,7 +6960,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6160,7 +7246,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     localparam  half = 64'h80;
     localparam  shift = 8'h8;
     localparam  wide = 1'b0;
-    localparam  split = 1'b0;
+    localparam  split = 1'b1;
     
     // Stub signals
     reg  up_q$d;
@@ -6501,6 +7587,40 @@ module top$pipeline$abc$estimators$1$gr_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gr_q$3
+module top$pipeline$abc$estimators$1$gr_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$4
+module top$pipeline$abc$estimators$1$gr_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gr_q$5
 module top$pipeline$abc$estimators$1$gx_out(d,q,clock);
     
     // Module arguments
@@ -6586,6 +7706,40 @@ module top$pipeline$abc$estimators$1$gx_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gx_q$3
+module top$pipeline$abc$estimators$1$gx_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$4
+module top$pipeline$abc$estimators$1$gx_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gx_q$5
 module top$pipeline$abc$estimators$1$gy_out(d,q,clock);
     
     // Module arguments
@@ -6671,6 +7825,40 @@ module top$pipeline$abc$estimators$1$gy_q$3(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$gy_q$3
+module top$pipeline$abc$estimators$1$gy_q$4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$4
+module top$pipeline$abc$estimators$1$gy_q$5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$abc$estimators$1$gy_q$5
 module top$pipeline$abc$estimators$1$gz_out(d,q,clock);
     
     // Module arguments

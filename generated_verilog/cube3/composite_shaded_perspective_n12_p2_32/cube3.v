@@ -842,7 +842,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8dd;
+    localparam  longest_last = 16'h8df;
     localparam  single = 1'b0;
     localparam  mask = 'hff0fff;
     
@@ -976,7 +976,7 @@ module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_addre
     input wire  write_enable;
     
     // Update code (custom)
-    reg [19:0] mem[2269:0];
+    reg [19:0] mem[2271:0];
     
     always @(posedge read_clock) begin
        read_data <= {8'd0, mem[read_address[11:0]][19:12], 4'd0, mem[read_address[11:0]][11:0]};
