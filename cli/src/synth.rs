@@ -15,7 +15,7 @@ use anyhow::{Context, Result};
 use clap::ValueEnum;
 use cosim::arch::Arch;
 use cosim::archs::ForArch;
-use cosim::synth::{synthesize, Target};
+use cosim::synth::{synthesize, Pnr, Router, Target};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -25,6 +25,12 @@ enum SynthTarget {
     Ecp5,
     Xilinx,
     Generic,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum PnrRouter {
+    Router1,
+    Router2,
 }
 
 #[derive(clap::Args)]
@@ -44,6 +50,12 @@ pub struct SynthArgs {
     /// Skip placement and routing.
     #[arg(long)]
     no_pnr: bool,
+    /// nextpnr's placement seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u32,
+    /// nextpnr's router (router2 for a design router1 cannot untangle).
+    #[arg(long, value_enum, default_value = "router1")]
+    router: PnrRouter,
     /// Keep the work in DIR, a directory this run creates: the exported
     /// Verilog, `synth.log`, the netlist `synth.json`, and after place and
     /// route `pnr.log`, `report.json` and the routed netlist `routed.json`
@@ -120,7 +132,14 @@ impl ForArch for Synth<'_> {
             .filter_map(|f| f.as_str().map(String::from))
             .collect();
         let sub = dir.join(first["dir"].as_str().unwrap_or("."));
-        let r = synthesize(&sub, &files, target, !args.no_pnr).map_err(|e| match &args.keep {
+        let pnr = (!args.no_pnr).then_some(Pnr {
+            seed: args.seed,
+            router: match args.router {
+                PnrRouter::Router1 => Router::Router1,
+                PnrRouter::Router2 => Router::Router2,
+            },
+        });
+        let r = synthesize(&sub, &files, target, pnr).map_err(|e| match &args.keep {
             Some(_) => anyhow::anyhow!("synth: {e} (the logs are in {})", sub.display()),
             None => anyhow::anyhow!("synth: {e} (--keep DIR keeps the logs)"),
         })?;
@@ -252,6 +271,7 @@ impl ForArch for Synth<'_> {
                         "routing_ns": t.routing_ns,
                     })),
                     "pnr_seconds": r.pnr_seconds,
+                    "pnr": r.pnr.map(|o| json!({"seed": o.seed, "router": o.router.name()})),
                     "frame_clocks": frame,
                     "frames_per_second": r.fmax_mhz.zip(frame).map(|(f, c)| f * 1e6 / c as f64),
                     "projected": projection,

@@ -4,7 +4,7 @@
 
 use cosim::arch::Arch;
 use cosim::cube4l::Cube4l;
-use cosim::synth::{parse_stat, synthesize, Target};
+use cosim::synth::{parse_stat, synthesize, Pnr, Target};
 use hdl::cube4l::config::frame_clocks;
 use hdl::cube4l::PipelineConfig;
 use testbenches::scene;
@@ -44,7 +44,7 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mip");
     let files = small_mip(&out);
-    let r = synthesize(&out, &files, Target::Ecp5, true).unwrap();
+    let r = synthesize(&out, &files, Target::Ecp5, Some(Pnr::default())).unwrap();
     // The 512-voxel memory module is one DP16KD, the compositing buffer's
     // ring and lines LUT RAM (TRELLIS_DPR16X4), the bilinear unit's lerps
     // six MULT18X18D.
@@ -82,7 +82,7 @@ fn a_small_mip_pipeline_routes_on_an_ice40_with_its_path_and_bitstream() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("mip");
     let files = small_mip(&out);
-    let r = synthesize(&out, &files, Target::Ice40, true).unwrap();
+    let r = synthesize(&out, &files, Target::Ice40, Some(Pnr::default())).unwrap();
     assert_eq!(r.fits, Some(true), "{r:?}");
     let f = r.fmax_mhz.expect("placed and routed");
     let t = r.timing.expect("a critical path");

