@@ -1,4 +1,4 @@
-module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,next$3,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,load_enable,load_module,load_address,load_data);
+module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1,next$0,next$1,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,load_enable,load_module,load_address,load_data);
     
     // Module arguments
     input wire  clock;
@@ -9,20 +9,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     output reg  valid;
     output reg  [15:0] cur$0;
     output reg  [15:0] cur$1;
-    output reg  [15:0] cur$2;
-    output reg  [15:0] cur$3;
     output reg  [15:0] next$0;
     output reg  [15:0] next$1;
-    output reg  [15:0] next$2;
-    output reg  [15:0] next$3;
     output reg  [31:0] ext_addr$0;
     output reg  [31:0] ext_addr$1;
-    output reg  [31:0] ext_addr$2;
-    output reg  [31:0] ext_addr$3;
     input wire  [15:0] ext_data$0;
     input wire  [15:0] ext_data$1;
-    input wire  [15:0] ext_data$2;
-    input wire  [15:0] ext_data$3;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [31:0] load_address;
@@ -33,18 +25,14 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     localparam  perspective = 1'b0;
     localparam  index$0 = 16'h0;
     localparam  index$1 = 16'h1;
-    localparam  index$2 = 16'h2;
-    localparam  index$3 = 16'h3;
     localparam  module_id$0 = 8'h0;
     localparam  module_id$1 = 8'h1;
-    localparam  module_id$2 = 8'h2;
-    localparam  module_id$3 = 8'h3;
     localparam  buffer_id$0 = 2'b0;
     localparam  buffer_id$1 = 2'b1;
     localparam  buffer_id$2 = 2'b10;
     localparam  one = 16'h1;
-    localparam  mask = 16'h3;
-    localparam  shift = 16'h2;
+    localparam  mask = 16'h1;
+    localparam  shift = 16'h1;
     
     // Stub signals
     reg  [15:0] memory$0$read_address;
@@ -61,20 +49,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  memory$1$write_clock;
     reg  [15:0] memory$1$write_data;
     reg  memory$1$write_enable;
-    reg  [15:0] memory$2$read_address;
-    reg  memory$2$read_clock;
-    wire  [15:0] memory$2$read_data;
-    reg  [15:0] memory$2$write_address;
-    reg  memory$2$write_clock;
-    reg  [15:0] memory$2$write_data;
-    reg  memory$2$write_enable;
-    reg  [15:0] memory$3$read_address;
-    reg  memory$3$read_clock;
-    wire  [15:0] memory$3$read_data;
-    reg  [15:0] memory$3$write_address;
-    reg  memory$3$write_clock;
-    reg  [15:0] memory$3$write_data;
-    reg  memory$3$write_enable;
     reg  [16:0] buffer0$0$read_address;
     reg  buffer0$0$read_clock;
     wire  [15:0] buffer0$0$read_data;
@@ -89,20 +63,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  buffer0$1$write_clock;
     reg  [15:0] buffer0$1$write_data;
     reg  buffer0$1$write_enable;
-    reg  [16:0] buffer0$2$read_address;
-    reg  buffer0$2$read_clock;
-    wire  [15:0] buffer0$2$read_data;
-    reg  [16:0] buffer0$2$write_address;
-    reg  buffer0$2$write_clock;
-    reg  [15:0] buffer0$2$write_data;
-    reg  buffer0$2$write_enable;
-    reg  [16:0] buffer0$3$read_address;
-    reg  buffer0$3$read_clock;
-    wire  [15:0] buffer0$3$read_data;
-    reg  [16:0] buffer0$3$write_address;
-    reg  buffer0$3$write_clock;
-    reg  [15:0] buffer0$3$write_data;
-    reg  buffer0$3$write_enable;
     reg  [16:0] buffer1$0$read_address;
     reg  buffer1$0$read_clock;
     wire  [15:0] buffer1$0$read_data;
@@ -117,20 +77,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  buffer1$1$write_clock;
     reg  [15:0] buffer1$1$write_data;
     reg  buffer1$1$write_enable;
-    reg  [16:0] buffer1$2$read_address;
-    reg  buffer1$2$read_clock;
-    wire  [15:0] buffer1$2$read_data;
-    reg  [16:0] buffer1$2$write_address;
-    reg  buffer1$2$write_clock;
-    reg  [15:0] buffer1$2$write_data;
-    reg  buffer1$2$write_enable;
-    reg  [16:0] buffer1$3$read_address;
-    reg  buffer1$3$read_clock;
-    wire  [15:0] buffer1$3$read_data;
-    reg  [16:0] buffer1$3$write_address;
-    reg  buffer1$3$write_clock;
-    reg  [15:0] buffer1$3$write_data;
-    reg  buffer1$3$write_enable;
     reg  [16:0] buffer2$0$read_address;
     reg  buffer2$0$read_clock;
     wire  [15:0] buffer2$0$read_data;
@@ -145,20 +91,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  buffer2$1$write_clock;
     reg  [15:0] buffer2$1$write_data;
     reg  buffer2$1$write_enable;
-    reg  [16:0] buffer2$2$read_address;
-    reg  buffer2$2$read_clock;
-    wire  [15:0] buffer2$2$read_data;
-    reg  [16:0] buffer2$2$write_address;
-    reg  buffer2$2$write_clock;
-    reg  [15:0] buffer2$2$write_data;
-    reg  buffer2$2$write_enable;
-    reg  [16:0] buffer2$3$read_address;
-    reg  buffer2$3$read_clock;
-    wire  [15:0] buffer2$3$read_data;
-    reg  [16:0] buffer2$3$write_address;
-    reg  buffer2$3$write_clock;
-    reg  [15:0] buffer2$3$write_data;
-    reg  buffer2$3$write_enable;
     reg  group$clock;
     reg  group$host_write;
     reg  [23:0] group$host_address;
@@ -171,12 +103,8 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     wire  [15:0] group$first_ray;
     wire  [15:0] group$x$0;
     wire  [15:0] group$x$1;
-    wire  [15:0] group$x$2;
-    wire  [15:0] group$x$3;
     wire  group$holds$0;
     wire  group$holds$1;
-    wire  group$holds$2;
-    wire  group$holds$3;
     reg  pos_y$clock;
     reg  pos_y$host_write;
     reg  [23:0] pos_y$host_address;
@@ -223,24 +151,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] x_r$1$d;
     wire  [15:0] x_r$1$q;
     reg  x_r$1$clock;
-    reg  [15:0] x_r$2$d;
-    wire  [15:0] x_r$2$q;
-    reg  x_r$2$clock;
-    reg  [15:0] x_r$3$d;
-    wire  [15:0] x_r$3$q;
-    reg  x_r$3$clock;
     reg  holds_r$0$d;
     wire  holds_r$0$q;
     reg  holds_r$0$clock;
     reg  holds_r$1$d;
     wire  holds_r$1$q;
     reg  holds_r$1$clock;
-    reg  holds_r$2$d;
-    wire  holds_r$2$q;
-    reg  holds_r$2$clock;
-    reg  holds_r$3$d;
-    wire  holds_r$3$q;
-    reg  holds_r$3$clock;
     reg  [15:0] period_r$d;
     wire  [15:0] period_r$q;
     reg  period_r$clock;
@@ -265,36 +181,18 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [15:0] s1_ray$1$d;
     wire  [15:0] s1_ray$1$q;
     reg  s1_ray$1$clock;
-    reg  [15:0] s1_ray$2$d;
-    wire  [15:0] s1_ray$2$q;
-    reg  s1_ray$2$clock;
-    reg  [15:0] s1_ray$3$d;
-    wire  [15:0] s1_ray$3$q;
-    reg  s1_ray$3$clock;
     reg  [15:0] s1_x$0$d;
     wire  [15:0] s1_x$0$q;
     reg  s1_x$0$clock;
     reg  [15:0] s1_x$1$d;
     wire  [15:0] s1_x$1$q;
     reg  s1_x$1$clock;
-    reg  [15:0] s1_x$2$d;
-    wire  [15:0] s1_x$2$q;
-    reg  s1_x$2$clock;
-    reg  [15:0] s1_x$3$d;
-    wire  [15:0] s1_x$3$q;
-    reg  s1_x$3$clock;
     reg  s1_holds$0$d;
     wire  s1_holds$0$q;
     reg  s1_holds$0$clock;
     reg  s1_holds$1$d;
     wire  s1_holds$1$q;
     reg  s1_holds$1$clock;
-    reg  s1_holds$2$d;
-    wire  s1_holds$2$q;
-    reg  s1_holds$2$clock;
-    reg  s1_holds$3$d;
-    wire  s1_holds$3$q;
-    reg  s1_holds$3$clock;
     reg  s1_writing$d;
     wire  s1_writing$q;
     reg  s1_writing$clock;
@@ -307,84 +205,42 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  s2_inside$1$d;
     wire  s2_inside$1$q;
     reg  s2_inside$1$clock;
-    reg  s2_inside$2$d;
-    wire  s2_inside$2$q;
-    reg  s2_inside$2$clock;
-    reg  s2_inside$3$d;
-    wire  s2_inside$3$q;
-    reg  s2_inside$3$clock;
     reg  [15:0] s2_module$0$d;
     wire  [15:0] s2_module$0$q;
     reg  s2_module$0$clock;
     reg  [15:0] s2_module$1$d;
     wire  [15:0] s2_module$1$q;
     reg  s2_module$1$clock;
-    reg  [15:0] s2_module$2$d;
-    wire  [15:0] s2_module$2$q;
-    reg  s2_module$2$clock;
-    reg  [15:0] s2_module$3$d;
-    wire  [15:0] s2_module$3$q;
-    reg  s2_module$3$clock;
     reg  [31:0] s2_address$0$d;
     wire  [31:0] s2_address$0$q;
     reg  s2_address$0$clock;
     reg  [31:0] s2_address$1$d;
     wire  [31:0] s2_address$1$q;
     reg  s2_address$1$clock;
-    reg  [31:0] s2_address$2$d;
-    wire  [31:0] s2_address$2$q;
-    reg  s2_address$2$clock;
-    reg  [31:0] s2_address$3$d;
-    wire  [31:0] s2_address$3$q;
-    reg  s2_address$3$clock;
     reg  s2_holds$0$d;
     wire  s2_holds$0$q;
     reg  s2_holds$0$clock;
     reg  s2_holds$1$d;
     wire  s2_holds$1$q;
     reg  s2_holds$1$clock;
-    reg  s2_holds$2$d;
-    wire  s2_holds$2$q;
-    reg  s2_holds$2$clock;
-    reg  s2_holds$3$d;
-    wire  s2_holds$3$q;
-    reg  s2_holds$3$clock;
     reg  [15:0] s2_dsb$0$d;
     wire  [15:0] s2_dsb$0$q;
     reg  s2_dsb$0$clock;
     reg  [15:0] s2_dsb$1$d;
     wire  [15:0] s2_dsb$1$q;
     reg  s2_dsb$1$clock;
-    reg  [15:0] s2_dsb$2$d;
-    wire  [15:0] s2_dsb$2$q;
-    reg  s2_dsb$2$clock;
-    reg  [15:0] s2_dsb$3$d;
-    wire  [15:0] s2_dsb$3$q;
-    reg  s2_dsb$3$clock;
     reg  [31:0] s2_write_address$0$d;
     wire  [31:0] s2_write_address$0$q;
     reg  s2_write_address$0$clock;
     reg  [31:0] s2_write_address$1$d;
     wire  [31:0] s2_write_address$1$q;
     reg  s2_write_address$1$clock;
-    reg  [31:0] s2_write_address$2$d;
-    wire  [31:0] s2_write_address$2$q;
-    reg  s2_write_address$2$clock;
-    reg  [31:0] s2_write_address$3$d;
-    wire  [31:0] s2_write_address$3$q;
-    reg  s2_write_address$3$clock;
     reg  s2_in_stream$0$d;
     wire  s2_in_stream$0$q;
     reg  s2_in_stream$0$clock;
     reg  s2_in_stream$1$d;
     wire  s2_in_stream$1$q;
     reg  s2_in_stream$1$clock;
-    reg  s2_in_stream$2$d;
-    wire  s2_in_stream$2$q;
-    reg  s2_in_stream$2$clock;
-    reg  s2_in_stream$3$d;
-    wire  s2_in_stream$3$q;
-    reg  s2_in_stream$3$clock;
     reg  s2_writing$d;
     wire  s2_writing$q;
     reg  s2_writing$clock;
@@ -397,72 +253,36 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  holds_q$1$d;
     wire  holds_q$1$q;
     reg  holds_q$1$clock;
-    reg  holds_q$2$d;
-    wire  holds_q$2$q;
-    reg  holds_q$2$clock;
-    reg  holds_q$3$d;
-    wire  holds_q$3$q;
-    reg  holds_q$3$clock;
     reg  inside_q$0$d;
     wire  inside_q$0$q;
     reg  inside_q$0$clock;
     reg  inside_q$1$d;
     wire  inside_q$1$q;
     reg  inside_q$1$clock;
-    reg  inside_q$2$d;
-    wire  inside_q$2$q;
-    reg  inside_q$2$clock;
-    reg  inside_q$3$d;
-    wire  inside_q$3$q;
-    reg  inside_q$3$clock;
     reg  [15:0] module_q$0$d;
     wire  [15:0] module_q$0$q;
     reg  module_q$0$clock;
     reg  [15:0] module_q$1$d;
     wire  [15:0] module_q$1$q;
     reg  module_q$1$clock;
-    reg  [15:0] module_q$2$d;
-    wire  [15:0] module_q$2$q;
-    reg  module_q$2$clock;
-    reg  [15:0] module_q$3$d;
-    wire  [15:0] module_q$3$q;
-    reg  module_q$3$clock;
     reg  [15:0] dsb_q$0$d;
     wire  [15:0] dsb_q$0$q;
     reg  dsb_q$0$clock;
     reg  [15:0] dsb_q$1$d;
     wire  [15:0] dsb_q$1$q;
     reg  dsb_q$1$clock;
-    reg  [15:0] dsb_q$2$d;
-    wire  [15:0] dsb_q$2$q;
-    reg  dsb_q$2$clock;
-    reg  [15:0] dsb_q$3$d;
-    wire  [15:0] dsb_q$3$q;
-    reg  dsb_q$3$clock;
     reg  [31:0] write_address_q$0$d;
     wire  [31:0] write_address_q$0$q;
     reg  write_address_q$0$clock;
     reg  [31:0] write_address_q$1$d;
     wire  [31:0] write_address_q$1$q;
     reg  write_address_q$1$clock;
-    reg  [31:0] write_address_q$2$d;
-    wire  [31:0] write_address_q$2$q;
-    reg  write_address_q$2$clock;
-    reg  [31:0] write_address_q$3$d;
-    wire  [31:0] write_address_q$3$q;
-    reg  write_address_q$3$clock;
     reg  in_stream_q$0$d;
     wire  in_stream_q$0$q;
     reg  in_stream_q$0$clock;
     reg  in_stream_q$1$d;
     wire  in_stream_q$1$q;
     reg  in_stream_q$1$clock;
-    reg  in_stream_q$2$d;
-    wire  in_stream_q$2$q;
-    reg  in_stream_q$2$clock;
-    reg  in_stream_q$3$d;
-    wire  in_stream_q$3$q;
-    reg  in_stream_q$3$clock;
     reg  write_q$d;
     wire  write_q$q;
     reg  write_q$clock;
@@ -485,59 +305,33 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     // Local signals
     reg  [15:0] word$0;
     reg  [15:0] word$1;
-    reg  [15:0] word$2;
-    reg  [15:0] word$3;
     reg  [15:0] row_stride;
     reg  [31:0] row_entry;
     reg  [15:0] s1_plane_segment;
     reg  lane_inside$0;
     reg  lane_inside$1;
-    reg  lane_inside$2;
-    reg  lane_inside$3;
     reg  [15:0] lane_module$0;
     reg  [15:0] lane_module$1;
-    reg  [15:0] lane_module$2;
-    reg  [15:0] lane_module$3;
     reg  [15:0] lane_column$0;
     reg  [15:0] lane_column$1;
-    reg  [15:0] lane_column$2;
-    reg  [15:0] lane_column$3;
     reg  [31:0] lane_address$0;
     reg  [31:0] lane_address$1;
-    reg  [31:0] lane_address$2;
-    reg  [31:0] lane_address$3;
     reg  [15:0] lane_dsb$0;
     reg  [15:0] lane_dsb$1;
-    reg  [15:0] lane_dsb$2;
-    reg  [15:0] lane_dsb$3;
     reg  [31:0] lane_write_address$0;
     reg  [31:0] lane_write_address$1;
-    reg  [31:0] lane_write_address$2;
-    reg  [31:0] lane_write_address$3;
     reg  [31:0] address$0;
     reg  [31:0] address$1;
-    reg  [31:0] address$2;
-    reg  [31:0] address$3;
     reg  reads$0;
     reg  reads$1;
-    reg  reads$2;
-    reg  reads$3;
     reg  [15:0] value$0;
     reg  [15:0] value$1;
-    reg  [15:0] value$2;
-    reg  [15:0] value$3;
     reg  [15:0] dsb_data$0;
     reg  [15:0] dsb_data$1;
-    reg  [15:0] dsb_data$2;
-    reg  [15:0] dsb_data$3;
     reg  dsb_write$0;
     reg  dsb_write$1;
-    reg  dsb_write$2;
-    reg  dsb_write$3;
     reg  [31:0] write_address$0;
     reg  [31:0] write_address$1;
-    reg  [31:0] write_address$2;
-    reg  [31:0] write_address$3;
     reg  [31:0] read_address;
     reg  [15:0] n_x;
     reg  [15:0] n_y;
@@ -567,24 +361,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .write_data(memory$1$write_data),
         .write_enable(memory$1$write_enable)
     );
-    top$fetch$memory$2 memory$2(
-        .read_address(memory$2$read_address),
-        .read_clock(memory$2$read_clock),
-        .read_data(memory$2$read_data),
-        .write_address(memory$2$write_address),
-        .write_clock(memory$2$write_clock),
-        .write_data(memory$2$write_data),
-        .write_enable(memory$2$write_enable)
-    );
-    top$fetch$memory$3 memory$3(
-        .read_address(memory$3$read_address),
-        .read_clock(memory$3$read_clock),
-        .read_data(memory$3$read_data),
-        .write_address(memory$3$write_address),
-        .write_clock(memory$3$write_clock),
-        .write_data(memory$3$write_data),
-        .write_enable(memory$3$write_enable)
-    );
     top$fetch$buffer0$0 buffer0$0(
         .read_address(buffer0$0$read_address),
         .read_clock(buffer0$0$read_clock),
@@ -602,24 +378,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .write_clock(buffer0$1$write_clock),
         .write_data(buffer0$1$write_data),
         .write_enable(buffer0$1$write_enable)
-    );
-    top$fetch$buffer0$2 buffer0$2(
-        .read_address(buffer0$2$read_address),
-        .read_clock(buffer0$2$read_clock),
-        .read_data(buffer0$2$read_data),
-        .write_address(buffer0$2$write_address),
-        .write_clock(buffer0$2$write_clock),
-        .write_data(buffer0$2$write_data),
-        .write_enable(buffer0$2$write_enable)
-    );
-    top$fetch$buffer0$3 buffer0$3(
-        .read_address(buffer0$3$read_address),
-        .read_clock(buffer0$3$read_clock),
-        .read_data(buffer0$3$read_data),
-        .write_address(buffer0$3$write_address),
-        .write_clock(buffer0$3$write_clock),
-        .write_data(buffer0$3$write_data),
-        .write_enable(buffer0$3$write_enable)
     );
     top$fetch$buffer1$0 buffer1$0(
         .read_address(buffer1$0$read_address),
@@ -639,24 +397,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .write_data(buffer1$1$write_data),
         .write_enable(buffer1$1$write_enable)
     );
-    top$fetch$buffer1$2 buffer1$2(
-        .read_address(buffer1$2$read_address),
-        .read_clock(buffer1$2$read_clock),
-        .read_data(buffer1$2$read_data),
-        .write_address(buffer1$2$write_address),
-        .write_clock(buffer1$2$write_clock),
-        .write_data(buffer1$2$write_data),
-        .write_enable(buffer1$2$write_enable)
-    );
-    top$fetch$buffer1$3 buffer1$3(
-        .read_address(buffer1$3$read_address),
-        .read_clock(buffer1$3$read_clock),
-        .read_data(buffer1$3$read_data),
-        .write_address(buffer1$3$write_address),
-        .write_clock(buffer1$3$write_clock),
-        .write_data(buffer1$3$write_data),
-        .write_enable(buffer1$3$write_enable)
-    );
     top$fetch$buffer2$0 buffer2$0(
         .read_address(buffer2$0$read_address),
         .read_clock(buffer2$0$read_clock),
@@ -675,24 +415,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .write_data(buffer2$1$write_data),
         .write_enable(buffer2$1$write_enable)
     );
-    top$fetch$buffer2$2 buffer2$2(
-        .read_address(buffer2$2$read_address),
-        .read_clock(buffer2$2$read_clock),
-        .read_data(buffer2$2$read_data),
-        .write_address(buffer2$2$write_address),
-        .write_clock(buffer2$2$write_clock),
-        .write_data(buffer2$2$write_data),
-        .write_enable(buffer2$2$write_enable)
-    );
-    top$fetch$buffer2$3 buffer2$3(
-        .read_address(buffer2$3$read_address),
-        .read_clock(buffer2$3$read_clock),
-        .read_data(buffer2$3$read_data),
-        .write_address(buffer2$3$write_address),
-        .write_clock(buffer2$3$write_clock),
-        .write_data(buffer2$3$write_data),
-        .write_enable(buffer2$3$write_enable)
-    );
     top$fetch$group group(
         .clock(group$clock),
         .host_write(group$host_write),
@@ -706,12 +428,8 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .first_ray(group$first_ray),
         .x$0(group$x$0),
         .x$1(group$x$1),
-        .x$2(group$x$2),
-        .x$3(group$x$3),
         .holds$0(group$holds$0),
-        .holds$1(group$holds$1),
-        .holds$2(group$holds$2),
-        .holds$3(group$holds$3)
+        .holds$1(group$holds$1)
     );
     top$fetch$pos_y pos_y(
         .clock(pos_y$clock),
@@ -775,16 +493,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(x_r$1$q),
         .clock(x_r$1$clock)
     );
-    top$fetch$x_r$2 x_r$2(
-        .d(x_r$2$d),
-        .q(x_r$2$q),
-        .clock(x_r$2$clock)
-    );
-    top$fetch$x_r$3 x_r$3(
-        .d(x_r$3$d),
-        .q(x_r$3$q),
-        .clock(x_r$3$clock)
-    );
     top$fetch$holds_r$0 holds_r$0(
         .d(holds_r$0$d),
         .q(holds_r$0$q),
@@ -794,16 +502,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(holds_r$1$d),
         .q(holds_r$1$q),
         .clock(holds_r$1$clock)
-    );
-    top$fetch$holds_r$2 holds_r$2(
-        .d(holds_r$2$d),
-        .q(holds_r$2$q),
-        .clock(holds_r$2$clock)
-    );
-    top$fetch$holds_r$3 holds_r$3(
-        .d(holds_r$3$d),
-        .q(holds_r$3$q),
-        .clock(holds_r$3$clock)
     );
     top$fetch$period_r period_r(
         .d(period_r$d),
@@ -845,16 +543,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s1_ray$1$q),
         .clock(s1_ray$1$clock)
     );
-    top$fetch$s1_ray$2 s1_ray$2(
-        .d(s1_ray$2$d),
-        .q(s1_ray$2$q),
-        .clock(s1_ray$2$clock)
-    );
-    top$fetch$s1_ray$3 s1_ray$3(
-        .d(s1_ray$3$d),
-        .q(s1_ray$3$q),
-        .clock(s1_ray$3$clock)
-    );
     top$fetch$s1_x$0 s1_x$0(
         .d(s1_x$0$d),
         .q(s1_x$0$q),
@@ -865,16 +553,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s1_x$1$q),
         .clock(s1_x$1$clock)
     );
-    top$fetch$s1_x$2 s1_x$2(
-        .d(s1_x$2$d),
-        .q(s1_x$2$q),
-        .clock(s1_x$2$clock)
-    );
-    top$fetch$s1_x$3 s1_x$3(
-        .d(s1_x$3$d),
-        .q(s1_x$3$q),
-        .clock(s1_x$3$clock)
-    );
     top$fetch$s1_holds$0 s1_holds$0(
         .d(s1_holds$0$d),
         .q(s1_holds$0$q),
@@ -884,16 +562,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(s1_holds$1$d),
         .q(s1_holds$1$q),
         .clock(s1_holds$1$clock)
-    );
-    top$fetch$s1_holds$2 s1_holds$2(
-        .d(s1_holds$2$d),
-        .q(s1_holds$2$q),
-        .clock(s1_holds$2$clock)
-    );
-    top$fetch$s1_holds$3 s1_holds$3(
-        .d(s1_holds$3$d),
-        .q(s1_holds$3$q),
-        .clock(s1_holds$3$clock)
     );
     top$fetch$s1_writing s1_writing(
         .d(s1_writing$d),
@@ -915,16 +583,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s2_inside$1$q),
         .clock(s2_inside$1$clock)
     );
-    top$fetch$s2_inside$2 s2_inside$2(
-        .d(s2_inside$2$d),
-        .q(s2_inside$2$q),
-        .clock(s2_inside$2$clock)
-    );
-    top$fetch$s2_inside$3 s2_inside$3(
-        .d(s2_inside$3$d),
-        .q(s2_inside$3$q),
-        .clock(s2_inside$3$clock)
-    );
     top$fetch$s2_module$0 s2_module$0(
         .d(s2_module$0$d),
         .q(s2_module$0$q),
@@ -934,16 +592,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(s2_module$1$d),
         .q(s2_module$1$q),
         .clock(s2_module$1$clock)
-    );
-    top$fetch$s2_module$2 s2_module$2(
-        .d(s2_module$2$d),
-        .q(s2_module$2$q),
-        .clock(s2_module$2$clock)
-    );
-    top$fetch$s2_module$3 s2_module$3(
-        .d(s2_module$3$d),
-        .q(s2_module$3$q),
-        .clock(s2_module$3$clock)
     );
     top$fetch$s2_address$0 s2_address$0(
         .d(s2_address$0$d),
@@ -955,16 +603,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s2_address$1$q),
         .clock(s2_address$1$clock)
     );
-    top$fetch$s2_address$2 s2_address$2(
-        .d(s2_address$2$d),
-        .q(s2_address$2$q),
-        .clock(s2_address$2$clock)
-    );
-    top$fetch$s2_address$3 s2_address$3(
-        .d(s2_address$3$d),
-        .q(s2_address$3$q),
-        .clock(s2_address$3$clock)
-    );
     top$fetch$s2_holds$0 s2_holds$0(
         .d(s2_holds$0$d),
         .q(s2_holds$0$q),
@@ -974,16 +612,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(s2_holds$1$d),
         .q(s2_holds$1$q),
         .clock(s2_holds$1$clock)
-    );
-    top$fetch$s2_holds$2 s2_holds$2(
-        .d(s2_holds$2$d),
-        .q(s2_holds$2$q),
-        .clock(s2_holds$2$clock)
-    );
-    top$fetch$s2_holds$3 s2_holds$3(
-        .d(s2_holds$3$d),
-        .q(s2_holds$3$q),
-        .clock(s2_holds$3$clock)
     );
     top$fetch$s2_dsb$0 s2_dsb$0(
         .d(s2_dsb$0$d),
@@ -995,16 +623,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s2_dsb$1$q),
         .clock(s2_dsb$1$clock)
     );
-    top$fetch$s2_dsb$2 s2_dsb$2(
-        .d(s2_dsb$2$d),
-        .q(s2_dsb$2$q),
-        .clock(s2_dsb$2$clock)
-    );
-    top$fetch$s2_dsb$3 s2_dsb$3(
-        .d(s2_dsb$3$d),
-        .q(s2_dsb$3$q),
-        .clock(s2_dsb$3$clock)
-    );
     top$fetch$s2_write_address$0 s2_write_address$0(
         .d(s2_write_address$0$d),
         .q(s2_write_address$0$q),
@@ -1015,16 +633,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(s2_write_address$1$q),
         .clock(s2_write_address$1$clock)
     );
-    top$fetch$s2_write_address$2 s2_write_address$2(
-        .d(s2_write_address$2$d),
-        .q(s2_write_address$2$q),
-        .clock(s2_write_address$2$clock)
-    );
-    top$fetch$s2_write_address$3 s2_write_address$3(
-        .d(s2_write_address$3$d),
-        .q(s2_write_address$3$q),
-        .clock(s2_write_address$3$clock)
-    );
     top$fetch$s2_in_stream$0 s2_in_stream$0(
         .d(s2_in_stream$0$d),
         .q(s2_in_stream$0$q),
@@ -1034,16 +642,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(s2_in_stream$1$d),
         .q(s2_in_stream$1$q),
         .clock(s2_in_stream$1$clock)
-    );
-    top$fetch$s2_in_stream$2 s2_in_stream$2(
-        .d(s2_in_stream$2$d),
-        .q(s2_in_stream$2$q),
-        .clock(s2_in_stream$2$clock)
-    );
-    top$fetch$s2_in_stream$3 s2_in_stream$3(
-        .d(s2_in_stream$3$d),
-        .q(s2_in_stream$3$q),
-        .clock(s2_in_stream$3$clock)
     );
     top$fetch$s2_writing s2_writing(
         .d(s2_writing$d),
@@ -1065,16 +663,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(holds_q$1$q),
         .clock(holds_q$1$clock)
     );
-    top$fetch$holds_q$2 holds_q$2(
-        .d(holds_q$2$d),
-        .q(holds_q$2$q),
-        .clock(holds_q$2$clock)
-    );
-    top$fetch$holds_q$3 holds_q$3(
-        .d(holds_q$3$d),
-        .q(holds_q$3$q),
-        .clock(holds_q$3$clock)
-    );
     top$fetch$inside_q$0 inside_q$0(
         .d(inside_q$0$d),
         .q(inside_q$0$q),
@@ -1084,16 +672,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(inside_q$1$d),
         .q(inside_q$1$q),
         .clock(inside_q$1$clock)
-    );
-    top$fetch$inside_q$2 inside_q$2(
-        .d(inside_q$2$d),
-        .q(inside_q$2$q),
-        .clock(inside_q$2$clock)
-    );
-    top$fetch$inside_q$3 inside_q$3(
-        .d(inside_q$3$d),
-        .q(inside_q$3$q),
-        .clock(inside_q$3$clock)
     );
     top$fetch$module_q$0 module_q$0(
         .d(module_q$0$d),
@@ -1105,16 +683,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(module_q$1$q),
         .clock(module_q$1$clock)
     );
-    top$fetch$module_q$2 module_q$2(
-        .d(module_q$2$d),
-        .q(module_q$2$q),
-        .clock(module_q$2$clock)
-    );
-    top$fetch$module_q$3 module_q$3(
-        .d(module_q$3$d),
-        .q(module_q$3$q),
-        .clock(module_q$3$clock)
-    );
     top$fetch$dsb_q$0 dsb_q$0(
         .d(dsb_q$0$d),
         .q(dsb_q$0$q),
@@ -1124,16 +692,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(dsb_q$1$d),
         .q(dsb_q$1$q),
         .clock(dsb_q$1$clock)
-    );
-    top$fetch$dsb_q$2 dsb_q$2(
-        .d(dsb_q$2$d),
-        .q(dsb_q$2$q),
-        .clock(dsb_q$2$clock)
-    );
-    top$fetch$dsb_q$3 dsb_q$3(
-        .d(dsb_q$3$d),
-        .q(dsb_q$3$q),
-        .clock(dsb_q$3$clock)
     );
     top$fetch$write_address_q$0 write_address_q$0(
         .d(write_address_q$0$d),
@@ -1145,16 +703,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(write_address_q$1$q),
         .clock(write_address_q$1$clock)
     );
-    top$fetch$write_address_q$2 write_address_q$2(
-        .d(write_address_q$2$d),
-        .q(write_address_q$2$q),
-        .clock(write_address_q$2$clock)
-    );
-    top$fetch$write_address_q$3 write_address_q$3(
-        .d(write_address_q$3$d),
-        .q(write_address_q$3$q),
-        .clock(write_address_q$3$clock)
-    );
     top$fetch$in_stream_q$0 in_stream_q$0(
         .d(in_stream_q$0$d),
         .q(in_stream_q$0$q),
@@ -1164,16 +712,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .d(in_stream_q$1$d),
         .q(in_stream_q$1$q),
         .clock(in_stream_q$1$clock)
-    );
-    top$fetch$in_stream_q$2 in_stream_q$2(
-        .d(in_stream_q$2$d),
-        .q(in_stream_q$2$q),
-        .clock(in_stream_q$2$clock)
-    );
-    top$fetch$in_stream_q$3 in_stream_q$3(
-        .d(in_stream_q$3$d),
-        .q(in_stream_q$3$q),
-        .clock(in_stream_q$3$clock)
     );
     top$fetch$write_q write_q(
         .d(write_q$d),
@@ -1209,16 +747,10 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     // Update code
     reg  [15:0] cur$0_pass;
     reg  [15:0] cur$1_pass;
-    reg  [15:0] cur$2_pass;
-    reg  [15:0] cur$3_pass;
     reg  [15:0] next$0_pass;
     reg  [15:0] next$1_pass;
-    reg  [15:0] next$2_pass;
-    reg  [15:0] next$3_pass;
     reg  [31:0] ext_addr$0_pass;
     reg  [31:0] ext_addr$1_pass;
-    reg  [31:0] ext_addr$2_pass;
-    reg  [31:0] ext_addr$3_pass;
     always @(*) begin
         plane_r$clock = clock;
         first_ray_r$clock = clock;
@@ -1393,90 +925,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         dsb_q$1$d = s2_dsb$1$q;
         write_address_q$1$d = s2_write_address$1$q;
         in_stream_q$1$d = s2_in_stream$1$q;
-        x_r$2$clock = clock;
-        holds_r$2$clock = clock;
-        s1_ray$2$clock = clock;
-        s1_x$2$clock = clock;
-        s1_holds$2$clock = clock;
-        s2_inside$2$clock = clock;
-        s2_module$2$clock = clock;
-        s2_address$2$clock = clock;
-        s2_holds$2$clock = clock;
-        s2_dsb$2$clock = clock;
-        s2_write_address$2$clock = clock;
-        s2_in_stream$2$clock = clock;
-        holds_q$2$clock = clock;
-        inside_q$2$clock = clock;
-        module_q$2$clock = clock;
-        dsb_q$2$clock = clock;
-        write_address_q$2$clock = clock;
-        in_stream_q$2$clock = clock;
-        x_r$2$d = group$x$2;
-        holds_r$2$d = group$holds$2;
-        s1_ray$2$d = first_ray_r$q + index$2;
-        s1_x$2$d = x_r$2$q;
-        s1_holds$2$d = holds_r$2$q;
-        lane_inside$2 = s1_holds$2$q & ~s1_x$2$q['hf] & (s1_x$2$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
-        lane_module$2 = (s1_x$2$q + s1_row$q + s1_plane$q) & mask;
-        lane_column$2 = s1_x$2$q >> shift;
-        lane_address$2 = lane_column$2 * one + s1_row$q * row_words + s1_plane_offset$q;
-        lane_dsb$2 = (s1_ray$2$q + s1_plane$q) & mask;
-        lane_write_address$2 = s1_ray$2$q * segments + 32'(s1_plane_segment);
-        s2_inside$2$d = lane_inside$2;
-        s2_module$2$d = lane_module$2;
-        s2_address$2$d = lane_address$2;
-        s2_holds$2$d = s1_holds$2$q;
-        s2_dsb$2$d = lane_dsb$2;
-        s2_write_address$2$d = lane_write_address$2;
-        s2_in_stream$2$d = s1_ray$2$q < rays;
-        holds_q$2$d = s2_holds$2$q;
-        inside_q$2$d = s2_inside$2$q;
-        module_q$2$d = s2_module$2$q;
-        dsb_q$2$d = s2_dsb$2$q;
-        write_address_q$2$d = s2_write_address$2$q;
-        in_stream_q$2$d = s2_in_stream$2$q;
-        x_r$3$clock = clock;
-        holds_r$3$clock = clock;
-        s1_ray$3$clock = clock;
-        s1_x$3$clock = clock;
-        s1_holds$3$clock = clock;
-        s2_inside$3$clock = clock;
-        s2_module$3$clock = clock;
-        s2_address$3$clock = clock;
-        s2_holds$3$clock = clock;
-        s2_dsb$3$clock = clock;
-        s2_write_address$3$clock = clock;
-        s2_in_stream$3$clock = clock;
-        holds_q$3$clock = clock;
-        inside_q$3$clock = clock;
-        module_q$3$clock = clock;
-        dsb_q$3$clock = clock;
-        write_address_q$3$clock = clock;
-        in_stream_q$3$clock = clock;
-        x_r$3$d = group$x$3;
-        holds_r$3$d = group$holds$3;
-        s1_ray$3$d = first_ray_r$q + index$3;
-        s1_x$3$d = x_r$3$q;
-        s1_holds$3$d = holds_r$3$q;
-        lane_inside$3 = s1_holds$3$q & ~s1_x$3$q['hf] & (s1_x$3$q < n_x) & ~s1_row$q['hf] & (s1_row$q < n_y) & (s1_plane$q < n_k);
-        lane_module$3 = (s1_x$3$q + s1_row$q + s1_plane$q) & mask;
-        lane_column$3 = s1_x$3$q >> shift;
-        lane_address$3 = lane_column$3 * one + s1_row$q * row_words + s1_plane_offset$q;
-        lane_dsb$3 = (s1_ray$3$q + s1_plane$q) & mask;
-        lane_write_address$3 = s1_ray$3$q * segments + 32'(s1_plane_segment);
-        s2_inside$3$d = lane_inside$3;
-        s2_module$3$d = lane_module$3;
-        s2_address$3$d = lane_address$3;
-        s2_holds$3$d = s1_holds$3$q;
-        s2_dsb$3$d = lane_dsb$3;
-        s2_write_address$3$d = lane_write_address$3;
-        s2_in_stream$3$d = s1_ray$3$q < rays;
-        holds_q$3$d = s2_holds$3$q;
-        inside_q$3$d = s2_inside$3$q;
-        module_q$3$d = s2_module$3$q;
-        dsb_q$3$d = s2_dsb$3$q;
-        write_address_q$3$d = s2_write_address$3$q;
-        in_stream_q$3$d = s2_in_stream$3$q;
         address$0 = 'h0;
         reads$0 = 1'b0;
         if (s2_inside$0$q & (s2_module$0$q == index$0)) begin
@@ -1485,14 +933,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         end
         if (s2_inside$1$q & (s2_module$1$q == index$0)) begin
             address$0 = s2_address$1$q;
-            reads$0 = 1'b1;
-        end
-        if (s2_inside$2$q & (s2_module$2$q == index$0)) begin
-            address$0 = s2_address$2$q;
-            reads$0 = 1'b1;
-        end
-        if (s2_inside$3$q & (s2_module$3$q == index$0)) begin
-            address$0 = s2_address$3$q;
             reads$0 = 1'b1;
         end
         memory$0$read_clock = clock;
@@ -1522,14 +962,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
             address$1 = s2_address$1$q;
             reads$1 = 1'b1;
         end
-        if (s2_inside$2$q & (s2_module$2$q == index$1)) begin
-            address$1 = s2_address$2$q;
-            reads$1 = 1'b1;
-        end
-        if (s2_inside$3$q & (s2_module$3$q == index$1)) begin
-            address$1 = s2_address$3$q;
-            reads$1 = 1'b1;
-        end
         memory$1$read_clock = clock;
         memory$1$write_clock = clock;
         memory$1$write_enable = load_enable & (load_module == module_id$1) & ~external;
@@ -1547,76 +979,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         if (external) begin
             word$1 = ext_data$1;
         end
-        address$2 = 'h0;
-        reads$2 = 1'b0;
-        if (s2_inside$0$q & (s2_module$0$q == index$2)) begin
-            address$2 = s2_address$0$q;
-            reads$2 = 1'b1;
-        end
-        if (s2_inside$1$q & (s2_module$1$q == index$2)) begin
-            address$2 = s2_address$1$q;
-            reads$2 = 1'b1;
-        end
-        if (s2_inside$2$q & (s2_module$2$q == index$2)) begin
-            address$2 = s2_address$2$q;
-            reads$2 = 1'b1;
-        end
-        if (s2_inside$3$q & (s2_module$3$q == index$2)) begin
-            address$2 = s2_address$3$q;
-            reads$2 = 1'b1;
-        end
-        memory$2$read_clock = clock;
-        memory$2$write_clock = clock;
-        memory$2$write_enable = load_enable & (load_module == module_id$2) & ~external;
-        memory$2$write_address = load_address[('h0)+:(16)];
-        memory$2$write_data = load_data;
-        memory$2$read_address = 'h0;
-        ext_addr$2_pass = 'h0;
-        if (reads$2 & ~external) begin
-            memory$2$read_address = address$2[('h0)+:(16)];
-        end
-        if (reads$2 & external) begin
-            ext_addr$2_pass = address$2;
-        end
-        word$2 = memory$2$read_data;
-        if (external) begin
-            word$2 = ext_data$2;
-        end
-        address$3 = 'h0;
-        reads$3 = 1'b0;
-        if (s2_inside$0$q & (s2_module$0$q == index$3)) begin
-            address$3 = s2_address$0$q;
-            reads$3 = 1'b1;
-        end
-        if (s2_inside$1$q & (s2_module$1$q == index$3)) begin
-            address$3 = s2_address$1$q;
-            reads$3 = 1'b1;
-        end
-        if (s2_inside$2$q & (s2_module$2$q == index$3)) begin
-            address$3 = s2_address$2$q;
-            reads$3 = 1'b1;
-        end
-        if (s2_inside$3$q & (s2_module$3$q == index$3)) begin
-            address$3 = s2_address$3$q;
-            reads$3 = 1'b1;
-        end
-        memory$3$read_clock = clock;
-        memory$3$write_clock = clock;
-        memory$3$write_enable = load_enable & (load_module == module_id$3) & ~external;
-        memory$3$write_address = load_address[('h0)+:(16)];
-        memory$3$write_data = load_data;
-        memory$3$read_address = 'h0;
-        ext_addr$3_pass = 'h0;
-        if (reads$3 & ~external) begin
-            memory$3$read_address = address$3[('h0)+:(16)];
-        end
-        if (reads$3 & external) begin
-            ext_addr$3_pass = address$3;
-        end
-        word$3 = memory$3$read_data;
-        if (external) begin
-            word$3 = ext_data$3;
-        end
         value$0 = 'h0;
         if (inside_q$0$q & (module_q$0$q == index$0)) begin
             value$0 = word$0;
@@ -1624,50 +986,12 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         if (inside_q$0$q & (module_q$0$q == index$1)) begin
             value$0 = word$1;
         end
-        if (inside_q$0$q & (module_q$0$q == index$2)) begin
-            value$0 = word$2;
-        end
-        if (inside_q$0$q & (module_q$0$q == index$3)) begin
-            value$0 = word$3;
-        end
         value$1 = 'h0;
         if (inside_q$1$q & (module_q$1$q == index$0)) begin
             value$1 = word$0;
         end
         if (inside_q$1$q & (module_q$1$q == index$1)) begin
             value$1 = word$1;
-        end
-        if (inside_q$1$q & (module_q$1$q == index$2)) begin
-            value$1 = word$2;
-        end
-        if (inside_q$1$q & (module_q$1$q == index$3)) begin
-            value$1 = word$3;
-        end
-        value$2 = 'h0;
-        if (inside_q$2$q & (module_q$2$q == index$0)) begin
-            value$2 = word$0;
-        end
-        if (inside_q$2$q & (module_q$2$q == index$1)) begin
-            value$2 = word$1;
-        end
-        if (inside_q$2$q & (module_q$2$q == index$2)) begin
-            value$2 = word$2;
-        end
-        if (inside_q$2$q & (module_q$2$q == index$3)) begin
-            value$2 = word$3;
-        end
-        value$3 = 'h0;
-        if (inside_q$3$q & (module_q$3$q == index$0)) begin
-            value$3 = word$0;
-        end
-        if (inside_q$3$q & (module_q$3$q == index$1)) begin
-            value$3 = word$1;
-        end
-        if (inside_q$3$q & (module_q$3$q == index$2)) begin
-            value$3 = word$2;
-        end
-        if (inside_q$3$q & (module_q$3$q == index$3)) begin
-            value$3 = word$3;
         end
         dsb_data$0 = 'h0;
         write_address$0 = 'h0;
@@ -1681,16 +1005,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
             dsb_data$0 = value$1;
             write_address$0 = write_address_q$1$q;
             dsb_write$0 = in_stream_q$1$q;
-        end
-        if (holds_q$2$q & (dsb_q$2$q == index$0)) begin
-            dsb_data$0 = value$2;
-            write_address$0 = write_address_q$2$q;
-            dsb_write$0 = in_stream_q$2$q;
-        end
-        if (holds_q$3$q & (dsb_q$3$q == index$0)) begin
-            dsb_data$0 = value$3;
-            write_address$0 = write_address_q$3$q;
-            dsb_write$0 = in_stream_q$3$q;
         end
         buffer0$0$write_clock = clock;
         buffer1$0$write_clock = clock;
@@ -1717,16 +1031,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
             write_address$1 = write_address_q$1$q;
             dsb_write$1 = in_stream_q$1$q;
         end
-        if (holds_q$2$q & (dsb_q$2$q == index$1)) begin
-            dsb_data$1 = value$2;
-            write_address$1 = write_address_q$2$q;
-            dsb_write$1 = in_stream_q$2$q;
-        end
-        if (holds_q$3$q & (dsb_q$3$q == index$1)) begin
-            dsb_data$1 = value$3;
-            write_address$1 = write_address_q$3$q;
-            dsb_write$1 = in_stream_q$3$q;
-        end
         buffer0$1$write_clock = clock;
         buffer1$1$write_clock = clock;
         buffer2$1$write_clock = clock;
@@ -1739,76 +1043,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$0);
         buffer1$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$1);
         buffer2$1$write_enable = write_q$q & dsb_write$1 & (buffer_q$q == buffer_id$2);
-        dsb_data$2 = 'h0;
-        write_address$2 = 'h0;
-        dsb_write$2 = 1'b0;
-        if (holds_q$0$q & (dsb_q$0$q == index$2)) begin
-            dsb_data$2 = value$0;
-            write_address$2 = write_address_q$0$q;
-            dsb_write$2 = in_stream_q$0$q;
-        end
-        if (holds_q$1$q & (dsb_q$1$q == index$2)) begin
-            dsb_data$2 = value$1;
-            write_address$2 = write_address_q$1$q;
-            dsb_write$2 = in_stream_q$1$q;
-        end
-        if (holds_q$2$q & (dsb_q$2$q == index$2)) begin
-            dsb_data$2 = value$2;
-            write_address$2 = write_address_q$2$q;
-            dsb_write$2 = in_stream_q$2$q;
-        end
-        if (holds_q$3$q & (dsb_q$3$q == index$2)) begin
-            dsb_data$2 = value$3;
-            write_address$2 = write_address_q$3$q;
-            dsb_write$2 = in_stream_q$3$q;
-        end
-        buffer0$2$write_clock = clock;
-        buffer1$2$write_clock = clock;
-        buffer2$2$write_clock = clock;
-        buffer0$2$write_address = write_address$2[('h0)+:(17)];
-        buffer1$2$write_address = write_address$2[('h0)+:(17)];
-        buffer2$2$write_address = write_address$2[('h0)+:(17)];
-        buffer0$2$write_data = dsb_data$2;
-        buffer1$2$write_data = dsb_data$2;
-        buffer2$2$write_data = dsb_data$2;
-        buffer0$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$0);
-        buffer1$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$1);
-        buffer2$2$write_enable = write_q$q & dsb_write$2 & (buffer_q$q == buffer_id$2);
-        dsb_data$3 = 'h0;
-        write_address$3 = 'h0;
-        dsb_write$3 = 1'b0;
-        if (holds_q$0$q & (dsb_q$0$q == index$3)) begin
-            dsb_data$3 = value$0;
-            write_address$3 = write_address_q$0$q;
-            dsb_write$3 = in_stream_q$0$q;
-        end
-        if (holds_q$1$q & (dsb_q$1$q == index$3)) begin
-            dsb_data$3 = value$1;
-            write_address$3 = write_address_q$1$q;
-            dsb_write$3 = in_stream_q$1$q;
-        end
-        if (holds_q$2$q & (dsb_q$2$q == index$3)) begin
-            dsb_data$3 = value$2;
-            write_address$3 = write_address_q$2$q;
-            dsb_write$3 = in_stream_q$2$q;
-        end
-        if (holds_q$3$q & (dsb_q$3$q == index$3)) begin
-            dsb_data$3 = value$3;
-            write_address$3 = write_address_q$3$q;
-            dsb_write$3 = in_stream_q$3$q;
-        end
-        buffer0$3$write_clock = clock;
-        buffer1$3$write_clock = clock;
-        buffer2$3$write_clock = clock;
-        buffer0$3$write_address = write_address$3[('h0)+:(17)];
-        buffer1$3$write_address = write_address$3[('h0)+:(17)];
-        buffer2$3$write_address = write_address$3[('h0)+:(17)];
-        buffer0$3$write_data = dsb_data$3;
-        buffer1$3$write_data = dsb_data$3;
-        buffer2$3$write_data = dsb_data$3;
-        buffer0$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$0);
-        buffer1$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$1);
-        buffer2$3$write_enable = write_q$q & dsb_write$3 & (buffer_q$q == buffer_id$2);
         read_address = 'h0;
         if (schedule$reading) begin
             read_address = schedule$read_address;
@@ -1829,18 +1063,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         buffer0$1$read_address = read_address[('h0)+:(17)];
         buffer1$1$read_address = read_address[('h0)+:(17)];
         buffer2$1$read_address = read_address[('h0)+:(17)];
-        buffer0$2$read_clock = clock;
-        buffer1$2$read_clock = clock;
-        buffer2$2$read_clock = clock;
-        buffer0$2$read_address = read_address[('h0)+:(17)];
-        buffer1$2$read_address = read_address[('h0)+:(17)];
-        buffer2$2$read_address = read_address[('h0)+:(17)];
-        buffer0$3$read_clock = clock;
-        buffer1$3$read_clock = clock;
-        buffer2$3$read_clock = clock;
-        buffer0$3$read_address = read_address[('h0)+:(17)];
-        buffer1$3$read_address = read_address[('h0)+:(17)];
-        buffer2$3$read_address = read_address[('h0)+:(17)];
         cur$0_pass = 'h0;
         next$0_pass = 'h0;
         if (((index$0 + lane_q$q) & mask) == index$0) begin
@@ -1881,46 +1103,6 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
             end
             if (next_q$q == buffer_id$2) begin
                 next$0_pass = buffer2$1$read_data;
-            end
-        end
-        if (((index$0 + lane_q$q) & mask) == index$2) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$0_pass = buffer0$2$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$0_pass = buffer1$2$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$0_pass = buffer2$2$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$0_pass = buffer0$2$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$0_pass = buffer1$2$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$0_pass = buffer2$2$read_data;
-            end
-        end
-        if (((index$0 + lane_q$q) & mask) == index$3) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$0_pass = buffer0$3$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$0_pass = buffer1$3$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$0_pass = buffer2$3$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$0_pass = buffer0$3$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$0_pass = buffer1$3$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$0_pass = buffer2$3$read_data;
             end
         end
         cur$1_pass = 'h0;
@@ -1965,223 +1147,13 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
                 next$1_pass = buffer2$1$read_data;
             end
         end
-        if (((index$1 + lane_q$q) & mask) == index$2) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$1_pass = buffer0$2$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$1_pass = buffer1$2$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$1_pass = buffer2$2$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$1_pass = buffer0$2$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$1_pass = buffer1$2$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$1_pass = buffer2$2$read_data;
-            end
-        end
-        if (((index$1 + lane_q$q) & mask) == index$3) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$1_pass = buffer0$3$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$1_pass = buffer1$3$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$1_pass = buffer2$3$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$1_pass = buffer0$3$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$1_pass = buffer1$3$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$1_pass = buffer2$3$read_data;
-            end
-        end
-        cur$2_pass = 'h0;
-        next$2_pass = 'h0;
-        if (((index$2 + lane_q$q) & mask) == index$0) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$2_pass = buffer0$0$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$2_pass = buffer1$0$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$2_pass = buffer2$0$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$2_pass = buffer0$0$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$2_pass = buffer1$0$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$2_pass = buffer2$0$read_data;
-            end
-        end
-        if (((index$2 + lane_q$q) & mask) == index$1) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$2_pass = buffer0$1$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$2_pass = buffer1$1$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$2_pass = buffer2$1$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$2_pass = buffer0$1$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$2_pass = buffer1$1$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$2_pass = buffer2$1$read_data;
-            end
-        end
-        if (((index$2 + lane_q$q) & mask) == index$2) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$2_pass = buffer0$2$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$2_pass = buffer1$2$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$2_pass = buffer2$2$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$2_pass = buffer0$2$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$2_pass = buffer1$2$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$2_pass = buffer2$2$read_data;
-            end
-        end
-        if (((index$2 + lane_q$q) & mask) == index$3) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$2_pass = buffer0$3$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$2_pass = buffer1$3$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$2_pass = buffer2$3$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$2_pass = buffer0$3$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$2_pass = buffer1$3$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$2_pass = buffer2$3$read_data;
-            end
-        end
-        cur$3_pass = 'h0;
-        next$3_pass = 'h0;
-        if (((index$3 + lane_q$q) & mask) == index$0) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$3_pass = buffer0$0$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$3_pass = buffer1$0$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$3_pass = buffer2$0$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$3_pass = buffer0$0$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$3_pass = buffer1$0$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$3_pass = buffer2$0$read_data;
-            end
-        end
-        if (((index$3 + lane_q$q) & mask) == index$1) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$3_pass = buffer0$1$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$3_pass = buffer1$1$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$3_pass = buffer2$1$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$3_pass = buffer0$1$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$3_pass = buffer1$1$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$3_pass = buffer2$1$read_data;
-            end
-        end
-        if (((index$3 + lane_q$q) & mask) == index$2) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$3_pass = buffer0$2$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$3_pass = buffer1$2$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$3_pass = buffer2$2$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$3_pass = buffer0$2$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$3_pass = buffer1$2$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$3_pass = buffer2$2$read_data;
-            end
-        end
-        if (((index$3 + lane_q$q) & mask) == index$3) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$3_pass = buffer0$3$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$3_pass = buffer1$3$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$3_pass = buffer2$3$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$3_pass = buffer0$3$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$3_pass = buffer1$3$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$3_pass = buffer2$3$read_data;
-            end
-        end
         valid = read_q$q;
         cur$0 = cur$0_pass;
         cur$1 = cur$1_pass;
-        cur$2 = cur$2_pass;
-        cur$3 = cur$3_pass;
         next$0 = next$0_pass;
         next$1 = next$1_pass;
-        next$2 = next$2_pass;
-        next$3 = next$3_pass;
         ext_addr$0 = ext_addr$0_pass;
         ext_addr$1 = ext_addr$1_pass;
-        ext_addr$2 = ext_addr$2_pass;
-        ext_addr$3 = ext_addr$3_pass;
     end
     
 endmodule // top$fetch
@@ -2197,15 +1169,15 @@ module top$fetch$buffer0$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer0$0
@@ -2221,66 +1193,18 @@ module top$fetch$buffer0$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer0$1
-module top$fetch$buffer0$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer0$2
-module top$fetch$buffer0$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer0$3
 module top$fetch$buffer1$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
@@ -2293,15 +1217,15 @@ module top$fetch$buffer1$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer1$0
@@ -2317,66 +1241,18 @@ module top$fetch$buffer1$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer1$1
-module top$fetch$buffer1$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer1$2
-module top$fetch$buffer1$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer1$3
 module top$fetch$buffer2$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
@@ -2389,15 +1265,15 @@ module top$fetch$buffer2$0(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer2$0
@@ -2413,66 +1289,18 @@ module top$fetch$buffer2$1(read_address,read_clock,read_data,write_address,write
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[543:0];
+    reg [7:0] mem[1087:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][7:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem[write_address[10:0]] <= {write_data[7:0]};
        end
     end
 endmodule // top$fetch$buffer2$1
-module top$fetch$buffer2$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer2$2
-module top$fetch$buffer2$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [16:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [16:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [7:0] mem[543:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$fetch$buffer2$3
 module top$fetch$buffer_q(d,q,clock);
     
     // Module arguments
@@ -2558,40 +1386,6 @@ module top$fetch$dsb_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$dsb_q$1
-module top$fetch$dsb_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$dsb_q$2
-module top$fetch$dsb_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$dsb_q$3
 module top$fetch$first_ray_r(d,q,clock);
     
     // Module arguments
@@ -2609,7 +1403,7 @@ module top$fetch$first_ray_r(d,q,clock);
     end
           
 endmodule // top$fetch$first_ray_r
-module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_next,plane_count,plane,first_ray,x$0,x$1,x$2,x$3,holds$0,holds$1,holds$2,holds$3);
+module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_next,plane_count,plane,first_ray,x$0,x$1,holds$0,holds$1);
     
     // Module arguments
     input wire  clock;
@@ -2624,20 +1418,14 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_ne
     output reg  [15:0] first_ray;
     output reg  [15:0] x$0;
     output reg  [15:0] x$1;
-    output reg  [15:0] x$2;
-    output reg  [15:0] x$3;
     output reg  holds$0;
     output reg  holds$1;
-    output reg  holds$2;
-    output reg  holds$3;
     
     // Constant declarations
     localparam  perspective = 1'b0;
     localparam  index$0 = 16'h0;
     localparam  index$1 = 16'h1;
-    localparam  index$2 = 16'h2;
-    localparam  index$3 = 16'h3;
-    localparam  shift = 16'h2;
+    localparam  shift = 16'h1;
     
     // Stub signals
     reg  pos_x$clock;
@@ -2664,18 +1452,6 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_ne
     reg  [63:0] group_x$1$host_data;
     reg  [17:0] group_x$1$address;
     wire  [16:0] group_x$1$data = 'h0;
-    reg  group_x$2$clock;
-    reg  group_x$2$host_write;
-    reg  [23:0] group_x$2$host_address;
-    reg  [63:0] group_x$2$host_data;
-    reg  [17:0] group_x$2$address;
-    wire  [16:0] group_x$2$data = 'h0;
-    reg  group_x$3$clock;
-    reg  group_x$3$host_write;
-    reg  [23:0] group_x$3$host_address;
-    reg  [63:0] group_x$3$host_data;
-    reg  [17:0] group_x$3$address;
-    wire  [16:0] group_x$3$data = 'h0;
     
     // Local signals
     reg  [15:0] chunk_ray;
@@ -2696,12 +1472,8 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_ne
     reg  [15:0] first_ray_pass;
     reg  [15:0] x$0_pass;
     reg  [15:0] x$1_pass;
-    reg  [15:0] x$2_pass;
-    reg  [15:0] x$3_pass;
     reg  holds$0_pass;
     reg  holds$1_pass;
-    reg  holds$2_pass;
-    reg  holds$3_pass;
     always @(*) begin
         pos_x$clock = clock;
         pos_x$host_write = host_write;
@@ -2743,38 +1515,12 @@ module top$fetch$group(clock,host_write,host_address,host_data,u0,chunk,chunk_ne
             x$1_pass = group_x$1$data[('h0)+:(16)];
             holds$1_pass = group_x$1$data['h10];
         end
-        group_x$2$clock = clock;
-        group_x$2$host_write = host_write;
-        group_x$2$host_address = host_address;
-        group_x$2$host_data = host_data;
-        group_x$2$address = chunk_next[('h0)+:(18)];
-        x$2_pass = x0 + index$2;
-        holds$2_pass = 1'b1;
-        if (perspective) begin
-            x$2_pass = group_x$2$data[('h0)+:(16)];
-            holds$2_pass = group_x$2$data['h10];
-        end
-        group_x$3$clock = clock;
-        group_x$3$host_write = host_write;
-        group_x$3$host_address = host_address;
-        group_x$3$host_data = host_data;
-        group_x$3$address = chunk_next[('h0)+:(18)];
-        x$3_pass = x0 + index$3;
-        holds$3_pass = 1'b1;
-        if (perspective) begin
-            x$3_pass = group_x$3$data[('h0)+:(16)];
-            holds$3_pass = group_x$3$data['h10];
-        end
         plane = plane_pass;
         first_ray = first_ray_pass;
         x$0 = x$0_pass;
         x$1 = x$1_pass;
-        x$2 = x$2_pass;
-        x$3 = x$3_pass;
         holds$0 = holds$0_pass;
         holds$1 = holds$1_pass;
-        holds$2 = holds$2_pass;
-        holds$3 = holds$3_pass;
     end
     
 endmodule // top$fetch$group
@@ -2837,40 +1583,6 @@ module top$fetch$holds_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$holds_q$1
-module top$fetch$holds_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$holds_q$2
-module top$fetch$holds_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$holds_q$3
 module top$fetch$holds_r$0(d,q,clock);
     
     // Module arguments
@@ -2905,40 +1617,6 @@ module top$fetch$holds_r$1(d,q,clock);
     end
           
 endmodule // top$fetch$holds_r$1
-module top$fetch$holds_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$holds_r$2
-module top$fetch$holds_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$holds_r$3
 module top$fetch$in_stream_q$0(d,q,clock);
     
     // Module arguments
@@ -2973,40 +1651,6 @@ module top$fetch$in_stream_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$in_stream_q$1
-module top$fetch$in_stream_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$in_stream_q$2
-module top$fetch$in_stream_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$in_stream_q$3
 module top$fetch$inside_q$0(d,q,clock);
     
     // Module arguments
@@ -3041,40 +1685,6 @@ module top$fetch$inside_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$inside_q$1
-module top$fetch$inside_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$inside_q$2
-module top$fetch$inside_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$inside_q$3
 module top$fetch$lane_q(d,q,clock);
     
     // Module arguments
@@ -3104,15 +1714,15 @@ module top$fetch$memory$0(read_address,read_clock,read_data,write_address,write_
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[8191:0];
+    reg [15:0] mem[16383:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[12:0]];
+       read_data <= mem[read_address[13:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[12:0]] <= write_data;
+          mem[write_address[13:0]] <= write_data;
        end
     end
 endmodule // top$fetch$memory$0
@@ -3128,66 +1738,18 @@ module top$fetch$memory$1(read_address,read_clock,read_data,write_address,write_
     input wire  write_enable;
     
     // Update code (custom)
-    reg [15:0] mem[8191:0];
+    reg [15:0] mem[16383:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[12:0]];
+       read_data <= mem[read_address[13:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[12:0]] <= write_data;
+          mem[write_address[13:0]] <= write_data;
        end
     end
 endmodule // top$fetch$memory$1
-module top$fetch$memory$2(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [15:0] mem[8191:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[12:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[12:0]] <= write_data;
-       end
-    end
-endmodule // top$fetch$memory$2
-module top$fetch$memory$3(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [15:0] read_address;
-    input wire  read_clock;
-    output reg  [15:0] read_data;
-    input wire  [15:0] write_address;
-    input wire  write_clock;
-    input wire  [15:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [15:0] mem[8191:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= mem[read_address[12:0]];
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[12:0]] <= write_data;
-       end
-    end
-endmodule // top$fetch$memory$3
 module top$fetch$module_q$0(d,q,clock);
     
     // Module arguments
@@ -3222,40 +1784,6 @@ module top$fetch$module_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$module_q$1
-module top$fetch$module_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$module_q$2
-module top$fetch$module_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$module_q$3
 module top$fetch$next_q(d,q,clock);
     
     // Module arguments
@@ -3614,40 +2142,6 @@ module top$fetch$s1_holds$1(d,q,clock);
     end
           
 endmodule // top$fetch$s1_holds$1
-module top$fetch$s1_holds$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_holds$2
-module top$fetch$s1_holds$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_holds$3
 module top$fetch$s1_plane(d,q,clock);
     
     // Module arguments
@@ -3716,40 +2210,6 @@ module top$fetch$s1_ray$1(d,q,clock);
     end
           
 endmodule // top$fetch$s1_ray$1
-module top$fetch$s1_ray$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_ray$2
-module top$fetch$s1_ray$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_ray$3
 module top$fetch$s1_row(d,q,clock);
     
     // Module arguments
@@ -3818,40 +2278,6 @@ module top$fetch$s1_x$1(d,q,clock);
     end
           
 endmodule // top$fetch$s1_x$1
-module top$fetch$s1_x$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_x$2
-module top$fetch$s1_x$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s1_x$3
 module top$fetch$s2_address$0(d,q,clock);
     
     // Module arguments
@@ -3886,40 +2312,6 @@ module top$fetch$s2_address$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_address$1
-module top$fetch$s2_address$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_address$2
-module top$fetch$s2_address$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_address$3
 module top$fetch$s2_buffer(d,q,clock);
     
     // Module arguments
@@ -3971,40 +2363,6 @@ module top$fetch$s2_dsb$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_dsb$1
-module top$fetch$s2_dsb$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_dsb$2
-module top$fetch$s2_dsb$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_dsb$3
 module top$fetch$s2_holds$0(d,q,clock);
     
     // Module arguments
@@ -4039,40 +2397,6 @@ module top$fetch$s2_holds$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_holds$1
-module top$fetch$s2_holds$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_holds$2
-module top$fetch$s2_holds$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_holds$3
 module top$fetch$s2_in_stream$0(d,q,clock);
     
     // Module arguments
@@ -4107,40 +2431,6 @@ module top$fetch$s2_in_stream$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_in_stream$1
-module top$fetch$s2_in_stream$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_in_stream$2
-module top$fetch$s2_in_stream$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_in_stream$3
 module top$fetch$s2_inside$0(d,q,clock);
     
     // Module arguments
@@ -4175,40 +2465,6 @@ module top$fetch$s2_inside$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_inside$1
-module top$fetch$s2_inside$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_inside$2
-module top$fetch$s2_inside$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_inside$3
 module top$fetch$s2_module$0(d,q,clock);
     
     // Module arguments
@@ -4243,40 +2499,6 @@ module top$fetch$s2_module$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_module$1
-module top$fetch$s2_module$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_module$2
-module top$fetch$s2_module$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_module$3
 module top$fetch$s2_write_address$0(d,q,clock);
     
     // Module arguments
@@ -4311,40 +2533,6 @@ module top$fetch$s2_write_address$1(d,q,clock);
     end
           
 endmodule // top$fetch$s2_write_address$1
-module top$fetch$s2_write_address$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_write_address$2
-module top$fetch$s2_write_address$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$s2_write_address$3
 module top$fetch$s2_writing(d,q,clock);
     
     // Module arguments
@@ -4967,40 +3155,6 @@ module top$fetch$write_address_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$write_address_q$1
-module top$fetch$write_address_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$write_address_q$2
-module top$fetch$write_address_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$write_address_q$3
 module top$fetch$write_q(d,q,clock);
     
     // Module arguments
@@ -5069,37 +3223,3 @@ module top$fetch$x_r$1(d,q,clock);
     end
           
 endmodule // top$fetch$x_r$1
-module top$fetch$x_r$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$x_r$2
-module top$fetch$x_r$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$fetch$x_r$3

@@ -1,4 +1,4 @@
-module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,first,unit_valid,unit_first,unit_last,unit_cast,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3,in_volume,in_inner,dx_neg,dx_mag,dy_neg,dy_mag);
+module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,first,unit_valid,unit_first,unit_last,unit_cast,wx$0,wx$1,wy$0,wy$1,in_volume,in_inner,dx_neg,dx_mag,dy_neg,dy_mag);
     
     // Module arguments
     input wire  clock;
@@ -14,12 +14,8 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
     output reg  unit_cast;
     output reg  [15:0] wx$0;
     output reg  [15:0] wx$1;
-    output reg  [15:0] wx$2;
-    output reg  [15:0] wx$3;
     output reg  [15:0] wy$0;
     output reg  [15:0] wy$1;
-    output reg  [15:0] wy$2;
-    output reg  [15:0] wy$3;
     output reg  [7:0] in_volume;
     output reg  [7:0] in_inner;
     output reg  dx_neg;
@@ -72,12 +68,8 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
     reg  [15:0] templates$segment;
     wire  [15:0] templates$wx$0;
     wire  [15:0] templates$wx$1;
-    wire  [15:0] templates$wx$2;
-    wire  [15:0] templates$wx$3;
     wire  [15:0] templates$wy$0;
     wire  [15:0] templates$wy$1;
-    wire  [15:0] templates$wy$2;
-    wire  [15:0] templates$wy$3;
     reg  increments$clock;
     reg  increments$host_write;
     reg  [23:0] increments$host_address;
@@ -101,18 +93,6 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
     reg  [63:0] bounds$1$host_data;
     reg  [7:0] bounds$1$address;
     wire  [63:0] bounds$1$data;
-    reg  bounds$2$clock;
-    reg  bounds$2$host_write;
-    reg  [23:0] bounds$2$host_address;
-    reg  [63:0] bounds$2$host_data;
-    reg  [7:0] bounds$2$address;
-    wire  [63:0] bounds$2$data;
-    reg  bounds$3$clock;
-    reg  bounds$3$host_write;
-    reg  [23:0] bounds$3$host_address;
-    reg  [63:0] bounds$3$host_data;
-    reg  [7:0] bounds$3$address;
-    wire  [63:0] bounds$3$data;
     reg  inner$0$clock;
     reg  inner$0$host_write;
     reg  [23:0] inner$0$host_address;
@@ -125,18 +105,6 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
     reg  [63:0] inner$1$host_data;
     reg  [7:0] inner$1$address;
     wire  [63:0] inner$1$data;
-    reg  inner$2$clock;
-    reg  inner$2$host_write;
-    reg  [23:0] inner$2$host_address;
-    reg  [63:0] inner$2$host_data;
-    reg  [7:0] inner$2$address;
-    wire  [63:0] inner$2$data;
-    reg  inner$3$clock;
-    reg  inner$3$host_write;
-    reg  [23:0] inner$3$host_address;
-    reg  [63:0] inner$3$host_data;
-    reg  [7:0] inner$3$address;
-    wire  [63:0] inner$3$data;
     
     // Local signals
     reg  [15:0] last_segment;
@@ -209,12 +177,8 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
         .segment(templates$segment),
         .wx$0(templates$wx$0),
         .wx$1(templates$wx$1),
-        .wx$2(templates$wx$2),
-        .wx$3(templates$wx$3),
         .wy$0(templates$wy$0),
-        .wy$1(templates$wy$1),
-        .wy$2(templates$wy$2),
-        .wy$3(templates$wy$3)
+        .wy$1(templates$wy$1)
     );
     top$pipeline$control$increments increments(
         .clock(increments$clock),
@@ -245,22 +209,6 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
         .address(bounds$1$address),
         .data(bounds$1$data)
     );
-    top$pipeline$control$bounds$2 bounds$2(
-        .clock(bounds$2$clock),
-        .host_write(bounds$2$host_write),
-        .host_address(bounds$2$host_address),
-        .host_data(bounds$2$host_data),
-        .address(bounds$2$address),
-        .data(bounds$2$data)
-    );
-    top$pipeline$control$bounds$3 bounds$3(
-        .clock(bounds$3$clock),
-        .host_write(bounds$3$host_write),
-        .host_address(bounds$3$host_address),
-        .host_data(bounds$3$host_data),
-        .address(bounds$3$address),
-        .data(bounds$3$data)
-    );
     top$pipeline$control$inner$0 inner$0(
         .clock(inner$0$clock),
         .host_write(inner$0$host_write),
@@ -276,22 +224,6 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
         .host_data(inner$1$host_data),
         .address(inner$1$address),
         .data(inner$1$data)
-    );
-    top$pipeline$control$inner$2 inner$2(
-        .clock(inner$2$clock),
-        .host_write(inner$2$host_write),
-        .host_address(inner$2$host_address),
-        .host_data(inner$2$host_data),
-        .address(inner$2$address),
-        .data(inner$2$data)
-    );
-    top$pipeline$control$inner$3 inner$3(
-        .clock(inner$3$clock),
-        .host_write(inner$3$host_write),
-        .host_address(inner$3$host_address),
-        .host_data(inner$3$host_data),
-        .address(inner$3$address),
-        .data(inner$3$data)
     );
     
     // Update code
@@ -414,42 +346,6 @@ module top$pipeline$control(clock,host_write,host_address,host_data,start,valid,
         if ((unit_ray >= inner$1$data[('h0)+:(16)]) & (unit_ray <= inner$1$data[('h10)+:(16)]) & (unit_scanline >= inner$1$data[('h20)+:(16)]) & (unit_scanline <= inner$1$data[('h30)+:(16)])) begin
             lane_inner$1 = lane_bit$1;
         end
-        bounds$2$clock = clock;
-        bounds$2$host_write = host_write;
-        bounds$2$host_address = host_address;
-        bounds$2$host_data = host_data;
-        inner$2$clock = clock;
-        inner$2$host_write = host_write;
-        inner$2$host_address = host_address;
-        inner$2$host_data = host_data;
-        bounds$2$address = unit_segment[('h0)+:(8)];
-        wx$2 = templates$wx$2;
-        wy$2 = templates$wy$2;
-        if ((unit_ray >= bounds$2$data[('h0)+:(16)]) & (unit_ray <= bounds$2$data[('h10)+:(16)]) & (unit_scanline >= bounds$2$data[('h20)+:(16)]) & (unit_scanline <= bounds$2$data[('h30)+:(16)])) begin
-            lane_in$2 = lane_bit$2;
-        end
-        inner$2$address = unit_segment[('h0)+:(8)];
-        if ((unit_ray >= inner$2$data[('h0)+:(16)]) & (unit_ray <= inner$2$data[('h10)+:(16)]) & (unit_scanline >= inner$2$data[('h20)+:(16)]) & (unit_scanline <= inner$2$data[('h30)+:(16)])) begin
-            lane_inner$2 = lane_bit$2;
-        end
-        bounds$3$clock = clock;
-        bounds$3$host_write = host_write;
-        bounds$3$host_address = host_address;
-        bounds$3$host_data = host_data;
-        inner$3$clock = clock;
-        inner$3$host_write = host_write;
-        inner$3$host_address = host_address;
-        inner$3$host_data = host_data;
-        bounds$3$address = unit_segment[('h0)+:(8)];
-        wx$3 = templates$wx$3;
-        wy$3 = templates$wy$3;
-        if ((unit_ray >= bounds$3$data[('h0)+:(16)]) & (unit_ray <= bounds$3$data[('h10)+:(16)]) & (unit_scanline >= bounds$3$data[('h20)+:(16)]) & (unit_scanline <= bounds$3$data[('h30)+:(16)])) begin
-            lane_in$3 = lane_bit$3;
-        end
-        inner$3$address = unit_segment[('h0)+:(8)];
-        if ((unit_ray >= inner$3$data[('h0)+:(16)]) & (unit_ray <= inner$3$data[('h10)+:(16)]) & (unit_scanline >= inner$3$data[('h20)+:(16)]) & (unit_scanline <= inner$3$data[('h30)+:(16)])) begin
-            lane_inner$3 = lane_bit$3;
-        end
         in_volume = lane_in$0 | lane_in$1 | lane_in$2 | lane_in$3 | lane_in$4 | lane_in$5 | lane_in$6 | lane_in$7;
         in_inner = lane_inner$0 | lane_inner$1 | lane_inner$2 | lane_inner$3 | lane_inner$4 | lane_inner$5 | lane_inner$6 | lane_inner$7;
     end
@@ -466,17 +362,17 @@ module top$pipeline$control$bounds$0(clock,host_write,host_address,host_data,add
     output reg  [63:0] data;
     
     // Update code (custom)
-    reg [63:0] mem[7:0];
+    reg [63:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 64'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd655360 && host_address < 24'd655368) begin
-          mem[host_address[2:0]] <= host_data[63:0];
+       if (host_write && host_address >= 24'd655360 && host_address < 24'd655376) begin
+          mem[host_address[3:0]] <= host_data[63:0];
        end
     end
 endmodule // top$pipeline$control$bounds$0
@@ -491,70 +387,20 @@ module top$pipeline$control$bounds$1(clock,host_write,host_address,host_data,add
     output reg  [63:0] data;
     
     // Update code (custom)
-    reg [63:0] mem[7:0];
+    reg [63:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 64'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd655616 && host_address < 24'd655624) begin
-          mem[host_address[2:0]] <= host_data[63:0];
+       if (host_write && host_address >= 24'd655616 && host_address < 24'd655632) begin
+          mem[host_address[3:0]] <= host_data[63:0];
        end
     end
 endmodule // top$pipeline$control$bounds$1
-module top$pipeline$control$bounds$2(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [7:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    reg [63:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd655872 && host_address < 24'd655880) begin
-          mem[host_address[2:0]] <= host_data[63:0];
-       end
-    end
-endmodule // top$pipeline$control$bounds$2
-module top$pipeline$control$bounds$3(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [7:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    reg [63:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd656128 && host_address < 24'd656136) begin
-          mem[host_address[2:0]] <= host_data[63:0];
-       end
-    end
-endmodule // top$pipeline$control$bounds$3
 module top$pipeline$control$increments(clock,host_write,host_address,host_data,centre_last,ray,scanline,dx_neg,dx_mag,dy_neg,dy_mag);
     
     // Module arguments
@@ -938,17 +784,17 @@ module top$pipeline$control$inner$0(clock,host_write,host_address,host_data,addr
     output reg  [63:0] data;
     
     // Update code (custom)
-    reg [63:0] mem[7:0];
+    reg [63:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 64'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd659456 && host_address < 24'd659464) begin
-          mem[host_address[2:0]] <= host_data[63:0];
+       if (host_write && host_address >= 24'd659456 && host_address < 24'd659472) begin
+          mem[host_address[3:0]] <= host_data[63:0];
        end
     end
 endmodule // top$pipeline$control$inner$0
@@ -963,70 +809,20 @@ module top$pipeline$control$inner$1(clock,host_write,host_address,host_data,addr
     output reg  [63:0] data;
     
     // Update code (custom)
-    reg [63:0] mem[7:0];
+    reg [63:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 64'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd659712 && host_address < 24'd659720) begin
-          mem[host_address[2:0]] <= host_data[63:0];
+       if (host_write && host_address >= 24'd659712 && host_address < 24'd659728) begin
+          mem[host_address[3:0]] <= host_data[63:0];
        end
     end
 endmodule // top$pipeline$control$inner$1
-module top$pipeline$control$inner$2(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [7:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    reg [63:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd659968 && host_address < 24'd659976) begin
-          mem[host_address[2:0]] <= host_data[63:0];
-       end
-    end
-endmodule // top$pipeline$control$inner$2
-module top$pipeline$control$inner$3(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [7:0] address;
-    output reg  [63:0] data;
-    
-    // Update code (custom)
-    reg [63:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 64'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd660224 && host_address < 24'd660232) begin
-          mem[host_address[2:0]] <= host_data[63:0];
-       end
-    end
-endmodule // top$pipeline$control$inner$3
 module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1038,7 +834,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h8;
+    localparam  longest_last = 16'h10;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
     
@@ -1173,15 +969,15 @@ module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_add
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [63:0] mem[8:0];
+    reg [63:0] mem[16:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[3:0]];
+       read_data <= mem[read_address[4:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= write_data;
+          mem[write_address[4:0]] <= write_data;
        end
     end
 endmodule // top$pipeline$control$late$ram
@@ -1404,7 +1200,7 @@ module top$pipeline$control$segment(d,q,clock);
     end
           
 endmodule // top$pipeline$control$segment
-module top$pipeline$control$templates(clock,host_write,host_address,host_data,stride,ray,scanline,segment,wx$0,wx$1,wx$2,wx$3,wy$0,wy$1,wy$2,wy$3);
+module top$pipeline$control$templates(clock,host_write,host_address,host_data,stride,ray,scanline,segment,wx$0,wx$1,wy$0,wy$1);
     
     // Module arguments
     input wire  clock;
@@ -1417,12 +1213,8 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     input wire  [15:0] segment;
     output reg  [15:0] wx$0;
     output reg  [15:0] wx$1;
-    output reg  [15:0] wx$2;
-    output reg  [15:0] wx$3;
     output reg  [15:0] wy$0;
     output reg  [15:0] wy$1;
-    output reg  [15:0] wy$2;
-    output reg  [15:0] wy$3;
     
     // Constant declarations
     localparam  per_ray = 1'b0;
@@ -1440,18 +1232,6 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     reg  [63:0] wx_rom$1$host_data;
     reg  [15:0] wx_rom$1$address;
     wire  [15:0] wx_rom$1$data;
-    reg  wx_rom$2$clock;
-    reg  wx_rom$2$host_write;
-    reg  [23:0] wx_rom$2$host_address;
-    reg  [63:0] wx_rom$2$host_data;
-    reg  [15:0] wx_rom$2$address;
-    wire  [15:0] wx_rom$2$data;
-    reg  wx_rom$3$clock;
-    reg  wx_rom$3$host_write;
-    reg  [23:0] wx_rom$3$host_address;
-    reg  [63:0] wx_rom$3$host_data;
-    reg  [15:0] wx_rom$3$address;
-    wire  [15:0] wx_rom$3$data;
     reg  wy_rom$0$clock;
     reg  wy_rom$0$host_write;
     reg  [23:0] wy_rom$0$host_address;
@@ -1464,18 +1244,6 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
     reg  [63:0] wy_rom$1$host_data;
     reg  [15:0] wy_rom$1$address;
     wire  [15:0] wy_rom$1$data;
-    reg  wy_rom$2$clock;
-    reg  wy_rom$2$host_write;
-    reg  [23:0] wy_rom$2$host_address;
-    reg  [63:0] wy_rom$2$host_data;
-    reg  [15:0] wy_rom$2$address;
-    wire  [15:0] wy_rom$2$data;
-    reg  wy_rom$3$clock;
-    reg  wy_rom$3$host_write;
-    reg  [23:0] wy_rom$3$host_address;
-    reg  [63:0] wy_rom$3$host_data;
-    reg  [15:0] wy_rom$3$address;
-    wire  [15:0] wy_rom$3$data;
     
     // Local signals
     reg  [15:0] row_stride;
@@ -1499,22 +1267,6 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
         .address(wx_rom$1$address),
         .data(wx_rom$1$data)
     );
-    top$pipeline$control$templates$wx_rom$2 wx_rom$2(
-        .clock(wx_rom$2$clock),
-        .host_write(wx_rom$2$host_write),
-        .host_address(wx_rom$2$host_address),
-        .host_data(wx_rom$2$host_data),
-        .address(wx_rom$2$address),
-        .data(wx_rom$2$data)
-    );
-    top$pipeline$control$templates$wx_rom$3 wx_rom$3(
-        .clock(wx_rom$3$clock),
-        .host_write(wx_rom$3$host_write),
-        .host_address(wx_rom$3$host_address),
-        .host_data(wx_rom$3$host_data),
-        .address(wx_rom$3$address),
-        .data(wx_rom$3$data)
-    );
     top$pipeline$control$templates$wy_rom$0 wy_rom$0(
         .clock(wy_rom$0$clock),
         .host_write(wy_rom$0$host_write),
@@ -1530,22 +1282,6 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
         .host_data(wy_rom$1$host_data),
         .address(wy_rom$1$address),
         .data(wy_rom$1$data)
-    );
-    top$pipeline$control$templates$wy_rom$2 wy_rom$2(
-        .clock(wy_rom$2$clock),
-        .host_write(wy_rom$2$host_write),
-        .host_address(wy_rom$2$host_address),
-        .host_data(wy_rom$2$host_data),
-        .address(wy_rom$2$address),
-        .data(wy_rom$2$data)
-    );
-    top$pipeline$control$templates$wy_rom$3 wy_rom$3(
-        .clock(wy_rom$3$clock),
-        .host_write(wy_rom$3$host_write),
-        .host_address(wy_rom$3$host_address),
-        .host_data(wy_rom$3$host_data),
-        .address(wy_rom$3$address),
-        .data(wy_rom$3$data)
     );
     
     // Update code
@@ -1580,30 +1316,6 @@ module top$pipeline$control$templates(clock,host_write,host_address,host_data,st
         wy_rom$1$address = wy_entry[('h0)+:(16)];
         wx$1 = wx_rom$1$data;
         wy$1 = wy_rom$1$data;
-        wx_rom$2$clock = clock;
-        wx_rom$2$host_write = host_write;
-        wx_rom$2$host_address = host_address;
-        wx_rom$2$host_data = host_data;
-        wy_rom$2$clock = clock;
-        wy_rom$2$host_write = host_write;
-        wy_rom$2$host_address = host_address;
-        wy_rom$2$host_data = host_data;
-        wx_rom$2$address = wx_entry[('h0)+:(16)];
-        wy_rom$2$address = wy_entry[('h0)+:(16)];
-        wx$2 = wx_rom$2$data;
-        wy$2 = wy_rom$2$data;
-        wx_rom$3$clock = clock;
-        wx_rom$3$host_write = host_write;
-        wx_rom$3$host_address = host_address;
-        wx_rom$3$host_data = host_data;
-        wy_rom$3$clock = clock;
-        wy_rom$3$host_write = host_write;
-        wy_rom$3$host_address = host_address;
-        wy_rom$3$host_data = host_data;
-        wx_rom$3$address = wx_entry[('h0)+:(16)];
-        wy_rom$3$address = wy_entry[('h0)+:(16)];
-        wx$3 = wx_rom$3$data;
-        wy$3 = wy_rom$3$data;
     end
     
 endmodule // top$pipeline$control$templates
@@ -1618,17 +1330,17 @@ module top$pipeline$control$templates$wx_rom$0(clock,host_write,host_address,hos
     output reg  [15:0] data;
     
     // Update code (custom)
-    reg [15:0] mem[7:0];
+    reg [15:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1048576 && host_address < 24'd1048584) begin
-          mem[host_address[2:0]] <= host_data[15:0];
+       if (host_write && host_address >= 24'd1048576 && host_address < 24'd1048592) begin
+          mem[host_address[3:0]] <= host_data[15:0];
        end
     end
 endmodule // top$pipeline$control$templates$wx_rom$0
@@ -1643,70 +1355,20 @@ module top$pipeline$control$templates$wx_rom$1(clock,host_write,host_address,hos
     output reg  [15:0] data;
     
     // Update code (custom)
-    reg [15:0] mem[7:0];
+    reg [15:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1114112 && host_address < 24'd1114120) begin
-          mem[host_address[2:0]] <= host_data[15:0];
+       if (host_write && host_address >= 24'd1114112 && host_address < 24'd1114128) begin
+          mem[host_address[3:0]] <= host_data[15:0];
        end
     end
 endmodule // top$pipeline$control$templates$wx_rom$1
-module top$pipeline$control$templates$wx_rom$2(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    reg [15:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1179648 && host_address < 24'd1179656) begin
-          mem[host_address[2:0]] <= host_data[15:0];
-       end
-    end
-endmodule // top$pipeline$control$templates$wx_rom$2
-module top$pipeline$control$templates$wx_rom$3(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    reg [15:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1245184 && host_address < 24'd1245192) begin
-          mem[host_address[2:0]] <= host_data[15:0];
-       end
-    end
-endmodule // top$pipeline$control$templates$wx_rom$3
 module top$pipeline$control$templates$wy_rom$0(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -1718,17 +1380,17 @@ module top$pipeline$control$templates$wy_rom$0(clock,host_write,host_address,hos
     output reg  [15:0] data;
     
     // Update code (custom)
-    reg [15:0] mem[7:0];
+    reg [15:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1572864 && host_address < 24'd1572872) begin
-          mem[host_address[2:0]] <= host_data[15:0];
+       if (host_write && host_address >= 24'd1572864 && host_address < 24'd1572880) begin
+          mem[host_address[3:0]] <= host_data[15:0];
        end
     end
 endmodule // top$pipeline$control$templates$wy_rom$0
@@ -1743,67 +1405,17 @@ module top$pipeline$control$templates$wy_rom$1(clock,host_write,host_address,hos
     output reg  [15:0] data;
     
     // Update code (custom)
-    reg [15:0] mem[7:0];
+    reg [15:0] mem[15:0];
     integer i;
     initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
     end
     
-    always @(*) data = mem[address[2:0]];
+    always @(*) data = mem[address[3:0]];
     
     always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1638400 && host_address < 24'd1638408) begin
-          mem[host_address[2:0]] <= host_data[15:0];
+       if (host_write && host_address >= 24'd1638400 && host_address < 24'd1638416) begin
+          mem[host_address[3:0]] <= host_data[15:0];
        end
     end
 endmodule // top$pipeline$control$templates$wy_rom$1
-module top$pipeline$control$templates$wy_rom$2(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    reg [15:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1703936 && host_address < 24'd1703944) begin
-          mem[host_address[2:0]] <= host_data[15:0];
-       end
-    end
-endmodule // top$pipeline$control$templates$wy_rom$2
-module top$pipeline$control$templates$wy_rom$3(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [15:0] address;
-    output reg  [15:0] data;
-    
-    // Update code (custom)
-    reg [15:0] mem[7:0];
-    integer i;
-    initial begin
-       for (i = 0; i <= 7; i = i + 1) mem[i] = 16'd0;
-    end
-    
-    always @(*) data = mem[address[2:0]];
-    
-    always @(posedge clock) begin
-       if (host_write && host_address >= 24'd1769472 && host_address < 24'd1769480) begin
-          mem[host_address[2:0]] <= host_data[15:0];
-       end
-    end
-endmodule // top$pipeline$control$templates$wy_rom$3

@@ -1,4 +1,4 @@
-module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$0,ext_addr$1,ext_addr$2,ext_addr$3,ext_data$0,ext_data$1,ext_data$2,ext_data$3,load_enable,load_module,load_address,load_data);
+module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample,ext_addr$0,ext_addr$1,ext_data$0,ext_data$1,load_enable,load_module,load_address,load_data);
     
     // Module arguments
     input wire  clock;
@@ -14,12 +14,8 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
     output reg  has_sample;
     output reg  [31:0] ext_addr$0;
     output reg  [31:0] ext_addr$1;
-    output reg  [31:0] ext_addr$2;
-    output reg  [31:0] ext_addr$3;
     input wire  [15:0] ext_data$0;
     input wire  [15:0] ext_data$1;
-    input wire  [15:0] ext_data$2;
-    input wire  [15:0] ext_data$3;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [31:0] load_address;
@@ -34,20 +30,12 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
     wire  fetch$valid;
     wire  [15:0] fetch$cur$0;
     wire  [15:0] fetch$cur$1;
-    wire  [15:0] fetch$cur$2;
-    wire  [15:0] fetch$cur$3;
     wire  [15:0] fetch$next$0;
     wire  [15:0] fetch$next$1;
-    wire  [15:0] fetch$next$2;
-    wire  [15:0] fetch$next$3;
     wire  [31:0] fetch$ext_addr$0;
     wire  [31:0] fetch$ext_addr$1;
-    wire  [31:0] fetch$ext_addr$2;
-    wire  [31:0] fetch$ext_addr$3;
     reg  [15:0] fetch$ext_data$0;
     reg  [15:0] fetch$ext_data$1;
-    reg  [15:0] fetch$ext_data$2;
-    reg  [15:0] fetch$ext_data$3;
     reg  fetch$load_enable;
     reg  [7:0] fetch$load_module;
     reg  [31:0] fetch$load_address;
@@ -60,12 +48,8 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
     reg  pipeline$valid;
     reg  [15:0] pipeline$cur$0;
     reg  [15:0] pipeline$cur$1;
-    reg  [15:0] pipeline$cur$2;
-    reg  [15:0] pipeline$cur$3;
     reg  [15:0] pipeline$next$0;
     reg  [15:0] pipeline$next$1;
-    reg  [15:0] pipeline$next$2;
-    reg  [15:0] pipeline$next$3;
     wire  pipeline$done;
     wire  [31:0] pipeline$pixel_r;
     wire  [15:0] pipeline$pixel_g;
@@ -83,20 +67,12 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
         .valid(fetch$valid),
         .cur$0(fetch$cur$0),
         .cur$1(fetch$cur$1),
-        .cur$2(fetch$cur$2),
-        .cur$3(fetch$cur$3),
         .next$0(fetch$next$0),
         .next$1(fetch$next$1),
-        .next$2(fetch$next$2),
-        .next$3(fetch$next$3),
         .ext_addr$0(fetch$ext_addr$0),
         .ext_addr$1(fetch$ext_addr$1),
-        .ext_addr$2(fetch$ext_addr$2),
-        .ext_addr$3(fetch$ext_addr$3),
         .ext_data$0(fetch$ext_data$0),
         .ext_data$1(fetch$ext_data$1),
-        .ext_data$2(fetch$ext_data$2),
-        .ext_data$3(fetch$ext_data$3),
         .load_enable(fetch$load_enable),
         .load_module(fetch$load_module),
         .load_address(fetch$load_address),
@@ -111,12 +87,8 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
         .valid(pipeline$valid),
         .cur$0(pipeline$cur$0),
         .cur$1(pipeline$cur$1),
-        .cur$2(pipeline$cur$2),
-        .cur$3(pipeline$cur$3),
         .next$0(pipeline$next$0),
         .next$1(pipeline$next$1),
-        .next$2(pipeline$next$2),
-        .next$3(pipeline$next$3),
         .done(pipeline$done),
         .pixel_r(pipeline$pixel_r),
         .pixel_g(pipeline$pixel_g),
@@ -150,14 +122,6 @@ module top(clock,host_write,host_address,host_data,start,done,pixel_r,pixel_g,pi
         pipeline$next$1 = fetch$next$1;
         ext_addr$1 = fetch$ext_addr$1;
         fetch$ext_data$1 = ext_data$1;
-        pipeline$cur$2 = fetch$cur$2;
-        pipeline$next$2 = fetch$next$2;
-        ext_addr$2 = fetch$ext_addr$2;
-        fetch$ext_data$2 = ext_data$2;
-        pipeline$cur$3 = fetch$cur$3;
-        pipeline$next$3 = fetch$next$3;
-        ext_addr$3 = fetch$ext_addr$3;
-        fetch$ext_data$3 = ext_data$3;
         done = pipeline$done;
         pixel_r = pipeline$pixel_r;
         pixel_g = pipeline$pixel_g;

@@ -1,4 +1,4 @@
-module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1,cur$2,cur$3,next$0,next$1,next$2,next$3,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample);
+module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1,next$0,next$1,done,pixel_r,pixel_g,pixel_b,pixel_a,has_sample);
     
     // Module arguments
     input wire  clock;
@@ -9,12 +9,8 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     input wire  valid;
     input wire  [15:0] cur$0;
     input wire  [15:0] cur$1;
-    input wire  [15:0] cur$2;
-    input wire  [15:0] cur$3;
     input wire  [15:0] next$0;
     input wire  [15:0] next$1;
-    input wire  [15:0] next$2;
-    input wire  [15:0] next$3;
     output reg  done;
     output reg  [31:0] pixel_r;
     output reg  [15:0] pixel_g;
@@ -23,7 +19,7 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     output reg  has_sample;
     
     // Constant declarations
-    localparam  cast_bit = 8'h8;
+    localparam  cast_bit = 8'h4;
     localparam  gradients = 1'b1;
     localparam  shaded = 1'b1;
     localparam  xray = 1'b0;
@@ -68,12 +64,8 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     wire  control$unit_cast;
     wire  [15:0] control$wx$0;
     wire  [15:0] control$wx$1;
-    wire  [15:0] control$wx$2;
-    wire  [15:0] control$wx$3;
     wire  [15:0] control$wy$0;
     wire  [15:0] control$wy$1;
-    wire  [15:0] control$wy$2;
-    wire  [15:0] control$wy$3;
     wire  [7:0] control$in_volume;
     wire  [7:0] control$in_inner;
     wire  control$dx_neg;
@@ -83,25 +75,15 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  lanes$clock;
     reg  [15:0] lanes$cur$0;
     reg  [15:0] lanes$cur$1;
-    reg  [15:0] lanes$cur$2;
-    reg  [15:0] lanes$cur$3;
     reg  [15:0] lanes$next$0;
     reg  [15:0] lanes$next$1;
-    reg  [15:0] lanes$next$2;
-    reg  [15:0] lanes$next$3;
     reg  lanes$first;
     reg  [15:0] lanes$wx$0;
     reg  [15:0] lanes$wx$1;
-    reg  [15:0] lanes$wx$2;
-    reg  [15:0] lanes$wx$3;
     reg  [15:0] lanes$wy$0;
     reg  [15:0] lanes$wy$1;
-    reg  [15:0] lanes$wy$2;
-    reg  [15:0] lanes$wy$3;
     wire  [31:0] lanes$sample$0;
     wire  [31:0] lanes$sample$1;
-    wire  [31:0] lanes$sample$2;
-    wire  [31:0] lanes$sample$3;
     reg  [15:0] lanes$offset;
     reg  [15:0] lanes$line_last;
     reg  [31:0] flags_q$0$d;
@@ -190,42 +172,18 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  [63:0] opacity$1$host_data;
     reg  [11:0] opacity$1$address;
     wire  [31:0] opacity$1$data;
-    reg  opacity$2$clock;
-    reg  opacity$2$host_write;
-    reg  [23:0] opacity$2$host_address;
-    reg  [63:0] opacity$2$host_data;
-    reg  [11:0] opacity$2$address;
-    wire  [31:0] opacity$2$data;
-    reg  opacity$3$clock;
-    reg  opacity$3$host_write;
-    reg  [23:0] opacity$3$host_address;
-    reg  [63:0] opacity$3$host_data;
-    reg  [11:0] opacity$3$address;
-    wire  [31:0] opacity$3$data;
     reg  [31:0] leaf_q$0$d;
     wire  [31:0] leaf_q$0$q;
     reg  leaf_q$0$clock;
     reg  [31:0] leaf_q$1$d;
     wire  [31:0] leaf_q$1$q;
     reg  leaf_q$1$clock;
-    reg  [31:0] leaf_q$2$d;
-    wire  [31:0] leaf_q$2$q;
-    reg  leaf_q$2$clock;
-    reg  [31:0] leaf_q$3$d;
-    wire  [31:0] leaf_q$3$q;
-    reg  leaf_q$3$clock;
     reg  leaf_valid_q$0$d;
     wire  leaf_valid_q$0$q;
     reg  leaf_valid_q$0$clock;
     reg  leaf_valid_q$1$d;
     wire  leaf_valid_q$1$q;
     reg  leaf_valid_q$1$clock;
-    reg  leaf_valid_q$2$d;
-    wire  leaf_valid_q$2$q;
-    reg  leaf_valid_q$2$clock;
-    reg  leaf_valid_q$3$d;
-    wire  leaf_valid_q$3$q;
-    reg  leaf_valid_q$3$clock;
     reg  abc$clock;
     reg  abc$host_write;
     reg  [23:0] abc$host_address;
@@ -234,28 +192,18 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  [15:0] abc$line_last;
     reg  [31:0] abc$sample$0;
     reg  [31:0] abc$sample$1;
-    reg  [31:0] abc$sample$2;
-    reg  [31:0] abc$sample$3;
     reg  abc$dx_neg;
     reg  [15:0] abc$dx_mag;
     reg  abc$dy_neg;
     reg  [15:0] abc$dy_mag;
     wire  [31:0] abc$centre$0;
     wire  [31:0] abc$centre$1;
-    wire  [31:0] abc$centre$2;
-    wire  [31:0] abc$centre$3;
     wire  [31:0] abc$gx$0;
     wire  [31:0] abc$gx$1;
-    wire  [31:0] abc$gx$2;
-    wire  [31:0] abc$gx$3;
     wire  [31:0] abc$gy$0;
     wire  [31:0] abc$gy$1;
-    wire  [31:0] abc$gy$2;
-    wire  [31:0] abc$gy$3;
     wire  [31:0] abc$gz$0;
     wire  [31:0] abc$gz$1;
-    wire  [31:0] abc$gz$2;
-    wire  [31:0] abc$gz$3;
     reg  shade$0$clock;
     reg  shade$0$host_write;
     reg  [23:0] shade$0$host_address;
@@ -292,63 +240,17 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     wire  [15:0] shade$1$b;
     wire  [15:0] shade$1$a;
     wire  shade$1$valid;
-    reg  shade$2$clock;
-    reg  shade$2$host_write;
-    reg  [23:0] shade$2$host_address;
-    reg  [63:0] shade$2$host_data;
-    reg  [15:0] shade$2$value;
-    reg  shade$2$invalid;
-    reg  shade$2$at_edge;
-    reg  shade$2$gx_neg;
-    reg  [31:0] shade$2$gx_mag;
-    reg  shade$2$gy_neg;
-    reg  [31:0] shade$2$gy_mag;
-    reg  shade$2$gz_neg;
-    reg  [31:0] shade$2$gz_mag;
-    wire  [31:0] shade$2$r;
-    wire  [15:0] shade$2$g;
-    wire  [15:0] shade$2$b;
-    wire  [15:0] shade$2$a;
-    wire  shade$2$valid;
-    reg  shade$3$clock;
-    reg  shade$3$host_write;
-    reg  [23:0] shade$3$host_address;
-    reg  [63:0] shade$3$host_data;
-    reg  [15:0] shade$3$value;
-    reg  shade$3$invalid;
-    reg  shade$3$at_edge;
-    reg  shade$3$gx_neg;
-    reg  [31:0] shade$3$gx_mag;
-    reg  shade$3$gy_neg;
-    reg  [31:0] shade$3$gy_mag;
-    reg  shade$3$gz_neg;
-    reg  [31:0] shade$3$gz_mag;
-    wire  [31:0] shade$3$r;
-    wire  [15:0] shade$3$g;
-    wire  [15:0] shade$3$b;
-    wire  [15:0] shade$3$a;
-    wire  shade$3$valid;
     reg  rpc$clock;
     reg  [31:0] rpc$leaf_r$0;
     reg  [31:0] rpc$leaf_r$1;
-    reg  [31:0] rpc$leaf_r$2;
-    reg  [31:0] rpc$leaf_r$3;
     reg  [15:0] rpc$leaf_g$0;
     reg  [15:0] rpc$leaf_g$1;
-    reg  [15:0] rpc$leaf_g$2;
-    reg  [15:0] rpc$leaf_g$3;
     reg  [15:0] rpc$leaf_b$0;
     reg  [15:0] rpc$leaf_b$1;
-    reg  [15:0] rpc$leaf_b$2;
-    reg  [15:0] rpc$leaf_b$3;
     reg  [15:0] rpc$leaf_a$0;
     reg  [15:0] rpc$leaf_a$1;
-    reg  [15:0] rpc$leaf_a$2;
-    reg  [15:0] rpc$leaf_a$3;
     reg  rpc$leaf_valid$0;
     reg  rpc$leaf_valid$1;
-    reg  rpc$leaf_valid$2;
-    reg  rpc$leaf_valid$3;
     reg  rpc$first;
     reg  rpc$last;
     wire  rpc$done;
@@ -363,24 +265,14 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  pixel_cast;
     reg  [31:0] row$0;
     reg  [31:0] row$1;
-    reg  [31:0] row$2;
-    reg  [31:0] row$3;
     reg  [31:0] index$0;
     reg  [31:0] index$1;
-    reg  [31:0] index$2;
-    reg  [31:0] index$3;
     reg  [31:0] gx$0;
     reg  [31:0] gx$1;
-    reg  [31:0] gx$2;
-    reg  [31:0] gx$3;
     reg  [31:0] gy$0;
     reg  [31:0] gy$1;
-    reg  [31:0] gy$2;
-    reg  [31:0] gy$3;
     reg  [31:0] gz$0;
     reg  [31:0] gz$1;
-    reg  [31:0] gz$2;
-    reg  [31:0] gz$3;
     
     // Sub module instances
     top$pipeline$regs regs(
@@ -406,12 +298,8 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .unit_cast(control$unit_cast),
         .wx$0(control$wx$0),
         .wx$1(control$wx$1),
-        .wx$2(control$wx$2),
-        .wx$3(control$wx$3),
         .wy$0(control$wy$0),
         .wy$1(control$wy$1),
-        .wy$2(control$wy$2),
-        .wy$3(control$wy$3),
         .in_volume(control$in_volume),
         .in_inner(control$in_inner),
         .dx_neg(control$dx_neg),
@@ -423,25 +311,15 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .clock(lanes$clock),
         .cur$0(lanes$cur$0),
         .cur$1(lanes$cur$1),
-        .cur$2(lanes$cur$2),
-        .cur$3(lanes$cur$3),
         .next$0(lanes$next$0),
         .next$1(lanes$next$1),
-        .next$2(lanes$next$2),
-        .next$3(lanes$next$3),
         .first(lanes$first),
         .wx$0(lanes$wx$0),
         .wx$1(lanes$wx$1),
-        .wx$2(lanes$wx$2),
-        .wx$3(lanes$wx$3),
         .wy$0(lanes$wy$0),
         .wy$1(lanes$wy$1),
-        .wy$2(lanes$wy$2),
-        .wy$3(lanes$wy$3),
         .sample$0(lanes$sample$0),
         .sample$1(lanes$sample$1),
-        .sample$2(lanes$sample$2),
-        .sample$3(lanes$sample$3),
         .offset(lanes$offset),
         .line_last(lanes$line_last)
     );
@@ -583,22 +461,6 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .address(opacity$1$address),
         .data(opacity$1$data)
     );
-    top$pipeline$opacity$2 opacity$2(
-        .clock(opacity$2$clock),
-        .host_write(opacity$2$host_write),
-        .host_address(opacity$2$host_address),
-        .host_data(opacity$2$host_data),
-        .address(opacity$2$address),
-        .data(opacity$2$data)
-    );
-    top$pipeline$opacity$3 opacity$3(
-        .clock(opacity$3$clock),
-        .host_write(opacity$3$host_write),
-        .host_address(opacity$3$host_address),
-        .host_data(opacity$3$host_data),
-        .address(opacity$3$address),
-        .data(opacity$3$data)
-    );
     top$pipeline$leaf_q$0 leaf_q$0(
         .d(leaf_q$0$d),
         .q(leaf_q$0$q),
@@ -608,16 +470,6 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .d(leaf_q$1$d),
         .q(leaf_q$1$q),
         .clock(leaf_q$1$clock)
-    );
-    top$pipeline$leaf_q$2 leaf_q$2(
-        .d(leaf_q$2$d),
-        .q(leaf_q$2$q),
-        .clock(leaf_q$2$clock)
-    );
-    top$pipeline$leaf_q$3 leaf_q$3(
-        .d(leaf_q$3$d),
-        .q(leaf_q$3$q),
-        .clock(leaf_q$3$clock)
     );
     top$pipeline$leaf_valid_q$0 leaf_valid_q$0(
         .d(leaf_valid_q$0$d),
@@ -629,16 +481,6 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .q(leaf_valid_q$1$q),
         .clock(leaf_valid_q$1$clock)
     );
-    top$pipeline$leaf_valid_q$2 leaf_valid_q$2(
-        .d(leaf_valid_q$2$d),
-        .q(leaf_valid_q$2$q),
-        .clock(leaf_valid_q$2$clock)
-    );
-    top$pipeline$leaf_valid_q$3 leaf_valid_q$3(
-        .d(leaf_valid_q$3$d),
-        .q(leaf_valid_q$3$q),
-        .clock(leaf_valid_q$3$clock)
-    );
     top$pipeline$abc abc(
         .clock(abc$clock),
         .host_write(abc$host_write),
@@ -648,28 +490,18 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .line_last(abc$line_last),
         .sample$0(abc$sample$0),
         .sample$1(abc$sample$1),
-        .sample$2(abc$sample$2),
-        .sample$3(abc$sample$3),
         .dx_neg(abc$dx_neg),
         .dx_mag(abc$dx_mag),
         .dy_neg(abc$dy_neg),
         .dy_mag(abc$dy_mag),
         .centre$0(abc$centre$0),
         .centre$1(abc$centre$1),
-        .centre$2(abc$centre$2),
-        .centre$3(abc$centre$3),
         .gx$0(abc$gx$0),
         .gx$1(abc$gx$1),
-        .gx$2(abc$gx$2),
-        .gx$3(abc$gx$3),
         .gy$0(abc$gy$0),
         .gy$1(abc$gy$1),
-        .gy$2(abc$gy$2),
-        .gy$3(abc$gy$3),
         .gz$0(abc$gz$0),
-        .gz$1(abc$gz$1),
-        .gz$2(abc$gz$2),
-        .gz$3(abc$gz$3)
+        .gz$1(abc$gz$1)
     );
     top$pipeline$shade$0 shade$0(
         .clock(shade$0$clock),
@@ -711,68 +543,18 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .a(shade$1$a),
         .valid(shade$1$valid)
     );
-    top$pipeline$shade$2 shade$2(
-        .clock(shade$2$clock),
-        .host_write(shade$2$host_write),
-        .host_address(shade$2$host_address),
-        .host_data(shade$2$host_data),
-        .value(shade$2$value),
-        .invalid(shade$2$invalid),
-        .at_edge(shade$2$at_edge),
-        .gx_neg(shade$2$gx_neg),
-        .gx_mag(shade$2$gx_mag),
-        .gy_neg(shade$2$gy_neg),
-        .gy_mag(shade$2$gy_mag),
-        .gz_neg(shade$2$gz_neg),
-        .gz_mag(shade$2$gz_mag),
-        .r(shade$2$r),
-        .g(shade$2$g),
-        .b(shade$2$b),
-        .a(shade$2$a),
-        .valid(shade$2$valid)
-    );
-    top$pipeline$shade$3 shade$3(
-        .clock(shade$3$clock),
-        .host_write(shade$3$host_write),
-        .host_address(shade$3$host_address),
-        .host_data(shade$3$host_data),
-        .value(shade$3$value),
-        .invalid(shade$3$invalid),
-        .at_edge(shade$3$at_edge),
-        .gx_neg(shade$3$gx_neg),
-        .gx_mag(shade$3$gx_mag),
-        .gy_neg(shade$3$gy_neg),
-        .gy_mag(shade$3$gy_mag),
-        .gz_neg(shade$3$gz_neg),
-        .gz_mag(shade$3$gz_mag),
-        .r(shade$3$r),
-        .g(shade$3$g),
-        .b(shade$3$b),
-        .a(shade$3$a),
-        .valid(shade$3$valid)
-    );
     top$pipeline$rpc rpc(
         .clock(rpc$clock),
         .leaf_r$0(rpc$leaf_r$0),
         .leaf_r$1(rpc$leaf_r$1),
-        .leaf_r$2(rpc$leaf_r$2),
-        .leaf_r$3(rpc$leaf_r$3),
         .leaf_g$0(rpc$leaf_g$0),
         .leaf_g$1(rpc$leaf_g$1),
-        .leaf_g$2(rpc$leaf_g$2),
-        .leaf_g$3(rpc$leaf_g$3),
         .leaf_b$0(rpc$leaf_b$0),
         .leaf_b$1(rpc$leaf_b$1),
-        .leaf_b$2(rpc$leaf_b$2),
-        .leaf_b$3(rpc$leaf_b$3),
         .leaf_a$0(rpc$leaf_a$0),
         .leaf_a$1(rpc$leaf_a$1),
-        .leaf_a$2(rpc$leaf_a$2),
-        .leaf_a$3(rpc$leaf_a$3),
         .leaf_valid$0(rpc$leaf_valid$0),
         .leaf_valid$1(rpc$leaf_valid$1),
-        .leaf_valid$2(rpc$leaf_valid$2),
-        .leaf_valid$3(rpc$leaf_valid$3),
         .first(rpc$first),
         .last(rpc$last),
         .done(rpc$done),
@@ -1007,142 +789,6 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
             rpc$leaf_a$1 = shade$1$a;
             rpc$leaf_valid$1 = shade$1$valid;
         end
-        lanes$cur$2 = cur$2;
-        lanes$next$2 = next$2;
-        lanes$wx$2 = control$wx$2;
-        lanes$wy$2 = control$wy$2;
-        abc$sample$2 = lanes$sample$2;
-        leaf_q$2$clock = clock;
-        leaf_valid_q$2$clock = clock;
-        row$2 = (lanes$sample$2 >> frac) >> row_shift;
-        opacity$2$clock = clock;
-        opacity$2$host_write = host_write;
-        opacity$2$host_address = host_address;
-        opacity$2$host_data = host_data;
-        opacity$2$address = row$2[('h0)+:(12)];
-        leaf_valid_q$2$d = |(flags_q$6$q & lane_bit$2);
-        leaf_q$2$d = 'h0;
-        if (|(flags_q$6$q & lane_bit$2)) begin
-            leaf_q$2$d = (lanes$sample$2 + half) >> frac;
-        end
-        index$2 = lanes$sample$2 >> frac;
-        gx$2 = 'h0;
-        gy$2 = 'h0;
-        gz$2 = 'h0;
-        if (gradients) begin
-            index$2 = abc$centre$2 >> frac;
-            gx$2 = abc$gx$2;
-            gy$2 = abc$gy$2;
-            gz$2 = abc$gz$2;
-        end
-        shade$2$clock = clock;
-        shade$2$host_write = host_write;
-        shade$2$host_address = host_address;
-        shade$2$host_data = host_data;
-        shade$2$value = index$2[('h0)+:(16)];
-        shade$2$invalid = ~|(leaf_flags & lane_bit$2);
-        shade$2$at_edge = ~|(leaf_flags & inner_bit$2);
-        shade$2$gx_neg = gx$2['h1f];
-        shade$2$gx_mag = gx$2;
-        if (gx$2['h1f]) begin
-            shade$2$gx_mag = ~gx$2 + 'h1;
-        end
-        shade$2$gy_neg = gy$2['h1f];
-        shade$2$gy_mag = gy$2;
-        if (gy$2['h1f]) begin
-            shade$2$gy_mag = ~gy$2 + 'h1;
-        end
-        shade$2$gz_neg = gz$2['h1f];
-        shade$2$gz_mag = gz$2;
-        if (gz$2['h1f]) begin
-            shade$2$gz_mag = ~gz$2 + 'h1;
-        end
-        rpc$leaf_r$2 = leaf_q$2$q;
-        if (xray) begin
-            rpc$leaf_r$2 = 'h0;
-            if (leaf_valid_q$2$q) begin
-                rpc$leaf_r$2 = opacity$2$data;
-            end
-        end
-        rpc$leaf_g$2 = 'h0;
-        rpc$leaf_b$2 = 'h0;
-        rpc$leaf_a$2 = 'h0;
-        rpc$leaf_valid$2 = leaf_valid_q$2$q;
-        if (shaded) begin
-            rpc$leaf_r$2 = shade$2$r;
-            rpc$leaf_g$2 = shade$2$g;
-            rpc$leaf_b$2 = shade$2$b;
-            rpc$leaf_a$2 = shade$2$a;
-            rpc$leaf_valid$2 = shade$2$valid;
-        end
-        lanes$cur$3 = cur$3;
-        lanes$next$3 = next$3;
-        lanes$wx$3 = control$wx$3;
-        lanes$wy$3 = control$wy$3;
-        abc$sample$3 = lanes$sample$3;
-        leaf_q$3$clock = clock;
-        leaf_valid_q$3$clock = clock;
-        row$3 = (lanes$sample$3 >> frac) >> row_shift;
-        opacity$3$clock = clock;
-        opacity$3$host_write = host_write;
-        opacity$3$host_address = host_address;
-        opacity$3$host_data = host_data;
-        opacity$3$address = row$3[('h0)+:(12)];
-        leaf_valid_q$3$d = |(flags_q$6$q & lane_bit$3);
-        leaf_q$3$d = 'h0;
-        if (|(flags_q$6$q & lane_bit$3)) begin
-            leaf_q$3$d = (lanes$sample$3 + half) >> frac;
-        end
-        index$3 = lanes$sample$3 >> frac;
-        gx$3 = 'h0;
-        gy$3 = 'h0;
-        gz$3 = 'h0;
-        if (gradients) begin
-            index$3 = abc$centre$3 >> frac;
-            gx$3 = abc$gx$3;
-            gy$3 = abc$gy$3;
-            gz$3 = abc$gz$3;
-        end
-        shade$3$clock = clock;
-        shade$3$host_write = host_write;
-        shade$3$host_address = host_address;
-        shade$3$host_data = host_data;
-        shade$3$value = index$3[('h0)+:(16)];
-        shade$3$invalid = ~|(leaf_flags & lane_bit$3);
-        shade$3$at_edge = ~|(leaf_flags & inner_bit$3);
-        shade$3$gx_neg = gx$3['h1f];
-        shade$3$gx_mag = gx$3;
-        if (gx$3['h1f]) begin
-            shade$3$gx_mag = ~gx$3 + 'h1;
-        end
-        shade$3$gy_neg = gy$3['h1f];
-        shade$3$gy_mag = gy$3;
-        if (gy$3['h1f]) begin
-            shade$3$gy_mag = ~gy$3 + 'h1;
-        end
-        shade$3$gz_neg = gz$3['h1f];
-        shade$3$gz_mag = gz$3;
-        if (gz$3['h1f]) begin
-            shade$3$gz_mag = ~gz$3 + 'h1;
-        end
-        rpc$leaf_r$3 = leaf_q$3$q;
-        if (xray) begin
-            rpc$leaf_r$3 = 'h0;
-            if (leaf_valid_q$3$q) begin
-                rpc$leaf_r$3 = opacity$3$data;
-            end
-        end
-        rpc$leaf_g$3 = 'h0;
-        rpc$leaf_b$3 = 'h0;
-        rpc$leaf_a$3 = 'h0;
-        rpc$leaf_valid$3 = leaf_valid_q$3$q;
-        if (shaded) begin
-            rpc$leaf_r$3 = shade$3$r;
-            rpc$leaf_g$3 = shade$3$g;
-            rpc$leaf_b$3 = shade$3$b;
-            rpc$leaf_a$3 = shade$3$a;
-            rpc$leaf_valid$3 = shade$3$valid;
-        end
         rpc$first = rpc_flags_q$q['h9] & rpc_flags_q$q['h8];
         rpc$last = rpc_flags_q$q['ha] & rpc_flags_q$q['h8];
         cast_q$d = (cast_q$q << 'h1) | 8'(rpc_flags_q$q['hb]);
@@ -1196,7 +842,7 @@ module top$pipeline$flags_line(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h244;
+    localparam  longest_last = 16'h47d;
     localparam  single = 1'b0;
     localparam  mask = 'hff0fff;
     
@@ -1330,15 +976,15 @@ module top$pipeline$flags_line$ram(read_address,read_clock,read_data,write_addre
     input wire  write_enable;
     
     // Update code (custom)
-    reg [19:0] mem[580:0];
+    reg [19:0] mem[1149:0];
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[9:0]][19:12], 4'd0, mem[read_address[9:0]][11:0]};
+       read_data <= {8'd0, mem[read_address[10:0]][19:12], 4'd0, mem[read_address[10:0]][11:0]};
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[23:16], write_data[11:0]};
+          mem[write_address[10:0]] <= {write_data[23:16], write_data[11:0]};
        end
     end
 endmodule // top$pipeline$flags_line$ram
@@ -1512,40 +1158,6 @@ module top$pipeline$leaf_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$leaf_q$1
-module top$pipeline$leaf_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$leaf_q$2
-module top$pipeline$leaf_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$leaf_q$3
 module top$pipeline$leaf_valid_q$0(d,q,clock);
     
     // Module arguments
@@ -1580,40 +1192,6 @@ module top$pipeline$leaf_valid_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$leaf_valid_q$1
-module top$pipeline$leaf_valid_q$2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$leaf_valid_q$2
-module top$pipeline$leaf_valid_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$leaf_valid_q$3
 module top$pipeline$opacity$0(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -1756,148 +1334,6 @@ module top$pipeline$opacity$1$ram(read_address,read_clock,read_data,write_addres
        end
     end
 endmodule // top$pipeline$opacity$1$ram
-module top$pipeline$opacity$2(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [11:0] address;
-    output reg  [31:0] data;
-    
-    // Constant declarations
-    localparam  base = 24'h40000;
-    localparam  window = 24'h41000;
-    
-    // Stub signals
-    reg  [11:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [11:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    
-    // Sub module instances
-    top$pipeline$opacity$2$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    
-    // Update code
-    always @(*) begin
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        ram$write_enable = host_write & (host_address >= base) & (host_address < window);
-        ram$write_address = 12'(host_address - base);
-        ram$write_data = 32'(host_data);
-        ram$read_address = address;
-        data = ram$read_data;
-    end
-    
-endmodule // top$pipeline$opacity$2
-module top$pipeline$opacity$2$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [11:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [11:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[1:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {24'd0, mem[read_address[0:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[0:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$pipeline$opacity$2$ram
-module top$pipeline$opacity$3(clock,host_write,host_address,host_data,address,data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  host_write;
-    input wire  [23:0] host_address;
-    input wire  [63:0] host_data;
-    input wire  [11:0] address;
-    output reg  [31:0] data;
-    
-    // Constant declarations
-    localparam  base = 24'h40000;
-    localparam  window = 24'h41000;
-    
-    // Stub signals
-    reg  [11:0] ram$read_address;
-    reg  ram$read_clock;
-    wire  [31:0] ram$read_data;
-    reg  [11:0] ram$write_address;
-    reg  ram$write_clock;
-    reg  [31:0] ram$write_data;
-    reg  ram$write_enable;
-    
-    // Sub module instances
-    top$pipeline$opacity$3$ram ram(
-        .read_address(ram$read_address),
-        .read_clock(ram$read_clock),
-        .read_data(ram$read_data),
-        .write_address(ram$write_address),
-        .write_clock(ram$write_clock),
-        .write_data(ram$write_data),
-        .write_enable(ram$write_enable)
-    );
-    
-    // Update code
-    always @(*) begin
-        ram$read_clock = clock;
-        ram$write_clock = clock;
-        ram$write_enable = host_write & (host_address >= base) & (host_address < window);
-        ram$write_address = 12'(host_address - base);
-        ram$write_data = 32'(host_data);
-        ram$read_address = address;
-        data = ram$read_data;
-    end
-    
-endmodule // top$pipeline$opacity$3
-module top$pipeline$opacity$3$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-    
-    // Module arguments
-    input wire  [11:0] read_address;
-    input wire  read_clock;
-    output reg  [31:0] read_data;
-    input wire  [11:0] write_address;
-    input wire  write_clock;
-    input wire  [31:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    (* ram_style = "distributed" *)
-    reg [7:0] mem[1:0];
-    
-    always @(posedge read_clock) begin
-       read_data <= {24'd0, mem[read_address[0:0]][7:0]};
-    end
-    
-    always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[0:0]] <= {write_data[7:0]};
-       end
-    end
-endmodule // top$pipeline$opacity$3$ram
 module top$pipeline$regs(clock,host_write,host_address,host_data,q$0,q$1,q$2);
     
     // Module arguments

@@ -1,7 +1,7 @@
-// Cube-3 composite_shaded_n26_p4_32: the integrable top (docs/integration.md). One clock; `reset` is
+// Cube-3 composite_shaded_n26_p2_32: the integrable top (docs/integration.md). One clock; `reset` is
 // synchronous, active high, where the build has one. Instantiation:
 //
-//   cube3_composite_shaded_n26_p4_32 u_render (
+//   cube3_composite_shaded_n26_p2_32 u_render (
 //     .clock(clock),
 //     .host_write(host_write),
 //     .host_address(host_address),
@@ -15,18 +15,14 @@
 //     .has_sample(has_sample),
 //     .ext_addr_0(ext_addr_0),
 //     .ext_addr_1(ext_addr_1),
-//     .ext_addr_2(ext_addr_2),
-//     .ext_addr_3(ext_addr_3),
 //     .ext_data_0(ext_data_0),
 //     .ext_data_1(ext_data_1),
-//     .ext_data_2(ext_data_2),
-//     .ext_data_3(ext_data_3),
 //     .load_enable(load_enable),
 //     .load_module(load_module),
 //     .load_address(load_address),
 //     .load_data(load_data)
 //   );
-module cube3_composite_shaded_n26_p4_32 (
+module cube3_composite_shaded_n26_p2_32 (
     input  wire clock,
     input  wire host_write,
     input  wire [23:0] host_address,
@@ -40,12 +36,8 @@ module cube3_composite_shaded_n26_p4_32 (
     output wire has_sample,
     output wire [31:0] ext_addr_0,
     output wire [31:0] ext_addr_1,
-    output wire [31:0] ext_addr_2,
-    output wire [31:0] ext_addr_3,
     input  wire [15:0] ext_data_0,
     input  wire [15:0] ext_data_1,
-    input  wire [15:0] ext_data_2,
-    input  wire [15:0] ext_data_3,
     input  wire load_enable,
     input  wire [7:0] load_module,
     input  wire [31:0] load_address,
@@ -65,12 +57,8 @@ module cube3_composite_shaded_n26_p4_32 (
         .has_sample(has_sample),
         .ext_addr$0(ext_addr_0),
         .ext_addr$1(ext_addr_1),
-        .ext_addr$2(ext_addr_2),
-        .ext_addr$3(ext_addr_3),
         .ext_data$0(ext_data_0),
         .ext_data$1(ext_data_1),
-        .ext_data$2(ext_data_2),
-        .ext_data$3(ext_data_3),
         .load_enable(load_enable),
         .load_module(load_module),
         .load_address(load_address),
