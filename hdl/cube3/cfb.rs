@@ -180,11 +180,18 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     dsb_write: [Signal<Local, Bit>; P],
     write_address: [Signal<Local, Bits<32>>; P],
     read_address: Signal<Local, Bits<32>>,
-    /// The read side, one clock later: the rotation and the buffers.
+    /// The read side, one clock later: each module's `cur` and `next`
+    /// words, chosen among the buffers and registered, so that a 2-DSB's
+    /// depth cascade ends in a register...
     read_q: DFF<Bit>,
     lane_q: DFF<Bits<16>>,
     cur_q: DFF<Bits<2>>,
     next_q: DFF<Bits<2>>,
+    cur_m: [DFF<Bits<16>>; P],
+    next_m: [DFF<Bits<16>>; P],
+    /// ... and a clock later the rotation to the lanes.
+    read_q2: DFF<Bit>,
+    lane_q2: DFF<Bits<16>>,
     index: [Constant<Bits<16>>; P],
     module_id: [Constant<Bits<8>>; P],
     buffer_id: [Constant<Bits<2>>; 3],
@@ -331,6 +338,10 @@ impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
             lane_q: Default::default(),
             cur_q: Default::default(),
             next_q: Default::default(),
+            cur_m: std::array::from_fn(|_| Default::default()),
+            next_m: std::array::from_fn(|_| Default::default()),
+            read_q2: Default::default(),
+            lane_q2: Default::default(),
             index: std::array::from_fn(|m| k(m as i64)),
             module_id: std::array::from_fn(|m| Constant::new((m as u64).to_bits())),
             buffer_id: std::array::from_fn(|b| Constant::new((b as u64).to_bits())),
@@ -380,7 +391,9 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             read_q,
             lane_q,
             cur_q,
-            next_q
+            next_q,
+            read_q2,
+            lane_q2
         );
         // The view's registers.
         self.regs.clock.next = self.clock.val();
@@ -570,8 +583,9 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
                 & (self.buffer_q.q.val() == self.buffer_id[2].val());
         }
         // Reads: segment s of ray r at r*G + s in every module (the
-        // schedule's count of reads); lane i takes module (r + i) mod P a
-        // clock later.
+        // schedule's count of reads); a clock later each module's `cur`
+        // and `next` words are chosen and registered, and a clock after
+        // that lane i takes module (r + i) mod P.
         self.read_address.next = 0.into();
         if self.schedule.reading.val() {
             self.read_address.next = self.schedule.read_address.val();
@@ -580,6 +594,8 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
         self.lane_q.d.next = self.schedule.ray.val() & self.mask.val();
         self.cur_q.d.next = self.schedule.cur_buffer.val();
         self.next_q.d.next = self.schedule.next_buffer.val();
+        self.read_q2.d.next = self.read_q.q.val();
+        self.lane_q2.d.next = self.lane_q.q.val();
         for m in 0..P {
             self.buffer0[m].read_clock.next = self.clock.val();
             self.buffer1[m].read_clock.next = self.clock.val();
@@ -587,35 +603,41 @@ impl<const P: usize, const A: usize, const B: usize> Logic for BeamFetch<P, A, B
             self.buffer0[m].read_address.next = self.read_address.val().get_bits::<B>(0);
             self.buffer1[m].read_address.next = self.read_address.val().get_bits::<B>(0);
             self.buffer2[m].read_address.next = self.read_address.val().get_bits::<B>(0);
+            self.cur_m[m].clock.next = self.clock.val();
+            self.next_m[m].clock.next = self.clock.val();
+            self.cur_m[m].d.next = 0.into();
+            if self.cur_q.q.val() == self.buffer_id[0].val() {
+                self.cur_m[m].d.next = self.buffer0[m].read_data.val();
+            }
+            if self.cur_q.q.val() == self.buffer_id[1].val() {
+                self.cur_m[m].d.next = self.buffer1[m].read_data.val();
+            }
+            if self.cur_q.q.val() == self.buffer_id[2].val() {
+                self.cur_m[m].d.next = self.buffer2[m].read_data.val();
+            }
+            self.next_m[m].d.next = 0.into();
+            if self.next_q.q.val() == self.buffer_id[0].val() {
+                self.next_m[m].d.next = self.buffer0[m].read_data.val();
+            }
+            if self.next_q.q.val() == self.buffer_id[1].val() {
+                self.next_m[m].d.next = self.buffer1[m].read_data.val();
+            }
+            if self.next_q.q.val() == self.buffer_id[2].val() {
+                self.next_m[m].d.next = self.buffer2[m].read_data.val();
+            }
         }
         for i in 0..P {
             self.cur[i].next = 0.into();
             self.next[i].next = 0.into();
             for m in 0..P {
-                if ((self.index[i].val() + self.lane_q.q.val()) & self.mask.val())
+                if ((self.index[i].val() + self.lane_q2.q.val()) & self.mask.val())
                     == self.index[m].val()
                 {
-                    if self.cur_q.q.val() == self.buffer_id[0].val() {
-                        self.cur[i].next = self.buffer0[m].read_data.val();
-                    }
-                    if self.cur_q.q.val() == self.buffer_id[1].val() {
-                        self.cur[i].next = self.buffer1[m].read_data.val();
-                    }
-                    if self.cur_q.q.val() == self.buffer_id[2].val() {
-                        self.cur[i].next = self.buffer2[m].read_data.val();
-                    }
-                    if self.next_q.q.val() == self.buffer_id[0].val() {
-                        self.next[i].next = self.buffer0[m].read_data.val();
-                    }
-                    if self.next_q.q.val() == self.buffer_id[1].val() {
-                        self.next[i].next = self.buffer1[m].read_data.val();
-                    }
-                    if self.next_q.q.val() == self.buffer_id[2].val() {
-                        self.next[i].next = self.buffer2[m].read_data.val();
-                    }
+                    self.cur[i].next = self.cur_m[m].q.val();
+                    self.next[i].next = self.next_m[m].q.val();
                 }
             }
         }
-        self.valid.next = self.read_q.q.val();
+        self.valid.next = self.read_q2.q.val();
     }
 }

@@ -517,9 +517,10 @@ impl Cube3SystemConfig {
 
     /// The clock the first segment enters the pipeline: the fetch reads
     /// from its third period on (two PRPs in the buffers), a clock after
-    /// `start` registers and a clock after the read.
+    /// `start` registers, a clock after the read, and a clock after the
+    /// buffers' words are registered.
     pub fn first_entry(&self) -> usize {
-        2 * self.fetch.period() + 2
+        2 * self.fetch.period() + 3
     }
 
     /// Clocks from `start` (clock 0) to just after the last pixel: the

@@ -10,7 +10,8 @@
 //! entering the 2-DSB streams. The units work
 //! on the ray that entered `trilin_lanes::cell_delay(G) = G + 1` clocks
 //! earlier, so their counters are the stream counters through a
-//! [`DelayLine`] of that length.
+//! [`RegisteredLine`] of that length (its block RAM's read ends in a
+//! register, not in the tables it addresses).
 //!
 //! **The view.** Every view-dependent value here is the host's: the
 //! stream's rays and segments, the cast rays and the delay lines' lengths
@@ -52,7 +53,7 @@
 use super::config::{Cube3Sizes, SEGMENT_BITS, TEMPLATE_BITS};
 use super::increments::Increments;
 use super::templates::Templates;
-use crate::common::delay_line::DelayLine;
+use crate::common::registered_line::RegisteredLine;
 use crate::common::regs::{Regs, ADDRESS_BITS};
 use crate::common::view_rom::ViewRom;
 use golden_model::host::{Reg, ViewTable};
@@ -97,7 +98,7 @@ pub struct RayControl<const P: usize, const H: usize> {
     ray: DFF<Bits<16>>,
     scanline: DFF<Bits<16>>,
     /// `[valid, segment, ray, scanline]` delayed to the units.
-    late: DelayLine<Bits<64>, H>,
+    late: RegisteredLine<Bits<64>, H>,
     unit_segment: Signal<Local, Bits<16>>,
     unit_ray: Signal<Local, Bits<16>>,
     unit_scanline: Signal<Local, Bits<16>>,
@@ -162,7 +163,7 @@ impl<const P: usize, const H: usize> RayControl<P, H> {
             segment: Default::default(),
             ray: Default::default(),
             scanline: Default::default(),
-            late: DelayLine::new(
+            late: RegisteredLine::new(
                 super::trilin_lanes::cell_delay(segments),
                 &[],
                 u64::MAX.to_bits(),

@@ -94,10 +94,10 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         ),
         fault(
             "2-DSB wrong buffer",
-            "lane 0's current beam read from buffer 1 when buffer 0 is current",
+            "module 0's current word read from buffer 1 when buffer 0 is current",
             fetch,
-            "cur$0_pass = buffer0$0$read_data;",
-            "cur$0_pass = buffer1$0$read_data;",
+            "cur_m$0$d = buffer0$0$read_data;",
+            "cur_m$0$d = buffer1$0$read_data;",
         ),
         fault(
             "TRILIN weight bit",

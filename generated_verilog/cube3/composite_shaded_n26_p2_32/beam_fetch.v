@@ -301,6 +301,24 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
     reg  [1:0] next_q$d;
     wire  [1:0] next_q$q;
     reg  next_q$clock;
+    reg  [15:0] cur_m$0$d;
+    wire  [15:0] cur_m$0$q;
+    reg  cur_m$0$clock;
+    reg  [15:0] cur_m$1$d;
+    wire  [15:0] cur_m$1$q;
+    reg  cur_m$1$clock;
+    reg  [15:0] next_m$0$d;
+    wire  [15:0] next_m$0$q;
+    reg  next_m$0$clock;
+    reg  [15:0] next_m$1$d;
+    wire  [15:0] next_m$1$q;
+    reg  next_m$1$clock;
+    reg  read_q2$d;
+    wire  read_q2$q;
+    reg  read_q2$clock;
+    reg  [15:0] lane_q2$d;
+    wire  [15:0] lane_q2$q;
+    reg  lane_q2$clock;
     
     // Local signals
     reg  [15:0] word$0;
@@ -743,6 +761,36 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         .q(next_q$q),
         .clock(next_q$clock)
     );
+    top$fetch$cur_m$0 cur_m$0(
+        .d(cur_m$0$d),
+        .q(cur_m$0$q),
+        .clock(cur_m$0$clock)
+    );
+    top$fetch$cur_m$1 cur_m$1(
+        .d(cur_m$1$d),
+        .q(cur_m$1$q),
+        .clock(cur_m$1$clock)
+    );
+    top$fetch$next_m$0 next_m$0(
+        .d(next_m$0$d),
+        .q(next_m$0$q),
+        .clock(next_m$0$clock)
+    );
+    top$fetch$next_m$1 next_m$1(
+        .d(next_m$1$d),
+        .q(next_m$1$q),
+        .clock(next_m$1$clock)
+    );
+    top$fetch$read_q2 read_q2(
+        .d(read_q2$d),
+        .q(read_q2$q),
+        .clock(read_q2$clock)
+    );
+    top$fetch$lane_q2 lane_q2(
+        .d(lane_q2$d),
+        .q(lane_q2$q),
+        .clock(lane_q2$clock)
+    );
     
     // Update code
     reg  [15:0] cur$0_pass;
@@ -771,6 +819,8 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_q$clock = clock;
         cur_q$clock = clock;
         next_q$clock = clock;
+        read_q2$clock = clock;
+        lane_q2$clock = clock;
         plane_r$d = plane_r$q;
         first_ray_r$d = first_ray_r$q;
         period_r$d = period_r$q;
@@ -790,6 +840,8 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_q$d = lane_q$q;
         cur_q$d = cur_q$q;
         next_q$d = next_q$q;
+        read_q2$d = read_q2$q;
+        lane_q2$d = lane_q2$q;
         regs$clock = clock;
         regs$host_write = host_write;
         regs$host_address = host_address;
@@ -1051,103 +1103,85 @@ module top$fetch(clock,host_write,host_address,host_data,start,valid,cur$0,cur$1
         lane_q$d = schedule$ray & mask;
         cur_q$d = schedule$cur_buffer;
         next_q$d = schedule$next_buffer;
+        read_q2$d = read_q$q;
+        lane_q2$d = lane_q$q;
         buffer0$0$read_clock = clock;
         buffer1$0$read_clock = clock;
         buffer2$0$read_clock = clock;
         buffer0$0$read_address = read_address[('h0)+:(17)];
         buffer1$0$read_address = read_address[('h0)+:(17)];
         buffer2$0$read_address = read_address[('h0)+:(17)];
+        cur_m$0$clock = clock;
+        next_m$0$clock = clock;
+        cur_m$0$d = 'h0;
+        if (cur_q$q == buffer_id$0) begin
+            cur_m$0$d = buffer0$0$read_data;
+        end
+        if (cur_q$q == buffer_id$1) begin
+            cur_m$0$d = buffer1$0$read_data;
+        end
+        if (cur_q$q == buffer_id$2) begin
+            cur_m$0$d = buffer2$0$read_data;
+        end
+        next_m$0$d = 'h0;
+        if (next_q$q == buffer_id$0) begin
+            next_m$0$d = buffer0$0$read_data;
+        end
+        if (next_q$q == buffer_id$1) begin
+            next_m$0$d = buffer1$0$read_data;
+        end
+        if (next_q$q == buffer_id$2) begin
+            next_m$0$d = buffer2$0$read_data;
+        end
         buffer0$1$read_clock = clock;
         buffer1$1$read_clock = clock;
         buffer2$1$read_clock = clock;
         buffer0$1$read_address = read_address[('h0)+:(17)];
         buffer1$1$read_address = read_address[('h0)+:(17)];
         buffer2$1$read_address = read_address[('h0)+:(17)];
+        cur_m$1$clock = clock;
+        next_m$1$clock = clock;
+        cur_m$1$d = 'h0;
+        if (cur_q$q == buffer_id$0) begin
+            cur_m$1$d = buffer0$1$read_data;
+        end
+        if (cur_q$q == buffer_id$1) begin
+            cur_m$1$d = buffer1$1$read_data;
+        end
+        if (cur_q$q == buffer_id$2) begin
+            cur_m$1$d = buffer2$1$read_data;
+        end
+        next_m$1$d = 'h0;
+        if (next_q$q == buffer_id$0) begin
+            next_m$1$d = buffer0$1$read_data;
+        end
+        if (next_q$q == buffer_id$1) begin
+            next_m$1$d = buffer1$1$read_data;
+        end
+        if (next_q$q == buffer_id$2) begin
+            next_m$1$d = buffer2$1$read_data;
+        end
         cur$0_pass = 'h0;
         next$0_pass = 'h0;
-        if (((index$0 + lane_q$q) & mask) == index$0) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$0_pass = buffer0$0$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$0_pass = buffer1$0$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$0_pass = buffer2$0$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$0_pass = buffer0$0$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$0_pass = buffer1$0$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$0_pass = buffer2$0$read_data;
-            end
+        if (((index$0 + lane_q2$q) & mask) == index$0) begin
+            cur$0_pass = cur_m$0$q;
+            next$0_pass = next_m$0$q;
         end
-        if (((index$0 + lane_q$q) & mask) == index$1) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$0_pass = buffer0$1$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$0_pass = buffer1$1$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$0_pass = buffer2$1$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$0_pass = buffer0$1$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$0_pass = buffer1$1$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$0_pass = buffer2$1$read_data;
-            end
+        if (((index$0 + lane_q2$q) & mask) == index$1) begin
+            cur$0_pass = cur_m$1$q;
+            next$0_pass = next_m$1$q;
         end
         cur$1_pass = 'h0;
         next$1_pass = 'h0;
-        if (((index$1 + lane_q$q) & mask) == index$0) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$1_pass = buffer0$0$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$1_pass = buffer1$0$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$1_pass = buffer2$0$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$1_pass = buffer0$0$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$1_pass = buffer1$0$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$1_pass = buffer2$0$read_data;
-            end
+        if (((index$1 + lane_q2$q) & mask) == index$0) begin
+            cur$1_pass = cur_m$0$q;
+            next$1_pass = next_m$0$q;
         end
-        if (((index$1 + lane_q$q) & mask) == index$1) begin
-            if (cur_q$q == buffer_id$0) begin
-                cur$1_pass = buffer0$1$read_data;
-            end
-            if (cur_q$q == buffer_id$1) begin
-                cur$1_pass = buffer1$1$read_data;
-            end
-            if (cur_q$q == buffer_id$2) begin
-                cur$1_pass = buffer2$1$read_data;
-            end
-            if (next_q$q == buffer_id$0) begin
-                next$1_pass = buffer0$1$read_data;
-            end
-            if (next_q$q == buffer_id$1) begin
-                next$1_pass = buffer1$1$read_data;
-            end
-            if (next_q$q == buffer_id$2) begin
-                next$1_pass = buffer2$1$read_data;
-            end
+        if (((index$1 + lane_q2$q) & mask) == index$1) begin
+            cur$1_pass = cur_m$1$q;
+            next$1_pass = next_m$1$q;
         end
-        valid = read_q$q;
+        valid = read_q2$q;
         cur$0 = cur$0_pass;
         cur$1 = cur$1_pass;
         next$0 = next$0_pass;
@@ -1335,6 +1369,40 @@ module top$fetch$buffer_r(d,q,clock);
     end
           
 endmodule // top$fetch$buffer_r
+module top$fetch$cur_m$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$cur_m$0
+module top$fetch$cur_m$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$cur_m$1
 module top$fetch$cur_q(d,q,clock);
     
     // Module arguments
@@ -1702,6 +1770,23 @@ module top$fetch$lane_q(d,q,clock);
     end
           
 endmodule // top$fetch$lane_q
+module top$fetch$lane_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$lane_q2
 module top$fetch$memory$0(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
@@ -1784,6 +1869,40 @@ module top$fetch$module_q$1(d,q,clock);
     end
           
 endmodule // top$fetch$module_q$1
+module top$fetch$next_m$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$next_m$0
+module top$fetch$next_m$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$next_m$1
 module top$fetch$next_q(d,q,clock);
     
     // Module arguments
@@ -1923,6 +2042,23 @@ module top$fetch$read_q(d,q,clock);
     end
           
 endmodule // top$fetch$read_q
+module top$fetch$read_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$fetch$read_q2
 module top$fetch$regs(clock,host_write,host_address,host_data,q$0,q$1,q$2,q$3);
     
     // Module arguments

@@ -833,8 +833,74 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
+    localparam  mask = 64'hffffffffffffffff;
+    
+    // Stub signals
+    reg  line$clock;
+    reg  [63:0] line$data_in;
+    reg  line$write_enable;
+    wire  [63:0] line$data_out;
+    reg  [15:0] line$last;
+    reg  [15:0] line_last$d;
+    wire  [15:0] line_last$q;
+    reg  line_last$clock;
+    reg  [63:0] out$d;
+    wire  [63:0] out$q;
+    reg  out$clock;
+    
+    // Sub module instances
+    top$pipeline$control$late$line line(
+        .clock(line$clock),
+        .data_in(line$data_in),
+        .write_enable(line$write_enable),
+        .data_out(line$data_out),
+        .last(line$last)
+    );
+    top$pipeline$control$late$line_last line_last(
+        .d(line_last$d),
+        .q(line_last$q),
+        .clock(line_last$clock)
+    );
+    top$pipeline$control$late$out out(
+        .d(out$d),
+        .q(out$q),
+        .clock(out$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        line_last$clock = clock;
+        out$clock = clock;
+        line_last$d = line_last$q;
+        out$d = out$q;
+        line$clock = clock;
+        line_last$d = last - 'h1;
+        line$last = line_last$q;
+        line$data_in = data_in;
+        line$write_enable = write_enable;
+        out$d = line$data_out;
+        if (last == 'h0) begin
+            out$d = out$q;
+            if (write_enable) begin
+                out$d = data_in & mask;
+            end
+        end
+        data_out = out$q;
+    end
+    
+endmodule // top$pipeline$control$late
+module top$pipeline$control$late$line(clock,data_in,write_enable,data_out,last);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [63:0] data_in;
+    input wire  write_enable;
+    output reg  [63:0] data_out;
+    input wire  [15:0] last;
+    
+    // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h10;
+    localparam  longest_last = 16'hf;
     localparam  single = 1'b0;
     localparam  mask = 64'hffffffffffffffff;
     
@@ -861,7 +927,7 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
     reg  [15:0] next;
     
     // Sub module instances
-    top$pipeline$control$late$ram ram(
+    top$pipeline$control$late$line$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -870,17 +936,17 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$pipeline$control$late$ptr ptr(
+    top$pipeline$control$late$line$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$pipeline$control$late$rd_flipped rd_flipped(
+    top$pipeline$control$late$line$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$pipeline$control$late$one one(
+    top$pipeline$control$late$line$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
@@ -921,8 +987,8 @@ module top$pipeline$control$late(clock,data_in,write_enable,data_out,last);
         data_out = data_out_pass;
     end
     
-endmodule // top$pipeline$control$late
-module top$pipeline$control$late$one(d,q,clock);
+endmodule // top$pipeline$control$late$line
+module top$pipeline$control$late$line$one(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -938,8 +1004,8 @@ module top$pipeline$control$late$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$control$late$one
-module top$pipeline$control$late$ptr(d,q,clock);
+endmodule // top$pipeline$control$late$line$one
+module top$pipeline$control$late$line$ptr(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -955,8 +1021,8 @@ module top$pipeline$control$late$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$control$late$ptr
-module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$pipeline$control$late$line$ptr
+module top$pipeline$control$late$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -969,19 +1035,19 @@ module top$pipeline$control$late$ram(read_address,read_clock,read_data,write_add
     
     // Update code (custom)
     (* ram_style = "distributed" *)
-    reg [63:0] mem[16:0];
+    reg [63:0] mem[15:0];
     
     always @(posedge read_clock) begin
-       read_data <= mem[read_address[4:0]];
+       read_data <= mem[read_address[3:0]];
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[4:0]] <= write_data;
+          mem[write_address[3:0]] <= write_data;
        end
     end
-endmodule // top$pipeline$control$late$ram
-module top$pipeline$control$late$rd_flipped(d,q,clock);
+endmodule // top$pipeline$control$late$line$ram
+module top$pipeline$control$late$line$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -997,7 +1063,41 @@ module top$pipeline$control$late$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$pipeline$control$late$rd_flipped
+endmodule // top$pipeline$control$late$line$rd_flipped
+module top$pipeline$control$late$line_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$late$line_last
+module top$pipeline$control$late$out(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$control$late$out
 module top$pipeline$control$ray(d,q,clock);
     
     // Module arguments
