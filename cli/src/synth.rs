@@ -7,7 +7,8 @@
 //! the scene and, where the architecture projects it, for 256³ and 512³
 //! volumes against the VolumePro 500's 30 frames/s at 256³. With `--keep
 //! DIR` the exported Verilog, the yosys log and netlist, and nextpnr's log,
-//! report and routed netlist stay in DIR.
+//! report and routed netlist stay in DIR. `--seed` and `--router` are
+//! nextpnr's, recorded in the JSON report.
 
 use crate::common::{choose_build, HwArch, Loaded};
 use crate::output::write_json;

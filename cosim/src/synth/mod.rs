@@ -131,8 +131,8 @@ impl Pnr {
     }
 }
 
-/// nextpnr's routers: `router1`, its default, negotiates wire by wire;
-/// `router2` routes whole nets and shares congestion more evenly.
+/// nextpnr's routers (`--router`): `router1`, its default, and `router2`,
+/// its newer one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Router {
     Router1,
