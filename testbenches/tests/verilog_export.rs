@@ -31,6 +31,13 @@ impl Committed {
     fn dir(&self) -> String {
         format!("{}/{}", self.arch, self.name)
     }
+
+    /// Its ECP5 report, `ext` `json` or `sha256` (`scripts/synth-reports`).
+    fn report(&self, ext: &str) -> PathBuf {
+        root()
+            .join("generated_verilog/synth")
+            .join(format!("{}_{}.ecp5.{ext}", self.arch, self.name))
+    }
 }
 
 fn configs() -> Vec<Committed> {
@@ -302,12 +309,8 @@ fn committed_synthesis_reports_are_current() {
             .next()
             .unwrap_or_default()
             .to_string();
-        let report = root()
-            .join("generated_verilog/synth")
-            .join(format!("{}_{}.ecp5", c.arch, c.name));
-        let recorded =
-            std::fs::read_to_string(report.with_extension("ecp5.sha256")).unwrap_or_default();
-        if !report.with_extension("ecp5.json").is_file() || recorded.trim() != digest {
+        let recorded = std::fs::read_to_string(c.report("sha256")).unwrap_or_default();
+        if !c.report("json").is_file() || recorded.trim() != digest {
             stale.push(c.name.clone());
         }
     }
@@ -327,11 +330,8 @@ fn committed_reports_were_routed_as_the_script_routes() {
     let want = serde_json::json!({"seed": 1, "router": "router1"});
     let mut wrong = Vec::new();
     for c in configs() {
-        let path = root()
-            .join("generated_verilog/synth")
-            .join(format!("{}_{}.ecp5.json", c.arch, c.name));
         let r: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+            serde_json::from_str(&std::fs::read_to_string(c.report("json")).unwrap()).unwrap();
         if !r["fmax_mhz"].is_null() && r["pnr"] != want {
             wrong.push(format!("{}: {}", c.name, r["pnr"]));
         }
