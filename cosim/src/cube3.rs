@@ -23,6 +23,7 @@ use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::common::mode_class::ModeClass;
+use hdl::common::shader::unlit_normal_bits;
 use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
@@ -54,6 +55,9 @@ pub struct Cube3Build {
     pub voxel_bits: u32,
     pub frac_bits: u32,
     pub rgba_bits: u32,
+    /// Bits a component of the lighting's quantized normal; the default
+    /// without shading.
+    pub normal_bits: u32,
     /// The largest volume side served.
     pub n: usize,
 }
@@ -70,9 +74,9 @@ fn mode_name(m: Mode) -> &'static str {
 }
 
 impl Cube3Build {
-    /// `{mode}[_shaded][_gm][_perspective]_n{6|12}_p{p}_{n}`, with the
-    /// widths when not 8 bits; the mode exactly (the RPC is built for
-    /// one).
+    /// `{mode}[_shaded][_gm][_perspective]_n{6|10|12|26}_p{p}_{n}`, with the
+    /// widths when not 8 bits (`_v`, `_c`, `_f`) and the normal's when not
+    /// 5 (`_q`); the mode exactly (the RPC is built for one).
     pub fn name(&self) -> String {
         let mut s = mode_name(self.mode).to_string();
         for (on, w) in [
@@ -93,6 +97,9 @@ impl Cube3Build {
             if bits != 8 {
                 s += &format!("_{tag}{bits}");
             }
+        }
+        if self.normal_bits != unlit_normal_bits() {
+            s += &format!("_q{}", self.normal_bits);
         }
         s
     }
@@ -126,6 +133,7 @@ impl Cube3Build {
             voxel_bits: 8,
             frac_bits: 8,
             rgba_bits: 8,
+            normal_bits: unlit_normal_bits(),
             n: 0,
         };
         let mut rest = words[1..].iter().peekable();
@@ -160,11 +168,21 @@ impl Cube3Build {
                 Some('v') => b.voxel_bits = bits("v")?,
                 Some('c') => b.rgba_bits = bits("c")?,
                 Some('f') => b.frac_bits = bits("f")?,
+                Some('q') => b.normal_bits = bits("q")?,
                 _ => return Err(bad(&format!("unknown field '{w}'"))),
             }
         }
         if b.name() != name {
             return Err(bad(&format!("it reads as {}", b.name())));
+        }
+        if !(3..=golden_model::lut::MAX_NORMAL_BITS).contains(&b.normal_bits) {
+            return Err(bad(&format!("{}-bit normals: 3 to 8", b.normal_bits)));
+        }
+        if !b.shading && b.normal_bits != unlit_normal_bits() {
+            return Err(bad(&format!(
+                "{}-bit normals without shading: only the lighting has a normal",
+                b.normal_bits
+            )));
         }
         Ok(b)
     }
@@ -568,9 +586,6 @@ impl Arch for Cube3 {
     fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Cube3Build, String> {
         let parts = scene_parts(scene, camera, None)?;
         let first = parts.first().ok_or("the view needs no base plane")?;
-        if let Some(why) = hdl::common::lighting::refuses(&first.shader.tables()) {
-            return Err(why);
-        }
         let hw = scene.hardware;
         Ok(Cube3Build {
             p: hw.pipelines,
@@ -586,6 +601,11 @@ impl Arch for Cube3 {
             voxel_bits: hw.voxel_bits,
             frac_bits: hw.frac_bits,
             rgba_bits: hw.rgba_bits,
+            normal_bits: first
+                .shader
+                .lighting
+                .as_ref()
+                .map_or_else(unlit_normal_bits, |l| l.normal_bits),
             n: dims.iter().copied().max().unwrap_or(1),
         })
     }
@@ -605,6 +625,16 @@ impl Arch for Cube3 {
                 needed.n, build.n
             ));
         }
+        let width = [
+            ("voxel_bits", build.voxel_bits, needed.voxel_bits),
+            ("rgba_bits", build.rgba_bits, needed.rgba_bits),
+            ("frac_bits", build.frac_bits, needed.frac_bits),
+            ("normal_bits", build.normal_bits, needed.normal_bits),
+        ]
+        .into_iter()
+        .find(|(_, a, b)| a != b)
+        .map(|(what, a, b)| format!("the scene's {what} is {b}, the configuration's {a}; "))
+        .unwrap_or_default();
         (*build
             != Cube3Build {
                 n: build.n,
@@ -612,7 +642,7 @@ impl Arch for Cube3 {
             })
         .then(|| {
             format!(
-                "the scene needs {}, the configuration is {}",
+                "{width}the scene needs {}, the configuration is {}",
                 needed.name(),
                 build.name()
             )
@@ -984,9 +1014,12 @@ mod tests {
             "first_opaque_gm_perspective_n6_p2_20",
             "minip_n12_p8_256_v16_c12",
             "xray_n12_p2_256",
+            "composite_shaded_n12_p4_32_f12_q6",
         ] {
             assert_eq!(Cube3Build::parse(name).map(|b| b.name()), Ok(name.into()));
         }
+        let knee = Cube3Build::parse("composite_shaded_n12_p4_32_f12_q6").unwrap();
+        assert_eq!((knee.frac_bits, knee.normal_bits), (12, 6));
         let b = Cube3Build::parse("first_opaque_gm_perspective_n6_p2_20").unwrap();
         assert_eq!(
             (b.mode, b.gradient_opacity, b.perspective, b.p, b.n),
@@ -996,7 +1029,10 @@ mod tests {
             ("mip_n12_p4", "the largest volume side"),
             ("mip_n8_p4_32", "8-neighbourhood"),
             ("glow_n12_p4_32", "the mode is"),
-            ("mip_n12_p4_32_q3", "unknown field 'q3'"),
+            ("mip_n12_p4_32_x3", "unknown field 'x3'"),
+            ("mip_n12_p4_32_q6", "6-bit normals without shading"),
+            ("composite_shaded_n12_p4_32_q9", "9-bit normals"),
+            ("composite_shaded_n12_p4_32_q5", "it reads as"),
             ("mip_shaded_n12_p4_32_v8", "it reads as"),
         ] {
             let e = Cube3Build::parse(bad).unwrap_err();

@@ -35,6 +35,9 @@ pub struct PipelineConfig {
     pub voxel_bits: u32,
     pub rgba_bits: u32,
     pub frac_bits: u32,
+    /// Bits a component of the lighting's quantized normal; the default
+    /// ([`shader::unlit_normal_bits`]) without shading.
+    pub normal_bits: u32,
 }
 
 /// The widths a configuration's name leaves out.
@@ -63,6 +66,10 @@ impl PipelineConfig {
             voxel_bits: shader.voxel_bits,
             rgba_bits: shader.rgba_bits,
             frac_bits: sweep.frac,
+            normal_bits: shader
+                .lighting
+                .as_ref()
+                .map_or_else(shader::unlit_normal_bits, |l| l.normal_bits),
         }
     }
 
@@ -95,8 +102,10 @@ impl PipelineConfig {
     }
 
     /// The configuration's name: `{mode}[_shaded][_gm][_perspective]_p{p}_{n}`
-    /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`
-    /// (`composite_shaded_p4_256`). [`PipelineConfig::parse`] reads it back.
+    /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`,
+    /// and for a normal other than 5 bits `_q{normal}`
+    /// (`composite_shaded_p4_256`, `composite_shaded_p4_32_f12_q6`).
+    /// [`PipelineConfig::parse`] reads it back.
     pub fn name(&self) -> String {
         let mut s = self.mode.name().to_string();
         for (on, word) in [
@@ -118,6 +127,9 @@ impl PipelineConfig {
             if bits != DEFAULT_BITS {
                 s += &format!("_{tag}{bits}");
             }
+        }
+        if self.normal_bits != shader::unlit_normal_bits() {
+            s += &format!("_q{}", self.normal_bits);
         }
         s
     }
@@ -141,6 +153,7 @@ impl PipelineConfig {
             voxel_bits: DEFAULT_BITS,
             rgba_bits: DEFAULT_BITS,
             frac_bits: DEFAULT_BITS,
+            normal_bits: shader::unlit_normal_bits(),
         };
         let number = |w: &str, what: &str| {
             w.parse::<u32>()
@@ -165,7 +178,8 @@ impl PipelineConfig {
                         "v" => c.voxel_bits = bits,
                         "c" => c.rgba_bits = bits,
                         "f" => c.frac_bits = bits,
-                        _ => return Err(bad(format!("'{w}' is no width (v, c or f and bits)"))),
+                        "q" => c.normal_bits = bits,
+                        _ => return Err(bad(format!("'{w}' is no width (v, c, f or q and bits)"))),
                     }
                 }
             }
@@ -219,6 +233,15 @@ impl PipelineConfig {
         }
         if !(2..=15).contains(&self.frac_bits) {
             return Err(format!("{} fractional bits: 2 to 15", self.frac_bits));
+        }
+        if !(3..=golden_model::lut::MAX_NORMAL_BITS).contains(&self.normal_bits) {
+            return Err(format!("{}-bit normals: 3 to 8", self.normal_bits));
+        }
+        if !self.shading && self.normal_bits != shader::unlit_normal_bits() {
+            return Err(format!(
+                "{}-bit normals without shading: only the lighting has a normal",
+                self.normal_bits
+            ));
         }
         Ok(())
     }
@@ -281,6 +304,7 @@ impl PipelineConfig {
                     ("voxel_bits", self.voxel_bits, needed.voxel_bits),
                     ("rgba_bits", self.rgba_bits, needed.rgba_bits),
                     ("frac_bits", self.frac_bits, needed.frac_bits),
+                    ("normal_bits", self.normal_bits, needed.normal_bits),
                 ]
                 .into_iter()
                 .find(|(_, a, b)| a != b)
@@ -508,5 +532,37 @@ pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
         [word as u32, 0, 0, 0]
     } else {
         std::array::from_fn(|c| ((word >> (16 * c)) & 0xffff) as u32)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn configuration_names_read_back() {
+        for name in [
+            "composite_shaded_p4_256",
+            "composite_perspective_p2_32",
+            "mip_p4_64",
+            "composite_shaded_gm_p2_16_v12_c10_f6",
+            "composite_shaded_p4_32_f12_q6",
+        ] {
+            assert_eq!(
+                PipelineConfig::parse(name).map(|c| c.name()),
+                Ok(name.into())
+            );
+        }
+        let knee = PipelineConfig::parse("composite_shaded_p4_32_f12_q6").unwrap();
+        assert_eq!((knee.frac_bits, knee.normal_bits), (12, 6));
+        for (bad, why) in [
+            ("mip_p4_32_q6", "6-bit normals without shading"),
+            ("composite_shaded_p4_32_q9", "9-bit normals"),
+            ("composite_shaded_p4_32_q5", "it reads as"),
+            ("composite_shaded_p4_32_x5", "is no width"),
+        ] {
+            let e = PipelineConfig::parse(bad).unwrap_err();
+            assert!(e.contains(why), "{bad}: {e}");
+        }
     }
 }
