@@ -14,7 +14,7 @@
 //! 3. each dot product made positive and saturated to `normal_bits + 11`
 //!    bits;
 //! 4. `t = dot · rnorm`, one 16x16 multiplier each for the dot product's
-//!    low 16 bits, and one for its bits above them (none at 5 bits);
+//!    low 16 bits, and one for its bits above them (not built at 5 bits);
 //! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`, `t` the sum
 //!    of the two products (one carry chain more above 5 bits);
 //! 6. the diffuse and specular tables' registered reads;
@@ -92,6 +92,11 @@ pub struct Lighting {
     rn_3: DFF<Bits<16>>,
     lit_3: DFF<Bit>,
     saturation: Constant<Bits<32>>,
+    /// The dot products can exceed 16 bits (normals wider than 5 bits):
+    /// without it the upper products and their sum are not built (yosys
+    /// would find the saturated dot product's upper bits zero only after
+    /// it had mapped their products to multipliers).
+    wide_dot: Constant<Bit>,
     /// Stage 4: the products of the low 16 bits and of the bits above.
     t_l: DFF<Bits<32>>,
     t_h: DFF<Bits<32>>,
@@ -171,6 +176,7 @@ impl Lighting {
             rn_3: Default::default(),
             lit_3: Default::default(),
             saturation: Constant::new(((1u64 << (normal_bits + DIR_FRAC)) - 1).to_bits()),
+            wide_dot: Constant::new(normal_bits + DIR_FRAC > 16),
             t_l: Default::default(),
             t_h: Default::default(),
             u_l: Default::default(),
@@ -315,14 +321,22 @@ impl Logic for Lighting {
         // bits above them (zero up to 5-bit normals) apart.
         self.t_l.d.next = self.d_l.q.val().get_bits::<16>(0) * self.rn_3.q.val();
         self.t_h.d.next = self.d_h.q.val().get_bits::<16>(0) * self.rn_3.q.val();
-        self.u_l.d.next = self.d_l.q.val().get_bits::<16>(16) * self.rn_3.q.val();
-        self.u_h.d.next = self.d_h.q.val().get_bits::<16>(16) * self.rn_3.q.val();
+        self.u_l.d.next = 0.into();
+        self.u_h.d.next = 0.into();
+        if self.wide_dot.val() {
+            self.u_l.d.next = self.d_l.q.val().get_bits::<16>(16) * self.rn_3.q.val();
+            self.u_h.d.next = self.d_h.q.val().get_bits::<16>(16) * self.rn_3.q.val();
+        }
         self.lit_4.d.next = self.lit_3.q.val();
         // Stage 5: the cosine to the nearest table entry.
-        self.tt_l.next =
-            bit_cast::<64, 32>(self.t_l.q.val()) + (bit_cast::<64, 32>(self.u_l.q.val()) << 16);
-        self.tt_h.next =
-            bit_cast::<64, 32>(self.t_h.q.val()) + (bit_cast::<64, 32>(self.u_h.q.val()) << 16);
+        self.tt_l.next = bit_cast::<64, 32>(self.t_l.q.val());
+        self.tt_h.next = bit_cast::<64, 32>(self.t_h.q.val());
+        if self.wide_dot.val() {
+            self.tt_l.next =
+                bit_cast::<64, 32>(self.t_l.q.val()) + (bit_cast::<64, 32>(self.u_l.q.val()) << 16);
+            self.tt_h.next =
+                bit_cast::<64, 32>(self.t_h.q.val()) + (bit_cast::<64, 32>(self.u_h.q.val()) << 16);
+        }
         self.i_l.next =
             ((self.tt_l.val() << 10) - self.tt_l.val() + self.half_ulp.val()) >> self.shift.val();
         if self.i_l.val() > self.last.val() {
