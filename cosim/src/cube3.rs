@@ -23,7 +23,8 @@ use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::common::mode_class::ModeClass;
-use hdl::common::shader::unlit_normal_bits;
+use hdl::common::shader::{normal_bits_refusal, normal_suffix, unlit_normal_bits};
+use hdl::common::width_refusal;
 use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
@@ -74,6 +75,16 @@ fn mode_name(m: Mode) -> &'static str {
 }
 
 impl Cube3Build {
+    /// The datapath widths: voxel, RGBA, weight fraction, normal.
+    fn widths(&self) -> [u32; 4] {
+        [
+            self.voxel_bits,
+            self.rgba_bits,
+            self.frac_bits,
+            self.normal_bits,
+        ]
+    }
+
     /// `{mode}[_shaded][_gm][_perspective]_n{6|10|12|26}_p{p}_{n}`, with the
     /// widths when not 8 bits (`_v`, `_c`, `_f`) and the normal's when not
     /// 5 (`_q`); the mode exactly (the RPC is built for one).
@@ -98,10 +109,7 @@ impl Cube3Build {
                 s += &format!("_{tag}{bits}");
             }
         }
-        if self.normal_bits != unlit_normal_bits() {
-            s += &format!("_q{}", self.normal_bits);
-        }
-        s
+        s + &normal_suffix(self.normal_bits)
     }
 
     /// The configuration a name spells ([`Cube3Build::name`]).
@@ -175,16 +183,10 @@ impl Cube3Build {
         if b.name() != name {
             return Err(bad(&format!("it reads as {}", b.name())));
         }
-        if !(3..=golden_model::lut::MAX_NORMAL_BITS).contains(&b.normal_bits) {
-            return Err(bad(&format!("{}-bit normals: 3 to 8", b.normal_bits)));
+        match normal_bits_refusal(b.normal_bits, b.shading) {
+            Some(why) => Err(bad(&why)),
+            None => Ok(b),
         }
-        if !b.shading && b.normal_bits != unlit_normal_bits() {
-            return Err(bad(&format!(
-                "{}-bit normals without shading: only the lighting has a normal",
-                b.normal_bits
-            )));
-        }
-        Ok(b)
     }
 
     /// What the build's memories and tables are sized for.
@@ -625,16 +627,9 @@ impl Arch for Cube3 {
                 needed.n, build.n
             ));
         }
-        let width = [
-            ("voxel_bits", build.voxel_bits, needed.voxel_bits),
-            ("rgba_bits", build.rgba_bits, needed.rgba_bits),
-            ("frac_bits", build.frac_bits, needed.frac_bits),
-            ("normal_bits", build.normal_bits, needed.normal_bits),
-        ]
-        .into_iter()
-        .find(|(_, a, b)| a != b)
-        .map(|(what, a, b)| format!("the scene's {what} is {b}, the configuration's {a}; "))
-        .unwrap_or_default();
+        let width = width_refusal(build.widths(), needed.widths())
+            .map(|w| w + "; ")
+            .unwrap_or_default();
         (*build
             != Cube3Build {
                 n: build.n,

@@ -36,11 +36,6 @@ impl<D: Synth, const N: usize> DepthRom<D, N> {
             _words: words,
         }
     }
-
-    /// Words decoded: `2^bits`.
-    pub fn depth(&self) -> usize {
-        1 << self._bits
-    }
 }
 
 impl<D: Synth, const N: usize> Logic for DepthRom<D, N> {

@@ -14,7 +14,7 @@
 //! 3. each dot product made positive and saturated to `normal_bits + 11`
 //!    bits;
 //! 4. `t = dot · rnorm`, one 16x16 multiplier each for the dot product's
-//!    low 16 bits, and one for its bits above them (not built at 5 bits);
+//!    low 16 bits, and one for its bits above them (not built up to 5 bits);
 //! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`, `t` the sum
 //!    of the two products (one carry chain more above 5 bits);
 //! 6. the diffuse and specular tables' registered reads;
@@ -126,7 +126,7 @@ const COS_BITS_U: usize = COS_BITS as usize;
 impl Lighting {
     pub fn new(rgba_bits: u32, normal_bits: u32) -> Lighting {
         assert!(
-            (3..=MAX_NORMAL_BITS).contains(&normal_bits),
+            scene::spec::NORMAL_BITS.contains(&normal_bits),
             "{normal_bits}-bit normals"
         );
         let word = [(0, rgba_bits as usize)];

@@ -34,6 +34,17 @@ pub fn bits16(v: u32) -> Bits<16> {
     (v as u64).to_bits()
 }
 
+/// The first of a build's datapath widths (voxel, RGBA, weight fraction,
+/// normal, in that order) that a scene's differs from, as a refusal naming
+/// the scene's field.
+pub fn width_refusal(build: [u32; 4], scene: [u32; 4]) -> Option<String> {
+    ["voxel_bits", "rgba_bits", "frac_bits", "normal_bits"]
+        .into_iter()
+        .zip(build.into_iter().zip(scene))
+        .find(|(_, (b, s))| b != s)
+        .map(|(what, (b, s))| format!("the scene's {what} is {s}, the configuration's {b}"))
+}
+
 /// A ROM of 16-bit two's-complement entries (Cube-3's template and group
 /// tables).
 pub fn rom16<const N: usize>(v: &[i32]) -> ROM<Bits<16>, N> {

@@ -62,7 +62,7 @@ impl NormalQuantizer {
     /// [`MAX_NORMAL_BITS`]).
     pub fn new(normal_bits: u32) -> Self {
         assert!(
-            (3..=MAX_NORMAL_BITS).contains(&normal_bits),
+            scene::spec::NORMAL_BITS.contains(&normal_bits),
             "{normal_bits}-bit normals"
         );
         let mag_bits = normal_bits as u64 - 1;

@@ -163,6 +163,30 @@ pub fn unlit_normal_bits() -> u32 {
     scene::Hardware::default().normal_bits
 }
 
+/// A configuration name's `_q{bits}`: empty at the unlit default.
+pub fn normal_suffix(normal_bits: u32) -> String {
+    match normal_bits == unlit_normal_bits() {
+        true => String::new(),
+        false => format!("_q{normal_bits}"),
+    }
+}
+
+/// Why a build cannot have `normal_bits`-bit normals, or `None`: a width
+/// the scene takes, and only a lit build has a normal.
+pub fn normal_bits_refusal(normal_bits: u32, shading: bool) -> Option<String> {
+    let range = scene::spec::NORMAL_BITS;
+    if !range.contains(&normal_bits) {
+        return Some(format!(
+            "{normal_bits}-bit normals: {} to {}",
+            range.start(),
+            range.end()
+        ));
+    }
+    (!shading && normal_bits != unlit_normal_bits()).then(|| {
+        format!("{normal_bits}-bit normals without shading: only the lighting has a normal")
+    })
+}
+
 impl ShaderConfig {
     /// The configuration of the golden model's tables.
     pub fn of(t: &ShaderTables, voxel_bits: u32, needs_gradient: bool, wide: bool) -> Self {

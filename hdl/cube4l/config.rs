@@ -13,6 +13,7 @@ use super::compositor;
 use crate::common::mode_class::ModeClass;
 use crate::common::ram::{bits_for, ON_CHIP_BITS};
 use crate::common::shader;
+use crate::common::width_refusal;
 use golden_model::cube4l::plan::{Rays, Sweep};
 use golden_model::cube4l::regs::ViewRegs;
 use scene::Mode;
@@ -101,6 +102,16 @@ impl PipelineConfig {
         self.memory_bits() as usize > ON_CHIP_BITS
     }
 
+    /// The datapath widths: voxel, RGBA, weight fraction, normal.
+    pub fn widths(&self) -> [u32; 4] {
+        [
+            self.voxel_bits,
+            self.rgba_bits,
+            self.frac_bits,
+            self.normal_bits,
+        ]
+    }
+
     /// The configuration's name: `{mode}[_shaded][_gm][_perspective]_p{p}_{n}`
     /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`,
     /// and for a normal other than 5 bits `_q{normal}`
@@ -128,10 +139,7 @@ impl PipelineConfig {
                 s += &format!("_{tag}{bits}");
             }
         }
-        if self.normal_bits != shader::unlit_normal_bits() {
-            s += &format!("_q{}", self.normal_bits);
-        }
-        s
+        s + &shader::normal_suffix(self.normal_bits)
     }
 
     /// The configuration that [`PipelineConfig::name`] names.
@@ -234,16 +242,10 @@ impl PipelineConfig {
         if !(2..=15).contains(&self.frac_bits) {
             return Err(format!("{} fractional bits: 2 to 15", self.frac_bits));
         }
-        if !(3..=golden_model::lut::MAX_NORMAL_BITS).contains(&self.normal_bits) {
-            return Err(format!("{}-bit normals: 3 to 8", self.normal_bits));
+        match shader::normal_bits_refusal(self.normal_bits, self.shading) {
+            Some(why) => Err(why),
+            None => Ok(()),
         }
-        if !self.shading && self.normal_bits != shader::unlit_normal_bits() {
-            return Err(format!(
-                "{}-bit normals without shading: only the lighting has a normal",
-                self.normal_bits
-            ));
-        }
-        Ok(())
     }
 
     /// Why this build cannot render what `needed` describes (a scene's own
@@ -299,17 +301,7 @@ impl PipelineConfig {
                     )
                 })
             })
-            .or_else(|| {
-                [
-                    ("voxel_bits", self.voxel_bits, needed.voxel_bits),
-                    ("rgba_bits", self.rgba_bits, needed.rgba_bits),
-                    ("frac_bits", self.frac_bits, needed.frac_bits),
-                    ("normal_bits", self.normal_bits, needed.normal_bits),
-                ]
-                .into_iter()
-                .find(|(_, a, b)| a != b)
-                .map(|(what, a, b)| format!("the scene's {what} is {b}, the configuration's {a}"))
-            })
+            .or_else(|| width_refusal(self.widths(), needed.widths()))
             .or_else(|| {
                 (needed.max_dim > self.max_dim).then(|| {
                     format!(

@@ -134,7 +134,7 @@ fn identical<A: Arch>(pairs: [(Scene, Scene); 2]) {
 /// Three frames on one Verilator build: a view, a new view, then a new
 /// table and light; every frame bit for bit, the later ones after only the
 /// words that changed.
-fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume) {
+fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume) -> String {
     let frames = with_cameras(frames);
     let r = simulate_frames::<A>(&frames, None, vol, Engine::Verilator, None, &|v| {
         v.to_string()
@@ -161,6 +161,7 @@ fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume)
     let reload: Vec<u64> = r.frames.iter().map(|f| f.reload_clocks).collect();
     assert!(reload[1] < reload[0], "{name}: reloads {reload:?}");
     assert!(reload[2] < reload[0], "{name}: reloads {reload:?}");
+    name
 }
 
 #[test]
@@ -234,7 +235,7 @@ fn the_knee_widths_build_on_both_architectures() {
         ))
     };
     let sphere = r#"{"builtin": "sphere", "dims": [12, 12, 10]}"#;
-    frames_on_one_build::<Cube4l>(
+    let built = frames_on_one_build::<Cube4l>(
         vec![
             knee(sphere, "[70, 30, 0]", LIGHT_A),
             knee(sphere, "[-20, 135, 10]", LIGHT_A),
@@ -242,8 +243,9 @@ fn the_knee_widths_build_on_both_architectures() {
         ],
         &builtin("sphere", [12, 12, 10], 8).unwrap(),
     );
+    assert!(built.ends_with("_f12_q6"), "{built}");
     let phantom = r#"{"builtin": "phantom", "dims": [12, 10, 11]}"#;
-    frames_on_one_build::<Cube3>(
+    let built = frames_on_one_build::<Cube3>(
         vec![
             knee(phantom, "[25, 35, 0]", LIGHT_A),
             knee(phantom, "[35, 20, 0]", LIGHT_A),
@@ -251,4 +253,5 @@ fn the_knee_widths_build_on_both_architectures() {
         ],
         &builtin("phantom", [12, 10, 11], 8).unwrap(),
     );
+    assert!(built.ends_with("_f12_q6"), "{built}");
 }

@@ -1330,6 +1330,7 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     
     // Constant declarations
     localparam  saturation = 'hffff;
+    localparam  wide_dot = 1'b0;
     localparam  half_ulp = 64'h2000000;
     localparam  shift = 8'h1a;
     localparam  last = 64'h3ff;
@@ -1888,11 +1889,19 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
         t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
         t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-        u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
+        u_l$d = 'h0;
+        u_h$d = 'h0;
+        if (wide_dot) begin
+            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
+            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
+        end
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-        tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+        tt_l = 64'(t_l$q);
+        tt_h = 64'(t_h$q);
+        if (wide_dot) begin
+            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
+            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+        end
         i_l = ((tt_l << 'ha) - tt_l + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
@@ -7275,6 +7284,7 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     
     // Constant declarations
     localparam  saturation = 'hffff;
+    localparam  wide_dot = 1'b0;
     localparam  half_ulp = 64'h2000000;
     localparam  shift = 8'h1a;
     localparam  last = 64'h3ff;
@@ -7833,11 +7843,19 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
         t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
         t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-        u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
+        u_l$d = 'h0;
+        u_h$d = 'h0;
+        if (wide_dot) begin
+            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
+            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
+        end
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-        tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+        tt_l = 64'(t_l$q);
+        tt_h = 64'(t_h$q);
+        if (wide_dot) begin
+            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
+            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+        end
         i_l = ((tt_l << 'ha) - tt_l + half_ulp) >> shift;
         if (i_l > last) begin
             i_l = last;
