@@ -70,23 +70,12 @@ impl HwArch {
 
 /// Clocks per frame of an architecture's RTL on `scene`, as its schedule
 /// predicts them (`cosim::arch::Arch::expected_clocks`); none where the RTL
-/// does not build the scene. A normal width other than the RTL's
-/// (`hardware.normal_bits`, a golden-model width) moves no clock: such a
-/// scene is counted by the schedule of the RTL's own width.
+/// does not build the scene.
 pub fn rtl_clocks<A: cosim::arch::Arch>(
     scene: &Scene,
     camera: &scene::Camera,
     dims: [usize; 3],
 ) -> Option<u64> {
-    let rtl_normal = hdl::common::lighting::NORMAL_BITS;
-    let at_rtl_width;
-    let scene = match scene.hardware.normal_bits == rtl_normal {
-        true => scene,
-        false => {
-            at_rtl_width = scene.with(|s| s.hardware.normal_bits = rtl_normal).ok()?;
-            &at_rtl_width
-        }
-    };
     let build = A::needs(scene, camera, dims).ok()?;
     let parts = A::parts(scene, camera, dims, &build).ok()?;
     Some(parts.iter().map(A::expected_clocks).sum())

@@ -381,18 +381,55 @@ fn sim_refuses_what_the_rtl_cannot_do() {
         &cube(&["sim", "--scene", &big], d.path()),
         "--engine verilator",
     );
-    // A golden-model width the RTL is not built for, on both architectures;
-    // unlit, the normal's width does not matter.
+    // The normal's width is a build parameter: a 6-bit normal builds its
+    // own configuration (`_q6`), which a 5-bit build refuses, naming the
+    // field; unlit, the normal's width does not matter.
     let lit = r#"{"volume": {"builtin": "sphere", "dims": [12, 12, 12]}, "view": {"projection": "parallel"}, "mode": "composite", "image": [16, 16],
-            "hardware": {"normal_bits": 6}"#;
+            "hardware": {"normal_bits": 6, "pipelines": 2}"#;
     let wide = write(d.path(), "c.json", &format!("{lit}}}"));
-    for arch in ["cube4l", "cube3"] {
+    for (arch, build, five) in [
+        (
+            "cube4l",
+            "composite_shaded_p2_12_q6",
+            "composite_shaded_p2_12",
+        ),
+        (
+            "cube3",
+            "composite_shaded_n12_p2_12_q6",
+            "composite_shaded_n12_p2_12",
+        ),
+    ] {
+        let out = format!("v_{arch}");
+        let o = cube(
+            &["verilog", "--arch", arch, "--scene", &wide, "--out", &out],
+            d.path(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let m = read_json(&d.path().join(&out).join("manifest.json"));
+        assert_eq!(m["configuration"], build, "{m}");
         assert_clean_error(
             &cube(
-                &["verilog", "--arch", arch, "--scene", &wide, "--out", "v"],
+                &[
+                    "verilog", "--arch", arch, "--config", five, "--scene", &wide, "--out", "w",
+                ],
                 d.path(),
             ),
-            "hardware.normal_bits 6",
+            "the scene's normal_bits is 6, the configuration's 5",
+        );
+        assert_clean_error(
+            &cube(
+                &[
+                    "verilog",
+                    "--arch",
+                    arch,
+                    "--config",
+                    &format!("{}_q6", five.replace("composite_shaded", "mip")),
+                    "--out",
+                    "w",
+                ],
+                d.path(),
+            ),
+            "6-bit normals without shading",
         );
     }
     let unlit = write(

@@ -23,6 +23,8 @@ use golden_model::cube3::{render_view, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
 use hdl::common::mode_class::ModeClass;
+use hdl::common::shader::{normal_bits_refusal, normal_suffix, unlit_normal_bits};
+use hdl::common::width_refusal;
 use hdl::cube3::config::Cube3Sizes;
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
@@ -54,6 +56,9 @@ pub struct Cube3Build {
     pub voxel_bits: u32,
     pub frac_bits: u32,
     pub rgba_bits: u32,
+    /// Bits a component of the lighting's quantized normal; the default
+    /// without shading.
+    pub normal_bits: u32,
     /// The largest volume side served.
     pub n: usize,
 }
@@ -70,9 +75,19 @@ fn mode_name(m: Mode) -> &'static str {
 }
 
 impl Cube3Build {
-    /// `{mode}[_shaded][_gm][_perspective]_n{6|12}_p{p}_{n}`, with the
-    /// widths when not 8 bits; the mode exactly (the RPC is built for
-    /// one).
+    /// The datapath widths: voxel, RGBA, weight fraction, normal.
+    fn widths(&self) -> [u32; 4] {
+        [
+            self.voxel_bits,
+            self.rgba_bits,
+            self.frac_bits,
+            self.normal_bits,
+        ]
+    }
+
+    /// `{mode}[_shaded][_gm][_perspective]_n{6|10|12|26}_p{p}_{n}`, with the
+    /// widths when not 8 bits (`_v`, `_c`, `_f`) and the normal's when not
+    /// 5 (`_q`); the mode exactly (the RPC is built for one).
     pub fn name(&self) -> String {
         let mut s = mode_name(self.mode).to_string();
         for (on, w) in [
@@ -94,7 +109,7 @@ impl Cube3Build {
                 s += &format!("_{tag}{bits}");
             }
         }
-        s
+        s + &normal_suffix(self.normal_bits)
     }
 
     /// The configuration a name spells ([`Cube3Build::name`]).
@@ -126,6 +141,7 @@ impl Cube3Build {
             voxel_bits: 8,
             frac_bits: 8,
             rgba_bits: 8,
+            normal_bits: unlit_normal_bits(),
             n: 0,
         };
         let mut rest = words[1..].iter().peekable();
@@ -160,13 +176,17 @@ impl Cube3Build {
                 Some('v') => b.voxel_bits = bits("v")?,
                 Some('c') => b.rgba_bits = bits("c")?,
                 Some('f') => b.frac_bits = bits("f")?,
+                Some('q') => b.normal_bits = bits("q")?,
                 _ => return Err(bad(&format!("unknown field '{w}'"))),
             }
         }
         if b.name() != name {
             return Err(bad(&format!("it reads as {}", b.name())));
         }
-        Ok(b)
+        match normal_bits_refusal(b.normal_bits, b.shading) {
+            Some(why) => Err(bad(&why)),
+            None => Ok(b),
+        }
     }
 
     /// What the build's memories and tables are sized for.
@@ -568,9 +588,6 @@ impl Arch for Cube3 {
     fn needs(scene: &Scene, camera: &Camera, dims: [usize; 3]) -> Result<Cube3Build, String> {
         let parts = scene_parts(scene, camera, None)?;
         let first = parts.first().ok_or("the view needs no base plane")?;
-        if let Some(why) = hdl::common::lighting::refuses(&first.shader.tables()) {
-            return Err(why);
-        }
         let hw = scene.hardware;
         Ok(Cube3Build {
             p: hw.pipelines,
@@ -586,6 +603,11 @@ impl Arch for Cube3 {
             voxel_bits: hw.voxel_bits,
             frac_bits: hw.frac_bits,
             rgba_bits: hw.rgba_bits,
+            normal_bits: first
+                .shader
+                .lighting
+                .as_ref()
+                .map_or_else(unlit_normal_bits, |l| l.normal_bits),
             n: dims.iter().copied().max().unwrap_or(1),
         })
     }
@@ -605,6 +627,9 @@ impl Arch for Cube3 {
                 needed.n, build.n
             ));
         }
+        let width = width_refusal(build.widths(), needed.widths())
+            .map(|w| w + "; ")
+            .unwrap_or_default();
         (*build
             != Cube3Build {
                 n: build.n,
@@ -612,7 +637,7 @@ impl Arch for Cube3 {
             })
         .then(|| {
             format!(
-                "the scene needs {}, the configuration is {}",
+                "{width}the scene needs {}, the configuration is {}",
                 needed.name(),
                 build.name()
             )
@@ -984,9 +1009,12 @@ mod tests {
             "first_opaque_gm_perspective_n6_p2_20",
             "minip_n12_p8_256_v16_c12",
             "xray_n12_p2_256",
+            "composite_shaded_n12_p4_32_f12_q6",
         ] {
             assert_eq!(Cube3Build::parse(name).map(|b| b.name()), Ok(name.into()));
         }
+        let knee = Cube3Build::parse("composite_shaded_n12_p4_32_f12_q6").unwrap();
+        assert_eq!((knee.frac_bits, knee.normal_bits), (12, 6));
         let b = Cube3Build::parse("first_opaque_gm_perspective_n6_p2_20").unwrap();
         assert_eq!(
             (b.mode, b.gradient_opacity, b.perspective, b.p, b.n),
@@ -996,7 +1024,10 @@ mod tests {
             ("mip_n12_p4", "the largest volume side"),
             ("mip_n8_p4_32", "8-neighbourhood"),
             ("glow_n12_p4_32", "the mode is"),
-            ("mip_n12_p4_32_q3", "unknown field 'q3'"),
+            ("mip_n12_p4_32_x3", "unknown field 'x3'"),
+            ("mip_n12_p4_32_q6", "6-bit normals without shading"),
+            ("composite_shaded_n12_p4_32_q9", "9-bit normals"),
+            ("composite_shaded_n12_p4_32_q5", "it reads as"),
             ("mip_shaded_n12_p4_32_v8", "it reads as"),
         ] {
             let e = Cube3Build::parse(bad).unwrap_err();

@@ -313,9 +313,6 @@ impl Arch for Cube4l {
         let plan = Plan::new(scene, camera).map_err(|e| e.to_string())?;
         let sweep = plan.sweeps.first().ok_or("the view needs no sweep")?;
         let golden = GoldenShader::new(scene, camera, sweep);
-        if let Some(why) = hdl::common::lighting::refuses(&golden.tables()) {
-            return Err(why);
-        }
         let c = PipelineConfig::for_view(sweep, dims, scene.hardware.pipelines, &golden);
         c.validate()?;
         Ok(c)

@@ -140,7 +140,7 @@ pub const DIR_FRAC: u32 = 11;
 pub const RNORM_FRAC: u32 = 15;
 /// Widest normal the golden models take (`hardware.normal_bits`, checked
 /// by the scene).
-pub const MAX_NORMAL_BITS: u32 = 8;
+pub const MAX_NORMAL_BITS: u32 = *scene::spec::NORMAL_BITS.end();
 
 /// Largest squared length of a quantized normal of `normal_bits`-bit
 /// components: three of magnitude `2^(normal_bits - 1) - 1` (675 at 5 bits).
@@ -151,7 +151,7 @@ pub const fn max_n2(normal_bits: u32) -> u32 {
 
 /// Words of the reciprocal-norm ROM for `normal_bits`-bit normals: the power
 /// of two that holds every `|q|²` up to [`max_n2`] (1 024 at 5 bits, the
-/// RTL's; 4 096 at 6).
+/// default; 4 096 at 6; 65 536 at 8).
 pub const fn rnorm_words(normal_bits: u32) -> u32 {
     (max_n2(normal_bits) + 1).next_power_of_two()
 }
@@ -269,8 +269,8 @@ impl Lighting {
             return (0, false);
         }
         // A unit direction keeps |dot| <= |q| * 2^DIR_FRAC, below
-        // 2^(normal_bits + DIR_FRAC) (at 5 bits: 26 * 2048, within the RTL's
-        // 16-bit multiplier); other registers saturate.
+        // 2^(normal_bits + DIR_FRAC) (at 5 bits: 26 * 2048, one 16-bit
+        // multiplier's operand in the RTL; wider normals take two); other registers saturate.
         let dot = dot.min((1 << (normal_bits + DIR_FRAC)) - 1);
         let n2 = q.iter().map(|c| (c * c) as u32).sum();
         let t = dot as u64 * rnorm(n2) as u64;

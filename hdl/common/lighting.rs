@@ -3,54 +3,50 @@
 //! cosines between `-q` and the light and half vectors from two dot
 //! products and a reciprocal norm, each indexing a host-loaded table.
 //! [`LATENCY`] register stages, none with more than one multiplier or one
-//! wide carry chain in series:
+//! wide carry chain in series (but stage 5 with normals wider than 5 bits):
 //!
-//! 1. the products of `q`'s 4-bit magnitudes and the registers' (held in
+//! 1. the products of `q`'s magnitudes and the registers' (held in
 //!    registers of their own: they change only with a host write), their
-//!    signs, and `|q|²` from three 16-word square tables (LUT logic, no
+//!    signs, and `|q|²` from three square tables (LUT logic, no
 //!    multiplier);
 //! 2. the dot products `q · light`, `q · half` in two's complement, and
 //!    `rnorm(|q|²)` from a constant ROM;
-//! 3. each dot product made positive and saturated to 16 bits;
-//! 4. `t = dot · rnorm`, one 16x16 multiplier each;
-//! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`;
+//! 3. each dot product made positive and saturated to `normal_bits + 11`
+//!    bits;
+//! 4. `t = dot · rnorm`, one 16x16 multiplier each for the dot product's
+//!    low 16 bits, and one for its bits above them (not built up to 5 bits);
+//! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`, `t` the sum
+//!    of the two products (one carry chain more above 5 bits);
 //! 6. the diffuse and specular tables' registered reads;
 //! 7. their words registered (the specular term 0 where the light's dot
 //!    product is not positive).
 //!
+//! The normal's width (`hardware.normal_bits`, 3 to 8) is a build
+//! parameter: the square tables hold `2^(normal_bits - 1)` words and the
+//! reciprocal-norm ROM [`rnorm_words`] (1 024 at 5 bits, one block RAM; 4
+//! 096 at 6), behind ports as wide as the widest normal's; the saturation
+//! and the masks tell synthesis which bits a build has.
+//!
 //! The light and half vectors are registers, the tables depend only on the
 //! lighting coefficients: a new view or light is six register words.
 
+use super::depth_rom::DepthRom;
+use super::normal_quantizer::MAG_BITS;
 use super::regs::{Regs, ADDRESS_BITS};
 use super::table::Table;
-use golden_model::host::{Reg, ShaderTables, Table as HostTable};
-use golden_model::lut::{rnorm, rnorm_words, COS_BITS, DIR_FRAC, RNORM_FRAC};
+use golden_model::host::{Reg, Table as HostTable};
+use golden_model::lut::{rnorm, rnorm_words, COS_BITS, DIR_FRAC, MAX_NORMAL_BITS, RNORM_FRAC};
 use rust_hdl::prelude::*;
 
 /// Clocks from the quantized normal to the terms.
 pub const LATENCY: usize = 7;
 
-/// The normal width this unit is built for (a sign and a 4-bit magnitude a
-/// component, a 10-bit `|q|²`): the golden models' `hardware.normal_bits`
-/// default. Wider normals are a golden-model width only (docs/accuracy.md).
-pub const NORMAL_BITS: u32 = 5;
-const _: () = assert!(
-    rnorm_words(NORMAL_BITS) == 1 << 10,
-    "the rnorm ROM's 10-bit address"
-);
+/// `|q|²` bits of the widest normal: `3 · 127² < 2^16`.
+const N2_BITS: usize = 16;
+const _: () = assert!(rnorm_words(MAX_NORMAL_BITS) as usize <= 1 << N2_BITS);
 
-/// Why the RTL cannot light with `tables`: a normal width other than
-/// [`NORMAL_BITS`]. `None` when it can, or when nothing is lit.
-pub fn refuses(tables: &ShaderTables) -> Option<String> {
-    let bits = tables.lighting?.normal_bits;
-    (bits != NORMAL_BITS).then(|| {
-        format!(
-            "hardware.normal_bits {bits}: the RTL's lighting is built for {NORMAL_BITS}-bit normals (wider ones are a golden-model width)"
-        )
-    })
-}
-
-/// The lighting unit of one shader, with `rgba_bits` table words.
+/// The lighting unit of one shader, with `rgba_bits` table words and
+/// `normal_bits`-bit normals.
 #[derive(LogicBlock)]
 pub struct Lighting {
     pub clock: Signal<In, Clock>,
@@ -59,15 +55,15 @@ pub struct Lighting {
     pub host_data: Signal<In, Bits<64>>,
     /// The quantized normal, sign and magnitude per component.
     pub q_neg: [Signal<In, Bit>; 3],
-    pub q_mag: [Signal<In, Bits<4>>; 3],
+    pub q_mag: [Signal<In, Bits<MAG_BITS>>; 3],
     /// `[diffuse, specular]`, [`LATENCY`] clocks later.
     pub diffuse: Signal<Out, Bits<16>>,
     pub specular: Signal<Out, Bits<16>>,
     /// The light (`q[0]`) and half (`q[1]`) vectors.
     regs: Regs<2>,
-    rnorm: ROM<Bits<16>, 10>,
-    /// `m²` of each 4-bit magnitude.
-    square: [ROM<Bits<8>, 4>; 3],
+    rnorm: DepthRom<Bits<16>, N2_BITS>,
+    /// `m²` of each magnitude.
+    square: [DepthRom<Bits<16>, MAG_BITS>; 3],
     diffuse_table: Table<16, COS_BITS_U>,
     specular_table: Table<16, COS_BITS_U>,
     /// The light's and half vector's magnitudes, registered.
@@ -89,16 +85,27 @@ pub struct Lighting {
     dot_l: DFF<Bits<32>>,
     dot_h: DFF<Bits<32>>,
     rn: DFF<Bits<16>>,
-    /// Stage 3.
-    d16_l: DFF<Bits<16>>,
-    d16_h: DFF<Bits<16>>,
+    /// Stage 3: the saturated dot products, the saturation `2^(normal_bits
+    /// + DIR_FRAC) - 1` (also their mask).
+    d_l: DFF<Bits<32>>,
+    d_h: DFF<Bits<32>>,
     rn_3: DFF<Bits<16>>,
     lit_3: DFF<Bit>,
-    /// Stage 4.
+    saturation: Constant<Bits<32>>,
+    /// The dot products can exceed 16 bits (normals wider than 5 bits):
+    /// without it the upper products and their sum are not built (yosys
+    /// would find the saturated dot product's upper bits zero only after
+    /// it had mapped their products to multipliers).
+    wide_dot: Constant<Bit>,
+    /// Stage 4: the products of the low 16 bits and of the bits above.
     t_l: DFF<Bits<32>>,
     t_h: DFF<Bits<32>>,
+    u_l: DFF<Bits<32>>,
+    u_h: DFF<Bits<32>>,
     lit_4: DFF<Bit>,
     /// Stage 5.
+    tt_l: Signal<Local, Bits<64>>,
+    tt_h: Signal<Local, Bits<64>>,
     i_l: Signal<Local, Bits<64>>,
     i_h: Signal<Local, Bits<64>>,
     idx_l: DFF<Bits<COS_BITS_U>>,
@@ -117,7 +124,11 @@ pub struct Lighting {
 const COS_BITS_U: usize = COS_BITS as usize;
 
 impl Lighting {
-    pub fn new(rgba_bits: u32) -> Lighting {
+    pub fn new(rgba_bits: u32, normal_bits: u32) -> Lighting {
+        assert!(
+            scene::spec::NORMAL_BITS.contains(&normal_bits),
+            "{normal_bits}-bit normals"
+        );
         let word = [(0, rgba_bits as usize)];
         let words = 1 << COS_BITS;
         Lighting {
@@ -130,10 +141,18 @@ impl Lighting {
             diffuse: Default::default(),
             specular: Default::default(),
             regs: Regs::new([Reg::Light.address(), Reg::Half.address()]),
-            rnorm: (0..rnorm_words(NORMAL_BITS))
-                .map(|n2| (rnorm(n2) as u64).to_bits())
-                .into(),
-            square: std::array::from_fn(|_| (0..16u64).map(|m| (m * m).to_bits()).into()),
+            rnorm: DepthRom::new(
+                (0..rnorm_words(normal_bits))
+                    .map(|n2| (rnorm(n2) as u64).to_bits())
+                    .collect(),
+            ),
+            square: std::array::from_fn(|_| {
+                DepthRom::new(
+                    (0..1u64 << (normal_bits - 1))
+                        .map(|m| (m * m).to_bits())
+                        .collect(),
+                )
+            }),
             diffuse_table: Table::new(HostTable::Diffuse.base(), words, &word),
             specular_table: Table::new(HostTable::Specular.base(), words, &word),
             m_l: Default::default(),
@@ -152,13 +171,19 @@ impl Lighting {
             dot_l: Default::default(),
             dot_h: Default::default(),
             rn: Default::default(),
-            d16_l: Default::default(),
-            d16_h: Default::default(),
+            d_l: Default::default(),
+            d_h: Default::default(),
             rn_3: Default::default(),
             lit_3: Default::default(),
+            saturation: Constant::new(((1u64 << (normal_bits + DIR_FRAC)) - 1).to_bits()),
+            wide_dot: Constant::new(normal_bits + DIR_FRAC > 16),
             t_l: Default::default(),
             t_h: Default::default(),
+            u_l: Default::default(),
+            u_h: Default::default(),
             lit_4: Default::default(),
+            tt_l: Default::default(),
+            tt_h: Default::default(),
             i_l: Default::default(),
             i_h: Default::default(),
             idx_l: Default::default(),
@@ -191,8 +216,8 @@ impl Logic for Lighting {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, n2_q, dot_l, dot_h, rn, d16_l, d16_h, rn_3, lit_3, t_l, t_h, lit_4, idx_l,
-            idx_h, lit_5, lit_6, diffuse_q, specular_q
+            self, clock, n2_q, dot_l, dot_h, rn, d_l, d_h, rn_3, lit_3, t_l, t_h, u_l, u_h, lit_4,
+            idx_l, idx_h, lit_5, lit_6, diffuse_q, specular_q
         );
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
@@ -208,9 +233,9 @@ impl Logic for Lighting {
         self.specular_table.host_data.next = self.host_data.val();
         // Unrolled: hdl_gen takes no loop index inside a cast. Assigned
         // before they are read, so the block has no combinational loop.
-        self.qm[0].next = bit_cast::<16, 4>(self.q_mag[0].val());
-        self.qm[1].next = bit_cast::<16, 4>(self.q_mag[1].val());
-        self.qm[2].next = bit_cast::<16, 4>(self.q_mag[2].val());
+        self.qm[0].next = bit_cast::<16, MAG_BITS>(self.q_mag[0].val());
+        self.qm[1].next = bit_cast::<16, MAG_BITS>(self.q_mag[1].val());
+        self.qm[2].next = bit_cast::<16, MAG_BITS>(self.q_mag[2].val());
         self.m_l[0].next = self.regs.q[0].val().get_bits::<16>(0);
         if self.regs.q[0].val().get_bit(15) {
             self.m_l[0].next = 0 - self.regs.q[0].val().get_bits::<16>(0);
@@ -258,9 +283,8 @@ impl Logic for Lighting {
         self.sh_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[1].val().get_bit(15);
         self.sh_q[1].d.next = self.q_neg[1].val() ^ self.regs.q[1].val().get_bit(31);
         self.sh_q[2].d.next = self.q_neg[2].val() ^ self.regs.q[1].val().get_bit(47);
-        self.n2.next = bit_cast::<16, 8>(self.square[0].data.val())
-            + bit_cast::<16, 8>(self.square[1].data.val())
-            + bit_cast::<16, 8>(self.square[2].data.val());
+        self.n2.next =
+            self.square[0].data.val() + self.square[1].data.val() + self.square[2].data.val();
         self.n2_q.d.next = self.n2.val();
         // Stage 2: the dot products in two's complement, and 1 / |q|.
         for i in 0..3 {
@@ -275,39 +299,51 @@ impl Logic for Lighting {
         }
         self.dot_l.d.next = self.t_pl[0].val() + self.t_pl[1].val() + self.t_pl[2].val();
         self.dot_h.d.next = self.t_ph[0].val() + self.t_ph[1].val() + self.t_ph[2].val();
-        self.rnorm.address.next = bit_cast::<10, 16>(self.n2_q.q.val());
+        self.rnorm.address.next = self.n2_q.q.val();
         self.rn.d.next = self.rnorm.data.val();
-        // Stage 3: a positive dot product, saturated to 16 bits.
-        self.d16_l.d.next = self.dot_l.q.val().get_bits::<16>(0);
+        // Stage 3: a positive dot product, saturated (and masked: no change
+        // to a saturated value) to normal_bits + DIR_FRAC bits.
+        self.d_l.d.next = self.dot_l.q.val() & self.saturation.val();
         if self.dot_l.q.val().get_bit(31) | (self.dot_l.q.val() == 0) {
-            self.d16_l.d.next = 0.into();
-        } else if self.dot_l.q.val() > 0xffff {
-            self.d16_l.d.next = 0xffff.into();
+            self.d_l.d.next = 0.into();
+        } else if self.dot_l.q.val() > self.saturation.val() {
+            self.d_l.d.next = self.saturation.val();
         }
-        self.d16_h.d.next = self.dot_h.q.val().get_bits::<16>(0);
+        self.d_h.d.next = self.dot_h.q.val() & self.saturation.val();
         if self.dot_h.q.val().get_bit(31) | (self.dot_h.q.val() == 0) {
-            self.d16_h.d.next = 0.into();
-        } else if self.dot_h.q.val() > 0xffff {
-            self.d16_h.d.next = 0xffff.into();
+            self.d_h.d.next = 0.into();
+        } else if self.dot_h.q.val() > self.saturation.val() {
+            self.d_h.d.next = self.saturation.val();
         }
         self.rn_3.d.next = self.rn.q.val();
         self.lit_3.d.next = !self.dot_l.q.val().get_bit(31) & (self.dot_l.q.val() != 0);
-        // Stage 4: times 1 / |q|.
-        self.t_l.d.next = self.d16_l.q.val() * self.rn_3.q.val();
-        self.t_h.d.next = self.d16_h.q.val() * self.rn_3.q.val();
+        // Stage 4: times 1 / |q|, the dot product's low 16 bits and the
+        // bits above them (zero up to 5-bit normals) apart.
+        self.t_l.d.next = self.d_l.q.val().get_bits::<16>(0) * self.rn_3.q.val();
+        self.t_h.d.next = self.d_h.q.val().get_bits::<16>(0) * self.rn_3.q.val();
+        self.u_l.d.next = 0.into();
+        self.u_h.d.next = 0.into();
+        if self.wide_dot.val() {
+            self.u_l.d.next = self.d_l.q.val().get_bits::<16>(16) * self.rn_3.q.val();
+            self.u_h.d.next = self.d_h.q.val().get_bits::<16>(16) * self.rn_3.q.val();
+        }
         self.lit_4.d.next = self.lit_3.q.val();
         // Stage 5: the cosine to the nearest table entry.
-        self.i_l.next = ((bit_cast::<64, 32>(self.t_l.q.val()) << 10)
-            - bit_cast::<64, 32>(self.t_l.q.val())
-            + self.half_ulp.val())
-            >> self.shift.val();
+        self.tt_l.next = bit_cast::<64, 32>(self.t_l.q.val());
+        self.tt_h.next = bit_cast::<64, 32>(self.t_h.q.val());
+        if self.wide_dot.val() {
+            self.tt_l.next =
+                bit_cast::<64, 32>(self.t_l.q.val()) + (bit_cast::<64, 32>(self.u_l.q.val()) << 16);
+            self.tt_h.next =
+                bit_cast::<64, 32>(self.t_h.q.val()) + (bit_cast::<64, 32>(self.u_h.q.val()) << 16);
+        }
+        self.i_l.next =
+            ((self.tt_l.val() << 10) - self.tt_l.val() + self.half_ulp.val()) >> self.shift.val();
         if self.i_l.val() > self.last.val() {
             self.i_l.next = self.last.val();
         }
-        self.i_h.next = ((bit_cast::<64, 32>(self.t_h.q.val()) << 10)
-            - bit_cast::<64, 32>(self.t_h.q.val())
-            + self.half_ulp.val())
-            >> self.shift.val();
+        self.i_h.next =
+            ((self.tt_h.val() << 10) - self.tt_h.val() + self.half_ulp.val()) >> self.shift.val();
         if self.i_h.val() > self.last.val() {
             self.i_h.next = self.last.val();
         }

@@ -1,13 +1,15 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator, fused for the RPC's one-clock loop), the
 //! pipelined [`piped_mul`] (the exact unorm multiplier) and [`piped_over`],
-//! [`delay_line`] (and [`registered_line`], its output a register) and [`ram`] (block RAM as deep as the scene needs), the
+//! [`delay_line`] (and [`registered_line`], its output a register), [`ram`] (block RAM as deep as the scene needs) and
+//! [`depth_rom`] (a constant table as deep as the build's width needs), the
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
 //! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
 //! and [`lanes`], the lane counts the RTL is built for.
 
 pub mod delay_line;
+pub mod depth_rom;
 pub mod gradient_bin;
 pub mod lanes;
 pub mod lerp;
@@ -30,6 +32,17 @@ use rust_hdl::prelude::*;
 /// A 16-bit constant from a `u32` (the counters' and registers' width).
 pub fn bits16(v: u32) -> Bits<16> {
     (v as u64).to_bits()
+}
+
+/// The first of a build's datapath widths (voxel, RGBA, weight fraction,
+/// normal, in that order) that a scene's differs from, as a refusal naming
+/// the scene's field.
+pub fn width_refusal(build: [u32; 4], scene: [u32; 4]) -> Option<String> {
+    ["voxel_bits", "rgba_bits", "frac_bits", "normal_bits"]
+        .into_iter()
+        .zip(build.into_iter().zip(scene))
+        .find(|(_, (b, s))| b != s)
+        .map(|(what, (b, s))| format!("the scene's {what} is {s}, the configuration's {b}"))
 }
 
 /// A ROM of 16-bit two's-complement entries (Cube-3's template and group

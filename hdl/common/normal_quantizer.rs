@@ -1,27 +1,38 @@
 //! The gradient's quantized normal (Cube-4L §3.4; Cube-3's shading units),
 //! bit for bit as `golden_model::cube4l::gradient::quantize_normal`: all
 //! three components shift right (rounding half up) until the largest fits
-//! in 4 magnitude bits, then saturate to ±15. [`LATENCY`] register stages:
+//! in `normal_bits - 1` magnitude bits (`hardware.normal_bits`, a build
+//! parameter), then saturate to `±(2^(normal_bits - 1) - 1)`. [`LATENCY`]
+//! register stages:
 //!
 //! 1. the shift, from the bit length of `m0 | m1 | m2` (the largest
 //!    component's: no magnitude comparator on the path);
 //! 2. each component plus the rounding half;
 //! 3. the shift right and the saturation.
+//!
+//! The magnitude ports are [`MAG_BITS`] wide, the widest normal's; the
+//! saturated magnitude is masked to the build's width, so synthesis keeps
+//! only the bits the build has.
 
+use golden_model::lut::MAX_NORMAL_BITS;
 use rust_hdl::prelude::*;
 
 /// Clocks from the gradient to its quantized normal.
 pub const LATENCY: usize = 3;
 
+/// Magnitude bits of the widest normal the golden models take.
+pub const MAG_BITS: usize = MAX_NORMAL_BITS as usize - 1;
+
 /// Gradient (sign and magnitude per component) in, quantized normal (sign
-/// and a 4-bit magnitude per component) [`LATENCY`] clocks later.
+/// and a `normal_bits - 1`-bit magnitude per component) [`LATENCY`] clocks
+/// later.
 #[derive(LogicBlock)]
 pub struct NormalQuantizer {
     pub clock: Signal<In, Clock>,
     pub neg: [Signal<In, Bit>; 3],
     pub mag: [Signal<In, Bits<32>>; 3],
     pub q_neg: [Signal<Out, Bit>; 3],
-    pub q_mag: [Signal<Out, Bits<4>>; 3],
+    pub q_mag: [Signal<Out, Bits<MAG_BITS>>; 3],
     /// `bit_len[i] = i + 1`.
     bit_len: [Constant<Bits<8>>; 32],
     m: Signal<Local, Bits<32>>,
@@ -38,11 +49,23 @@ pub struct NormalQuantizer {
     q: [Signal<Local, Bits<32>>; 3],
     /// Stage 3: the quantized components.
     out_neg: [DFF<Bit>; 3],
-    out_mag: [DFF<Bits<4>>; 3],
+    out_mag: [DFF<Bits<MAG_BITS>>; 3],
+    /// The magnitude bits, and the largest magnitude `2^mag_bits - 1` (and
+    /// as the magnitude's mask).
+    mag_bits: Constant<Bits<8>>,
+    limit: Constant<Bits<32>>,
+    mask: Constant<Bits<MAG_BITS>>,
 }
 
-impl Default for NormalQuantizer {
-    fn default() -> Self {
+impl NormalQuantizer {
+    /// The quantizer of `normal_bits`-bit normals (3 to
+    /// [`MAX_NORMAL_BITS`]).
+    pub fn new(normal_bits: u32) -> Self {
+        assert!(
+            scene::spec::NORMAL_BITS.contains(&normal_bits),
+            "{normal_bits}-bit normals"
+        );
+        let mag_bits = normal_bits as u64 - 1;
         NormalQuantizer {
             clock: Default::default(),
             neg: Default::default(),
@@ -62,6 +85,9 @@ impl Default for NormalQuantizer {
             q: Default::default(),
             out_neg: Default::default(),
             out_mag: Default::default(),
+            mag_bits: Constant::new(mag_bits.to_bits()),
+            limit: Constant::new(((1u64 << mag_bits) - 1).to_bits()),
+            mask: Constant::new(((1u64 << mag_bits) - 1).to_bits()),
         }
     }
 }
@@ -80,8 +106,8 @@ impl Logic for NormalQuantizer {
             }
         }
         self.s_q.d.next = 0.into();
-        if self.bl.val() > 4 {
-            self.s_q.d.next = self.bl.val() - 4;
+        if self.bl.val() > self.mag_bits.val() {
+            self.s_q.d.next = self.bl.val() - self.mag_bits.val();
         }
         // Stage 2: add the half (a negative component's half rounds
         // towards zero in magnitude).
@@ -104,12 +130,14 @@ impl Logic for NormalQuantizer {
             if self.neg_q[i].q.val() & (self.s_q.q.val() > 0) {
                 self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half.val() - 1;
             }
-            // Stage 3: shift and saturate to 15.
+            // Stage 3: shift and saturate to the limit; the mask (no
+            // change to a saturated magnitude) tells synthesis which bits
+            // the build has.
             self.q[i].next = self.sum_q[i].q.val() >> self.s_q2.q.val();
-            if self.q[i].val() > 15 {
-                self.q[i].next = 15.into();
+            if self.q[i].val() > self.limit.val() {
+                self.q[i].next = self.limit.val();
             }
-            self.out_mag[i].d.next = self.q[i].val().get_bits::<4>(0);
+            self.out_mag[i].d.next = self.q[i].val().get_bits::<MAG_BITS>(0) & self.mask.val();
             self.out_neg[i].d.next = self.neg_q2[i].q.val() & (self.q[i].val() != 0);
             self.q_neg[i].next = self.out_neg[i].q.val();
             self.q_mag[i].next = self.out_mag[i].q.val();

@@ -153,13 +153,43 @@ pub struct ShaderConfig {
     pub needs_gradient: bool,
     /// Gradient magnitudes may exceed 16 bits (Cube-3).
     pub wide: bool,
+    /// Bits a component of the lighting's quantized normal
+    /// (`hardware.normal_bits`; the default where nothing is lit).
+    pub normal_bits: u32,
+}
+
+/// The normal width of a build that lights nothing: the scene default.
+pub fn unlit_normal_bits() -> u32 {
+    scene::Hardware::default().normal_bits
+}
+
+/// A configuration name's `_q{bits}`: empty at the unlit default.
+pub fn normal_suffix(normal_bits: u32) -> String {
+    match normal_bits == unlit_normal_bits() {
+        true => String::new(),
+        false => format!("_q{normal_bits}"),
+    }
+}
+
+/// Why a build cannot have `normal_bits`-bit normals, or `None`: a width
+/// the scene takes, and only a lit build has a normal.
+pub fn normal_bits_refusal(normal_bits: u32, shading: bool) -> Option<String> {
+    let range = scene::spec::NORMAL_BITS;
+    if !range.contains(&normal_bits) {
+        return Some(format!(
+            "{normal_bits}-bit normals: {} to {}",
+            range.start(),
+            range.end()
+        ));
+    }
+    (!shading && normal_bits != unlit_normal_bits()).then(|| {
+        format!("{normal_bits}-bit normals without shading: only the lighting has a normal")
+    })
 }
 
 impl ShaderConfig {
-    /// The configuration of the golden model's tables, which the RTL can
-    /// light (`lighting::refuses`, checked with the scene).
+    /// The configuration of the golden model's tables.
     pub fn of(t: &ShaderTables, voxel_bits: u32, needs_gradient: bool, wide: bool) -> Self {
-        assert_eq!(lighting::refuses(t), None);
         ShaderConfig {
             mode: t.mode,
             voxel_bits,
@@ -168,6 +198,7 @@ impl ShaderConfig {
             gradient_opacity: t.gm_shift().is_some(),
             needs_gradient,
             wide,
+            normal_bits: t.lighting.map_or_else(unlit_normal_bits, |l| l.normal_bits),
         }
     }
 }
@@ -214,8 +245,8 @@ impl Shader {
             lut: Table::new(HostTable::Classification.base(), words, channels),
             alpha_gm: Table::new(HostTable::GradientOpacity.base(), gm_words, &[(0, rb)]),
             gm_bin: GradientBin::new(c.wide),
-            normal: Default::default(),
-            lighting: Lighting::new(c.rgba_bits),
+            normal: NormalQuantizer::new(c.normal_bits),
+            lighting: Lighting::new(c.rgba_bits, c.normal_bits),
             gm_on: Constant::new(c.gradient_opacity),
             scalar: Constant::new(matches!(c.mode, Mode::Mip | Mode::Minip)),
             xray: Constant::new(c.mode == Mode::Xray),
@@ -266,6 +297,7 @@ impl Shader {
             gradient_opacity: false,
             needs_gradient: false,
             wide: false,
+            normal_bits: unlit_normal_bits(),
         });
         s.enabled = Constant::new(false);
         s

@@ -13,6 +13,7 @@ use super::compositor;
 use crate::common::mode_class::ModeClass;
 use crate::common::ram::{bits_for, ON_CHIP_BITS};
 use crate::common::shader;
+use crate::common::width_refusal;
 use golden_model::cube4l::plan::{Rays, Sweep};
 use golden_model::cube4l::regs::ViewRegs;
 use scene::Mode;
@@ -35,6 +36,9 @@ pub struct PipelineConfig {
     pub voxel_bits: u32,
     pub rgba_bits: u32,
     pub frac_bits: u32,
+    /// Bits a component of the lighting's quantized normal; the default
+    /// ([`shader::unlit_normal_bits`]) without shading.
+    pub normal_bits: u32,
 }
 
 /// The widths a configuration's name leaves out.
@@ -63,6 +67,10 @@ impl PipelineConfig {
             voxel_bits: shader.voxel_bits,
             rgba_bits: shader.rgba_bits,
             frac_bits: sweep.frac,
+            normal_bits: shader
+                .lighting
+                .as_ref()
+                .map_or_else(shader::unlit_normal_bits, |l| l.normal_bits),
         }
     }
 
@@ -94,9 +102,21 @@ impl PipelineConfig {
         self.memory_bits() as usize > ON_CHIP_BITS
     }
 
+    /// The datapath widths: voxel, RGBA, weight fraction, normal.
+    pub fn widths(&self) -> [u32; 4] {
+        [
+            self.voxel_bits,
+            self.rgba_bits,
+            self.frac_bits,
+            self.normal_bits,
+        ]
+    }
+
     /// The configuration's name: `{mode}[_shaded][_gm][_perspective]_p{p}_{n}`
-    /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`
-    /// (`composite_shaded_p4_256`). [`PipelineConfig::parse`] reads it back.
+    /// and, for widths other than 8 bits, `_v{voxel}`, `_c{rgba}`, `_f{frac}`,
+    /// and for a normal other than 5 bits `_q{normal}`
+    /// (`composite_shaded_p4_256`, `composite_shaded_p4_32_f12_q6`).
+    /// [`PipelineConfig::parse`] reads it back.
     pub fn name(&self) -> String {
         let mut s = self.mode.name().to_string();
         for (on, word) in [
@@ -119,7 +139,7 @@ impl PipelineConfig {
                 s += &format!("_{tag}{bits}");
             }
         }
-        s
+        s + &shader::normal_suffix(self.normal_bits)
     }
 
     /// The configuration that [`PipelineConfig::name`] names.
@@ -141,6 +161,7 @@ impl PipelineConfig {
             voxel_bits: DEFAULT_BITS,
             rgba_bits: DEFAULT_BITS,
             frac_bits: DEFAULT_BITS,
+            normal_bits: shader::unlit_normal_bits(),
         };
         let number = |w: &str, what: &str| {
             w.parse::<u32>()
@@ -165,7 +186,8 @@ impl PipelineConfig {
                         "v" => c.voxel_bits = bits,
                         "c" => c.rgba_bits = bits,
                         "f" => c.frac_bits = bits,
-                        _ => return Err(bad(format!("'{w}' is no width (v, c or f and bits)"))),
+                        "q" => c.normal_bits = bits,
+                        _ => return Err(bad(format!("'{w}' is no width (v, c, f or q and bits)"))),
                     }
                 }
             }
@@ -220,7 +242,10 @@ impl PipelineConfig {
         if !(2..=15).contains(&self.frac_bits) {
             return Err(format!("{} fractional bits: 2 to 15", self.frac_bits));
         }
-        Ok(())
+        match shader::normal_bits_refusal(self.normal_bits, self.shading) {
+            Some(why) => Err(why),
+            None => Ok(()),
+        }
     }
 
     /// Why this build cannot render what `needed` describes (a scene's own
@@ -276,16 +301,7 @@ impl PipelineConfig {
                     )
                 })
             })
-            .or_else(|| {
-                [
-                    ("voxel_bits", self.voxel_bits, needed.voxel_bits),
-                    ("rgba_bits", self.rgba_bits, needed.rgba_bits),
-                    ("frac_bits", self.frac_bits, needed.frac_bits),
-                ]
-                .into_iter()
-                .find(|(_, a, b)| a != b)
-                .map(|(what, a, b)| format!("the scene's {what} is {b}, the configuration's {a}"))
-            })
+            .or_else(|| width_refusal(self.widths(), needed.widths()))
             .or_else(|| {
                 (needed.max_dim > self.max_dim).then(|| {
                     format!(
@@ -508,5 +524,37 @@ pub fn unpack(mode: Mode, word: u64) -> [u32; 4] {
         [word as u32, 0, 0, 0]
     } else {
         std::array::from_fn(|c| ((word >> (16 * c)) & 0xffff) as u32)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn configuration_names_read_back() {
+        for name in [
+            "composite_shaded_p4_256",
+            "composite_perspective_p2_32",
+            "mip_p4_64",
+            "composite_shaded_gm_p2_16_v12_c10_f6",
+            "composite_shaded_p4_32_f12_q6",
+        ] {
+            assert_eq!(
+                PipelineConfig::parse(name).map(|c| c.name()),
+                Ok(name.into())
+            );
+        }
+        let knee = PipelineConfig::parse("composite_shaded_p4_32_f12_q6").unwrap();
+        assert_eq!((knee.frac_bits, knee.normal_bits), (12, 6));
+        for (bad, why) in [
+            ("mip_p4_32_q6", "6-bit normals without shading"),
+            ("composite_shaded_p4_32_q9", "9-bit normals"),
+            ("composite_shaded_p4_32_q5", "it reads as"),
+            ("composite_shaded_p4_32_x5", "is no width"),
+        ] {
+            let e = PipelineConfig::parse(bad).unwrap_err();
+            assert!(e.contains(why), "{bad}: {e}");
+        }
     }
 }

@@ -149,6 +149,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             gradient_opacity: config.gradient_opacity,
             needs_gradient: config.gradient(),
             wide: false,
+            normal_bits: config.normal_bits,
         };
         let mut lanes = Vec::with_capacity(P);
         for _ in 0..P {

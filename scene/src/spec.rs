@@ -319,7 +319,8 @@ pub struct Hardware {
     #[serde(default = "default_rgba_bits")]
     pub rgba_bits: u32,
     /// Bits per signed component of the quantized normal the lighting
-    /// takes (the golden models' `quantize_normal`); the RTL is built for 5.
+    /// takes (the golden models' `quantize_normal`); an RTL build is made
+    /// for one width (`_q` in its configuration's name when not 5).
     #[serde(default = "default_normal_bits")]
     pub normal_bits: u32,
 }
@@ -336,6 +337,11 @@ fn default_frac_bits() -> u32 {
 fn default_rgba_bits() -> u32 {
     8
 }
+/// The normal widths (`normal_bits`) the golden models and the RTL take:
+/// the reciprocal-norm table, a word per `|q|²`, grows about fourfold a
+/// bit (1 024 words at 5 bits, 65 536 at 8).
+pub const NORMAL_BITS: std::ops::RangeInclusive<u32> = 3..=8;
+
 fn default_normal_bits() -> u32 {
     5
 }
@@ -576,8 +582,7 @@ impl SceneSpec {
                 hw.frac_bits
             )));
         }
-        // The reciprocal-norm table has 2^(2 normal_bits - 2) words.
-        if !(3..=8).contains(&hw.normal_bits) {
+        if !NORMAL_BITS.contains(&hw.normal_bits) {
             return Err(CubeError::Hardware(format!(
                 "normal_bits {} unsupported (3..=8: the reciprocal-norm table grows fourfold a bit)",
                 hw.normal_bits

@@ -138,7 +138,7 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
             "dropped saturation",
             "normal quantizer: x component not saturated",
             "top$lanes$0$shader$normal",
-            "if (q$0 > 'hf) begin",
+            "if (q$0 > limit) begin",
             "if (1'b0) begin",
         ),
         fault(

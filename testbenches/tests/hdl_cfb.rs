@@ -33,6 +33,7 @@ fn build(p: usize, perspective: bool, frac_bits: u32) -> PipelineConfig {
         voxel_bits: 8,
         rgba_bits: 8,
         frac_bits,
+        normal_bits: hdl::common::shader::unlit_normal_bits(),
     }
 }
 

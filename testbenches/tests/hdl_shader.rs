@@ -3,7 +3,8 @@
 //! clocks after its input: classification (1-D and 2-D with gradient
 //! opacity), the normal quantizer and lighting, shading and opacity
 //! weighting, for composite, first-opaque, X-ray and MIP, with edge and
-//! invalid voxels and gradients up to full scale; the tables preloaded, and
+//! invalid voxels and gradients up to full scale, and at normal widths 3, 5,
+//! 6 and 8 bits; the tables preloaded, and
 //! loaded by the host through the host port.
 //!
 //! The `valid` flag is compared for MIP, where it means what the golden
@@ -188,4 +189,23 @@ fn shader_tables_load_through_the_host_port() {
         13,
         false,
     );
+}
+
+/// The normal's width is a build parameter (`hardware.normal_bits`): the
+/// narrowest, the knee's 6 bits and the widest, with specular terms (the
+/// half vector's dot product) and full-scale gradients.
+#[test]
+fn shader_lights_every_normal_width() {
+    for (bits, seed) in [(3, 17), (6, 19), (8, 23)] {
+        check(
+            &format!(
+                r#"{{"volume": {{"builtin": "sphere", "dims": [8, 8, 8]}}, "view": {{"projection": "parallel", "rotate_deg": [35, -60, 10]}},
+                    "image": [16, 16], "mode": "composite", "shading": {{"enabled": true, "specular": 0.6, "shininess": 12}},
+                    "hardware": {{"normal_bits": {bits}, "frac_bits": 12}},
+                    "transfer": {{"opacity": [[0, 0.0], [40, 0.4], [255, 1.0]], "color": [[0, 0.9, 0.4, 0.1], [255, 0.2, 0.7, 1]]}}}}"#
+            ),
+            seed,
+            true,
+        );
+    }
 }

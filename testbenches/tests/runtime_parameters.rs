@@ -134,7 +134,7 @@ fn identical<A: Arch>(pairs: [(Scene, Scene); 2]) {
 /// Three frames on one Verilator build: a view, a new view, then a new
 /// table and light; every frame bit for bit, the later ones after only the
 /// words that changed.
-fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume) {
+fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume) -> String {
     let frames = with_cameras(frames);
     let r = simulate_frames::<A>(&frames, None, vol, Engine::Verilator, None, &|v| {
         v.to_string()
@@ -161,6 +161,7 @@ fn frames_on_one_build<A: Arch>(frames: Vec<Scene>, vol: &scene::volume::Volume)
     let reload: Vec<u64> = r.frames.iter().map(|f| f.reload_clocks).collect();
     assert!(reload[1] < reload[0], "{name}: reloads {reload:?}");
     assert!(reload[2] < reload[0], "{name}: reloads {reload:?}");
+    name
 }
 
 #[test]
@@ -218,4 +219,39 @@ fn one_cube3_perspective_build_renders_new_eyes_tables_and_lights() {
         ],
         &vol,
     );
+}
+
+/// The widths at the accuracy knee (docs/accuracy.md: 12-bit weights and
+/// 6-bit normals) are a build like any other: on each architecture one
+/// `_f12_q6` build renders new views, tables and lights bit for bit.
+#[test]
+fn the_knee_widths_build_on_both_architectures() {
+    require_tool("verilator");
+    let knee = |arch_volume: &str, view: &str, light: &str| {
+        scene(&format!(
+            r#"{{"volume": {arch_volume}, "view": {{"projection": "parallel", "rotate_deg": {view}}},
+                "mode": "composite", {light}, "image": [24, 24],
+                "hardware": {{"pipelines": 2, "frac_bits": 12, "normal_bits": 6}}}}"#
+        ))
+    };
+    let sphere = r#"{"builtin": "sphere", "dims": [12, 12, 10]}"#;
+    let built = frames_on_one_build::<Cube4l>(
+        vec![
+            knee(sphere, "[70, 30, 0]", LIGHT_A),
+            knee(sphere, "[-20, 135, 10]", LIGHT_A),
+            knee(sphere, "[-20, 135, 10]", LIGHT_B),
+        ],
+        &builtin("sphere", [12, 12, 10], 8).unwrap(),
+    );
+    assert!(built.ends_with("_f12_q6"), "{built}");
+    let phantom = r#"{"builtin": "phantom", "dims": [12, 10, 11]}"#;
+    let built = frames_on_one_build::<Cube3>(
+        vec![
+            knee(phantom, "[25, 35, 0]", LIGHT_A),
+            knee(phantom, "[35, 20, 0]", LIGHT_A),
+            knee(phantom, "[35, 20, 0]", LIGHT_B),
+        ],
+        &builtin("phantom", [12, 10, 11], 8).unwrap(),
+    );
+    assert!(built.ends_with("_f12_q6"), "{built}");
 }

@@ -330,8 +330,11 @@ fn committed_reports_were_routed_as_the_script_routes() {
     let want = serde_json::json!({"seed": 1, "router": "router1"});
     let mut wrong = Vec::new();
     for c in configs() {
-        let r: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(c.report("json")).unwrap()).unwrap();
+        // A missing report is the staleness test's to name.
+        let Ok(text) = std::fs::read_to_string(c.report("json")) else {
+            continue;
+        };
+        let r: serde_json::Value = serde_json::from_str(&text).unwrap();
         if !r["fmax_mhz"].is_null() && r["pnr"] != want {
             wrong.push(format!("{}: {}", c.name, r["pnr"]));
         }
