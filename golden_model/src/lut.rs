@@ -217,6 +217,33 @@ pub struct Lighting {
     /// (`hardware.normal_bits`): [`quantize_normal`](crate::cube4l::gradient::quantize_normal)'s
     /// width and the dot products' saturation.
     pub normal_bits: u32,
+    /// [`Lighting::reflect`] of each normal once computed: a software memo
+    /// of the same function (the hardware computes every sample).
+    memo: ReflectMemo,
+}
+
+/// Widest normals whose every [`Lighting::reflect`] is remembered:
+/// `(2^bits - 1)^3` entries of 8 bytes, 29 791 at 5 bits and 250 047 at 6.
+const MEMO_BITS: u32 = 6;
+
+/// One word per quantized normal `q` (components within
+/// `±(2^(bits - 1) - 1)`): 0 until the normal is first lit, then
+/// `1 << 63 | diffuse << 32 | specular`. Filled as the samples need it, by
+/// any thread (two threads that race store the same word), so that a small
+/// volume does not pay for every normal.
+#[derive(Debug, Default)]
+struct ReflectMemo(Vec<std::sync::atomic::AtomicU64>);
+
+impl Clone for ReflectMemo {
+    fn clone(&self) -> Self {
+        use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+        ReflectMemo(
+            self.0
+                .iter()
+                .map(|w| AtomicU64::new(w.load(Relaxed)))
+                .collect(),
+        )
+    }
 }
 
 impl Lighting {
@@ -239,10 +266,10 @@ impl Lighting {
         };
         let n = 1u32 << COS_BITS;
         let cos = |i: u32| i as f64 / (n - 1) as f64;
-        Lighting {
-            light: reg(light),
-            half: reg(h),
-            diffuse: (0..n)
+        Lighting::from_registers(
+            reg(light),
+            reg(h),
+            (0..n)
                 .map(|i| {
                     quantize_unorm(
                         (shading.ambient + shading.diffuse * cos(i)).min(1.0),
@@ -250,13 +277,38 @@ impl Lighting {
                     )
                 })
                 .collect(),
-            specular: (0..n)
+            (0..n)
                 .map(|i| {
                     let s = shading.specular * cos(i).powf(shading.shininess);
                     quantize_unorm(s.min(1.0), rgba_bits)
                 })
                 .collect(),
             normal_bits,
+        )
+    }
+
+    /// The lighting of the registers and tables as the host writes them
+    /// (any direction registers, not only unit vectors).
+    pub fn from_registers(
+        light: [i32; 3],
+        half: [i32; 3],
+        diffuse: Vec<u32>,
+        specular: Vec<u32>,
+        normal_bits: u32,
+    ) -> Lighting {
+        let memo = if normal_bits <= MEMO_BITS {
+            let side = (1usize << normal_bits) - 1;
+            (0..side.pow(3)).map(|_| Default::default()).collect()
+        } else {
+            Vec::new()
+        };
+        Lighting {
+            light,
+            half,
+            diffuse,
+            specular,
+            normal_bits,
+            memo: ReflectMemo(memo),
         }
     }
 
@@ -282,8 +334,29 @@ impl Lighting {
         )
     }
 
-    /// `[diffuse, specular]` for the quantized gradient `q`.
+    /// `[diffuse, specular]` for the quantized gradient `q` (remembered
+    /// per normal where the normals are at most [`MEMO_BITS`] wide).
     pub fn reflect(&self, q: [i32; 3]) -> [u32; 2] {
+        use std::sync::atomic::Ordering::Relaxed;
+        let lim = (1i32 << (self.normal_bits - 1)) - 1;
+        if self.memo.0.is_empty() || q.iter().any(|c| c.abs() > lim) {
+            return self.reflect_uncached(q);
+        }
+        let side = 2 * lim + 1;
+        let i = ((q[0] + lim) * side + q[1] + lim) * side + q[2] + lim;
+        let word = &self.memo.0[i as usize];
+        match word.load(Relaxed) {
+            0 => {
+                let [d, s] = self.reflect_uncached(q);
+                word.store(1 << 63 | (d as u64) << 32 | s as u64, Relaxed);
+                [d, s]
+            }
+            w => [((w >> 32) & 0x7fff_ffff) as u32, w as u32],
+        }
+    }
+
+    /// [`Lighting::reflect`], computed (steps 1-3 above).
+    fn reflect_uncached(&self, q: [i32; 3]) -> [u32; 2] {
         let (il, lit) = Self::cos_index(q, self.light, self.normal_bits);
         let s = if lit {
             self.specular[Self::cos_index(q, self.half, self.normal_bits).0 as usize]
@@ -599,6 +672,40 @@ mod tests {
         let l12 = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 12, 5);
         assert_eq!(l12.reflect([0, 0, -2]), [3071, 2048]);
         assert_eq!(l12.reflect([0, 0, 0]), [1024, 0]);
+    }
+
+    #[test]
+    fn remembered_reflectance_is_the_computed_one() {
+        // Every normal of each remembered width, read twice (computed and
+        // stored, then loaded), at 16-bit words (the widest packed), and
+        // from a clone; a normal beyond the width is computed.
+        let light = DVec3::new(0.3, -0.5, 0.8).normalize();
+        let perm = glam::DMat3::from_cols(DVec3::Y, DVec3::Z, DVec3::X);
+        for bits in 3..=MEMO_BITS {
+            let l = Lighting::new(&shading(), perm, light, DVec3::Z, 16, bits);
+            let lim = (1 << (bits - 1)) - 1;
+            let all = || {
+                (-lim..=lim).flat_map(move |a| {
+                    (-lim..=lim).flat_map(move |b| (-lim..=lim).map(move |c| [a, b, c]))
+                })
+            };
+            for q in all() {
+                assert_eq!(l.reflect(q), l.reflect_uncached(q), "{bits} bits, {q:?}");
+            }
+            let copy = l.clone();
+            for q in all() {
+                assert_eq!(l.reflect(q), l.reflect_uncached(q), "{bits} bits, {q:?}");
+                assert_eq!(copy.reflect(q), l.reflect_uncached(q), "{bits} bits, {q:?}");
+            }
+            let beyond = [lim + 1, -lim - 3, 1];
+            assert_eq!(l.reflect(beyond), l.reflect_uncached(beyond));
+        }
+        let wide = Lighting::new(&shading(), perm, light, DVec3::Z, 8, MEMO_BITS + 1);
+        assert!(wide.memo.0.is_empty());
+        assert_eq!(
+            wide.reflect([-40, 3, -63]),
+            wide.reflect_uncached([-40, 3, -63])
+        );
     }
 
     #[test]

@@ -78,13 +78,7 @@ fn lit_shader(mode: Mode) -> Shader {
     assert_eq!(Lighting::cos_index([15, -4, 0], d, 5), (989, true));
     assert_eq!(Lighting::cos_index([0, 0, -9], d, 5), (1023, true));
     Shader {
-        lighting: Some(Lighting {
-            light: d,
-            half: d,
-            diffuse,
-            specular,
-            normal_bits: 5,
-        }),
+        lighting: Some(Lighting::from_registers(d, d, diffuse, specular, 5)),
         needs_gradient: true,
         ..shader(mode)
     }

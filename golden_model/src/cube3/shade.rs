@@ -127,6 +127,10 @@ impl Shader {
     }
 
     /// The RPC leaf of sample `s`; `gradient` is called only when needed.
+    /// Inlined into the ray's loop, which the compiler stops doing on its
+    /// own once the lighting's memo is in the shader (3.7 % more
+    /// instructions a frame on the engine).
+    #[inline(always)]
     pub fn leaf(
         &self,
         s: u32,

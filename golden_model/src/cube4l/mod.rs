@@ -24,7 +24,7 @@ pub use frame::{BasePlane, Frame, Stats};
 
 use compositor::{composite, gather, gather_row, reset_value};
 use gradient::central_difference;
-use plan::{Face, Order, Plan, Rays, Sweep};
+use plan::{Control, Face, Order, Plan, Rays, Sweep};
 use rayon::prelude::*;
 use scene::volume::Volume;
 use scene::{Camera, Mode, Scene};
@@ -56,6 +56,23 @@ impl Span {
     }
 }
 
+/// The columns of `row` within `within` that hold something other than
+/// the reset value, as a span from the first to the last (`within` may be
+/// empty, its start past its end).
+fn nonreset(row: &[[u32; 4]], within: std::ops::Range<usize>, reset: [u32; 4]) -> Span {
+    if within.is_empty() {
+        return EMPTY;
+    }
+    let cells = &row[within.clone()];
+    match cells.iter().position(|c| *c != reset) {
+        Some(i) => Span {
+            lo: within.start + i,
+            hi: within.end - cells.iter().rev().position(|c| *c != reset).unwrap_or(0),
+        },
+        None => EMPTY,
+    }
+}
+
 /// Render one sweep to its base plane.
 ///
 /// A voxel whose composite is the identity (`Shader::is_identity`) inside
@@ -72,10 +89,11 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     // whole slice every voxel of a row falls in one cache set. Other
     // sweeps read the volume as it is (a copy costs more than it saves).
     let ds = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
-    let (voxels, strides): (Cow<[u16]>, _) = match sweep.perm[0] {
+    let (copy, strides): (Cow<[u16]>, _) = match sweep.perm[0] {
         2 => (Cow::Owned(vol.permuted(sweep.perm)), [1, nx, nx * ny]),
         _ => (Cow::Borrowed(&vol.data), sweep.perm.map(|a| ds[a])),
     };
+    let voxels: &[u16] = &copy;
     let reset = reset_value(shader.mode, shader.voxel_bits);
     let mut base = BasePlane::new(sweep);
     let mut prev = vec![reset; nx * ny];
@@ -113,89 +131,135 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                     .fold(EMPTY, |a, &s| a.union(s));
                 let busy = near.lo.saturating_sub(1)..near.hi.saturating_add(1);
                 let inner_row = !last && y > 0 && y + 1 < ny;
-                // A parallel view's row gathers at once inside the slice's
-                // border (`gather_row`), reset where the previous slice is
-                // all reset around the cell; the cells hold what they
-                // gathered until the loop below overwrites them.
-                let whole_row = match parallel {
-                    Some((dx, dy)) if !first && y > 0 && y + 1 < ny && nx > 2 => {
-                        let (lo, hi) = (busy.start.max(1), busy.end.min(nx - 1));
-                        row.fill(reset);
-                        if lo < hi {
-                            gather_row(&prev, nx, y, (lo, hi), dx, dy, frac, &mut row[lo..hi]);
-                        }
-                        true
-                    }
-                    _ => false,
-                };
-                *span = EMPTY;
                 st.voxels += nx as u64;
                 let row_at = y * strides[1] + z * strides[2];
-                for (x, cell) in row.iter_mut().enumerate() {
+                // The whole datapath for voxel `x` whose gathered value is
+                // `acc` (the caller counts an opaque `acc` as terminated):
+                // control bits, shading, compositing and the pixel on ER.
+                let datapath = |x: usize,
+                                c: &Control,
+                                acc: [u32; 4],
+                                st: &mut Stats,
+                                out: &mut Vec<PixelOut>| {
                     let at = row_at + x * strides[0];
                     let v = voxels[at] as u32;
-                    let inner = inner_row && x > 0 && x + 1 < nx;
-                    let gathered = whole_row && x > 0 && x + 1 < nx;
-                    if inner && identity[v as usize] {
-                        // No ER inside the slice, and the voxel's composite
-                        // is the identity: the cell is what it gathers.
-                        if first || !busy.contains(&x) {
-                            *cell = reset;
-                            continue;
-                        }
-                        if !gathered {
-                            let (dx, dy) = match parallel {
-                                Some(d) => d,
-                                None => {
-                                    let c = sweep.control(x, y, z);
-                                    (c.dx, c.dy)
-                                }
-                            };
-                            *cell = gather(&prev, nx, ny, x, y, dx, dy, frac, reset);
-                        }
-                        st.terminated += opaque_front(*cell) as u64;
+                    let cell = if opaque_front(acc) {
+                        acc
                     } else {
-                        let c = sweep.control(x, y, z);
-                        let acc = if first {
-                            reset
-                        } else if gathered {
-                            *cell
-                        } else {
-                            gather(&prev, nx, ny, x, y, c.dx, c.dy, frac, reset)
-                        };
-                        *cell = if opaque_front(acc) {
-                            st.terminated += 1;
-                            acc
-                        } else {
-                            if shader.mode.uses_colour() && !shader.transparent(v, &c) {
-                                st.shaded += 1;
-                            }
-                            let sample = shader.sample(v, &c, || {
-                                central_difference(|ox, oy, oz| {
-                                    let i = at as isize
-                                        + ox * strides[0] as isize
-                                        + oy * strides[1] as isize
-                                        + oz * strides[2] as isize;
-                                    voxels[i as usize]
-                                })
-                            });
-                            let (r, clipped) =
-                                composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
-                            st.saturations += clipped as u64;
-                            r
-                        };
-                        if c.er {
-                            let addr = sweep
-                                .base_address(x, y, z, c.face)
-                                .expect("ER cells have a face");
-                            out.push((addr, *cell, c.face));
+                        if shader.mode.uses_colour() && !shader.transparent(v, c) {
+                            st.shaded += 1;
                         }
+                        let sample = shader.sample(v, c, || {
+                            central_difference(|ox, oy, oz| {
+                                let i = at as isize
+                                    + ox * strides[0] as isize
+                                    + oy * strides[1] as isize
+                                    + oz * strides[2] as isize;
+                                voxels[i as usize]
+                            })
+                        });
+                        let (r, clipped) =
+                            composite(shader.mode, sweep.order, acc, &sample, shader.rgba_bits);
+                        st.saturations += clipped as u64;
+                        r
+                    };
+                    if c.er {
+                        let addr = sweep
+                            .base_address(x, y, z, c.face)
+                            .expect("ER cells have a face");
+                        out.push((addr, cell, c.face));
                     }
-                    if *cell != reset {
-                        span.lo = span.lo.min(x);
-                        span.hi = x + 1;
+                    cell
+                };
+                // What the bilinear unit gathers for cell `x` (one at a time).
+                let gathered = |x: usize, (dx, dy): (i32, i32)| {
+                    if first {
+                        reset
+                    } else {
+                        gather(&prev, nx, ny, x, y, dx, dy, frac, reset)
                     }
-                }
+                };
+                // A parallel view's row inside the slice's border gathers at
+                // once (`gather_row`), reset where the previous slice is all
+                // reset around the cell. An inner voxel whose composite is
+                // the identity then leaves its cell as it is, so only the
+                // others and the two border voxels go through the datapath;
+                // an opaque gathered cell is counted as the loop below would.
+                // Each way gives the columns that may hold something other
+                // than reset.
+                *span = match parallel {
+                    Some((dx, dy)) if !first && inner_row && nx > 2 => {
+                        let (lo, hi) = (busy.start.max(1), busy.end.min(nx - 1));
+                        // The row holds slice z - 2's cells: reset outside
+                        // their span already.
+                        if span.lo < span.hi {
+                            row[span.lo..span.hi].fill(reset);
+                        }
+                        // The composited voxels that are not reset (the
+                        // gathered cells are scanned below).
+                        let mut composited = EMPTY;
+                        if lo < hi {
+                            gather_row(&prev, nx, y, (lo, hi), dx, dy, frac, &mut row[lo..hi]);
+                            if hides {
+                                let n = row[lo..hi].iter().filter(|c| c[3] == full).count();
+                                st.terminated += n as u64;
+                            }
+                        }
+                        for x in [0, nx - 1] {
+                            let c = sweep.control(x, y, z);
+                            let acc = gathered(x, (c.dx, c.dy));
+                            st.terminated += opaque_front(acc) as u64;
+                            row[x] = datapath(x, &c, acc, &mut st, &mut out);
+                            if row[x] != reset {
+                                composited = composited.union(Span { lo: x, hi: x + 1 });
+                            }
+                        }
+                        // An inner voxel's control bits do not depend on
+                        // its x here: one increment, no face, no x edge.
+                        let c = sweep.control(1, y, z);
+                        for x in 1..nx - 1 {
+                            if !identity[voxels[row_at + x * strides[0]] as usize] {
+                                debug_assert_eq!(c, sweep.control(x, y, z));
+                                row[x] = datapath(x, &c, row[x], &mut st, &mut out);
+                                if row[x] != reset {
+                                    composited = composited.union(Span { lo: x, hi: x + 1 });
+                                }
+                            }
+                        }
+                        nonreset(row, lo..hi, reset).union(composited)
+                    }
+                    _ => {
+                        for x in 0..nx {
+                            let v = voxels[row_at + x * strides[0]] as usize;
+                            let inner = inner_row && x > 0 && x + 1 < nx;
+                            if inner && identity[v] {
+                                // No ER inside the slice, and the voxel's
+                                // composite is the identity: the cell is what
+                                // it gathers.
+                                row[x] = if first || !busy.contains(&x) {
+                                    reset
+                                } else {
+                                    let d = match parallel {
+                                        Some(d) => d,
+                                        None => {
+                                            let c = sweep.control(x, y, z);
+                                            (c.dx, c.dy)
+                                        }
+                                    };
+                                    let cell = gathered(x, d);
+                                    st.terminated += opaque_front(cell) as u64;
+                                    cell
+                                };
+                            } else {
+                                let c = sweep.control(x, y, z);
+                                let acc = gathered(x, (c.dx, c.dy));
+                                st.terminated += opaque_front(acc) as u64;
+                                row[x] = datapath(x, &c, acc, &mut st, &mut out);
+                            }
+                        }
+                        nonreset(row, 0..nx, reset)
+                    }
+                };
                 st.pixels_out += out.len() as u64;
                 (out, st)
             })
