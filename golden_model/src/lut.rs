@@ -202,6 +202,10 @@ fn rnorm_entry(n2: u32) -> u32 {
 ///
 /// A zero gradient lights with the ambient term only: its dot products are
 /// 0, and `diffuse[0]` is the ambient term.
+///
+/// The fields are what the host writes; read them, but build a new
+/// `Lighting` for other registers or tables: `reflect` remembers what it
+/// returned for each normal.
 #[derive(Debug, Clone)]
 pub struct Lighting {
     /// `round(-L · 2^DIR_FRAC)` and `round(-H · 2^DIR_FRAC)`, the light and
@@ -296,6 +300,12 @@ impl Lighting {
         specular: Vec<u32>,
         normal_bits: u32,
     ) -> Lighting {
+        // The memo packs both words in 31 bits each (the tables are unorm
+        // of at most 16 bits).
+        assert!(
+            diffuse.iter().chain(&specular).all(|&w| w < 1 << 31),
+            "lighting table words wider than 31 bits"
+        );
         let memo = if normal_bits <= MEMO_BITS {
             let side = (1usize << normal_bits) - 1;
             (0..side.pow(3)).map(|_| Default::default()).collect()
