@@ -48,6 +48,11 @@ const EMPTY: Span = Span {
 };
 
 impl Span {
+    /// Column `x` alone.
+    fn column(x: usize) -> Span {
+        Span { lo: x, hi: x + 1 }
+    }
+
     fn union(self, o: Span) -> Span {
         Span {
             lo: self.lo.min(o.lo),
@@ -179,6 +184,14 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                         gather(&prev, nx, ny, x, y, dx, dy, frac, reset)
                     }
                 };
+                // Voxel `x` through the whole datapath on its own: its
+                // control bits, what it gathers, and an opaque gather counted.
+                let alone = |x: usize, st: &mut Stats, out: &mut Vec<PixelOut>| {
+                    let c = sweep.control(x, y, z);
+                    let acc = gathered(x, (c.dx, c.dy));
+                    st.terminated += opaque_front(acc) as u64;
+                    datapath(x, &c, acc, st, out)
+                };
                 // A parallel view's row inside the slice's border gathers at
                 // once (`gather_row`), reset where the previous slice is all
                 // reset around the cell. An inner voxel whose composite is
@@ -206,12 +219,9 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                             }
                         }
                         for x in [0, nx - 1] {
-                            let c = sweep.control(x, y, z);
-                            let acc = gathered(x, (c.dx, c.dy));
-                            st.terminated += opaque_front(acc) as u64;
-                            row[x] = datapath(x, &c, acc, &mut st, &mut out);
+                            row[x] = alone(x, &mut st, &mut out);
                             if row[x] != reset {
-                                composited = composited.union(Span { lo: x, hi: x + 1 });
+                                composited = composited.union(Span::column(x));
                             }
                         }
                         // An inner voxel's control bits do not depend on
@@ -222,7 +232,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                                 debug_assert_eq!(c, sweep.control(x, y, z));
                                 row[x] = datapath(x, &c, row[x], &mut st, &mut out);
                                 if row[x] != reset {
-                                    composited = composited.union(Span { lo: x, hi: x + 1 });
+                                    composited = composited.union(Span::column(x));
                                 }
                             }
                         }
@@ -251,10 +261,7 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
                                     cell
                                 };
                             } else {
-                                let c = sweep.control(x, y, z);
-                                let acc = gathered(x, (c.dx, c.dy));
-                                st.terminated += opaque_front(acc) as u64;
-                                row[x] = datapath(x, &c, acc, &mut st, &mut out);
+                                row[x] = alone(x, &mut st, &mut out);
                             }
                         }
                         nonreset(row, 0..nx, reset)
