@@ -11,6 +11,7 @@ use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Result};
 use plotters::style::colors::{BLUE, RED};
 use reference::metrics::compare;
+use scene::volume::Ordered;
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -63,6 +64,8 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     check_step(ref_step)?;
     let angles = angle_sweep(&range)?;
     let (base_scene, vol) = load(&scene_path)?;
+    // Every angle's renders share the traversal-order copies.
+    let vol = Ordered::new(&vol);
     let mut files = Files::default();
     files.scene("--scene", &scene_path, &base_scene)?;
     if let Some(j) = &json_path {

@@ -6,6 +6,7 @@ use crate::common::{check_step, error_json, error_line, load, render_arch, Arch}
 use crate::output::{write_json, write_png, Files};
 use anyhow::{bail, Context, Result};
 use reference::metrics::{compare, difference};
+use scene::volume::Ordered;
 use scene::Image;
 use serde_json::json;
 use std::path::PathBuf;
@@ -39,7 +40,13 @@ pub fn run(args: CompareArgs) -> Result<()> {
         }
     }
     let img = read_png(&args.image, scene.image)?;
-    let r = render_arch(&scene, &vol, Arch::Reference, args.ref_step, None)?;
+    let r = render_arch(
+        &scene,
+        &Ordered::new(&vol),
+        Arch::Reference,
+        args.ref_step,
+        None,
+    )?;
     let m = compare(&img, &r.image);
     println!(
         "{}: {} (reference {:.3} s)",

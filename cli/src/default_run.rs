@@ -20,7 +20,7 @@ use anyhow::{Context, Result};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use reference::metrics::{compare, ErrorMetrics};
-use scene::volume::Volume;
+use scene::volume::{Ordered, Volume};
 use scene::{Image, Scene};
 use std::path::Path;
 use std::time::Instant;
@@ -46,7 +46,7 @@ pub fn run() -> Result<()> {
     let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;
     let volume_s = t.elapsed().as_secs_f64();
     let step = reference::DEFAULT_STEP;
-    let reference = render_arch(&scene, &vol, Arch::Reference, step, None)?;
+    let reference = render_arch(&scene, &Ordered::new(&vol), Arch::Reference, step, None)?;
     let mut methods = vec![Method {
         name: "float reference",
         what: "f64, tri-linear, 0.25-voxel steps",
@@ -68,7 +68,7 @@ pub fn run() -> Result<()> {
             "default_cube3.png",
         ),
     ] {
-        let out = render_arch(&scene, &vol, arch, step, None)?;
+        let out = render_arch(&scene, &Ordered::new(&vol), arch, step, None)?;
         let error = Some(
             compare(&out.image, &methods[0].out.image)
                 .context("the built-in scene rendered no foreground pixels")?,

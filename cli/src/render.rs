@@ -6,7 +6,7 @@ use crate::common::{check_step, error_json, error_line, load, render_arch, rende
 use crate::output::{write_json, write_png, Files};
 use anyhow::{bail, Result};
 use reference::metrics::{compare, difference};
-use scene::volume::Volume;
+use scene::volume::{Ordered, Volume};
 use scene::Image;
 use scene::Scene;
 use serde_json::json;
@@ -114,7 +114,7 @@ pub fn run(args: RenderArgs) -> Result<()> {
         "details": r.extra,
     });
     if with_ref {
-        let rr = render_arch(&scene, &vol, Arch::Reference, ref_step, None)?;
+        let rr = render_arch(&scene, &Ordered::new(&vol), Arch::Reference, ref_step, None)?;
         let m = compare(&r.image, &rr.image);
         println!("reference: {:.3} s; {}", rr.seconds, error_line(&m));
         report["error"] = error_json(&m);

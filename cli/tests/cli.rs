@@ -24,6 +24,51 @@ fn read_json(path: &Path) -> serde_json::Value {
 
 const SPHERE: &str = r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [48, 40]}"#;
 
+/// The golden models copy the volume into a view's traversal order once
+/// and keep it: its time is the volume's preparation, null where the view
+/// reads the volume as it is (Cube-3: a z-major view; Cube-4L: any but a
+/// y-major one, whose rows run across the dataset's slices).
+#[test]
+fn golden_models_prepare_a_volume_once_for_its_order() {
+    let d = tempfile::tempdir().unwrap();
+    for (rot, copies) in [
+        ("[0, 0, 0]", [false, false]),
+        ("[90, 0, 0]", [true, true]),
+        ("[0, 90, 0]", [false, true]),
+    ] {
+        let scene = write(d.path(), "s.json", &SPHERE.replace("[70, 30, 0]", rot));
+        for (arch, copied) in ["cube4l", "cube3"].into_iter().zip(copies) {
+            let json = d.path().join(format!("{arch}.json"));
+            let png = d.path().join(format!("{arch}.png"));
+            let o = cube(
+                &[
+                    "render",
+                    "--scene",
+                    &scene,
+                    "--arch",
+                    arch,
+                    "--repeat",
+                    "3",
+                    "--out",
+                    png.to_str().unwrap(),
+                    "--json",
+                    json.to_str().unwrap(),
+                ],
+                d.path(),
+            );
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            let det = &read_json(&json)["details"];
+            let prep = det["volume_prep_seconds"].as_f64();
+            assert_eq!(prep.is_some(), copied, "{arch} {rot}: {det}");
+            assert!(prep.unwrap_or(1.0) > 0.0, "{arch} {rot}: {det}");
+            assert!(
+                det["frame_seconds"].as_f64().unwrap() > 0.0,
+                "{arch} {rot}: {det}"
+            );
+        }
+    }
+}
+
 #[test]
 fn render_writes_png_and_json_with_error() {
     let d = tempfile::tempdir().unwrap();

@@ -5,8 +5,10 @@ use crate::error::{CubeError, Result};
 use glam::DVec3;
 use rayon::prelude::*;
 use serde::Deserialize;
-use std::borrow::Cow;
+use std::ops::Deref;
 use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
 
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -74,6 +76,111 @@ pub struct Volume {
     pub data: Vec<u16>,
 }
 
+/// Voxels in a renderer's traversal order: the volume's own where that is
+/// their order, else a copy ([`Volume::permuted`]).
+#[derive(Debug, Clone)]
+pub enum InOrder<'a> {
+    Own(&'a [u16]),
+    Copy(Arc<Vec<u16>>),
+}
+
+impl Deref for InOrder<'_> {
+    type Target = [u16];
+    fn deref(&self) -> &[u16] {
+        match self {
+            InOrder::Own(d) => d,
+            InOrder::Copy(d) => d,
+        }
+    }
+}
+
+/// What a renderer reads: a volume, and its voxels in a traversal order. A
+/// [`Volume`] makes the copy at every call; an [`Ordered`] keeps it for the
+/// frames after.
+pub trait Voxels: Sync {
+    fn volume(&self) -> &Volume;
+
+    /// The voxels with dataset axis `perm[0]` fastest, then `perm[1]`, then
+    /// `perm[2]` (a renderer's traversal order, so that its rows are
+    /// contiguous).
+    fn in_order(&self, perm: [usize; 3]) -> InOrder<'_>;
+}
+
+impl Voxels for Volume {
+    fn volume(&self) -> &Volume {
+        self
+    }
+
+    fn in_order(&self, perm: [usize; 3]) -> InOrder<'_> {
+        match perm {
+            [0, 1, 2] => InOrder::Own(&self.data),
+            _ => InOrder::Copy(Arc::new(self.permuted(perm))),
+        }
+    }
+}
+
+/// A volume and the copies of its voxels in the traversal orders renderers
+/// have asked for, kept for the frames after: a view that keeps its major
+/// axis pays for its copy in its first frame only, as a peer's per-volume
+/// preparation. The golden models ask for the two cyclic orders other than
+/// the volume's own at most, so at most two copies are kept. The volume is
+/// borrowed while the copies live: it cannot change under them.
+#[derive(Debug)]
+pub struct Ordered<'a> {
+    volume: &'a Volume,
+    kept: Mutex<Kept>,
+}
+
+#[derive(Debug, Default)]
+struct Kept {
+    copies: Vec<([usize; 3], Arc<Vec<u16>>)>,
+    seconds: f64,
+}
+
+impl<'a> Ordered<'a> {
+    pub fn new(volume: &'a Volume) -> Ordered<'a> {
+        Ordered {
+            volume,
+            kept: Mutex::default(),
+        }
+    }
+
+    /// The seconds spent making copies so far (`None`: none was made).
+    pub fn copy_seconds(&self) -> Option<f64> {
+        let k = self.kept.lock().expect("no copy panics");
+        (!k.copies.is_empty()).then_some(k.seconds)
+    }
+}
+
+impl Voxels for Ordered<'_> {
+    fn volume(&self) -> &Volume {
+        self.volume
+    }
+
+    fn in_order(&self, perm: [usize; 3]) -> InOrder<'_> {
+        if perm == [0, 1, 2] {
+            return InOrder::Own(&self.volume.data);
+        }
+        let kept = |k: &Kept| k.copies.iter().find(|c| c.0 == perm).map(|c| c.1.clone());
+        if let Some(c) = kept(&self.kept.lock().expect("no copy panics")) {
+            return InOrder::Copy(c);
+        }
+        // Copied without the lock: the copy runs on the pool, whose threads
+        // may ask for another order meanwhile.
+        let t = Instant::now();
+        let copy = Arc::new(self.volume.permuted(perm));
+        let mut k = self.kept.lock().expect("no copy panics");
+        k.seconds += t.elapsed().as_secs_f64();
+        match kept(&k) {
+            Some(c) => InOrder::Copy(c),
+            None => {
+                k.copies.push((perm, copy.clone()));
+                InOrder::Copy(copy)
+            }
+        }
+    }
+}
+
 /// Built-in volumes: name and one-line description.
 pub const BUILTINS: &[(&str, &str)] = &[
     ("sphere", "volume-sampled (anti-aliased) solid sphere, radius 0.4 of the smallest side, analytic normals known; its shell a ramp of 'shell' voxels (default 1)"),
@@ -98,18 +205,7 @@ impl Volume {
         max_value(self.bits)
     }
 
-    /// The voxels with dataset axis `perm[0]` fastest, then `perm[1]`, then
-    /// `perm[2]` (a renderer's traversal order, so that its rows are
-    /// contiguous): the volume's own voxels when that is already their
-    /// order, else a copy ([`Volume::permuted`]).
-    pub fn in_order(&self, perm: [usize; 3]) -> Cow<'_, [u16]> {
-        match perm {
-            [0, 1, 2] => Cow::Borrowed(&self.data),
-            _ => Cow::Owned(self.permuted(perm)),
-        }
-    }
-
-    /// A copy of the voxels in the order of [`Volume::in_order`]. The inner
+    /// A copy of the voxels in the order of [`Voxels::in_order`]. The inner
     /// loop runs along the dataset's shorter stride
     /// of the first two: a stride of whole slices would map every read of a
     /// row to one cache set.
@@ -749,6 +845,32 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn ordered_keeps_each_copy_and_lends_the_own_order() {
+        let dims = [5, 4, 3];
+        let vol = Volume {
+            dims,
+            bits: 16,
+            data: (0..60).collect(),
+        };
+        let ordered = Ordered::new(&vol);
+        let own = ordered.in_order([0, 1, 2]);
+        assert!(matches!(own, InOrder::Own(d) if std::ptr::eq(d, vol.data.as_slice())));
+        assert_eq!(ordered.copy_seconds(), None);
+        for perm in [[1, 2, 0], [2, 0, 1]] {
+            let (InOrder::Copy(a), InOrder::Copy(b)) =
+                (ordered.in_order(perm), ordered.in_order(perm))
+            else {
+                panic!("{perm:?} is a copy");
+            };
+            assert!(Arc::ptr_eq(&a, &b), "{perm:?} copied twice");
+            assert_eq!(*a, vol.permuted(perm), "{perm:?}");
+            assert_eq!(*vol.in_order(perm), vol.permuted(perm)[..], "{perm:?}");
+        }
+        assert_eq!(ordered.kept.lock().unwrap().copies.len(), 2);
+        assert!(ordered.copy_seconds().is_some_and(|s| s > 0.0));
     }
 
     #[test]

@@ -31,7 +31,7 @@ use abc::{gradient, Planes, RayCoeffs};
 use plan::{sample_pos, Neighbourhood, Plan, View, Widths};
 use rayon::prelude::*;
 use rpc::{fold, identity, node, pixel};
-use scene::volume::Volume;
+use scene::volume::Voxels;
 use scene::{Camera, CubeError, Image, Mode, Result, Scene};
 use shade::Shader;
 use trilin::SamplePlane;
@@ -116,7 +116,7 @@ pub fn chunks(view: &View) -> Vec<[i32; 2]> {
 
 /// Render one base plane.
 pub fn render_view(
-    vol: &Volume,
+    vol: &dyn Voxels,
     view: &View,
     shader: &Shader,
     n: Neighbourhood,
@@ -337,8 +337,10 @@ fn cast_ray(
     (pixel(mode, acc, shader.widths.voxel_bits), acc.valid, st)
 }
 
-/// Render every base plane of the view.
-pub fn render(scene: &Scene, camera: &Camera, vol: &Volume, n: Neighbourhood) -> Result<Frame> {
+/// Render every base plane of the view (`vol`: a
+/// [`scene::volume::Volume`], or an [`scene::volume::Ordered`] that keeps its
+/// traversal-order copies for the next frame).
+pub fn render(scene: &Scene, camera: &Camera, vol: &dyn Voxels, n: Neighbourhood) -> Result<Frame> {
     let plan = Plan::new(scene, camera)?;
     let p = scene.hardware.pipelines;
     let mut bases = Vec::new();
@@ -360,7 +362,7 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume, n: Neighbourhood) ->
 }
 
 /// Render a scene with the Cube-3 golden model to the final image.
-pub fn render_image(scene: &Scene, vol: &Volume, n: Neighbourhood) -> Result<(Image, Frame)> {
+pub fn render_image(scene: &Scene, vol: &dyn Voxels, n: Neighbourhood) -> Result<(Image, Frame)> {
     let camera = scene.camera();
     let frame = render(scene, &camera, vol, n)?;
     let img = warp(&frame, &camera, scene.mode);

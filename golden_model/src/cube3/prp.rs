@@ -15,24 +15,24 @@
 //! an addressing choice that does not change a value.
 
 use super::plan::View;
-use scene::volume::Volume;
-use std::borrow::Cow;
+use scene::volume::{InOrder, Voxels};
 
 /// The volume in one base plane's traversal order `(x, y, k)`, `x`
 /// fastest: the order Cube-3's memory modules hold it in
-/// (`BeamFetchConfig::modules`, without the skew), built once a base
-/// plane, so that each beam is a row (the volume itself where that is its
-/// order). Read in the dataset's own order, a beam along the dataset's
+/// (`BeamFetchConfig::modules`, without the skew), so that each beam is a
+/// row (the volume itself where that is its order; a copy otherwise, made
+/// once a base plane, or kept from an earlier frame by an
+/// [`scene::volume::Ordered`]). Read in the dataset's own order, a beam along the dataset's
 /// slowest axis is a cache miss a voxel.
 #[derive(Debug, Clone)]
 pub struct Traversal<'a> {
     dims: [usize; 3],
     positive: bool,
-    data: Cow<'a, [u16]>,
+    data: InOrder<'a>,
 }
 
 impl<'a> Traversal<'a> {
-    pub fn new(vol: &'a Volume, view: &View) -> Traversal<'a> {
+    pub fn new(vol: &'a dyn Voxels, view: &View) -> Traversal<'a> {
         Traversal {
             dims: view.dims,
             positive: view.positive,
@@ -102,6 +102,7 @@ pub fn fetch(vol: &Traversal, view: &View, v: i32, u0: i32, rays: usize) -> Prp 
 mod tests {
     use super::*;
     use crate::cube3::plan::Plan;
+    use scene::volume::Volume;
     use scene::Scene;
 
     #[test]

@@ -26,10 +26,9 @@ use compositor::{composite, gather, gather_row, reset_value};
 use gradient::central_difference;
 use plan::{Control, Face, Order, Plan, Rays, Sweep};
 use rayon::prelude::*;
-use scene::volume::Volume;
+use scene::volume::{InOrder, Voxels};
 use scene::{Camera, Mode, Scene};
 use shader::Shader;
-use std::borrow::Cow;
 
 /// A pixel leaving on ER: base-plane address, value and face.
 type PixelOut = ([usize; 2], [u32; 4], Face);
@@ -86,17 +85,18 @@ fn nonreset(row: &[[u32; 4]], within: std::ops::Range<usize>, reset: [u32; 4]) -
 /// the cell's 3x3 neighbourhood in the previous slice is all reset, that is
 /// the reset value exactly (`lerp_frac(a, a, w) = a`; the bilinear unit reads
 /// inside the 3x3 since |dx|, |dy| <= 1), and the gather is skipped too.
-pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
+pub fn render_sweep(vol: &dyn Voxels, sweep: &Sweep, shader: &Shader) -> (BasePlane, Stats) {
     let [nx, ny, _] = sweep.dims;
     let frac = sweep.frac;
     // A sweep whose rows run across the dataset's slices reads a copy of
-    // the volume in its own order, made once a sweep: at a stride of a
+    // the volume in its own order (`Voxels::in_order`): at a stride of a
     // whole slice every voxel of a row falls in one cache set. Other
     // sweeps read the volume as it is (a copy costs more than it saves).
-    let ds = [1, vol.dims[0], vol.dims[0] * vol.dims[1]];
-    let (copy, strides): (Cow<[u16]>, _) = match sweep.perm[0] {
-        2 => (Cow::Owned(vol.permuted(sweep.perm)), [1, nx, nx * ny]),
-        _ => (Cow::Borrowed(&vol.data), sweep.perm.map(|a| ds[a])),
+    let own = vol.volume();
+    let ds = [1, own.dims[0], own.dims[0] * own.dims[1]];
+    let (copy, strides) = match sweep.perm[0] {
+        2 => (vol.in_order(sweep.perm), [1, nx, nx * ny]),
+        _ => (InOrder::Own(&own.data), sweep.perm.map(|a| ds[a])),
     };
     let voxels: &[u16] = &copy;
     let reset = reset_value(shader.mode, shader.voxel_bits);
@@ -283,7 +283,10 @@ pub fn render_sweep(vol: &Volume, sweep: &Sweep, shader: &Shader) -> (BasePlane,
     (base, stats)
 }
 
-pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> scene::Result<Frame> {
+/// Render every sweep of the view (`vol`: a [`scene::volume::Volume`], or
+/// an [`scene::volume::Ordered`] that keeps its traversal-order copies for
+/// the next frame).
+pub fn render(scene: &Scene, camera: &Camera, vol: &dyn Voxels) -> scene::Result<Frame> {
     let plan = Plan::new(scene, camera)?;
     let mut bases = Vec::new();
     let mut stats = Stats::default();
@@ -299,7 +302,7 @@ pub fn render(scene: &Scene, camera: &Camera, vol: &Volume) -> scene::Result<Fra
 }
 
 /// Render a scene with the golden model all the way to the final image.
-pub fn render_image(scene: &Scene, vol: &Volume) -> scene::Result<(scene::Image, Frame)> {
+pub fn render_image(scene: &Scene, vol: &dyn Voxels) -> scene::Result<(scene::Image, Frame)> {
     let camera = scene.camera();
     let frame = render(scene, &camera, vol)?;
     let hw = scene.hardware;
