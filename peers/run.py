@@ -7,7 +7,12 @@ Usage: run.py SCENE REPEAT OUT SIZES SCALING_SCENE
    the Cube-4L and Cube-3 golden models), the kit's and VTK's at 1 thread
    and at every core. Each image is judged against the scene's float
    reference (`cube compare`, `--compare-reference`).
-2. Scaling: SCALING_SCENE with the built-in phantom at each of SIZES (N³
+2. Pairs: the kit's renderers and the peer each is measured against, in
+   turn, PAIRS rounds at every core (VolPack at 1 thread): the ratio of
+   each round, then their median and range. On a machine whose speed
+   drifts between the table's runs, a ratio of neighbouring runs holds
+   where a ratio of runs minutes apart does not.
+3. Scaling: SCALING_SCENE with the built-in phantom at each of SIZES (N³
    voxels), written raw by `cube volume` so that the peers read the same
    voxels, every renderer at every core. The exponent of time in voxels is
    a least-squares fit of log time on log voxels; memory is the peak
@@ -181,6 +186,34 @@ def scene_rows(scene, repeat, tmp):
     return rows
 
 
+PAIRS = 5
+# Each kit renderer and the peer its goal names (issue: quantized
+# projection against VolPack, the golden models against VTK).
+PAIRED = [("quantized-projection", "VolPack"), ("cube4l", "VTK"), ("cube3", "VTK")]
+
+
+def pairs(scene, repeat, tmp):
+    """PAIRS rounds of each peer, then each kit renderer measured against it."""
+    cam = vtk_camera(scene, tmp)
+    png = os.path.join(tmp, "pair.png")
+    ratios = {arch: [] for arch, _ in PAIRED}
+    for k in range(PAIRS):
+        print(f"pairs: round {k + 1} of {PAIRS}...", flush=True)
+        for arch, peer in PAIRED:
+            if peer == "VolPack":
+                t_peer = volpack(scene, repeat, png)["frame_seconds"]
+            else:
+                t_peer = vtk(scene, cam, repeat, png, CORES)["frame_seconds"]
+            j = cube(scene, arch, repeat, png, os.path.join(tmp, "pair.json"), CORES, False)
+            ratios[arch].append(j["details"].get("frame_seconds", j["seconds"]) / t_peer)
+    out = []
+    for arch, peer in PAIRED:
+        r = sorted(ratios[arch])
+        out.append({"renderer": arch, "peer": peer,
+                    "ratios": ratios[arch], "median": r[len(r) // 2], "min": r[0], "max": r[-1]})
+    return out
+
+
 def scaling(template, sizes, repeat, tmp):
     s = json.load(open(template))
     table = []
@@ -238,6 +271,16 @@ def markdown(report):
                   f"| {ms(r['prep_s'])} | {e['rel_euclid_pct']:.2f} | {e['psnr_db']:.2f} "
                   f"| {ratio(r['frame_s'], vp['frame_s'])} | {ratio(r['tf_change_s'], vp['tf_change_s'])} "
                   f"| {ratio(r['frame_s'], v and v['frame_s'])} | {r['notes']} |")
+    pr = report.get("pairs")
+    if pr:
+        md += ["", f"## Interleaved pairs: {len(pr[0]['ratios'])} rounds", "",
+               "Each round runs the peer, then the kit's renderer, each for a median of "
+               f"{report['repeat']} frames, at {report['cores']} threads (VolPack at 1); the ratio is "
+               "the kit's frame over the peer's in that round.", "",
+               "| renderer | against | median ratio | range | every round |", "|---|---|---|---|---|"]
+        for r in pr:
+            md.append(f"| {r['renderer']} | {r['peer']} | **{r['median']:.2f}** | {r['min']:.2f}–{r['max']:.2f} "
+                      f"| {', '.join(f'{x:.2f}' for x in r['ratios'])} |")
     sc = report.get("scaling")
     if sc:
         sizes = list(sc[0]["frame_s"].keys())
@@ -260,7 +303,8 @@ def main(scene, repeat, out, sizes, scaling_scene):
     tmp = tempfile.mkdtemp(prefix=".peers.", dir=out)
     try:
         report = {"scene": scene, "repeat": repeat, "cpu": cpu, "cores": CORES,
-                  "date": datetime.date.today().isoformat(), "rows": scene_rows(scene, repeat, tmp)}
+                  "date": datetime.date.today().isoformat(), "rows": scene_rows(scene, repeat, tmp),
+                  "pairs": pairs(scene, repeat, tmp)}
         if sizes:
             report["scaling_scene"] = scaling_scene
             report["scaling"] = scaling(scaling_scene, sizes, repeat, tmp)
