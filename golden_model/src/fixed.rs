@@ -7,6 +7,7 @@
 //! rule of each step.
 
 /// Largest value of an unsigned `bits`-wide word, `2^bits - 1`.
+#[inline]
 pub fn max_of(bits: u32) -> u32 {
     ((1u64 << bits) - 1) as u32
 }
@@ -17,12 +18,14 @@ pub fn max_of(bits: u32) -> u32 {
 /// Hardware form: `t = a*b + 2^(bits-1); (t + (t >> bits)) >> bits`, one
 /// multiplier and two adders; exact for every pair of `bits`-wide operands
 /// (checked exhaustively for 8 and 12 bits in the tests).
+#[inline]
 pub fn mul_unorm(a: u32, b: u32, bits: u32) -> u32 {
     let t = a as u64 * b as u64 + (1u64 << (bits - 1));
     ((t + (t >> bits)) >> bits) as u32
 }
 
 /// Saturate an unsigned value to `max`.
+#[inline]
 pub fn sat_u(v: u64, max: u32) -> u32 {
     v.min(max as u64) as u32
 }
@@ -67,12 +70,14 @@ pub fn quantize_unorm(v: f64, bits: u32) -> u32 {
 
 /// Arithmetic right shift by `s` rounding half up, then saturation to the signed
 /// range `[-lim, lim]`: the normalisation step of the gradient quantizer.
+#[inline]
 pub fn round_shift_sat(v: i32, s: u32, lim: i32) -> i32 {
     let r = if s == 0 { v } else { (v + (1 << (s - 1))) >> s };
     r.clamp(-lim, lim)
 }
 
 /// Number of bits needed to hold `v` (0 for 0): the leading-one detector.
+#[inline]
 pub fn bit_len(v: u64) -> u32 {
     64 - v.leading_zeros()
 }

@@ -43,6 +43,7 @@ impl ColourLut {
         ColourLut { shift, table }
     }
 
+    #[inline]
     pub fn lookup(&self, v: u32) -> [u32; 3] {
         self.table[(v >> self.shift) as usize]
     }
@@ -113,12 +114,14 @@ impl OpacityLut {
         }
     }
 
+    #[inline]
     pub fn row(&self, v: u32) -> usize {
         (v >> self.shift) as usize
     }
 
     /// Opacity of intensity `v` with integer gradient magnitude `gm`
     /// (ignored when the LUT has no gradient dimension).
+    #[inline]
     pub fn lookup(&self, v: u32, gm: u64) -> u32 {
         match self.gm_shift {
             None => self.table[self.row(v)],
@@ -346,6 +349,7 @@ impl Lighting {
 
     /// `[diffuse, specular]` for the quantized gradient `q` (remembered
     /// per normal where the normals are at most [`MEMO_BITS`] wide).
+    #[inline]
     pub fn reflect(&self, q: [i32; 3]) -> [u32; 2] {
         use std::sync::atomic::Ordering::Relaxed;
         let lim = (1i32 << (self.normal_bits - 1)) - 1;
@@ -380,6 +384,7 @@ impl Lighting {
 /// Shade and weight one sample (both architectures): per RGB channel
 /// `shaded = sat(mul(c, d) + s)` (`sat`: clamp to `M = 2^rgba_bits - 1`), then
 /// `mul(shaded, alpha)`; emitted as `[r, g, b, alpha]`.
+#[inline]
 pub fn shade_weight(rgb: [u32; 3], [d, s]: [u32; 2], alpha: u32, rgba_bits: u32) -> [u32; 4] {
     let m = max_of(rgba_bits);
     let shade = |c: u32| sat_u(mul_unorm(c, d, rgba_bits) as u64 + s as u64, m);

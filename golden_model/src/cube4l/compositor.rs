@@ -155,6 +155,7 @@ fn row_i32_lanes(out: &mut [u32], c: [&[u32]; 4], w: [u32; 3]) {
 /// - MIP / MinIP: max / min of the gathered value and a valid voxel.
 /// - X-ray: gathered sum plus the voxel's opacity (no saturation; the sum
 ///   needs `rgba_bits + ceil(log2(depth))` bits).
+#[inline]
 pub fn composite(
     mode: Mode,
     order: Order,

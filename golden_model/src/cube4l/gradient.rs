@@ -7,6 +7,7 @@ use crate::fixed::{bit_len, isqrt, round_shift_sat};
 
 /// `(v(x+1) - v(x-1), v(y+1) - v(y-1), v(z+1) - v(z-1))`: signed, one bit
 /// wider than the voxels, not halved.
+#[inline]
 pub fn central_difference(at: impl Fn(isize, isize, isize) -> u16) -> [i32; 3] {
     [
         at(1, 0, 0) as i32 - at(-1, 0, 0) as i32,
@@ -25,6 +26,7 @@ pub fn magnitude(g: [i32; 3]) -> u64 {
 /// components (`hardware.normal_bits`): shift all three right (rounding half
 /// up) until the largest fits in `bits - 1` magnitude bits, then saturate to
 /// `±(2^(bits-1) - 1)`.
+#[inline]
 pub fn quantize_normal(g: [i32; 3], bits: u32) -> [i32; 3] {
     let m = g.iter().map(|c| c.unsigned_abs()).max().unwrap() as u64;
     let s = bit_len(m).saturating_sub(bits - 1);
