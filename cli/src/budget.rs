@@ -66,9 +66,20 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
     // The sweeps' pipeline-space dims [nx, ny, nz], nz the major axis; for
     // a view no sweep can plan, the largest side on every axis.
     let cam = scene.camera();
-    let sweeps: Vec<[f64; 3]> = match golden_model::cube4l::plan::Plan::new(scene, &cam) {
-        Ok(p) => p.sweeps.iter().map(|s| s.dims.map(|x| x as f64)).collect(),
-        Err(_) => vec![[d[0].max(d[1]).max(d[2]); 3]],
+    let plan = golden_model::cube4l::plan::Plan::new(scene, &cam).ok();
+    let sweeps: Vec<[f64; 3]> = match &plan {
+        Some(p) => p.sweeps.iter().map(|s| s.dims.map(|x| x as f64)).collect(),
+        None => vec![[d[0].max(d[1]).max(d[2]); 3]],
+    };
+    // The traversal-order copies the golden models keep for the whole
+    // render (2 bytes a voxel each): Cube-4L's for a sweep along y, Cube-3's
+    // for each major axis but z (both, where no sweep can plan).
+    let axes: Vec<usize> = match &plan {
+        Some(p) => p.sweeps.iter().map(|s| s.axis()).collect(),
+        None => vec![0, 1],
+    };
+    let copies = |needs: &dyn Fn(usize) -> bool| {
+        2.0 * voxels * (0..3).filter(|&a| needs(a) && axes.contains(&a)).count() as f64
     };
     // A sheared plane: each side grows by up to one voxel a slice.
     let plane = |s: &[f64; 3]| (s[0] + s[2] + 4.0) * (s[1] + s[2] + 4.0);
@@ -76,6 +87,7 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
     match arch {
         Arch::Cube4l => Estimate {
             bytes: common
+                + copies(&|a| a == 1)
                 + sweeps
                     .iter()
                     .map(|s| 17.0 * (s[0] + 2.0 * s[2]) * (s[1] + 2.0 * s[2]) + 32.0 * s[0] * s[1])
@@ -84,6 +96,7 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
         },
         Arch::Cube3 => Estimate {
             bytes: common
+                + copies(&|a| a != 2)
                 + sweeps
                     .iter()
                     .map(|s| 20.0 * threads * (s[0] + s[2] + 4.0) * s[2] + 34.0 * plane(s))
@@ -203,6 +216,39 @@ mod tests {
             None,
         )
         .unwrap()
+    }
+
+    /// A view whose golden model keeps a traversal-order copy costs 2 bytes
+    /// a voxel more than one that reads the volume as it is (a cube, so
+    /// that the sweeps' own terms are equal).
+    #[test]
+    fn kept_copies_are_counted() {
+        let cube = r#"{"builtin": "sphere", "dims": [64, 64, 64]}"#;
+        let bytes = |rot: &str, arch| {
+            estimate(
+                &scene(cube, &format!(r#""rotate_deg": {rot}"#), 64, ""),
+                arch,
+                0.5,
+            )
+            .bytes
+        };
+        let n = 2.0 * 64f64.powi(3);
+        assert_eq!(
+            bytes("[90, 0, 0]", Arch::Cube4l) - bytes("[0, 0, 0]", Arch::Cube4l),
+            n
+        );
+        assert_eq!(
+            bytes("[0, 90, 0]", Arch::Cube4l),
+            bytes("[0, 0, 0]", Arch::Cube4l)
+        );
+        assert_eq!(
+            bytes("[0, 90, 0]", Arch::Cube3) - bytes("[0, 0, 0]", Arch::Cube3),
+            n
+        );
+        assert_eq!(
+            bytes("[90, 0, 0]", Arch::Cube3) - bytes("[0, 0, 0]", Arch::Cube3),
+            n
+        );
     }
 
     /// Peaks measured with `/usr/bin/time -v` (resident MB; allocations
