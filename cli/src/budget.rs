@@ -78,16 +78,15 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
         Some(p) => p.sweeps.iter().map(|s| s.axis()).collect(),
         None => vec![0, 1],
     };
-    let copies = |needs: &dyn Fn(usize) -> bool| {
-        2.0 * voxels * (0..3).filter(|&a| needs(a) && axes.contains(&a)).count() as f64
-    };
+    let copies =
+        |copied: &[usize]| 2.0 * voxels * copied.iter().filter(|a| axes.contains(a)).count() as f64;
     // A sheared plane: each side grows by up to one voxel a slice.
     let plane = |s: &[f64; 3]| (s[0] + s[2] + 4.0) * (s[1] + s[2] + 4.0);
     let diag = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     match arch {
         Arch::Cube4l => Estimate {
             bytes: common
-                + copies(&|a| a == 1)
+                + copies(&[1])
                 + sweeps
                     .iter()
                     .map(|s| 17.0 * (s[0] + 2.0 * s[2]) * (s[1] + 2.0 * s[2]) + 32.0 * s[0] * s[1])
@@ -96,7 +95,7 @@ pub fn estimate(scene: &Scene, arch: Arch, ref_step: f64) -> Estimate {
         },
         Arch::Cube3 => Estimate {
             bytes: common
-                + copies(&|a| a != 2)
+                + copies(&[0, 1])
                 + sweeps
                     .iter()
                     .map(|s| 20.0 * threads * (s[0] + s[2] + 4.0) * s[2] + 34.0 * plane(s))

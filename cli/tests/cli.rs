@@ -22,6 +22,28 @@ fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
+/// `cube render --repeat 3` of `arch` on `scene` with `extra` arguments,
+/// writing `{arch}.png` and `{arch}.json` in `dir`: its JSON report.
+fn render_three_times(dir: &Path, scene: &str, arch: &str, extra: &[&str]) -> serde_json::Value {
+    let json = dir.join(format!("{arch}.json"));
+    let png = dir.join(format!("{arch}.png"));
+    let mut args = vec!["render", "--scene", scene, "--arch", arch, "--repeat", "3"];
+    args.extend(extra);
+    args.extend([
+        "--out",
+        png.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    let o = cube(&args, dir);
+    assert!(
+        o.status.success(),
+        "{arch}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    read_json(&json)
+}
+
 const SPHERE: &str = r#"{"volume": {"builtin": "sphere", "dims": [16,16,16]}, "view": {"projection": "parallel", "rotate_deg": [70, 30, 0]}, "image": [48, 40]}"#;
 
 /// The golden models copy the volume into a view's traversal order once
@@ -38,26 +60,7 @@ fn golden_models_prepare_a_volume_once_for_its_order() {
     ] {
         let scene = write(d.path(), "s.json", &SPHERE.replace("[70, 30, 0]", rot));
         for (arch, copied) in ["cube4l", "cube3"].into_iter().zip(copies) {
-            let json = d.path().join(format!("{arch}.json"));
-            let png = d.path().join(format!("{arch}.png"));
-            let o = cube(
-                &[
-                    "render",
-                    "--scene",
-                    &scene,
-                    "--arch",
-                    arch,
-                    "--repeat",
-                    "3",
-                    "--out",
-                    png.to_str().unwrap(),
-                    "--json",
-                    json.to_str().unwrap(),
-                ],
-                d.path(),
-            );
-            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-            let det = &read_json(&json)["details"];
+            let det = &render_three_times(d.path(), &scene, arch, &[])["details"];
             let prep = det["volume_prep_seconds"].as_f64();
             assert_eq!(prep.is_some(), copied, "{arch} {rot}: {det}");
             assert!(prep.unwrap_or(1.0) > 0.0, "{arch} {rot}: {det}");
@@ -980,31 +983,8 @@ fn quantized_paths_report_stages_and_compare_judges_their_images() {
     let d = tempfile::tempdir().unwrap();
     let scene = write(d.path(), "s.json", SPHERE);
     for arch in ["quantized-projection", "quantized-splat"] {
-        let json = d.path().join(format!("{arch}.json"));
         let png = d.path().join(format!("{arch}.png"));
-        let o = cube(
-            &[
-                "render",
-                "--scene",
-                &scene,
-                "--arch",
-                arch,
-                "--repeat",
-                "3",
-                "--compare-reference",
-                "--out",
-                png.to_str().unwrap(),
-                "--json",
-                json.to_str().unwrap(),
-            ],
-            d.path(),
-        );
-        assert!(
-            o.status.success(),
-            "{arch}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        let j = read_json(&json);
+        let j = render_three_times(d.path(), &scene, arch, &["--compare-reference"]);
         assert_eq!(j["arch"], arch);
         let det = &j["details"];
         for k in [

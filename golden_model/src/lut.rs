@@ -145,10 +145,16 @@ pub const RNORM_FRAC: u32 = 15;
 /// by the scene).
 pub const MAX_NORMAL_BITS: u32 = *scene::spec::NORMAL_BITS.end();
 
+/// Largest magnitude of a quantized normal's `normal_bits`-bit component,
+/// `2^(normal_bits - 1) - 1` (15 at 5 bits): the quantizer saturates to it.
+pub const fn normal_limit(normal_bits: u32) -> i32 {
+    (1 << (normal_bits - 1)) - 1
+}
+
 /// Largest squared length of a quantized normal of `normal_bits`-bit
-/// components: three of magnitude `2^(normal_bits - 1) - 1` (675 at 5 bits).
+/// components: three of magnitude [`normal_limit`] (675 at 5 bits).
 pub const fn max_n2(normal_bits: u32) -> u32 {
-    let m = (1u32 << (normal_bits - 1)) - 1;
+    let m = normal_limit(normal_bits) as u32;
     3 * m * m
 }
 
@@ -310,7 +316,7 @@ impl Lighting {
             "lighting table words wider than 31 bits"
         );
         let memo = if normal_bits <= MEMO_BITS {
-            let side = (1usize << normal_bits) - 1;
+            let side = 2 * normal_limit(normal_bits) as usize + 1;
             (0..side.pow(3)).map(|_| Default::default()).collect()
         } else {
             Vec::new()
@@ -352,7 +358,7 @@ impl Lighting {
     #[inline]
     pub fn reflect(&self, q: [i32; 3]) -> [u32; 2] {
         use std::sync::atomic::Ordering::Relaxed;
-        let lim = (1i32 << (self.normal_bits - 1)) - 1;
+        let lim = normal_limit(self.normal_bits);
         if self.memo.0.is_empty() || q.iter().any(|c| c.abs() > lim) {
             return self.reflect_uncached(q);
         }
@@ -698,7 +704,7 @@ mod tests {
         let perm = glam::DMat3::from_cols(DVec3::Y, DVec3::Z, DVec3::X);
         for bits in 3..=MEMO_BITS {
             let l = Lighting::new(&shading(), perm, light, DVec3::Z, 16, bits);
-            let lim = (1 << (bits - 1)) - 1;
+            let lim = normal_limit(bits);
             let all = || {
                 (-lim..=lim).flat_map(move |a| {
                     (-lim..=lim).flat_map(move |b| (-lim..=lim).map(move |c| [a, b, c]))

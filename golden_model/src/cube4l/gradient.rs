@@ -4,6 +4,7 @@
 //! (`Control::edge`) and never reach here.
 
 use crate::fixed::{bit_len, isqrt, round_shift_sat};
+use crate::lut::normal_limit;
 
 /// `(v(x+1) - v(x-1), v(y+1) - v(y-1), v(z+1) - v(z-1))`: signed, one bit
 /// wider than the voxels, not halved.
@@ -30,8 +31,7 @@ pub fn magnitude(g: [i32; 3]) -> u64 {
 pub fn quantize_normal(g: [i32; 3], bits: u32) -> [i32; 3] {
     let m = g.iter().map(|c| c.unsigned_abs()).max().unwrap() as u64;
     let s = bit_len(m).saturating_sub(bits - 1);
-    let lim = (1 << (bits - 1)) - 1;
-    g.map(|c| round_shift_sat(c, s, lim))
+    g.map(|c| round_shift_sat(c, s, normal_limit(bits)))
 }
 
 #[cfg(test)]
