@@ -7,11 +7,10 @@
 //! fixed-point position. Within a row of a block only the voxels the
 //! classification flags as able to add anything are visited.
 //!
-//! A projected voxel draws its class's sure pixels in groups of
-//! `view::LANES`, the padding and the failed undecided pixels masked out
-//! rather than branched around, so the work per voxel does not depend on
-//! its class. Its pixels are indexed in its footprint window, checked once
-//! per voxel.
+//! A projected voxel draws its class's sure pixels, then its undecided
+//! ones, a failed edge test masking its pixel rather than branching
+//! around it (the tests' outcomes are not predictable). Its pixels are
+//! indexed in its footprint window, checked once per voxel.
 //!
 //! The image is cut into bands of `BAND` rows, rendered in parallel. A band
 //! visits the blocks that reach it, in traversal order, and draws every
@@ -26,7 +25,7 @@
 
 use super::classify::Classes;
 use super::grid::{Grid, B, B3};
-use super::view::{ClassRange, Footprint, ViewTables, Window, BAND, FRAC, LANES};
+use super::view::{ClassRange, Footprint, ViewTables, Window, BAND, FRAC};
 use super::{Method, Params, Stats};
 use glam::{BVec4A, Vec4};
 use rayon::prelude::*;
@@ -52,7 +51,7 @@ trait Kind: Sync {
     fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Self::Src>;
     fn apply(dst: &mut Vec4, s: &Self::Src, w: f32);
     /// `apply` when `on`, else leave `dst` as it is, without a branch: the
-    /// padded and undecided pixels of a projection class go through here.
+    /// undecided pixels of a projection class go through here.
     #[inline(always)]
     fn apply_if(dst: &mut Vec4, s: &Self::Src, w: f32, on: bool) {
         let mut new = *dst;
@@ -353,14 +352,10 @@ impl Draw for Projected<'_> {
     ) {
         let win = self.window.at(buf, base);
         let r = self.ranges[self.class_of[cell] as usize];
-        let sure = &self.sure[r.sure as usize..(r.sure + r.padded) as usize];
-        for (g, group) in sure.chunks_exact(LANES).enumerate() {
-            for (j, &o) in group.iter().enumerate() {
-                let on = ((g * LANES + j) as u32) < r.sure_len;
-                // SAFETY: every offset is below the window's length
-                // (asserted where the view tables are built).
-                K::apply_if(unsafe { win.get_unchecked_mut(o as usize) }, src, 1.0, on);
-            }
+        for &o in &self.sure[r.sure as usize..(r.sure + r.sure_len) as usize] {
+            // SAFETY: every offset is below the window's length
+            // (asserted where the view tables are built).
+            K::apply(unsafe { win.get_unchecked_mut(o as usize) }, src, 1.0);
         }
         if r.und_len == 0 {
             return;
@@ -533,6 +528,11 @@ fn render_band<K: Kind, F: Draw>(
                 if bits == 0 {
                     continue;
                 }
+                // The row's voxels in its home rows, counted as treated
+                // unless their source turns out empty.
+                let (hl, hh) = (h0.clamp(0, B as i64), h1.clamp(0, B as i64));
+                let home = ((1u32 << hh) - (1u32 << hl.min(hh))) as u8;
+                counts.treated += (bits & home).count_ones() as u64;
                 let row = b * B3 + (k * B + j) * B;
                 let values: &[u16; B] = grid.values[row..row + B].try_into().unwrap();
                 let normals: &[u16; B] = grid.normals[row..row + B].try_into().unwrap();
@@ -547,9 +547,9 @@ fn render_band<K: Kind, F: Draw>(
                     let Some(src) =
                         K::source(cl, &view.shade, values[i] as usize, normals[i], gmag[i])
                     else {
+                        counts.treated -= (home >> i & 1) as u64;
                         continue;
                     };
-                    counts.treated += ((i as i64) >= h0 && (i as i64) < h1) as u64;
                     let cx = rx + i as i64 * sx;
                     let cy = ry + i as i64 * sy;
                     let (px, py) = (cx >> FRAC, cy >> FRAC);

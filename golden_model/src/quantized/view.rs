@@ -84,16 +84,11 @@ impl Geometry {
     }
 }
 
-/// Sure pixels are drawn in groups of this many, so that the loop's trip
-/// count (one group for most classes) does not vary from voxel to voxel.
-pub const LANES: usize = 4;
-
 /// Where one projection class's pixels lie in the footprint's lists.
 #[derive(Debug, Clone, Copy)]
 pub struct ClassRange {
-    /// `sure[sure..sure + padded]`, of which the first `sure_len` are real.
+    /// `sure[sure..sure + sure_len]`.
     pub sure: u32,
-    pub padded: u32,
     pub sure_len: u32,
     /// `undecided[und..und + und_len]`.
     pub und: u32,
@@ -107,8 +102,7 @@ pub enum Footprint {
         table: ProjectionTable,
         /// Per class: where its pixels lie in `sure` and `undecided`.
         ranges: Vec<ClassRange>,
-        /// Each class's sure offsets in the window, padded to a multiple
-        /// of `LANES` by repeating its last one.
+        /// Each class's sure offsets in the window.
         sure: Vec<u32>,
         /// Undecided pixels as (offset in the window, first equation,
         /// equation count).
@@ -212,12 +206,8 @@ impl ViewTables {
                 for c in &table.classes {
                     let first = sure.len();
                     sure.extend(c.sure.iter().map(rel));
-                    if let Some(&last) = sure.last().filter(|_| !c.sure.is_empty()) {
-                        sure.resize(first + c.sure.len().next_multiple_of(LANES), last);
-                    }
                     ranges.push(ClassRange {
                         sure: first as u32,
-                        padded: (sure.len() - first) as u32,
                         sure_len: c.sure.len() as u32,
                         und: undecided.len() as u32,
                         und_len: c.undecided.len() as u32,
