@@ -490,9 +490,11 @@ fn render_band<K: Kind, F: Draw>(
         };
         let ((i_lo, i_hi), (j_lo, j_hi), (k_lo, k_hi)) = (cut(0), cut(1), cut(2));
         let [ox, oy] = view.block_origin[b];
-        // A block whose footprints stay within the band's rows, its home
-        // rows and the image's columns needs no per-row ranges.
-        let whole = by0 >= y0 as i32 && by1 < y1 as i32 && bx0 >= 0 && bx1 < w as i32;
+        // A block whose footprints stay within the image's columns needs
+        // no per-row range across them, and one within the band's rows
+        // (and so its home rows) none down them.
+        let cols_in = bx0 >= 0 && bx1 < w as i32;
+        let rows_in = by0 >= y0 as i32 && by1 < y1 as i32;
         // The t-th index of lo..hi in the traversal's direction along a.
         let at = |a: usize, lo: usize, hi: usize, t: usize| {
             if view.descending[a] {
@@ -510,14 +512,19 @@ fn render_band<K: Kind, F: Draw>(
                 // The voxels of this row whose footprint reaches the band,
                 // and those whose centre lies in its home rows.
                 let [sx, sy] = steps[0];
-                let (i0, i1, h0, h1) = if whole {
-                    (i_lo as i64, i_hi as i64, i_lo as i64, i_hi as i64)
-                } else {
-                    let (ax, bx) = span(rx, sx, cx_lo, cx_hi, i_hi as i64);
-                    let (ay, by) = span(ry, sy, cy_lo, cy_hi, i_hi as i64);
-                    let (h0, h1) = span(ry, sy, home_lo, home_hi, i_hi as i64);
-                    (ax.max(ay).max(i_lo as i64), bx.min(by), h0, h1)
+                let all = (0, i_hi as i64);
+                let (ax, bx) = match cols_in {
+                    true => all,
+                    false => span(rx, sx, cx_lo, cx_hi, i_hi as i64),
                 };
+                let ((ay, by), (h0, h1)) = match rows_in {
+                    true => (all, all),
+                    false => (
+                        span(ry, sy, cy_lo, cy_hi, i_hi as i64),
+                        span(ry, sy, home_lo, home_hi, i_hi as i64),
+                    ),
+                };
+                let (i0, i1) = (ax.max(ay).max(i_lo as i64), bx.min(by));
                 if i0 >= i1 {
                     continue;
                 }
