@@ -417,6 +417,12 @@ fn span(a: i64, d: i64, lo: i64, hi: i64, n: i64) -> (i64, i64) {
     (i0.clamp(0, n), i1.clamp(0, n))
 }
 
+/// The voxels `lo..hi` of a block's row, as bits (`0 <= lo <= hi <= B`,
+/// as `span` gives them).
+fn row_bits(lo: i64, hi: i64) -> u8 {
+    ((1u32 << hi) - (1u32 << lo)) as u8
+}
+
 fn ceil_div(a: i64, d: i64) -> i64 {
     -(-a).div_euclid(d)
 }
@@ -529,16 +535,14 @@ fn render_band<K: Kind, F: Draw>(
                     continue;
                 }
                 counts.inspected += (i1.min(h1) - i0.max(h0)).max(0) as u64;
-                // The row's voxels that can add anything, within i0..i1.
-                let within = ((1u32 << i1) - (1u32 << i0)) as u8;
-                let mut bits = cl.rows[b * B * B + k * B + j] & within;
+                // The row's voxels that can add anything, within i0..i1;
+                // those in its home rows count as treated unless their
+                // source turns out empty.
+                let mut bits = cl.rows[b * B * B + k * B + j] & row_bits(i0, i1);
                 if bits == 0 {
                     continue;
                 }
-                // The row's voxels in its home rows, counted as treated
-                // unless their source turns out empty.
-                let (hl, hh) = (h0.clamp(0, B as i64), h1.clamp(0, B as i64));
-                let home = ((1u32 << hh) - (1u32 << hl.min(hh))) as u8;
+                let home = row_bits(h0, h1);
                 counts.treated += (bits & home).count_ones() as u64;
                 let row = b * B3 + (k * B + j) * B;
                 let values: &[u16; B] = grid.values[row..row + B].try_into().unwrap();
