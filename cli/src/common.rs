@@ -212,19 +212,29 @@ pub fn render_arch(
     ref_step: f64,
     gradient: Option<u32>,
 ) -> Result<Rendered> {
-    render_with(scene, ordered, arch, ref_step, gradient, &OnceCell::new())
+    render_with(scene, ordered, arch, ref_step, gradient, &Kept::default())
 }
 
-/// [`render_arch`], the golden models' RTL clock count taken from `clocks`
-/// once it is filled (it depends on the scene and volume alone, and takes
-/// Cube-3 about as long to work out as a quarter of a frame).
+/// What [`render_repeat`]'s renders of one scene and volume work out once
+/// and share.
+#[derive(Default)]
+struct Kept {
+    /// The golden models' RTL clock count (Cube-3 takes about as long to
+    /// work it out as a quarter of a frame).
+    clocks: OnceCell<Option<u64>>,
+    /// The quantized path's grid (per volume), and the seconds it took.
+    grid: OnceCell<(golden_model::quantized::Grid, f64)>,
+}
+
+/// [`render_arch`], taking from `kept` what an earlier render of the same
+/// scene and volume worked out.
 fn render_with(
     scene: &Scene,
     ordered: &Ordered,
     arch: Arch,
     ref_step: f64,
     gradient: Option<u32>,
-    clocks: &OnceCell<Option<u64>>,
+    kept: &Kept,
 ) -> Result<Rendered> {
     crate::budget::check(scene, arch, ref_step)?;
     let vol = ordered.volume();
@@ -239,7 +249,7 @@ fn render_with(
             let frame_seconds = without_copies(seconds);
             let s = frame.stats;
             // The RTL's schedule: what `cube sim` counts.
-            let clocks = *clocks.get_or_init(|| {
+            let clocks = *kept.clocks.get_or_init(|| {
                 rtl_clocks::<cosim::cube4l::Cube4l>(scene, &scene.camera(), vol.dims)
             });
             Ok(Rendered {
@@ -267,7 +277,8 @@ fn render_with(
             let v = &frame.plan.views[0];
             // The RTL's schedule for this neighbourhood, where it builds it.
             let rtl = scene.with(|s| s.cube3.gradient = n.count())?;
-            let clocks = *clocks
+            let clocks = *kept
+                .clocks
                 .get_or_init(|| rtl_clocks::<cosim::cube3::Cube3>(&rtl, &rtl.camera(), vol.dims));
             Ok(Rendered {
                 image,
@@ -319,17 +330,21 @@ fn render_with(
                 Method::Splat
             };
             let params = q::Params::of(scene, method)?;
-            let grid = q::Grid::new(vol, params.normals);
-            let volume_s = t.elapsed().as_secs_f64();
+            // The grid's time is the volume's preparation, in every render
+            // (as the golden models' copies are).
+            let (grid, volume_s) = kept.grid.get_or_init(|| {
+                let t = Instant::now();
+                (q::Grid::new(vol, params.normals), t.elapsed().as_secs_f64())
+            });
             let tc = Instant::now();
-            let mut classes = q::Classes::new(scene, &grid, &params);
+            let mut classes = q::Classes::new(scene, grid, &params);
             let classify_s = tc.elapsed().as_secs_f64();
-            let (image, s, times, view) = q::frame(scene, &grid, &mut classes, &params)?;
+            let (image, s, times, view) = q::frame(scene, grid, &mut classes, &params)?;
             let seconds = t.elapsed().as_secs_f64();
             // A transfer-function change: the same function set again,
             // timed through classification and rendering.
             let tf = Instant::now();
-            q::reclassify(scene, &grid, &view, &params);
+            q::reclassify(scene, grid, &view, &params);
             let tf_change_s = tf.elapsed().as_secs_f64();
             let frame_s = times.view + times.render;
             Ok(Rendered {
@@ -397,9 +412,9 @@ pub fn render_repeat(
     let mut times: Vec<(f64, Value)> = Vec::with_capacity(repeat);
     let mut last = None;
     let ordered = Ordered::new(vol);
-    let clocks = OnceCell::new();
+    let kept = Kept::default();
     for _ in 0..repeat.max(1) {
-        let r = render_with(scene, &ordered, arch, ref_step, gradient, &clocks)?;
+        let r = render_with(scene, &ordered, arch, ref_step, gradient, &kept)?;
         times.push((r.seconds, r.extra.clone()));
         last = Some(r);
     }

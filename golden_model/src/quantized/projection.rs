@@ -28,6 +28,7 @@
 
 use super::hexagon::Hexagon;
 use glam::DVec2;
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// An undecided pixel: its offset and its edge equations
@@ -138,7 +139,10 @@ impl ProjectionTable {
                 })
                 .collect()
         };
-        let keys: Vec<Vec<u8>> = (0..n * n).map(|i| key_of(i % n, i / n)).collect();
+        let keys: Vec<Vec<u8>> = (0..n * n)
+            .into_par_iter()
+            .map(|i| key_of(i % n, i / n))
+            .collect();
         // Region growing: 4-connected subdivisions with equal keys.
         let mut class_of = vec![u16::MAX; n * n];
         let mut class_keys: Vec<usize> = Vec::new();

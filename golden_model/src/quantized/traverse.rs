@@ -28,8 +28,9 @@ use super::grid::{Grid, B, B3};
 use super::view::{ClassRange, Footprint, ViewTables, Window, BAND, FRAC};
 use super::{Method, Params, Stats};
 use glam::{BVec4A, Vec4};
-use rayon::prelude::*;
 use scene::{Image, Mode, Traversal};
+use std::cmp::Reverse;
+use std::sync::Mutex;
 
 /// Front to back, a pixel at this opacity is finished: what could still
 /// arrive changes its colour by at most 2^-10.
@@ -50,6 +51,8 @@ trait Kind: Sync {
     const OCCLUDES: bool;
     fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Self::Src>;
     fn apply(dst: &mut Vec4, s: &Self::Src, w: f32);
+    /// The image's colour of a finished pixel.
+    fn pixel(p: Vec4) -> [f64; 3];
     /// `apply` when `on`, else leave `dst` as it is, without a branch: the
     /// undecided pixels of a projection class go through here.
     #[inline(always)]
@@ -138,6 +141,10 @@ impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
             *dst = s.pre + s.k * *dst;
         }
     }
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [p.x, p.y, p.z].map(|x| x as f64)
+    }
 }
 
 /// First-opaque: the colour of the front-most voxel whose opacity reaches
@@ -159,6 +166,10 @@ impl<const F2B: bool> Kind for First<F2B> {
             *dst = *c;
         }
     }
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [p.x, p.y, p.z].map(|x| x as f64)
+    }
 }
 
 /// MIP.
@@ -177,6 +188,10 @@ impl Kind for Max {
     fn apply(dst: &mut Vec4, t: &f32, _w: f32) {
         dst.x = dst.x.max(*t);
     }
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [p.x as f64; 3]
+    }
 }
 
 /// MinIP.
@@ -193,6 +208,10 @@ impl Kind for Min {
     #[inline(always)]
     fn apply(dst: &mut Vec4, t: &f32, _w: f32) {
         dst.x = dst.x.min(*t);
+    }
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [if p.x.is_finite() { p.x as f64 } else { 0.0 }; 3]
     }
 }
 
@@ -212,6 +231,10 @@ impl<const SPLAT: bool> Kind for Sum<SPLAT> {
     fn apply(dst: &mut Vec4, t: &f32, w: f32) {
         dst.x += if SPLAT { t * w } else { *t };
     }
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [(p.x as f64).min(1.0); 3]
+    }
 }
 
 /// Counters of one band (each voxel and block counted in one band only).
@@ -220,6 +243,14 @@ struct Counts {
     inspected: u64,
     treated: u64,
     occluded: u64,
+}
+
+impl std::ops::AddAssign for Counts {
+    fn add_assign(&mut self, c: Counts) {
+        self.inspected += c.inspected;
+        self.treated += c.treated;
+        self.occluded += c.occluded;
+    }
 }
 
 /// Render the frame: the image and the counters.
@@ -232,46 +263,41 @@ pub fn render(
 ) -> (Image, Stats) {
     let f2b = params.order == Traversal::FrontToBack;
     let splat = params.method == Method::Splat;
-    let bands = match (mode, f2b, splat) {
-        (Mode::Composite, false, false) => run(Over::<false, false>, grid, view, cl),
-        (Mode::Composite, true, false) => run(Over::<true, false>, grid, view, cl),
-        (Mode::Composite, false, true) => run(Over::<false, true>, grid, view, cl),
-        (Mode::Composite, true, true) => run(Over::<true, true>, grid, view, cl),
-        (Mode::FirstOpaque, false, _) => run(First::<false>, grid, view, cl),
-        (Mode::FirstOpaque, true, _) => run(First::<true>, grid, view, cl),
-        (Mode::Mip, ..) => run(Max, grid, view, cl),
-        (Mode::Minip, ..) => run(Min, grid, view, cl),
-        (Mode::Xray, _, false) => run(Sum::<false>, grid, view, cl),
-        (Mode::Xray, _, true) => run(Sum::<true>, grid, view, cl),
-    };
     let (w, h) = (view.geom.width, view.geom.height);
     let mut img = Image::black(w as u32, h as u32);
-    let mut stats = Stats {
+    let out = &mut img.rgb;
+    let c = match (mode, f2b, splat) {
+        (Mode::Composite, false, false) => run(Over::<false, false>, grid, view, cl, out),
+        (Mode::Composite, true, false) => run(Over::<true, false>, grid, view, cl, out),
+        (Mode::Composite, false, true) => run(Over::<false, true>, grid, view, cl, out),
+        (Mode::Composite, true, true) => run(Over::<true, true>, grid, view, cl, out),
+        (Mode::FirstOpaque, false, _) => run(First::<false>, grid, view, cl, out),
+        (Mode::FirstOpaque, true, _) => run(First::<true>, grid, view, cl, out),
+        (Mode::Mip, ..) => run(Max, grid, view, cl, out),
+        (Mode::Minip, ..) => run(Min, grid, view, cl, out),
+        (Mode::Xray, _, false) => run(Sum::<false>, grid, view, cl, out),
+        (Mode::Xray, _, true) => run(Sum::<true>, grid, view, cl, out),
+    };
+    let stats = Stats {
         voxels: grid.dims.iter().product::<usize>() as u64,
         blocks: cl.live.len() as u64,
         blocks_live: cl.live.iter().filter(|&&l| l).count() as u64,
+        inspected: c.inspected,
+        treated: c.treated,
+        occluded: c.occluded,
         classes: view.classes,
         entries: view.entries,
-        ..Stats::default()
     };
-    for (k, (px, c)) in bands.into_iter().enumerate() {
-        stats.inspected += c.inspected;
-        stats.treated += c.treated;
-        stats.occluded += c.occluded;
-        let out = &mut img.rgb[k * BAND * w..(k * BAND * w + px.len())];
-        for (o, p) in out.iter_mut().zip(px) {
-            *o = match mode {
-                Mode::Composite | Mode::FirstOpaque => [p.x, p.y, p.z].map(|x| x as f64),
-                Mode::Mip => [p.x as f64; 3],
-                Mode::Minip => [if p.x.is_finite() { p.x as f64 } else { 0.0 }; 3],
-                Mode::Xray => [(p.x as f64).min(1.0); 3],
-            };
-        }
-    }
     (img, stats)
 }
 
-fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<Vec4>, Counts)> {
+fn run<K: Kind>(
+    _: K,
+    grid: &Grid,
+    view: &ViewTables,
+    cl: &Classes,
+    out: &mut [[f64; 3]],
+) -> Counts {
     match &view.footprint {
         Footprint::Projection {
             table,
@@ -287,7 +313,7 @@ fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<
                 undecided,
                 eqs: &table.eqs,
             };
-            bands::<K, _>(&fp, grid, view, cl)
+            bands::<K, _>(&fp, grid, view, cl, out)
         }
         Footprint::Splat { table, offsets } => {
             let fp = Splatted {
@@ -296,21 +322,44 @@ fn run<K: Kind>(_: K, grid: &Grid, view: &ViewTables, cl: &Classes) -> Vec<(Vec<
                 offsets,
                 weights: &table.weights,
             };
-            bands::<K, _>(&fp, grid, view, cl)
+            bands::<K, _>(&fp, grid, view, cl, out)
         }
     }
 }
 
+/// Render every band into its rows of `out`. The bands' work differs
+/// widely (a volume covers some of the image's rows only), so they are
+/// taken heaviest first (by live blocks), each by the next idle thread:
+/// no thread is left with a heavy band while the others wait. The order
+/// does not change a pixel.
 fn bands<K: Kind, F: Draw>(
     fp: &F,
     grid: &Grid,
     view: &ViewTables,
     cl: &Classes,
-) -> Vec<(Vec<Vec4>, Counts)> {
-    (0..view.bands.len())
-        .into_par_iter()
-        .map(|band| render_band::<K, F>(fp, grid, view, cl, band))
-        .collect()
+    out: &mut [[f64; 3]],
+) -> Counts {
+    let live = |band: usize| {
+        view.bands[band]
+            .iter()
+            .filter(|&&b| cl.live[b as usize])
+            .count()
+    };
+    let mut jobs: Vec<_> = out.chunks_mut(BAND * view.geom.width).enumerate().collect();
+    jobs.sort_by_key(|&(band, _)| Reverse(live(band)));
+    let queue = Mutex::new(jobs.into_iter());
+    let total = Mutex::new(Counts::default());
+    rayon::scope(|s| {
+        for _ in 0..rayon::current_num_threads() {
+            s.spawn(|_| loop {
+                let job = queue.lock().unwrap().next();
+                let Some((band, rows)) = job else { break };
+                let c = render_band::<K, F>(fp, grid, view, cl, band, rows);
+                *total.lock().unwrap() += c;
+            });
+        }
+    });
+    total.into_inner().unwrap()
 }
 
 /// A footprint table: draws one voxel whose centre lies in subdivision
@@ -433,7 +482,8 @@ fn render_band<K: Kind, F: Draw>(
     view: &ViewTables,
     cl: &Classes,
     band: usize,
-) -> (Vec<Vec4>, Counts) {
+    out: &mut [[f64; 3]],
+) -> Counts {
     let (w, h) = (view.geom.width, view.geom.height);
     let (y0, y1) = (band * BAND, ((band + 1) * BAND).min(h));
     let (m, stride) = (view.margin, view.stride);
@@ -573,12 +623,13 @@ fn render_band<K: Kind, F: Draw>(
             }
         }
     }
-    let mut out = Vec::with_capacity((y1 - y0) * w);
-    for r in 0..y1 - y0 {
+    for (r, row) in out.chunks_mut(w).enumerate() {
         let s = (r + m) * stride + m;
-        out.extend_from_slice(&buf[s..s + w]);
+        for (o, p) in row.iter_mut().zip(&buf[s..s + w]) {
+            *o = K::pixel(*p);
+        }
     }
-    (out, counts)
+    counts
 }
 
 /// Whether every pixel of the box `[x0, x1, y0, y1]` (inclusive, image

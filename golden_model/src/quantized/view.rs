@@ -17,6 +17,7 @@ use super::projection::ProjectionTable;
 use super::splat::SplatTable;
 use super::{Method, Params};
 use glam::{DVec2, DVec3};
+use rayon::prelude::*;
 use scene::lighting::phong;
 use scene::{Camera, Scene};
 
@@ -244,32 +245,34 @@ impl ViewTables {
         let descending = [0, 1, 2].map(|a| (geom.forward[a] > 0.0) == back_to_front);
         let steps = geom.steps.map(|s| [fixed(s.x), fixed(s.y)]);
         let count = grid.blocks.iter().product::<usize>();
-        let mut block_origin = Vec::with_capacity(count);
-        let mut block_box = Vec::with_capacity(count);
-        for b in 0..count {
-            let c = [
-                b % grid.blocks[0],
-                b / grid.blocks[0] % grid.blocks[1],
-                b / (grid.blocks[0] * grid.blocks[1]),
-            ];
-            let first = c.map(|x| x * B);
-            let o = geom.centre(first);
-            block_origin.push([fixed(o.x), fixed(o.y)]);
-            let e = grid.extent(b);
-            let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
-            for k in 0..8 {
-                let p = [0, 1, 2].map(|a| first[a] + if k >> a & 1 == 1 { e[a] - 1 } else { 0 });
-                let q = geom.centre(p);
-                lo = lo.min(q);
-                hi = hi.max(q);
-            }
-            block_box.push([
-                lo.x.floor() as i32 + ext[0][0],
-                hi.x.floor() as i32 + ext[1][0],
-                lo.y.floor() as i32 + ext[0][1],
-                hi.y.floor() as i32 + ext[1][1],
-            ]);
-        }
+        let (block_origin, block_box): (Vec<_>, Vec<_>) = (0..count)
+            .into_par_iter()
+            .map(|b| {
+                let c = [
+                    b % grid.blocks[0],
+                    b / grid.blocks[0] % grid.blocks[1],
+                    b / (grid.blocks[0] * grid.blocks[1]),
+                ];
+                let first = c.map(|x| x * B);
+                let o = geom.centre(first);
+                let e = grid.extent(b);
+                let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
+                for k in 0..8 {
+                    let p =
+                        [0, 1, 2].map(|a| first[a] + if k >> a & 1 == 1 { e[a] - 1 } else { 0 });
+                    let q = geom.centre(p);
+                    lo = lo.min(q);
+                    hi = hi.max(q);
+                }
+                let bbox = [
+                    lo.x.floor() as i32 + ext[0][0],
+                    hi.x.floor() as i32 + ext[1][0],
+                    lo.y.floor() as i32 + ext[0][1],
+                    hi.y.floor() as i32 + ext[1][1],
+                ];
+                ([fixed(o.x), fixed(o.y)], bbox)
+            })
+            .unzip();
         let bands_n = geom.height.div_ceil(BAND);
         let mut bands = vec![Vec::new(); bands_n];
         let along = |a: usize, k: usize| {
@@ -330,6 +333,7 @@ fn shade_table(scene: &Scene, camera: &Camera, code: &NormalCode) -> Vec<[f32; 2
         .normalize();
     let viewer = -camera.forward;
     let mut t: Vec<[f32; 2]> = (0..count)
+        .into_par_iter()
         .map(|i| {
             let (d, s) = phong(sh, code.decode(i as u16), light, viewer);
             [d as f32, s as f32]
