@@ -387,7 +387,7 @@ fn row_flags_mark_exactly_the_voxels_that_can_add() {
                 let row = cl.rows[(b * b8 + k) * b8 + j];
                 for i in 0..b8 {
                     let inside = i < e[0] && j < e[1] && k < e[2];
-                    let v = grid.values[((b * b8 + k) * b8 + j) * b8 + i];
+                    let v = grid.voxels[((b * b8 + k) * b8 + j) * b8 + i].value;
                     let expect = inside && cl.live[b] && adds(v);
                     assert_eq!(row >> i & 1 == 1, expect, "block {b} voxel {i} {j} {k}");
                     flagged += (row >> i & 1) as usize;

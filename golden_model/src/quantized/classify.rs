@@ -136,14 +136,14 @@ impl Classes {
             .filter(|(b, _)| classes.live[*b])
             .for_each(|(b, rows)| {
                 let e = grid.extent(b);
-                let vals = &grid.values[b * B3..(b + 1) * B3];
+                let vals = &grid.voxels[b * B3..(b + 1) * B3];
                 for k in 0..e[2] {
                     for j in 0..e[1] {
                         let row = &vals[(k * B + j) * B..][..e[0]];
                         rows[k * B + j] = row
                             .iter()
                             .enumerate()
-                            .fold(0, |m, (i, &v)| m | (adds[v as usize] as u8) << i);
+                            .fold(0, |m, (i, v)| m | (adds[v.value as usize] as u8) << i);
                     }
                 }
             });

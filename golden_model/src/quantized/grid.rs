@@ -1,7 +1,8 @@
 //! The two-level grid (Mora, Jessel & Caubet, §3.2), built once per
 //! volume. Each first-level element is a block of `B³` voxels holding its
-//! own voxel grid, its grid of quantized normals (§3.1) and gradient
-//! magnitudes, and its minimum and maximum value. A transfer function then
+//! own voxel grid, each voxel's value beside its quantized normal (§3.1),
+//! so that the renderer finds both in one cache line; its gradient
+//! magnitudes; and its minimum and maximum value. A transfer function then
 //! marks a block empty when its opacity is zero over the block's value
 //! range (`min..=max`) or, as the paper does, over `min..` to the top of
 //! the range (`EmptySpace::Min`); the renderer skips empty blocks without
@@ -20,16 +21,22 @@ pub const B3: usize = B * B * B;
 /// Levels of the stored gradient magnitude (for gradient opacity).
 pub const GMAG_LEVELS: u32 = 256;
 
+/// A voxel's value and its normal code (`NormalCode`, or `EDGE`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Voxel {
+    pub value: u16,
+    pub normal: u16,
+}
+
 /// The volume regrouped into blocks.
 #[derive(Debug, Clone)]
 pub struct Grid {
     pub dims: [usize; 3],
     /// Blocks along each axis.
     pub blocks: [usize; 3],
-    /// Per block, `B3` values, x fastest; voxels beyond the volume are 0.
-    pub values: Vec<u16>,
-    /// Per block, `B3` normal codes (`NormalCode`, or `EDGE`).
-    pub normals: Vec<u16>,
+    /// Per block, `B3` voxels, x fastest; voxels beyond the volume are 0
+    /// with normal `EDGE`.
+    pub voxels: Vec<Voxel>,
     /// Per block, `B3` gradient magnitudes, `0..GMAG_LEVELS` over
     /// `[0, gmag_max]`.
     pub gmag: Vec<u8>,
@@ -49,17 +56,19 @@ impl Grid {
         let vmax = ((1u64 << vol.bits) - 1) as f64;
         let gmag_max = vmax * 3f64.sqrt() / 2.0;
         let per_slab = blocks[0] * blocks[1] * B3;
-        let mut values = vec![0u16; per_slab * blocks[2]];
-        let mut norms = vec![EDGE; values.len()];
-        let mut gmag = vec![0u8; values.len()];
+        let edge = Voxel {
+            value: 0,
+            normal: EDGE,
+        };
+        let mut voxels = vec![edge; per_slab * blocks[2]];
+        let mut gmag = vec![0u8; voxels.len()];
         // One slab of blocks (constant bz) per task.
-        values
+        voxels
             .par_chunks_mut(per_slab)
-            .zip(norms.par_chunks_mut(per_slab))
             .zip(gmag.par_chunks_mut(per_slab))
             .enumerate()
-            .for_each(|(bz, ((vals, ns), gs))| {
-                for (i, ((v, n), g)) in vals.iter_mut().zip(ns.iter_mut()).zip(gs).enumerate() {
+            .for_each(|(bz, (vs, gs))| {
+                for (i, (v, g)) in vs.iter_mut().zip(gs).enumerate() {
                     let (b, o) = (i / B3, i % B3);
                     let p = [
                         (b % blocks[0]) * B + o % B,
@@ -69,7 +78,7 @@ impl Grid {
                     if (0..3).any(|a| p[a] >= dims[a]) {
                         continue;
                     }
-                    *v = vol.get(p[0], p[1], p[2]);
+                    v.value = vol.get(p[0], p[1], p[2]);
                     if (0..3).any(|a| p[a] == 0 || p[a] == dims[a] - 1) {
                         continue;
                     }
@@ -84,7 +93,7 @@ impl Grid {
                     };
                     let grad = DVec3::new(d(0), d(1), d(2));
                     let len = grad.length();
-                    *n = if len == 0.0 {
+                    v.normal = if len == 0.0 {
                         code.flat()
                     } else {
                         // The shading normal faces against the gradient.
@@ -99,13 +108,13 @@ impl Grid {
             .into_par_iter()
             .map(|b| {
                 let ext = extent(dims, blocks, b);
-                let vals = &values[b * B3..(b + 1) * B3];
+                let vals = &voxels[b * B3..(b + 1) * B3];
                 let (mut lo, mut hi) = (u16::MAX, 0u16);
                 for k in 0..ext[2] {
                     for j in 0..ext[1] {
                         for v in &vals[(k * B + j) * B..(k * B + j) * B + ext[0]] {
-                            lo = lo.min(*v);
-                            hi = hi.max(*v);
+                            lo = lo.min(v.value);
+                            hi = hi.max(v.value);
                         }
                     }
                 }
@@ -115,8 +124,7 @@ impl Grid {
         Grid {
             dims,
             blocks,
-            values,
-            normals: norms,
+            voxels,
             gmag,
             min,
             max,
@@ -195,7 +203,10 @@ mod tests {
         // Block 3 is (1, 1, 0): u 8..10, v 8, w 0..3.
         assert_eq!((g.min[3], g.max[3]), (8 + 16, 9 + 16 + 6));
         let b = g.block([1, 1, 0]);
-        assert_eq!(g.values[b * B3 + (2 * B) * B + 1], (9 + 16 + 6) as u16);
+        assert_eq!(
+            g.voxels[b * B3 + (2 * B) * B + 1].value,
+            (9 + 16 + 6) as u16
+        );
     }
 
     #[test]
@@ -204,13 +215,13 @@ mod tests {
         let g = Grid::new(&vol, 8192);
         // Voxel (1, 1, 2) of block 0.
         let at = (2 * B + 1) * B + 1;
-        let inner = g.normals[at];
+        let inner = g.voxels[at].normal;
         assert_ne!(inner, EDGE);
         let n = g.code.decode(inner);
         let want = -DVec3::new(1.0, 2.0, 3.0).normalize();
         assert!(n.dot(want) > 0.999, "{n}");
         // |(1, 2, 3)| = 3.742 of 127.5·√3 = 220.8 -> level 4.
         assert_eq!(g.gmag[at], 4);
-        assert_eq!(g.normals[0], EDGE);
+        assert_eq!(g.voxels[0].normal, EDGE);
     }
 }

@@ -24,7 +24,7 @@
 //! in the band are opaque is skipped whole.
 
 use super::classify::Classes;
-use super::grid::{Grid, B, B3};
+use super::grid::{Grid, Voxel, B, B3};
 use super::view::{ClassRange, Footprint, ViewTables, Window, BAND, FRAC};
 use super::{Method, Params, Stats};
 use glam::{BVec4A, Vec4};
@@ -595,8 +595,7 @@ fn render_band<K: Kind, F: Draw>(
                 let home = row_bits(h0, h1);
                 counts.treated += (bits & home).count_ones() as u64;
                 let row = b * B3 + (k * B + j) * B;
-                let values: &[u16; B] = grid.values[row..row + B].try_into().unwrap();
-                let normals: &[u16; B] = grid.normals[row..row + B].try_into().unwrap();
+                let voxels: &[Voxel; B] = grid.voxels[row..row + B].try_into().unwrap();
                 let gmag: &[u8; B] = grid.gmag[row..row + B].try_into().unwrap();
                 while bits != 0 {
                     let i = if view.descending[0] {
@@ -605,8 +604,8 @@ fn render_band<K: Kind, F: Draw>(
                         bits.trailing_zeros() as usize
                     } & (B - 1);
                     bits ^= 1 << i;
-                    let Some(src) =
-                        K::source(cl, &view.shade, values[i] as usize, normals[i], gmag[i])
+                    let Voxel { value, normal } = voxels[i];
+                    let Some(src) = K::source(cl, &view.shade, value as usize, normal, gmag[i])
                     else {
                         counts.treated -= (home >> i & 1) as u64;
                         continue;
