@@ -35,7 +35,14 @@ CUBE = "target/release/cube"
 VENV_PY = "target/peers/venv/bin/python"
 VOLPACK = "target/peers/volpack_harness"
 CORES = os.cpu_count()
-KIT = ["quantized-projection", "quantized-splat", "cube4l", "cube3"]
+# The kit's renderers: name, `cube render --arch`, and the quantized path's
+# traversal order (None: the scene's own). Front to back the quantized
+# projection ends rays early, as VolPack does.
+KIT = [("quantized-projection", "quantized-projection", None),
+       ("quantized-projection-f2b", "quantized-projection", "front_to_back"),
+       ("quantized-splat", "quantized-splat", None),
+       ("cube4l", "cube4l", None),
+       ("cube3", "cube3", None)]
 
 
 def fail(msg):
@@ -119,6 +126,21 @@ def vtk(scene, cam, repeat, out_png, threads, rss=None):
     return json.loads(out.strip().splitlines()[-1])
 
 
+def kit_scene(scene, order, tmp):
+    """SCENE itself, or a copy in tmp with the quantized path's traversal
+    order set (a raw volume's path made absolute)."""
+    if order is None:
+        return scene
+    s = json.load(open(scene))
+    v = s["volume"]
+    if "raw" in v:
+        v["raw"] = os.path.abspath(os.path.join(os.path.dirname(scene), v["raw"]))
+    s.setdefault("quantized", {})["order"] = order
+    path = os.path.join(tmp, f"scene_{order}.json")
+    json.dump(s, open(path, "w"))
+    return path
+
+
 def cube(scene, arch, repeat, out_png, out_json, threads, judge, rss=None):
     cmd = [CUBE, "render", "--scene", scene, "--arch", arch, "--repeat", str(repeat),
            "--out", out_png, "--json", out_json]
@@ -164,15 +186,16 @@ def scene_rows(scene, repeat, tmp):
                      "tf_change_s": vt["tf_change_seconds"], "prep_s": vt["prep_seconds"],
                      "error": error_of(tmp, scene, png), "image": f"vtk_{threads}t.png",
                      "notes": "sample distance 1 voxel, offscreen (EGL); prep = first render"})
-    for arch in KIT:
+    for name, arch, order in KIT:
+        sc = kit_scene(scene, order, tmp)
         for threads in sorted({CORES, 1}, reverse=True):
-            print(f"cube {arch}, {threads} thread(s), {repeat} runs...", flush=True)
-            png = os.path.join(tmp, f"{arch}_{threads}t.png")
-            j = cube(scene, arch, repeat, png, os.path.join(tmp, f"{arch}_{threads}t.json"), threads, True)
+            print(f"cube {name}, {threads} thread(s), {repeat} runs...", flush=True)
+            png = os.path.join(tmp, f"{name}_{threads}t.png")
+            j = cube(sc, arch, repeat, png, os.path.join(tmp, f"{name}_{threads}t.json"), threads, True)
             d = j.get("details", {})
             if arch.startswith("quantized"):
                 tf, prep = d["tf_change_seconds"], d["volume_prep_seconds"]
-                notes = f"n = {d['subdivisions']}, {d['normals']} normals"
+                notes = f"n = {d['subdivisions']}, {d['normals']} normals, {d['order']}"
             else:
                 # The golden models build their tables every frame: a
                 # transfer-function change costs one frame. Per volume they
@@ -180,44 +203,47 @@ def scene_rows(scene, repeat, tmp):
                 # frames.
                 tf, prep = d["frame_seconds"], d["volume_prep_seconds"]
                 notes = "bit-exact fixed point, tables built every frame, traversal-order copy per volume"
-            rows.append({"renderer": "cube", "method": arch, "threads": threads,
+            rows.append({"renderer": "cube", "method": name, "threads": threads,
                          "frame_s": d.get("frame_seconds", j["seconds"]), "tf_change_s": tf, "prep_s": prep,
-                         "error": j["error"], "image": f"{arch}_{threads}t.png", "notes": notes})
+                         "error": j["error"], "image": f"{name}_{threads}t.png", "notes": notes})
     return rows
 
 
 PAIRS = 5
 # Each kit renderer and the peer its goal names (issue: quantized
 # projection against VolPack, the golden models against VTK).
-PAIRED = [("quantized-projection", "VolPack"), ("cube4l", "VTK"), ("cube3", "VTK")]
+PAIRED = [("quantized-projection", "VolPack"), ("quantized-projection-f2b", "VolPack"),
+          ("cube4l", "VTK"), ("cube3", "VTK")]
 
 
 def pairs(scene, repeat, tmp):
     """PAIRS rounds of each peer, then each kit renderer measured against it."""
     cam = vtk_camera(scene, tmp)
     png = os.path.join(tmp, "pair.png")
-    ratios = {arch: [] for arch, _ in PAIRED}
+    ratios = {name: [] for name, _ in PAIRED}
+    kit = {name: (arch, kit_scene(scene, order, tmp)) for name, arch, order in KIT}
     for k in range(PAIRS):
         print(f"pairs: round {k + 1} of {PAIRS}...", flush=True)
-        for arch, peer in PAIRED:
+        for name, peer in PAIRED:
+            arch, sc = kit[name]
             if peer == "VolPack":
                 t_peer = volpack(scene, repeat, png)["frame_seconds"]
             else:
                 t_peer = vtk(scene, cam, repeat, png, CORES)["frame_seconds"]
-            j = cube(scene, arch, repeat, png, os.path.join(tmp, "pair.json"), CORES, False)
-            ratios[arch].append(j["details"].get("frame_seconds", j["seconds"]) / t_peer)
+            j = cube(sc, arch, repeat, png, os.path.join(tmp, "pair.json"), CORES, False)
+            ratios[name].append(j["details"].get("frame_seconds", j["seconds"]) / t_peer)
     out = []
-    for arch, peer in PAIRED:
-        r = sorted(ratios[arch])
-        out.append({"renderer": arch, "peer": peer,
-                    "ratios": ratios[arch], "median": r[len(r) // 2], "min": r[0], "max": r[-1]})
+    for name, peer in PAIRED:
+        r = sorted(ratios[name])
+        out.append({"renderer": name, "peer": peer,
+                    "ratios": ratios[name], "median": r[len(r) // 2], "min": r[0], "max": r[-1]})
     return out
 
 
 def scaling(template, sizes, repeat, tmp):
     s = json.load(open(template))
     table = []
-    names = ["VolPack, 1 thread", f"VTK FixedPoint, {CORES} threads"] + [f"cube {a}, {CORES} threads" for a in KIT]
+    names = ["VolPack, 1 thread", f"VTK FixedPoint, {CORES} threads"] + [f"cube {k[0]}, {CORES} threads" for k in KIT]
     times = {n: {} for n in names}
     rss = {n: None for n in names}
     for n in sizes:
@@ -236,8 +262,9 @@ def scaling(template, sizes, repeat, tmp):
         times[names[0]][n] = volpack(scene, repeat, os.path.join(d, "volpack.png"), rss=mem)["frame_seconds"]
         cam = vtk_camera(scene, d)
         times[names[1]][n] = vtk(scene, cam, repeat, os.path.join(d, "vtk.png"), CORES, rss=mem)["frame_seconds"]
-        for a, name in zip(KIT, names[2:]):
-            j = cube(scene, a, repeat, os.path.join(d, f"{a}.png"), os.path.join(d, f"{a}.json"), CORES, False, rss=mem)
+        for (kit, a, order), name in zip(KIT, names[2:]):
+            sc = kit_scene(scene, order, d)
+            j = cube(sc, a, repeat, os.path.join(d, f"{kit}.png"), os.path.join(d, f"{kit}.json"), CORES, False, rss=mem)
             times[name][n] = j.get("details", {}).get("frame_seconds", j["seconds"])
         if last:
             for name, kib in zip(names, mem):
