@@ -163,6 +163,15 @@ impl Template {
         }
     }
 
+    /// A parallel template's `X_k(u) - u` (its rays shift as a whole on
+    /// plane `k`); `None` for a perspective one.
+    pub fn shift(&self, k: usize) -> Option<i32> {
+        match self {
+            Template::Parallel { pos, .. } => Some(pos[k]),
+            Template::Perspective { .. } => None,
+        }
+    }
+
     /// Discrete-ray position `X_k(u)`, `k` in `0..=K`.
     pub fn pos(&self, u: i32, k: usize) -> i32 {
         match self {

@@ -73,7 +73,9 @@ impl Prp {
 
 /// Fetch and align the PRP of scanline `v`, for rays `u0..u0 + rays`, from
 /// the volume in `view`'s traversal order. Beam by beam: plane `k`'s row
-/// `y = Y_k(v)` is found once, then each ray's voxel `X_k(u)` on it.
+/// `y = Y_k(v)` is found once, then each ray's voxel `X_k(u)` on it. In a
+/// parallel view the rays on a beam read consecutive voxels: their range
+/// is worked out once a beam, not a ray's position and range test each.
 pub fn fetch(vol: &Traversal, view: &View, v: i32, u0: i32, rays: usize) -> Prp {
     let [nx, ny, nk] = view.dims;
     let mut data = vec![0; rays * (nk + 1)];
@@ -83,6 +85,16 @@ pub fn fetch(vol: &Traversal, view: &View, v: i32, u0: i32, rays: usize) -> Prp 
             continue;
         }
         let beam = vol.beam(y as usize, k);
+        if let Some(s) = view.x.shift(k) {
+            // Rays lo..hi (those on the beam) read beam[o + i].
+            let o = u0 + s;
+            let lo = (-o).clamp(0, rays as i32);
+            let hi = (nx as i32 - o).clamp(lo, rays as i32);
+            for i in lo..hi {
+                data[i as usize * (nk + 1) + k] = beam[(o + i) as usize] as u32;
+            }
+            continue;
+        }
         for (i, d) in data.iter_mut().skip(k).step_by(nk + 1).enumerate() {
             let x = view.x.pos(u0 + i as i32, k);
             if x >= 0 && (x as usize) < nx {
