@@ -51,8 +51,12 @@ trait Kind: Sync {
     const OCCLUDES: bool;
     fn source(cl: &Classes, shade: &[[f32; 2]], v: usize, n: u16, g: u8) -> Option<Self::Src>;
     fn apply(dst: &mut Vec4, s: &Self::Src, w: f32);
-    /// The image's colour of a finished pixel.
-    fn pixel(p: Vec4) -> [f64; 3];
+    /// The image's colour of a finished pixel: its colour lanes, for the
+    /// modes that composite colours.
+    #[inline(always)]
+    fn pixel(p: Vec4) -> [f64; 3] {
+        [p.x, p.y, p.z].map(|x| x as f64)
+    }
     /// `apply` when `on`, else leave `dst` as it is, without a branch: the
     /// undecided pixels of a projection class go through here.
     #[inline(always)]
@@ -141,10 +145,6 @@ impl<const F2B: bool, const SPLAT: bool> Kind for Over<F2B, SPLAT> {
             *dst = s.pre + s.k * *dst;
         }
     }
-    #[inline(always)]
-    fn pixel(p: Vec4) -> [f64; 3] {
-        [p.x, p.y, p.z].map(|x| x as f64)
-    }
 }
 
 /// First-opaque: the colour of the front-most voxel whose opacity reaches
@@ -165,10 +165,6 @@ impl<const F2B: bool> Kind for First<F2B> {
         if !F2B || dst.w == 0.0 {
             *dst = *c;
         }
-    }
-    #[inline(always)]
-    fn pixel(p: Vec4) -> [f64; 3] {
-        [p.x, p.y, p.z].map(|x| x as f64)
     }
 }
 
