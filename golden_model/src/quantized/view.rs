@@ -10,7 +10,7 @@
 //! within `22 · 2^-33` pixels of its exact position. The integer part
 //! names the square (its top-left pixel), the fraction the subdivision.
 
-use super::grid::{Grid, B};
+use super::grid::Grid;
 use super::hexagon::Hexagon;
 use super::normals::NormalCode;
 use super::projection::ProjectionTable;
@@ -248,12 +248,7 @@ impl ViewTables {
         let (block_origin, block_box): (Vec<_>, Vec<_>) = (0..count)
             .into_par_iter()
             .map(|b| {
-                let c = [
-                    b % grid.blocks[0],
-                    b / grid.blocks[0] % grid.blocks[1],
-                    b / (grid.blocks[0] * grid.blocks[1]),
-                ];
-                let first = c.map(|x| x * B);
+                let first = grid.first(b);
                 let o = geom.centre(first);
                 let e = grid.extent(b);
                 let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
