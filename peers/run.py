@@ -1,8 +1,8 @@
 """The peers run of scripts/peers (which installs and builds first).
 
-Usage: run.py SCENE REPEAT OUT SIZES SCALING_SCENE
+Usage: run.py SCENE[,SCENE...] REPEAT OUT SIZES SCALING_SCENE
 
-1. On SCENE: VolPack (1 thread), VTK's vtkFixedPointVolumeRayCastMapper and
+1. On each SCENE: VolPack (1 thread), VTK's vtkFixedPointVolumeRayCastMapper and
    every software path of the kit (the quantized projection and splatting,
    the Cube-4L and Cube-3 golden models), the kit's and VTK's at 1 thread
    and at every core. Each image is judged against the scene's float
@@ -18,8 +18,8 @@ Usage: run.py SCENE REPEAT OUT SIZES SCALING_SCENE
    a least-squares fit of log time on log voxels; memory is the peak
    resident set of the renderer's process at the largest size.
 
-Writes OUT/peers.md and OUT/peers.json (each whole or not at all) and the
-peers' images of SCENE beside them. Ratios are time over the peer's time in
+Writes OUT/peers.md and OUT/peers.json (each whole or not at all) and each
+scene's images in OUT/<scene's file name>/. Ratios are time over the peer's time in
 the same run (below 1: faster).
 """
 import datetime
@@ -278,17 +278,15 @@ def scaling(template, sizes, repeat, tmp):
     return table
 
 
-def markdown(report):
+def scene_markdown(sc, report):
+    """A scene's table and its interleaved pairs."""
     ms = lambda x: "—" if x is None else f"{x * 1e3:.1f}"
     ratio = lambda a, b: "—" if a is None or b is None else f"{a / b:.2f}"
-    rows = report["rows"]
+    rows = sc["rows"]
     vp = rows[0]
     vtk_by = {r["threads"]: r for r in rows if r["renderer"].startswith("VTK")}
-    md = [f"# Peers on {report['scene']}", "",
-          f"{report['cpu']}, {report['cores']} cores; medians of {report['repeat']} runs; {report['date']}. "
-          "Ratios are time over the peer's time in this run (below 1: faster than the peer); "
-          "the VTK ratio is against VTK at the same number of threads.",
-          "", "| renderer | method | threads | per frame ms | after a TF change ms | per-volume prep ms "
+    md = [f"## {sc['scene']}", "",
+          "| renderer | method | threads | per frame ms | after a TF change ms | per-volume prep ms "
           "| rel. Euclidean % | PSNR dB | frame / VolPack | TF change / VolPack | frame / VTK | notes |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
@@ -298,16 +296,26 @@ def markdown(report):
                   f"| {ms(r['prep_s'])} | {e['rel_euclid_pct']:.2f} | {e['psnr_db']:.2f} "
                   f"| {ratio(r['frame_s'], vp['frame_s'])} | {ratio(r['tf_change_s'], vp['tf_change_s'])} "
                   f"| {ratio(r['frame_s'], v and v['frame_s'])} | {r['notes']} |")
-    pr = report.get("pairs")
-    if pr:
-        md += ["", f"## Interleaved pairs: {len(pr[0]['ratios'])} rounds", "",
-               "Each round runs the peer, then the kit's renderer, each for a median of "
-               f"{report['repeat']} frames, at {report['cores']} threads (VolPack at 1); the ratio is "
-               "the kit's frame over the peer's in that round.", "",
-               "| renderer | against | median ratio | range | every round |", "|---|---|---|---|---|"]
-        for r in pr:
-            md.append(f"| {r['renderer']} | {r['peer']} | **{r['median']:.2f}** | {r['min']:.2f}–{r['max']:.2f} "
-                      f"| {', '.join(f'{x:.2f}' for x in r['ratios'])} |")
+    pr = sc["pairs"]
+    md += ["", f"### Interleaved pairs: {len(pr[0]['ratios'])} rounds", "",
+           "Each round runs the peer, then the kit's renderer, each for a median of "
+           f"{report['repeat']} frames, at {report['cores']} threads (VolPack at 1); the ratio is "
+           "the kit's frame over the peer's in that round.", "",
+           "| renderer | against | median ratio | range | every round |", "|---|---|---|---|---|"]
+    for r in pr:
+        md.append(f"| {r['renderer']} | {r['peer']} | **{r['median']:.2f}** | {r['min']:.2f}–{r['max']:.2f} "
+                  f"| {', '.join(f'{x:.2f}' for x in r['ratios'])} |")
+    return md
+
+
+def markdown(report):
+    ms = lambda x: "—" if x is None else f"{x * 1e3:.1f}"
+    md = ["# Peers", "",
+          f"{report['cpu']}, {report['cores']} cores; medians of {report['repeat']} runs; {report['date']}. "
+          "Ratios are time over the peer's time in this run (below 1: faster than the peer); "
+          "the VTK ratio is against VTK at the same number of threads. Images are in each scene's folder."]
+    for sc in report["scenes"]:
+        md += [""] + scene_markdown(sc, report)
     sc = report.get("scaling")
     if sc:
         sizes = list(sc[0]["frame_s"].keys())
@@ -324,20 +332,36 @@ def markdown(report):
     return "\n".join(md) + "\n"
 
 
-def main(scene, repeat, out, sizes, scaling_scene):
+def stem(scene):
+    return os.path.splitext(os.path.basename(scene))[0]
+
+
+def main(scenes, repeat, out, sizes, scaling_scene):
+    if len({stem(s) for s in scenes}) != len(scenes):
+        fail(f"scenes {scenes} must have distinct file names (each scene's images go in OUT/<name>/)")
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
     os.makedirs(out, exist_ok=True)
     tmp = tempfile.mkdtemp(prefix=".peers.", dir=out)
     try:
-        report = {"scene": scene, "repeat": repeat, "cpu": cpu, "cores": CORES,
-                  "date": datetime.date.today().isoformat(), "rows": scene_rows(scene, repeat, tmp),
-                  "pairs": pairs(scene, repeat, tmp)}
+        report = {"repeat": repeat, "cpu": cpu, "cores": CORES,
+                  "date": datetime.date.today().isoformat(), "scenes": []}
+        for scene in scenes:
+            d = os.path.join(tmp, stem(scene))
+            os.makedirs(d)
+            report["scenes"].append({"scene": scene, "images": stem(scene), "rows": scene_rows(scene, repeat, d),
+                                     "pairs": pairs(scene, repeat, d)})
         if sizes:
             report["scaling_scene"] = scaling_scene
             report["scaling"] = scaling(scaling_scene, sizes, repeat, tmp)
         open(os.path.join(tmp, "peers.json"), "w").write(json.dumps(report, indent=2) + "\n")
         open(os.path.join(tmp, "peers.md"), "w").write(markdown(report))
-        for f in ["peers.json", "peers.md"] + [r["image"] for r in report["rows"]]:
+        # Every output is complete in tmp before any is moved into OUT.
+        for sc in report["scenes"]:
+            os.makedirs(os.path.join(out, sc["images"]), exist_ok=True)
+            for r in sc["rows"]:
+                f = os.path.join(sc["images"], r["image"])
+                os.replace(os.path.join(tmp, f), os.path.join(out, f))
+        for f in ["peers.json", "peers.md"]:
             os.replace(os.path.join(tmp, f), os.path.join(out, f))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
@@ -347,5 +371,5 @@ def main(scene, repeat, out, sizes, scaling_scene):
 if __name__ == "__main__":
     a = sys.argv[1:]
     if len(a) != 5:
-        fail("run.py SCENE REPEAT OUT SIZES SCALING_SCENE")
-    main(a[0], int(a[1]), a[2], [int(n) for n in a[3].split(",") if n], a[4])
+        fail("run.py SCENE[,SCENE...] REPEAT OUT SIZES SCALING_SCENE")
+    main([x for x in a[0].split(",") if x], int(a[1]), a[2], [int(n) for n in a[3].split(",") if n], a[4])
