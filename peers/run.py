@@ -165,7 +165,7 @@ def fit_exponent(points):
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else None
 
 
-def scene_rows(scene, repeat, tmp):
+def scene_rows(scene, cam, repeat, tmp):
     rows = []
     print(f"VolPack (classified shear-warp), {repeat} runs...", flush=True)
     png = os.path.join(tmp, "volpack.png")
@@ -176,7 +176,6 @@ def scene_rows(scene, repeat, tmp):
                  "prep_s": vp["prep_seconds"], "error": e, "image": "volpack.png",
                  "notes": f"min voxel opacity {vp['min_voxel_opacity']}, max ray opacity "
                           f"{vp['max_ray_opacity']}; one material colour"})
-    cam = vtk_camera(scene, tmp)
     for threads in sorted({CORES, 1}, reverse=True):
         print(f"VTK (vtkFixedPointVolumeRayCastMapper), {threads} thread(s), {repeat} runs...", flush=True)
         png = os.path.join(tmp, f"vtk_{threads}t.png")
@@ -216,9 +215,8 @@ PAIRED = [("quantized-projection", "VolPack"), ("quantized-projection-f2b", "Vol
           ("cube4l", "VTK"), ("cube3", "VTK")]
 
 
-def pairs(scene, repeat, tmp):
+def pairs(scene, cam, repeat, tmp):
     """PAIRS rounds of each peer, then each kit renderer measured against it."""
-    cam = vtk_camera(scene, tmp)
     png = os.path.join(tmp, "pair.png")
     ratios = {name: [] for name, _ in PAIRED}
     kit = {name: (arch, kit_scene(scene, order, tmp)) for name, arch, order in KIT}
@@ -278,9 +276,12 @@ def scaling(template, sizes, repeat, tmp):
     return table
 
 
+def ms(x):
+    return "—" if x is None else f"{x * 1e3:.1f}"
+
+
 def scene_markdown(sc, report):
     """A scene's table and its interleaved pairs."""
-    ms = lambda x: "—" if x is None else f"{x * 1e3:.1f}"
     ratio = lambda a, b: "—" if a is None or b is None else f"{a / b:.2f}"
     rows = sc["rows"]
     vp = rows[0]
@@ -309,7 +310,6 @@ def scene_markdown(sc, report):
 
 
 def markdown(report):
-    ms = lambda x: "—" if x is None else f"{x * 1e3:.1f}"
     md = ["# Peers", "",
           f"{report['cpu']}, {report['cores']} cores; medians of {report['repeat']} runs; {report['date']}. "
           "Ratios are time over the peer's time in this run (below 1: faster than the peer); "
@@ -348,8 +348,10 @@ def main(scenes, repeat, out, sizes, scaling_scene):
         for scene in scenes:
             d = os.path.join(tmp, stem(scene))
             os.makedirs(d)
-            report["scenes"].append({"scene": scene, "images": stem(scene), "rows": scene_rows(scene, repeat, d),
-                                     "pairs": pairs(scene, repeat, d)})
+            # The reference's camera, for VTK: the table and the pairs share it.
+            cam = vtk_camera(scene, d)
+            report["scenes"].append({"scene": scene, "images": stem(scene), "rows": scene_rows(scene, cam, repeat, d),
+                                     "pairs": pairs(scene, cam, repeat, d)})
         if sizes:
             report["scaling_scene"] = scaling_scene
             report["scaling"] = scaling(scaling_scene, sizes, repeat, tmp)
