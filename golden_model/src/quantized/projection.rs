@@ -30,6 +30,7 @@ use super::hexagon::Hexagon;
 use glam::DVec2;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::ops::Range;
 
 /// An undecided pixel: its offset and its edge equations
 /// `eqs[first..first + len]`, all of which must hold.
@@ -69,15 +70,59 @@ enum Side {
 
 /// The side of edge `(a, b, c)` (already moved to the offset) over the box
 /// `[x0, x1] × [y0, y1]`: its linear function's extremes lie at corners.
+/// Rounding is monotone in each product and in the sum, so the smallest of
+/// the four corners' computed values is the one at the corner that makes
+/// each product smallest, and the largest the opposite corner: two
+/// evaluations give exactly what all four would.
 fn side(e: [f64; 3], x0: f64, x1: f64, y0: f64, y1: f64) -> Side {
     let f = |x: f64, y: f64| e[0] * x + e[1] * y + e[2];
-    let v = [f(x0, y0), f(x1, y0), f(x0, y1), f(x1, y1)];
-    if v.iter().all(|&t| t >= 0.0) {
+    let ([xl, xh], [yl, yh]) = (
+        if e[0] >= 0.0 { [x0, x1] } else { [x1, x0] },
+        if e[1] >= 0.0 { [y0, y1] } else { [y1, y0] },
+    );
+    if f(xl, yl) >= 0.0 {
         Side::In
-    } else if v.iter().all(|&t| t < 0.0) {
+    } else if f(xh, yh) < 0.0 {
         Side::Out
     } else {
         Side::Crossed
+    }
+}
+
+/// The first `i` in `0..n` with `p(i)`, for `p` false then true (`n` when
+/// it is never true).
+fn first(n: usize, p: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, n);
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        if p(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    lo
+}
+
+/// Along the row of `n` subdivisions from `y0`, those edge `e` leaves Out
+/// and those it crosses. `side`'s two corners move one way with the column,
+/// so In lies at one end of the row, Out at the other and Crossed between:
+/// two bisections find them.
+fn row_split(e: [f64; 3], n: usize, y0: f64, step: f64) -> (Range<usize>, Range<usize>) {
+    let at = |sx: usize| {
+        let x0 = sx as f64 * step;
+        side(e, x0, x0 + step, y0, y0 + step)
+    };
+    if e[0] >= 0.0 {
+        // Out, Crossed, In from left to right.
+        let a = first(n, |sx| at(sx) != Side::Out);
+        let b = first(n, |sx| at(sx) == Side::In);
+        (0..a, a..b)
+    } else {
+        // In, Crossed, Out.
+        let a = first(n, |sx| at(sx) != Side::In);
+        let b = first(n, |sx| at(sx) == Side::Out);
+        (b..n, a..b)
     }
 }
 
@@ -120,32 +165,36 @@ impl ProjectionTable {
                 }
             }
         }
-        // Each subdivision's key: per open offset, Out, or In with the mask
-        // of its edges that cross the subdivision (In with mask 0 is sure).
+        // Each subdivision's key, `w` bytes at `(sy * n + sx) * w`: per open
+        // offset, Out (`u8::MAX`), or In with the mask of its edges that
+        // cross the subdivision (In with mask 0 is sure).
+        let open_eqs: Vec<Vec<(usize, [f64; 3])>> = open
+            .iter()
+            .map(|(o, edges)| edges.iter().map(|&k| (k, moved(*o, k))).collect())
+            .collect();
+        let w = open.len().max(1);
         let step = 1.0 / n as f64;
-        let key_of = |sx: usize, sy: usize| -> Vec<u8> {
-            let (x0, y0) = (sx as f64 * step, sy as f64 * step);
-            open.iter()
-                .map(|(o, edges)| {
-                    let mut mask = 0u8;
-                    for &k in edges {
-                        match side(moved(*o, k), x0, x0 + step, y0, y0 + step) {
-                            Side::In => {}
-                            Side::Out => return u8::MAX,
-                            Side::Crossed => mask |= 1 << k,
+        let mut keys = vec![0u8; n * n * w];
+        keys.par_chunks_mut(n * w)
+            .enumerate()
+            .for_each(|(sy, row)| {
+                for (j, eqs) in open_eqs.iter().enumerate() {
+                    for &(k, e) in eqs {
+                        let (out, crossed) = row_split(e, n, sy as f64 * step, step);
+                        for sx in out {
+                            row[sx * w + j] = u8::MAX;
+                        }
+                        for sx in crossed {
+                            row[sx * w + j] |= 1 << k;
                         }
                     }
-                    mask
-                })
-                .collect()
-        };
-        let keys: Vec<Vec<u8>> = (0..n * n)
-            .into_par_iter()
-            .map(|i| key_of(i % n, i / n))
-            .collect();
+                }
+            });
+        let key = |i: usize| &keys[i * w..(i + 1) * w];
         // Region growing: 4-connected subdivisions with equal keys.
         let mut class_of = vec![u16::MAX; n * n];
         let mut class_keys: Vec<usize> = Vec::new();
+        let mut stack = Vec::new();
         for seed in 0..n * n {
             if class_of[seed] != u16::MAX {
                 continue;
@@ -153,24 +202,17 @@ impl ProjectionTable {
             let id = class_keys.len() as u16;
             class_keys.push(seed);
             class_of[seed] = id;
-            let mut stack = vec![seed];
+            stack.push(seed);
             while let Some(i) = stack.pop() {
                 let (x, y) = (i % n, i / n);
-                let mut near = Vec::with_capacity(4);
-                if x > 0 {
-                    near.push(i - 1);
-                }
-                if x + 1 < n {
-                    near.push(i + 1);
-                }
-                if y > 0 {
-                    near.push(i - n);
-                }
-                if y + 1 < n {
-                    near.push(i + n);
-                }
-                for j in near {
-                    if class_of[j] == u16::MAX && keys[j] == keys[seed] {
+                let near = [
+                    (x > 0).then(|| i - 1),
+                    (x + 1 < n).then(|| i + 1),
+                    (y > 0).then(|| i - n),
+                    (y + 1 < n).then(|| i + n),
+                ];
+                for j in near.into_iter().flatten() {
+                    if class_of[j] == u16::MAX && key(j) == key(seed) {
                         class_of[j] = id;
                         stack.push(j);
                     }
@@ -185,7 +227,7 @@ impl ProjectionTable {
             .map(|&seed| {
                 let mut sure = always.clone();
                 let mut undecided = Vec::new();
-                for ((o, _), &m) in open.iter().zip(&keys[seed]) {
+                for ((o, _), &m) in open.iter().zip(key(seed)) {
                     if m == u8::MAX {
                         continue;
                     }
@@ -309,3 +351,4 @@ mod tests {
             .all(|c| !c.sure.is_empty() || !c.undecided.is_empty()));
     }
 }
+
