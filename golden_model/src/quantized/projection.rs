@@ -351,4 +351,3 @@ mod tests {
             .all(|c| !c.sure.is_empty() || !c.undecided.is_empty()));
     }
 }
-
